@@ -1,0 +1,202 @@
+package rtd.accel;
+
+import java.util.Arrays;
+import java.util.List;
+import rtd.geometry.BoundingBox;
+import rtd.geometry.IGeometry;
+import rtd.math.Vector3f;
+import rtd.scene.Color;
+
+/**
+ * Builds a {@link Bvh} top-down with the binned surface area heuristic (SAH).
+ *
+ * <p>At each node the objects' centres are sorted into {@value #BINS} bins along each axis;
+ * of the splits between bins, the one with the lowest expected cost wins, where a child's cost
+ * is its box's surface area (how likely a ray passes through it) times its object count. A
+ * node becomes a leaf when no split is cheaper than testing its objects directly.
+ */
+final class BvhBuilder {
+
+    private static final int BINS = 16;
+    private static final int MAX_LEAF_SIZE = 8;
+    /** Past this depth the builder halves by count, which bounds the depth for any input. */
+    private static final int MAX_SAH_DEPTH = 48;
+    /** The cost of visiting a node, counted in intersection tests. */
+    private static final float TRAVERSAL_COST = 1f;
+
+    private final List<IGeometry> objects;
+    private final int count;
+    /** Each object's box: min x, y, z, max x, y, z. */
+    private final float[] boxes;
+    /** Each object's box centre: x, y, z. */
+    private final float[] centres;
+    /** Object indices, reordered so that each node's objects are adjacent. */
+    private final int[] order;
+
+    private final SahBins bins = new SahBins(BINS);
+    private final float[] lo = new float[3];
+    private final float[] hi = new float[3];
+    private final float[] bounds;
+    private final int[] nodes;
+    private int nodeCount;
+    private int maxDepth;
+
+    BvhBuilder(List<IGeometry> objects, Vector3f rayOriginCentre, float rayOriginRadius) {
+        this.objects = objects;
+        this.count = objects.size();
+        this.boxes = new float[6 * count];
+        this.centres = new float[3 * count];
+        this.order = new int[count];
+        for (int i = 0; i < count; i++) {
+            BoundingBox box = objects.get(i).bounds(rayOriginCentre, rayOriginRadius);
+            put(boxes, 6 * i, box.min());
+            put(boxes, 6 * i + 3, box.max());
+            put(centres, 3 * i, box.centre());
+            order[i] = i;
+        }
+        int capacity = Math.max(1, 2 * count - 1);
+        this.bounds = new float[6 * capacity];
+        this.nodes = new int[2 * capacity];
+    }
+
+    private static void put(float[] array, int at, Vector3f v) {
+        array[at] = v.x();
+        array[at + 1] = v.y();
+        array[at + 2] = v.z();
+    }
+
+    Bvh build(Color ambient) {
+        nodeCount = 1;
+        buildNode(0, 0, count, 0);
+        IGeometry[] sorted = new IGeometry[count];
+        for (int i = 0; i < count; i++) {
+            sorted[i] = objects.get(order[i]);
+        }
+        return new Bvh(Arrays.copyOf(bounds, 6 * nodeCount), Arrays.copyOf(nodes, 2 * nodeCount),
+                sorted, order, maxDepth, ambient);
+    }
+
+    private void buildNode(int node, int start, int end, int depth) {
+        maxDepth = Math.max(maxDepth, depth);
+        setBoundsOfObjects(node, start, end);
+        int n = end - start;
+        if (n <= 1) {
+            makeLeaf(node, start, n);
+            return;
+        }
+        int middle = depth < MAX_SAH_DEPTH ? splitBySah(node, start, end) : splitByCount(start, end);
+        if (middle < 0) {
+            makeLeaf(node, start, n);
+            return;
+        }
+        int left = nodeCount;
+        nodeCount += 2;
+        nodes[2 * node] = left;
+        nodes[2 * node + 1] = 0;
+        buildNode(left, start, middle, depth + 1);
+        buildNode(left + 1, middle, end, depth + 1);
+    }
+
+    private void makeLeaf(int node, int start, int n) {
+        nodes[2 * node] = start;
+        nodes[2 * node + 1] = n;
+    }
+
+    private void setBoundsOfObjects(int node, int start, int end) {
+        float[] box = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
+            Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        for (int i = start; i < end; i++) {
+            int o = 6 * order[i];
+            for (int k = 0; k < 3; k++) {
+                box[k] = Math.min(box[k], boxes[o + k]);
+                box[k + 3] = Math.max(box[k + 3], boxes[o + k + 3]);
+            }
+        }
+        System.arraycopy(box, 0, bounds, 6 * node, 6);
+    }
+
+    /**
+     * Finds the cheapest split by the SAH and partitions {@code order[start, end)} by it.
+     * Returns the index where the right part starts, or −1 when a leaf is cheaper.
+     */
+    private int splitBySah(int node, int start, int end) {
+        int n = end - start;
+        centreBounds(start, end);
+        float bestCost = Float.POSITIVE_INFINITY;
+        int bestAxis = -1;
+        int bestBin = -1;
+        for (int axis = 0; axis < 3; axis++) {
+            if (!(hi[axis] > lo[axis])) {
+                continue; // all centres share this coordinate: no split along it
+            }
+            bins.clear();
+            float scale = BINS / (hi[axis] - lo[axis]);
+            for (int i = start; i < end; i++) {
+                int object = order[i];
+                bins.add(binOf(centres[3 * object + axis], lo[axis], scale), boxes, 6 * object);
+            }
+            float[] costs = bins.splitCosts();
+            for (int split = 0; split < BINS - 1; split++) {
+                if (costs[split] < bestCost) {
+                    bestCost = costs[split];
+                    bestAxis = axis;
+                    bestBin = split;
+                }
+            }
+        }
+        if (bestAxis < 0) {
+            return n > MAX_LEAF_SIZE ? splitByCount(start, end) : -1; // all centres coincide
+        }
+        float leafCost = n;
+        float splitCost = TRAVERSAL_COST + bestCost / SahBins.area(bounds, 6 * node);
+        if (splitCost >= leafCost && n <= MAX_LEAF_SIZE) {
+            return -1;
+        }
+        float scale = BINS / (hi[bestAxis] - lo[bestAxis]);
+        int middle = partition(start, end, bestAxis, bestBin, lo[bestAxis], scale);
+        return middle == start || middle == end ? splitByCount(start, end) : middle;
+    }
+
+    private void centreBounds(int start, int end) {
+        Arrays.fill(lo, Float.POSITIVE_INFINITY);
+        Arrays.fill(hi, Float.NEGATIVE_INFINITY);
+        for (int i = start; i < end; i++) {
+            int c = 3 * order[i];
+            for (int k = 0; k < 3; k++) {
+                lo[k] = Math.min(lo[k], centres[c + k]);
+                hi[k] = Math.max(hi[k], centres[c + k]);
+            }
+        }
+    }
+
+    private static int binOf(float centre, float lo, float scale) {
+        int bin = (int) ((centre - lo) * scale);
+        return Math.min(BINS - 1, Math.max(0, bin));
+    }
+
+    /** Moves the objects in bins {@code ≤ lastLeftBin} to the front; returns where the rest start. */
+    private int partition(int start, int end, int axis, int lastLeftBin, float lo, float scale) {
+        int i = start;
+        int j = end - 1;
+        while (i <= j) {
+            if (binOf(centres[3 * order[i] + axis], lo, scale) <= lastLeftBin) {
+                i++;
+            } else {
+                int swap = order[i];
+                order[i] = order[j];
+                order[j] = swap;
+                j--;
+            }
+        }
+        return i;
+    }
+
+    /**
+     * Splits in half by count, keeping the present order: a fallback for objects that the SAH
+     * cannot separate (equal centres) and for very deep trees.
+     */
+    private int splitByCount(int start, int end) {
+        return end - start <= 1 ? -1 : start + (end - start) / 2;
+    }
+
+}

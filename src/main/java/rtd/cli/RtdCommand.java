@@ -1,0 +1,190 @@
+package rtd.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.function.Supplier;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import rtd.accel.Bvh;
+import rtd.io.SceneException;
+import rtd.io.SceneIO;
+import rtd.render.LinearTracer;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.render.RenderResult;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
+
+/**
+ * The command line: {@code java -jar rtd.jar SCENE [-o OUT.png] [--width N] [--height N]}.
+ * It reads the scene, renders it and writes the PNG, timing each phase for {@code --stats}.
+ */
+@Command(name = "rtd", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        sortOptions = false, usageHelpAutoWidth = true,
+        description = "Renders a scene file to a PNG by ray tracing, as the \"3D Raytracing Demo Project\" does.",
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {
+            "0:the picture was written",
+            "1:the scene file has mistakes, a file could not be read or written, or rendering failed",
+            "2:the command line is wrong"},
+        footer = {"%nExample:%n  java -jar rtd.jar examples/input_rtd.txt -o out.png",
+            "The scene format and every error message: see README.md and docs/errors.md."})
+public final class RtdCommand implements Callable<Integer> {
+
+    /** The BVH pays from about this many objects on; below, the paper's loop is as fast. */
+    static final int BVH_THRESHOLD = 8;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "SCENE", description = "the scene file to render")
+    private Path scenePath;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png",
+            description = "where to write the picture (default: SCENE with .png in place of its extension)")
+    private Path output;
+
+    @Option(names = "--width", paramLabel = "N", defaultValue = "1920", converter = PositiveInt.class,
+            description = "image width in pixels (default: ${DEFAULT-VALUE})")
+    private int width;
+
+    @Option(names = "--height", paramLabel = "N", defaultValue = "1080", converter = PositiveInt.class,
+            description = "image height in pixels (default: ${DEFAULT-VALUE})")
+    private int height;
+
+    @Option(names = "--threads", paramLabel = "N", converter = PositiveInt.class,
+            description = "threads to render with (default: all cores, here ${DEFAULT-VALUE})")
+    private int threads = Runtime.getRuntime().availableProcessors();
+
+    @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
+            description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
+                    + "auto: bvh from " + BVH_THRESHOLD + " objects on (default: ${DEFAULT-VALUE})")
+    private Accel accel;
+
+    @Option(names = "--stats", description = "print the time of each phase and the work per ray to standard error")
+    private boolean stats;
+
+    @Option(names = "--no-progress", description = "never show the progress line (it shows only on a terminal)")
+    private boolean noProgress;
+
+    @Option(names = "--debug", description = "show the stack trace of an error")
+    private boolean debug;
+
+    /** The command line of rtd, with its error handlers, ready to {@code execute}. */
+    public static CommandLine commandLine() {
+        CommandLine commandLine = new CommandLine(new RtdCommand());
+        commandLine.setParameterExceptionHandler(new UsageErrorHandler());
+        commandLine.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
+            PrintWriter err = cmd.getErr();
+            err.println("rtd: internal error: " + ex + ". This is a bug in rtd; please report it with the scene.");
+            if (((RtdCommand) cmd.getCommand()).debug) {
+                ex.printStackTrace(err);
+            }
+            err.flush();
+            return 1;
+        });
+        return commandLine;
+    }
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            return render(err);
+        } catch (SceneException e) {
+            err.print(e.report());
+            printDebug(err, e);
+            return 1;
+        } catch (IOException e) {
+            err.println("rtd: " + FileProblems.describe(e));
+            printDebug(err, e);
+            return 1;
+        } catch (OutOfMemoryError e) {
+            err.println("rtd: out of memory; give Java more, for example: java -Xmx8g -jar rtd.jar ...");
+            return 1;
+        } finally {
+            err.flush();
+        }
+    }
+
+    private int render(PrintWriter err) throws SceneException, IOException {
+        Path target = outputPath();
+        PhaseTimer timer = new PhaseTimer();
+        Scene scene = SceneIO.readScene(scenePath);
+        timer.endPhase("parse");
+        ImageSize.check(spec.commandLine(), width, height);
+
+        boolean useBvh = accel == Accel.bvh || accel == Accel.auto && scene.objects().size() >= BVH_THRESHOLD;
+        Supplier<Tracer> tracers;
+        Bvh bvh = null;
+        if (useBvh) {
+            bvh = Bvh.build(scene, width, height);
+            tracers = bvh::newTracer;
+        } else {
+            tracers = () -> new LinearTracer(scene);
+        }
+        timer.endPhase("build");
+
+        RenderProgress progress = new RenderProgress();
+        RenderResult result;
+        boolean showProgress = !noProgress && Terminal.stderrIsTerminal();
+        try (AutoCloseable display = ProgressDisplay.start(showProgress, err, progress, width, height)) {
+            result = ParallelRenderer.render(scene.camera(), tracers, width, height, threads, progress);
+        } catch (Exception e) {
+            throw new IllegalStateException(e); // close() of the display throws nothing
+        }
+        timer.endPhase("render");
+
+        SceneIO.writePng(result.image(), target);
+        timer.endPhase("write");
+        if (stats) {
+            err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target));
+        }
+        return 0;
+    }
+
+    /** The output path: {@code -o}, or the scene's name with {@code .png}; checked before rendering. */
+    private Path outputPath() throws IOException {
+        Path target = output != null ? output : defaultOutput(scenePath);
+        Path folder = target.toAbsolutePath().getParent();
+        if (Files.isDirectory(target)) {
+            throw new ParameterException(spec.commandLine(), "the output '" + target + "' is a folder; give a file name such as "
+                    + target.resolve("out.png"));
+        }
+        if (target.toAbsolutePath().normalize().equals(scenePath.toAbsolutePath().normalize())) {
+            throw new ParameterException(spec.commandLine(), "the output '" + target + "' is the scene file itself; "
+                    + "choose another with -o");
+        }
+        if (!Files.isDirectory(folder)) {
+            throw new NoSuchFileException(folder.toString(), null, "the output folder does not exist");
+        }
+        if (!Files.isWritable(folder)) {
+            throw new AccessDeniedException(folder.toString(), null, "the output folder is not writable");
+        }
+        return target;
+    }
+
+    /** {@code scenes/a.txt} gives {@code scenes/a.png}; a name without extension gets {@code .png}. */
+    static Path defaultOutput(Path scene) {
+        String name = scene.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String base = dot > 0 ? name.substring(0, dot) : name;
+        return scene.resolveSibling(base + ".png");
+    }
+
+    private void printDebug(PrintWriter err, Exception e) {
+        if (debug) {
+            e.printStackTrace(err);
+        }
+    }
+}

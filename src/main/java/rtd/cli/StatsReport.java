@@ -1,0 +1,37 @@
+package rtd.cli;
+
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Map;
+import rtd.accel.Bvh;
+import rtd.render.WorkCount;
+import rtd.scene.Scene;
+
+/** The text of {@code --stats}: time per phase, and the work each ray took. */
+final class StatsReport {
+
+    private StatsReport() {
+    }
+
+    static String format(PhaseTimer timer, Scene scene, Bvh bvh, WorkCount work, int threads, Path output) {
+        Map<String, Double> seconds = timer.seconds();
+        double renderSeconds = seconds.getOrDefault("render", 0.0);
+        StringBuilder text = new StringBuilder();
+        line(text, "parse", seconds.get("parse"), String.format(Locale.ROOT, "%,d objects", scene.objects().size()));
+        line(text, "build", seconds.get("build"), bvh == null
+                ? "no BVH: the paper's loop tests every object"
+                : String.format(Locale.ROOT, "BVH of %,d nodes", bvh.nodeCount()));
+        line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays on %d thread%s, %.2f Mrays/s",
+                work.rays(), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
+        line(text, "write", seconds.get("write"), output.toString());
+        double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
+        line(text, "total", total, "");
+        text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests, %.2f BVH nodes visited%n",
+                work.testsPerRay(), work.nodesPerRay()));
+        return text.toString();
+    }
+
+    private static void line(StringBuilder text, String phase, double seconds, String detail) {
+        text.append(String.format(Locale.ROOT, "%-7s %8.3f s  %s%n", phase, seconds, detail));
+    }
+}

@@ -1,0 +1,130 @@
+package rtd.io;
+
+import java.nio.charset.StandardCharsets;
+
+/**
+ * Reads a decimal number straight from the file's bytes, correctly rounded to the nearest
+ * {@code float}, as {@link Float#parseFloat} would, but without making a String for it: a
+ * scene of a million spheres has seven million numbers.
+ *
+ * <p>Accepted: an optional sign, digits with an optional decimal point ({@code 1.}, {@code .5}
+ * and {@code 1.5} all count), and an optional exponent ({@code 2e3}, {@code 1E-4}); also
+ * {@code NaN} and {@code Infinity}, so that the caller can say they are not allowed.
+ */
+final class FloatParser {
+
+    private static final float[] FLOAT_POWERS = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+    private static final double[] DOUBLE_POWERS = {
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    private static final int MAX_DIGITS = 18;
+
+    private FloatParser() {
+    }
+
+    /**
+     * The number in {@code bytes[start, end)}.
+     *
+     * @throws NumberFormatException if the text is not a number
+     */
+    static float parse(byte[] bytes, int start, int end) {
+        int i = start;
+        boolean negative = false;
+        if (i < end && (bytes[i] == '+' || bytes[i] == '-')) {
+            negative = bytes[i] == '-';
+            i++;
+        }
+        if (i < end && (bytes[i] == 'N' || bytes[i] == 'I')) {
+            return special(bytes, i, end, negative);
+        }
+        long mantissa = 0;
+        int digits = 0;
+        int scale = 0;
+        boolean exact = true;
+        boolean anyDigit = false;
+        boolean seenPoint = false;
+        for (; i < end; i++) {
+            byte c = bytes[i];
+            if (c >= '0' && c <= '9') {
+                anyDigit = true;
+                if (mantissa == 0 && c == '0') {
+                    scale -= seenPoint ? 1 : 0; // a leading zero is no significant digit
+                } else if (digits < MAX_DIGITS) {
+                    mantissa = mantissa * 10 + (c - '0');
+                    digits++;
+                    scale -= seenPoint ? 1 : 0;
+                } else {
+                    exact = false; // too many digits for a long: leave it to the JDK
+                    scale += seenPoint ? 0 : 1;
+                }
+            } else if (c == '.' && !seenPoint) {
+                seenPoint = true;
+            } else {
+                break;
+            }
+        }
+        if (!anyDigit) {
+            throw new NumberFormatException();
+        }
+        if (i < end && (bytes[i] == 'e' || bytes[i] == 'E')) {
+            i++;
+            boolean negativeExponent = false;
+            if (i < end && (bytes[i] == '+' || bytes[i] == '-')) {
+                negativeExponent = bytes[i] == '-';
+                i++;
+            }
+            int exponent = 0;
+            int exponentDigits = 0;
+            for (; i < end && bytes[i] >= '0' && bytes[i] <= '9'; i++) {
+                exponent = Math.min(exponent * 10 + (bytes[i] - '0'), 100_000);
+                exponentDigits++;
+            }
+            if (exponentDigits == 0) {
+                throw new NumberFormatException();
+            }
+            scale += negativeExponent ? -exponent : exponent;
+        }
+        if (i != end) {
+            throw new NumberFormatException();
+        }
+        float magnitude = exact ? fast(mantissa, scale) : Float.NaN;
+        if (Float.isNaN(magnitude)) {
+            magnitude = Math.abs(Float.parseFloat(new String(bytes, start, end - start, StandardCharsets.US_ASCII)));
+        }
+        return negative ? -magnitude : magnitude;
+    }
+
+    /**
+     * Clinger's fast path: when the digits and the power of ten are both exact in floating
+     * point, one rounding gives the correctly rounded result. NaN when it does not apply.
+     */
+    private static float fast(long mantissa, int scale) {
+        if (mantissa == 0) {
+            return 0f;
+        }
+        if (mantissa < (1L << 24) && Math.abs(scale) < FLOAT_POWERS.length) {
+            float m = mantissa;
+            return scale >= 0 ? m * FLOAT_POWERS[scale] : m / FLOAT_POWERS[-scale];
+        }
+        if (mantissa < (1L << 53) && Math.abs(scale) < DOUBLE_POWERS.length) {
+            double m = mantissa;
+            double value = scale >= 0 ? m * DOUBLE_POWERS[scale] : m / DOUBLE_POWERS[-scale];
+            // Rounding the double again to float is wrong only when the double lies exactly
+            // halfway between two floats: its lowest 29 bits are then 1 followed by zeros.
+            long lowBits = Double.doubleToRawLongBits(value) & ((1L << 29) - 1);
+            return lowBits == (1L << 28) ? Float.NaN : (float) value;
+        }
+        return Float.NaN;
+    }
+
+    private static float special(byte[] bytes, int from, int end, boolean negative) {
+        String word = new String(bytes, from, end - from, StandardCharsets.US_ASCII);
+        if (word.equals("NaN")) {
+            return Float.NaN;
+        }
+        if (word.equals("Infinity")) {
+            return negative ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY;
+        }
+        throw new NumberFormatException();
+    }
+}

@@ -1,0 +1,43 @@
+package rtd.io;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+/**
+ * A scene file that rtd cannot render: it carries every {@link SceneError} found, up to a
+ * limit, so that the user can fix them all in one go.
+ */
+public final class SceneException extends Exception {
+
+    private static final long serialVersionUID = 1L;
+
+    private final transient List<SceneError> errors;
+    private final boolean stoppedEarly;
+
+    /**
+     * An exception for the given errors, which must not be empty; {@code stoppedEarly} says
+     * that the reader stopped at its limit and the file may hold more.
+     */
+    public SceneException(List<SceneError> errors, boolean stoppedEarly) {
+        super(summary(errors), null, false, false);
+        this.errors = List.copyOf(errors);
+        this.stoppedEarly = stoppedEarly;
+    }
+
+    /** The errors, in the order of the file. */
+    public List<SceneError> errors() {
+        return errors;
+    }
+
+    /** Every error, formatted, one after the other. */
+    public String report() {
+        String all = errors.stream().map(SceneError::format).collect(Collectors.joining("\n"));
+        String count = errors.size() == 1 ? "1 error" : errors.size() + " errors";
+        return all + "\n" + count + (stoppedEarly ? "; stopped there, the file may hold more" : "") + "\n";
+    }
+
+    private static String summary(List<SceneError> errors) {
+        SceneError first = errors.get(0);
+        return first.file() + ":" + first.line() + ":" + first.column() + ": " + first.message();
+    }
+}

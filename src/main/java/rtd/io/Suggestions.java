@@ -1,0 +1,45 @@
+package rtd.io;
+
+import java.util.Locale;
+
+/** Finds the keyword a misspelt word was probably meant to be ("did you mean 'sphere'?"). */
+final class Suggestions {
+
+    private Suggestions() {
+    }
+
+    /** The statement keyword nearest to {@code word}, or null if none is near enough. */
+    static String nearestKeyword(String word) {
+        String best = null;
+        int bestDistance = Integer.MAX_VALUE;
+        for (Statement statement : Statement.values()) {
+            int distance = editDistance(word.toLowerCase(Locale.ROOT), statement.keyword);
+            if (distance < bestDistance) {
+                bestDistance = distance;
+                best = statement.keyword;
+            }
+        }
+        int allowed = Math.max(2, best.length() / 3);
+        return bestDistance <= allowed ? best : null;
+    }
+
+    /** The Levenshtein distance: the fewest single-character edits that turn a into b. */
+    static int editDistance(String a, String b) {
+        int[] previous = new int[b.length() + 1];
+        int[] current = new int[b.length() + 1];
+        for (int j = 0; j <= b.length(); j++) {
+            previous[j] = j;
+        }
+        for (int i = 1; i <= a.length(); i++) {
+            current[0] = i;
+            for (int j = 1; j <= b.length(); j++) {
+                int substitution = previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1);
+                current[j] = Math.min(substitution, Math.min(previous[j], current[j - 1]) + 1);
+            }
+            int[] swap = previous;
+            previous = current;
+            current = swap;
+        }
+        return previous[b.length()];
+    }
+}

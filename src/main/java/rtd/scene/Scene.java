@@ -1,0 +1,64 @@
+package rtd.scene;
+
+import java.awt.image.BufferedImage;
+import java.util.List;
+import rtd.camera.ICamera;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Intersection;
+import rtd.math.Ray;
+
+/**
+ * A scene: a background colour, a camera and the objects (paper, sections 4.1 and 4.3).
+ *
+ * <p>This is where the paper's algorithm (Listing 3.1) lives, in the paper's shape:
+ * {@link #render} makes a ray for every pixel (ray generation, section 3.2.1) and
+ * {@link #trace} tests it against every object (intersection test, section 3.2.2) and keeps
+ * the nearest (depth test, section 3.2.3). It is the plain reference; {@link rtd.render} and
+ * {@link rtd.accel} hold faster paths that draw the same pixels.
+ *
+ * @param ambient the colour of every pixel whose ray hits nothing
+ * @param camera  makes the rays
+ * @param objects the objects, in the order of the scene file; on a tie the first wins
+ */
+public record Scene(Color ambient, ICamera camera, List<IGeometry> objects) {
+
+    /** Keeps an unmodifiable copy of the objects, so that a scene never changes. */
+    public Scene {
+        objects = List.copyOf(objects);
+    }
+
+    /** Listing 4.2: one ray per pixel, traced, and its colour set on the image. */
+    public BufferedImage render(int width, int height) {
+        BufferedImage img = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        for (int x = 0; x < width; ++x) {
+            for (int y = 0; y < height; ++y) {
+                Ray ray = camera.generateRay(x, y, width, height);
+                img.setRGB(x, y, trace(ray).getRGB());
+            }
+        }
+        return img;
+    }
+
+    /**
+     * Listing 4.3: the intersection test with every object, then the depth test. The object
+     * whose hit point P lies nearest to the ray's origin O ({@code |P − O|}) gives the colour;
+     * the comparison is strict, so on a tie the object that comes first in the file wins.
+     */
+    public Color trace(Ray ray) {
+        float distance = Float.POSITIVE_INFINITY;
+        IGeometry hit = null;
+        for (IGeometry object : objects) {
+            Intersection intersection = object.intersect(ray);
+            if (intersection.happened()) {
+                float currentDistance = intersection.contactCoord()
+                        .subtract(ray.origin())
+                        .magnitude();
+                if (currentDistance < distance) {
+                    distance = currentDistance;
+                    hit = object;
+                }
+            }
+        }
+        return hit == null ? ambient : hit.color();
+    }
+}
