@@ -1,0 +1,173 @@
+package rtd.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import rtd.testing.Cli;
+import rtd.testing.Cli.Run;
+
+@DisplayName("The command line")
+class CommandLineTest {
+
+    private static final Path EXAMPLE = Path.of("examples", "input_rtd.txt");
+
+    @TempDir
+    Path dir;
+
+    private Path copyOfExample() throws IOException {
+        return Files.copy(EXAMPLE, dir.resolve("input_rtd.txt"));
+    }
+
+    @Test
+    void rendersTheExampleAt1920x1080AndExitsWith0() throws IOException {
+        Path out = dir.resolve("out.png");
+        Run run = Cli.run(EXAMPLE.toString(), "-o", out.toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        BufferedImage image = ImageIO.read(out.toFile());
+        assertThat(image.getWidth()).isEqualTo(1920);
+        assertThat(image.getHeight()).isEqualTo(1080);
+        assertThat(image.getRGB(460, 490) & 0xFFFFFF).isEqualTo(0xFF0000);
+    }
+
+    @Test
+    void withoutOutputOptionWritesTheScenesNameWithPngBesideIt() throws IOException {
+        Path scene = copyOfExample();
+        Run run = Cli.run(scene.toString(), "--width", "64", "--height", "36");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(dir.resolve("input_rtd.png")).isRegularFile();
+    }
+
+    @Test
+    void theDefaultOutputNameReplacesOnlyTheLastExtension() {
+        assertThat(RtdCommand.defaultOutput(Path.of("a/b.c.txt"))).isEqualTo(Path.of("a/b.c.png"));
+        assertThat(RtdCommand.defaultOutput(Path.of("scene"))).isEqualTo(Path.of("scene.png"));
+        assertThat(RtdCommand.defaultOutput(Path.of(".hidden"))).isEqualTo(Path.of(".hidden.png"));
+    }
+
+    @Test
+    void widthAndHeightSetTheImageSize() throws IOException {
+        Path out = dir.resolve("small.png");
+        Run run = Cli.run(EXAMPLE.toString(), "-o", out.toString(), "--width", "320", "--height", "200");
+        assertThat(run.exitCode()).isZero();
+        BufferedImage image = ImageIO.read(out.toFile());
+        assertThat(image.getWidth()).isEqualTo(320);
+        assertThat(image.getHeight()).isEqualTo(200);
+    }
+
+    @Test
+    void aWidthThatIsNotAPositiveWholeNumberIsMisuseWithExitCode2() {
+        for (String width : new String[] {"0", "-5", "abc", "1.5"}) {
+            Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("x.png").toString(), "--width", width);
+            assertThat(run.exitCode()).isEqualTo(2);
+            assertThat(run.err()).contains("--width").contains("'" + width + "' is not a positive whole number")
+                    .contains("Try 'rtd --help'").doesNotContain("at rtd.");
+        }
+        assertThat(dir.resolve("x.png")).doesNotExist();
+    }
+
+    @Test
+    void anUnknownOptionIsMisuseAndPicocliSuggestsTheNearestOne() {
+        Run run = Cli.run(EXAMPLE.toString(), "--widht", "100");
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("Unknown options: '--widht'").contains("Possible solutions: --width");
+    }
+
+    @Test
+    void noSceneIsMisuse() {
+        Run run = Cli.run();
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("Missing required parameter: 'SCENE'");
+    }
+
+    @Test
+    void aMissingSceneFileIsAFileErrorWithExitCode1AndNoOutput() {
+        Path out = dir.resolve("out.png");
+        Run run = Cli.run(dir.resolve("nope.txt").toString(), "-o", out.toString());
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.err()).contains("nope.txt").contains("no such file").doesNotContain("Exception");
+        assertThat(out).doesNotExist();
+    }
+
+    @Test
+    void aSceneErrorNamesFileLineAndColumnWithExitCode1() throws IOException {
+        Path scene = Files.writeString(dir.resolve("bad.txt"), "orthographic_camera:(0|0|20):(0|0|-1):(50)\nsphere:(1|2|3):(-1):(0|0|0)\n");
+        Run run = Cli.run(scene.toString(), "-o", dir.resolve("out.png").toString());
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.err()).contains(scene + ":2:17: error: the radius must be greater than 0, found -1");
+        assertThat(dir.resolve("out.png")).doesNotExist();
+    }
+
+    @Test
+    void versionAndHelpExitWith0() {
+        Run version = Cli.run("--version");
+        assertThat(version.exitCode()).isZero();
+        assertThat(version.out()).startsWith("rtd ");
+        Run help = Cli.run("--help");
+        assertThat(help.exitCode()).isZero();
+        assertThat(help.out()).contains("--width").contains("--height").contains("Exit codes:")
+                .contains("2   the command line is wrong");
+    }
+
+    @Test
+    void hIsNotTheHeight() {
+        Run run = Cli.run(EXAMPLE.toString(), "-h");
+        assertThat(run.exitCode()).isZero();
+        assertThat(run.out()).contains("Usage: rtd");
+    }
+
+    @Test
+    void aFailedRunLeavesAnExistingOutputFileByteForByteAsItWas() throws IOException {
+        Path out = Files.write(dir.resolve("out.png"), new byte[] {1, 2, 3, 4});
+        Path scene = Files.writeString(dir.resolve("bad.txt"), "sphere:(1|2|3):(1):(0|0|0)\n");
+        assertThat(Cli.run(scene.toString(), "-o", out.toString()).exitCode()).isEqualTo(1);
+        assertThat(Files.readAllBytes(out)).containsExactly(1, 2, 3, 4);
+        assertThat(Cli.run(EXAMPLE.toString(), "-o", out.toString(), "--width", "-1").exitCode()).isEqualTo(2);
+        assertThat(Files.readAllBytes(out)).containsExactly(1, 2, 3, 4);
+        try (var files = Files.list(dir)) {
+            assertThat(files.map(p -> p.getFileName().toString())).containsExactlyInAnyOrder("out.png", "bad.txt");
+        }
+    }
+
+    @Test
+    void aMissingOutputFolderIsAFileErrorBeforeAnyRendering() {
+        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("no/such/folder/out.png").toString());
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.err()).contains("the output folder does not exist");
+    }
+
+    @Test
+    void anOutputThatIsAFolderOrTheSceneItselfIsMisuse() throws IOException {
+        assertThat(Cli.run(EXAMPLE.toString(), "-o", dir.toString()).exitCode()).isEqualTo(2);
+        Path scene = Files.copy(EXAMPLE, dir.resolve("scene.png"));
+        Run run = Cli.run(scene.toString());
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("is the scene file itself");
+        assertThat(Files.readString(scene)).isEqualTo(Files.readString(EXAMPLE));
+    }
+
+    @Test
+    void anImageTooLargeForMemoryIsRefusedBeforeAllocating() {
+        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("huge.png").toString(), "--width", "2000000", "--height", "2000000");
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("2000000×2000000").contains("at most");
+        Run big = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("huge.png").toString(), "--width", "46000", "--height", "46000");
+        assertThat(big.exitCode()).isEqualTo(2);
+        assertThat(big.err()).contains("needs 7.9 GiB of memory").contains("-Xmx");
+    }
+
+    @Test
+    void statsReportEachPhaseAndTheWorkPerRay() {
+        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("s.png").toString(), "--stats", "--accel", "none",
+                "--width", "100", "--height", "50");
+        assertThat(run.exitCode()).isZero();
+        assertThat(run.err()).contains("parse").contains("build").contains("render").contains("write")
+                .contains("5,000 rays").contains("per ray: 2.00 intersection tests");
+    }
+}
