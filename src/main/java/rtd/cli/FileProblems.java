@@ -5,29 +5,28 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.NotDirectoryException;
+import java.util.Locale;
 
-/** Turns a failed file operation into one sentence for a person. */
+/** Turns a failed file operation into words for a person: "no such file", "permission denied". */
 final class FileProblems {
 
     private FileProblems() {
     }
 
-    static String describe(IOException e) {
-        if (e instanceof NoSuchFileException missing) {
-            return missing.getReason() != null
-                    ? missing.getReason() + ": " + missing.getFile()
-                    : "no such file: " + missing.getFile();
+    /** Why {@code e} happened, without Java's exception names. */
+    static String reason(IOException e) {
+        if (e instanceof FileSystemException failure && failure.getReason() != null) {
+            return failure.getReason().toLowerCase(Locale.ROOT);
         }
-        if (e instanceof AccessDeniedException denied) {
-            return (denied.getReason() != null ? denied.getReason() : "permission denied") + ": " + denied.getFile();
+        if (e instanceof NoSuchFileException) {
+            return "no such file";
         }
-        if (e instanceof NotDirectoryException notFolder) {
-            return "not a folder: " + notFolder.getFile();
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
         }
-        if (e instanceof FileSystemException fileSystem && fileSystem.getFile() != null) {
-            String reason = fileSystem.getReason() != null ? fileSystem.getReason() : "cannot be used";
-            return fileSystem.getFile() + ": " + reason;
+        if (e instanceof NotDirectoryException) {
+            return "not a folder";
         }
-        return e.getMessage() != null ? e.getMessage() : e.toString();
+        return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
     }
 }

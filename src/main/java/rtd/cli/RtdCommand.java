@@ -2,9 +2,7 @@ package rtd.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
@@ -105,8 +103,8 @@ public final class RtdCommand implements Callable<Integer> {
             err.print(e.report());
             printDebug(err, e);
             return 1;
-        } catch (IOException e) {
-            err.println("rtd: " + FileProblems.describe(e));
+        } catch (FileError e) {
+            err.println("rtd: " + e.getMessage());
             printDebug(err, e);
             return 1;
         } catch (OutOfMemoryError e) {
@@ -117,10 +115,15 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    private int render(PrintWriter err) throws SceneException, IOException {
+    private int render(PrintWriter err) throws SceneException, FileError {
         Path target = outputPath();
         PhaseTimer timer = new PhaseTimer();
-        Scene scene = SceneIO.readScene(scenePath);
+        Scene scene;
+        try {
+            scene = SceneIO.readScene(scenePath);
+        } catch (IOException e) {
+            throw new FileError("cannot read the scene file '" + scenePath + "': " + FileProblems.reason(e), e);
+        }
         timer.endPhase("parse");
         ImageSize.check(spec.commandLine(), width, height);
 
@@ -145,7 +148,11 @@ public final class RtdCommand implements Callable<Integer> {
         }
         timer.endPhase("render");
 
-        SceneIO.writePng(result.image(), target);
+        try {
+            SceneIO.writePng(result.image(), target);
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + target + "': " + FileProblems.reason(e), e);
+        }
         timer.endPhase("write");
         if (stats) {
             err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target));
@@ -154,7 +161,7 @@ public final class RtdCommand implements Callable<Integer> {
     }
 
     /** The output path: {@code -o}, or the scene's name with {@code .png}; checked before rendering. */
-    private Path outputPath() throws IOException {
+    private Path outputPath() throws FileError {
         Path target = output != null ? output : defaultOutput(scenePath);
         Path folder = target.toAbsolutePath().getParent();
         if (Files.isDirectory(target)) {
@@ -166,10 +173,11 @@ public final class RtdCommand implements Callable<Integer> {
                     + "choose another with -o");
         }
         if (!Files.isDirectory(folder)) {
-            throw new NoSuchFileException(folder.toString(), null, "the output folder does not exist");
+            throw new FileError("cannot write '" + target + "': the folder '" + folder + "' "
+                    + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"), null);
         }
         if (!Files.isWritable(folder)) {
-            throw new AccessDeniedException(folder.toString(), null, "the output folder is not writable");
+            throw new FileError("cannot write '" + target + "': the folder '" + folder + "' is not writable", null);
         }
         return target;
     }
@@ -180,6 +188,15 @@ public final class RtdCommand implements Callable<Integer> {
         int dot = name.lastIndexOf('.');
         String base = dot > 0 ? name.substring(0, dot) : name;
         return scene.resolveSibling(base + ".png");
+    }
+
+    /** A file that cannot be read or written; the message says which and why. */
+    private static final class FileError extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        FileError(String message, IOException cause) {
+            super(message, cause);
+        }
     }
 
     private void printDebug(PrintWriter err, Exception e) {

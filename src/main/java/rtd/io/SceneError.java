@@ -7,7 +7,8 @@ package rtd.io;
  * @param line       the line, from 1
  * @param column     the column, from 1, counted in characters
  * @param message    what was expected and what was found
- * @param sourceLine the text of the offending line, shown with a caret under the column
+ * @param sourceLine the text of the offending line, shown with a caret under the column; null
+ *                   when there is no line to show (a file that is not text)
  * @param help       a hint such as "did you mean 'sphere'?", or null
  */
 public record SceneError(String file, int line, int column, String message, String sourceLine, String help) {
@@ -26,9 +27,11 @@ public record SceneError(String file, int line, int column, String message, Stri
         text.append(file).append(':').append(line).append(':').append(column)
                 .append(": error: ").append(message).append('\n');
         String number = String.valueOf(line);
-        String gutter = " ".repeat(number.length() + 1);
-        text.append(' ').append(number).append(" | ").append(sourceLine).append('\n');
-        text.append(gutter).append("| ").append(caretPadding()).append("^\n");
+        String gutter = " ".repeat(number.length() + 2);
+        if (sourceLine != null) {
+            text.append(' ').append(number).append(" | ").append(sourceLine).append('\n');
+            text.append(gutter).append("| ").append(caretPadding()).append("^\n");
+        }
         if (help != null) {
             text.append(gutter).append("= help: ").append(help).append('\n');
         }

@@ -6,6 +6,7 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -28,6 +29,9 @@ public final class SceneIO {
      * @throws IOException    if the file cannot be read
      */
     public static Scene readScene(Path path) throws SceneException, IOException {
+        if (Files.isDirectory(path)) {
+            throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
+        }
         return SceneParser.parse(new SourceText(path.toString(), Files.readAllBytes(path)));
     }
 

@@ -104,7 +104,7 @@ final class SceneParser {
         }
         String what = bytes[bad] == 0 ? "a NUL byte" : String.format("byte 0x%02X, which is not UTF-8", bytes[bad] & 0xFF);
         errors.add(new SceneError(source.name(), badLine, source.column(badLineStart, bad),
-                "this is not a text file: found " + what, "", "a scene is a text file, such as examples/input_rtd.txt"));
+                "this is not a text file: found " + what, null, "a scene is a text file, such as examples/input_rtd.txt"));
         return false;
     }
 
@@ -255,8 +255,10 @@ final class SceneParser {
         try {
             return FloatParser.parse(bytes, tokenStart, pos);
         } catch (NumberFormatException e) {
-            throw error(tokenStart, "expected a number, found '" + text(tokenStart, pos) + "'",
-                    "numbers are written like 3, -0.5, .5, 1. or 2e3");
+            String token = text(tokenStart, pos);
+            throw error(tokenStart, "expected a number, found '" + token + "'", token.contains("\u2212")
+                    ? "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead"
+                    : "numbers are written like 3, -0.5, .5, 1. or 2e3");
         }
     }
 
@@ -403,7 +405,7 @@ final class SceneParser {
     /** What stands at {@code offset}, for "found …" in a message. */
     private String describe(int offset) {
         if (offset >= bytes.length) {
-            return "the end of the file";
+            return offset > lineStart ? "the end of the line" : "the end of the file";
         }
         if (bytes[offset] == '\n' || bytes[offset] == '\r' && offset + 1 < bytes.length && bytes[offset + 1] == '\n') {
             return "the end of the line";
@@ -412,6 +414,11 @@ final class SceneParser {
             return "a comment";
         }
         int end = offset + 1;
+        if (isWordByte(bytes[offset])) {
+            while (end < bytes.length && isWordByte(bytes[end])) {
+                end++; // show a whole word, not its first letter
+            }
+        }
         while (end < bytes.length && (bytes[end] & 0xC0) == 0x80) {
             end++; // the rest of a character of several bytes
         }

@@ -91,7 +91,8 @@ class CommandLineTest {
         Path out = dir.resolve("out.png");
         Run run = Cli.run(dir.resolve("nope.txt").toString(), "-o", out.toString());
         assertThat(run.exitCode()).isEqualTo(1);
-        assertThat(run.err()).contains("nope.txt").contains("no such file").doesNotContain("Exception");
+        assertThat(run.err()).contains("rtd: cannot read the scene file '" + dir.resolve("nope.txt") + "': no such file")
+                .doesNotContain("Exception");
         assertThat(out).doesNotExist();
     }
 
@@ -139,7 +140,7 @@ class CommandLineTest {
     void aMissingOutputFolderIsAFileErrorBeforeAnyRendering() {
         Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("no/such/folder/out.png").toString());
         assertThat(run.exitCode()).isEqualTo(1);
-        assertThat(run.err()).contains("the output folder does not exist");
+        assertThat(run.err()).contains("cannot write").contains("folder").contains("does not exist");
     }
 
     @Test
