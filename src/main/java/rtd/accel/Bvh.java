@@ -1,7 +1,5 @@
 package rtd.accel;
 
-import java.util.List;
-import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.scene.Color;
 import rtd.scene.Scene;
@@ -38,15 +36,12 @@ public final class Bvh {
     }
 
     /**
-     * Builds the hierarchy for rendering {@code scene} at {@code width × height}. The image
-     * size matters because each object's box also holds the hits that rounding adds, which
-     * grow with the distance from the ray origins (see {@link IGeometry#bounds}).
+     * Builds the hierarchy for {@code scene}. It depends on the camera because each object's
+     * box also holds the hits that rounding adds, which grow with the distance from the ray
+     * origins (see {@link IGeometry#bounds}).
      */
-    public static Bvh build(Scene scene, int width, int height) {
-        ICamera camera = scene.camera();
-        List<IGeometry> objects = scene.objects();
-        return new BvhBuilder(objects, camera.position(), camera.rayOriginRadius(width, height))
-                .build(scene.ambient());
+    public static Bvh build(Scene scene) {
+        return new BvhBuilder(scene.objects(), scene.camera()).build(scene.ambient());
     }
 
     /** A new tracer that follows rays through this hierarchy; one per thread. */

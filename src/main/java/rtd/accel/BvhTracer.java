@@ -27,6 +27,8 @@ public final class BvhTracer implements Tracer {
      * size) keeps a box whose object could tie or win by a rounding error.
      */
     private static final float SKIP_MARGIN = 1e-5f;
+    /** The entry of a box the ray misses. */
+    private static final float MISS = Float.POSITIVE_INFINITY;
 
     private final Bvh bvh;
     private final int[] stackNodes;
@@ -55,6 +57,11 @@ public final class BvhTracer implements Tracer {
 
     /** The place in {@code bvh.objects} of the object the ray sees, or −1 for none. */
     private int nearestObject(Ray ray) {
+        // Local copies: the JIT keeps them in registers through the loop.
+        float[] bounds = bvh.bounds;
+        int[] nodes = bvh.nodes;
+        IGeometry[] objects = bvh.objects;
+        int[] fileOrder = bvh.fileOrder;
         Vector3f origin = ray.origin();
         Vector3f direction = ray.direction();
         float ox = origin.x();
@@ -68,24 +75,26 @@ public final class BvhTracer implements Tracer {
         int best = -1;
         float bestDistance = Float.POSITIVE_INFINITY;
         float skipBeyond = Float.POSITIVE_INFINITY;
+        int visited = 0;
+        int tested = 0;
         int stackSize = 0;
         int node = 0;
-        float entry = entry(node, ox, oy, oz, ix, iy, iz);
-        if (entry == Float.POSITIVE_INFINITY) {
+        if (entry(bounds, node, ox, oy, oz, ix, iy, iz) == MISS) {
+            nodesVisited++;
             return -1;
         }
         while (true) {
-            nodesVisited++;
-            int first = bvh.nodes[2 * node];
-            int count = bvh.nodes[2 * node + 1];
+            visited++;
+            int first = nodes[2 * node];
+            int count = nodes[2 * node + 1];
             if (count > 0) {
                 for (int i = first; i < first + count; i++) {
-                    tests++;
-                    Intersection intersection = bvh.objects[i].intersect(ray);
+                    tested++;
+                    Intersection intersection = objects[i].intersect(ray);
                     if (intersection.happened()) {
                         float distance = intersection.contactCoord().subtract(origin).magnitude();
                         if (distance < bestDistance
-                                || (distance == bestDistance && best >= 0 && bvh.fileOrder[i] < bvh.fileOrder[best])) {
+                                || (distance == bestDistance && best >= 0 && fileOrder[i] < fileOrder[best])) {
                             best = i;
                             bestDistance = distance;
                             float t = intersection.t();
@@ -96,8 +105,8 @@ public final class BvhTracer implements Tracer {
             } else {
                 int near = first;
                 int far = first + 1;
-                float nearEntry = entry(near, ox, oy, oz, ix, iy, iz);
-                float farEntry = entry(far, ox, oy, oz, ix, iy, iz);
+                float nearEntry = entry(bounds, near, ox, oy, oz, ix, iy, iz);
+                float farEntry = entry(bounds, far, ox, oy, oz, ix, iy, iz);
                 if (farEntry < nearEntry) {
                     int swapNode = near;
                     near = far;
@@ -106,18 +115,20 @@ public final class BvhTracer implements Tracer {
                     nearEntry = farEntry;
                     farEntry = swapEntry;
                 }
-                if (farEntry <= skipBeyond) {
+                if (worthVisiting(farEntry, skipBeyond)) {
                     stackNodes[stackSize] = far;
                     stackEntries[stackSize] = farEntry;
                     stackSize++;
                 }
-                if (nearEntry <= skipBeyond) {
+                if (worthVisiting(nearEntry, skipBeyond)) {
                     node = near;
                     continue;
                 }
             }
             do {
                 if (stackSize == 0) {
+                    nodesVisited += visited;
+                    tests += tested;
                     return best;
                 }
                 stackSize--;
@@ -126,21 +137,25 @@ public final class BvhTracer implements Tracer {
         }
     }
 
+    /** Whether the ray enters a box ({@code entry} finite) no farther than {@code skipBeyond}. */
+    private static boolean worthVisiting(float entry, float skipBeyond) {
+        return entry != MISS && entry <= skipBeyond;
+    }
+
     /**
      * The slab test: the ray parameter t at which the ray enters node's box, or infinity if it
-     * misses it. Negative when the origin lies inside the box.
+     * misses it ({@link #MISS}). Negative when the origin lies inside the box.
      */
-    private float entry(int node, float ox, float oy, float oz, float ix, float iy, float iz) {
-        float[] b = bvh.bounds;
+    private static float entry(float[] bounds, int node, float ox, float oy, float oz, float ix, float iy, float iz) {
         int at = 6 * node;
-        float x0 = (b[at] - ox) * ix;
-        float x1 = (b[at + 3] - ox) * ix;
-        float y0 = (b[at + 1] - oy) * iy;
-        float y1 = (b[at + 4] - oy) * iy;
-        float z0 = (b[at + 2] - oz) * iz;
-        float z1 = (b[at + 5] - oz) * iz;
-        float enter = Math.max(Math.max(Math.min(x0, x1), Math.min(y0, y1)), Math.min(z0, z1));
-        float exit = Math.min(Math.min(Math.max(x0, x1), Math.max(y0, y1)), Math.max(z0, z1));
-        return enter <= exit && exit >= 0 ? enter : Float.POSITIVE_INFINITY;
+        float x0 = (bounds[at] - ox) * ix;
+        float x1 = (bounds[at + 3] - ox) * ix;
+        float y0 = (bounds[at + 1] - oy) * iy;
+        float y1 = (bounds[at + 4] - oy) * iy;
+        float z0 = (bounds[at + 2] - oz) * iz;
+        float z1 = (bounds[at + 5] - oz) * iz;
+        float enter = FastMath.max(FastMath.max(FastMath.min(x0, x1), FastMath.min(y0, y1)), FastMath.min(z0, z1));
+        float exit = FastMath.min(FastMath.min(FastMath.max(x0, x1), FastMath.max(y0, y1)), FastMath.max(z0, z1));
+        return enter <= exit && exit >= 0 ? enter : MISS;
     }
 }

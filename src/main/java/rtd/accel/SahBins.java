@@ -78,8 +78,8 @@ final class SahBins {
 
     private static void grow(float[] box, int at, float[] other, int otherAt) {
         for (int k = 0; k < 3; k++) {
-            box[at + k] = Math.min(box[at + k], other[otherAt + k]);
-            box[at + k + 3] = Math.max(box[at + k + 3], other[otherAt + k + 3]);
+            box[at + k] = FastMath.min(box[at + k], other[otherAt + k]);
+            box[at + k + 3] = FastMath.max(box[at + k + 3], other[otherAt + k + 3]);
         }
     }
 }

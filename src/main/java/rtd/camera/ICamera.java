@@ -22,8 +22,9 @@ public interface ICamera {
     Vector3f position();
 
     /**
-     * How far from {@link #position()} the origin of any ray of a {@code w × h} image can lie:
-     * 0 for a camera whose rays all start in one point.
+     * The largest distance from {@code point} to the origin of any ray of this camera that
+     * passes within {@code reach} of {@code point}. A bounding volume hierarchy needs it to know
+     * how large rounding errors can grow (see {@link rtd.geometry.IGeometry#bounds}).
      */
-    float rayOriginRadius(int w, int h);
+    float farthestOrigin(Vector3f point, float reach);
 }

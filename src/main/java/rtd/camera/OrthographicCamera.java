@@ -66,10 +66,16 @@ public final class OrthographicCamera implements ICamera {
         return pos;
     }
 
-    /** Half the image diagonal in world units, plus a pixel for rounding. */
+    /**
+     * All origins lie in the plane through {@code pos} perpendicular to {@code dir}, so a ray
+     * that passes within {@code reach} of the point starts at most
+     * {@code √(depth² + reach²)} from it, where depth is the point's distance from that plane.
+     * A small relative margin covers the rounding of the origins.
+     */
     @Override
-    public float rayOriginRadius(int w, int h) {
-        return (float) ((Math.hypot(w / 2 + 1, h / 2 + 1) + 1) / zoom);
+    public float farthestOrigin(Vector3f point, float reach) {
+        double depth = Math.abs(point.subtract(pos).dot(dir)) / (double) dir.magnitude();
+        return (float) (Math.hypot(depth, reach) * (1 + 1e-6) + 1e-6 * pos.magnitude());
     }
 
     /** The view direction, exactly as the scene file gave it. */

@@ -131,7 +131,7 @@ public final class RtdCommand implements Callable<Integer> {
         Supplier<Tracer> tracers;
         Bvh bvh = null;
         if (useBvh) {
-            bvh = Bvh.build(scene, width, height);
+            bvh = Bvh.build(scene);
             tracers = bvh::newTracer;
         } else {
             tracers = () -> new LinearTracer(scene);

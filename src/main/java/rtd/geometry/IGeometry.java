@@ -1,7 +1,7 @@
 package rtd.geometry;
 
 import rtd.math.Ray;
-import rtd.math.Vector3f;
+import rtd.camera.ICamera;
 import rtd.scene.Color;
 
 /**
@@ -22,12 +22,10 @@ public interface IGeometry {
     /**
      * An axis-aligned box around this object that a bounding volume hierarchy can sort it by.
      *
-     * <p>It must hold every point at which {@link #intersect} can report a hit, including the
-     * hits that single-precision rounding adds near the surface, for every ray whose origin
-     * lies in the ball of radius {@code originRadius} around {@code originCentre} (for an
-     * orthographic camera: around its position, as far as the image's corners reach).
+     * <p>It must hold every point at which {@link #intersect} can report a hit for a ray of
+     * {@code camera}, including the hits that single-precision rounding adds near the surface.
      * Otherwise the accelerated renderer could skip a hit that the paper's loop finds, and the
      * two pictures would differ.
      */
-    BoundingBox bounds(Vector3f originCentre, float originRadius);
+    BoundingBox bounds(ICamera camera);
 }

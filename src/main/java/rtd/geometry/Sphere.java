@@ -1,5 +1,6 @@
 package rtd.geometry;
 
+import rtd.camera.ICamera;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.scene.Color;
@@ -51,18 +52,24 @@ public record Sphere(Vector3f center, float radius, Color color) implements IGeo
     /**
      * The sphere's box, widened by how far rounding can move its surface.
      *
-     * <p>In {@link #intersect} the discriminant is a difference of numbers as large as
-     * {@code |O − M|²}; its rounding error amounts to testing against a sphere of radius
-     * {@code r'} with {@code r'² ≤ r² + δ}, {@code δ = 16u·|O − M|² + 6u·r²} (u the unit roundoff,
-     * by the standard error bounds of dot products). We widen by four times that: the surface
-     * moves by at most {@code min(√δ, δ / 2r)}.
+     * <p>In {@link #intersect} the discriminant is a difference of two numbers as large as
+     * {@code 4|R|²|O − M|²}. Following the standard error bounds of sums and products, each
+     * rounding changes it by so little that the float test hits exactly where an exact test
+     * against a sphere of radius {@code r'} would, with {@code r'² ≤ r² + δ} and
+     * {@code δ = 15u·|O − M|² + 6u·r²} (u the unit roundoff; first order, we add a quarter).
+     * So the surface moves out by at most {@code min(√δ, δ / 2r)}, plus a few u·|O − M| for
+     * the rounding of b and of the root. {@code |O − M|} is at most what the camera says for
+     * rays that pass close enough to hit.
      */
     @Override
-    public BoundingBox bounds(Vector3f originCentre, float originRadius) {
-        double d = (double) originCentre.subtract(center).magnitude() + originRadius + radius; // ≥ |O − M|
-        double delta = 4 * (16 * UNIT_ROUNDOFF * d * d + 6 * UNIT_ROUNDOFF * (double) radius * radius);
-        double slack = Math.min(Math.sqrt(delta), delta / (2.0 * radius)) + 4 * UNIT_ROUNDOFF * d;
-        double half = radius + slack + 4 * UNIT_ROUNDOFF * (Math.abs(radius) + maxAbs(center));
+    public BoundingBox bounds(ICamera camera) {
+        double slack = 0;
+        for (int round = 0; round < 2; round++) { // the reach grows with the slack: settle it
+            double d = camera.farthestOrigin(center, (float) (radius + slack + 1e-3 * radius));
+            double delta = 1.25 * (15 * UNIT_ROUNDOFF * d * d + 6 * UNIT_ROUNDOFF * (double) radius * radius);
+            slack = Math.min(Math.sqrt(delta), delta / (2.0 * radius)) + 8 * UNIT_ROUNDOFF * d;
+        }
+        double half = (radius + slack) * (1 + 1e-6) + 4 * UNIT_ROUNDOFF * maxAbs(center);
         return new BoundingBox(
                 new Vector3f(down(center.x() - half), down(center.y() - half), down(center.z() - half)),
                 new Vector3f(up(center.x() + half), up(center.y() + half), up(center.z() + half)));

@@ -8,6 +8,8 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.geometry.IGeometry;
@@ -198,28 +200,26 @@ final class SceneParser {
 
     /** Reads {@code :(n|n|…)} into {@link #values} from {@code count} on; returns the new count. */
     private int readGroup(Statement statement, Group group, int count) throws StatementError {
-        String what = "the " + group.meaning() + " of '" + statement.keyword + "'";
         skipBlanks();
         if (!at(':')) {
-            throw error(pos, "expected ':' before " + what + ", found " + describe(pos), "write it as " + statement.usage());
+            throw groupError(pos, "expected ':' before %s, found " + describe(pos), statement, group);
         }
         pos++;
         skipBlanks();
         if (!at('(')) {
-            throw error(pos, "expected '(' to start " + what + ", found " + describe(pos), "write it as " + statement.usage());
+            throw groupError(pos, "expected '(' to start %s, found " + describe(pos), statement, group);
         }
         int groupStart = pos++;
         skipBlanks();
         if (at(')')) {
-            throw error(groupStart, "empty group: " + what + " needs " + numbers(group), "write it as " + statement.usage());
+            throw groupError(groupStart, "empty group: %s needs " + numbers(group), statement, group);
         }
         int found = 0;
         while (true) {
             skipBlanks();
             float value = readNumber();
             if (found == group.size()) {
-                throw error(tokenStart, "too many numbers in " + what + ": it takes " + numbers(group),
-                        "write it as " + statement.usage());
+                throw groupError(tokenStart, "too many numbers in %s: it takes " + numbers(group), statement, group);
             }
             values[count + found] = value;
             valueStarts[count + found] = tokenStart;
@@ -232,15 +232,21 @@ final class SceneParser {
                 pos++;
                 break;
             } else {
-                throw error(pos, "expected '|' or ')' after a number in " + what + ", found " + describe(pos),
-                        "write it as " + statement.usage());
+                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + describe(pos), statement, group);
             }
         }
         if (found < group.size()) {
-            throw error(groupStart, "too few numbers in " + what + ": it takes " + numbers(group) + ", found " + found,
-                    "write it as " + statement.usage());
+            throw groupError(groupStart, "too few numbers in %s: it takes " + numbers(group) + ", found " + found,
+                    statement, group);
         }
         return count + found;
+    }
+
+    /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
+    private StatementError groupError(int offset, String message, Statement statement, Group group) {
+        String what = "the " + group.meaning() + " of '" + statement.keyword + "'";
+        String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(what)); // ours comes first
+        return error(offset, text, "write it as " + statement.usage());
     }
 
     /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */

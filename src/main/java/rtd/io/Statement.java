@@ -14,12 +14,14 @@ enum Statement {
             new Group("position", "x|y|z"), new Group("view direction", "x|y|z"), new Group("zoom", "zoom")),
     SPHERE("sphere", new Group("centre", "x|y|z"), new Group("radius", "r"), new Group("colour", "R|G|B"));
 
-    /** One group of a statement: what it means and the names of its numbers. */
-    record Group(String meaning, String shape) {
+    /**
+     * One group of a statement: what it means, the names of its numbers (such as
+     * {@code x|y|z}), and how many numbers it holds.
+     */
+    record Group(String meaning, String shape, int size) {
 
-        /** How many numbers the group holds. */
-        int size() {
-            return shape.split("\\|").length;
+        Group(String meaning, String shape) {
+            this(meaning, shape, shape.split("\\|").length);
         }
     }
 

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import rtd.camera.OrthographicCamera;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.scene.Color;
@@ -60,7 +61,7 @@ class SphereTest {
 
     @Test
     void theBoundsHoldTheSphereAndAreOnlySlightlyWider() {
-        BoundingBox box = sphere.bounds(new Vector3f(0, 0, 20), 10);
+        BoundingBox box = sphere.bounds(new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50));
         assertThat(box.min().x()).isLessThan(-2f).isGreaterThan(-2.1f);
         assertThat(box.max().z()).isGreaterThan(2f).isLessThan(2.1f);
     }

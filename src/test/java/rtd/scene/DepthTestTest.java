@@ -37,7 +37,7 @@ class DepthTestTest {
         Sphere second = sphere(0, 0, 0, 2, 0xFFFF00);
         Scene scene = scene(frontCamera(20, 10), first, second);
         assertThat(scene.trace(axis).getRGB()).isEqualTo(0x0000FF);
-        Bvh bvh = Bvh.build(scene, 10, 10);
+        Bvh bvh = Bvh.build(scene);
         assertThat(bvh.newTracer().trace(axis).getRGB()).isEqualTo(0x0000FF);
     }
 
