@@ -46,7 +46,8 @@ public final class BvhTracer implements Tracer {
     @Override
     public Color trace(Ray ray) {
         rays++;
-        int nearest = nearestObject(ray);
+        Vector3f origin = ray.origin();
+        int nearest = nearestObject(origin.x(), origin.y(), origin.z(), ray.direction());
         return nearest < 0 ? bvh.ambient : bvh.objects[nearest].color();
     }
 
@@ -55,18 +56,21 @@ public final class BvhTracer implements Tracer {
         return new WorkCount(rays, tests, nodesVisited);
     }
 
-    /** The place in {@code bvh.objects} of the object the ray sees, or −1 for none. */
-    private int nearestObject(Ray ray) {
+    /**
+     * The place in {@code bvh.objects} of the object the ray sees, or −1 for none.
+     *
+     * <p>It takes the ray's origin as three numbers and makes its own {@code Ray}: this method
+     * is too long for the JIT to inline, and a {@code Ray} passed in would have to be allocated
+     * for every pixel, while one made here stays in registers.
+     */
+    private int nearestObject(float ox, float oy, float oz, Vector3f direction) {
         // Local copies: the JIT keeps them in registers through the loop.
         float[] bounds = bvh.bounds;
         int[] nodes = bvh.nodes;
         IGeometry[] objects = bvh.objects;
         int[] fileOrder = bvh.fileOrder;
-        Vector3f origin = ray.origin();
-        Vector3f direction = ray.direction();
-        float ox = origin.x();
-        float oy = origin.y();
-        float oz = origin.z();
+        Vector3f origin = new Vector3f(ox, oy, oz);
+        Ray ray = new Ray(origin, direction);
         float ix = 1f / direction.x();
         float iy = 1f / direction.y();
         float iz = 1f / direction.z();

@@ -27,9 +27,7 @@ public record Sphere(Vector3f center, float radius, Color color) implements IGeo
         float a = direction.dot(direction);                                  // equation 3.6
         float b = 2 * direction.dot(centerToOrigin);                        // equation 3.7
         float c = centerToOrigin.dot(centerToOrigin) - radius * radius;      // equation 3.8
-        float t = smallestRootNotBehind(a, b, b * b - 4 * a * c);
-        // One return of one new object, hit or miss: the JIT can then keep it in registers.
-        return new Intersection(t >= 0, t, ray.pointAt(t));
+        return Intersection.at(ray, smallestRootNotBehind(a, b, b * b - 4 * a * c));
     }
 
     /**

@@ -1,0 +1,32 @@
+package rtd.bench;
+
+import java.util.ArrayList;
+import java.util.List;
+import rtd.camera.OrthographicCamera;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Sphere;
+import rtd.math.Vector3f;
+import rtd.scene.Color;
+import rtd.scene.Scene;
+
+/** The benchmark scenes of {@link SceneGenerator}, built in memory. */
+final class BenchScenes {
+
+    static final int WIDTH = 1920;
+    static final int HEIGHT = 1080;
+
+    private BenchScenes() {
+    }
+
+    static Scene randomSpheres(int count) {
+        List<IGeometry> spheres = new ArrayList<>(count);
+        for (SceneGenerator.Ball b : SceneGenerator.balls(count, 42)) {
+            spheres.add(new Sphere(new Vector3f(b.x(), b.y(), b.z()), b.r(), new Color(b.red(), b.green(), b.blue())));
+        }
+        return new Scene(new Color(16, 18, 28), paperCamera(), spheres);
+    }
+
+    static OrthographicCamera paperCamera() {
+        return new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50);
+    }
+}

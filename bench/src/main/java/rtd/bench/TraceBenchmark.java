@@ -1,0 +1,66 @@
+package rtd.bench;
+
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import rtd.accel.Bvh;
+import rtd.camera.OrthographicCamera;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
+
+/**
+ * One ray per pixel of a 1920 × 1080 image, made and traced as the renderer does it, row by
+ * row, through the bounding volume hierarchy, for random scenes of N spheres (those of
+ * {@link SceneGenerator}). The score is nanoseconds per ray; {@link PaperLoopBenchmark} is the
+ * same for the paper's loop.
+ * With {@code -prof gc}, {@code gc.alloc.rate.norm} is the bytes allocated per ray.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.NANOSECONDS)
+@Warmup(iterations = 3, time = 2)
+@Measurement(iterations = 5, time = 2)
+@Fork(1)
+public class TraceBenchmark {
+
+    @Param({"10", "1000", "100000", "1000000"})
+    public int spheres;
+
+    private Scene scene;
+    private OrthographicCamera camera;
+    private Tracer bvh;
+    private int row;
+    private int checksum;
+
+    @Setup(Level.Trial)
+    public void setUp() {
+        scene = BenchScenes.randomSpheres(spheres);
+        camera = BenchScenes.paperCamera();
+        bvh = Bvh.build(scene).newTracer();
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(BenchScenes.WIDTH)
+    public int bvh() {
+        return traceRow(bvh);
+    }
+
+    private int traceRow(Tracer tracer) {
+        row = (row + 7) % BenchScenes.HEIGHT;
+        for (int x = 0; x < BenchScenes.WIDTH; x++) {
+            checksum += tracer.trace(camera.generateRay(x, row, BenchScenes.WIDTH, BenchScenes.HEIGHT)).getRGB();
+        }
+        return checksum;
+    }
+}
