@@ -1,5 +1,7 @@
 package rtd.accel;
 
+import java.util.concurrent.ForkJoinPool;
+
 import rtd.geometry.IGeometry;
 import rtd.scene.Color;
 import rtd.scene.Scene;
@@ -11,13 +13,16 @@ import rtd.scene.Scene;
  *
  * <p>The tree is stored flat, for speed: node {@code i} has its box in
  * {@code bounds[6i .. 6i+5]} (min x, y, z, max x, y, z) and two numbers in
- * {@code nodes[2i], nodes[2i+1]}. An inner node has {@code nodes[2i+1] == 0} and its children
- * at {@code nodes[2i]} and {@code nodes[2i] + 1}; a leaf holds {@code nodes[2i+1]} objects
- * starting at {@code objects[nodes[2i]]}. The objects are sorted so that each leaf's are
+ * {@code nodes[2i], nodes[2i+1]}. An inner node has {@code nodes[2i+1] == INNER} and its
+ * children at {@code nodes[2i]} and {@code nodes[2i] + 1}; a leaf holds {@code nodes[2i+1]}
+ * objects starting at {@code objects[nodes[2i]]}. The objects are sorted so that each leaf's are
  * adjacent; {@code fileOrder} keeps each one's place in the scene file for the depth test's
  * tie rule.
  */
 public final class Bvh {
+
+    /** Marks an inner node in {@code nodes[2i+1]}, where a leaf has its object count. */
+    static final int INNER = -1;
 
     final float[] bounds;
     final int[] nodes;
@@ -36,12 +41,22 @@ public final class Bvh {
     }
 
     /**
-     * Builds the hierarchy for {@code scene}. It depends on the camera because each object's
-     * box also holds the hits that rounding adds, which grow with the distance from the ray
-     * origins (see {@link IGeometry#bounds}).
+     * Builds the hierarchy for {@code scene} with all cores. It depends on the camera because
+     * each object's box also holds the hits that rounding adds, which grow with the distance
+     * from the ray origins (see {@link IGeometry#bounds}).
      */
     public static Bvh build(Scene scene) {
-        return new BvhBuilder(scene.objects(), scene.camera()).build(scene.ambient());
+        return build(scene, Runtime.getRuntime().availableProcessors());
+    }
+
+    /** Builds the hierarchy for {@code scene} with {@code threads} threads; the tree is the same for any number. */
+    public static Bvh build(Scene scene, int threads) {
+        ForkJoinPool pool = new ForkJoinPool(threads);
+        try {
+            return new BvhBuilder(scene.objects(), scene.camera(), pool).build(scene.ambient());
+        } finally {
+            pool.shutdown();
+        }
     }
 
     /** A new tracer that follows rays through this hierarchy; one per thread. */

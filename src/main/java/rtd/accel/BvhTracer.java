@@ -91,7 +91,7 @@ public final class BvhTracer implements Tracer {
             visited++;
             int first = nodes[2 * node];
             int count = nodes[2 * node + 1];
-            if (count > 0) {
+            if (count != Bvh.INNER) {
                 for (int i = first; i < first + count; i++) {
                     tested++;
                     Intersection intersection = objects[i].intersect(ray);

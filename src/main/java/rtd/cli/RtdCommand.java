@@ -131,7 +131,7 @@ public final class RtdCommand implements Callable<Integer> {
         Supplier<Tracer> tracers;
         Bvh bvh = null;
         if (useBvh) {
-            bvh = Bvh.build(scene);
+            bvh = Bvh.build(scene, threads);
             tracers = bvh::newTracer;
         } else {
             tracers = () -> new LinearTracer(scene);

@@ -46,6 +46,24 @@ public final class SceneIO {
     }
 
     /**
+     * Loads the PNG writer of {@code javax.imageio} on a background thread, so that its one-time
+     * start-up (about a tenth of a second) overlaps with reading the scene and rendering instead
+     * of adding to them. Optional: {@link #writePng} works without it.
+     */
+    public static void preparePngWriter() {
+        Thread thread = new Thread(() -> {
+            ImageIO.setUseCache(false);
+            try {
+                ImageIO.write(new BufferedImage(8, 8, BufferedImage.TYPE_INT_RGB), "png", OutputStream.nullOutputStream());
+            } catch (IOException e) {
+                // only a warm-up: the real write reports any problem
+            }
+        }, "rtd-png-warm-up");
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    /**
      * Writes {@code image} as a 24-bit RGB PNG to {@code output}, all or nothing: the PNG goes
      * to a temporary file in the same folder first and replaces {@code output} only when it is
      * complete, so a failed write leaves any earlier file exactly as it was.
