@@ -16,7 +16,7 @@ public final class SceneException extends Exception {
 
     /**
      * An exception for the given errors, which must not be empty; {@code stoppedEarly} says
-     * that the reader stopped at its limit and the file may hold more.
+     * that the file has more errors than these, which the reader did not keep.
      */
     public SceneException(List<SceneError> errors, boolean stoppedEarly) {
         super(summary(errors), null, false, false);
@@ -33,7 +33,7 @@ public final class SceneException extends Exception {
     public String report() {
         String all = errors.stream().map(SceneError::format).collect(Collectors.joining("\n"));
         String count = errors.size() == 1 ? "1 error" : errors.size() + " errors";
-        return all + "\n" + count + (stoppedEarly ? "; stopped there, the file may hold more" : "") + "\n";
+        return all + "\n" + count + (stoppedEarly ? " shown; the file has more" : "") + "\n";
     }
 
     private static String summary(List<SceneError> errors) {

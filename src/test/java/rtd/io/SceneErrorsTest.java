@@ -136,7 +136,7 @@ class SceneErrorsTest {
     void afterTwentyErrorsTheReaderStopsAndSaysSo() {
         SceneException e = errorsOf(CAMERA + "oops\n".repeat(100));
         assertThat(e.errors()).hasSize(SceneParser.MAX_ERRORS);
-        assertThat(e.report()).endsWith("20 errors; stopped there, the file may hold more\n");
+        assertThat(e.report()).endsWith("20 errors shown; the file has more\n");
     }
 
     @Test

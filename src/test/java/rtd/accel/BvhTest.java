@@ -1,0 +1,52 @@
+package rtd.accel;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import rtd.render.LinearTracer;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.render.RenderResult;
+import rtd.scene.Color;
+import rtd.scene.Scene;
+import rtd.testing.RandomScenes;
+import rtd.testing.Scenes;
+
+@DisplayName("The bounding volume hierarchy")
+class BvhTest {
+
+    @Test
+    void isTheSameTreeForAnyNumberOfBuildThreads() {
+        Scene scene = RandomScenes.generate(7, 60_000); // large enough to build in parallel
+        Bvh one = Bvh.build(scene, 1);
+        for (int threads : new int[] {2, 3, 4}) {
+            Bvh many = Bvh.build(scene, threads);
+            assertThat(many.nodes).isEqualTo(one.nodes);
+            assertThat(many.bounds).isEqualTo(one.bounds);
+            assertThat(many.fileOrder).isEqualTo(one.fileOrder);
+        }
+    }
+
+    @Test
+    void aSceneWithoutObjectsShowsOnlyTheAmbientColour() {
+        Scene empty = new Scene(Color.fromRGB(0x123456), Scenes.frontCamera(20, 10), List.of());
+        Bvh bvh = Bvh.build(empty);
+        RenderResult result = ParallelRenderer.render(empty.camera(), bvh::newTracer, 40, 30, 2, new RenderProgress());
+        assertThat(result.image().getRGB(20, 15) & 0xFFFFFF).isEqualTo(0x123456);
+        assertThat(result.work().intersectionTests()).isZero();
+    }
+
+    @Test
+    void testsAFewObjectsPerRayWhereThePapersLoopTestsAll() {
+        Scene scene = RandomScenes.generate(3, 20_000);
+        Bvh bvh = Bvh.build(scene);
+        RenderResult withBvh = ParallelRenderer.render(scene.camera(), bvh::newTracer, 160, 120, 2, new RenderProgress());
+        RenderResult paper = ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene), 16, 12, 2,
+                new RenderProgress());
+        assertThat(paper.work().testsPerRay()).isEqualTo(20_000.0);
+        assertThat(withBvh.work().testsPerRay()).isLessThan(200.0);
+        assertThat(withBvh.work().nodesPerRay()).isPositive().isLessThan(400.0);
+    }
+}
