@@ -25,4 +25,35 @@ record SourceText(String name, byte[] bytes) {
         String before = new String(bytes, lineStart, offset - lineStart, StandardCharsets.UTF_8);
         return before.codePointCount(0, before.length()) + 1;
     }
+
+    /** The text of {@code bytes[start, end)}. */
+    String text(int start, int end) {
+        return new String(bytes, start, end - start, StandardCharsets.UTF_8);
+    }
+
+    /** What stands at {@code offset}, for "found …" in a message. */
+    String describe(int offset, int lineStart) {
+        if (offset >= bytes.length) {
+            return offset > lineStart ? "the end of the line" : "the end of the file";
+        }
+        if (bytes[offset] == '\n' || bytes[offset] == '\r' && offset + 1 < bytes.length && bytes[offset + 1] == '\n') {
+            return "the end of the line";
+        }
+        if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '/') {
+            return "a comment";
+        }
+        int after = offset + 1;
+        if (ByteClasses.isWordByte(bytes[offset])) {
+            while (after < bytes.length && ByteClasses.isWordByte(bytes[after])) {
+                after++; // show a whole word, not its first letter
+            }
+        }
+        while (after < bytes.length && (bytes[after] & 0xC0) == 0x80) {
+            after++; // the rest of a character of several bytes
+        }
+        int codePoint = text(offset, after).codePointAt(0);
+        return Character.isISOControl(codePoint)
+                ? String.format("the control character U+%04X", codePoint)
+                : "'" + text(offset, after) + "'";
+    }
 }

@@ -1,6 +1,5 @@
 package rtd.io;
 
-import java.nio.charset.StandardCharsets;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import rtd.camera.OrthographicCamera;
@@ -67,11 +66,11 @@ final class StatementReader {
             return; // a blank line or a comment
         }
         int keywordStart = pos;
-        while (pos < bytes.length && isWordByte(bytes[pos])) {
+        while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
             pos++;
         }
         if (pos == keywordStart) {
-            throw error(pos, "expected a statement (" + Statement.keywordList() + "), found " + describe(pos), null);
+            throw error(pos, "expected a statement (" + Statement.keywordList() + "), found " + source.describe(pos, lineStart), null);
         }
         Statement statement = Statement.find(bytes, keywordStart, pos);
         if (statement == null) {
@@ -88,14 +87,14 @@ final class StatementReader {
                     "write it as " + statement.usage());
         }
         if (!atEndOfStatement()) {
-            throw error(pos, "expected the end of the line after the statement, found " + describe(pos),
+            throw error(pos, "expected the end of the line after the statement, found " + source.describe(pos, lineStart),
                     "a comment after a statement starts with //");
         }
         apply(statement, keywordStart);
     }
 
     private StatementError unknownKeyword(int keywordStart) {
-        String word = text(keywordStart, pos);
+        String word = source.text(keywordStart, pos);
         String nearest = Suggestions.nearestKeyword(word);
         String help = nearest != null
                 ? "did you mean '" + nearest + "'?"
@@ -107,12 +106,12 @@ final class StatementReader {
     private int readGroup(Statement statement, Group group, int count) throws StatementError {
         skipBlanks();
         if (!at(':')) {
-            throw groupError(pos, "expected ':' before %s, found " + describe(pos), statement, group);
+            throw groupError(pos, "expected ':' before %s, found " + source.describe(pos, lineStart), statement, group);
         }
         pos++;
         skipBlanks();
         if (!at('(')) {
-            throw groupError(pos, "expected '(' to start %s, found " + describe(pos), statement, group);
+            throw groupError(pos, "expected '(' to start %s, found " + source.describe(pos, lineStart), statement, group);
         }
         int groupStart = pos++;
         skipBlanks();
@@ -137,7 +136,7 @@ final class StatementReader {
                 pos++;
                 break;
             } else {
-                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + describe(pos), statement, group);
+                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart), statement, group);
             }
         }
         if (found < group.size()) {
@@ -157,16 +156,16 @@ final class StatementReader {
     /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
     private float readNumber() throws StatementError {
         tokenStart = pos;
-        while (pos < bytes.length && !isDelimiter(bytes[pos])) {
+        while (pos < bytes.length && !ByteClasses.isDelimiter(bytes[pos])) {
             pos++;
         }
         if (pos == tokenStart) {
-            throw error(pos, "expected a number, found " + describe(pos), null);
+            throw error(pos, "expected a number, found " + source.describe(pos, lineStart), null);
         }
         try {
             return FloatParser.parse(bytes, tokenStart, pos);
         } catch (NumberFormatException e) {
-            String token = text(tokenStart, pos);
+            String token = source.text(tokenStart, pos);
             throw error(tokenStart, "expected a number, found '" + token + "'", token.contains("\u2212")
                     ? "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead"
                     : "numbers are written like 3, -0.5, .5, 1. or 2e3");
@@ -203,7 +202,7 @@ final class StatementReader {
         if (Float.isFinite(value)) {
             return value;
         }
-        String written = text(valueStarts[i], valueEnds[i]);
+        String written = source.text(valueStarts[i], valueEnds[i]);
         boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
         throw error(valueStarts[i], "the " + name + " must be a finite number, found " + written
                 + (overflow ? ", which is too large for a float" : ""),
@@ -225,7 +224,7 @@ final class StatementReader {
         if (value > 0) {
             return value;
         }
-        throw error(valueStarts[i], "the " + name + " must be greater than 0, found " + text(valueStarts[i], valueEnds[i]), null);
+        throw error(valueStarts[i], "the " + name + " must be greater than 0, found " + source.text(valueStarts[i], valueEnds[i]), null);
     }
 
     private Vector3f viewDirection(int i) throws StatementError {
@@ -250,7 +249,7 @@ final class StatementReader {
             float value = values[i + k];
             if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
                 throw error(valueStarts[i + k], "the " + names[k] + " channel must be a whole number from 0 to 255, found "
-                        + text(valueStarts[i + k], valueEnds[i + k]), null);
+                        + source.text(valueStarts[i + k], valueEnds[i + k]), null);
             }
             channels[k] = (int) value;
         }
@@ -260,7 +259,7 @@ final class StatementReader {
     private String groupText(int i, int size) {
         StringBuilder text = new StringBuilder("(");
         for (int k = 0; k < size; k++) {
-            text.append(k > 0 ? "|" : "").append(text(valueStarts[i + k], valueEnds[i + k]));
+            text.append(k > 0 ? "|" : "").append(source.text(valueStarts[i + k], valueEnds[i + k]));
         }
         return text.append(')').toString();
     }
@@ -272,7 +271,7 @@ final class StatementReader {
     }
 
     private void skipBlanks() {
-        while (pos < bytes.length && isBlank(bytes[pos])) {
+        while (pos < bytes.length && ByteClasses.isBlank(bytes[pos])) {
             pos++;
         }
     }
@@ -294,48 +293,6 @@ final class StatementReader {
             line++;
             lineStart = pos;
         }
-    }
-
-    private static boolean isBlank(byte b) {
-        return b == ' ' || b == '\t' || b == '\r' || b == '\f' || b == 0x0B;
-    }
-
-    private static boolean isWordByte(byte b) {
-        return (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z') || (b >= '0' && b <= '9') || b == '_';
-    }
-
-    private static boolean isDelimiter(byte b) {
-        return b == '|' || b == ')' || b == '(' || b == ':' || b == '\n' || isBlank(b);
-    }
-
-    private String text(int start, int end) {
-        return new String(bytes, start, end - start, StandardCharsets.UTF_8);
-    }
-
-    /** What stands at {@code offset}, for "found …" in a message. */
-    private String describe(int offset) {
-        if (offset >= bytes.length) {
-            return offset > lineStart ? "the end of the line" : "the end of the file";
-        }
-        if (bytes[offset] == '\n' || bytes[offset] == '\r' && offset + 1 < bytes.length && bytes[offset + 1] == '\n') {
-            return "the end of the line";
-        }
-        if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '/') {
-            return "a comment";
-        }
-        int after = offset + 1;
-        if (isWordByte(bytes[offset])) {
-            while (after < bytes.length && isWordByte(bytes[after])) {
-                after++; // show a whole word, not its first letter
-            }
-        }
-        while (after < bytes.length && (bytes[after] & 0xC0) == 0x80) {
-            after++; // the rest of a character of several bytes
-        }
-        int codePoint = text(offset, after).codePointAt(0);
-        return Character.isISOControl(codePoint)
-                ? String.format("the control character U+%04X", codePoint)
-                : "'" + text(offset, after) + "'";
     }
 
     private StatementError error(int offset, String message, String help) {
