@@ -29,12 +29,18 @@ final class ProgressDisplay implements AutoCloseable {
         this.pixelsPerRow = pixelsPerRow;
         this.thread = new Thread(this::run, "rtd-progress");
         thread.setDaemon(true);
-        thread.start();
     }
 
-    /** Starts a display for a render of {@code width × height}, or none if not {@code enabled}. */
-    static AutoCloseable start(boolean enabled, PrintWriter err, RenderProgress progress, int width, int height) {
-        return enabled ? new ProgressDisplay(err, progress, height, width) : () -> { };
+    /**
+     * Starts a display for a render of {@code width × height}; if not {@code enabled}, one that
+     * never shows anything.
+     */
+    static ProgressDisplay start(boolean enabled, PrintWriter err, RenderProgress progress, int width, int height) {
+        ProgressDisplay display = new ProgressDisplay(err, progress, height, width);
+        if (enabled) {
+            display.thread.start();
+        }
+        return display;
     }
 
     private void run() {

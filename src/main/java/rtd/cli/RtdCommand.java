@@ -118,12 +118,7 @@ public final class RtdCommand implements Callable<Integer> {
     private int render(PrintWriter err) throws SceneException, FileError {
         Path target = outputPath();
         PhaseTimer timer = new PhaseTimer();
-        Scene scene;
-        try {
-            scene = SceneIO.readScene(scenePath);
-        } catch (IOException e) {
-            throw new FileError("cannot read the scene file '" + scenePath + "': " + FileProblems.reason(e), e);
-        }
+        Scene scene = readScene();
         timer.endPhase("parse");
         ImageSize.check(spec.commandLine(), width, height);
 
@@ -141,23 +136,33 @@ public final class RtdCommand implements Callable<Integer> {
         RenderProgress progress = new RenderProgress();
         RenderResult result;
         boolean showProgress = !noProgress && Terminal.stderrIsTerminal();
-        try (AutoCloseable display = ProgressDisplay.start(showProgress, err, progress, width, height)) {
+        try (ProgressDisplay display = ProgressDisplay.start(showProgress, err, progress, width, height)) {
             result = ParallelRenderer.render(scene.camera(), tracers, width, height, threads, progress);
-        } catch (Exception e) {
-            throw new IllegalStateException(e); // close() of the display throws nothing
         }
         timer.endPhase("render");
 
-        try {
-            SceneIO.writePng(result.image(), target);
-        } catch (IOException e) {
-            throw new FileError("cannot write '" + target + "': " + FileProblems.reason(e), e);
-        }
+        writePicture(result, target);
         timer.endPhase("write");
         if (stats) {
             err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target));
         }
         return 0;
+    }
+
+    private Scene readScene() throws SceneException, FileError {
+        try {
+            return SceneIO.readScene(scenePath);
+        } catch (IOException e) {
+            throw new FileError("cannot read the scene file '" + scenePath + "': " + FileProblems.reason(e), e);
+        }
+    }
+
+    private static void writePicture(RenderResult result, Path target) throws FileError {
+        try {
+            SceneIO.writePng(result.image(), target);
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + target + "': " + FileProblems.reason(e), e);
+        }
     }
 
     /** The output path: {@code -o}, or the scene's name with {@code .png}; checked before rendering. */

@@ -6,6 +6,7 @@ import rtd.camera.OrthographicCamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.math.Vector3f;
+import rtd.render.Tracer;
 import rtd.scene.Color;
 import rtd.scene.Scene;
 
@@ -24,6 +25,15 @@ final class BenchScenes {
             spheres.add(new Sphere(new Vector3f(b.x(), b.y(), b.z()), b.r(), new Color(b.red(), b.green(), b.blue())));
         }
         return new Scene(new Color(16, 18, 28), paperCamera(), spheres);
+    }
+
+    /** Makes and traces the rays of one image row, as the renderer does; returns a checksum. */
+    static int traceRow(Tracer tracer, OrthographicCamera camera, int row) {
+        int checksum = 0;
+        for (int x = 0; x < WIDTH; x++) {
+            checksum += tracer.trace(camera.generateRay(x, row, WIDTH, HEIGHT)).getRGB();
+        }
+        return checksum;
     }
 
     static OrthographicCamera paperCamera() {

@@ -41,7 +41,6 @@ public class PaperLoopBenchmark {
     private OrthographicCamera camera;
     private Tracer linear;
     private int row;
-    private int checksum;
 
     @Setup(Level.Trial)
     public void setUp() {
@@ -57,10 +56,7 @@ public class PaperLoopBenchmark {
     }
 
     private int traceRow(Tracer tracer) {
-        row = (row + 7) % BenchScenes.HEIGHT;
-        for (int x = 0; x < BenchScenes.WIDTH; x++) {
-            checksum += tracer.trace(camera.generateRay(x, row, BenchScenes.WIDTH, BenchScenes.HEIGHT)).getRGB();
-        }
-        return checksum;
+        row = (row + 7) % BenchScenes.HEIGHT; // rows spread over the image, not the same one
+        return BenchScenes.traceRow(tracer, camera, row);
     }
 }
