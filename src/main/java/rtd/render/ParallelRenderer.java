@@ -37,7 +37,7 @@ public final class ParallelRenderer {
         AtomicInteger nextRow = new AtomicInteger();
         List<Tracer> used = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
-        for (int i = 0; i < threads; i++) {
+        for (int i = 0; i < Math.min(threads, height); i++) { // more threads than rows would idle
             Tracer tracer = tracers.get();
             used.add(tracer);
             workers.add(() -> renderRows(camera, tracer, width, height, pixels, nextRow, progress));

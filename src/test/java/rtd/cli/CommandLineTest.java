@@ -164,6 +164,33 @@ class CommandLineTest {
     }
 
     @Test
+    void threadsAndAccelAreCheckedAndAnyChoiceGivesTheSamePicture() throws IOException {
+        assertThat(Cli.run(EXAMPLE.toString(), "--threads", "0").exitCode()).isEqualTo(2);
+        Run accel = Cli.run(EXAMPLE.toString(), "--accel", "fast");
+        assertThat(accel.exitCode()).isEqualTo(2);
+        assertThat(accel.err()).contains("expected one of [auto, none, bvh]");
+        byte[] reference = null;
+        for (String[] choice : new String[][] {{"1", "none"}, {"64", "none"}, {"3", "bvh"}, {"2", "auto"}}) {
+            Path out = dir.resolve("t" + choice[0] + choice[1] + ".png");
+            Run run = Cli.run(EXAMPLE.toString(), "-o", out.toString(), "--width", "96", "--height", "54",
+                    "--threads", choice[0], "--accel", choice[1]);
+            assertThat(run.exitCode()).as(run.err()).isZero();
+            byte[] png = Files.readAllBytes(out);
+            if (reference == null) {
+                reference = png;
+            }
+            assertThat(png).as("--threads %s --accel %s", choice[0], choice[1]).isEqualTo(reference);
+        }
+    }
+
+    @Test
+    void noProgressLineReachesAnErrorStreamThatIsNoTerminal() {
+        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("p.png").toString(), "--width", "64", "--height", "36");
+        assertThat(run.exitCode()).isZero();
+        assertThat(run.err()).isEmpty();
+    }
+
+    @Test
     void statsReportEachPhaseAndTheWorkPerRay() {
         Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("s.png").toString(), "--stats", "--accel", "none",
                 "--width", "100", "--height", "50");
