@@ -10,6 +10,8 @@ import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.util.UUID;
 import javax.imageio.ImageIO;
 import rtd.scene.Scene;
 
@@ -70,9 +72,11 @@ public final class SceneIO {
      */
     public static void writePng(BufferedImage image, Path output) throws IOException {
         Path folder = output.toAbsolutePath().getParent();
-        Path temporary = Files.createTempFile(folder, "." + output.getFileName() + ".", ".tmp");
+        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
+        Path temporary = folder.resolve("." + output.getFileName() + "." + UUID.randomUUID() + ".tmp");
         try {
-            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temporary), 1 << 16)) {
+            try (OutputStream out = new BufferedOutputStream(
+                    Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), 1 << 16)) {
                 ImageIO.setUseCache(false); // encode in memory, not through a cache file in /tmp
                 if (!ImageIO.write(image, "png", out)) {
                     throw new IOException("this Java has no PNG writer");
