@@ -137,6 +137,23 @@ class CommandLineTest {
     }
 
     @Test
+    void aFolderGivenAsTheSceneIsAFileError() {
+        Run run = Cli.run(dir.toString(), "-o", dir.resolve("out.png").toString());
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.err()).isEqualTo("rtd: cannot read the scene file '" + dir + "': it is a folder, not a file\n");
+    }
+
+    @Test
+    void filesThatMayNotBeReadOrWrittenAreSaidToBeSo() {
+        // The tests run as root here, which may read and write anything, so the words are checked
+        // on the exceptions Java throws for such files.
+        assertThat(FileProblems.reason(new java.nio.file.AccessDeniedException("secret.txt"))).isEqualTo("permission denied");
+        assertThat(FileProblems.reason(new java.nio.file.NoSuchFileException("nope.txt"))).isEqualTo("no such file");
+        assertThat(FileProblems.reason(new java.nio.file.FileSystemException("out.png", null, "No space left on device")))
+                .isEqualTo("no space left on device");
+    }
+
+    @Test
     void aMissingOutputFolderIsAFileErrorBeforeAnyRendering() {
         Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("no/such/folder/out.png").toString());
         assertThat(run.exitCode()).isEqualTo(1);
