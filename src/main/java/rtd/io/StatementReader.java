@@ -6,7 +6,6 @@ import rtd.camera.OrthographicCamera;
 import rtd.geometry.Sphere;
 import rtd.io.Statement.Group;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
 
 /**
  * Reads the statements of a stretch of whole lines of a scene file into a {@link ScenePart}:
@@ -25,10 +24,8 @@ final class StatementReader {
     private int line;
     private int lineStart;
 
-    /** The numbers of the statement being read, with where each starts and ends. */
-    private final float[] values = new float[8];
-    private final int[] valueStarts = new int[8];
-    private final int[] valueEnds = new int[8];
+    /** The numbers of the statement being read, with where each stands. */
+    private final StatementNumbers numbers;
     /** Where the number that {@link #readNumber} read last starts. */
     private int tokenStart;
 
@@ -44,6 +41,7 @@ final class StatementReader {
         this.pos = start;
         this.lineStart = start;
         this.line = firstLine;
+        this.numbers = new StatementNumbers(source, this::error);
     }
 
     /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}. */
@@ -125,9 +123,7 @@ final class StatementReader {
             if (found == group.size()) {
                 throw groupError(tokenStart, "too many numbers in %s: it takes " + numbers(group), statement, group);
             }
-            values[count + found] = value;
-            valueStarts[count + found] = tokenStart;
-            valueEnds[count + found] = pos;
+            numbers.set(count + found, value, tokenStart, pos);
             found++;
             skipBlanks();
             if (at('|')) {
@@ -180,15 +176,16 @@ final class StatementReader {
 
     private void apply(Statement statement, int keywordStart) throws StatementError {
         switch (statement) {
-            case AMBIENT -> part.ambients.add(new ScenePart.Located<>(colour(0), located(keywordStart)));
+            case AMBIENT -> part.ambients.add(new ScenePart.Located<>(numbers.colour(0), located(keywordStart)));
             case ORTHOGRAPHIC_CAMERA -> {
-                Vector3f position = finiteVector(0, "position");
-                Vector3f direction = viewDirection(3);
-                float zoom = positive(6, "zoom");
+                Vector3f position = numbers.finiteVector(0, "position");
+                Vector3f direction = numbers.viewDirection(3);
+                float zoom = numbers.positive(6, "zoom");
                 part.cameras.add(new ScenePart.Located<>(new OrthographicCamera(position, direction, zoom),
                         located(keywordStart)));
             }
-            case SPHERE -> part.objects.add(new Sphere(finiteVector(0, "centre"), positive(3, "radius"), colour(4)));
+            case SPHERE -> part.objects.add(new Sphere(numbers.finiteVector(0, "centre"), numbers.positive(3, "radius"),
+                    numbers.colour(4)));
         }
     }
 
@@ -196,75 +193,6 @@ final class StatementReader {
     private SceneError located(int offset) {
         return new SceneError(source.name(), line, source.column(lineStart, offset), "", source.lineText(lineStart), null);
     }
-
-    private float finite(int i, String name) throws StatementError {
-        float value = values[i];
-        if (Float.isFinite(value)) {
-            return value;
-        }
-        String written = source.text(valueStarts[i], valueEnds[i]);
-        boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
-        throw error(valueStarts[i], "the " + name + " must be a finite number, found " + written
-                + (overflow ? ", which is too large for a float" : ""),
-                overflow ? "a float holds numbers up to about 3.4e38" : null);
-    }
-
-    /** The three numbers from {@code i} on as a vector; {@code name} is only read for a message. */
-    private Vector3f finiteVector(int i, String name) throws StatementError {
-        for (int k = 0; k < 3; k++) {
-            if (!Float.isFinite(values[i + k])) {
-                finite(i + k, "xyz".charAt(k) + " of the " + name);
-            }
-        }
-        return new Vector3f(values[i], values[i + 1], values[i + 2]);
-    }
-
-    private float positive(int i, String name) throws StatementError {
-        float value = finite(i, name);
-        if (value > 0) {
-            return value;
-        }
-        throw error(valueStarts[i], "the " + name + " must be greater than 0, found " + source.text(valueStarts[i], valueEnds[i]), null);
-    }
-
-    private Vector3f viewDirection(int i) throws StatementError {
-        Vector3f direction = finiteVector(i, "view direction");
-        float squaredLength = direction.dot(direction);
-        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
-            throw error(valueStarts[i], "the view direction must not be zero, found " + groupText(i, 3),
-                    "the camera looks along it; (0|0|-1) looks into the screen");
-        }
-        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
-            throw error(valueStarts[i], "the view direction " + groupText(i, 3) + " is too "
-                    + (Float.isInfinite(squaredLength) ? "long" : "short") + " to compute with in float",
-                    "only its direction matters: scale it to a length near 1");
-        }
-        return direction;
-    }
-
-    private Color colour(int i) throws StatementError {
-        int[] channels = new int[3];
-        String[] names = {"red", "green", "blue"};
-        for (int k = 0; k < 3; k++) {
-            float value = values[i + k];
-            if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
-                throw error(valueStarts[i + k], "the " + names[k] + " channel must be a whole number from 0 to 255, found "
-                        + source.text(valueStarts[i + k], valueEnds[i + k]), null);
-            }
-            channels[k] = (int) value;
-        }
-        return new Color(channels[0], channels[1], channels[2]);
-    }
-
-    private String groupText(int i, int size) {
-        StringBuilder text = new StringBuilder("(");
-        for (int k = 0; k < size; k++) {
-            text.append(k > 0 ? "|" : "").append(source.text(valueStarts[i + k], valueEnds[i + k]));
-        }
-        return text.append(')').toString();
-    }
-
-    // ---- reading bytes ------------------------------------------------------------------
 
     private boolean at(char c) {
         return pos < bytes.length && bytes[pos] == c;
@@ -295,14 +223,14 @@ final class StatementReader {
         }
     }
 
-    private StatementError error(int offset, String message, String help) {
+    StatementError error(int offset, String message, String help) {
         SceneError error = new SceneError(source.name(), line, source.column(lineStart, offset), message,
                 source.lineText(lineStart), help);
         return new StatementError(error);
     }
 
-    /** Ends the reading of one statement; the parser records the error and goes on. */
-    private static final class StatementError extends Exception {
+    /** Ends the reading of one statement; the reader records the error and goes on. */
+    static final class StatementError extends Exception {
         private static final long serialVersionUID = 1L;
         private final transient SceneError error;
 
