@@ -37,7 +37,10 @@ final class BvhBuilder {
     private static final int MAX_LEAF_SIZE = 16;
     /** Past this depth the builder halves by count, which bounds the depth for any input. */
     private static final int MAX_SAH_DEPTH = 48;
-    /** The cost of visiting a node, counted in intersection tests (measured: see README). */
+    /**
+     * The cost of visiting a node, counted in intersection tests. Measured on the million-sphere
+     * benchmark: 4 (with leaves of up to 16) rendered in 1.8 s where 1 took 3.2 s.
+     */
     private static final float TRAVERSAL_COST = 4f;
     /** Subtrees with fewer objects are built on the thread that reached them. */
     private static final int PARALLEL_THRESHOLD = 20_000;
