@@ -7,8 +7,11 @@ import picocli.CommandLine.ParameterException;
 /** Checks, before anything is allocated, that an image of the asked size fits in memory. */
 final class ImageSize {
 
-    /** Bytes per pixel: the image holds one {@code int} a pixel. */
-    private static final long BYTES_PER_PIXEL = 4;
+    /**
+     * Bytes per pixel: the picture holds one {@code int} a pixel; writing the PNG adds its rows
+     * (3 bytes a pixel) and, at worst, as much again compressed.
+     */
+    private static final long BYTES_PER_PIXEL = 4 + 3 + 3;
 
     private ImageSize() {
     }

@@ -1,7 +1,5 @@
 package rtd.cli;
 
-import rtd.io.SceneIO;
-
 /** Starts rtd from {@code java -jar rtd.jar}; see {@link RtdCommand}. */
 public final class Main {
 
@@ -10,7 +8,6 @@ public final class Main {
 
     /** Runs the command and exits with its code: 0 done, 1 scene or file error, 2 misuse. */
     public static void main(String[] args) {
-        SceneIO.preparePngWriter();
         System.exit(RtdCommand.commandLine().execute(args));
     }
 }

@@ -141,7 +141,7 @@ public final class RtdCommand implements Callable<Integer> {
         }
         timer.endPhase("render");
 
-        writePicture(result, target);
+        writePicture(result, target, threads);
         timer.endPhase("write");
         if (stats) {
             err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target));
@@ -157,9 +157,9 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    private static void writePicture(RenderResult result, Path target) throws FileError {
+    private static void writePicture(RenderResult result, Path target, int threads) throws FileError {
         try {
-            SceneIO.writePng(result.image(), target);
+            SceneIO.writePng(result.image(), target, threads);
         } catch (IOException e) {
             throw new FileError("cannot write '" + target + "': " + FileProblems.reason(e), e);
         }

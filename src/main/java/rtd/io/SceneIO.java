@@ -1,6 +1,5 @@
 package rtd.io;
 
-import java.awt.image.BufferedImage;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -11,13 +10,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
-import java.util.UUID;
-import javax.imageio.ImageIO;
+import java.util.concurrent.ThreadLocalRandom;
+import rtd.render.Picture;
 import rtd.scene.Scene;
 
 /**
  * Input and output (paper, sections 4.1 and 4.3): reads a scene file, writes the picture as a
- * PNG with {@code javax.imageio}.
+ * PNG ({@link PngEncoder}).
  */
 public final class SceneIO {
 
@@ -48,39 +47,22 @@ public final class SceneIO {
     }
 
     /**
-     * Loads the PNG writer of {@code javax.imageio} on a background thread, so that its one-time
-     * start-up (about a tenth of a second) overlaps with reading the scene and rendering instead
-     * of adding to them. Optional: {@link #writePng} works without it.
-     */
-    public static void preparePngWriter() {
-        Thread thread = new Thread(() -> {
-            ImageIO.setUseCache(false);
-            try {
-                ImageIO.write(new BufferedImage(8, 8, BufferedImage.TYPE_INT_RGB), "png", OutputStream.nullOutputStream());
-            } catch (IOException e) {
-                // only a warm-up: the real write reports any problem
-            }
-        }, "rtd-png-warm-up");
-        thread.setDaemon(true);
-        thread.start();
-    }
-
-    /**
-     * Writes {@code image} as a 24-bit RGB PNG to {@code output}, all or nothing: the PNG goes
+     * Writes {@code picture} as a 24-bit RGB PNG to {@code output}, compressing with up to
+     * {@code threads} threads ({@link PngEncoder}), all or nothing: the PNG goes
      * to a temporary file in the same folder first and replaces {@code output} only when it is
      * complete, so a failed write leaves any earlier file exactly as it was.
      */
-    public static void writePng(BufferedImage image, Path output) throws IOException {
+    public static void writePng(Picture picture, Path output, int threads) throws IOException {
         Path folder = output.toAbsolutePath().getParent();
         // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
-        Path temporary = folder.resolve("." + output.getFileName() + "." + UUID.randomUUID() + ".tmp");
+        // A random name, not a UUID: that would start a SecureRandom, slower than the whole write.
+        Path temporary = folder.resolve("." + output.getFileName() + "."
+                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
+        // CREATE_NEW: should the name be taken, fail rather than overwrite (or later delete) that file.
+        OutputStream file = Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
         try {
-            try (OutputStream out = new BufferedOutputStream(
-                    Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), 1 << 16)) {
-                ImageIO.setUseCache(false); // encode in memory, not through a cache file in /tmp
-                if (!ImageIO.write(image, "png", out)) {
-                    throw new IOException("this Java has no PNG writer");
-                }
+            try (OutputStream out = new BufferedOutputStream(file, 1 << 16)) {
+                PngEncoder.write(picture, out, threads);
             }
             moveIntoPlace(temporary, output);
         } catch (IOException | RuntimeException | Error e) {

@@ -1,7 +1,5 @@
 package rtd.render;
 
-import java.awt.image.BufferedImage;
-import java.awt.image.DataBufferInt;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -32,8 +30,7 @@ public final class ParallelRenderer {
      */
     public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, int width, int height,
             int threads, RenderProgress progress) {
-        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
-        int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        int[] pixels = new int[width * height];
         AtomicInteger nextRow = new AtomicInteger();
         List<Tracer> used = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
@@ -47,7 +44,7 @@ public final class ParallelRenderer {
         for (Tracer tracer : used) {
             work = work.plus(tracer.work());
         }
-        return new RenderResult(image, work);
+        return new RenderResult(new Picture(width, height, pixels), work);
     }
 
     private static void renderRows(ICamera camera, Tracer tracer, int width, int height, int[] pixels,

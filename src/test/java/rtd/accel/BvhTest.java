@@ -34,7 +34,7 @@ class BvhTest {
         Scene empty = new Scene(Color.fromRGB(0x123456), Scenes.frontCamera(20, 10), List.of());
         Bvh bvh = Bvh.build(empty);
         RenderResult result = ParallelRenderer.render(empty.camera(), bvh::newTracer, 40, 30, 2, new RenderProgress());
-        assertThat(result.image().getRGB(20, 15) & 0xFFFFFF).isEqualTo(0x123456);
+        assertThat(result.image().rgb(20, 15)).isEqualTo(0x123456);
         assertThat(result.work().intersectionTests()).isZero();
     }
 

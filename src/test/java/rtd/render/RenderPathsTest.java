@@ -37,10 +37,10 @@ class RenderPathsTest {
     static BufferedImage parallel(Scene scene, int w, int h, int threads, boolean bvh) {
         if (bvh) {
             Bvh hierarchy = Bvh.build(scene);
-            return ParallelRenderer.render(scene.camera(), hierarchy::newTracer, w, h, threads, new RenderProgress()).image();
+            return ParallelRenderer.render(scene.camera(), hierarchy::newTracer, w, h, threads, new RenderProgress()).image().toBufferedImage();
         }
         return ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene), w, h, threads,
-                new RenderProgress()).image();
+                new RenderProgress()).image().toBufferedImage();
     }
 
     @ParameterizedTest(name = "{0} thread(s), paper's loop and BVH, on the paper's example")
