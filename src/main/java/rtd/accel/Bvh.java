@@ -28,6 +28,8 @@ public final class Bvh {
     final int[] nodes;
     final IGeometry[] objects;
     final int[] fileOrder;
+    /** The objects packed for fast tests when they are all spheres, else {@code null}. */
+    final PackedSpheres spheres;
     final int maxDepth;
     final Color ambient;
 
@@ -36,6 +38,7 @@ public final class Bvh {
         this.nodes = nodes;
         this.objects = objects;
         this.fileOrder = fileOrder;
+        this.spheres = PackedSpheres.packOrNull(objects);
         this.maxDepth = maxDepth;
         this.ambient = ambient;
     }

@@ -15,14 +15,6 @@ import rtd.scene.Color;
  * Builds a {@link Bvh} top-down with the binned surface area heuristic (SAH).
  *
  * <p>At each node the objects' centres are sorted into {@value #BINS} bins along the axis where
- * they spread most; of the splits between bins, the one with the lowest expected cost wins, where a child's cost
- * is its box's surface area (how likely a ray passes through it) times its object count. A
- * node becomes a leaf when no split is cheaper than testing its objects directly.
- */
-/**
- * Builds a {@link Bvh} top-down with the binned surface area heuristic (SAH).
- *
- * <p>At each node the objects' centres are sorted into {@value #BINS} bins along the axis where
  * they spread most; of the splits between bins, the one with the lowest expected cost wins,
  * where a child's cost is its box's surface area (how likely a ray passes through it) times
  * its object count. A node becomes a leaf when no split is cheaper than testing its objects.

@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -17,6 +16,10 @@ import rtd.scene.Color;
  * intersection test and depth test unchanged, keeping, as the paper does, the object whose
  * hit is nearest ({@code |P − O|}), and on a tie the one that comes first in the file.
  *
+ * <p>Rays that share a direction (the orthographic camera's) and come as a bundle, through
+ * {@link #traceAll}, skip the walk down the tree: {@link BeamLeaves} walks it once for the
+ * whole bundle, and each ray tests just those leaves, nearest first, with the same skipping.
+ *
  * <p>Not thread-safe: it keeps a stack and counters of its own. Use one per thread.
  */
 public final class BvhTracer implements Tracer {
@@ -31,86 +34,107 @@ public final class BvhTracer implements Tracer {
     private static final float MISS = Float.POSITIVE_INFINITY;
 
     private final Bvh bvh;
+    private final BeamLeaves beam;
     private final int[] stackNodes;
     private final float[] stackEntries;
     private long rays;
     private long tests;
     private long nodesVisited;
 
+    // The ray being traced, and the nearest hit so far.
+    private Ray ray;
+    private float ox;
+    private float oy;
+    private float oz;
+    private float dx;
+    private float dy;
+    private float dz;
+    private float dd;
+    private float ix;
+    private float iy;
+    private float iz;
+    private float margin;
+    private int best;
+    private float bestDistance;
+    private float skipBeyond;
+
     BvhTracer(Bvh bvh) {
         this.bvh = bvh;
+        this.beam = new BeamLeaves(bvh);
         this.stackNodes = new int[bvh.maxDepth + 2];
         this.stackEntries = new float[bvh.maxDepth + 2];
     }
 
     @Override
     public Color trace(Ray ray) {
-        rays++;
-        Vector3f origin = ray.origin();
-        int nearest = nearestObject(origin.x(), origin.y(), origin.z(), ray.direction());
-        return nearest < 0 ? bvh.ambient : bvh.objects[nearest].color();
+        start(ray);
+        walkTree();
+        return colour();
+    }
+
+    /** Parallel rays share one walk down the tree ({@link BeamLeaves}); others walk it one by one. */
+    @Override
+    public void traceAll(Ray[] rays, int count, int[] rgb) {
+        if (!BeamLeaves.parallel(rays, count) || !beam.collect(rays, count)) {
+            Tracer.super.traceAll(rays, count, rgb);
+            return;
+        }
+        for (int i = 0; i < count; i++) {
+            start(rays[i]);
+            testBeamLeaves();
+            rgb[i] = colour().getRGB();
+        }
     }
 
     @Override
     public WorkCount work() {
-        return new WorkCount(rays, tests, nodesVisited);
+        return new WorkCount(rays, tests, nodesVisited + beam.nodesVisited());
     }
 
-    /**
-     * The place in {@code bvh.objects} of the object the ray sees, or −1 for none.
-     *
-     * <p>It takes the ray's origin as three numbers and makes its own {@code Ray}: this method
-     * is too long for the JIT to inline, and a {@code Ray} passed in would have to be allocated
-     * for every pixel, while one made here stays in registers.
-     */
-    private int nearestObject(float ox, float oy, float oz, Vector3f direction) {
-        // Local copies: the JIT keeps them in registers through the loop.
-        float[] bounds = bvh.bounds;
-        int[] nodes = bvh.nodes;
-        IGeometry[] objects = bvh.objects;
-        int[] fileOrder = bvh.fileOrder;
-        Vector3f origin = new Vector3f(ox, oy, oz);
-        Ray ray = new Ray(origin, direction);
-        float ix = 1f / direction.x();
-        float iy = 1f / direction.y();
-        float iz = 1f / direction.z();
-        float margin = SKIP_MARGIN * origin.magnitude() / direction.magnitude();
+    private void start(Ray next) {
+        rays++;
+        ray = next;
+        Vector3f origin = next.origin();
+        Vector3f direction = next.direction();
+        ox = origin.x();
+        oy = origin.y();
+        oz = origin.z();
+        dx = direction.x();
+        dy = direction.y();
+        dz = direction.z();
+        dd = direction.dot(direction);
+        ix = 1f / dx;
+        iy = 1f / dy;
+        iz = 1f / dz;
+        margin = SKIP_MARGIN * origin.magnitude() / direction.magnitude();
+        best = -1;
+        bestDistance = Float.POSITIVE_INFINITY;
+        skipBeyond = Float.POSITIVE_INFINITY;
+    }
 
-        int best = -1;
-        float bestDistance = Float.POSITIVE_INFINITY;
-        float skipBeyond = Float.POSITIVE_INFINITY;
-        int visited = 0;
-        int tested = 0;
+    private Color colour() {
+        return best < 0 ? bvh.ambient : bvh.objects[best].color();
+    }
+
+    /** Walks down the tree, nearer child first, skipping boxes entered beyond the nearest hit. */
+    private void walkTree() {
+        int[] nodes = bvh.nodes;
         int stackSize = 0;
         int node = 0;
-        if (entry(bounds, node, ox, oy, oz, ix, iy, iz) == MISS) {
+        if (entry(node) == MISS) {
             nodesVisited++;
-            return -1;
+            return;
         }
         while (true) {
-            visited++;
+            nodesVisited++;
             int first = nodes[2 * node];
-            int count = nodes[2 * node + 1];
-            if (count != Bvh.INNER) {
-                for (int i = first; i < first + count; i++) {
-                    tested++;
-                    Intersection intersection = objects[i].intersect(ray);
-                    if (intersection.happened()) {
-                        float distance = intersection.contactCoord().subtract(origin).magnitude();
-                        if (distance < bestDistance
-                                || (distance == bestDistance && best >= 0 && fileOrder[i] < fileOrder[best])) {
-                            best = i;
-                            bestDistance = distance;
-                            float t = intersection.t();
-                            skipBeyond = t + t * SKIP_MARGIN + margin;
-                        }
-                    }
-                }
+            if (nodes[2 * node + 1] != Bvh.INNER) {
+                testLeaf(node);
             } else {
                 int near = first;
                 int far = first + 1;
-                float nearEntry = entry(bounds, near, ox, oy, oz, ix, iy, iz);
-                float farEntry = entry(bounds, far, ox, oy, oz, ix, iy, iz);
+                float nearEntry = entry(near);
+                float farEntry = entry(far);
                 if (farEntry < nearEntry) {
                     int swapNode = near;
                     near = far;
@@ -119,21 +143,19 @@ public final class BvhTracer implements Tracer {
                     nearEntry = farEntry;
                     farEntry = swapEntry;
                 }
-                if (worthVisiting(farEntry, skipBeyond)) {
+                if (worthVisiting(farEntry)) {
                     stackNodes[stackSize] = far;
                     stackEntries[stackSize] = farEntry;
                     stackSize++;
                 }
-                if (worthVisiting(nearEntry, skipBeyond)) {
+                if (worthVisiting(nearEntry)) {
                     node = near;
                     continue;
                 }
             }
             do {
                 if (stackSize == 0) {
-                    nodesVisited += visited;
-                    tests += tested;
-                    return best;
+                    return;
                 }
                 stackSize--;
                 node = stackNodes[stackSize];
@@ -141,16 +163,59 @@ public final class BvhTracer implements Tracer {
         }
     }
 
-    /** Whether the ray enters a box ({@code entry} finite) no farther than {@code skipBeyond}. */
-    private static boolean worthVisiting(float entry, float skipBeyond) {
+    /** Tests the leaves the beam found, nearest first, until the rest start beyond the nearest hit. */
+    private void testBeamLeaves() {
+        for (int i = 0; i < beam.count() && beam.entry(i) <= skipBeyond; i++) {
+            int leaf = beam.leaf(i);
+            nodesVisited++;
+            if (worthVisiting(entry(leaf))) {
+                testLeaf(leaf);
+            }
+        }
+    }
+
+    /** Whether the ray enters a box ({@code entry} finite) no farther than the nearest hit allows. */
+    private boolean worthVisiting(float entry) {
         return entry != MISS && entry <= skipBeyond;
+    }
+
+    /**
+     * The paper's intersection test and depth test on a leaf's objects: the nearest hit
+     * ({@code |P − O|}) wins, and on a tie the object that comes first in the file.
+     */
+    private void testLeaf(int leaf) {
+        int first = bvh.nodes[2 * leaf];
+        int end = first + bvh.nodes[2 * leaf + 1];
+        PackedSpheres spheres = bvh.spheres;
+        int[] fileOrder = bvh.fileOrder;
+        for (int i = first; i < end; i++) {
+            tests++;
+            float t;
+            float distance;
+            if (spheres != null) {
+                t = spheres.hit(i, ox, oy, oz, dx, dy, dz, dd);
+                distance = PackedSpheres.distance(t, ox, oy, oz, dx, dy, dz);
+            } else {
+                Intersection intersection = bvh.objects[i].intersect(ray);
+                t = intersection.t();
+                distance = intersection.contactCoord().subtract(ray.origin()).magnitude();
+            }
+            if (t >= 0 // false for NaN: no hit
+                    && (distance < bestDistance
+                            || distance == bestDistance && best >= 0 && fileOrder[i] < fileOrder[best])) {
+                best = i;
+                bestDistance = distance;
+                skipBeyond = t + t * SKIP_MARGIN + margin;
+            }
+        }
     }
 
     /**
      * The slab test: the ray parameter t at which the ray enters node's box, or infinity if it
      * misses it ({@link #MISS}). Negative when the origin lies inside the box.
      */
-    private static float entry(float[] bounds, int node, float ox, float oy, float oz, float ix, float iy, float iz) {
+    private float entry(int node) {
+        float[] bounds = bvh.bounds;
         int at = 6 * node;
         float x0 = (bounds[at] - ox) * ix;
         float x1 = (bounds[at + 3] - ox) * ix;

@@ -16,10 +16,15 @@ import rtd.math.Ray;
  * the rows shared out among threads.
  *
  * <p>Every pixel depends only on its own ray, so the picture is the same for any number of
- * threads: the threads only change which pixel is done when. A thread takes the next row
- * not yet taken, so a slow row does not hold the others back.
+ * threads: the threads only change which pixel is done when. A thread takes the next band of
+ * {@value #TILE} rows not yet taken, so a slow band does not hold the others back, and hands
+ * its tracer the rays of one {@value #TILE} × {@value #TILE} square of pixels at a time:
+ * neighbouring rays take similar paths, which a tracer may use.
  */
 public final class ParallelRenderer {
+
+    /** The side of the squares of pixels handed to {@link Tracer#traceAll} together. */
+    static final int TILE = 8;
 
     private ParallelRenderer() {
     }
@@ -31,13 +36,14 @@ public final class ParallelRenderer {
     public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, int width, int height,
             int threads, RenderProgress progress) {
         int[] pixels = new int[width * height];
-        AtomicInteger nextRow = new AtomicInteger();
+        AtomicInteger nextBand = new AtomicInteger();
         List<Tracer> used = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
-        for (int i = 0; i < Math.min(threads, height); i++) { // more threads than rows would idle
+        int bands = (height + TILE - 1) / TILE;
+        for (int i = 0; i < Math.min(threads, bands); i++) { // more threads than bands would idle
             Tracer tracer = tracers.get();
             used.add(tracer);
-            workers.add(() -> renderRows(camera, tracer, width, height, pixels, nextRow, progress));
+            workers.add(() -> renderRows(camera, tracer, width, height, pixels, nextBand, progress));
         }
         runAll(workers);
         WorkCount work = WorkCount.NONE;
@@ -48,14 +54,29 @@ public final class ParallelRenderer {
     }
 
     private static void renderRows(ICamera camera, Tracer tracer, int width, int height, int[] pixels,
-            AtomicInteger nextRow, RenderProgress progress) {
-        for (int y = nextRow.getAndIncrement(); y < height; y = nextRow.getAndIncrement()) {
-            int rowStart = y * width;
-            for (int x = 0; x < width; x++) {
-                Ray ray = camera.generateRay(x, y, width, height);
-                pixels[rowStart + x] = tracer.trace(ray).getRGB();
+            AtomicInteger nextBand, RenderProgress progress) {
+        Ray[] rays = new Ray[TILE * TILE];
+        int[] rgb = new int[TILE * TILE];
+        for (int band = nextBand.getAndIncrement(); band * TILE < height; band = nextBand.getAndIncrement()) {
+            int top = band * TILE;
+            int bottom = Math.min(height, top + TILE);
+            for (int left = 0; left < width; left += TILE) {
+                int right = Math.min(width, left + TILE);
+                int count = 0;
+                for (int y = top; y < bottom; y++) {
+                    for (int x = left; x < right; x++) {
+                        rays[count++] = camera.generateRay(x, y, width, height);
+                    }
+                }
+                tracer.traceAll(rays, count, rgb);
+                count = 0;
+                for (int y = top; y < bottom; y++) {
+                    for (int x = left; x < right; x++) {
+                        pixels[y * width + x] = rgb[count++];
+                    }
+                }
             }
-            progress.rowDone();
+            progress.rowsDone(bottom - top);
         }
     }
 

@@ -10,8 +10,8 @@ public final class RenderProgress {
 
     private final AtomicInteger rowsDone = new AtomicInteger();
 
-    void rowDone() {
-        rowsDone.incrementAndGet();
+    void rowsDone(int rows) {
+        rowsDone.addAndGet(rows);
     }
 
     /** The number of finished rows. */

@@ -15,6 +15,17 @@ public interface Tracer {
     /** The colour of the nearest object the ray hits, or the scene's ambient colour. */
     Color trace(Ray ray);
 
+    /**
+     * The colours of {@code rays[0 .. count)}, as {@code 0xRRGGBB}, into {@code rgb}. The
+     * rays come from a small square of neighbouring pixels; a tracer may use what they share
+     * to go faster. By default it traces them one by one.
+     */
+    default void traceAll(Ray[] rays, int count, int[] rgb) {
+        for (int i = 0; i < count; i++) {
+            rgb[i] = trace(rays[i]).getRGB();
+        }
+    }
+
     /** The work this tracer has done so far. */
     WorkCount work();
 }

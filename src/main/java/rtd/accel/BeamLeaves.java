@@ -1,0 +1,172 @@
+package rtd.accel;
+
+import java.util.Arrays;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+
+/**
+ * The leaves of a {@link Bvh} that a bundle of parallel rays can reach, sorted by how far
+ * along the rays they start. Not in the paper: it serves the orthographic camera, whose rays
+ * all share one direction.
+ *
+ * <p>Neighbouring parallel rays form a beam: the rays from origins O ± h (h the half size of
+ * the box around their origins). A ray from such an origin passes through a box exactly when
+ * the beam's middle ray passes through the box grown by h. So one walk down the tree with the
+ * middle ray and grown boxes finds every leaf that any ray of the bundle could reach, and, for
+ * each, a t that no ray of the bundle enters it before. Each ray then tests only those leaves,
+ * nearest first, instead of walking the tree itself.
+ *
+ * <p>The grown boxes grow a little more (a millionth of the numbers involved) than h, so that
+ * rounding can never make the beam miss a box that one of its rays enters.
+ */
+final class BeamLeaves {
+
+    private static final float ROUNDING = 1e-6f;
+
+    private final Bvh bvh;
+    private final int[] stack;
+    private int[] leaves = new int[64];
+    private float[] entries = new float[64];
+    private long[] sortKeys = new long[64];
+    private int count;
+    private long nodesVisited;
+
+    BeamLeaves(Bvh bvh) {
+        this.bvh = bvh;
+        this.stack = new int[bvh.maxDepth + 2];
+    }
+
+    /** Whether all {@code rays[0 .. count)} have the same direction, so that they form a beam. */
+    static boolean parallel(Ray[] rays, int count) {
+        for (int i = 1; i < count; i++) {
+            if (!rays[i].direction().equals(rays[0].direction())) {
+                return false;
+            }
+        }
+        return count > 0;
+    }
+
+    /**
+     * Finds the leaves that the parallel {@code rays[0 .. count)} can reach; false, with no
+     * leaves found, if the origins are too far out for float to hold the beam's size.
+     */
+    boolean collect(Ray[] rays, int count) {
+        float[] lo = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY};
+        float[] hi = {Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        for (int i = 0; i < count; i++) {
+            float[] origin = {rays[i].origin().x(), rays[i].origin().y(), rays[i].origin().z()};
+            for (int k = 0; k < 3; k++) {
+                lo[k] = Math.min(lo[k], origin[k]);
+                hi[k] = Math.max(hi[k], origin[k]);
+            }
+        }
+        float[] centre = new float[3];
+        float[] half = new float[3];
+        for (int k = 0; k < 3; k++) {
+            centre[k] = (lo[k] + hi[k]) / 2;
+            half[k] = (hi[k] - lo[k]) / 2 + ROUNDING * (Math.abs(lo[k]) + Math.abs(hi[k]));
+            if (!Float.isFinite(centre[k]) || !Float.isFinite(half[k])) {
+                this.count = 0;
+                return false;
+            }
+        }
+        Vector3f direction = rays[0].direction();
+        walk(centre, half, new float[] {1f / direction.x(), 1f / direction.y(), 1f / direction.z()});
+        sortByEntry();
+        return true;
+    }
+
+    private void walk(float[] centre, float[] half, float[] inverse) {
+        count = 0;
+        int stackSize = 0;
+        stack[stackSize++] = 0;
+        while (stackSize > 0) {
+            int node = stack[--stackSize];
+            nodesVisited++;
+            float entry = grownEntry(node, centre, half, inverse);
+            if (entry == Float.POSITIVE_INFINITY) {
+                continue;
+            }
+            int first = bvh.nodes[2 * node];
+            if (bvh.nodes[2 * node + 1] == Bvh.INNER) {
+                stack[stackSize++] = first + 1;
+                stack[stackSize++] = first;
+            } else {
+                add(node, entry);
+            }
+        }
+    }
+
+    /** The slab test of the middle ray against the node's box grown by {@code half}. */
+    private float grownEntry(int node, float[] centre, float[] half, float[] inverse) {
+        float enter = Float.NEGATIVE_INFINITY;
+        float exit = Float.POSITIVE_INFINITY;
+        for (int k = 0; k < 3; k++) {
+            float min = bvh.bounds[6 * node + k];
+            float max = bvh.bounds[6 * node + 3 + k];
+            float grow = half[k] + ROUNDING * (Math.abs(min) + Math.abs(max) + Math.abs(centre[k]));
+            if (Float.isInfinite(inverse[k])) { // the rays do not move along axis k
+                if (min - grow > centre[k] || max + grow < centre[k]) {
+                    return Float.POSITIVE_INFINITY;
+                }
+                continue;
+            }
+            float t0 = (min - grow - centre[k]) * inverse[k];
+            float t1 = (max + grow - centre[k]) * inverse[k];
+            enter = FastMath.max(enter, FastMath.min(t0, t1));
+            exit = FastMath.min(exit, FastMath.max(t0, t1));
+        }
+        return enter <= exit && exit >= 0 ? enter : Float.POSITIVE_INFINITY;
+    }
+
+    private void add(int leaf, float entry) {
+        if (count == leaves.length) {
+            leaves = Arrays.copyOf(leaves, 2 * count);
+            entries = Arrays.copyOf(entries, 2 * count);
+            sortKeys = Arrays.copyOf(sortKeys, 2 * count);
+        }
+        leaves[count] = leaf;
+        entries[count] = entry;
+        count++;
+    }
+
+    /** Sorts the leaves by entry, nearest first (on a tie, in tree order). */
+    private void sortByEntry() {
+        for (int i = 0; i < count; i++) {
+            sortKeys[i] = (long) orderedBits(entries[i]) << 32 | i;
+        }
+        Arrays.sort(sortKeys, 0, count);
+        int[] sortedLeaves = new int[count];
+        float[] sortedEntries = new float[count];
+        for (int i = 0; i < count; i++) {
+            int from = (int) sortKeys[i];
+            sortedLeaves[i] = leaves[from];
+            sortedEntries[i] = entries[from];
+        }
+        System.arraycopy(sortedLeaves, 0, leaves, 0, count);
+        System.arraycopy(sortedEntries, 0, entries, 0, count);
+    }
+
+    /** The float's bits turned so that signed int order is the float's order. */
+    private static int orderedBits(float value) {
+        int bits = Float.floatToIntBits(value);
+        return bits >= 0 ? bits : bits ^ 0x7FFFFFFF;
+    }
+
+    int count() {
+        return count;
+    }
+
+    int leaf(int i) {
+        return leaves[i];
+    }
+
+    /** No ray of the bundle enters leaf {@code i} before this t. */
+    float entry(int i) {
+        return entries[i];
+    }
+
+    long nodesVisited() {
+        return nodesVisited;
+    }
+}
