@@ -25,9 +25,18 @@ final class BeamLeaves {
 
     private final Bvh bvh;
     private final int[] stack;
+    // The beam: the box around the rays' origins, its centre and half size, and 1 / direction.
+    private final float[] lo = new float[3];
+    private final float[] hi = new float[3];
+    private final float[] centre = new float[3];
+    private final float[] half = new float[3];
+    private final float[] inverse = new float[3];
     private int[] leaves = new int[64];
     private float[] entries = new float[64];
     private long[] sortKeys = new long[64];
+    /** Arrays of the same size to sort into, swapped with the two above. */
+    private int[] spareLeaves = new int[64];
+    private float[] spareEntries = new float[64];
     private int count;
     private long nodesVisited;
 
@@ -51,17 +60,17 @@ final class BeamLeaves {
      * leaves found, if the origins are too far out for float to hold the beam's size.
      */
     boolean collect(Ray[] rays, int count) {
-        float[] lo = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY};
-        float[] hi = {Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        Arrays.fill(lo, Float.POSITIVE_INFINITY);
+        Arrays.fill(hi, Float.NEGATIVE_INFINITY);
         for (int i = 0; i < count; i++) {
-            float[] origin = {rays[i].origin().x(), rays[i].origin().y(), rays[i].origin().z()};
-            for (int k = 0; k < 3; k++) {
-                lo[k] = Math.min(lo[k], origin[k]);
-                hi[k] = Math.max(hi[k], origin[k]);
-            }
+            Vector3f origin = rays[i].origin();
+            lo[0] = Math.min(lo[0], origin.x());
+            lo[1] = Math.min(lo[1], origin.y());
+            lo[2] = Math.min(lo[2], origin.z());
+            hi[0] = Math.max(hi[0], origin.x());
+            hi[1] = Math.max(hi[1], origin.y());
+            hi[2] = Math.max(hi[2], origin.z());
         }
-        float[] centre = new float[3];
-        float[] half = new float[3];
         for (int k = 0; k < 3; k++) {
             centre[k] = (lo[k] + hi[k]) / 2;
             half[k] = (hi[k] - lo[k]) / 2 + ROUNDING * (Math.abs(lo[k]) + Math.abs(hi[k]));
@@ -71,19 +80,22 @@ final class BeamLeaves {
             }
         }
         Vector3f direction = rays[0].direction();
-        walk(centre, half, new float[] {1f / direction.x(), 1f / direction.y(), 1f / direction.z()});
+        inverse[0] = 1f / direction.x();
+        inverse[1] = 1f / direction.y();
+        inverse[2] = 1f / direction.z();
+        walk();
         sortByEntry();
         return true;
     }
 
-    private void walk(float[] centre, float[] half, float[] inverse) {
+    private void walk() {
         count = 0;
         int stackSize = 0;
         stack[stackSize++] = 0;
         while (stackSize > 0) {
             int node = stack[--stackSize];
             nodesVisited++;
-            float entry = grownEntry(node, centre, half, inverse);
+            float entry = grownEntry(node);
             if (entry == Float.POSITIVE_INFINITY) {
                 continue;
             }
@@ -98,7 +110,7 @@ final class BeamLeaves {
     }
 
     /** The slab test of the middle ray against the node's box grown by {@code half}. */
-    private float grownEntry(int node, float[] centre, float[] half, float[] inverse) {
+    private float grownEntry(int node) {
         float enter = Float.NEGATIVE_INFINITY;
         float exit = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
@@ -124,6 +136,8 @@ final class BeamLeaves {
             leaves = Arrays.copyOf(leaves, 2 * count);
             entries = Arrays.copyOf(entries, 2 * count);
             sortKeys = Arrays.copyOf(sortKeys, 2 * count);
+            spareLeaves = new int[2 * count];
+            spareEntries = new float[2 * count];
         }
         leaves[count] = leaf;
         entries[count] = entry;
@@ -136,15 +150,17 @@ final class BeamLeaves {
             sortKeys[i] = (long) orderedBits(entries[i]) << 32 | i;
         }
         Arrays.sort(sortKeys, 0, count);
-        int[] sortedLeaves = new int[count];
-        float[] sortedEntries = new float[count];
+        int[] unsortedLeaves = leaves;
+        float[] unsortedEntries = entries;
+        leaves = spareLeaves;
+        entries = spareEntries;
         for (int i = 0; i < count; i++) {
             int from = (int) sortKeys[i];
-            sortedLeaves[i] = leaves[from];
-            sortedEntries[i] = entries[from];
+            leaves[i] = unsortedLeaves[from];
+            entries[i] = unsortedEntries[from];
         }
-        System.arraycopy(sortedLeaves, 0, leaves, 0, count);
-        System.arraycopy(sortedEntries, 0, entries, 0, count);
+        spareLeaves = unsortedLeaves;
+        spareEntries = unsortedEntries;
     }
 
     /** The float's bits turned so that signed int order is the float's order. */

@@ -61,7 +61,7 @@ public final class RtdCommand implements Callable<Integer> {
     private int height;
 
     @Option(names = "--threads", paramLabel = "N", converter = PositiveInt.class,
-            description = "threads to render with (default: all cores, here ${DEFAULT-VALUE})")
+            description = "threads to render, build the BVH and compress the PNG with (default: all cores, here ${DEFAULT-VALUE})")
     private int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",

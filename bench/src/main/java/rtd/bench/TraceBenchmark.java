@@ -16,12 +16,14 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import rtd.accel.Bvh;
 import rtd.camera.OrthographicCamera;
+import rtd.math.Ray;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 
 /**
  * One ray per pixel of a 1920 × 1080 image, made and traced as the renderer does it, row by
- * row, through the bounding volume hierarchy, for random scenes of N spheres (those of
+ * row, through the bounding volume hierarchy one ray at a time ({@code bvh}) and, as the renderer
+ * now does, in 8 × 8 squares ({@code bvhSquares}), for random scenes of N spheres (those of
  * {@link SceneGenerator}). The score is nanoseconds per ray; {@link PaperLoopBenchmark} is the
  * same for the paper's loop.
  * With {@code -prof gc}, {@code gc.alloc.rate.norm} is the bytes allocated per ray.
@@ -41,6 +43,9 @@ public class TraceBenchmark {
     private OrthographicCamera camera;
     private Tracer bvh;
     private int row;
+    private int band;
+    private final Ray[] rays = new Ray[64];
+    private final int[] rgb = new int[64];
 
     @Setup(Level.Trial)
     public void setUp() {
@@ -53,6 +58,14 @@ public class TraceBenchmark {
     @OperationsPerInvocation(BenchScenes.WIDTH)
     public int bvh() {
         return traceRow(bvh);
+    }
+
+    /** The renderer's way: 8 × 8 squares of parallel rays share one walk down the tree. */
+    @Benchmark
+    @OperationsPerInvocation(8 * BenchScenes.WIDTH)
+    public int bvhSquares() {
+        band = (band + 1) % (BenchScenes.HEIGHT / 8);
+        return BenchScenes.traceBand(bvh, camera, 8 * band, rays, rgb);
     }
 
     private int traceRow(Tracer tracer) {
