@@ -41,8 +41,8 @@ public final class BvhTracer implements Tracer {
     private long tests;
     private long nodesVisited;
 
-    // The ray being traced, and the nearest hit so far.
-    private Ray ray;
+    // The ray being traced, as numbers (a Ray kept in a field would be allocated for every
+    // ray), and the nearest hit so far.
     private float ox;
     private float oy;
     private float oz;
@@ -93,7 +93,6 @@ public final class BvhTracer implements Tracer {
 
     private void start(Ray next) {
         rays++;
-        ray = next;
         Vector3f origin = next.origin();
         Vector3f direction = next.direction();
         ox = origin.x();
@@ -196,9 +195,10 @@ public final class BvhTracer implements Tracer {
                 t = spheres.hit(i, ox, oy, oz, dx, dy, dz, dd);
                 distance = PackedSpheres.distance(t, ox, oy, oz, dx, dy, dz);
             } else {
-                Intersection intersection = bvh.objects[i].intersect(ray);
+                Vector3f origin = new Vector3f(ox, oy, oz);
+                Intersection intersection = bvh.objects[i].intersect(new Ray(origin, new Vector3f(dx, dy, dz)));
                 t = intersection.t();
-                distance = intersection.contactCoord().subtract(ray.origin()).magnitude();
+                distance = intersection.contactCoord().subtract(origin).magnitude();
             }
             if (t >= 0 // false for NaN: no hit
                     && (distance < bestDistance
