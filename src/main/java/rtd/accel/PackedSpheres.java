@@ -49,17 +49,7 @@ final class PackedSpheres {
         float a = dd;                                                        // equation 3.6
         float b = 2 * ((dx * mx) + (dy * my) + (dz * mz));                   // equation 3.7
         float c = ((mx * mx) + (my * my) + (mz * mz)) - spheres[at + 3];     // equation 3.8
-        float discriminant = b * b - 4 * a * c;
-        if (!(discriminant >= 0)) {
-            return Float.NaN;
-        }
-        float root = (float) Math.sqrt(discriminant);
-        float near = (-b - root) / (2 * a);
-        if (near >= 0) {
-            return near;
-        }
-        float far = (-b + root) / (2 * a);
-        return far >= 0 ? far : Float.NaN;
+        return Sphere.smallestRootNotBehind(a, b, b * b - 4 * a * c);
     }
 
     /**

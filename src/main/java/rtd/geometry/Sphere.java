@@ -33,8 +33,9 @@ public record Sphere(Vector3f center, float radius, Color color) implements IGeo
     /**
      * The abc formula: the smaller root {@code (−b − √D) / 2a} if it is {@code ≥ 0}, else the
      * larger one (the ray starts inside the sphere), else NaN (no root, or both behind O).
+     * Public for the BVH's packed test of the same equations.
      */
-    private static float smallestRootNotBehind(float a, float b, float discriminant) {
+    public static float smallestRootNotBehind(float a, float b, float discriminant) {
         if (!(discriminant >= 0)) {
             return Float.NaN;
         }
