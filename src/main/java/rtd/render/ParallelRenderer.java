@@ -13,7 +13,7 @@ import rtd.math.Ray;
 
 /**
  * Listing 4.2 on all cores: the same ray per pixel as {@link rtd.scene.Scene#render}, with
- * the rows shared out among threads.
+ * bands of rows shared out among threads.
  *
  * <p>Every pixel depends only on its own ray, so the picture is the same for any number of
  * threads: the threads only change which pixel is done when. A thread takes the next band of
@@ -43,7 +43,7 @@ public final class ParallelRenderer {
         for (int i = 0; i < Math.min(threads, bands); i++) { // more threads than bands would idle
             Tracer tracer = tracers.get();
             used.add(tracer);
-            workers.add(() -> renderRows(camera, tracer, width, height, pixels, nextBand, progress));
+            workers.add(() -> renderBands(camera, tracer, width, height, pixels, nextBand, progress));
         }
         runAll(workers);
         WorkCount work = WorkCount.NONE;
@@ -53,7 +53,7 @@ public final class ParallelRenderer {
         return new RenderResult(new Picture(width, height, pixels), work);
     }
 
-    private static void renderRows(ICamera camera, Tracer tracer, int width, int height, int[] pixels,
+    private static void renderBands(ICamera camera, Tracer tracer, int width, int height, int[] pixels,
             AtomicInteger nextBand, RenderProgress progress) {
         Ray[] rays = new Ray[TILE * TILE];
         int[] rgb = new int[TILE * TILE];
