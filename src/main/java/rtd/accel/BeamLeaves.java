@@ -1,8 +1,7 @@
 package rtd.accel;
 
 import java.util.Arrays;
-import rtd.math.Ray;
-import rtd.math.Vector3f;
+import rtd.camera.Beam;
 
 /**
  * The leaves of a {@link Bvh} that a bundle of parallel rays can reach, sorted by how far
@@ -25,9 +24,7 @@ final class BeamLeaves {
 
     private final Bvh bvh;
     private final int[] stack;
-    // The beam: the box around the rays' origins, its centre and half size, and 1 / direction.
-    private final float[] lo = new float[3];
-    private final float[] hi = new float[3];
+    // The beam: the centre and half size of the box around the rays' origins, and 1 / direction.
     private final float[] centre = new float[3];
     private final float[] half = new float[3];
     private final float[] inverse = new float[3];
@@ -45,44 +42,24 @@ final class BeamLeaves {
         this.stack = new int[bvh.maxDepth + 2];
     }
 
-    /** Whether all {@code rays[0 .. count)} have the same direction, so that they form a beam. */
-    static boolean parallel(Ray[] rays, int count) {
-        for (int i = 1; i < count; i++) {
-            if (!rays[i].direction().equals(rays[0].direction())) {
-                return false;
-            }
-        }
-        return count > 0;
-    }
-
     /**
-     * Finds the leaves that the parallel {@code rays[0 .. count)} can reach; false, with no
-     * leaves found, if the origins are too far out for float to hold the beam's size.
+     * Finds the leaves that the beam's rays can reach; false, with no leaves found, if the
+     * origins are too far out for float to hold the beam's size.
      */
-    boolean collect(Ray[] rays, int count) {
-        Arrays.fill(lo, Float.POSITIVE_INFINITY);
-        Arrays.fill(hi, Float.NEGATIVE_INFINITY);
-        for (int i = 0; i < count; i++) {
-            Vector3f origin = rays[i].origin();
-            lo[0] = Math.min(lo[0], origin.x());
-            lo[1] = Math.min(lo[1], origin.y());
-            lo[2] = Math.min(lo[2], origin.z());
-            hi[0] = Math.max(hi[0], origin.x());
-            hi[1] = Math.max(hi[1], origin.y());
-            hi[2] = Math.max(hi[2], origin.z());
-        }
+    boolean collect(Beam beam) {
+        float[] lowest = {beam.lowestOrigin().x(), beam.lowestOrigin().y(), beam.lowestOrigin().z()};
+        float[] highest = {beam.highestOrigin().x(), beam.highestOrigin().y(), beam.highestOrigin().z()};
         for (int k = 0; k < 3; k++) {
-            centre[k] = (lo[k] + hi[k]) / 2;
-            half[k] = (hi[k] - lo[k]) / 2 + ROUNDING * (Math.abs(lo[k]) + Math.abs(hi[k]));
+            centre[k] = (lowest[k] + highest[k]) / 2;
+            half[k] = (highest[k] - lowest[k]) / 2 + ROUNDING * (Math.abs(lowest[k]) + Math.abs(highest[k]));
             if (!Float.isFinite(centre[k]) || !Float.isFinite(half[k])) {
                 this.count = 0;
                 return false;
             }
         }
-        Vector3f direction = rays[0].direction();
-        inverse[0] = 1f / direction.x();
-        inverse[1] = 1f / direction.y();
-        inverse[2] = 1f / direction.z();
+        inverse[0] = 1f / beam.direction().x();
+        inverse[1] = 1f / beam.direction().y();
+        inverse[2] = 1f / beam.direction().z();
         walk();
         sortByEntry();
         return true;
@@ -95,8 +72,7 @@ final class BeamLeaves {
         while (stackSize > 0) {
             int node = stack[--stackSize];
             nodesVisited++;
-            float entry = grownEntry(node);
-            if (entry == Float.POSITIVE_INFINITY) {
+            if (grownEntry(bvh.bounds, node) == Float.POSITIVE_INFINITY) {
                 continue;
             }
             int first = bvh.nodes[2 * node];
@@ -104,18 +80,35 @@ final class BeamLeaves {
                 stack[stackSize++] = first + 1;
                 stack[stackSize++] = first;
             } else {
-                add(node, entry);
+                addIfAnObjectIsReached(node);
             }
         }
     }
 
-    /** The slab test of the middle ray against the node's box grown by {@code half}. */
-    private float grownEntry(int node) {
+    /**
+     * Adds the leaf if the beam reaches the box of one of its objects, with the nearest entry
+     * into those boxes: a small scene's few objects may share one leaf whose box covers much
+     * of the picture, while the objects themselves cover little of it.
+     */
+    private void addIfAnObjectIsReached(int leaf) {
+        int first = bvh.nodes[2 * leaf];
+        int end = first + bvh.nodes[2 * leaf + 1];
+        float entry = Float.POSITIVE_INFINITY;
+        for (int i = first; i < end; i++) {
+            entry = FastMath.min(entry, grownEntry(bvh.objectBounds, i));
+        }
+        if (entry != Float.POSITIVE_INFINITY) {
+            add(leaf, entry);
+        }
+    }
+
+    /** The slab test of the middle ray against box {@code i} of {@code boxes}, grown by {@code half}. */
+    private float grownEntry(float[] boxes, int i) {
         float enter = Float.NEGATIVE_INFINITY;
         float exit = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
-            float min = bvh.bounds[6 * node + k];
-            float max = bvh.bounds[6 * node + 3 + k];
+            float min = boxes[6 * i + k];
+            float max = boxes[6 * i + 3 + k];
             float grow = half[k] + ROUNDING * (Math.abs(min) + Math.abs(max) + Math.abs(centre[k]));
             if (Float.isInfinite(inverse[k])) { // the rays do not move along axis k
                 if (min - grow > centre[k] || max + grow < centre[k]) {

@@ -27,16 +27,20 @@ public final class Bvh {
     final float[] bounds;
     final int[] nodes;
     final IGeometry[] objects;
+    /** Each object's box ({@link IGeometry#bounds}), in the order of {@code objects}, 6 floats each. */
+    final float[] objectBounds;
     final int[] fileOrder;
     /** The objects packed for fast tests when they are all spheres, else {@code null}. */
     final PackedSpheres spheres;
     final int maxDepth;
     final Color ambient;
 
-    Bvh(float[] bounds, int[] nodes, IGeometry[] objects, int[] fileOrder, int maxDepth, Color ambient) {
+    Bvh(float[] bounds, int[] nodes, IGeometry[] objects, float[] objectBounds, int[] fileOrder, int maxDepth,
+            Color ambient) {
         this.bounds = bounds;
         this.nodes = nodes;
         this.objects = objects;
+        this.objectBounds = objectBounds;
         this.fileOrder = fileOrder;
         this.spheres = PackedSpheres.packOrNull(objects);
         this.maxDepth = maxDepth;

@@ -87,7 +87,7 @@ final class BvhBuilder {
         for (int i = 0; i < count; i++) {
             sorted[i] = objects.get(order[i]);
         }
-        return new Compaction(bounds, nodes).run(sorted, order, maxDepth, ambient);
+        return new Compaction(bounds, nodes).run(sorted, boxes, order, maxDepth, ambient);
     }
 
     /** Builds the subtree of one node; answers its depth. */

@@ -1,8 +1,11 @@
 package rtd.accel;
 
+import java.util.Arrays;
+import rtd.camera.Beam;
 import rtd.geometry.Intersection;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.render.WorkCount;
 import rtd.scene.Color;
@@ -72,15 +75,26 @@ public final class BvhTracer implements Tracer {
         return colour();
     }
 
-    /** Parallel rays share one walk down the tree ({@link BeamLeaves}); others walk it one by one. */
+    /**
+     * Parallel rays share one walk down the tree ({@link BeamLeaves}); others walk it one by
+     * one. If the walk finds no leaf, every ray sees the background, and none is even made.
+     */
     @Override
-    public void traceAll(Ray[] rays, int count, int[] rgb) {
-        if (!BeamLeaves.parallel(rays, count) || !beam.collect(rays, count)) {
-            Tracer.super.traceAll(rays, count, rgb);
+    public void traceAll(RayBundle rays, int[] rgb) {
+        Beam shared = rays.beam();
+        if (shared == null || !beam.collect(shared)) {
+            Tracer.super.traceAll(rays, rgb);
             return;
         }
-        for (int i = 0; i < count; i++) {
-            start(rays[i]);
+        if (beam.count() == 0) {
+            this.rays += rays.count();
+            Arrays.fill(rgb, 0, rays.count(), bvh.ambient.getRGB());
+            return;
+        }
+        rays.make();
+        for (int i = 0; i < rays.count(); i++) {
+            start(rays.originX(i), rays.originY(i), rays.originZ(i),
+                    rays.directionX(i), rays.directionY(i), rays.directionZ(i));
             testBeamLeaves();
             rgb[i] = colour().getRGB();
         }
@@ -92,20 +106,25 @@ public final class BvhTracer implements Tracer {
     }
 
     private void start(Ray next) {
-        rays++;
         Vector3f origin = next.origin();
         Vector3f direction = next.direction();
-        ox = origin.x();
-        oy = origin.y();
-        oz = origin.z();
-        dx = direction.x();
-        dy = direction.y();
-        dz = direction.z();
-        dd = direction.dot(direction);
+        start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+    }
+
+    private void start(float originX, float originY, float originZ,
+            float directionX, float directionY, float directionZ) {
+        rays++;
+        ox = originX;
+        oy = originY;
+        oz = originZ;
+        dx = directionX;
+        dy = directionY;
+        dz = directionZ;
+        dd = (dx * dx) + (dy * dy) + (dz * dz); // D·D, summed as Vector3f.dot sums
         ix = 1f / dx;
         iy = 1f / dy;
         iz = 1f / dz;
-        margin = SKIP_MARGIN * origin.magnitude() / direction.magnitude();
+        margin = SKIP_MARGIN * (float) Math.sqrt(ox * ox + oy * oy + oz * oz) / (float) Math.sqrt(dd);
         best = -1;
         bestDistance = Float.POSITIVE_INFINITY;
         skipBeyond = Float.POSITIVE_INFINITY;

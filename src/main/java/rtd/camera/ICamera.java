@@ -27,4 +27,13 @@ public interface ICamera {
      * how large rounding errors can grow (see {@link rtd.geometry.IGeometry#bounds}).
      */
     float farthestOrigin(Vector3f point, float reach);
+
+    /**
+     * If the rays of the pixels {@code [left, right) × [top, bottom)} of a {@code w × h} image all
+     * share one direction, a {@link Beam} that holds them all, found without making each ray;
+     * {@code null} if they do not, or if the camera cannot tell cheaply.
+     */
+    default Beam beam(int left, int top, int right, int bottom, int w, int h) {
+        return null;
+    }
 }

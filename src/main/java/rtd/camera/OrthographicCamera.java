@@ -78,6 +78,40 @@ public final class OrthographicCamera implements ICamera {
         return (float) (Math.hypot(depth, reach) * (1 + 1e-6) + 1e-6 * pos.magnitude());
     }
 
+    /**
+     * All rays share {@code dir}, and the four corner pixels' origins bound every origin in
+     * between. Why the corners suffice, even with rounding: in {@link #generateRay} each
+     * coordinate of the origin is made from the pixel's x by a product, a quotient by
+     * {@code zoom > 0} and two sums, and from y likewise. Each of these is monotonic in its
+     * input, and rounding to nearest keeps it monotonic, so each coordinate only grows (or only
+     * shrinks) as x grows, and as y grows: its smallest and largest values over the square lie
+     * at corners. A corner that overflows float gives no beam.
+     */
+    @Override
+    public Beam beam(int left, int top, int right, int bottom, int w, int h) {
+        float lowX = Float.POSITIVE_INFINITY;
+        float lowY = Float.POSITIVE_INFINITY;
+        float lowZ = Float.POSITIVE_INFINITY;
+        float highX = Float.NEGATIVE_INFINITY;
+        float highY = Float.NEGATIVE_INFINITY;
+        float highZ = Float.NEGATIVE_INFINITY;
+        for (int corner = 0; corner < 4; corner++) {
+            int x = corner % 2 == 0 ? left : right - 1;
+            int y = corner < 2 ? top : bottom - 1;
+            Vector3f origin = generateRay(x, y, w, h).origin();
+            if (!origin.isFinite()) {
+                return null;
+            }
+            lowX = Math.min(lowX, origin.x());
+            lowY = Math.min(lowY, origin.y());
+            lowZ = Math.min(lowZ, origin.z());
+            highX = Math.max(highX, origin.x());
+            highY = Math.max(highY, origin.y());
+            highZ = Math.max(highZ, origin.z());
+        }
+        return new Beam(new Vector3f(lowX, lowY, lowZ), new Vector3f(highX, highY, highZ), dir);
+    }
+
     /** The view direction, exactly as the scene file gave it. */
     public Vector3f direction() {
         return dir;

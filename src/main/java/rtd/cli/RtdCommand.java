@@ -40,7 +40,7 @@ import rtd.scene.Scene;
 public final class RtdCommand implements Callable<Integer> {
 
     /** The BVH pays from about this many objects on; below, the paper's loop is as fast. */
-    static final int BVH_THRESHOLD = 8;
+    static final int BVH_THRESHOLD = 1;
 
     @Spec
     private CommandSpec spec;

@@ -9,7 +9,6 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import rtd.camera.ICamera;
-import rtd.math.Ray;
 
 /**
  * Listing 4.2 on all cores: the same ray per pixel as {@link rtd.scene.Scene#render}, with
@@ -55,21 +54,16 @@ public final class ParallelRenderer {
 
     private static void renderBands(ICamera camera, Tracer tracer, int width, int height, int[] pixels,
             AtomicInteger nextBand, RenderProgress progress) {
-        Ray[] rays = new Ray[TILE * TILE];
+        RayBundle rays = new RayBundle(TILE * TILE);
         int[] rgb = new int[TILE * TILE];
         for (int band = nextBand.getAndIncrement(); band * TILE < height; band = nextBand.getAndIncrement()) {
             int top = band * TILE;
             int bottom = Math.min(height, top + TILE);
             for (int left = 0; left < width; left += TILE) {
                 int right = Math.min(width, left + TILE);
+                rays.fill(camera, left, top, right, bottom, width, height);
+                tracer.traceAll(rays, rgb);
                 int count = 0;
-                for (int y = top; y < bottom; y++) {
-                    for (int x = left; x < right; x++) {
-                        rays[count++] = camera.generateRay(x, y, width, height);
-                    }
-                }
-                tracer.traceAll(rays, count, rgb);
-                count = 0;
                 for (int y = top; y < bottom; y++) {
                     for (int x = left; x < right; x++) {
                         pixels[y * width + x] = rgb[count++];

@@ -16,13 +16,14 @@ public interface Tracer {
     Color trace(Ray ray);
 
     /**
-     * The colours of {@code rays[0 .. count)}, as {@code 0xRRGGBB}, into {@code rgb}. The
-     * rays come from a small square of neighbouring pixels; a tracer may use what they share
-     * to go faster. By default it traces them one by one.
+     * The colours of the bundle's rays, as {@code 0xRRGGBB}, into {@code rgb}. The rays come
+     * from a small square of neighbouring pixels; a tracer may use what they share to go
+     * faster. By default it traces them one by one.
      */
-    default void traceAll(Ray[] rays, int count, int[] rgb) {
-        for (int i = 0; i < count; i++) {
-            rgb[i] = trace(rays[i]).getRGB();
+    default void traceAll(RayBundle rays, int[] rgb) {
+        rays.make();
+        for (int i = 0; i < rays.count(); i++) {
+            rgb[i] = trace(rays.ray(i)).getRGB();
         }
     }
 

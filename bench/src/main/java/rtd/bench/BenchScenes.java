@@ -5,8 +5,8 @@ import java.util.List;
 import rtd.camera.OrthographicCamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
-import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.scene.Color;
 import rtd.scene.Scene;
@@ -41,13 +41,11 @@ final class BenchScenes {
      * Traces the band of 8 rows from {@code top} as the renderer does: square by square of
      * 8 × 8 pixels, through {@link Tracer#traceAll}.
      */
-    static int traceBand(Tracer tracer, OrthographicCamera camera, int top, Ray[] rays, int[] rgb) {
+    static int traceBand(Tracer tracer, OrthographicCamera camera, int top, RayBundle rays, int[] rgb) {
         int checksum = 0;
         for (int left = 0; left < WIDTH; left += 8) {
-            for (int i = 0; i < 64; i++) {
-                rays[i] = camera.generateRay(left + i % 8, top + i / 8, WIDTH, HEIGHT);
-            }
-            tracer.traceAll(rays, 64, rgb);
+            rays.fill(camera, left, top, left + 8, top + 8, WIDTH, HEIGHT);
+            tracer.traceAll(rays, rgb);
             checksum += rgb[0] + rgb[63];
         }
         return checksum;

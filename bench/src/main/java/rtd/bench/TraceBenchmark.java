@@ -16,7 +16,7 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import rtd.accel.Bvh;
 import rtd.camera.OrthographicCamera;
-import rtd.math.Ray;
+import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 
@@ -44,7 +44,7 @@ public class TraceBenchmark {
     private Tracer bvh;
     private int row;
     private int band;
-    private final Ray[] rays = new Ray[64];
+    private final RayBundle rays = new RayBundle(64);
     private final int[] rgb = new int[64];
 
     @Setup(Level.Trial)
