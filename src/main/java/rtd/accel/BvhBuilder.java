@@ -82,7 +82,7 @@ final class BvhBuilder {
     }
 
     Bvh build(Color ambient) {
-        int maxDepth = pool.invoke(new Subtree(0, 1, 0, count, 0));
+        int maxDepth = pool.invoke(new Subtree(0, 1, 0, count, 0, null));
         IGeometry[] sorted = new IGeometry[count];
         for (int i = 0; i < count; i++) {
             sorted[i] = objects.get(order[i]);
@@ -90,7 +90,7 @@ final class BvhBuilder {
         return new Compaction(bounds, nodes).run(sorted, boxes, order, maxDepth, ambient);
     }
 
-    /** Builds the subtree of one node; answers its depth. */
+    /** A large subtree, built as a task of its own so that another thread can take it. */
     private final class Subtree extends RecursiveTask<Integer> {
         private static final long serialVersionUID = 1L;
         private final int node;
@@ -98,74 +98,80 @@ final class BvhBuilder {
         private final int start;
         private final int end;
         private final int depth;
+        private final Extent extent;
 
-        /**
-         * The node numbered {@code node} over {@code order[start, end)}; its descendants get
-         * the numbers from {@code free} on, at most {@code 2(end − start) − 2} of them.
-         */
-        Subtree(int node, int free, int start, int end, int depth) {
+        Subtree(int node, int free, int start, int end, int depth, Extent extent) {
             this.node = node;
             this.free = free;
             this.start = start;
             this.end = end;
             this.depth = depth;
+            this.extent = extent;
         }
 
         @Override
         protected Integer compute() {
-            setBoundsOfObjects(node, start, end);
-            int n = end - start;
-            int middle = n <= 1 ? -1 : depth < MAX_SAH_DEPTH ? splitBySah(node, start, end) : splitByCount(start, end);
-            if (middle < 0) {
-                nodes[2 * node] = start;
-                nodes[2 * node + 1] = n;
-                return depth;
-            }
-            int left = free;
-            nodes[2 * node] = left;
-            nodes[2 * node + 1] = INNER;
-            int leftCount = middle - start;
-            Subtree leftTree = new Subtree(left, free + 2, start, middle, depth + 1);
-            Subtree rightTree = new Subtree(left + 1, free + 2 * leftCount, middle, end, depth + 1);
-            if (n < PARALLEL_THRESHOLD) {
-                return Math.max(leftTree.compute(), rightTree.compute());
-            }
-            leftTree.fork();
-            int rightDepth = rightTree.compute();
-            return Math.max(leftTree.join(), rightDepth);
+            return buildNode(node, free, start, end, depth, extent, new SahBins(BINS));
         }
     }
 
-    private void setBoundsOfObjects(int node, int start, int end) {
-        float[] box = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
-            Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
-        for (int i = start; i < end; i++) {
-            int o = 6 * i;
-            for (int k = 0; k < 3; k++) {
-                box[k] = FastMath.min(box[k], boxes[o + k]);
-                box[k + 3] = FastMath.max(box[k + 3], boxes[o + k + 3]);
-            }
+    /**
+     * Builds the node numbered {@code node} over {@code order[start, end)}; its descendants get
+     * the numbers from {@code free} on, at most {@code 2(end − start) − 2} of them. The node's
+     * {@code extent} comes from its parent's bins, or is {@code null} and measured here.
+     * Answers the subtree's depth.
+     */
+    private int buildNode(int node, int free, int start, int end, int depth, Extent extent, SahBins bins) {
+        Extent known = extent != null ? extent : measure(start, end);
+        System.arraycopy(known.box(), 0, bounds, 6 * node, 6);
+        int n = end - start;
+        Split split = n <= 1 ? null : depth < MAX_SAH_DEPTH ? splitBySah(known, start, end, bins) : splitByCount(start, end);
+        if (split == null) {
+            nodes[2 * node] = start;
+            nodes[2 * node + 1] = n;
+            return depth;
         }
-        System.arraycopy(box, 0, bounds, 6 * node, 6);
+        int left = free;
+        nodes[2 * node] = left;
+        nodes[2 * node + 1] = INNER;
+        int leftCount = split.middle() - start;
+        int rightFree = free + 2 * leftCount;
+        if (n < PARALLEL_THRESHOLD) {
+            return Math.max(buildNode(left, free + 2, start, split.middle(), depth + 1, split.left(), bins),
+                    buildNode(left + 1, rightFree, split.middle(), end, depth + 1, split.right(), bins));
+        }
+        Subtree leftTree = new Subtree(left, free + 2, start, split.middle(), depth + 1, split.left());
+        leftTree.fork();
+        int rightDepth = buildNode(left + 1, rightFree, split.middle(), end, depth + 1, split.right(), bins);
+        return Math.max(leftTree.join(), rightDepth);
+    }
+
+    /** The extent of {@code order[start, end)}, by one pass over the objects. */
+    private Extent measure(int start, int end) {
+        Extent extent = Extent.empty();
+        for (int i = start; i < end; i++) {
+            extent.add(boxes, 6 * i, centres, 3 * i);
+        }
+        return extent;
     }
 
     /**
      * Finds the cheapest split by the SAH and partitions {@code order[start, end)} by it.
-     * Returns the index where the right part starts, or −1 when a leaf is cheaper.
+     * Returns {@code null} when a leaf is cheaper. Each child's extent is the union of its
+     * bins', exactly what a pass over its objects would measure.
      */
-    private int splitBySah(int node, int start, int end) {
+    private Split splitBySah(Extent extent, int start, int end, SahBins bins) {
         int n = end - start;
-        float[] lo = new float[3];
-        float[] hi = new float[3];
-        centreBounds(start, end, lo, hi);
-        int axis = widestAxis(lo, hi);
+        float[] centreBox = extent.centres();
+        int axis = widestAxis(centreBox);
         if (axis < 0) {
-            return n > MAX_LEAF_SIZE ? splitByCount(start, end) : -1; // all centres coincide
+            return n > MAX_LEAF_SIZE ? splitByCount(start, end) : null; // all centres coincide
         }
-        SahBins bins = new SahBins(BINS);
-        float scale = BINS / (hi[axis] - lo[axis]);
+        float lo = centreBox[axis];
+        float scale = BINS / (centreBox[axis + 3] - lo);
+        bins.clear();
         for (int i = start; i < end; i++) {
-            bins.add(binOf(centres[3 * i + axis], lo[axis], scale), boxes, 6 * i);
+            bins.add(binOf(centres[3 * i + axis], lo, scale), boxes, 6 * i, centres, 3 * i);
         }
         float[] costs = bins.splitCosts();
         float bestCost = Float.POSITIVE_INFINITY;
@@ -177,33 +183,25 @@ final class BvhBuilder {
             }
         }
         float leafCost = n;
-        float splitCost = TRAVERSAL_COST + bestCost / SahBins.area(bounds, 6 * node);
+        float splitCost = TRAVERSAL_COST + bestCost / SahBins.area(extent.box(), 0);
         if (splitCost >= leafCost && n <= MAX_LEAF_SIZE) {
-            return -1;
+            return null;
         }
-        int middle = partition(start, end, axis, bestBin, lo[axis], scale);
-        return middle == start || middle == end ? splitByCount(start, end) : middle;
-    }
-
-    private void centreBounds(int start, int end, float[] lo, float[] hi) {
-        Arrays.fill(lo, Float.POSITIVE_INFINITY);
-        Arrays.fill(hi, Float.NEGATIVE_INFINITY);
-        for (int i = start; i < end; i++) {
-            int c = 3 * i;
-            for (int k = 0; k < 3; k++) {
-                lo[k] = FastMath.min(lo[k], centres[c + k]);
-                hi[k] = FastMath.max(hi[k], centres[c + k]);
-            }
+        int middle = partition(start, end, axis, bestBin, lo, scale);
+        if (middle == start || middle == end) {
+            return splitByCount(start, end);
         }
+        return new Split(middle, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS));
     }
 
     /** The axis along which the centres spread most, or −1 if they all coincide. */
-    private static int widestAxis(float[] lo, float[] hi) {
+    private static int widestAxis(float[] centreBox) {
         int axis = -1;
         float widest = 0;
         for (int k = 0; k < 3; k++) {
-            if (hi[k] - lo[k] > widest) {
-                widest = hi[k] - lo[k];
+            float spread = centreBox[k + 3] - centreBox[k];
+            if (spread > widest) {
+                widest = spread;
                 axis = k;
             }
         }
@@ -249,10 +247,15 @@ final class BvhBuilder {
 
     /**
      * Splits in half by count, keeping the present order: a fallback for objects that the SAH
-     * cannot separate (equal centres) and for very deep trees.
+     * cannot separate (equal centres) and for very deep trees. The children measure their
+     * extents themselves.
      */
-    private int splitByCount(int start, int end) {
-        return end - start <= 1 ? -1 : start + (end - start) / 2;
+    private static Split splitByCount(int start, int end) {
+        return end - start <= 1 ? null : new Split(start + (end - start) / 2, null, null);
+    }
+
+    /** Where a node's objects divide ({@code order[middle]} is the right child's first), and the children's extents, if known. */
+    private record Split(int middle, Extent left, Extent right) {
     }
 
 }

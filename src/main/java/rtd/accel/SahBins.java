@@ -4,36 +4,37 @@ import java.util.Arrays;
 
 /**
  * The bins of one axis for the surface area heuristic: per bin, how many object centres fell
- * in it and the box around those objects. {@link #splitCosts} sweeps them from both ends.
+ * in it and their {@link Extent}. {@link #splitCosts} sweeps them from both ends; a child's
+ * extent is the union of its bins' ({@link #extent}), so no second pass over its objects is needed.
  */
 final class SahBins {
 
     private final int[] counts;
-    /** Per bin: min x, y, z, max x, y, z. */
-    private final float[] boxes;
-
+    private final Extent[] extents;
     private final float[] costs;
-    private final float[] sweep = new float[6];
+    private final Extent sweep = Extent.empty();
 
     SahBins(int binCount) {
         counts = new int[binCount];
-        boxes = new float[6 * binCount];
+        extents = new Extent[binCount];
+        for (int b = 0; b < binCount; b++) {
+            extents[b] = Extent.empty();
+        }
         costs = new float[binCount - 1];
-        clear();
     }
 
     /** Empties every bin. */
     void clear() {
         Arrays.fill(counts, 0);
-        for (int b = 0; b < counts.length; b++) {
-            setEmpty(boxes, 6 * b);
+        for (Extent extent : extents) {
+            extent.clear();
         }
     }
 
-    /** Adds an object, whose box is {@code objectBoxes[at .. at+5]}, to {@code bin}. */
-    void add(int bin, float[] objectBoxes, int at) {
+    /** Adds an object, with its box at {@code boxes[boxAt ..]} and centre at {@code centres[centreAt ..]}, to {@code bin}. */
+    void add(int bin, float[] boxes, int boxAt, float[] centres, int centreAt) {
         counts[bin]++;
-        grow(boxes, 6 * bin, objectBoxes, at);
+        extents[bin].add(boxes, boxAt, centres, centreAt);
     }
 
     /**
@@ -43,22 +44,30 @@ final class SahBins {
      */
     float[] splitCosts() {
         int bins = counts.length;
-        float[] box = sweep;
-        setEmpty(box, 0);
+        sweep.clear();
         int n = 0;
         for (int s = 0; s < bins - 1; s++) {
             n += counts[s];
-            grow(box, 0, boxes, 6 * s);
-            costs[s] = n == 0 ? Float.POSITIVE_INFINITY : area(box, 0) * n;
+            sweep.add(extents[s]);
+            costs[s] = n == 0 ? Float.POSITIVE_INFINITY : area(sweep.box(), 0) * n;
         }
-        setEmpty(box, 0);
+        sweep.clear();
         n = 0;
         for (int s = bins - 1; s > 0; s--) {
             n += counts[s];
-            grow(box, 0, boxes, 6 * s);
-            costs[s - 1] = n == 0 ? Float.POSITIVE_INFINITY : costs[s - 1] + area(box, 0) * n;
+            sweep.add(extents[s]);
+            costs[s - 1] = n == 0 ? Float.POSITIVE_INFINITY : costs[s - 1] + area(sweep.box(), 0) * n;
         }
         return costs;
+    }
+
+    /** A new extent, the union of bins {@code [from, to)}. */
+    Extent extent(int from, int to) {
+        Extent union = Extent.empty();
+        for (int b = from; b < to; b++) {
+            union.add(extents[b]);
+        }
+        return union;
     }
 
     /** The surface area of the box at {@code box[at .. at+5]}. */
@@ -67,19 +76,5 @@ final class SahBins {
         float dy = box[at + 4] - box[at + 1];
         float dz = box[at + 5] - box[at + 2];
         return 2 * (dx * dy + dy * dz + dz * dx);
-    }
-
-    private static void setEmpty(float[] box, int at) {
-        for (int k = 0; k < 3; k++) {
-            box[at + k] = Float.POSITIVE_INFINITY;
-            box[at + k + 3] = Float.NEGATIVE_INFINITY;
-        }
-    }
-
-    private static void grow(float[] box, int at, float[] other, int otherAt) {
-        for (int k = 0; k < 3; k++) {
-            box[at + k] = FastMath.min(box[at + k], other[otherAt + k]);
-            box[at + k + 3] = FastMath.max(box[at + k + 3], other[otherAt + k + 3]);
-        }
     }
 }

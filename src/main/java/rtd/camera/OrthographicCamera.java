@@ -22,6 +22,9 @@ public final class OrthographicCamera implements ICamera {
     private final float zoom;
     private final Vector3f widthVector;
     private final Vector3f heightVector;
+    /** |dir| and |pos|, kept for {@link #farthestOrigin}, which the BVH asks once per object. */
+    private final double dirLength;
+    private final double posLength;
 
     /**
      * Makes a camera at {@code pos} that looks along {@code dir} (any non-zero length) and
@@ -33,6 +36,8 @@ public final class OrthographicCamera implements ICamera {
         this.zoom = zoom;
         this.widthVector = widthVector(dir);
         this.heightVector = dir.cross(widthVector).normalize();
+        this.dirLength = dir.magnitude();
+        this.posLength = pos.magnitude();
     }
 
     /**
@@ -74,8 +79,9 @@ public final class OrthographicCamera implements ICamera {
      */
     @Override
     public float farthestOrigin(Vector3f point, float reach) {
-        double depth = Math.abs(point.subtract(pos).dot(dir)) / (double) dir.magnitude();
-        return (float) (Math.hypot(depth, reach) * (1 + 1e-6) + 1e-6 * pos.magnitude());
+        double depth = Math.abs(point.subtract(pos).dot(dir)) / dirLength;
+        double distance = Math.sqrt(depth * depth + (double) reach * reach); // float's range squared fits a double
+        return (float) (distance * (1 + 1e-6) + 1e-6 * posLength);
     }
 
     /**

@@ -47,12 +47,12 @@ final class SceneParser {
     /** As {@link #parse(SourceText)}, cutting the file into parts of about {@code partSize} bytes. */
     static Scene parse(SourceText source, int partSize) throws SceneException {
         byte[] bytes = source.bytes();
-        int bad = firstNonTextByte(bytes);
+        int start = hasByteOrderMark(bytes) ? 3 : 0;
+        int[] cuts = cuts(bytes, start, partSize);
+        int bad = firstNonTextByte(bytes, cuts);
         if (bad >= 0) {
             throw new SceneException(List.of(notText(source, bad)), false);
         }
-        int start = hasByteOrderMark(bytes) ? 3 : 0;
-        int[] cuts = cuts(bytes, start, partSize);
         int[] firstLines = firstLines(bytes, cuts);
         List<ScenePart> parts = IntStream.range(0, cuts.length - 1).parallel().mapToObj(k -> {
             ScenePart part = new ScenePart();
@@ -151,10 +151,20 @@ final class SceneParser {
         return bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF;
     }
 
-    /** The offset of the first NUL byte or invalid UTF-8 sequence, or −1. */
-    private static int firstNonTextByte(byte[] bytes) {
+    /**
+     * The offset of the first NUL byte or invalid UTF-8 sequence, or −1, checked part by part
+     * in parallel. A part starts after a line break, so no UTF-8 sequence spans two parts.
+     */
+    private static int firstNonTextByte(byte[] bytes, int[] cuts) {
+        return IntStream.range(0, cuts.length - 1).parallel()
+                .map(k -> firstNonTextByte(bytes, cuts[k], cuts[k + 1]))
+                .filter(bad -> bad >= 0)
+                .findFirst().orElse(-1);
+    }
+
+    private static int firstNonTextByte(byte[] bytes, int from, int to) {
         boolean ascii = true;
-        for (int i = 0; i < bytes.length; i++) {
+        for (int i = from; i < to; i++) {
             if (bytes[i] == 0) {
                 return i;
             }
@@ -166,8 +176,8 @@ final class SceneParser {
         CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
                 .onMalformedInput(CodingErrorAction.REPORT)
                 .onUnmappableCharacter(CodingErrorAction.REPORT);
-        ByteBuffer in = ByteBuffer.wrap(bytes);
-        CoderResult result = decoder.decode(in, CharBuffer.allocate(bytes.length), true);
+        ByteBuffer in = ByteBuffer.wrap(bytes, from, to - from);
+        CoderResult result = decoder.decode(in, CharBuffer.allocate(to - from), true);
         return result.isError() ? in.position() : -1;
     }
 
