@@ -35,14 +35,14 @@ public final class Bvh {
     final int maxDepth;
     final Color ambient;
 
-    Bvh(float[] bounds, int[] nodes, IGeometry[] objects, float[] objectBounds, int[] fileOrder, int maxDepth,
-            Color ambient) {
+    Bvh(float[] bounds, int[] nodes, IGeometry[] objects, float[] objectBounds, PackedSpheres spheres, int[] fileOrder,
+            int maxDepth, Color ambient) {
         this.bounds = bounds;
         this.nodes = nodes;
         this.objects = objects;
         this.objectBounds = objectBounds;
         this.fileOrder = fileOrder;
-        this.spheres = PackedSpheres.packOrNull(objects);
+        this.spheres = spheres;
         this.maxDepth = maxDepth;
         this.ambient = ambient;
     }

@@ -84,10 +84,11 @@ final class BvhBuilder {
     Bvh build(Color ambient) {
         int maxDepth = pool.invoke(new Subtree(0, 1, 0, count, 0, null));
         IGeometry[] sorted = new IGeometry[count];
-        for (int i = 0; i < count; i++) {
-            sorted[i] = objects.get(order[i]);
-        }
-        return new Compaction(bounds, nodes).run(sorted, boxes, order, maxDepth, ambient);
+        PackedSpheres spheres = pool.submit(() -> {
+            IntStream.range(0, count).parallel().forEach(i -> sorted[i] = objects.get(order[i]));
+            return PackedSpheres.packOrNull(sorted);
+        }).join();
+        return new Compaction(bounds, nodes).run(sorted, boxes, spheres, order, maxDepth, ambient);
     }
 
     /** A large subtree, built as a task of its own so that another thread can take it. */

@@ -39,11 +39,15 @@ final class Extent {
 
     /** Adds every object of {@code other}. */
     void add(Extent other) {
+        grow(box, other.box);
+        grow(centres, other.centres);
+    }
+
+    /** Grows the box {@code box} to hold the box {@code other}. */
+    static void grow(float[] box, float[] other) {
         for (int k = 0; k < 3; k++) {
-            box[k] = FastMath.min(box[k], other.box[k]);
-            box[k + 3] = FastMath.max(box[k + 3], other.box[k + 3]);
-            centres[k] = FastMath.min(centres[k], other.centres[k]);
-            centres[k + 3] = FastMath.max(centres[k + 3], other.centres[k + 3]);
+            box[k] = FastMath.min(box[k], other[k]);
+            box[k + 3] = FastMath.max(box[k + 3], other[k + 3]);
         }
     }
 
@@ -57,7 +61,8 @@ final class Extent {
         return centres;
     }
 
-    private static void setEmpty(float[] array) {
+    /** Makes {@code array} the empty box, which grows into any box it is grown by. */
+    static void setEmpty(float[] array) {
         Arrays.fill(array, 0, 3, Float.POSITIVE_INFINITY);
         Arrays.fill(array, 3, 6, Float.NEGATIVE_INFINITY);
     }

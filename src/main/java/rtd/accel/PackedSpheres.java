@@ -1,5 +1,8 @@
 package rtd.accel;
 
+import java.util.Arrays;
+import java.util.stream.IntStream;
+
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 
@@ -22,18 +25,22 @@ final class PackedSpheres {
         this.spheres = spheres;
     }
 
-    /** The objects packed, or {@code null} if any of them is not a sphere. */
+    /**
+     * The objects packed, or {@code null} if any of them is not a sphere. Runs in parallel on
+     * the pool it is called from.
+     */
     static PackedSpheres packOrNull(IGeometry[] objects) {
+        if (!Arrays.stream(objects).parallel().allMatch(object -> object instanceof Sphere)) {
+            return null;
+        }
         float[] spheres = new float[4 * objects.length];
-        for (int i = 0; i < objects.length; i++) {
-            if (!(objects[i] instanceof Sphere sphere)) {
-                return null;
-            }
+        IntStream.range(0, objects.length).parallel().forEach(i -> {
+            Sphere sphere = (Sphere) objects[i];
             spheres[4 * i] = sphere.center().x();
             spheres[4 * i + 1] = sphere.center().y();
             spheres[4 * i + 2] = sphere.center().z();
             spheres[4 * i + 3] = sphere.radius() * sphere.radius();
-        }
+        });
         return new PackedSpheres(spheres);
     }
 

@@ -12,7 +12,8 @@ final class SahBins {
     private final int[] counts;
     private final Extent[] extents;
     private final float[] costs;
-    private final Extent sweep = Extent.empty();
+    /** The box of the bins swept so far, min x, y, z, max x, y, z. */
+    private final float[] sweep = new float[6];
 
     SahBins(int binCount) {
         counts = new int[binCount];
@@ -44,19 +45,19 @@ final class SahBins {
      */
     float[] splitCosts() {
         int bins = counts.length;
-        sweep.clear();
+        Extent.setEmpty(sweep);
         int n = 0;
         for (int s = 0; s < bins - 1; s++) {
             n += counts[s];
-            sweep.add(extents[s]);
-            costs[s] = n == 0 ? Float.POSITIVE_INFINITY : area(sweep.box(), 0) * n;
+            Extent.grow(sweep, extents[s].box());
+            costs[s] = n == 0 ? Float.POSITIVE_INFINITY : area(sweep, 0) * n;
         }
-        sweep.clear();
+        Extent.setEmpty(sweep);
         n = 0;
         for (int s = bins - 1; s > 0; s--) {
             n += counts[s];
-            sweep.add(extents[s]);
-            costs[s - 1] = n == 0 ? Float.POSITIVE_INFINITY : costs[s - 1] + area(sweep.box(), 0) * n;
+            Extent.grow(sweep, extents[s].box());
+            costs[s - 1] = n == 0 ? Float.POSITIVE_INFINITY : costs[s - 1] + area(sweep, 0) * n;
         }
         return costs;
     }

@@ -25,6 +25,9 @@ enum Statement {
         }
     }
 
+    /** Every statement; {@code values()} would copy the array for each line read. */
+    private static final Statement[] ALL = values();
+
     final String keyword;
     final List<Group> groups;
     private final byte[] keywordBytes;
@@ -37,7 +40,7 @@ enum Statement {
 
     /** The statement whose keyword is {@code bytes[start, end)}, or null. */
     static Statement find(byte[] bytes, int start, int end) {
-        for (Statement statement : values()) {
+        for (Statement statement : ALL) {
             if (Arrays.equals(statement.keywordBytes, 0, statement.keywordBytes.length, bytes, start, end)) {
                 return statement;
             }

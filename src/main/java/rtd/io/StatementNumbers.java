@@ -85,17 +85,16 @@ final class StatementNumbers {
 
     /** Numbers {@code i} to {@code i + 2}: a colour, each channel a whole number from 0 to 255. */
     Color colour(int i) throws StatementError {
-        int[] channels = new int[3];
-        String[] names = {"red", "green", "blue"};
-        for (int k = 0; k < 3; k++) {
-            float value = values[i + k];
-            if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
-                throw errors.at(starts[i + k], "the " + names[k] + " channel must be a whole number from 0 to 255, found "
-                        + source.text(starts[i + k], ends[i + k]), null);
-            }
-            channels[k] = (int) value;
+        return new Color(channel(i, "red"), channel(i + 1, "green"), channel(i + 2, "blue"));
+    }
+
+    private int channel(int i, String name) throws StatementError {
+        float value = values[i];
+        if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
+            throw errors.at(starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
+                    + source.text(starts[i], ends[i]), null);
         }
-        return new Color(channels[0], channels[1], channels[2]);
+        return (int) value;
     }
 
     private String groupText(int i, int size) {

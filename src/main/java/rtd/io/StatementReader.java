@@ -76,8 +76,8 @@ final class StatementReader {
         }
         part.statementCount++;
         int count = 0;
-        for (Group group : statement.groups) {
-            count = readGroup(statement, group, count);
+        for (int g = 0; g < statement.groups.size(); g++) { // no Iterator for each line of a large file
+            count = readGroup(statement, statement.groups.get(g), count);
         }
         skipBlanks();
         if (at(':')) {
