@@ -39,9 +39,6 @@ import rtd.scene.Scene;
             "The scene format and every error message: see README.md and docs/errors.md."})
 public final class RtdCommand implements Callable<Integer> {
 
-    /** The BVH pays from about this many objects on; below, the paper's loop is as fast. */
-    static final int BVH_THRESHOLD = 1;
-
     @Spec
     private CommandSpec spec;
 
@@ -66,7 +63,7 @@ public final class RtdCommand implements Callable<Integer> {
 
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
-                    + "auto: bvh from " + BVH_THRESHOLD + " objects on (default: ${DEFAULT-VALUE})")
+                    + "auto: bvh for any scene with objects (default: ${DEFAULT-VALUE})")
     private Accel accel;
 
     @Option(names = "--stats", description = "print the time of each phase and the work per ray to standard error")
@@ -122,7 +119,7 @@ public final class RtdCommand implements Callable<Integer> {
         timer.endPhase("parse");
         ImageSize.check(spec.commandLine(), width, height);
 
-        boolean useBvh = accel == Accel.bvh || accel == Accel.auto && scene.objects().size() >= BVH_THRESHOLD;
+        boolean useBvh = accel == Accel.bvh || accel == Accel.auto && !scene.objects().isEmpty();
         Supplier<Tracer> tracers;
         Bvh bvh = null;
         if (useBvh) {

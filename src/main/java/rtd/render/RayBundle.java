@@ -93,7 +93,7 @@ public final class RayBundle {
         return beamOfTheRays();
     }
 
-    /** Makes the rays with the camera, if not done yet; call it before reading a ray. */
+    /** Makes the rays with the camera, if not done yet; call it before reading a ray's numbers. */
     public void make() {
         if (made) {
             return;
@@ -145,13 +145,20 @@ public final class RayBundle {
         return Float.floatToRawIntBits(a) == Float.floatToRawIntBits(b);
     }
 
-    /** Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time. */
+    /**
+     * Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time: straight from
+     * the camera (it need not be {@linkplain #make made}), or as it was given to {@link #fill(Ray...)}.
+     */
     public Ray ray(int i) {
+        if (camera != null) {
+            int squareWidth = right - left;
+            return camera.generateRay(left + i % squareWidth, top + i / squareWidth, width, height);
+        }
         return new Ray(new Vector3f(originX[i], originY[i], originZ[i]),
                 new Vector3f(directionX[i], directionY[i], directionZ[i]));
     }
 
-    // Ray i's numbers, for tracers that keep a ray as numbers (after make()).
+    // Ray i's numbers, for tracers that keep a ray as numbers; only after make().
 
     public float originX(int i) {
         return originX[i];

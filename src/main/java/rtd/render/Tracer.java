@@ -21,7 +21,6 @@ public interface Tracer {
      * faster. By default it traces them one by one.
      */
     default void traceAll(RayBundle rays, int[] rgb) {
-        rays.make();
         for (int i = 0; i < rays.count(); i++) {
             rgb[i] = trace(rays.ray(i)).getRGB();
         }

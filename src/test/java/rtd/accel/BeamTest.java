@@ -45,7 +45,6 @@ class BeamTest {
             for (int left = 0; left < 160; left += 8) {
                 RayBundle rays = square(scene.camera(), left, top, 160, 120);
                 bundled.traceAll(rays, rgb);
-                rays.make();
                 for (int i = 0; i < rays.count(); i++) {
                     assertThat(rgb[i]).as("ray %d of the square at (%d, %d)", i, left, top)
                             .isEqualTo(alone.trace(rays.ray(i)).getRGB());

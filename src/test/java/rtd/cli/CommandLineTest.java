@@ -215,4 +215,22 @@ class CommandLineTest {
         assertThat(run.err()).contains("parse").contains("build").contains("render").contains("write")
                 .contains("5,000 rays").contains("per ray: 2.00 intersection tests");
     }
+
+    @Test
+    void autoUsesTheBvhForAnySceneWithObjectsAndItsSquaresSkipMostTests() throws IOException {
+        Run paper = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--width", "480",
+                "--height", "270");
+        assertThat(paper.exitCode()).isZero();
+        assertThat(paper.err()).contains("BVH of 1 nodes");
+        // Most squares of the paper's example reach neither sphere: far fewer tests than the loop's 2.
+        double testsPerRay = Double.parseDouble(paper.err().replaceAll("(?s).*per ray: ([0-9.]+) intersection.*", "$1"));
+        assertThat(testsPerRay).isLessThan(1.0);
+
+        Path cameraOnly = dir.resolve("camera_only.txt");
+        Files.writeString(cameraOnly, "orthographic_camera:(0|0|20):(0|0|-1):(50)\n");
+        Run empty = Cli.run(cameraOnly.toString(), "-o", dir.resolve("e.png").toString(), "--stats", "--width", "64",
+                "--height", "36");
+        assertThat(empty.exitCode()).isZero();
+        assertThat(empty.err()).contains("no BVH");
+    }
 }
