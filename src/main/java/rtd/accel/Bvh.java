@@ -27,6 +27,8 @@ public final class Bvh {
     final float[] bounds;
     final int[] nodes;
     final IGeometry[] objects;
+    /** Each object's colour as {@code 0xRRGGBB}, in the order of {@code objects}. */
+    final int[] colours;
     /** Each object's box ({@link IGeometry#bounds}), in the order of {@code objects}, 6 floats each. */
     final float[] objectBounds;
     final int[] fileOrder;
@@ -35,11 +37,12 @@ public final class Bvh {
     final int maxDepth;
     final Color ambient;
 
-    Bvh(float[] bounds, int[] nodes, IGeometry[] objects, float[] objectBounds, PackedSpheres spheres, int[] fileOrder,
+    Bvh(float[] bounds, int[] nodes, IGeometry[] objects, int[] colours, float[] objectBounds, PackedSpheres spheres, int[] fileOrder,
             int maxDepth, Color ambient) {
         this.bounds = bounds;
         this.nodes = nodes;
         this.objects = objects;
+        this.colours = colours;
         this.objectBounds = objectBounds;
         this.fileOrder = fileOrder;
         this.spheres = spheres;

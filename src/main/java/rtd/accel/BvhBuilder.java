@@ -84,11 +84,15 @@ final class BvhBuilder {
     Bvh build(Color ambient) {
         int maxDepth = pool.invoke(new Subtree(0, 1, 0, count, 0, null));
         IGeometry[] sorted = new IGeometry[count];
+        int[] colours = new int[count];
         PackedSpheres spheres = pool.submit(() -> {
-            IntStream.range(0, count).parallel().forEach(i -> sorted[i] = objects.get(order[i]));
+            IntStream.range(0, count).parallel().forEach(i -> {
+                sorted[i] = objects.get(order[i]);
+                colours[i] = sorted[i].color().getRGB();
+            });
             return PackedSpheres.packOrNull(sorted);
         }).join();
-        return new Compaction(bounds, nodes).run(sorted, boxes, spheres, order, maxDepth, ambient);
+        return new Compaction(bounds, nodes).run(sorted, colours, boxes, spheres, order, maxDepth, ambient);
     }
 
     /** A large subtree, built as a task of its own so that another thread can take it. */

@@ -22,13 +22,13 @@ final class Compaction {
         this.oldNodes = oldNodes;
     }
 
-    Bvh run(IGeometry[] objects, float[] objectBounds, PackedSpheres spheres, int[] fileOrder, int maxDepth,
+    Bvh run(IGeometry[] objects, int[] colours, float[] objectBounds, PackedSpheres spheres, int[] fileOrder, int maxDepth,
             Color ambient) {
         bounds = new float[oldBounds.length];
         nodes = new int[oldNodes.length];
         used = 1;
         copy(0, 0);
-        return new Bvh(Arrays.copyOf(bounds, 6 * used), Arrays.copyOf(nodes, 2 * used), objects, objectBounds, spheres, fileOrder,
+        return new Bvh(Arrays.copyOf(bounds, 6 * used), Arrays.copyOf(nodes, 2 * used), objects, colours, objectBounds, spheres, fileOrder,
                 maxDepth, ambient);
     }
 
