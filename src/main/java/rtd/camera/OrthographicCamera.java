@@ -95,27 +95,13 @@ public final class OrthographicCamera implements ICamera {
      */
     @Override
     public Beam beam(int left, int top, int right, int bottom, int w, int h) {
-        float lowX = Float.POSITIVE_INFINITY;
-        float lowY = Float.POSITIVE_INFINITY;
-        float lowZ = Float.POSITIVE_INFINITY;
-        float highX = Float.NEGATIVE_INFINITY;
-        float highY = Float.NEGATIVE_INFINITY;
-        float highZ = Float.NEGATIVE_INFINITY;
+        Vector3f[] corners = new Vector3f[4];
         for (int corner = 0; corner < 4; corner++) {
             int x = corner % 2 == 0 ? left : right - 1;
             int y = corner < 2 ? top : bottom - 1;
-            Vector3f origin = generateRay(x, y, w, h).origin();
-            if (!origin.isFinite()) {
-                return null;
-            }
-            lowX = Math.min(lowX, origin.x());
-            lowY = Math.min(lowY, origin.y());
-            lowZ = Math.min(lowZ, origin.z());
-            highX = Math.max(highX, origin.x());
-            highY = Math.max(highY, origin.y());
-            highZ = Math.max(highZ, origin.z());
+            corners[corner] = generateRay(x, y, w, h).origin();
         }
-        return new Beam(new Vector3f(lowX, lowY, lowZ), new Vector3f(highX, highY, highZ), dir);
+        return Beam.around(dir, corners);
     }
 
     /** The view direction, exactly as the scene file gave it. */

@@ -119,26 +119,15 @@ public final class RayBundle {
     }
 
     private Beam beamOfTheRays() {
-        float lowX = Float.POSITIVE_INFINITY;
-        float lowY = Float.POSITIVE_INFINITY;
-        float lowZ = Float.POSITIVE_INFINITY;
-        float highX = Float.NEGATIVE_INFINITY;
-        float highY = Float.NEGATIVE_INFINITY;
-        float highZ = Float.NEGATIVE_INFINITY;
+        Vector3f[] origins = new Vector3f[count];
         for (int i = 0; i < count; i++) {
             if (!sameBits(directionX[i], directionX[0]) || !sameBits(directionY[i], directionY[0])
                     || !sameBits(directionZ[i], directionZ[0])) {
                 return null;
             }
-            lowX = Math.min(lowX, originX[i]);
-            lowY = Math.min(lowY, originY[i]);
-            lowZ = Math.min(lowZ, originZ[i]);
-            highX = Math.max(highX, originX[i]);
-            highY = Math.max(highY, originY[i]);
-            highZ = Math.max(highZ, originZ[i]);
+            origins[i] = new Vector3f(originX[i], originY[i], originZ[i]);
         }
-        return count == 0 ? null : new Beam(new Vector3f(lowX, lowY, lowZ), new Vector3f(highX, highY, highZ),
-                new Vector3f(directionX[0], directionY[0], directionZ[0]));
+        return count == 0 ? null : Beam.around(new Vector3f(directionX[0], directionY[0], directionZ[0]), origins);
     }
 
     private static boolean sameBits(float a, float b) {
