@@ -1,7 +1,5 @@
 package rtd.accel;
 
-import java.util.Arrays;
-
 /**
  * What the {@link BvhBuilder} must know of a group of objects to split it: the box around
  * their boxes, and the box around their centres (along which axis they spread, and where the
@@ -61,9 +59,13 @@ final class Extent {
         return centres;
     }
 
-    /** Makes {@code array} the empty box, which grows into any box it is grown by. */
-    static void setEmpty(float[] array) {
-        Arrays.fill(array, 0, 3, Float.POSITIVE_INFINITY);
-        Arrays.fill(array, 3, 6, Float.NEGATIVE_INFINITY);
+    /** Makes {@code box} the empty box, which grows into any box it is grown by. */
+    static void setEmpty(float[] box) {
+        box[0] = Float.POSITIVE_INFINITY;
+        box[1] = Float.POSITIVE_INFINITY;
+        box[2] = Float.POSITIVE_INFINITY;
+        box[3] = Float.NEGATIVE_INFINITY;
+        box[4] = Float.NEGATIVE_INFINITY;
+        box[5] = Float.NEGATIVE_INFINITY;
     }
 }

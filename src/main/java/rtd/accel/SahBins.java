@@ -66,7 +66,9 @@ final class SahBins {
     Extent extent(int from, int to) {
         Extent union = Extent.empty();
         for (int b = from; b < to; b++) {
-            union.add(extents[b]);
+            if (counts[b] > 0) {
+                union.add(extents[b]);
+            }
         }
         return union;
     }
