@@ -2,6 +2,7 @@ package rtd.accel;
 
 import rtd.camera.Beam;
 import rtd.math.Ray;
+import rtd.math.Vector3f;
 import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.render.WorkCount;
@@ -41,7 +42,9 @@ public final class BvhTracer implements Tracer {
     @Override
     public Color trace(Ray ray) {
         rays++;
-        hit.start(ray);
+        Vector3f origin = ray.origin();
+        Vector3f direction = ray.direction();
+        hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
         walkTree();
         return hit.colour();
     }

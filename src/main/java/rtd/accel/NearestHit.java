@@ -67,13 +67,6 @@ final class NearestHit {
         skipBeyond = Float.POSITIVE_INFINITY;
     }
 
-    /** Starts on a new ray. */
-    void start(Ray ray) {
-        Vector3f origin = ray.origin();
-        Vector3f direction = ray.direction();
-        start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
-    }
-
     /**
      * The slab test: the ray parameter t at which the ray enters the box of {@code node}, or
      * {@link #MISS}. Negative when the origin lies inside the box.
