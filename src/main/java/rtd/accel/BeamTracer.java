@@ -70,8 +70,12 @@ final class BeamTracer {
         farthestSkip = Float.POSITIVE_INFINITY;
         walk(bundle);
         rays += count;
+        if (!made) { // no ray reached an object
+            Arrays.fill(rgb, 0, count, bvh.ambient.getRGB());
+            return true;
+        }
         for (int i = 0; i < count; i++) {
-            rgb[i] = made ? hits[i].rgb() : bvh.ambient.getRGB();
+            rgb[i] = hits[i].rgb();
         }
         return true;
     }

@@ -63,11 +63,8 @@ public final class ParallelRenderer {
                 int right = Math.min(width, left + TILE);
                 rays.fill(camera, left, top, right, bottom, width, height);
                 tracer.traceAll(rays, rgb);
-                int count = 0;
-                for (int y = top; y < bottom; y++) {
-                    for (int x = left; x < right; x++) {
-                        pixels[y * width + x] = rgb[count++];
-                    }
+                for (int y = top; y < bottom; y++) { // the square's rows, into the picture's
+                    System.arraycopy(rgb, (y - top) * (right - left), pixels, y * width + left, right - left);
                 }
             }
             progress.rowsDone(bottom - top);
