@@ -59,8 +59,15 @@ public final class Bvh {
         return build(scene, Runtime.getRuntime().availableProcessors());
     }
 
-    /** Builds the hierarchy for {@code scene} with {@code threads} threads; the tree is the same for any number. */
+    /**
+     * Builds the hierarchy for {@code scene} with {@code threads} threads; the tree is the same
+     * for any number. A small scene is built on the calling thread: starting threads would take
+     * longer than building it.
+     */
     public static Bvh build(Scene scene, int threads) {
+        if (threads == 1 || scene.objects().size() < BvhBuilder.PARALLEL_THRESHOLD) {
+            return new BvhBuilder(scene.objects(), scene.camera(), null).build(scene.ambient());
+        }
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {
             return new BvhBuilder(scene.objects(), scene.camera(), pool).build(scene.ambient());

@@ -34,8 +34,11 @@ final class BvhBuilder {
      * benchmark: 4 (with leaves of up to 16) rendered in 1.8 s where 1 took 3.2 s.
      */
     private static final float TRAVERSAL_COST = 4f;
-    /** Subtrees with fewer objects are built on the thread that reached them. */
-    private static final int PARALLEL_THRESHOLD = 20_000;
+    /**
+     * Subtrees with fewer objects are built on the thread that reached them, and scenes with
+     * fewer objects on the calling thread alone ({@link Bvh#build}).
+     */
+    static final int PARALLEL_THRESHOLD = 20_000;
     private static final int INNER = Bvh.INNER;
 
     private final List<IGeometry> objects;
@@ -56,6 +59,7 @@ final class BvhBuilder {
     private final int[] nodes;
     private final ForkJoinPool pool;
 
+    /** A builder that works on {@code pool}, or on the calling thread alone if it is {@code null}. */
     BvhBuilder(List<IGeometry> objects, ICamera camera, ForkJoinPool pool) {
         this.objects = objects;
         this.count = objects.size();
@@ -63,16 +67,25 @@ final class BvhBuilder {
         this.order = new int[count];
         this.boxes = new float[6 * count];
         this.centres = new float[3 * count];
-        pool.submit(() -> IntStream.range(0, count).parallel().forEach(i -> {
-            BoundingBox box = objects.get(i).bounds(camera);
-            put(boxes, 6 * i, box.min());
-            put(boxes, 6 * i + 3, box.max());
-            put(centres, 3 * i, box.centre());
-            order[i] = i;
-        })).join();
+        if (pool == null) {
+            for (int i = 0; i < count; i++) {
+                measure(i, camera);
+            }
+        } else {
+            pool.submit(() -> IntStream.range(0, count).parallel().forEach(i -> measure(i, camera))).join();
+        }
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
         this.nodes = new int[2 * capacity];
+    }
+
+    /** Puts object {@code i}'s box and centre in place {@code i}. */
+    private void measure(int i, ICamera camera) {
+        BoundingBox box = objects.get(i).bounds(camera);
+        put(boxes, 6 * i, box.min());
+        put(boxes, 6 * i + 3, box.max());
+        put(centres, 3 * i, box.centre());
+        order[i] = i;
     }
 
     private static void put(float[] array, int at, Vector3f v) {
@@ -82,17 +95,30 @@ final class BvhBuilder {
     }
 
     Bvh build(Color ambient) {
-        int maxDepth = pool.invoke(new Subtree(0, 1, 0, count, 0, null));
         IGeometry[] sorted = new IGeometry[count];
         int[] colours = new int[count];
-        PackedSpheres spheres = pool.submit(() -> {
-            IntStream.range(0, count).parallel().forEach(i -> {
-                sorted[i] = objects.get(order[i]);
-                colours[i] = sorted[i].color().getRGB();
-            });
-            return PackedSpheres.packOrNull(sorted);
-        }).join();
+        int maxDepth;
+        PackedSpheres spheres;
+        if (pool == null) {
+            maxDepth = buildNode(0, 1, 0, count, 0, null, new SahBins(BINS));
+            for (int i = 0; i < count; i++) {
+                putInLeafOrder(i, sorted, colours);
+            }
+            spheres = PackedSpheres.packOrNull(sorted, false);
+        } else {
+            maxDepth = pool.invoke(new Subtree(0, 1, 0, count, 0, null));
+            spheres = pool.submit(() -> {
+                IntStream.range(0, count).parallel().forEach(i -> putInLeafOrder(i, sorted, colours));
+                return PackedSpheres.packOrNull(sorted, true);
+            }).join();
+        }
         return new Compaction(bounds, nodes).run(sorted, colours, boxes, spheres, order, maxDepth, ambient);
+    }
+
+    /** Puts the object at place {@code i} of the tree's order, and its colour, at {@code i}. */
+    private void putInLeafOrder(int i, IGeometry[] sorted, int[] colours) {
+        sorted[i] = objects.get(order[i]);
+        colours[i] = sorted[i].color().getRGB();
     }
 
     /** A large subtree, built as a task of its own so that another thread can take it. */

@@ -26,22 +26,33 @@ final class PackedSpheres {
     }
 
     /**
-     * The objects packed, or {@code null} if any of them is not a sphere. Runs in parallel on
-     * the pool it is called from.
+     * The objects packed, or {@code null} if any of them is not a sphere; in {@code parallel}
+     * on the pool it is called from, or on the calling thread alone.
      */
-    static PackedSpheres packOrNull(IGeometry[] objects) {
+    static PackedSpheres packOrNull(IGeometry[] objects, boolean parallel) {
+        float[] spheres = new float[4 * objects.length];
+        if (!parallel) {
+            for (int i = 0; i < objects.length; i++) {
+                if (!(objects[i] instanceof Sphere)) {
+                    return null;
+                }
+                pack(objects, i, spheres);
+            }
+            return new PackedSpheres(spheres);
+        }
         if (!Arrays.stream(objects).parallel().allMatch(object -> object instanceof Sphere)) {
             return null;
         }
-        float[] spheres = new float[4 * objects.length];
-        IntStream.range(0, objects.length).parallel().forEach(i -> {
-            Sphere sphere = (Sphere) objects[i];
-            spheres[4 * i] = sphere.center().x();
-            spheres[4 * i + 1] = sphere.center().y();
-            spheres[4 * i + 2] = sphere.center().z();
-            spheres[4 * i + 3] = sphere.radius() * sphere.radius();
-        });
+        IntStream.range(0, objects.length).parallel().forEach(i -> pack(objects, i, spheres));
         return new PackedSpheres(spheres);
+    }
+
+    private static void pack(IGeometry[] objects, int i, float[] spheres) {
+        Sphere sphere = (Sphere) objects[i];
+        spheres[4 * i] = sphere.center().x();
+        spheres[4 * i + 1] = sphere.center().y();
+        spheres[4 * i + 2] = sphere.center().z();
+        spheres[4 * i + 3] = sphere.radius() * sphere.radius();
     }
 
     /**

@@ -54,12 +54,24 @@ final class SceneParser {
             throw new SceneException(List.of(notText(source, bad)), false);
         }
         int[] firstLines = firstLines(bytes, cuts);
-        List<ScenePart> parts = IntStream.range(0, cuts.length - 1).parallel().mapToObj(k -> {
-            ScenePart part = new ScenePart();
-            new StatementReader(source, cuts[k], cuts[k + 1], firstLines[k], part).readAll();
-            return part;
-        }).toList();
+        List<ScenePart> parts = onePart(cuts)
+                ? List.of(readPart(source, cuts, firstLines, 0))
+                : IntStream.range(0, cuts.length - 1).parallel().mapToObj(k -> readPart(source, cuts, firstLines, k)).toList();
         return join(source, parts);
+    }
+
+    /**
+     * Whether the file is small enough to be one part. It is then read on the calling thread
+     * alone: starting the parallel machinery would take longer than reading it.
+     */
+    private static boolean onePart(int[] cuts) {
+        return cuts.length == 2;
+    }
+
+    private static ScenePart readPart(SourceText source, int[] cuts, int[] firstLines, int k) {
+        ScenePart part = new ScenePart();
+        new StatementReader(source, cuts[k], cuts[k + 1], firstLines[k], part).readAll();
+        return part;
     }
 
     // ---- cutting the file into parts ---------------------------------------------------
@@ -79,11 +91,18 @@ final class SceneParser {
             }
         }
         cuts.add(bytes.length);
-        return cuts.stream().mapToInt(Integer::intValue).toArray();
+        int[] array = new int[cuts.size()];
+        for (int k = 0; k < array.length; k++) {
+            array[k] = cuts.get(k);
+        }
+        return array;
     }
 
     /** The number of the first line of each part. */
     private static int[] firstLines(byte[] bytes, int[] cuts) {
+        if (onePart(cuts)) {
+            return new int[] {1};
+        }
         int[] breaks = IntStream.range(0, cuts.length - 1).parallel().map(k -> {
             int n = 0;
             for (int i = cuts[k]; i < cuts[k + 1]; i++) {
@@ -156,6 +175,9 @@ final class SceneParser {
      * in parallel. A part starts after a line break, so no UTF-8 sequence spans two parts.
      */
     private static int firstNonTextByte(byte[] bytes, int[] cuts) {
+        if (onePart(cuts)) {
+            return firstNonTextByte(bytes, cuts[0], cuts[1]);
+        }
         return IntStream.range(0, cuts.length - 1).parallel()
                 .map(k -> firstNonTextByte(bytes, cuts[k], cuts[k + 1]))
                 .filter(bad -> bad >= 0)

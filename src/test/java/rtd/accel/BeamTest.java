@@ -147,7 +147,8 @@ class BeamTest {
             spheres[i] = new Sphere(new Vector3f(random.nextFloat() * 20 - 10, random.nextFloat() * 20 - 10,
                     random.nextFloat() * 20 - 10), random.nextFloat() * 5, null);
         }
-        PackedSpheres packed = PackedSpheres.packOrNull(spheres);
+        PackedSpheres packed = PackedSpheres.packOrNull(spheres, false);
+        PackedSpheres packedInParallel = PackedSpheres.packOrNull(spheres, true);
         int hits = 0;
         for (int r = 0; r < 2_000; r++) {
             int i = r % spheres.length;
@@ -162,6 +163,8 @@ class BeamTest {
             float t = packed.hit(i, origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z(),
                     direction.dot(direction));
             assertThat(Float.floatToIntBits(t)).isEqualTo(Float.floatToIntBits(expected.t()));
+            assertThat(Float.floatToIntBits(packedInParallel.hit(i, origin.x(), origin.y(), origin.z(), direction.x(),
+                    direction.y(), direction.z(), direction.dot(direction)))).isEqualTo(Float.floatToIntBits(t));
             if (expected.happened()) {
                 hits++;
                 float distance = PackedSpheres.distance(t, origin.x(), origin.y(), origin.z(),
