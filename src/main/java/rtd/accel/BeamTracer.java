@@ -16,12 +16,13 @@ import rtd.render.WorkCount;
  * enters that box. The boxes grow a little more (a millionth of the numbers involved) than h,
  * so that rounding can never make the beam miss a box that one of its rays enters.
  *
- * <p>The walk goes nearer child first. At a leaf, each ray that enters the leaf's box no
- * farther than its own nearest hit runs the paper's tests on the leaf's objects
- * ({@link NearestHit}). The walk skips every box the beam enters beyond the farthest of the
- * rays' nearest hits, where no ray can find a nearer one. The rays are made only when the walk
- * reaches a leaf where the beam reaches the box of an object: a square that reaches no
- * object is painted with the background without making a single ray.
+ * <p>The walk is {@link BvhTracer}'s walk for one ray, with the beam's grown boxes in place
+ * of the ray's boxes, and the farthest of the rays' nearest hits in place of the ray's own: it
+ * goes nearer child first and skips every box the beam enters beyond that, where no ray can
+ * find a nearer hit. At a leaf, each ray that enters the leaf's box no farther than its own
+ * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}). The rays are
+ * made only when the walk reaches a leaf where the beam reaches the box of an object: a square
+ * that reaches no object is painted with the background without making a single ray.
  */
 final class BeamTracer {
 
@@ -60,10 +61,11 @@ final class BeamTracer {
             return false;
         }
         count = bundle.count();
-        while (hits.length < count) {
-            hits = Arrays.copyOf(hits, Math.max(count, 2 * hits.length));
-            for (int i = 0; i < hits.length; i++) {
-                hits[i] = hits[i] != null ? hits[i] : new NearestHit(bvh);
+        if (hits.length < count) { // the old ones keep their counts of tests
+            int old = hits.length;
+            hits = Arrays.copyOf(hits, count);
+            for (int i = old; i < count; i++) {
+                hits[i] = new NearestHit(bvh);
             }
         }
         made = false;
