@@ -19,13 +19,16 @@ class BvhTest {
 
     @Test
     void isTheSameTreeForAnyNumberOfBuildThreads() {
-        Scene scene = RandomScenes.generate(7, 60_000); // large enough to build in parallel
+        // Large enough to build in parallel; with one thread it is built on the calling thread.
+        Scene scene = RandomScenes.generate(7, 60_000);
         Bvh one = Bvh.build(scene, 1);
         for (int threads : new int[] {2, 3, 4}) {
             Bvh many = Bvh.build(scene, threads);
             assertThat(many.nodes).isEqualTo(one.nodes);
             assertThat(many.bounds).isEqualTo(one.bounds);
             assertThat(many.fileOrder).isEqualTo(one.fileOrder);
+            assertThat(many.objectBounds).isEqualTo(one.objectBounds);
+            assertThat(many.colours).isEqualTo(one.colours);
         }
     }
 
