@@ -54,15 +54,20 @@ final class SceneParser {
             throw new SceneException(List.of(notText(source, bad)), false);
         }
         int[] firstLines = firstLines(bytes, cuts);
-        List<ScenePart> parts = onePart(cuts)
-                ? List.of(readPart(source, cuts, firstLines, 0))
-                : IntStream.range(0, cuts.length - 1).parallel().mapToObj(k -> readPart(source, cuts, firstLines, k)).toList();
+        // The first part, alone and first: it holds the file's first lines, most often its
+        // comments, ambient and camera. Read later, they would meet a reader that the JIT has
+        // compiled for sphere lines only, and it would throw that away and compile it again.
+        List<ScenePart> parts = new ArrayList<>();
+        parts.add(readPart(source, cuts, firstLines, 0));
+        if (!onePart(cuts)) {
+            parts.addAll(IntStream.range(1, cuts.length - 1).parallel().mapToObj(k -> readPart(source, cuts, firstLines, k)).toList());
+        }
         return join(source, parts);
     }
 
     /**
      * Whether the file is small enough to be one part. It is then read on the calling thread
-     * alone: starting the parallel machinery would take longer than reading it.
+     * alone, with no parallel stream: starting one would take longer than reading the file.
      */
     private static boolean onePart(int[] cuts) {
         return cuts.length == 2;
