@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
@@ -69,10 +68,10 @@ final class BvhBuilder {
         this.centres = new float[3 * count];
         if (pool == null) {
             for (int i = 0; i < count; i++) {
-                measure(i, camera);
+                measureObject(i, camera);
             }
         } else {
-            pool.submit(() -> IntStream.range(0, count).parallel().forEach(i -> measure(i, camera))).join();
+            pool.submit(() -> IntStream.range(0, count).parallel().forEach(i -> measureObject(i, camera))).join();
         }
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
@@ -80,7 +79,7 @@ final class BvhBuilder {
     }
 
     /** Puts object {@code i}'s box and centre in place {@code i}. */
-    private void measure(int i, ICamera camera) {
+    private void measureObject(int i, ICamera camera) {
         BoundingBox box = objects.get(i).bounds(camera);
         put(boxes, 6 * i, box.min());
         put(boxes, 6 * i + 3, box.max());
