@@ -6,7 +6,7 @@
 #   RUNS=21 bench/targets.sh
 #
 # Prints the median, the fastest and the slowest run and the median peak memory. The machine is
-# shared, so single runs vary by a quarter; compare medians.
+# shared, so single runs vary by a quarter; compare medians. Needs /usr/bin/time (Debian package "time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
