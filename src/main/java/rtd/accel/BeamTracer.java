@@ -1,7 +1,7 @@
 package rtd.accel;
 
 import java.util.Arrays;
-import rtd.camera.Beam;
+import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.WorkCount;
 
@@ -9,20 +9,19 @@ import rtd.render.WorkCount;
  * Traces the parallel rays of a square of pixels together through a {@link Bvh}. Not in the
  * paper: it serves the orthographic camera, whose rays all share one direction.
  *
- * <p>Parallel rays from origins within O ± h form a beam: a ray from such an origin passes
- * through a box only if the beam's middle ray passes through the box grown by h. So one walk
- * down the tree with the middle ray and grown boxes visits every box that any ray of the square
- * enters, and the middle ray's entry into a grown box is a t before which no ray of the square
- * enters that box. The boxes grow a little more (a millionth of the numbers involved) than h,
- * so that rounding can never make the beam miss a box that one of its rays enters.
+ * <p>Parallel rays from origins within C ± h form a beam: a ray from such an origin passes
+ * through a box only if the beam's middle ray, from C, passes through the box grown by h. So one
+ * walk down the tree with the middle ray and grown boxes visits every box that any ray of the
+ * square enters, and the middle ray's entry into a grown box is a t before which no ray of the
+ * square enters that box. The boxes grow a little more (a millionth of the numbers involved)
+ * than h, so that rounding can never make the beam miss a box that one of its rays enters, and
+ * by the rounding margin of the objects' tests, as for one ray ({@link NearestHit}).
  *
  * <p>The walk is {@link BvhTracer}'s walk for one ray, with the beam's grown boxes in place
  * of the ray's boxes, and the farthest of the rays' nearest hits in place of the ray's own: it
  * goes nearer child first and skips every box the beam enters beyond that, where no ray can
  * find a nearer hit. At a leaf, each ray that enters the leaf's box no farther than its own
- * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}). The rays are
- * made only when the walk reaches a leaf where the beam reaches the box of an object: a square
- * that reaches no object is painted with the background without making a single ray.
+ * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}).
  */
 final class BeamTracer {
 
@@ -32,14 +31,17 @@ final class BeamTracer {
     private final Bvh bvh;
     private final int[] stackNodes;
     private final float[] stackEntries;
+    private final float[] stackExits;
     // The beam: the centre and half size of the box around the rays' origins, and 1 / direction.
     private final float[] centre = new float[3];
     private final float[] half = new float[3];
     private final float[] inverse = new float[3];
+    private float length;
+    /** The exit of the grown box of the last {@link #grownEntry}. */
+    private float exit;
     /** The rays of the square and their nearest hits; reused from square to square. */
     private NearestHit[] hits = new NearestHit[0];
     private int count;
-    private boolean made;
     /** The farthest of the rays' {@link NearestHit#skipBeyond}: no box beyond it can matter. */
     private float farthestSkip;
     private long rays;
@@ -49,15 +51,15 @@ final class BeamTracer {
         this.bvh = bvh;
         this.stackNodes = new int[bvh.maxDepth + 2];
         this.stackEntries = new float[bvh.maxDepth + 2];
+        this.stackExits = new float[bvh.maxDepth + 2];
     }
 
     /**
-     * Traces the bundle's rays, all parallel and within {@code beam}, into {@code rgb}
-     * ({@code 0xRRGGBB}); false, having traced nothing, if the origins are too far out for
-     * float to hold the beam's size.
+     * Traces the bundle's rays into {@code out} if they are all parallel; false, having traced
+     * nothing, if they are not, or if the origins are too far out for float to hold the beam's size.
      */
-    boolean trace(RayBundle bundle, Beam beam, int[] rgb) {
-        if (!aim(beam)) {
+    boolean trace(RayBundle bundle, HitBuffer out) {
+        if (!aim(bundle)) {
             return false;
         }
         count = bundle.count();
@@ -68,32 +70,57 @@ final class BeamTracer {
                 hits[i] = new NearestHit(bvh);
             }
         }
-        made = false;
-        farthestSkip = Float.POSITIVE_INFINITY;
-        walk(bundle);
-        rays += count;
-        if (!made) { // no ray reached an object
-            Arrays.fill(rgb, 0, count, bvh.ambient.getRGB());
-            return true;
-        }
+        farthestSkip = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
-            rgb[i] = hits[i].rgb();
+            NearestHit hit = hits[i];
+            hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
+                    bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
+            hit.testUnbounded();
+            farthestSkip = FastMath.max(farthestSkip, hit.skipBeyond());
+        }
+        if (bvh.hasTree()) {
+            walk();
+        }
+        rays += count;
+        for (int i = 0; i < count; i++) {
+            out.set(i, hits[i].best(), hits[i].bestT(), hits[i].bestDistance());
         }
         return true;
     }
 
     /** The work done so far: rays, intersection tests, and nodes visited by walks and by rays at leaves. */
     WorkCount work() {
-        long tests = 0;
+        long[] tests = new long[bvh.leaves.kindNames.length];
+        long unbounded = 0;
         for (NearestHit hit : hits) {
-            tests += hit.tests();
+            for (int k = 0; k < tests.length; k++) {
+                tests[k] += hit.tests()[k];
+            }
+            unbounded += hit.unboundedTests();
         }
-        return new WorkCount(rays, tests, nodesVisited);
+        return new WorkCount(rays, BvhTracer.testsByKind(bvh, tests, unbounded), nodesVisited);
     }
 
-    private boolean aim(Beam beam) {
-        float[] lowest = {beam.lowestOrigin().x(), beam.lowestOrigin().y(), beam.lowestOrigin().z()};
-        float[] highest = {beam.highestOrigin().x(), beam.highestOrigin().y(), beam.highestOrigin().z()};
+    /** Finds the beam of the bundle's rays; false if they are not all parallel, or the beam is too large for float. */
+    private boolean aim(RayBundle bundle) {
+        int n = bundle.count();
+        if (n == 0) {
+            return false;
+        }
+        float dx = bundle.directionX(0);
+        float dy = bundle.directionY(0);
+        float dz = bundle.directionZ(0);
+        float[] lowest = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY};
+        float[] highest = {Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        for (int i = 0; i < n; i++) {
+            if (!sameBits(bundle.directionX(i), dx) || !sameBits(bundle.directionY(i), dy)
+                    || !sameBits(bundle.directionZ(i), dz)) {
+                return false;
+            }
+            grow(lowest, highest, 0, bundle.originX(i));
+            grow(lowest, highest, 1, bundle.originY(i));
+            grow(lowest, highest, 2, bundle.originZ(i));
+        }
         for (int k = 0; k < 3; k++) {
             centre[k] = (lowest[k] + highest[k]) / 2;
             half[k] = (highest[k] - lowest[k]) / 2 + ROUNDING * (Math.abs(lowest[k]) + Math.abs(highest[k]));
@@ -101,46 +128,66 @@ final class BeamTracer {
                 return false;
             }
         }
-        inverse[0] = 1f / beam.direction().x();
-        inverse[1] = 1f / beam.direction().y();
-        inverse[2] = 1f / beam.direction().z();
+        inverse[0] = 1f / dx;
+        inverse[1] = 1f / dy;
+        inverse[2] = 1f / dz;
+        length = (float) Math.sqrt((dx * dx) + (dy * dy) + (dz * dz));
         return true;
     }
 
+    private static void grow(float[] lowest, float[] highest, int k, float value) {
+        lowest[k] = Math.min(lowest[k], value);
+        highest[k] = Math.max(highest[k], value);
+    }
+
+    private static boolean sameBits(float a, float b) {
+        return Float.floatToRawIntBits(a) == Float.floatToRawIntBits(b);
+    }
+
     /** Walks down the tree, nearer child first, skipping boxes entered beyond every ray's nearest hit. */
-    private void walk(RayBundle bundle) {
+    private void walk() {
         int[] nodes = bvh.nodes;
+        float reach = NearestHit.reach(bvh.bounds, centre[0], centre[1], centre[2], half[0], half[1], half[2], length);
         int stackSize = 0;
         int node = 0;
         nodesVisited++;
-        if (grownEntry(bvh.bounds, node) == MISS) {
+        if (!worthVisiting(grownEntry(bvh.bounds, node, growth(reach)))) {
             return;
         }
+        float nodeExit = FastMath.min(exit, reach);
         while (true) {
             int first = nodes[2 * node];
             if (nodes[2 * node + 1] != Bvh.INNER) {
-                testLeaf(bundle, node);
+                testLeaf(node, growth(nodeExit));
             } else {
                 nodesVisited += 2;
+                float grow = growth(nodeExit);
                 int near = first;
                 int far = first + 1;
-                float nearEntry = grownEntry(bvh.bounds, near);
-                float farEntry = grownEntry(bvh.bounds, far);
+                float nearEntry = grownEntry(bvh.bounds, near, grow);
+                float nearExit = FastMath.min(exit, nodeExit);
+                float farEntry = grownEntry(bvh.bounds, far, grow);
+                float farExit = FastMath.min(exit, nodeExit);
                 if (farEntry < nearEntry) {
                     int swapNode = near;
                     near = far;
                     far = swapNode;
-                    float swapEntry = nearEntry;
+                    float swap = nearEntry;
                     nearEntry = farEntry;
-                    farEntry = swapEntry;
+                    farEntry = swap;
+                    swap = nearExit;
+                    nearExit = farExit;
+                    farExit = swap;
                 }
                 if (worthVisiting(farEntry)) {
                     stackNodes[stackSize] = far;
                     stackEntries[stackSize] = farEntry;
+                    stackExits[stackSize] = farExit;
                     stackSize++;
                 }
                 if (worthVisiting(nearEntry)) {
                     node = near;
+                    nodeExit = nearExit;
                     continue;
                 }
             }
@@ -150,6 +197,7 @@ final class BeamTracer {
                 }
                 stackSize--;
                 node = stackNodes[stackSize];
+                nodeExit = stackExits[stackSize];
             } while (stackEntries[stackSize] > farthestSkip);
         }
     }
@@ -158,30 +206,27 @@ final class BeamTracer {
         return entry != MISS && entry <= farthestSkip;
     }
 
+    /** The rounding margin of boxes in which no ray of the beam is beyond {@code reach} (the same for every ray). */
+    private float growth(float reach) {
+        return hits[0].growth(reach);
+    }
+
     /**
      * Runs the paper's tests on the leaf's objects for each ray that could find a nearer hit
      * there. {@code reach}, the beam's entry into the nearest of the objects' boxes, is a t
      * before which no ray of the square hits any of them.
      */
-    private void testLeaf(RayBundle bundle, int leaf) {
-        float reach = objectsEntry(leaf);
+    private void testLeaf(int leaf, float grow) {
+        float reach = objectsEntry(leaf, grow);
         if (!worthVisiting(reach)) {
             return;
-        }
-        if (!made) {
-            bundle.make();
-            for (int i = 0; i < count; i++) {
-                hits[i].start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
-                        bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
-            }
-            made = true;
         }
         float farthest = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
             NearestHit hit = hits[i];
             if (reach <= hit.skipBeyond()) {
                 nodesVisited++;
-                if (hit.worthVisiting(hit.entry(leaf))) {
+                if (hit.worthVisiting(hit.entry(leaf, grow))) {
                     hit.testLeaf(leaf);
                 }
             }
@@ -191,35 +236,40 @@ final class BeamTracer {
     }
 
     /** The beam's entry into the nearest box of the leaf's objects, or {@link #MISS} if it reaches none. */
-    private float objectsEntry(int leaf) {
+    private float objectsEntry(int leaf, float grow) {
         int first = bvh.nodes[2 * leaf];
         int end = first + bvh.nodes[2 * leaf + 1];
         float entry = MISS;
         for (int i = first; i < end; i++) {
-            entry = FastMath.min(entry, grownEntry(bvh.objectBounds, i));
+            entry = FastMath.min(entry, grownEntry(bvh.leaves.boxes, i, grow));
         }
         return entry;
     }
 
-    /** The slab test of the middle ray against box {@code i} of {@code boxes}, grown by {@code half}. */
-    private float grownEntry(float[] boxes, int i) {
+    /**
+     * The slab test of the middle ray against box {@code i} of {@code boxes}, grown by the beam's
+     * half size and by {@code grow}; {@link #exit} is left where it leaves.
+     */
+    private float grownEntry(float[] boxes, int i, float grow) {
         float enter = Float.NEGATIVE_INFINITY;
-        float exit = Float.POSITIVE_INFINITY;
+        float leave = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
             float min = boxes[6 * i + k];
             float max = boxes[6 * i + 3 + k];
-            float grow = half[k] + ROUNDING * (Math.abs(min) + Math.abs(max) + Math.abs(centre[k]));
+            float g = half[k] + grow + ROUNDING * (Math.abs(min) + Math.abs(max) + Math.abs(centre[k]));
             if (Float.isInfinite(inverse[k])) { // the rays do not move along axis k
-                if (min - grow > centre[k] || max + grow < centre[k]) {
+                if (min - g > centre[k] || max + g < centre[k]) {
+                    exit = MISS;
                     return MISS;
                 }
                 continue;
             }
-            float t0 = (min - grow - centre[k]) * inverse[k];
-            float t1 = (max + grow - centre[k]) * inverse[k];
+            float t0 = (min - g - centre[k]) * inverse[k];
+            float t1 = (max + g - centre[k]) * inverse[k];
             enter = FastMath.max(enter, FastMath.min(t0, t1));
-            exit = FastMath.min(exit, FastMath.max(t0, t1));
+            leave = FastMath.min(leave, FastMath.max(t0, t1));
         }
-        return enter <= exit && exit >= 0 ? enter : MISS;
+        exit = leave;
+        return enter <= leave && leave >= 0 ? enter : MISS;
     }
 }

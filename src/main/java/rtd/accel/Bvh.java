@@ -1,23 +1,27 @@
 package rtd.accel;
 
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.ForkJoinPool;
-
 import rtd.geometry.IGeometry;
-import rtd.scene.Color;
 import rtd.scene.Scene;
 
 /**
  * A bounding volume hierarchy: a binary tree of boxes over the scene's objects, so that a ray
  * tests only the objects whose boxes it passes through, about log N instead of the N of
- * Listing 4.3. It is not in the paper; it is the usual way to make ray tracing fast.
+ * Listing 4.3. It is not in the paper; it is the usual way to make ray tracing fast. It answers
+ * the same question as the paper's loop, "what does this ray hit?", for any ray
+ * ({@link BvhTracer}), and knows nothing of colours.
  *
  * <p>The tree is stored flat, for speed: node {@code i} has its box in
  * {@code bounds[6i .. 6i+5]} (min x, y, z, max x, y, z) and two numbers in
  * {@code nodes[2i], nodes[2i+1]}. An inner node has {@code nodes[2i+1] == INNER} and its
  * children at {@code nodes[2i]} and {@code nodes[2i] + 1}; a leaf holds {@code nodes[2i+1]}
- * objects starting at {@code objects[nodes[2i]]}. The objects are sorted so that each leaf's are
- * adjacent; {@code fileOrder} keeps each one's place in the scene file for the depth test's
- * tie rule.
+ * objects starting at place {@code nodes[2i]} of {@link #leaves}.
+ *
+ * <p>Objects without a box (planes) have no place in a tree of boxes: they stay beside it,
+ * in {@link #unbounded}, and every ray tests them, as the paper's loop does.
  */
 public final class Bvh {
 
@@ -26,35 +30,35 @@ public final class Bvh {
 
     final float[] bounds;
     final int[] nodes;
-    final IGeometry[] objects;
-    /** Each object's colour as {@code 0xRRGGBB}, in the order of {@code objects}. */
-    final int[] colours;
-    /** Each object's box ({@link IGeometry#bounds}), in the order of {@code objects}, 6 floats each. */
-    final float[] objectBounds;
-    final int[] fileOrder;
-    /** The objects packed for fast tests when they are all spheres, else {@code null}. */
-    final PackedSpheres spheres;
+    /** The tree's objects in leaf order. */
+    final LeafObjects leaves;
+    /** The objects without a box, in file order, and their places in the file. */
+    final IGeometry[] unbounded;
+    final int[] unboundedOrder;
     final int maxDepth;
-    final Color ambient;
+    final List<IGeometry> objects;
 
-    Bvh(float[] bounds, int[] nodes, IGeometry[] objects, int[] colours, float[] objectBounds, PackedSpheres spheres, int[] fileOrder,
-            int maxDepth, Color ambient) {
-        this.bounds = bounds;
-        this.nodes = nodes;
+    private Bvh(BvhBuilder builder, List<IGeometry> objects, List<IGeometry> bounded, int[] boundedOrder,
+            List<IGeometry> unbounded, int[] unboundedOrder) {
+        builder.build();
+        Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
+        this.bounds = compaction.bounds();
+        this.nodes = compaction.nodes();
+        int[] order = builder.order();
+        IGeometry[] sorted = new IGeometry[order.length];
+        int[] fileOrder = new int[order.length];
+        builder.forEach(i -> {
+            sorted[i] = bounded.get(order[i]);
+            fileOrder[i] = boundedOrder[order[i]];
+        });
+        this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
+        this.unbounded = unbounded.toArray(IGeometry[]::new);
+        this.unboundedOrder = unboundedOrder;
+        this.maxDepth = builder.maxDepth();
         this.objects = objects;
-        this.colours = colours;
-        this.objectBounds = objectBounds;
-        this.fileOrder = fileOrder;
-        this.spheres = spheres;
-        this.maxDepth = maxDepth;
-        this.ambient = ambient;
     }
 
-    /**
-     * Builds the hierarchy for {@code scene} with all cores. It depends on the camera because
-     * each object's box also holds the hits that rounding adds, which grow with the distance
-     * from the ray origins (see {@link IGeometry#bounds}).
-     */
+    /** Builds the hierarchy for {@code scene} with all cores. */
     public static Bvh build(Scene scene) {
         return build(scene, Runtime.getRuntime().availableProcessors());
     }
@@ -65,12 +69,28 @@ public final class Bvh {
      * longer than building it.
      */
     public static Bvh build(Scene scene, int threads) {
-        if (threads == 1 || scene.objects().size() < BvhBuilder.PARALLEL_THRESHOLD) {
-            return new BvhBuilder(scene.objects(), scene.camera(), null).build(scene.ambient());
+        List<IGeometry> objects = scene.objects();
+        List<IGeometry> bounded = new ArrayList<>();
+        List<IGeometry> unbounded = new ArrayList<>();
+        int[] boundedOrder = new int[objects.size()];
+        int[] unboundedOrder = new int[objects.size()];
+        for (int i = 0; i < objects.size(); i++) {
+            IGeometry object = objects.get(i);
+            if (object.bounds().isBounded()) {
+                boundedOrder[bounded.size()] = i;
+                bounded.add(object);
+            } else {
+                unboundedOrder[unbounded.size()] = i;
+                unbounded.add(object);
+            }
+        }
+        unboundedOrder = Arrays.copyOf(unboundedOrder, unbounded.size());
+        if (threads == 1 || bounded.size() < BvhBuilder.PARALLEL_THRESHOLD) {
+            return new Bvh(new BvhBuilder(bounded, null), objects, bounded, boundedOrder, unbounded, unboundedOrder);
         }
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {
-            return new BvhBuilder(scene.objects(), scene.camera(), pool).build(scene.ambient());
+            return new Bvh(new BvhBuilder(bounded, pool), objects, bounded, boundedOrder, unbounded, unboundedOrder);
         } finally {
             pool.shutdown();
         }
@@ -83,6 +103,11 @@ public final class Bvh {
 
     /** The number of nodes in the tree. */
     public int nodeCount() {
-        return nodes.length / 2;
+        return hasTree() ? nodes.length / 2 : 0;
+    }
+
+    /** Whether there is a tree: whether the scene has objects with a box. */
+    boolean hasTree() {
+        return leaves.objects.length > 0;
     }
 }

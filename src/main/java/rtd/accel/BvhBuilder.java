@@ -3,15 +3,14 @@ package rtd.accel;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
+import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
-import rtd.camera.ICamera;
 import rtd.geometry.BoundingBox;
 import rtd.geometry.IGeometry;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
 
 /**
- * Builds a {@link Bvh} top-down with the binned surface area heuristic (SAH).
+ * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH).
  *
  * <p>At each node the objects' centres are sorted into {@value #BINS} bins along the axis where
  * they spread most; of the splits between bins, the one with the lowest expected cost wins,
@@ -20,7 +19,8 @@ import rtd.scene.Color;
  *
  * <p>Large subtrees are built in parallel. The tree does not depend on the number of threads:
  * each subtree owns a range of node numbers reserved in advance (a subtree of n objects needs
- * at most 2n − 1 nodes), and at the end the used nodes are numbered anew, depth first.
+ * at most 2n − 1 nodes), and at the end the used nodes are numbered anew, depth first
+ * ({@link Compaction}).
  */
 final class BvhBuilder {
 
@@ -47,7 +47,7 @@ final class BvhBuilder {
      * pass over a node's objects reads memory front to back (random reads into these arrays
      * made building a million objects ten times slower).
      */
-    /** Object indices in the scene file, reordered so that each node's objects are adjacent. */
+    /** Places in {@code objects}, reordered so that each node's objects are adjacent. */
     private final int[] order;
     /** Per place in {@code order}: the object's box, min x, y, z, max x, y, z. */
     private final float[] boxes;
@@ -57,30 +57,39 @@ final class BvhBuilder {
     private final float[] bounds;
     private final int[] nodes;
     private final ForkJoinPool pool;
+    private int maxDepth;
 
-    /** A builder that works on {@code pool}, or on the calling thread alone if it is {@code null}. */
-    BvhBuilder(List<IGeometry> objects, ICamera camera, ForkJoinPool pool) {
+    /**
+     * A builder for {@code objects}, all with a finite {@link IGeometry#bounds}, that works on
+     * {@code pool}, or on the calling thread alone if it is {@code null}.
+     */
+    BvhBuilder(List<IGeometry> objects, ForkJoinPool pool) {
         this.objects = objects;
         this.count = objects.size();
         this.pool = pool;
         this.order = new int[count];
         this.boxes = new float[6 * count];
         this.centres = new float[3 * count];
-        if (pool == null) {
-            for (int i = 0; i < count; i++) {
-                measureObject(i, camera);
-            }
-        } else {
-            pool.submit(() -> IntStream.range(0, count).parallel().forEach(i -> measureObject(i, camera))).join();
-        }
+        forEach(this::measureObject);
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
         this.nodes = new int[2 * capacity];
     }
 
+    /** Runs {@code action} for 0 to count − 1: in parallel on the pool, or in order on this thread. */
+    void forEach(IntConsumer action) {
+        if (pool == null) {
+            for (int i = 0; i < count; i++) {
+                action.accept(i);
+            }
+        } else {
+            pool.submit(() -> IntStream.range(0, count).parallel().forEach(action)).join();
+        }
+    }
+
     /** Puts object {@code i}'s box and centre in place {@code i}. */
-    private void measureObject(int i, ICamera camera) {
-        BoundingBox box = objects.get(i).bounds(camera);
+    private void measureObject(int i) {
+        BoundingBox box = objects.get(i).bounds();
         put(boxes, 6 * i, box.min());
         put(boxes, 6 * i + 3, box.max());
         put(centres, 3 * i, box.centre());
@@ -93,31 +102,36 @@ final class BvhBuilder {
         array[at + 2] = v.z();
     }
 
-    Bvh build(Color ambient) {
-        IGeometry[] sorted = new IGeometry[count];
-        int[] colours = new int[count];
-        int maxDepth;
-        PackedSpheres spheres;
-        if (pool == null) {
-            maxDepth = buildNode(0, 1, 0, count, 0, null, new SahBins(BINS));
-            for (int i = 0; i < count; i++) {
-                putInLeafOrder(i, sorted, colours);
-            }
-            spheres = PackedSpheres.packOrNull(sorted, false);
-        } else {
-            maxDepth = pool.invoke(new Subtree(0, 1, 0, count, 0, null));
-            spheres = pool.submit(() -> {
-                IntStream.range(0, count).parallel().forEach(i -> putInLeafOrder(i, sorted, colours));
-                return PackedSpheres.packOrNull(sorted, true);
-            }).join();
-        }
-        return new Compaction(bounds, nodes).run(sorted, colours, boxes, spheres, order, maxDepth, ambient);
+    /** Builds the tree; afterwards {@link #order} and {@link #boxes} are in leaf order. */
+    void build() {
+        maxDepth = pool == null
+                ? buildNode(0, 1, 0, count, 0, null, new SahBins(BINS))
+                : pool.invoke(new Subtree(0, 1, 0, count, 0, null));
     }
 
-    /** Puts the object at place {@code i} of the tree's order, and its colour, at {@code i}. */
-    private void putInLeafOrder(int i, IGeometry[] sorted, int[] colours) {
-        sorted[i] = objects.get(order[i]);
-        colours[i] = sorted[i].color().getRGB();
+    /** The objects' places in the list given, in the order of the tree's leaves. */
+    int[] order() {
+        return order;
+    }
+
+    /** The objects' boxes in leaf order, six floats each. */
+    float[] boxes() {
+        return boxes;
+    }
+
+    /** The depth of the deepest leaf. */
+    int maxDepth() {
+        return maxDepth;
+    }
+
+    /** The node boxes, with numbers reserved but not all used. */
+    float[] bounds() {
+        return bounds;
+    }
+
+    /** The node contents, with numbers reserved but not all used. */
+    int[] nodes() {
+        return nodes;
     }
 
     /** A large subtree, built as a task of its own so that another thread can take it. */

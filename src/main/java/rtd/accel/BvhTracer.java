@@ -1,23 +1,28 @@
 package rtd.accel;
 
-import rtd.camera.Beam;
+import java.util.Map;
+import java.util.TreeMap;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.render.WorkCount;
-import rtd.scene.Color;
 
 /**
- * Follows rays through a {@link Bvh}: the same answer as the paper's loop over all objects
- * (Listing 4.3), found by visiting only the boxes the ray passes through.
+ * Follows rays through a {@link Bvh}: the same hit as the paper's loop over all objects
+ * (Listing 4.3), for any ray, found by visiting only the boxes the ray passes through.
  *
  * <p>Of a node's two children the ray visits the nearer box first; once it has a hit, it skips
  * every box that it enters only beyond that hit. At the leaves it runs the paper's
  * intersection test and depth test unchanged ({@link NearestHit}).
  *
- * <p>Rays that share a direction (the orthographic camera's) and come as a bundle, through
- * {@link #traceAll}, walk the tree together ({@link BeamTracer}).
+ * <p>This is the accelerator's one door: {@link #nearestHit} for one ray, {@link #traceAll}
+ * for the rays of a square of pixels. Parallel rays in a square (the orthographic camera's)
+ * walk the tree together ({@link BeamTracer}); that fast path is an affair of this package
+ * alone.
  *
  * <p>Not thread-safe: it keeps a stack and counters of its own. Use one per thread.
  */
@@ -28,6 +33,7 @@ public final class BvhTracer implements Tracer {
     private final BeamTracer beam;
     private final int[] stackNodes;
     private final float[] stackEntries;
+    private final float[] stackExits;
     private long rays;
     private long nodesVisited;
 
@@ -37,68 +43,112 @@ public final class BvhTracer implements Tracer {
         this.beam = new BeamTracer(bvh);
         this.stackNodes = new int[bvh.maxDepth + 2];
         this.stackEntries = new float[bvh.maxDepth + 2];
+        this.stackExits = new float[bvh.maxDepth + 2];
     }
 
     @Override
-    public Color trace(Ray ray) {
+    public Hit nearestHit(Ray ray) {
+        trace(ray.origin(), ray.direction());
+        int best = hit.best();
+        if (best < 0) {
+            return null;
+        }
+        IGeometry object = bvh.objects.get(best);
+        return new Hit(object, best, hit.bestT(), hit.bestDistance(), ray.pointAt(hit.bestT()));
+    }
+
+    private void trace(Vector3f origin, Vector3f direction) {
         rays++;
-        Vector3f origin = ray.origin();
-        Vector3f direction = ray.direction();
         hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+        hit.testUnbounded();
         walkTree();
-        return hit.colour();
     }
 
     /** Parallel rays walk the tree together ({@link BeamTracer}); others walk it one by one. */
     @Override
-    public void traceAll(RayBundle bundle, int[] rgb) {
-        Beam shared = bundle.beam();
-        if (shared == null || !beam.trace(bundle, shared, rgb)) {
-            Tracer.super.traceAll(bundle, rgb);
+    public void traceAll(RayBundle bundle, HitBuffer hits) {
+        if (beam.trace(bundle, hits)) {
+            return;
+        }
+        for (int i = 0; i < bundle.count(); i++) {
+            rays++;
+            hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
+                    bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
+            hit.testUnbounded();
+            walkTree();
+            hits.set(i, hit.best(), hit.bestT(), hit.bestDistance());
         }
     }
 
     @Override
     public WorkCount work() {
         WorkCount beams = beam.work();
-        return new WorkCount(rays + beams.rays(), hit.tests() + beams.intersectionTests(),
-                nodesVisited + beams.nodesVisited());
+        return new WorkCount(rays, testsByKind(bvh, hit.tests(), hit.unboundedTests()), nodesVisited).plus(beams);
     }
 
-    /** Walks down the tree, nearer child first, skipping boxes entered beyond the nearest hit. */
+    /** Tests per kind of object, from the counts per kind of the tree's objects and the rays that met every unbounded one. */
+    static Map<String, Long> testsByKind(Bvh bvh, long[] treeTests, long unboundedTests) {
+        Map<String, Long> tests = new TreeMap<>();
+        for (int k = 0; k < treeTests.length; k++) {
+            tests.merge(bvh.leaves.kindNames[k], treeTests[k], Long::sum);
+        }
+        for (IGeometry object : bvh.unbounded) {
+            tests.merge(object.kind(), unboundedTests, Long::sum);
+        }
+        return tests;
+    }
+
+    /**
+     * Walks down the tree, nearer child first, skipping boxes entered beyond the nearest hit.
+     * Each node on the way knows a t beyond which the ray is not in it (its exit), and its
+     * children's boxes grow by the rounding margin for that t.
+     */
     private void walkTree() {
-        int[] nodes = bvh.nodes;
-        int stackSize = 0;
-        int node = 0;
-        if (hit.entry(node) == NearestHit.MISS) {
-            nodesVisited++;
+        if (!bvh.hasTree()) {
             return;
         }
+        int[] nodes = bvh.nodes;
+        float reach = hit.reach();
+        int stackSize = 0;
+        int node = 0;
+        nodesVisited++;
+        if (!hit.worthVisiting(hit.entry(node, hit.growth(reach)))) {
+            return;
+        }
+        float exit = FastMath.min(hit.exit(), reach);
         while (true) {
-            nodesVisited++;
             int first = nodes[2 * node];
             if (nodes[2 * node + 1] != Bvh.INNER) {
                 hit.testLeaf(node);
             } else {
+                nodesVisited += 2;
+                float grow = hit.growth(exit);
                 int near = first;
                 int far = first + 1;
-                float nearEntry = hit.entry(near);
-                float farEntry = hit.entry(far);
+                float nearEntry = hit.entry(near, grow);
+                float nearExit = FastMath.min(hit.exit(), exit);
+                float farEntry = hit.entry(far, grow);
+                float farExit = FastMath.min(hit.exit(), exit);
                 if (farEntry < nearEntry) {
                     int swapNode = near;
                     near = far;
                     far = swapNode;
-                    float swapEntry = nearEntry;
+                    float swap = nearEntry;
                     nearEntry = farEntry;
-                    farEntry = swapEntry;
+                    farEntry = swap;
+                    swap = nearExit;
+                    nearExit = farExit;
+                    farExit = swap;
                 }
                 if (hit.worthVisiting(farEntry)) {
                     stackNodes[stackSize] = far;
                     stackEntries[stackSize] = farEntry;
+                    stackExits[stackSize] = farExit;
                     stackSize++;
                 }
                 if (hit.worthVisiting(nearEntry)) {
                     node = near;
+                    exit = nearExit;
                     continue;
                 }
             }
@@ -108,6 +158,7 @@ public final class BvhTracer implements Tracer {
                 }
                 stackSize--;
                 node = stackNodes[stackSize];
+                exit = stackExits[stackSize];
             } while (stackEntries[stackSize] > hit.skipBeyond());
         }
     }

@@ -1,8 +1,6 @@
 package rtd.accel;
 
 import java.util.Arrays;
-import rtd.geometry.IGeometry;
-import rtd.scene.Color;
 
 /**
  * Numbers the nodes of a freshly built tree anew, depth first from the root, leaving out the
@@ -20,16 +18,22 @@ final class Compaction {
     Compaction(float[] oldBounds, int[] oldNodes) {
         this.oldBounds = oldBounds;
         this.oldNodes = oldNodes;
-    }
-
-    Bvh run(IGeometry[] objects, int[] colours, float[] objectBounds, PackedSpheres spheres, int[] fileOrder, int maxDepth,
-            Color ambient) {
         bounds = new float[oldBounds.length];
         nodes = new int[oldNodes.length];
         used = 1;
         copy(0, 0);
-        return new Bvh(Arrays.copyOf(bounds, 6 * used), Arrays.copyOf(nodes, 2 * used), objects, colours, objectBounds, spheres, fileOrder,
-                maxDepth, ambient);
+        bounds = Arrays.copyOf(bounds, 6 * used);
+        nodes = Arrays.copyOf(nodes, 2 * used);
+    }
+
+    /** The node boxes, renumbered. */
+    float[] bounds() {
+        return bounds;
+    }
+
+    /** The node contents, renumbered. */
+    int[] nodes() {
+        return nodes;
     }
 
     /** Copies old node {@code from} to new number {@code to}, and its children after it. */

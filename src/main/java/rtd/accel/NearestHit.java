@@ -1,9 +1,8 @@
 package rtd.accel;
 
-import rtd.geometry.Intersection;
+import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
 
 /**
  * One ray, kept as numbers, and the nearest hit found for it so far: the state of the paper's
@@ -13,6 +12,11 @@ import rtd.scene.Color;
  * nearest to the origin ({@code |P − O|}) wins, and on a tie the object that comes first in
  * the file. So the order in which leaves are visited does not change the answer; a tracer
  * only must not skip a leaf in which the ray could find a nearer hit ({@link #worthVisiting}).
+ *
+ * <p>Boxes are grown as the ray runs: an object's test may report a hit up to
+ * {@code ROUNDING_CONE · t · |R|} outside its box ({@link IGeometry#bounds}). A walk knows a t
+ * beyond which the ray cannot be in a node (its {@link #reach}, then each parent's exit), and
+ * grows the node's children by that much ({@link #growth}).
  *
  * <p>Kept as numbers, and reused from ray to ray, because a {@link Ray} kept in a field
  * would be allocated for every ray.
@@ -29,6 +33,7 @@ final class NearestHit {
     static final float MISS = Float.POSITIVE_INFINITY;
 
     private final Bvh bvh;
+    private final LeafObjects leaves;
     private float ox;
     private float oy;
     private float oz;
@@ -39,14 +44,22 @@ final class NearestHit {
     private float ix;
     private float iy;
     private float iz;
+    /** How much a box grows per unit of t: {@code ROUNDING_CONE · |R|}. */
+    private float cone;
     private float margin;
     private int best;
+    private float bestT;
     private float bestDistance;
     private float skipBeyond;
-    private long tests;
+    /** The exit of the box of the last {@link #entry}. */
+    private float exit;
+    private final long[] tests;
+    private long unboundedTests;
 
     NearestHit(Bvh bvh) {
         this.bvh = bvh;
+        this.leaves = bvh.leaves;
+        this.tests = new long[leaves.kindNames.length];
     }
 
     /** Starts on a new ray {@code O + t·D}, with no hit yet. */
@@ -61,28 +74,64 @@ final class NearestHit {
         ix = 1f / dx;
         iy = 1f / dy;
         iz = 1f / dz;
-        margin = SKIP_MARGIN * (float) Math.sqrt(ox * ox + oy * oy + oz * oz) / (float) Math.sqrt(dd);
+        float length = (float) Math.sqrt(dd);
+        cone = IGeometry.ROUNDING_CONE * length;
+        margin = SKIP_MARGIN * (float) Math.sqrt(ox * ox + oy * oy + oz * oz) / length;
         best = -1;
+        bestT = Float.NaN;
         bestDistance = Float.POSITIVE_INFINITY;
         skipBeyond = Float.POSITIVE_INFINITY;
     }
 
     /**
-     * The slab test: the ray parameter t at which the ray enters the box of {@code node}, or
-     * {@link #MISS}. Negative when the origin lies inside the box.
+     * A t beyond which no object of the tree can report a hit: a hit at t lies in the root's
+     * box grown by {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from
+     * the origin (summing over the axes), and {@code t·|R|} from it.
      */
-    float entry(int node) {
+    float reach() {
+        return reach(bvh.bounds, ox, oy, oz, 0, 0, 0, (float) Math.sqrt(dd));
+    }
+
+    /** {@link #reach} for origins within {@code (x, y, z) ± half} and direction length {@code length}. */
+    static float reach(float[] bounds, float x, float y, float z, float halfX, float halfY, float halfZ, float length) {
+        double far = farthest(x, bounds[0], bounds[3]) + halfX + farthest(y, bounds[1], bounds[4]) + halfY
+                + farthest(z, bounds[2], bounds[5]) + halfZ;
+        float reach = (float) (far / (length * (1 - 3.0 * IGeometry.ROUNDING_CONE)) * (1 + 1e-6));
+        return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
+    }
+
+    private static double farthest(double origin, double min, double max) {
+        return Math.max(Math.abs(origin - min), Math.abs(origin - max));
+    }
+
+    /** How much to grow the boxes in which the ray cannot be beyond {@code reach}. */
+    float growth(float reach) {
+        float grow = cone * reach;
+        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The slab test of the box of {@code node} grown by {@code grow}: the t at which the ray
+     * enters it, or {@link #MISS}; negative when the origin lies inside. {@link #exit} gives
+     * where it leaves.
+     */
+    float entry(int node, float grow) {
         float[] bounds = bvh.bounds;
         int at = 6 * node;
-        float x0 = (bounds[at] - ox) * ix;
-        float x1 = (bounds[at + 3] - ox) * ix;
-        float y0 = (bounds[at + 1] - oy) * iy;
-        float y1 = (bounds[at + 4] - oy) * iy;
-        float z0 = (bounds[at + 2] - oz) * iz;
-        float z1 = (bounds[at + 5] - oz) * iz;
+        float x0 = (bounds[at] - grow - ox) * ix;
+        float x1 = (bounds[at + 3] + grow - ox) * ix;
+        float y0 = (bounds[at + 1] - grow - oy) * iy;
+        float y1 = (bounds[at + 4] + grow - oy) * iy;
+        float z0 = (bounds[at + 2] - grow - oz) * iz;
+        float z1 = (bounds[at + 5] + grow - oz) * iz;
         float enter = FastMath.max(FastMath.max(FastMath.min(x0, x1), FastMath.min(y0, y1)), FastMath.min(z0, z1));
-        float exit = FastMath.min(FastMath.min(FastMath.max(x0, x1), FastMath.max(y0, y1)), FastMath.max(z0, z1));
+        exit = FastMath.min(FastMath.min(FastMath.max(x0, x1), FastMath.max(y0, y1)), FastMath.max(z0, z1));
         return enter <= exit && exit >= 0 ? enter : MISS;
+    }
+
+    /** Where the ray leaves the box of the last {@link #entry}. */
+    float exit() {
+        return exit;
     }
 
     /** Whether the ray enters a box ({@code entry} finite) no farther than the nearest hit allows. */
@@ -95,50 +144,67 @@ final class NearestHit {
         return skipBeyond;
     }
 
-    /**
-     * The paper's intersection test and depth test on a leaf's objects: the nearest hit
-     * ({@code |P − O|}) wins, and on a tie the object that comes first in the file.
-     */
+    /** The paper's intersection test and depth test on a leaf's objects. */
     void testLeaf(int leaf) {
         int first = bvh.nodes[2 * leaf];
         int end = first + bvh.nodes[2 * leaf + 1];
-        PackedSpheres spheres = bvh.spheres;
-        int[] fileOrder = bvh.fileOrder;
         for (int i = first; i < end; i++) {
-            tests++;
-            float t;
-            float distance;
-            if (spheres != null) {
-                t = spheres.hit(i, ox, oy, oz, dx, dy, dz, dd);
-                distance = PackedSpheres.distance(t, ox, oy, oz, dx, dy, dz);
-            } else {
-                Vector3f origin = new Vector3f(ox, oy, oz);
-                Intersection intersection = bvh.objects[i].intersect(new Ray(origin, new Vector3f(dx, dy, dz)));
-                t = intersection.t();
-                distance = intersection.contactCoord().subtract(origin).magnitude();
-            }
-            if (t >= 0 // false for NaN: no hit
-                    && (distance < bestDistance
-                            || distance == bestDistance && best >= 0 && fileOrder[i] < fileOrder[best])) {
-                best = i;
-                bestDistance = distance;
-                skipBeyond = t + t * SKIP_MARGIN + margin;
+            tests[leaves.kinds[i]]++;
+            float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);
+            if (t >= 0) { // false for NaN: no hit
+                consider(leaves.fileOrder[i], t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
             }
         }
     }
 
-    /** The colour of the nearest object hit, or the scene's ambient colour. */
-    Color colour() {
-        return best < 0 ? bvh.ambient : bvh.objects[best].color();
+    /** The paper's tests on the objects without a box, which every ray meets. */
+    void testUnbounded() {
+        IGeometry[] objects = bvh.unbounded;
+        if (objects.length == 0) {
+            return;
+        }
+        unboundedTests++;
+        Ray ray = new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
+        for (int i = 0; i < objects.length; i++) {
+            float t = objects[i].intersect(ray).t();
+            if (t >= 0) {
+                consider(bvh.unboundedOrder[i], t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
+            }
+        }
     }
 
-    /** {@link #colour} as {@code 0xRRGGBB}, from the hierarchy's packed colours: one read from memory, not three. */
-    int rgb() {
-        return best < 0 ? bvh.ambient.getRGB() : bvh.colours[best];
+    /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file. */
+    private void consider(int index, float t, float distance) {
+        if (distance < bestDistance || distance == bestDistance && index < best) {
+            best = index;
+            bestT = t;
+            bestDistance = distance;
+            skipBeyond = t + t * SKIP_MARGIN + margin;
+        }
     }
 
-    /** Intersection tests run for the rays of this object so far. */
-    long tests() {
+    /** The place in the file of the nearest object hit, or −1. */
+    int best() {
+        return best;
+    }
+
+    /** The t of the nearest hit, NaN if none. */
+    float bestT() {
+        return bestT;
+    }
+
+    /** The distance {@code |P − O|} of the nearest hit, infinite if none. */
+    float bestDistance() {
+        return bestDistance;
+    }
+
+    /** Intersection tests run for this object's rays so far, by kind of the tree's objects. */
+    long[] tests() {
         return tests;
+    }
+
+    /** How many rays tested every object without a box. */
+    long unboundedTests() {
+        return unboundedTests;
     }
 }

@@ -1,5 +1,6 @@
 package rtd.cli;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -16,11 +17,14 @@ import picocli.CommandLine.Spec;
 import rtd.accel.Bvh;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
+import rtd.image.Picture;
+import rtd.render.FlatShader;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
 import rtd.render.RenderResult;
 import rtd.render.Tracer;
+import rtd.render.WorkCount;
 import rtd.scene.Scene;
 
 /**
@@ -65,6 +69,10 @@ public final class RtdCommand implements Callable<Integer> {
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
                     + "auto: bvh for any scene with objects (default: ${DEFAULT-VALUE})")
     private Accel accel;
+
+    @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "
+            + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
+    private boolean paper;
 
     @Option(names = "--stats", description = "print the time of each phase and the work per ray to standard error")
     private boolean stats;
@@ -119,23 +127,10 @@ public final class RtdCommand implements Callable<Integer> {
         timer.endPhase("parse");
         ImageSize.check(spec.commandLine(), width, height);
 
-        boolean useBvh = accel == Accel.bvh || accel == Accel.auto && !scene.objects().isEmpty();
-        Supplier<Tracer> tracers;
-        Bvh bvh = null;
-        if (useBvh) {
-            bvh = Bvh.build(scene, threads);
-            tracers = bvh::newTracer;
-        } else {
-            tracers = () -> new LinearTracer(scene);
-        }
+        Bvh bvh = paper ? null : buildBvh(scene);
         timer.endPhase("build");
 
-        RenderProgress progress = new RenderProgress();
-        RenderResult result;
-        boolean showProgress = !noProgress && Terminal.stderrIsTerminal();
-        try (ProgressDisplay display = ProgressDisplay.start(showProgress, err, progress, width, height)) {
-            result = ParallelRenderer.render(scene.camera(), tracers, width, height, threads, progress);
-        }
+        RenderResult result = paper ? renderAsThePaper(scene) : renderInParallel(scene, bvh, err);
         timer.endPhase("render");
 
         writePicture(result, target, threads);
@@ -144,6 +139,33 @@ public final class RtdCommand implements Callable<Integer> {
             err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target));
         }
         return 0;
+    }
+
+    /** The BVH, if {@code --accel} asks for one: {@code auto} takes it for any scene with objects. */
+    private Bvh buildBvh(Scene scene) {
+        boolean useBvh = accel == Accel.bvh || accel == Accel.auto && !scene.objects().isEmpty();
+        return useBvh ? Bvh.build(scene, threads) : null;
+    }
+
+    /** All cores, with the BVH's tracer or the paper's loop ({@link LinearTracer}), in flat colours. */
+    private RenderResult renderInParallel(Scene scene, Bvh bvh, PrintWriter err) {
+        Supplier<Tracer> tracers = bvh != null ? bvh::newTracer : () -> new LinearTracer(scene);
+        FlatShader flat = new FlatShader(scene);
+        RenderProgress progress = new RenderProgress();
+        boolean showProgress = !noProgress && Terminal.stderrIsTerminal();
+        try (ProgressDisplay display = ProgressDisplay.start(showProgress, err, progress, width, height)) {
+            return ParallelRenderer.render(scene.camera(), tracers, tracer -> flat, width, height, threads, progress);
+        }
+    }
+
+    /** {@code --paper}: the paper's {@link Scene#render} itself, one ray per pixel on this thread. */
+    private RenderResult renderAsThePaper(Scene scene) {
+        BufferedImage image = scene.render(width, height);
+        int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
+        for (int i = 0; i < rgb.length; i++) {
+            rgb[i] &= 0xFFFFFF; // getRGB adds an opaque alpha channel
+        }
+        return new RenderResult(new Picture(width, height, rgb), WorkCount.testsOf(scene.objects(), (long) width * height));
     }
 
     private Scene readScene() throws SceneException, FileError {

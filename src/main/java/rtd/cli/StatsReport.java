@@ -26,9 +26,20 @@ final class StatsReport {
         line(text, "write", seconds.get("write"), output.toString());
         double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
         line(text, "total", total, "");
-        text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests, %.2f BVH nodes visited%n",
-                work.testsPerRay(), work.nodesPerRay()));
+        text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests%s, %.2f BVH nodes visited%n",
+                work.testsPerRay(), byKind(work), work.nodesPerRay()));
         return text.toString();
+    }
+
+    /** " (12.50 sphere, 1.00 plane)" when the scene has more than one kind of object. */
+    private static String byKind(WorkCount work) {
+        if (work.testsByKind().size() < 2) {
+            return "";
+        }
+        StringBuilder kinds = new StringBuilder();
+        work.testsByKind().keySet().forEach(kind -> kinds.append(kinds.length() == 0 ? " (" : ", ")
+                .append(String.format(Locale.ROOT, "%.2f %s", work.testsPerRay(kind), kind)));
+        return kinds.append(')').toString();
     }
 
     private static void line(StringBuilder text, String phase, double seconds, String detail) {

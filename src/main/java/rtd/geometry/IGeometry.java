@@ -1,31 +1,52 @@
 package rtd.geometry;
 
+import rtd.image.Color;
 import rtd.math.Ray;
-import rtd.camera.ICamera;
-import rtd.scene.Color;
+import rtd.math.Vector3f;
 
 /**
  * A geometric object of a scene (paper, section 4.2.2).
  *
  * <p>Each kind of object knows how to test itself against a ray, because that test differs
  * from shape to shape; the depth test that compares objects lives in {@link rtd.scene.Scene}.
- * A new shape (the paper names triangles) implements this interface.
+ * A new shape implements this interface: its test, its normal, its box, its colour and finish.
+ * The paper has spheres; Part II adds planes, triangles, boxes and (as triangles) meshes.
  */
 public interface IGeometry {
 
-    /** The intersection test (section 3.2.2): where, if anywhere, the ray hits this object. */
+    /**
+     * How far a float intersection test may report a hit away from its object, relative to the
+     * distance the ray has run: the contract of {@link #bounds}.
+     */
+    float ROUNDING_CONE = 1.1e-3f;
+
+    /**
+     * The intersection test (section 3.2.2): where, if anywhere, the ray hits this object at
+     * some {@code t ≥ 0}. A ray that starts inside a closed object hits its far side.
+     */
     Intersection intersect(Ray ray);
+
+    /** The outward unit normal at {@code point}, a point of the surface (a hit point). */
+    Vector3f normalAt(Vector3f point);
+
+    /**
+     * An axis-aligned box around the object for a bounding volume hierarchy, or
+     * {@link BoundingBox#UNBOUNDED} for an object without limits.
+     *
+     * <p>It must hold every hit that {@link #intersect} can report, including those that
+     * single-precision rounding adds near the surface, up to a margin that grows with the
+     * distance the ray has run: for any ray {@code O + t·R}, a reported hit at t lies in the box
+     * grown on every side by {@code ROUNDING_CONE · t · |R|}. The box does not depend on a
+     * camera, so the hierarchy finds the loop's hit for rays from anywhere.
+     */
+    BoundingBox bounds();
 
     /** The flat colour the object paints the pixels whose ray it is nearest on. */
     Color color();
 
-    /**
-     * An axis-aligned box around this object that a bounding volume hierarchy can sort it by.
-     *
-     * <p>It must hold every point at which {@link #intersect} can report a hit for a ray of
-     * {@code camera}, including the hits that single-precision rounding adds near the surface.
-     * Otherwise the accelerated renderer could skip a hit that the paper's loop finds, and the
-     * two pictures would differ.
-     */
-    BoundingBox bounds(ICamera camera);
+    /** The object's finish, for shading. */
+    Material material();
+
+    /** The kind of object, as the scene file names it ("sphere", "plane", ...), for statistics. */
+    String kind();
 }

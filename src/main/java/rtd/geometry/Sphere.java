@@ -1,20 +1,22 @@
 package rtd.geometry;
 
-import rtd.camera.ICamera;
+import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
 
 /**
- * A sphere with a centre M, a radius r and one flat colour (paper, sections 3.2.2 and 4.2.2).
+ * A sphere with a centre M, a radius r, a flat colour and a finish (paper, sections 3.2.2 and
+ * 4.2.2).
  *
  * <p>{@link #intersect} solves the quadratic equation 3.5 in single precision, exactly in the
  * order of equations 3.6 to 3.8, so that it draws what the paper's program draws.
  */
-public record Sphere(Vector3f center, float radius, Color color) implements IGeometry {
+public record Sphere(Vector3f center, float radius, Color color, Material material) implements IGeometry {
 
-    /** Unit roundoff of {@code float}: the largest relative error of one rounding. */
-    private static final float UNIT_ROUNDOFF = 0x1p-24f;
+    /** A sphere with the default finish, as the paper's scene file gives one. */
+    public Sphere(Vector3f center, float radius, Color color) {
+        this(center, radius, color, Material.DEFAULT);
+    }
 
     /**
      * Solves {@code a·t² + b·t + c = 0} (equation 3.5) and returns the smallest root
@@ -48,41 +50,31 @@ public record Sphere(Vector3f center, float radius, Color color) implements IGeo
         return far >= 0 ? far : Float.NaN;
     }
 
+    /** {@code (P − M) / r}. */
+    @Override
+    public Vector3f normalAt(Vector3f point) {
+        return point.subtract(center).divide(radius);
+    }
+
     /**
      * The sphere's box, widened by how far rounding can move its surface.
      *
      * <p>In {@link #intersect} the discriminant is a difference of two numbers as large as
-     * {@code 4|R|²|O − M|²}. Following the standard error bounds of sums and products, each
-     * rounding changes it by so little that the float test hits exactly where an exact test
-     * against a sphere of radius {@code r'} would, with {@code r'² ≤ r² + δ} and
-     * {@code δ = 15u·|O − M|² + 6u·r²} (u the unit roundoff; first order, we add a quarter).
-     * So the surface moves out by at most {@code min(√δ, δ / 2r)}, plus a few u·|O − M| for
-     * the rounding of b and of the root. {@code |O − M|} is at most what the camera says for
-     * rays that pass close enough to hit.
+     * {@code 4|R|²|O − M|²}. Following the standard error bounds of sums and products, the float
+     * test hits where an exact test against a sphere of radius {@code r'} would, with
+     * {@code r'² ≤ r² + δ} and {@code δ = 15u·D² + 6u·r²} (u the unit roundoff, D = |O − M|;
+     * first order, we add a quarter). So the surface moves out by at most
+     * {@code √δ + 8u·D ≤ 1.06e-3·D + 6.7e-4·r}. A hit at t has {@code D ≤ t|R| + r'}, which
+     * makes that {@code 1.062e-3·t|R| + 1.74e-3·r}: the first part is the cone of
+     * {@link IGeometry#bounds}, the second is grown here, as {@code 2e-3·r}.
      */
     @Override
-    public BoundingBox bounds(ICamera camera) {
-        double slack = 0;
-        for (int round = 0; round < 2; round++) { // the reach grows with the slack: settle it
-            double d = camera.farthestOrigin(center, (float) (radius + slack + 1e-3 * radius));
-            double delta = 1.25 * (15 * UNIT_ROUNDOFF * d * d + 6 * UNIT_ROUNDOFF * (double) radius * radius);
-            slack = Math.min(Math.sqrt(delta), delta / (2.0 * radius)) + 8 * UNIT_ROUNDOFF * d;
-        }
-        double half = (radius + slack) * (1 + 1e-6) + 4 * UNIT_ROUNDOFF * maxAbs(center);
-        return new BoundingBox(
-                new Vector3f(down(center.x() - half), down(center.y() - half), down(center.z() - half)),
-                new Vector3f(up(center.x() + half), up(center.y() + half), up(center.z() + half)));
+    public BoundingBox bounds() {
+        return BoundingBox.around(radius * (1 + 2e-3), center);
     }
 
-    private static float maxAbs(Vector3f v) {
-        return Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
-    }
-
-    private static float down(double value) {
-        return Math.nextDown((float) value);
-    }
-
-    private static float up(double value) {
-        return Math.nextUp((float) value);
+    @Override
+    public String kind() {
+        return "sphere";
     }
 }

@@ -14,7 +14,7 @@ import java.util.concurrent.Future;
 import java.util.zip.Adler32;
 import java.util.zip.CRC32;
 import java.util.zip.Deflater;
-import rtd.render.Picture;
+import rtd.image.Picture;
 
 /**
  * Encodes a {@link Picture} as a 24-bit RGB PNG (the PNG specification, ISO/IEC 15948).

@@ -11,7 +11,7 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.concurrent.ThreadLocalRandom;
-import rtd.render.Picture;
+import rtd.image.Picture;
 import rtd.scene.Scene;
 
 /**

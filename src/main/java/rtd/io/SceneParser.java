@@ -12,7 +12,7 @@ import java.util.List;
 import java.util.stream.IntStream;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 
 /**

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
-import rtd.scene.Color;
+import rtd.image.Color;
 
 /**
  * What one stretch of lines of a scene file holds: its objects, its {@code ambient} and camera

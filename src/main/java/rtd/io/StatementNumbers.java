@@ -2,7 +2,7 @@ package rtd.io;
 
 import rtd.io.StatementReader.StatementError;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
+import rtd.image.Color;
 
 /**
  * The numbers of the statement being read, where each was written, and the rules they must

@@ -7,12 +7,15 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Function;
 import java.util.function.Supplier;
 import rtd.camera.ICamera;
+import rtd.image.Picture;
 
 /**
  * Listing 4.2 on all cores: the same ray per pixel as {@link rtd.scene.Scene#render}, with
- * bands of rows shared out among threads.
+ * bands of rows shared out among threads. A {@link Tracer} finds each ray's nearest hit, a
+ * {@link Shader} turns it into a colour.
  *
  * <p>Every pixel depends only on its own ray, so the picture is the same for any number of
  * threads: the threads only change which pixel is done when. A thread takes the next band of
@@ -30,10 +33,11 @@ public final class ParallelRenderer {
 
     /**
      * Renders a {@code width × height} image with {@code threads} threads, each with its own
-     * tracer from {@code tracers}, and counts finished rows in {@code progress}.
+     * tracer from {@code tracers} and a shader for it from {@code shaders}, and counts finished
+     * rows in {@code progress}.
      */
-    public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, int width, int height,
-            int threads, RenderProgress progress) {
+    public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, Function<Tracer, Shader> shaders,
+            int width, int height, int threads, RenderProgress progress) {
         int[] pixels = new int[width * height];
         AtomicInteger nextBand = new AtomicInteger();
         List<Tracer> used = new ArrayList<>();
@@ -41,8 +45,9 @@ public final class ParallelRenderer {
         int bands = (height + TILE - 1) / TILE;
         for (int i = 0; i < Math.min(threads, bands); i++) { // more threads than bands would idle
             Tracer tracer = tracers.get();
+            Shader shader = shaders.apply(tracer);
             used.add(tracer);
-            workers.add(() -> renderBands(camera, tracer, width, height, pixels, nextBand, progress));
+            workers.add(() -> renderBands(camera, tracer, shader, width, height, pixels, nextBand, progress));
         }
         runAll(workers);
         WorkCount work = WorkCount.NONE;
@@ -52,9 +57,10 @@ public final class ParallelRenderer {
         return new RenderResult(new Picture(width, height, pixels), work);
     }
 
-    private static void renderBands(ICamera camera, Tracer tracer, int width, int height, int[] pixels,
+    private static void renderBands(ICamera camera, Tracer tracer, Shader shader, int width, int height, int[] pixels,
             AtomicInteger nextBand, RenderProgress progress) {
         RayBundle rays = new RayBundle(TILE * TILE);
+        HitBuffer hits = new HitBuffer(TILE * TILE);
         int[] rgb = new int[TILE * TILE];
         for (int band = nextBand.getAndIncrement(); band * TILE < height; band = nextBand.getAndIncrement()) {
             int top = band * TILE;
@@ -62,7 +68,10 @@ public final class ParallelRenderer {
             for (int left = 0; left < width; left += TILE) {
                 int right = Math.min(width, left + TILE);
                 rays.fill(camera, left, top, right, bottom, width, height);
-                tracer.traceAll(rays, rgb);
+                tracer.traceAll(rays, hits);
+                for (int i = 0; i < rays.count(); i++) {
+                    rgb[i] = shader.rgb(rays, hits, i);
+                }
                 for (int y = top; y < bottom; y++) { // the square's rows, into the picture's
                     System.arraycopy(rgb, (y - top) * (right - left), pixels, y * width + left, right - left);
                 }

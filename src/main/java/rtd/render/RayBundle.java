@@ -1,6 +1,5 @@
 package rtd.render;
 
-import rtd.camera.Beam;
 import rtd.camera.ICamera;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -9,13 +8,11 @@ import rtd.math.Vector3f;
  * The rays of one small square of pixels, kept as numbers: the origin and direction of ray
  * {@code i} of equation 3.1 at index {@code i}, row by row. Not in the paper:
  * {@link ParallelRenderer} fills one per thread and hands it to a {@link Tracer}, which may use
- * what the rays share.
+ * what the rays share (the orthographic camera's are all parallel).
  *
- * <p>The rays are made only when a tracer first asks for one ({@link #make}): a tracer that
- * learns from the {@link #beam} that no ray of the square can reach any object never needs
- * them. They are kept as numbers, not {@link Ray} objects, because a {@code Ray} stored in an
- * array lives on the heap, 48 bytes a pixel; here the camera's {@code Ray} is only read, so
- * once the JIT has inlined {@link ICamera#generateRay} it never exists as an object.
+ * <p>Numbers, not {@link Ray} objects: a {@code Ray} stored in an array lives on the heap, 48
+ * bytes a pixel; here the camera's {@code Ray} is only read, so once the JIT has inlined
+ * {@link ICamera#generateRay} it never exists as an object.
  */
 public final class RayBundle {
 
@@ -26,15 +23,6 @@ public final class RayBundle {
     private final float[] directionY;
     private final float[] directionZ;
     private int count;
-    /** The square whose rays these are, or no camera if the rays were added one by one. */
-    private ICamera camera;
-    private int left;
-    private int top;
-    private int right;
-    private int bottom;
-    private int width;
-    private int height;
-    private boolean made;
 
     /** An empty bundle with room for {@code capacity} rays. */
     public RayBundle(int capacity) {
@@ -47,64 +35,24 @@ public final class RayBundle {
     }
 
     /**
-     * Replaces the rays with the camera's rays for the pixels {@code [left, right) × [top, bottom)}
-     * of a {@code width × height} image, row by row; they are made on first use.
+     * Replaces the rays with the camera's rays (Listing 4.1) for the pixels
+     * {@code [left, right) × [top, bottom)} of a {@code width × height} image, row by row.
      */
     public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height) {
-        this.camera = camera;
-        this.left = left;
-        this.top = top;
-        this.right = right;
-        this.bottom = bottom;
-        this.width = width;
-        this.height = height;
-        count = (right - left) * (bottom - top);
-        made = false;
+        count = 0;
+        for (int y = top; y < bottom; y++) {
+            for (int x = left; x < right; x++) {
+                store(count++, camera.generateRay(x, y, width, height));
+            }
+        }
     }
 
     /** Replaces the rays with these (for tests and benchmarks that choose their own rays). */
     public void fill(Ray... rays) {
-        camera = null;
         count = 0;
         for (Ray ray : rays) {
             store(count++, ray);
         }
-        made = true;
-    }
-
-    /** The number of rays. */
-    public int count() {
-        return count;
-    }
-
-    /**
-     * The rays as a {@link Beam}, if they all share one direction: from the camera, without
-     * making the rays, where it can tell; else from the rays themselves. {@code null} if they
-     * are not parallel.
-     */
-    public Beam beam() {
-        if (camera != null) {
-            Beam known = camera.beam(left, top, right, bottom, width, height);
-            if (known != null) {
-                return known;
-            }
-        }
-        make();
-        return beamOfTheRays();
-    }
-
-    /** Makes the rays with the camera, if not done yet; call it before reading a ray's numbers. */
-    public void make() {
-        if (made) {
-            return;
-        }
-        int i = 0;
-        for (int y = top; y < bottom; y++) {
-            for (int x = left; x < right; x++) {
-                store(i++, camera.generateRay(x, y, width, height));
-            }
-        }
-        made = true;
     }
 
     private void store(int i, Ray ray) {
@@ -118,36 +66,18 @@ public final class RayBundle {
         directionZ[i] = direction.z();
     }
 
-    private Beam beamOfTheRays() {
-        Vector3f[] origins = new Vector3f[count];
-        for (int i = 0; i < count; i++) {
-            if (!sameBits(directionX[i], directionX[0]) || !sameBits(directionY[i], directionY[0])
-                    || !sameBits(directionZ[i], directionZ[0])) {
-                return null;
-            }
-            origins[i] = new Vector3f(originX[i], originY[i], originZ[i]);
-        }
-        return count == 0 ? null : Beam.around(new Vector3f(directionX[0], directionY[0], directionZ[0]), origins);
+    /** The number of rays. */
+    public int count() {
+        return count;
     }
 
-    private static boolean sameBits(float a, float b) {
-        return Float.floatToRawIntBits(a) == Float.floatToRawIntBits(b);
-    }
-
-    /**
-     * Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time: straight from
-     * the camera (it need not be {@linkplain #make made}), or as it was given to {@link #fill(Ray...)}.
-     */
+    /** Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time. */
     public Ray ray(int i) {
-        if (camera != null) {
-            int squareWidth = right - left;
-            return camera.generateRay(left + i % squareWidth, top + i / squareWidth, width, height);
-        }
         return new Ray(new Vector3f(originX[i], originY[i], originZ[i]),
                 new Vector3f(directionX[i], directionY[i], directionZ[i]));
     }
 
-    // Ray i's numbers, for tracers that keep a ray as numbers; only after make().
+    // Ray i's numbers, for tracers that keep a ray as numbers.
 
     public float originX(int i) {
         return originX[i];

@@ -1,24 +1,66 @@
 package rtd.render;
 
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import rtd.geometry.IGeometry;
+
 /**
- * How much work tracing took: rays, intersection tests, and bounding-volume nodes visited.
- * {@code --stats} prints it per ray, so a student sees N tests per ray without the hierarchy
- * and about log N with it.
+ * How much work tracing took: rays, intersection tests by kind of object, and bounding-volume
+ * nodes visited. {@code --stats} prints it per ray, so a student sees N tests per ray without
+ * the hierarchy and about log N with it.
+ *
+ * @param rays         the rays traced
+ * @param testsByKind  intersection tests per kind of object ("sphere", "triangle", ...)
+ * @param nodesVisited bounding-volume nodes visited
  */
-public record WorkCount(long rays, long intersectionTests, long nodesVisited) {
+public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited) {
 
     /** No work at all. */
-    public static final WorkCount NONE = new WorkCount(0, 0, 0);
+    public static final WorkCount NONE = new WorkCount(0, Map.of(), 0);
+
+    /** Keeps an unmodifiable, sorted copy of the counts. */
+    public WorkCount {
+        testsByKind = Collections.unmodifiableMap(new TreeMap<>(testsByKind));
+    }
+
+    /** One ray's work in the paper's loop: a test of each of {@code objects}, times {@code rays}. */
+    public static WorkCount testsOf(List<IGeometry> objects, long rays) {
+        Map<String, Long> tests = new TreeMap<>();
+        for (IGeometry object : objects) {
+            tests.merge(object.kind(), 1L, Long::sum);
+        }
+        return new WorkCount(1, tests, 0).times(rays);
+    }
+
+    /** This work done {@code factor} times. */
+    public WorkCount times(long factor) {
+        Map<String, Long> tests = new TreeMap<>();
+        testsByKind.forEach((kind, count) -> tests.put(kind, count * factor));
+        return new WorkCount(rays * factor, tests, nodesVisited * factor);
+    }
 
     /** The sum of this and {@code other}. */
     public WorkCount plus(WorkCount other) {
-        return new WorkCount(rays + other.rays, intersectionTests + other.intersectionTests,
-                nodesVisited + other.nodesVisited);
+        Map<String, Long> tests = new TreeMap<>(testsByKind);
+        other.testsByKind.forEach((kind, count) -> tests.merge(kind, count, Long::sum));
+        return new WorkCount(rays + other.rays, tests, nodesVisited + other.nodesVisited);
+    }
+
+    /** Intersection tests of every kind. */
+    public long intersectionTests() {
+        return testsByKind.values().stream().mapToLong(Long::longValue).sum();
     }
 
     /** Intersection tests per ray. */
     public double testsPerRay() {
-        return rays == 0 ? 0 : (double) intersectionTests / rays;
+        return rays == 0 ? 0 : (double) intersectionTests() / rays;
+    }
+
+    /** Intersection tests of one kind per ray. */
+    public double testsPerRay(String kind) {
+        return rays == 0 ? 0 : (double) testsByKind.getOrDefault(kind, 0L) / rays;
     }
 
     /** Bounding-volume nodes visited per ray. */

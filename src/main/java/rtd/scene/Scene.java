@@ -3,8 +3,10 @@ package rtd.scene;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import rtd.camera.ICamera;
+import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
+import rtd.image.Color;
 import rtd.math.Ray;
 
 /**
@@ -13,8 +15,8 @@ import rtd.math.Ray;
  * <p>This is where the paper's algorithm (Listing 3.1) lives, in the paper's shape:
  * {@link #render} makes a ray for every pixel (ray generation, section 3.2.1) and
  * {@link #trace} tests it against every object (intersection test, section 3.2.2) and keeps
- * the nearest (depth test, section 3.2.3). It is the plain reference; {@link rtd.render} and
- * {@link rtd.accel} hold faster paths that draw the same pixels.
+ * the nearest (depth test, section 3.2.3). It is the plain reference, and {@code --paper} runs
+ * it; {@link rtd.render} and {@code rtd.accel} hold faster paths that draw the same pixels.
  *
  * @param ambient the colour of every pixel whose ray hits nothing
  * @param camera  makes the rays
@@ -40,14 +42,25 @@ public record Scene(Color ambient, ICamera camera, List<IGeometry> objects) {
     }
 
     /**
-     * Listing 4.3: the intersection test with every object, then the depth test. The object
-     * whose hit point P lies nearest to the ray's origin O ({@code |P − O|}) gives the colour;
-     * the comparison is strict, so on a tie the object that comes first in the file wins.
+     * Listing 4.3 with flat colours: the colour of the nearest object the ray hits, or the
+     * background.
      */
     public Color trace(Ray ray) {
+        Hit hit = nearestHit(ray);
+        return hit == null ? ambient : hit.object().color();
+    }
+
+    /**
+     * Listing 4.3: the intersection test with every object, then the depth test. The object
+     * whose hit point P lies nearest to the ray's origin O ({@code |P − O|}) wins; the
+     * comparison is strict, so on a tie the object that comes first in the file wins. Any ray
+     * will do, not only a camera's. Returns {@code null} if the ray hits nothing.
+     */
+    public Hit nearestHit(Ray ray) {
         float distance = Float.POSITIVE_INFINITY;
-        IGeometry hit = null;
-        for (IGeometry object : objects) {
+        Hit hit = null;
+        for (int i = 0; i < objects.size(); i++) {
+            IGeometry object = objects.get(i);
             Intersection intersection = object.intersect(ray);
             if (intersection.happened()) {
                 float currentDistance = intersection.contactCoord()
@@ -55,10 +68,10 @@ public record Scene(Color ambient, ICamera camera, List<IGeometry> objects) {
                         .magnitude();
                 if (currentDistance < distance) {
                     distance = currentDistance;
-                    hit = object;
+                    hit = new Hit(object, i, intersection.t(), currentDistance, intersection.contactCoord());
                 }
             }
         }
-        return hit == null ? ambient : hit.color();
+        return hit;
     }
 }

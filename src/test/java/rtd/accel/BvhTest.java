@@ -5,13 +5,11 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
-import rtd.render.LinearTracer;
-import rtd.render.ParallelRenderer;
-import rtd.render.RenderProgress;
 import rtd.render.RenderResult;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 import rtd.testing.RandomScenes;
+import rtd.testing.Renders;
 import rtd.testing.Scenes;
 
 @DisplayName("The bounding volume hierarchy")
@@ -26,17 +24,16 @@ class BvhTest {
             Bvh many = Bvh.build(scene, threads);
             assertThat(many.nodes).isEqualTo(one.nodes);
             assertThat(many.bounds).isEqualTo(one.bounds);
-            assertThat(many.fileOrder).isEqualTo(one.fileOrder);
-            assertThat(many.objectBounds).isEqualTo(one.objectBounds);
-            assertThat(many.colours).isEqualTo(one.colours);
+            assertThat(many.leaves.fileOrder).isEqualTo(one.leaves.fileOrder);
+            assertThat(many.leaves.boxes).isEqualTo(one.leaves.boxes);
+            assertThat(many.leaves.numbers).isEqualTo(one.leaves.numbers);
         }
     }
 
     @Test
     void aSceneWithoutObjectsShowsOnlyTheAmbientColour() {
         Scene empty = new Scene(Color.fromRGB(0x123456), Scenes.frontCamera(20, 10), List.of());
-        Bvh bvh = Bvh.build(empty);
-        RenderResult result = ParallelRenderer.render(empty.camera(), bvh::newTracer, 40, 30, 2, new RenderProgress());
+        RenderResult result = Renders.parallel(empty, 40, 30, 2, true);
         assertThat(result.image().rgb(20, 15)).isEqualTo(0x123456);
         assertThat(result.work().intersectionTests()).isZero();
     }
@@ -44,10 +41,8 @@ class BvhTest {
     @Test
     void testsAFewObjectsPerRayWhereThePapersLoopTestsAll() {
         Scene scene = RandomScenes.generate(3, 20_000);
-        Bvh bvh = Bvh.build(scene);
-        RenderResult withBvh = ParallelRenderer.render(scene.camera(), bvh::newTracer, 160, 120, 2, new RenderProgress());
-        RenderResult paper = ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene), 16, 12, 2,
-                new RenderProgress());
+        RenderResult withBvh = Renders.parallel(scene, 160, 120, 2, true);
+        RenderResult paper = Renders.parallel(scene, 16, 12, 2, false);
         assertThat(paper.work().testsPerRay()).isEqualTo(20_000.0);
         assertThat(withBvh.work().testsPerRay()).isLessThan(200.0);
         assertThat(withBvh.work().nodesPerRay()).isPositive().isLessThan(400.0);

@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 import rtd.camera.OrthographicCamera;
 import rtd.geometry.Sphere;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 
 /** What a person expects to be fine is fine. */

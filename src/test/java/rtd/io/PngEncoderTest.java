@@ -19,7 +19,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import rtd.render.Picture;
+import rtd.image.Picture;
 
 @DisplayName("The PNG encoder")
 class PngEncoderTest {

@@ -11,7 +11,7 @@ import rtd.camera.OrthographicCamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 import rtd.testing.RandomScenes;
 

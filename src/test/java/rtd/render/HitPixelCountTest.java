@@ -12,6 +12,8 @@ import rtd.camera.OrthographicCamera;
 import rtd.math.Vector3f;
 import rtd.scene.Scene;
 import rtd.testing.ImageComparison;
+import rtd.testing.Renders;
+import rtd.image.Picture;
 
 @DisplayName("Pictures worked out by hand")
 class HitPixelCountTest {
@@ -46,7 +48,7 @@ class HitPixelCountTest {
                 sphere(0, 0, 0, 4, 0x00FF00), sphere(2, 2, 2, 1, 0x0000FF));
         Scene scaled = new Scene(unit.ambient(),
                 new OrthographicCamera(new Vector3f(10, 7, 10), new Vector3f(-4, -4, -4), 30), unit.objects());
-        assertThat(RenderPathsTest.pixels(scaled.render(320, 240))).isEqualTo(RenderPathsTest.pixels(unit.render(320, 240)));
+        assertThat(Renders.paper(scaled, 320, 240)).isEqualTo(Renders.paper(unit, 320, 240));
     }
 
     @Test

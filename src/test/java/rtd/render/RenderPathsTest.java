@@ -15,9 +15,10 @@ import rtd.accel.Bvh;
 import rtd.camera.OrthographicCamera;
 import rtd.geometry.IGeometry;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 import rtd.testing.RandomScenes;
+import rtd.testing.Renders;
 import rtd.testing.Scenes;
 
 /**
@@ -28,28 +29,17 @@ import rtd.testing.Scenes;
 @DisplayName("Every render path gives the paper's pixels")
 class RenderPathsTest {
 
-    static int[] pixels(BufferedImage image) {
-        BufferedImage copy = new BufferedImage(image.getWidth(), image.getHeight(), BufferedImage.TYPE_INT_RGB);
-        copy.getGraphics().drawImage(image, 0, 0, null);
-        return ((DataBufferInt) copy.getRaster().getDataBuffer()).getData();
-    }
-
-    static BufferedImage parallel(Scene scene, int w, int h, int threads, boolean bvh) {
-        if (bvh) {
-            Bvh hierarchy = Bvh.build(scene);
-            return ParallelRenderer.render(scene.camera(), hierarchy::newTracer, w, h, threads, new RenderProgress()).image().toBufferedImage();
-        }
-        return ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene), w, h, threads,
-                new RenderProgress()).image().toBufferedImage();
+    static int[] pixels(Scene scene, int w, int h, int threads, boolean bvh) {
+        return Renders.parallel(scene, w, h, threads, bvh).image().rgb();
     }
 
     @ParameterizedTest(name = "{0} thread(s), paper's loop and BVH, on the paper's example")
     @ValueSource(ints = {1, 2, 3, 8})
     void anyThreadCountGivesThePapersPixels(int threads) {
         Scene scene = Scenes.example("input_rtd");
-        int[] reference = pixels(scene.render(480, 270));
-        assertThat(pixels(parallel(scene, 480, 270, threads, false))).isEqualTo(reference);
-        assertThat(pixels(parallel(scene, 480, 270, threads, true))).isEqualTo(reference);
+        int[] reference = Renders.paper(scene, 480, 270);
+        assertThat(pixels(scene, 480, 270, threads, false)).isEqualTo(reference);
+        assertThat(pixels(scene, 480, 270, threads, true)).isEqualTo(reference);
     }
 
     @ParameterizedTest(name = "view direction {0}")
@@ -68,15 +58,15 @@ class RenderPathsTest {
         Vector3f view = new Vector3f(Float.parseFloat(d[0]), Float.parseFloat(d[1]), Float.parseFloat(d[2]));
         Vector3f position = new Vector3f(0.3f, -0.2f, 0).subtract(view.normalize().multiply(2000));
         Scene scene = new Scene(Color.BLACK, new OrthographicCamera(position, view, 100), spheres);
-        int[] reference = pixels(scene.render(160, 120));
-        assertThat(pixels(parallel(scene, 160, 120, 2, true))).isEqualTo(reference);
+        int[] reference = Renders.paper(scene, 160, 120);
+        assertThat(pixels(scene, 160, 120, 2, true)).isEqualTo(reference);
     }
 
     @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20})
     void theBvhGivesThePapersPixelsOnRandomScenes(long seed) {
         Scene scene = RandomScenes.generate(seed, 40 + (int) (seed * 37 % 300));
-        int[] reference = pixels(scene.render(200, 150));
-        assertThat(pixels(parallel(scene, 200, 150, 3, true))).isEqualTo(reference);
+        int[] reference = Renders.paper(scene, 200, 150);
+        assertThat(pixels(scene, 200, 150, 3, true)).isEqualTo(reference);
     }
 }

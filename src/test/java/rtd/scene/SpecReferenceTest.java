@@ -10,6 +10,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import rtd.camera.OrthographicCamera;
+import rtd.image.Color;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.math.Vector3f;

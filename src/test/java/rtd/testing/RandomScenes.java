@@ -7,7 +7,7 @@ import rtd.camera.OrthographicCamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 
 /** Random scenes from a seed: oblique cameras, spheres of all sizes, overlaps and exact ties. */

@@ -7,7 +7,7 @@ import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.io.SceneIO;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 
 /** Scenes for tests: the committed examples, and small ones built in code. */

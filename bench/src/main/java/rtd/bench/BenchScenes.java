@@ -8,7 +8,7 @@ import rtd.geometry.Sphere;
 import rtd.math.Vector3f;
 import rtd.render.RayBundle;
 import rtd.render.Tracer;
-import rtd.scene.Color;
+import rtd.image.Color;
 import rtd.scene.Scene;
 
 /** The benchmark scenes of {@link SceneGenerator}, built in memory. */

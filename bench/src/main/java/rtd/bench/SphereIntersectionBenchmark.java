@@ -14,7 +14,7 @@ import rtd.geometry.Intersection;
 import rtd.geometry.Sphere;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
-import rtd.scene.Color;
+import rtd.image.Color;
 
 /**
  * The intersection test of section 3.2.2 ({@link Sphere#intersect}) alone, for a ray that hits

@@ -1,7 +1,7 @@
-package rtd.scene;
+package rtd.image;
 
 /**
- * A colour in the RGB colour space, 8 bits a channel, as the paper's PNG output stores it
+ * The paper's colour: RGB, 8 bits a channel, as the scene file writes it and the PNG stores it
  * (section 4.1).
  */
 public record Color(int red, int green, int blue) {

@@ -1,10 +1,10 @@
-package rtd.render;
+package rtd.image;
 
 import java.awt.image.BufferedImage;
 
 /**
  * A rendered picture: {@code width × height} pixels, row by row from the top left, each
- * packed as {@code 0xRRGGBB} (the layout of {@link rtd.scene.Color#getRGB}).
+ * packed as {@code 0xRRGGBB} (the layout of {@link rtd.image.Color#getRGB}).
  *
  * <p>It is a plain array rather than a {@link BufferedImage} so that the command line never
  * starts Java's imaging toolkit: that alone takes longer than rendering a small scene.

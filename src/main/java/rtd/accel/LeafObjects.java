@@ -1,0 +1,138 @@
+package rtd.accel;
+
+import java.util.ArrayList;
+import java.util.List;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Intersection;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+
+/**
+ * The objects of a {@link Bvh}'s leaves, in leaf order, so that the objects of a leaf lie next
+ * to each other in memory: each one's place in the scene file (for the depth test's tie rule),
+ * its box, and, for spheres and triangles, the numbers of its intersection test packed into one
+ * array.
+ *
+ * <p>{@link #t} runs {@link Sphere#intersect} (equations 3.6 to 3.8) and {@link Triangle#hit}
+ * on these numbers, with the same float operations in the same order, so it finds the same
+ * {@code t} to the last bit; it only skips following references. With a million objects this
+ * matters: a reference to each object and its corners is a wait for memory per test, while the
+ * numbers of a leaf's objects arrive together. Any other kind of object runs its own
+ * {@link IGeometry#intersect}, in the same leaf, so one box among a million spheres costs only
+ * its own tests.
+ */
+final class LeafObjects {
+
+    static final byte PACKED_SPHERE = 0;
+    static final byte PACKED_TRIANGLE = 1;
+    static final byte OWN_TEST = 2;
+    private static final int SPHERE_SIZE = 4;
+    private static final int TRIANGLE_SIZE = 21;
+
+    final IGeometry[] objects;
+    /** Each object's place in the scene file. */
+    final int[] fileOrder;
+    /** Each object's box, six floats: min x, y, z, max x, y, z. */
+    final float[] boxes;
+    /** Each object's kind, an index into {@link #kindNames}. */
+    final byte[] kinds;
+    /** The names of the kinds, and for each how it is tested ({@link #PACKED_SPHERE}, ...). */
+    final String[] kindNames;
+    final byte[] kindTests;
+    /** Where each object's numbers start in {@link #numbers}. */
+    final int[] offsets;
+    final float[] numbers;
+
+    /**
+     * Packs {@code objects} (in leaf order; {@code fileOrder} and {@code boxes} alike) with the
+     * builder's threads.
+     */
+    LeafObjects(IGeometry[] objects, int[] fileOrder, float[] boxes, BvhBuilder threads) {
+        this.objects = objects;
+        this.fileOrder = fileOrder;
+        this.boxes = boxes;
+        this.kinds = new byte[objects.length];
+        this.offsets = new int[objects.length];
+        List<String> names = new ArrayList<>();
+        List<Byte> tests = new ArrayList<>();
+        List<String> keys = new ArrayList<>(); // a kind is a name and a way to test
+        int size = 0;
+        for (int i = 0; i < objects.length; i++) { // in order: the offsets are a running sum
+            byte test = testOf(objects[i]);
+            String key = test + " " + objects[i].kind();
+            int kind = keys.indexOf(key);
+            if (kind < 0) {
+                kind = keys.size();
+                keys.add(key);
+                names.add(objects[i].kind());
+                tests.add(test);
+            }
+            kinds[i] = (byte) kind;
+            offsets[i] = size;
+            size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
+        }
+        this.kindNames = names.toArray(String[]::new);
+        this.kindTests = new byte[tests.size()];
+        for (int k = 0; k < kindTests.length; k++) {
+            kindTests[k] = tests.get(k);
+        }
+        this.numbers = new float[size];
+        threads.forEach(this::pack);
+    }
+
+    private static byte testOf(IGeometry object) {
+        return object instanceof Sphere ? PACKED_SPHERE : object instanceof Triangle ? PACKED_TRIANGLE : OWN_TEST;
+    }
+
+    private void pack(int i) {
+        int at = offsets[i];
+        if (objects[i] instanceof Sphere sphere) {
+            numbers[at] = sphere.center().x();
+            numbers[at + 1] = sphere.center().y();
+            numbers[at + 2] = sphere.center().z();
+            numbers[at + 3] = sphere.radius() * sphere.radius();
+        } else if (objects[i] instanceof Triangle triangle) {
+            System.arraycopy(triangle.testNumbers(), 0, numbers, at, TRIANGLE_SIZE);
+        }
+    }
+
+    /**
+     * The smallest {@code t ≥ 0} where the ray O + t·D hits object {@code i}, or NaN; {@code dd}
+     * is D·D, the same for every object.
+     */
+    float t(int i, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
+        byte test = kindTests[kinds[i]];
+        if (test == PACKED_SPHERE) {
+            return sphere(offsets[i], ox, oy, oz, dx, dy, dz, dd);
+        }
+        if (test == PACKED_TRIANGLE) {
+            return Triangle.hit(numbers, offsets[i], ox, oy, oz, dx, dy, dz);
+        }
+        Intersection hit = objects[i].intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
+        return hit.t();
+    }
+
+    /** {@link Sphere#intersect} on packed numbers: equations 3.6 to 3.8. */
+    private float sphere(int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
+        float mx = ox - numbers[at];                                         // O − M
+        float my = oy - numbers[at + 1];
+        float mz = oz - numbers[at + 2];
+        float a = dd;                                                        // equation 3.6
+        float b = 2 * ((dx * mx) + (dy * my) + (dz * mz));                   // equation 3.7
+        float c = ((mx * mx) + (my * my) + (mz * mz)) - numbers[at + 3];     // equation 3.8
+        return Sphere.smallestRootNotBehind(a, b, b * b - 4 * a * c);
+    }
+
+    /**
+     * The depth test's distance {@code |P − O|} of the hit at {@code t}, with P = O + t·D
+     * rounded as {@link rtd.geometry.Intersection#at} rounds it.
+     */
+    static float distance(float t, float ox, float oy, float oz, float dx, float dy, float dz) {
+        float x = (ox + dx * t) - ox;
+        float y = (oy + dy * t) - oy;
+        float z = (oz + dz * t) - oz;
+        return (float) Math.sqrt(x * x + y * y + z * z);
+    }
+}

@@ -1,0 +1,88 @@
+package rtd.geometry;
+
+import rtd.image.Color;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+
+/**
+ * An axis-aligned box between two opposite corners (Part II, "Geometry").
+ *
+ * @param min the corner with the smallest coordinates
+ * @param max the corner with the largest coordinates
+ */
+public record Box(Vector3f min, Vector3f max, Color color, Material material) implements IGeometry {
+
+    /** A box between two opposite corners given in any order. */
+    public static Box between(Vector3f a, Vector3f b, Color color, Material material) {
+        return new Box(new Vector3f(Math.min(a.x(), b.x()), Math.min(a.y(), b.y()), Math.min(a.z(), b.z())),
+                new Vector3f(Math.max(a.x(), b.x()), Math.max(a.y(), b.y()), Math.max(a.z(), b.z())), color, material);
+    }
+
+    /**
+     * The slab test: along each axis the ray is between the box's two faces for an interval of
+     * t; the box is where all three intervals overlap. The ray hits where it enters that
+     * overlap, or, if it starts inside, where it leaves it.
+     */
+    @Override
+    public Intersection intersect(Ray ray) {
+        float[] o = {ray.origin().x(), ray.origin().y(), ray.origin().z()};
+        float[] d = {ray.direction().x(), ray.direction().y(), ray.direction().z()};
+        float[] lo = {min.x(), min.y(), min.z()};
+        float[] hi = {max.x(), max.y(), max.z()};
+        float enter = Float.NEGATIVE_INFINITY;
+        float exit = Float.POSITIVE_INFINITY;
+        for (int k = 0; k < 3; k++) {
+            if (d[k] == 0) { // parallel to this slab: inside it everywhere or nowhere
+                if (o[k] < lo[k] || o[k] > hi[k]) {
+                    return Intersection.at(ray, Float.NaN);
+                }
+                continue;
+            }
+            float t0 = (lo[k] - o[k]) / d[k];
+            float t1 = (hi[k] - o[k]) / d[k];
+            enter = Math.max(enter, Math.min(t0, t1));
+            exit = Math.min(exit, Math.max(t0, t1));
+        }
+        if (enter > exit || exit < 0) {
+            return Intersection.at(ray, Float.NaN);
+        }
+        return Intersection.at(ray, enter >= 0 ? enter : exit);
+    }
+
+    /** The normal of the face the point lies on: the axis along which it is nearest a face. */
+    @Override
+    public Vector3f normalAt(Vector3f point) {
+        float[] p = {point.x(), point.y(), point.z()};
+        float[] lo = {min.x(), min.y(), min.z()};
+        float[] hi = {max.x(), max.y(), max.z()};
+        int axis = 0;
+        float sign = -1;
+        float nearest = Float.POSITIVE_INFINITY;
+        for (int k = 0; k < 3; k++) {
+            float toLow = Math.abs(p[k] - lo[k]);
+            float toHigh = Math.abs(hi[k] - p[k]);
+            if (toLow < nearest) {
+                nearest = toLow;
+                axis = k;
+                sign = -1;
+            }
+            if (toHigh < nearest) {
+                nearest = toHigh;
+                axis = k;
+                sign = 1;
+            }
+        }
+        return new Vector3f(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
+    }
+
+    /** The box itself, grown by a few rounding errors of its coordinates. */
+    @Override
+    public BoundingBox bounds() {
+        return BoundingBox.around(0, min, max);
+    }
+
+    @Override
+    public String kind() {
+        return "box";
+    }
+}

@@ -1,0 +1,69 @@
+package rtd.render;
+
+import java.util.List;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+
+/**
+ * The nearest hits of the rays of a {@link RayBundle}, kept as numbers: for ray {@code i} the
+ * place of the object hit among the scene's objects (−1: none), t and the distance
+ * {@code |P − O|}. A {@link Tracer} fills it; a {@link Shader} reads it. A {@link Hit} record is
+ * made only where a shader asks for one.
+ */
+public final class HitBuffer {
+
+    private final int[] index;
+    private final float[] t;
+    private final float[] distance;
+
+    /** Room for {@code capacity} hits. */
+    public HitBuffer(int capacity) {
+        index = new int[capacity];
+        t = new float[capacity];
+        distance = new float[capacity];
+    }
+
+    /** Ray {@code i} hits object {@code object} (its place in the scene) at {@code t}, at {@code distance} from its origin. */
+    public void set(int i, int object, float t, float distance) {
+        this.index[i] = object;
+        this.t[i] = t;
+        this.distance[i] = distance;
+    }
+
+    /** Ray {@code i} hits {@code hit}, or nothing if it is {@code null}. */
+    public void set(int i, Hit hit) {
+        if (hit == null) {
+            setMiss(i);
+        } else {
+            set(i, hit.index(), hit.t(), hit.distance());
+        }
+    }
+
+    /** Ray {@code i} hits nothing. */
+    public void setMiss(int i) {
+        set(i, -1, Float.NaN, Float.POSITIVE_INFINITY);
+    }
+
+    /** The place of the object ray {@code i} hits among the scene's objects, or −1. */
+    public int index(int i) {
+        return index[i];
+    }
+
+    /** The t of ray {@code i}'s hit, NaN if none. */
+    public float t(int i) {
+        return t[i];
+    }
+
+    /** The distance {@code |P − O|} of ray {@code i}'s hit, infinite if none. */
+    public float distance(int i) {
+        return distance[i];
+    }
+
+    /** Ray {@code i}'s hit as a record, with the hit point as the intersection test computes it; {@code null} if none. */
+    public Hit hit(int i, RayBundle rays, List<IGeometry> objects) {
+        if (index[i] < 0) {
+            return null;
+        }
+        return new Hit(objects.get(index[i]), index[i], t[i], distance[i], rays.ray(i).pointAt(t[i]));
+    }
+}
