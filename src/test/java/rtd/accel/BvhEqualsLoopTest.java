@@ -1,0 +1,79 @@
+package rtd.accel;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.Random;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import rtd.geometry.Hit;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.scene.Scene;
+import rtd.testing.MixedScenes;
+
+/**
+ * The hierarchy's answer to "what does this ray hit?" is the paper's loop's, for any ray: from
+ * inside, around and far outside random scenes of every kind of object, one at a time, in
+ * bundles of unrelated rays and in beams of parallel rays.
+ */
+@DisplayName("The BVH finds the loop's hit")
+class BvhEqualsLoopTest {
+
+    private static void assertSame(Hit actual, Hit expected, String what) {
+        if (expected == null) {
+            assertThat(actual).as(what).isNull();
+            return;
+        }
+        assertThat(actual).as(what).isNotNull();
+        assertThat(actual.index()).as(what + ": object").isEqualTo(expected.index());
+        assertThat(Float.floatToIntBits(actual.t())).as(what + ": t").isEqualTo(Float.floatToIntBits(expected.t()));
+        assertThat(actual.distance()).as(what + ": distance").isEqualTo(expected.distance());
+        assertThat(actual.point()).as(what + ": point").isEqualTo(expected.point());
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10})
+    void forRandomRaysFromAnywhere(long seed) {
+        Scene scene = MixedScenes.generate(seed, 50 + (int) (seed * 97 % 400));
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        Random random = new Random(seed);
+        int hits = 0;
+        for (int r = 0; r < 20_000; r++) {
+            Ray ray = MixedScenes.ray(random, scene);
+            Hit expected = scene.nearestHit(ray);
+            assertSame(tracer.nearestHit(ray), expected, "ray " + r + " " + ray);
+            hits += expected == null ? 0 : 1;
+        }
+        assertThat(hits).as("rays that hit something").isGreaterThan(2_000);
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {21, 22, 23, 24})
+    void forBundlesOfUnrelatedRaysAndForBeamsOfParallelRaysFromFarAway(long seed) {
+        Scene scene = MixedScenes.generate(seed, 300);
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        Random random = new Random(seed);
+        HitBuffer hits = new HitBuffer(64);
+        for (int b = 0; b < 300; b++) {
+            Ray[] rays = new Ray[64];
+            Ray first = MixedScenes.ray(random, scene);
+            boolean parallel = b % 2 == 0;
+            float spacing = (float) Math.pow(10, random.nextInt(5) - 3);
+            for (int i = 0; i < rays.length; i++) {
+                rays[i] = parallel
+                        ? new Ray(first.origin().add(new Vector3f(i % 8 * spacing, i / 8 * spacing, 0)), first.direction())
+                        : MixedScenes.ray(random, scene);
+            }
+            RayBundle bundle = new RayBundle(64);
+            bundle.fill(rays);
+            tracer.traceAll(bundle, hits);
+            for (int i = 0; i < rays.length; i++) {
+                Hit expected = scene.nearestHit(rays[i]);
+                assertSame(hits.hit(i, bundle, scene.objects()), expected, "bundle " + b + " ray " + i);
+            }
+        }
+    }
+}

@@ -1,0 +1,118 @@
+package rtd.testing;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Box;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.geometry.Plane;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+import rtd.image.Color;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.scene.Scene;
+
+/**
+ * Random scenes of every kind of object, the same for the same seed: spheres from tiny to large,
+ * triangles (some thin as needles), boxes, a plane or two, overlaps and exact ties; and random
+ * rays from inside, around and far outside them.
+ */
+public final class MixedScenes {
+
+    private MixedScenes() {
+    }
+
+    /** A scene of {@code count} random objects. */
+    public static Scene generate(long seed, int count) {
+        Random random = new Random(seed);
+        List<IGeometry> objects = new ArrayList<>();
+        for (int i = 0; i < count; i++) {
+            objects.add(randomObject(random, objects));
+        }
+        for (int planes = random.nextInt(3); planes > 0; planes--) {
+            objects.add(random.nextInt(objects.size() + 1) == 0 ? 0 : random.nextInt(objects.size()),
+                    new Plane(point(random, 15), direction(random), colour(random), Material.DEFAULT));
+        }
+        return new Scene(colour(random), new PerspectiveCamera(new Vector3f(0, 0, 40), new Vector3f(0, 0, -1), 60),
+                objects);
+    }
+
+    private static IGeometry randomObject(Random random, List<IGeometry> earlier) {
+        if (!earlier.isEmpty() && random.nextInt(12) == 0) {
+            return twin(earlier.get(random.nextInt(earlier.size())), colour(random)); // an exact tie
+        }
+        Vector3f centre = point(random, 12);
+        float size = random.nextInt(4) == 0 ? 0.001f + random.nextFloat() * 0.05f : 0.1f + random.nextFloat() * 3;
+        switch (random.nextInt(3)) {
+            case 0:
+                return new Sphere(centre, size, colour(random));
+            case 1:
+                Vector3f a = centre.add(direction(random).multiply(size));
+                Vector3f b = centre.add(direction(random).multiply(size));
+                Vector3f c = random.nextInt(5) == 0
+                        ? a.add(b.subtract(a).multiply(0.5f)).add(direction(random).multiply(size * 1e-4f)) // a needle
+                        : centre.add(direction(random).multiply(size));
+                return new Triangle(a, b, c, colour(random), Material.DEFAULT);
+            default:
+                return Box.between(centre, centre.add(new Vector3f(random.nextFloat() * size + 1e-3f,
+                        random.nextFloat() * size + 1e-3f, random.nextFloat() * size + 1e-3f)), colour(random),
+                        Material.DEFAULT);
+        }
+    }
+
+    private static IGeometry twin(IGeometry object, Color colour) {
+        if (object instanceof Sphere s) {
+            return new Sphere(s.center(), s.radius(), colour);
+        }
+        if (object instanceof Triangle t) {
+            return new Triangle(t.corner(0), t.corner(1), t.corner(2), colour, Material.DEFAULT);
+        }
+        Box box = (Box) object;
+        return new Box(box.min(), box.max(), colour, Material.DEFAULT);
+    }
+
+    /**
+     * A random ray: from inside the scene, from around it, or from far away (up to 100,000
+     * units), aimed at a random object or anywhere; some directions run along an axis.
+     */
+    public static Ray ray(Random random, Scene scene) {
+        float distance = switch (random.nextInt(4)) {
+            case 0 -> 1;
+            case 1 -> 30;
+            case 2 -> 2_000;
+            default -> 100_000;
+        };
+        Vector3f origin = point(random, distance);
+        Vector3f direction;
+        if (random.nextBoolean()) {
+            IGeometry target = scene.objects().get(random.nextInt(scene.objects().size()));
+            Vector3f aim = target.bounds().isBounded() ? target.bounds().centre() : point(random, 10);
+            direction = aim.add(point(random, 0.05f)).subtract(origin);
+        } else {
+            direction = direction(random);
+        }
+        if (random.nextInt(6) == 0) {
+            direction = new Vector3f(direction.x(), 0, random.nextBoolean() ? 0 : direction.z()); // along an axis or a plane
+        }
+        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
+            direction = new Vector3f(0, 0, -1);
+        }
+        return new Ray(origin, direction.multiply(random.nextBoolean() ? 1 : 0.3f + random.nextFloat() * 3));
+    }
+
+    private static Vector3f point(Random random, float half) {
+        return new Vector3f((random.nextFloat() * 2 - 1) * half, (random.nextFloat() * 2 - 1) * half,
+                (random.nextFloat() * 2 - 1) * half);
+    }
+
+    private static Vector3f direction(Random random) {
+        return new Vector3f((float) random.nextGaussian(), (float) random.nextGaussian(), (float) random.nextGaussian());
+    }
+
+    private static Color colour(Random random) {
+        return new Color(random.nextInt(256), random.nextInt(256), random.nextInt(256));
+    }
+}
