@@ -3,9 +3,11 @@ package rtd.bench;
 import java.util.ArrayList;
 import java.util.List;
 import rtd.camera.OrthographicCamera;
+import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.image.Color;
@@ -32,7 +34,8 @@ final class BenchScenes {
     static int traceRow(Tracer tracer, OrthographicCamera camera, int row) {
         int checksum = 0;
         for (int x = 0; x < WIDTH; x++) {
-            checksum += tracer.trace(camera.generateRay(x, row, WIDTH, HEIGHT)).getRGB();
+            Hit hit = tracer.nearestHit(camera.generateRay(x, row, WIDTH, HEIGHT));
+            checksum += hit == null ? -1 : hit.index();
         }
         return checksum;
     }
@@ -41,12 +44,12 @@ final class BenchScenes {
      * Traces the band of 8 rows from {@code top} as the renderer does: square by square of
      * 8 × 8 pixels, through {@link Tracer#traceAll}.
      */
-    static int traceBand(Tracer tracer, OrthographicCamera camera, int top, RayBundle rays, int[] rgb) {
+    static int traceBand(Tracer tracer, OrthographicCamera camera, int top, RayBundle rays, HitBuffer hits) {
         int checksum = 0;
         for (int left = 0; left < WIDTH; left += 8) {
             rays.fill(camera, left, top, left + 8, top + 8, WIDTH, HEIGHT);
-            tracer.traceAll(rays, rgb);
-            checksum += rgb[0] + rgb[63];
+            tracer.traceAll(rays, hits);
+            checksum += hits.index(0) + hits.index(63);
         }
         return checksum;
     }

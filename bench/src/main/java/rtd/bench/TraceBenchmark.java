@@ -16,6 +16,7 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import rtd.accel.Bvh;
 import rtd.camera.OrthographicCamera;
+import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
@@ -45,7 +46,7 @@ public class TraceBenchmark {
     private int row;
     private int band;
     private final RayBundle rays = new RayBundle(64);
-    private final int[] rgb = new int[64];
+    private final HitBuffer hits = new HitBuffer(64);
 
     @Setup(Level.Trial)
     public void setUp() {
@@ -65,7 +66,7 @@ public class TraceBenchmark {
     @OperationsPerInvocation(8 * BenchScenes.WIDTH)
     public int bvhSquares() {
         band = (band + 1) % (BenchScenes.HEIGHT / 8);
-        return BenchScenes.traceBand(bvh, camera, 8 * band, rays, rgb);
+        return BenchScenes.traceBand(bvh, camera, 8 * band, rays, hits);
     }
 
     private int traceRow(Tracer tracer) {
