@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import java.util.Arrays;
+import rtd.geometry.IGeometry;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.WorkCount;
@@ -32,16 +33,22 @@ final class BeamTracer {
     private final int[] stackNodes;
     private final float[] stackEntries;
     private final float[] stackExits;
+    private final Beam beam = new Beam();
     // The beam: the centre and half size of the box around the rays' origins, and 1 / direction.
     private final float[] centre = new float[3];
     private final float[] half = new float[3];
     private final float[] inverse = new float[3];
     private float length;
+    /** How much a box grows per unit of t, as for each ray ({@link NearestHit#growth}). */
+    private float cone;
     /** The exit of the grown box of the last {@link #grownEntry}. */
     private float exit;
     /** The rays of the square and their nearest hits; reused from square to square. */
     private NearestHit[] hits = new NearestHit[0];
     private int count;
+    /** Whether the rays' hits are started; not before a leaf's objects are in reach, unless the scene has planes. */
+    private boolean started;
+    private RayBundle bundle;
     /** The farthest of the rays' {@link NearestHit#skipBeyond}: no box beyond it can matter. */
     private float farthestSkip;
     private long rays;
@@ -70,6 +77,29 @@ final class BeamTracer {
                 hits[i] = new NearestHit(bvh);
             }
         }
+        this.bundle = bundle;
+        started = false;
+        farthestSkip = Float.POSITIVE_INFINITY;
+        if (bvh.unbounded.length > 0) {
+            start();
+        }
+        if (bvh.hasTree()) {
+            walk();
+        }
+        rays += count;
+        if (!started) {
+            out.setMisses(count); // the beam reached no object: no ray was needed
+            return true;
+        }
+        for (int i = 0; i < count; i++) {
+            out.set(i, hits[i].best(), hits[i].bestT(), hits[i].bestDistance());
+        }
+        return true;
+    }
+
+    /** Starts each ray's nearest hit, with the objects that have no box, which every ray meets. */
+    private void start() {
+        bundle.make();
         farthestSkip = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
             NearestHit hit = hits[i];
@@ -78,14 +108,7 @@ final class BeamTracer {
             hit.testUnbounded();
             farthestSkip = FastMath.max(farthestSkip, hit.skipBeyond());
         }
-        if (bvh.hasTree()) {
-            walk();
-        }
-        rays += count;
-        for (int i = 0; i < count; i++) {
-            out.set(i, hits[i].best(), hits[i].bestT(), hits[i].bestDistance());
-        }
-        return true;
+        started = true;
     }
 
     /** The work done so far: rays, intersection tests, and nodes visited by walks and by rays at leaves. */
@@ -101,26 +124,13 @@ final class BeamTracer {
         return new WorkCount(rays, BvhTracer.testsByKind(bvh, tests, unbounded), nodesVisited);
     }
 
-    /** Finds the beam of the bundle's rays; false if they are not all parallel, or the beam is too large for float. */
+    /** Aims at the beam of the bundle's rays; false if they are not all parallel, or the beam is too large for float. */
     private boolean aim(RayBundle bundle) {
-        int n = bundle.count();
-        if (n == 0) {
+        if (!beam.aimAt(bundle)) {
             return false;
         }
-        float dx = bundle.directionX(0);
-        float dy = bundle.directionY(0);
-        float dz = bundle.directionZ(0);
-        float[] lowest = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY};
-        float[] highest = {Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
-        for (int i = 0; i < n; i++) {
-            if (!sameBits(bundle.directionX(i), dx) || !sameBits(bundle.directionY(i), dy)
-                    || !sameBits(bundle.directionZ(i), dz)) {
-                return false;
-            }
-            grow(lowest, highest, 0, bundle.originX(i));
-            grow(lowest, highest, 1, bundle.originY(i));
-            grow(lowest, highest, 2, bundle.originZ(i));
-        }
+        float[] lowest = beam.lowest;
+        float[] highest = beam.highest;
         for (int k = 0; k < 3; k++) {
             centre[k] = (lowest[k] + highest[k]) / 2;
             half[k] = (highest[k] - lowest[k]) / 2 + ROUNDING * (Math.abs(lowest[k]) + Math.abs(highest[k]));
@@ -128,20 +138,12 @@ final class BeamTracer {
                 return false;
             }
         }
-        inverse[0] = 1f / dx;
-        inverse[1] = 1f / dy;
-        inverse[2] = 1f / dz;
-        length = (float) Math.sqrt((dx * dx) + (dy * dy) + (dz * dz));
+        inverse[0] = 1f / beam.dx;
+        inverse[1] = 1f / beam.dy;
+        inverse[2] = 1f / beam.dz;
+        length = (float) Math.sqrt((beam.dx * beam.dx) + (beam.dy * beam.dy) + (beam.dz * beam.dz));
+        cone = IGeometry.ROUNDING_CONE * length;
         return true;
-    }
-
-    private static void grow(float[] lowest, float[] highest, int k, float value) {
-        lowest[k] = Math.min(lowest[k], value);
-        highest[k] = Math.max(highest[k], value);
-    }
-
-    private static boolean sameBits(float a, float b) {
-        return Float.floatToRawIntBits(a) == Float.floatToRawIntBits(b);
     }
 
     /** Walks down the tree, nearer child first, skipping boxes entered beyond every ray's nearest hit. */
@@ -208,7 +210,8 @@ final class BeamTracer {
 
     /** The rounding margin of boxes in which no ray of the beam is beyond {@code reach} (the same for every ray). */
     private float growth(float reach) {
-        return hits[0].growth(reach);
+        float grow = cone * reach;
+        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
     }
 
     /**
@@ -220,6 +223,9 @@ final class BeamTracer {
         float reach = objectsEntry(leaf, grow);
         if (!worthVisiting(reach)) {
             return;
+        }
+        if (!started) {
+            start();
         }
         float farthest = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {

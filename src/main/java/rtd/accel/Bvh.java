@@ -47,15 +47,24 @@ public final class Bvh {
         int[] order = builder.order();
         IGeometry[] sorted = new IGeometry[order.length];
         int[] fileOrder = new int[order.length];
-        builder.forEach(i -> {
-            sorted[i] = bounded.get(order[i]);
-            fileOrder[i] = boundedOrder[order[i]];
-        });
+        if (builder.parallel()) {
+            builder.forEach(i -> putInLeafOrder(i, order, bounded, boundedOrder, sorted, fileOrder));
+        } else {
+            for (int i = 0; i < order.length; i++) {
+                putInLeafOrder(i, order, bounded, boundedOrder, sorted, fileOrder);
+            }
+        }
         this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
         this.unbounded = unbounded.toArray(IGeometry[]::new);
         this.unboundedOrder = unboundedOrder;
         this.maxDepth = builder.maxDepth();
         this.objects = objects;
+    }
+
+    private static void putInLeafOrder(int i, int[] order, List<IGeometry> bounded, int[] boundedOrder,
+            IGeometry[] sorted, int[] fileOrder) {
+        sorted[i] = bounded.get(order[i]);
+        fileOrder[i] = boundedOrder[order[i]];
     }
 
     /** Builds the hierarchy for {@code scene} with all cores. */

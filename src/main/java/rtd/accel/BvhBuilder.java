@@ -70,10 +70,21 @@ final class BvhBuilder {
         this.order = new int[count];
         this.boxes = new float[6 * count];
         this.centres = new float[3 * count];
-        forEach(this::measureObject);
+        if (pool == null) { // no lambda either: its first use costs more than a small scene's whole build
+            for (int i = 0; i < count; i++) {
+                measureObject(i);
+            }
+        } else {
+            forEach(this::measureObject);
+        }
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
         this.nodes = new int[2 * capacity];
+    }
+
+    /** Whether this builder works on a pool of threads. */
+    boolean parallel() {
+        return pool != null;
     }
 
     /** Runs {@code action} for 0 to count − 1: in parallel on the pool, or in order on this thread. */

@@ -70,6 +70,7 @@ public final class BvhTracer implements Tracer {
         if (beam.trace(bundle, hits)) {
             return;
         }
+        bundle.make();
         for (int i = 0; i < bundle.count(); i++) {
             rays++;
             hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
@@ -90,12 +91,16 @@ public final class BvhTracer implements Tracer {
     static Map<String, Long> testsByKind(Bvh bvh, long[] treeTests, long unboundedTests) {
         Map<String, Long> tests = new TreeMap<>();
         for (int k = 0; k < treeTests.length; k++) {
-            tests.merge(bvh.leaves.kindNames[k], treeTests[k], Long::sum);
+            add(tests, bvh.leaves.kindNames[k], treeTests[k]);
         }
         for (IGeometry object : bvh.unbounded) {
-            tests.merge(object.kind(), unboundedTests, Long::sum);
+            add(tests, object.kind(), unboundedTests);
         }
         return tests;
+    }
+
+    private static void add(Map<String, Long> tests, String kind, long count) {
+        tests.put(kind, tests.getOrDefault(kind, 0L) + count);
     }
 
     /**

@@ -57,15 +57,12 @@ final class LeafObjects {
         this.offsets = new int[objects.length];
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
-        List<String> keys = new ArrayList<>(); // a kind is a name and a way to test
         int size = 0;
         for (int i = 0; i < objects.length; i++) { // in order: the offsets are a running sum
             byte test = testOf(objects[i]);
-            String key = test + " " + objects[i].kind();
-            int kind = keys.indexOf(key);
+            int kind = kindOf(names, tests, objects[i].kind(), test);
             if (kind < 0) {
-                kind = keys.size();
-                keys.add(key);
+                kind = names.size();
                 names.add(objects[i].kind());
                 tests.add(test);
             }
@@ -79,7 +76,23 @@ final class LeafObjects {
             kindTests[k] = tests.get(k);
         }
         this.numbers = new float[size];
-        threads.forEach(this::pack);
+        if (threads.parallel()) {
+            threads.forEach(this::pack);
+        } else {
+            for (int i = 0; i < objects.length; i++) {
+                pack(i);
+            }
+        }
+    }
+
+    /** The kind with this name and way to test among those found so far, or −1. */
+    private static int kindOf(List<String> names, List<Byte> tests, String name, byte test) {
+        for (int k = 0; k < names.size(); k++) {
+            if (names.get(k).equals(name) && tests.get(k) == test) {
+                return k;
+            }
+        }
+        return -1;
     }
 
     private static byte testOf(IGeometry object) {

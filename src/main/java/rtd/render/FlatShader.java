@@ -1,6 +1,5 @@
 package rtd.render;
 
-import rtd.image.Color;
 import rtd.scene.Scene;
 
 /**
@@ -14,7 +13,10 @@ public final class FlatShader implements Shader {
 
     /** The flat colours of {@code scene}'s objects. */
     public FlatShader(Scene scene) {
-        colours = scene.objects().stream().map(object -> object.color()).mapToInt(Color::getRGB).toArray();
+        colours = new int[scene.objects().size()];
+        for (int i = 0; i < colours.length; i++) {
+            colours[i] = scene.objects().get(i).color().getRGB();
+        }
         background = scene.ambient().getRGB();
     }
 

@@ -1,5 +1,6 @@
 package rtd.render;
 
+import java.util.Arrays;
 import java.util.List;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
@@ -42,6 +43,13 @@ public final class HitBuffer {
     /** Ray {@code i} hits nothing. */
     public void setMiss(int i) {
         set(i, -1, Float.NaN, Float.POSITIVE_INFINITY);
+    }
+
+    /** Rays 0 to {@code count − 1} hit nothing. */
+    public void setMisses(int count) {
+        Arrays.fill(index, 0, count, -1);
+        Arrays.fill(t, 0, count, Float.NaN);
+        Arrays.fill(distance, 0, count, Float.POSITIVE_INFINITY);
     }
 
     /** The place of the object ray {@code i} hits among the scene's objects, or −1. */

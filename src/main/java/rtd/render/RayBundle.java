@@ -10,8 +10,10 @@ import rtd.math.Vector3f;
  * {@link ParallelRenderer} fills one per thread and hands it to a {@link Tracer}, which may use
  * what the rays share (the orthographic camera's are all parallel).
  *
- * <p>Numbers, not {@link Ray} objects: a {@code Ray} stored in an array lives on the heap, 48
- * bytes a pixel; here the camera's {@code Ray} is only read, so once the JIT has inlined
+ * <p>The rays are made only when a tracer first asks for their numbers ({@link #make}): a
+ * tracer that can tell from the square's corners that no ray reaches any object never needs
+ * them. Numbers, not {@link Ray} objects: a {@code Ray} stored in an array lives on the heap,
+ * 48 bytes a pixel; here the camera's {@code Ray} is only read, so once the JIT has inlined
  * {@link ICamera#generateRay} it never exists as an object.
  */
 public final class RayBundle {
@@ -23,6 +25,15 @@ public final class RayBundle {
     private final float[] directionY;
     private final float[] directionZ;
     private int count;
+    /** The square whose rays these are, or no camera if the rays were given one by one. */
+    private ICamera camera;
+    private int left;
+    private int top;
+    private int right;
+    private int bottom;
+    private int width;
+    private int height;
+    private boolean made;
 
     /** An empty bundle with room for {@code capacity} rays. */
     public RayBundle(int capacity) {
@@ -36,23 +47,63 @@ public final class RayBundle {
 
     /**
      * Replaces the rays with the camera's rays (Listing 4.1) for the pixels
-     * {@code [left, right) × [top, bottom)} of a {@code width × height} image, row by row.
+     * {@code [left, right) × [top, bottom)} of a {@code width × height} image, row by row; they
+     * are made on first use.
      */
     public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height) {
-        count = 0;
-        for (int y = top; y < bottom; y++) {
-            for (int x = left; x < right; x++) {
-                store(count++, camera.generateRay(x, y, width, height));
-            }
-        }
+        this.camera = camera;
+        this.left = left;
+        this.top = top;
+        this.right = right;
+        this.bottom = bottom;
+        this.width = width;
+        this.height = height;
+        count = (right - left) * (bottom - top);
+        made = false;
     }
 
     /** Replaces the rays with these (for tests and benchmarks that choose their own rays). */
     public void fill(Ray... rays) {
+        camera = null;
         count = 0;
         for (Ray ray : rays) {
             store(count++, ray);
         }
+        made = true;
+    }
+
+    /** Makes the rays with the camera, if not done yet; call it before reading a ray's numbers. */
+    public void make() {
+        if (made) {
+            return;
+        }
+        int i = 0;
+        for (int y = top; y < bottom; y++) {
+            for (int x = left; x < right; x++) {
+                store(i++, camera.generateRay(x, y, width, height));
+            }
+        }
+        made = true;
+    }
+
+    /** Whether the rays have been made (tests look at it: a square a tracer can skip whole should not be). */
+    public boolean isMade() {
+        return made;
+    }
+
+    /** The camera whose square of pixels these rays are, or {@code null} if they were given one by one. */
+    public ICamera camera() {
+        return camera;
+    }
+
+    /**
+     * The ray of the square's corner {@code k}: 0 top left, 1 top right, 2 bottom left, 3 bottom
+     * right; only for a square of a camera.
+     */
+    public Ray corner(int k) {
+        int x = k % 2 == 0 ? left : right - 1;
+        int y = k < 2 ? top : bottom - 1;
+        return camera.generateRay(x, y, width, height);
     }
 
     private void store(int i, Ray ray) {
@@ -71,13 +122,20 @@ public final class RayBundle {
         return count;
     }
 
-    /** Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time. */
+    /**
+     * Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time: straight from the
+     * camera (it need not be {@linkplain #make made}), or as it was given.
+     */
     public Ray ray(int i) {
+        if (camera != null) {
+            int squareWidth = right - left;
+            return camera.generateRay(left + i % squareWidth, top + i / squareWidth, width, height);
+        }
         return new Ray(new Vector3f(originX[i], originY[i], originZ[i]),
                 new Vector3f(directionX[i], directionY[i], directionZ[i]));
     }
 
-    // Ray i's numbers, for tracers that keep a ray as numbers.
+    // Ray i's numbers, for tracers that keep a ray as numbers; only after make().
 
     public float originX(int i) {
         return originX[i];

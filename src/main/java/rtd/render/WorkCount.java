@@ -29,7 +29,7 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
     public static WorkCount testsOf(List<IGeometry> objects, long rays) {
         Map<String, Long> tests = new TreeMap<>();
         for (IGeometry object : objects) {
-            tests.merge(object.kind(), 1L, Long::sum);
+            tests.put(object.kind(), tests.getOrDefault(object.kind(), 0L) + 1);
         }
         return new WorkCount(1, tests, 0).times(rays);
     }
@@ -37,20 +37,28 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
     /** This work done {@code factor} times. */
     public WorkCount times(long factor) {
         Map<String, Long> tests = new TreeMap<>();
-        testsByKind.forEach((kind, count) -> tests.put(kind, count * factor));
+        for (Map.Entry<String, Long> kind : testsByKind.entrySet()) {
+            tests.put(kind.getKey(), kind.getValue() * factor);
+        }
         return new WorkCount(rays * factor, tests, nodesVisited * factor);
     }
 
     /** The sum of this and {@code other}. */
     public WorkCount plus(WorkCount other) {
         Map<String, Long> tests = new TreeMap<>(testsByKind);
-        other.testsByKind.forEach((kind, count) -> tests.merge(kind, count, Long::sum));
+        for (Map.Entry<String, Long> kind : other.testsByKind.entrySet()) {
+            tests.put(kind.getKey(), tests.getOrDefault(kind.getKey(), 0L) + kind.getValue());
+        }
         return new WorkCount(rays + other.rays, tests, nodesVisited + other.nodesVisited);
     }
 
     /** Intersection tests of every kind. */
     public long intersectionTests() {
-        return testsByKind.values().stream().mapToLong(Long::longValue).sum();
+        long sum = 0;
+        for (long tests : testsByKind.values()) {
+            sum += tests;
+        }
+        return sum;
     }
 
     /** Intersection tests per ray. */
