@@ -1,0 +1,50 @@
+package rtd.geometry;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.Random;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.scene.Scene;
+import rtd.testing.MixedScenes;
+
+/**
+ * Every shape keeps the promise of {@link IGeometry#bounds}: a hit its float test reports at t
+ * lies in its box grown by {@code ROUNDING_CONE · t · |R|}, for rays from near and far, where
+ * rounding makes the tests report hits beside the true surface.
+ */
+@DisplayName("Each shape's box holds every hit its test reports")
+class BoundsContractTest {
+
+    @ParameterizedTest(name = "random objects {0}")
+    @ValueSource(longs = {1, 2, 3, 4, 5})
+    void evenForRaysFromFarAway(long seed) {
+        Scene scene = MixedScenes.generate(seed, 300);
+        Random random = new Random(seed);
+        int hits = 0;
+        for (int r = 0; r < 100_000; r++) {
+            Ray ray = MixedScenes.ray(random, scene);
+            IGeometry object = scene.objects().get(random.nextInt(scene.objects().size()));
+            Intersection hit = object.intersect(ray);
+            BoundingBox box = object.bounds();
+            if (!hit.happened() || !box.isBounded()) {
+                continue;
+            }
+            hits++;
+            double grow = IGeometry.ROUNDING_CONE * hit.t() * (double) ray.direction().magnitude();
+            Vector3f o = ray.origin();
+            Vector3f d = ray.direction();
+            double[] p = {o.x() + (double) d.x() * hit.t(), o.y() + (double) d.y() * hit.t(), o.z() + (double) d.z() * hit.t()};
+            double[] min = {box.min().x(), box.min().y(), box.min().z()};
+            double[] max = {box.max().x(), box.max().y(), box.max().z()};
+            for (int k = 0; k < 3; k++) {
+                assertThat(p[k]).as("ray %d %s, %s, axis %d", r, ray, object.kind(), k)
+                        .isBetween(min[k] - grow, max[k] + grow);
+            }
+        }
+        assertThat(hits).as("hits").isGreaterThan(1_000);
+    }
+}

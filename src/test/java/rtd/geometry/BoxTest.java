@@ -1,0 +1,60 @@
+package rtd.geometry;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import rtd.image.Color;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+
+@DisplayName("The intersection test of a box (the slab test)")
+class BoxTest {
+
+    /** The box from (−1,−2,−3) to (1,2,3), its corners given in the other order. */
+    private final Box box = Box.between(new Vector3f(1, 2, 3), new Vector3f(-1, -2, -3), Color.BLACK, Material.DEFAULT);
+
+    private static Ray ray(float ox, float oy, float oz, float dx, float dy, float dz) {
+        return new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
+    }
+
+    @Test
+    void itsCornersAreSortedWhateverOrderTheyComeIn() {
+        assertThat(box.min()).isEqualTo(new Vector3f(-1, -2, -3));
+        assertThat(box.max()).isEqualTo(new Vector3f(1, 2, 3));
+    }
+
+    @Test
+    void aRayFromOutsideHitsTheNearFace() {
+        Intersection hit = box.intersect(ray(0, 0, 10, 0, 0, -1));
+        assertThat(hit.t()).isEqualTo(7f);
+        assertThat(hit.contactCoord()).isEqualTo(new Vector3f(0, 0, 3));
+        assertThat(box.intersect(ray(5, 0.5f, 0, -1, 0, 0)).t()).isEqualTo(4f);
+    }
+
+    @Test
+    void aRayThatStartsInsideHitsTheFarSide() {
+        Intersection hit = box.intersect(ray(0, 0, 0, 0, 1, 0));
+        assertThat(hit.t()).isEqualTo(2f);
+        assertThat(hit.contactCoord()).isEqualTo(new Vector3f(0, 2, 0));
+    }
+
+    @Test
+    void aRayThatPassesBesideOrRunsParallelOutsideMisses() {
+        assertThat(box.intersect(ray(1.5f, 0, 10, 0, 0, -1)).happened()).isFalse();
+        assertThat(box.intersect(ray(0, 3, 0, 1, 0, 0)).happened()).as("parallel, above it").isFalse();
+        assertThat(box.intersect(ray(0, 0, 10, 0, 0, 1)).happened()).as("away from it").isFalse();
+    }
+
+    @Test
+    void aRayThroughAnEdgeHits() {
+        assertThat(box.intersect(ray(1, 2, 10, 0, 0, -1)).t()).isEqualTo(7f);
+    }
+
+    @Test
+    void itsNormalIsTheNormalOfTheFaceHit() {
+        assertThat(box.normalAt(new Vector3f(0, 0, 3))).isEqualTo(new Vector3f(0, 0, 1));
+        assertThat(box.normalAt(new Vector3f(-1, 0.5f, 1))).isEqualTo(new Vector3f(-1, 0, 0));
+        assertThat(box.normalAt(new Vector3f(0.2f, -2, -2.5f))).isEqualTo(new Vector3f(0, -1, 0));
+    }
+}
