@@ -71,6 +71,18 @@ public final class SceneIO {
         }
     }
 
+    /**
+     * Writes {@code picture} as a PNG into {@code device}, a FIFO or a character device such as
+     * /dev/null, which stays what it is: it is opened for writing only, never created, replaced
+     * or truncated. A reader of a FIFO gets the PNG as it is written (a failed write leaves it
+     * with part of one).
+     */
+    public static void writePngInto(Picture picture, Path device, int threads) throws IOException {
+        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), 1 << 16)) {
+            PngEncoder.write(picture, out, threads);
+        }
+    }
+
     private static void moveIntoPlace(Path temporary, Path output) throws IOException {
         try {
             Files.move(temporary, output, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
