@@ -42,10 +42,10 @@ public final class RtdCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCENE", description = "the scene file to render")
+    @Parameters(index = "0", paramLabel = "SCENE", converter = FileName.class, description = "the scene file to render")
     private Path scenePath;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png",
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", converter = FileName.class,
             description = "where to write the picture (default: SCENE with .png in place of its extension)")
     private Path output;
 

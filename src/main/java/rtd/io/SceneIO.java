@@ -10,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
-import java.util.concurrent.ThreadLocalRandom;
 import rtd.render.Picture;
 import rtd.scene.Scene;
 
@@ -50,24 +49,23 @@ public final class SceneIO {
      * Writes {@code picture} as a 24-bit RGB PNG to {@code output}, compressing with up to
      * {@code threads} threads ({@link PngEncoder}), all or nothing: the PNG goes
      * to a temporary file in the same folder first and replaces {@code output} only when it is
-     * complete, so a failed write leaves any earlier file exactly as it was.
+     * complete, so a failed write leaves any earlier file exactly as it was. The temporary file
+     * ({@code .NAME.<hex>.tmp}) is removed on failure and when a signal stops the JVM
+     * ({@link TemporaryFiles}).
      */
     public static void writePng(Picture picture, Path output, int threads) throws IOException {
         Path folder = output.toAbsolutePath().getParent();
-        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
-        // A random name, not a UUID: that would start a SecureRandom, slower than the whole write.
-        Path temporary = folder.resolve("." + output.getFileName() + "."
-                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
-        // CREATE_NEW: should the name be taken, fail rather than overwrite (or later delete) that file.
-        OutputStream file = Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+        TemporaryFiles.Created temporary = TemporaryFiles.create(folder, output.getFileName().toString());
         try {
-            try (OutputStream out = new BufferedOutputStream(file, 1 << 16)) {
+            try (OutputStream out = new BufferedOutputStream(temporary.out(), 1 << 16)) {
                 PngEncoder.write(picture, out, threads);
             }
-            moveIntoPlace(temporary, output);
+            moveIntoPlace(temporary.path(), output);
         } catch (IOException | RuntimeException | Error e) {
-            Files.deleteIfExists(temporary);
+            Files.deleteIfExists(temporary.path());
             throw e;
+        } finally {
+            TemporaryFiles.forget(temporary.path());
         }
     }
 
