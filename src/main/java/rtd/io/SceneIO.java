@@ -19,11 +19,19 @@ import rtd.scene.Scene;
  */
 public final class SceneIO {
 
+    /**
+     * The largest scene file rtd reads, 1 GiB: about 20 million spheres, more than fit in the
+     * memory of most machines once read. Java could not hold a file of over 2 GiB in one piece.
+     */
+    public static final long MAX_SCENE_BYTES = 1L << 30;
+
     private SceneIO() {
     }
 
     /**
-     * Reads the scene file at {@code path} (UTF-8).
+     * Reads the scene file at {@code path} (UTF-8), in bounded memory and time: a file over
+     * {@link #MAX_SCENE_BYTES} is refused, and a stream such as {@code /dev/zero} is read only
+     * up to its first byte that is not text ({@link SceneFileReader}).
      *
      * @throws SceneException if the file has mistakes; it lists them all
      * @throws IOException    if the file cannot be read
@@ -32,7 +40,7 @@ public final class SceneIO {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
-        return SceneParser.parse(new SourceText(path.toString(), Files.readAllBytes(path)));
+        return SceneParser.parse(new SourceText(path.toString(), SceneFileReader.read(path)));
     }
 
     /** Reads a scene from {@code text}; {@code name} stands for the file in error messages. */
