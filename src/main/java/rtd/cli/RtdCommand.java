@@ -57,8 +57,9 @@ public final class RtdCommand implements Callable<Integer> {
             description = "image height in pixels (default: ${DEFAULT-VALUE})")
     private int height;
 
-    @Option(names = "--threads", paramLabel = "N", converter = PositiveInt.class,
-            description = "threads to render, build the BVH and compress the PNG with (default: all cores, here ${DEFAULT-VALUE})")
+    @Option(names = "--threads", paramLabel = "N", converter = ThreadCount.class,
+            description = "threads to render, build the BVH and compress the PNG with (default: all cores, here "
+                    + "${DEFAULT-VALUE}; a larger N uses at most 4 threads per core)")
     private int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
