@@ -106,7 +106,7 @@ public final class RtdCommand implements Callable<Integer> {
             printDebug(err, e);
             return 1;
         } catch (OutOfMemoryError e) {
-            err.println("rtd: out of memory; give Java more, for example: java -Xmx8g -jar rtd.jar ...");
+            err.println(Memory.outOfMemory(Runtime.getRuntime().maxMemory(), Memory.physical()));
             return 1;
         } finally {
             err.flush();

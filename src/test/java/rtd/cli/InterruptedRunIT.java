@@ -103,4 +103,15 @@ class InterruptedRunIT {
         assertThat(result.err()).contains("a?.png' cannot be used: it is not valid UTF-8").doesNotContain("Exception");
         assertThat(namesIn(dir)).isEmpty();
     }
+
+    @Test
+    void aSmallHeapIsToldInUnitsThatShowTheDifference() throws Exception {
+        Result result = run(Map.of(), List.of(JAVA, "-Xmx16m", "-jar", JAR, "examples/input_rtd.txt", "-o",
+                dir.resolve("out.png").toString()));
+        assertThat(result.exitCode()).isEqualTo(2);
+        assertThat(result.err()).contains("a 1920×1080 image needs 19.8 MiB of memory, but Java may use only ")
+                .containsPattern("only \\d+\\.\\d MiB more here \\(limit \\d+\\.\\d MiB\\)")
+                .doesNotContain("0.0 GiB");
+        assertThat(namesIn(dir)).isEmpty();
+    }
 }
