@@ -27,7 +27,7 @@ final class FileProblems {
         if (e instanceof NotDirectoryException) {
             return "not a folder";
         }
-        return e.getMessage() != null ? e.getMessage() : "an input/output error";
+        return e.getMessage() != null ? lowerFirst(e.getMessage()) : "an input/output error"; // a failed write: "No space left on device"
     }
 
     private static String lowerFirst(String text) {
