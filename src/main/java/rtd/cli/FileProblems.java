@@ -16,7 +16,7 @@ final class FileProblems {
     /** Why {@code e} happened, without Java's exception names. */
     static String reason(IOException e) {
         if (e instanceof FileSystemException failure && failure.getReason() != null) {
-            return failure.getReason().toLowerCase(Locale.ROOT);
+            return lowerFirst(failure.getReason()); // the system's "No such file", not rtd's "3.0 GiB"
         }
         if (e instanceof NoSuchFileException) {
             return "no such file";
@@ -27,6 +27,10 @@ final class FileProblems {
         if (e instanceof NotDirectoryException) {
             return "not a folder";
         }
-        return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+        return e.getMessage() != null ? lowerFirst(e.getMessage()) : "an input/output error"; // a failed write: "No space left on device"
+    }
+
+    private static String lowerFirst(String text) {
+        return text.isEmpty() ? text : text.substring(0, 1).toLowerCase(Locale.ROOT) + text.substring(1);
     }
 }

@@ -27,15 +27,12 @@ final class ImageSize {
         long available = runtime.maxMemory() - (runtime.totalMemory() - runtime.freeMemory());
         long needed = pixels * BYTES_PER_PIXEL;
         if (needed > available) {
+            String advice = Memory.xmx(needed + runtime.maxMemory(), Memory.physical())
+                    .map(xmx -> "choose a smaller --width/--height, or raise the limit: java -Xmx" + xmx + " -jar rtd.jar ...")
+                    .orElse("choose a smaller --width/--height: this machine has " + Memory.size(Memory.physical()) + " in all");
             throw new ParameterException(commandLine, String.format(Locale.ROOT,
-                    "a %d×%d image needs %s of memory, but Java may use only %s more here (limit %s); "
-                            + "choose a smaller --width/--height, or raise the limit: java -Xmx%dg -jar rtd.jar ...",
-                    width, height, gib(needed), gib(available), gib(runtime.maxMemory()),
-                    (needed + runtime.maxMemory()) / (1L << 30) + 1));
+                    "a %d×%d image needs %s of memory, but Java may use only %s more here (limit %s); %s",
+                    width, height, Memory.size(needed), Memory.size(available), Memory.size(runtime.maxMemory()), advice));
         }
-    }
-
-    private static String gib(long bytes) {
-        return String.format(Locale.ROOT, "%.1f GiB", bytes / (double) (1L << 30));
     }
 }

@@ -46,10 +46,10 @@ public final class RtdCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCENE", description = "the scene file to render")
+    @Parameters(index = "0", paramLabel = "SCENE", converter = FileName.class, description = "the scene file to render")
     private Path scenePath;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png",
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", converter = FileName.class,
             description = "where to write the picture (default: SCENE with .png in place of its extension)")
     private Path output;
 
@@ -61,8 +61,9 @@ public final class RtdCommand implements Callable<Integer> {
             description = "image height in pixels (default: ${DEFAULT-VALUE})")
     private int height;
 
-    @Option(names = "--threads", paramLabel = "N", converter = PositiveInt.class,
-            description = "threads to render, build the BVH and compress the PNG with (default: all cores, here ${DEFAULT-VALUE})")
+    @Option(names = "--threads", paramLabel = "N", converter = ThreadCount.class,
+            description = "threads to render, build the BVH and compress the PNG with (default: all cores, here "
+                    + "${DEFAULT-VALUE}; a larger N uses at most 4 threads per core)")
     private int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
@@ -113,7 +114,7 @@ public final class RtdCommand implements Callable<Integer> {
             printDebug(err, e);
             return 1;
         } catch (OutOfMemoryError e) {
-            err.println("rtd: out of memory; give Java more, for example: java -Xmx8g -jar rtd.jar ...");
+            err.println(Memory.outOfMemory(Runtime.getRuntime().maxMemory(), Memory.physical()));
             return 1;
         } finally {
             err.flush();
@@ -121,7 +122,7 @@ public final class RtdCommand implements Callable<Integer> {
     }
 
     private int render(PrintWriter err) throws SceneException, FileError {
-        Path target = outputPath();
+        OutputTarget target = outputTarget();
         PhaseTimer timer = new PhaseTimer();
         Scene scene = readScene();
         timer.endPhase("parse");
@@ -136,7 +137,7 @@ public final class RtdCommand implements Callable<Integer> {
         writePicture(result, target, threads);
         timer.endPhase("write");
         if (stats) {
-            err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target));
+            err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target.spelt()));
         }
         return 0;
     }
@@ -176,34 +177,52 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    private static void writePicture(RenderResult result, Path target, int threads) throws FileError {
+    private static void writePicture(RenderResult result, OutputTarget target, int threads) throws FileError {
         try {
-            SceneIO.writePng(result.image(), target, threads);
+            if (target.kind() == OutputTarget.Kind.STREAM) {
+                SceneIO.writePngInto(result.image(), target.file(), threads);
+            } else {
+                SceneIO.writePng(result.image(), target.file(), threads);
+            }
         } catch (IOException e) {
-            throw new FileError("cannot write '" + target + "': " + FileProblems.reason(e), e);
+            throw new FileError("cannot write '" + target.spelt() + "': " + FileProblems.reason(e), e);
         }
     }
 
-    /** The output path: {@code -o}, or the scene's name with {@code .png}; checked before rendering. */
-    private Path outputPath() throws FileError {
-        Path target = output != null ? output : defaultOutput(scenePath);
-        Path folder = target.toAbsolutePath().getParent();
-        if (Files.isDirectory(target)) {
-            throw new ParameterException(spec.commandLine(), "the output '" + target + "' is a folder; give a file name such as "
-                    + target.resolve("out.png"));
+    /**
+     * Where the picture goes: {@code -o}, or the scene's name with {@code .png}; checked before
+     * rendering, on the real files behind any symbolic link, so that a long render does not end
+     * in a failed write and nothing but a regular file is ever replaced.
+     */
+    private OutputTarget outputTarget() throws FileError {
+        if (Files.isDirectory(scenePath)) {
+            // before the default output, which a folder such as / has no name for
+            throw new FileError("cannot read the scene file '" + scenePath + "': it is a folder, not a file", null);
         }
-        if (target.toAbsolutePath().normalize().equals(scenePath.toAbsolutePath().normalize())) {
-            throw new ParameterException(spec.commandLine(), "the output '" + target + "' is the scene file itself; "
-                    + "choose another with -o");
+        Path spelt = output != null ? output : defaultOutput(scenePath);
+        OutputTarget target;
+        try {
+            target = OutputTarget.of(spelt, scenePath);
+        } catch (OutputTarget.Refusal refusal) {
+            if (refusal.misuse()) {
+                throw new ParameterException(spec.commandLine(), refusal.getMessage());
+            }
+            throw new FileError(refusal.getMessage(), null);
         }
+        if (target.folder().isPresent()) {
+            checkFolder(spelt, target.folder().get());
+        }
+        return target;
+    }
+
+    private static void checkFolder(Path spelt, Path folder) throws FileError {
         if (!Files.isDirectory(folder)) {
-            throw new FileError("cannot write '" + target + "': the folder '" + folder + "' "
+            throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' "
                     + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"), null);
         }
         if (!Files.isWritable(folder)) {
-            throw new FileError("cannot write '" + target + "': the folder '" + folder + "' is not writable", null);
+            throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' is not writable", null);
         }
-        return target;
     }
 
     /** {@code scenes/a.txt} gives {@code scenes/a.png}; a name without extension gets {@code .png}. */

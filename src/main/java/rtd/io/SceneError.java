@@ -29,8 +29,9 @@ public record SceneError(String file, int line, int column, String message, Stri
         String number = String.valueOf(line);
         String gutter = " ".repeat(number.length() + 2);
         if (sourceLine != null) {
-            text.append(' ').append(number).append(" | ").append(sourceLine).append('\n');
-            text.append(gutter).append("| ").append(caretPadding()).append("^\n");
+            Window window = Window.around(sourceLine, column);
+            text.append(' ').append(number).append(" | ").append(window.shown()).append('\n');
+            text.append(gutter).append("| ").append(window.caretPadding()).append("^\n");
         }
         if (help != null) {
             text.append(gutter).append("= help: ").append(help).append('\n');
@@ -38,15 +39,41 @@ public record SceneError(String file, int line, int column, String message, Stri
         return text.toString();
     }
 
-    /** Spaces up to the column, keeping the line's tabs so that the caret lines up. */
-    private String caretPadding() {
-        StringBuilder padding = new StringBuilder();
-        int offset = 0;
-        for (int i = 1; i < column && offset < sourceLine.length(); i++) {
-            int codePoint = sourceLine.codePointAt(offset);
-            padding.append(codePoint == '\t' ? '\t' : ' ');
-            offset += Character.charCount(codePoint);
+    /**
+     * The part of a long line that is shown: at most {@value #WIDTH} characters around the column,
+     * with an ellipsis for each end cut off, so that a line of 50 MB prints one short line (the
+     * column number in the message stays exact).
+     *
+     * @param shown        the text to print
+     * @param caretPadding what goes before the caret: spaces, and the line's tabs so that it lines up
+     */
+    private record Window(String shown, String caretPadding) {
+
+        static final int WIDTH = 100;
+        /** How many characters of a long line are shown before the column. */
+        static final int BEFORE = 40;
+
+        static Window around(String line, int column) {
+            int length = line.codePointCount(0, line.length());
+            int start = length <= WIDTH ? 0 : Math.max(0, Math.min(column - 1 - BEFORE, length - WIDTH));
+            int end = Math.min(length, start + WIDTH);
+            int from = line.offsetByCodePoints(0, start);
+            String part = line.substring(from, line.offsetByCodePoints(from, end - start));
+            String before = start > 0 ? "…" : "";
+            String after = end < length ? "…" : "";
+            return new Window(before + part + after, " ".repeat(before.length()) + padding(part, column - 1 - start));
         }
-        return padding.append(" ".repeat(Math.max(0, column - 1 - padding.length()))).toString();
+
+        /** {@code columns} columns of {@code part}: its tabs kept, everything else a space. */
+        private static String padding(String part, int columns) {
+            StringBuilder padding = new StringBuilder();
+            int offset = 0;
+            for (int i = 0; i < columns && offset < part.length(); i++) {
+                int codePoint = part.codePointAt(offset);
+                padding.append(codePoint == '\t' ? '\t' : ' ');
+                offset += Character.charCount(codePoint);
+            }
+            return padding.append(" ".repeat(Math.max(0, columns - padding.length()))).toString();
+        }
     }
 }

@@ -10,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
-import java.util.concurrent.ThreadLocalRandom;
 import rtd.image.Picture;
 import rtd.scene.Scene;
 
@@ -20,11 +19,19 @@ import rtd.scene.Scene;
  */
 public final class SceneIO {
 
+    /**
+     * The largest scene file rtd reads, 1 GiB: about 20 million spheres, more than fit in the
+     * memory of most machines once read. Java could not hold a file of over 2 GiB in one piece.
+     */
+    public static final long MAX_SCENE_BYTES = 1L << 30;
+
     private SceneIO() {
     }
 
     /**
-     * Reads the scene file at {@code path} (UTF-8).
+     * Reads the scene file at {@code path} (UTF-8), in bounded memory and time: a file over
+     * {@link #MAX_SCENE_BYTES} is refused, and a stream such as {@code /dev/zero} is read only
+     * up to its first byte that is not text ({@link SceneFileReader}).
      *
      * @throws SceneException if the file has mistakes; it lists them all
      * @throws IOException    if the file cannot be read
@@ -33,7 +40,7 @@ public final class SceneIO {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
-        return SceneParser.parse(new SourceText(path.toString(), Files.readAllBytes(path)));
+        return SceneParser.parse(new SourceText(path.toString(), SceneFileReader.read(path)));
     }
 
     /** Reads a scene from {@code text}; {@code name} stands for the file in error messages. */
@@ -50,24 +57,35 @@ public final class SceneIO {
      * Writes {@code picture} as a 24-bit RGB PNG to {@code output}, compressing with up to
      * {@code threads} threads ({@link PngEncoder}), all or nothing: the PNG goes
      * to a temporary file in the same folder first and replaces {@code output} only when it is
-     * complete, so a failed write leaves any earlier file exactly as it was.
+     * complete, so a failed write leaves any earlier file exactly as it was. The temporary file
+     * ({@code .NAME.<hex>.tmp}) is removed on failure and when a signal stops the JVM
+     * ({@link TemporaryFiles}).
      */
     public static void writePng(Picture picture, Path output, int threads) throws IOException {
         Path folder = output.toAbsolutePath().getParent();
-        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
-        // A random name, not a UUID: that would start a SecureRandom, slower than the whole write.
-        Path temporary = folder.resolve("." + output.getFileName() + "."
-                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
-        // CREATE_NEW: should the name be taken, fail rather than overwrite (or later delete) that file.
-        OutputStream file = Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+        TemporaryFiles.Created temporary = TemporaryFiles.create(folder, output.getFileName().toString());
         try {
-            try (OutputStream out = new BufferedOutputStream(file, 1 << 16)) {
+            try (OutputStream out = new BufferedOutputStream(temporary.out(), 1 << 16)) {
                 PngEncoder.write(picture, out, threads);
             }
-            moveIntoPlace(temporary, output);
+            moveIntoPlace(temporary.path(), output);
         } catch (IOException | RuntimeException | Error e) {
-            Files.deleteIfExists(temporary);
+            Files.deleteIfExists(temporary.path());
             throw e;
+        } finally {
+            TemporaryFiles.forget(temporary.path());
+        }
+    }
+
+    /**
+     * Writes {@code picture} as a PNG into {@code device}, a FIFO or a character device such as
+     * /dev/null, which stays what it is: it is opened for writing only, never created, replaced
+     * or truncated. A reader of a FIFO gets the PNG as it is written (a failed write leaves it
+     * with part of one).
+     */
+    public static void writePngInto(Picture picture, Path device, int threads) throws IOException {
+        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), 1 << 16)) {
+            PngEncoder.write(picture, out, threads);
         }
     }
 

@@ -26,9 +26,22 @@ record SourceText(String name, byte[] bytes) {
         return before.codePointCount(0, before.length()) + 1;
     }
 
-    /** The text of {@code bytes[start, end)}. */
+    /** The most bytes of a token quoted in a message; a longer one is cut, with an ellipsis. */
+    static final int MAX_QUOTED_BYTES = 60;
+
+    /**
+     * The text of {@code bytes[start, end)}, for a message: a token of 50 MB is quoted by its first
+     * {@value #MAX_QUOTED_BYTES} bytes and an ellipsis (cut between characters), not whole.
+     */
     String text(int start, int end) {
-        return new String(bytes, start, end - start, StandardCharsets.UTF_8);
+        if (end - start <= MAX_QUOTED_BYTES) {
+            return new String(bytes, start, end - start, StandardCharsets.UTF_8);
+        }
+        int cut = start + MAX_QUOTED_BYTES;
+        while (cut > start && (bytes[cut] & 0xC0) == 0x80) {
+            cut--; // not inside a character of several bytes
+        }
+        return new String(bytes, start, cut - start, StandardCharsets.UTF_8) + "\u2026";
     }
 
     /** What stands at {@code offset}, for "found …" in a message. */

@@ -177,7 +177,8 @@ class CommandLineTest {
         assertThat(run.err()).contains("2000000×2000000").contains("at most");
         Run big = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("huge.png").toString(), "--width", "46000", "--height", "46000");
         assertThat(big.exitCode()).isEqualTo(2);
-        assertThat(big.err()).contains("needs 19.7 GiB of memory").contains("-Xmx");
+        // -Xmx advice only where the machine has that much memory
+        assertThat(big.err()).contains("needs 19.7 GiB of memory").containsAnyOf("-Xmx", "this machine has");
     }
 
     @Test

@@ -37,6 +37,13 @@ class ErrorCatalogTest {
         assertThat(examples()).hasSizeGreaterThanOrEqualTo(27);
     }
 
+    @Test
+    void showsNoJavaClassNameAnywhere() throws IOException {
+        String doc = Files.readString(Path.of("docs", "errors.md"));
+        assertThat(doc).doesNotContainPattern("\\b\\w*(Exception|Error)\\b(?!:)")
+                .doesNotContainPattern("\\bjava\\.[a-z]+\\.").doesNotContainPattern("\\b(rtd|sun)\\.[a-z]+\\.[A-Z]");
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("examples")
     void showsTheMessageThatRtdGives(String firstLine, String scene, String message) {
