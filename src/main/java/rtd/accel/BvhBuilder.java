@@ -1,6 +1,9 @@
 package rtd.accel;
 
+import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
 import java.util.function.IntConsumer;
@@ -179,6 +182,9 @@ final class BvhBuilder {
     private int buildNode(int node, int free, int start, int end, int depth, Extent extent, SahBins bins) {
         Extent known = extent != null ? extent : measure(start, end);
         System.arraycopy(known.box(), 0, bounds, 6 * node, 6);
+        if (end - start > 1 && widestAxis(known.centres()) < 0) {
+            end = withoutTwins(start, end);
+        }
         int n = end - start;
         Split split = n <= 1 ? null : depth < MAX_SAH_DEPTH ? splitBySah(known, start, end, bins) : splitByCount(start, end);
         if (split == null) {
@@ -247,6 +253,39 @@ final class BvhBuilder {
             return splitByCount(start, end);
         }
         return new Split(middle, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS));
+    }
+
+    /**
+     * Moves the objects of {@code order[start, end)} that are the twin of one before them in
+     * the file ({@link IGeometry#sameTest}) to the back, and returns where they start: the tree
+     * leaves them out. A twin reports the same hit as the first of its kind for every ray, and
+     * on that tie the first in the file wins, so the twin never does. Only where all centres
+     * coincide, the one place where many twins can gather and defeat the tree (a hundred
+     * thousand copies of one sphere would all be tested by every ray that reaches them).
+     */
+    private int withoutTwins(int start, int end) {
+        Arrays.sort(order, start, end); // file order, so that the first of each kind is kept
+        Map<Object, Boolean> seen = new HashMap<>();
+        int kept = start;
+        for (int i = start; i < end; i++) {
+            if (seen.putIfAbsent(objects.get(order[i]).sameTest(), Boolean.TRUE) == null) {
+                int object = order[i];
+                order[i] = order[kept];
+                order[kept++] = object;
+            }
+        }
+        refreshData(start, end);
+        return kept;
+    }
+
+    /** Puts each object's box and centre back at its place in {@code order[start, end)}. */
+    private void refreshData(int start, int end) {
+        for (int i = start; i < end; i++) {
+            BoundingBox box = objects.get(order[i]).bounds();
+            put(boxes, 6 * i, box.min());
+            put(boxes, 6 * i + 3, box.max());
+            put(centres, 3 * i, box.centre());
+        }
     }
 
     /** The axis along which the centres spread most, or −1 if they all coincide. */

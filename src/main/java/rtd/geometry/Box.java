@@ -1,5 +1,6 @@
 package rtd.geometry;
 
+import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -79,6 +80,12 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
     @Override
     public BoundingBox bounds() {
         return BoundingBox.around(0, min, max);
+    }
+
+    /** The same shape in the same place, whatever its colour and finish. */
+    @Override
+    public Object sameTest() {
+        return List.of(min, max);
     }
 
     @Override

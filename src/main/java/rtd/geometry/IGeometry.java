@@ -47,6 +47,15 @@ public interface IGeometry {
     /** The object's finish, for shading. */
     Material material();
 
+    /**
+     * A value that equals another object's exactly when the two report the same hit, to the
+     * last bit, for every ray: the same shape in the same place. The accelerator keeps only the
+     * first of such twins, which wins every tie. By default an object is its own and only twin.
+     */
+    default Object sameTest() {
+        return this;
+    }
+
     /** The kind of object, as the scene file names it ("sphere", "plane", ...), for statistics. */
     String kind();
 }

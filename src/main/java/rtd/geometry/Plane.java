@@ -1,5 +1,6 @@
 package rtd.geometry;
 
+import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -33,6 +34,12 @@ public record Plane(Vector3f point, Vector3f normal, Color color, Material mater
     @Override
     public BoundingBox bounds() {
         return BoundingBox.UNBOUNDED;
+    }
+
+    /** The same shape in the same place, whatever its colour and finish. */
+    @Override
+    public Object sameTest() {
+        return List.of(point, normal);
     }
 
     @Override

@@ -1,5 +1,6 @@
 package rtd.geometry;
 
+import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -71,6 +72,12 @@ public record Sphere(Vector3f center, float radius, Color color, Material materi
     @Override
     public BoundingBox bounds() {
         return BoundingBox.around(radius * (1 + 2e-3), center);
+    }
+
+    /** The same shape in the same place, whatever its colour and finish. */
+    @Override
+    public Object sameTest() {
+        return List.of(center, radius);
     }
 
     @Override

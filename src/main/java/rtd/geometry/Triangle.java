@@ -1,5 +1,6 @@
 package rtd.geometry;
 
+import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -130,6 +131,12 @@ public final class Triangle implements IGeometry {
         Vector3f p3 = corner(2);
         double size = p2.subtract(p1).magnitude() + p3.subtract(p1).magnitude();
         return BoundingBox.around(16 * BoundingBox.UNIT_ROUNDOFF * size, p1, p2, p3);
+    }
+
+    /** The same corners in the same order, whatever its colour, finish and corner normals. */
+    @Override
+    public Object sameTest() {
+        return List.of(corner(0), corner(1), corner(2));
     }
 
     @Override

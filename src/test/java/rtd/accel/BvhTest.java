@@ -47,4 +47,20 @@ class BvhTest {
         assertThat(withBvh.work().testsPerRay()).isLessThan(200.0);
         assertThat(withBvh.work().nodesPerRay()).isPositive().isLessThan(400.0);
     }
+
+    @Test
+    void manyCopiesOfOneSphereCostOneTestAndTheFirstInTheFileStillWins() {
+        java.util.List<rtd.geometry.IGeometry> objects = new java.util.ArrayList<>();
+        objects.add(Scenes.sphere(6, 0, 0, 1, 0x0000FF));
+        for (int i = 0; i < 20_000; i++) {
+            objects.add(Scenes.sphere(0, 0, 0, 2, i)); // 20,000 twins of different colours
+        }
+        objects.add(Scenes.sphere(0, 0, 3, 0.5f, 0xFF0000)); // nearer than the twins where it covers them
+        Scene scene = new Scene(Color.BLACK, Scenes.frontCamera(20, 20), objects);
+        RenderResult withBvh = Renders.parallel(scene, 160, 120, 2, true);
+        assertThat(withBvh.image().rgb()).isEqualTo(Renders.paper(scene, 160, 120));
+        assertThat(withBvh.image().rgb(80, 60)).isEqualTo(0xFF0000);
+        assertThat(withBvh.image().rgb(80 - 30, 60)).isEqualTo(0); // the first twin, colour 0
+        assertThat(withBvh.work().testsPerRay()).isLessThan(3.0);
+    }
 }
