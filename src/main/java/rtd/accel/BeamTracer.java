@@ -1,7 +1,6 @@
 package rtd.accel;
 
 import java.util.Arrays;
-import rtd.geometry.IGeometry;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.WorkCount;
@@ -39,8 +38,6 @@ final class BeamTracer {
     private final float[] half = new float[3];
     private final float[] inverse = new float[3];
     private float length;
-    /** How much a box grows per unit of t, as for each ray ({@link NearestHit#growth}). */
-    private float cone;
     /** The exit of the grown box of the last {@link #grownEntry}. */
     private float exit;
     /** The rays of the square and their nearest hits; reused from square to square. */
@@ -142,28 +139,27 @@ final class BeamTracer {
         inverse[1] = 1f / beam.dy;
         inverse[2] = 1f / beam.dz;
         length = (float) Math.sqrt((beam.dx * beam.dx) + (beam.dy * beam.dy) + (beam.dz * beam.dz));
-        cone = IGeometry.ROUNDING_CONE * length;
         return true;
     }
 
     /** Walks down the tree, nearer child first, skipping boxes entered beyond every ray's nearest hit. */
     private void walk() {
         int[] nodes = bvh.nodes;
-        float reach = NearestHit.reach(bvh.bounds, centre[0], centre[1], centre[2], half[0], half[1], half[2], length);
+        float reach = NearestHit.reach(bvh, centre[0], centre[1], centre[2], half[0], half[1], half[2], length);
         int stackSize = 0;
         int node = 0;
         nodesVisited++;
-        if (!worthVisiting(grownEntry(bvh.bounds, node, growth(reach)))) {
+        if (!worthVisiting(grownEntry(bvh.bounds, node, growth(node, reach)))) {
             return;
         }
         float nodeExit = FastMath.min(exit, reach);
         while (true) {
             int first = nodes[2 * node];
             if (nodes[2 * node + 1] != Bvh.INNER) {
-                testLeaf(node, growth(nodeExit));
+                testLeaf(node, growth(node, nodeExit));
             } else {
                 nodesVisited += 2;
-                float grow = growth(nodeExit);
+                float grow = growth(node, nodeExit);
                 int near = first;
                 int far = first + 1;
                 float nearEntry = grownEntry(bvh.bounds, near, grow);
@@ -208,10 +204,9 @@ final class BeamTracer {
         return entry != MISS && entry <= farthestSkip;
     }
 
-    /** The rounding margin of boxes in which no ray of the beam is beyond {@code reach} (the same for every ray). */
-    private float growth(float reach) {
-        float grow = cone * reach;
-        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
+    /** The rounding margin of {@code node}'s objects for rays not beyond {@code reach}: the same for every ray of the beam. */
+    private float growth(int node, float reach) {
+        return NearestHit.growth(bvh.rounding, node, reach * length);
     }
 
     /**

@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Rounding;
 import rtd.scene.Scene;
 
 /**
@@ -30,6 +31,11 @@ public final class Bvh {
 
     final float[] bounds;
     final int[] nodes;
+    /**
+     * How much node {@code i}'s box grows as a ray runs: the largest {@link Rounding} of its
+     * objects, linear at {@code [2i]} and quadratic at {@code [2i+1]}.
+     */
+    final float[] rounding;
     /** The tree's objects in leaf order. */
     final LeafObjects leaves;
     /** The objects without a box, in file order, and their places in the file. */
@@ -55,10 +61,34 @@ public final class Bvh {
             }
         }
         this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
+        this.rounding = rounding(nodes, sorted);
         this.unbounded = unbounded.toArray(IGeometry[]::new);
         this.unboundedOrder = unboundedOrder;
         this.maxDepth = builder.maxDepth();
         this.objects = objects;
+    }
+
+    /**
+     * Each node's largest rounding, from the leaves up: a node's children have larger numbers
+     * than the node itself ({@link Compaction}), so one pass backwards meets them first.
+     */
+    private static float[] rounding(int[] nodes, IGeometry[] objects) {
+        float[] rounding = new float[nodes.length];
+        for (int node = nodes.length / 2 - 1; node >= 0; node--) {
+            Rounding most = new Rounding(0, 0);
+            if (nodes[2 * node + 1] == INNER) {
+                int child = nodes[2 * node];
+                most = new Rounding(Math.max(rounding[2 * child], rounding[2 * child + 2]),
+                        Math.max(rounding[2 * child + 1], rounding[2 * child + 3]));
+            } else {
+                for (int i = nodes[2 * node]; i < nodes[2 * node] + nodes[2 * node + 1]; i++) {
+                    most = most.max(objects[i].rounding());
+                }
+            }
+            rounding[2 * node] = most.linear();
+            rounding[2 * node + 1] = most.quadratic();
+        }
+        return rounding;
     }
 
     private static void putInLeafOrder(int i, int[] order, List<IGeometry> bounded, int[] boundedOrder,

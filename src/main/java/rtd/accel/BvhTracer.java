@@ -117,7 +117,7 @@ public final class BvhTracer implements Tracer {
         int stackSize = 0;
         int node = 0;
         nodesVisited++;
-        if (!hit.worthVisiting(hit.entry(node, hit.growth(reach)))) {
+        if (!hit.worthVisiting(hit.entry(node, hit.growth(node, reach)))) {
             return;
         }
         float exit = FastMath.min(hit.exit(), reach);
@@ -127,7 +127,7 @@ public final class BvhTracer implements Tracer {
                 hit.testLeaf(node);
             } else {
                 nodesVisited += 2;
-                float grow = hit.growth(exit);
+                float grow = hit.growth(node, exit); // the node's rounding is its children's largest
                 int near = first;
                 int far = first + 1;
                 float nearEntry = hit.entry(near, grow);

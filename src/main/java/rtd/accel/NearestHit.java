@@ -13,10 +13,10 @@ import rtd.math.Vector3f;
  * the file. So the order in which leaves are visited does not change the answer; a tracer
  * only must not skip a leaf in which the ray could find a nearer hit ({@link #worthVisiting}).
  *
- * <p>Boxes are grown as the ray runs: an object's test may report a hit up to
- * {@code ROUNDING_CONE · t · |R|} outside its box ({@link IGeometry#bounds}). A walk knows a t
- * beyond which the ray cannot be in a node (its {@link #reach}, then each parent's exit), and
- * grows the node's children by that much ({@link #growth}).
+ * <p>Boxes are grown as the ray runs: an object's test may report a hit outside its box by
+ * a margin that grows with the distance the ray has run ({@link IGeometry#bounds}). A walk
+ * knows a t beyond which the ray cannot be in a node (its {@link #reach}, then each parent's
+ * exit), and grows the node's children by their margin there ({@link #growth}).
  *
  * <p>Kept as numbers, and reused from ray to ray, because a {@link Ray} kept in a field
  * would be allocated for every ray.
@@ -44,8 +44,8 @@ final class NearestHit {
     private float ix;
     private float iy;
     private float iz;
-    /** How much a box grows per unit of t: {@code ROUNDING_CONE · |R|}. */
-    private float cone;
+    /** |R|: a box grows with the distance {@code t·|R|} the ray has run. */
+    private float length;
     private float margin;
     private int best;
     private float bestT;
@@ -74,8 +74,7 @@ final class NearestHit {
         ix = 1f / dx;
         iy = 1f / dy;
         iz = 1f / dz;
-        float length = (float) Math.sqrt(dd);
-        cone = IGeometry.ROUNDING_CONE * length;
+        length = (float) Math.sqrt(dd);
         margin = SKIP_MARGIN * (float) Math.sqrt(ox * ox + oy * oy + oz * oz) / length;
         best = -1;
         bestT = Float.NaN;
@@ -89,14 +88,16 @@ final class NearestHit {
      * the origin (summing over the axes), and {@code t·|R|} from it.
      */
     float reach() {
-        return reach(bvh.bounds, ox, oy, oz, 0, 0, 0, (float) Math.sqrt(dd));
+        return reach(bvh, ox, oy, oz, 0, 0, 0, length);
     }
 
     /** {@link #reach} for origins within {@code (x, y, z) ± half} and direction length {@code length}. */
-    static float reach(float[] bounds, float x, float y, float z, float halfX, float halfY, float halfZ, float length) {
+    static float reach(Bvh bvh, float x, float y, float z, float halfX, float halfY, float halfZ, float length) {
+        float[] bounds = bvh.bounds;
         double far = farthest(x, bounds[0], bounds[3]) + halfX + farthest(y, bounds[1], bounds[4]) + halfY
                 + farthest(z, bounds[2], bounds[5]) + halfZ;
-        float reach = (float) (far / (length * (1 - 3.0 * IGeometry.ROUNDING_CONE)) * (1 + 1e-6));
+        double widest = IGeometry.ROUNDING_CONE + bvh.rounding[0]; // the root's rounding is the largest
+        float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
         return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
     }
 
@@ -104,9 +105,18 @@ final class NearestHit {
         return Math.max(Math.abs(origin - min), Math.abs(origin - max));
     }
 
-    /** How much to grow the boxes in which the ray cannot be beyond {@code reach}. */
-    float growth(float reach) {
-        float grow = cone * reach;
+    /**
+     * How much to grow the boxes of {@code node}'s objects, for a ray that cannot be in them
+     * beyond {@code reach}: their {@link rtd.geometry.Rounding} at the distance the ray runs.
+     */
+    float growth(int node, float reach) {
+        return growth(bvh.rounding, node, reach * length);
+    }
+
+    /** {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)} of {@code node}, infinite if that is not a number. */
+    static float growth(float[] rounding, int node, float distance) {
+        float grow = rounding[2 * node] * distance
+                + Math.min(IGeometry.ROUNDING_CONE * distance, rounding[2 * node + 1] * distance * distance);
         return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
     }
 

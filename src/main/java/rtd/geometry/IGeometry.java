@@ -15,8 +15,8 @@ import rtd.math.Vector3f;
 public interface IGeometry {
 
     /**
-     * How far a float intersection test may report a hit away from its object, relative to the
-     * distance the ray has run: the contract of {@link #bounds}.
+     * How far a float intersection test may report a hit away from its object at most,
+     * relative to the distance the ray has run: the widest cone of {@link #bounds}' contract.
      */
     float ROUNDING_CONE = 1.1e-3f;
 
@@ -35,11 +35,21 @@ public interface IGeometry {
      *
      * <p>It must hold every hit that {@link #intersect} can report, including those that
      * single-precision rounding adds near the surface, up to a margin that grows with the
-     * distance the ray has run: for any ray {@code O + t·R}, a reported hit at t lies in the box
-     * grown on every side by {@code ROUNDING_CONE · t · |R|}. The box does not depend on a
+     * distance {@code L = t·|R|} the ray has run to the hit: for any ray {@code O + t·R}, a
+     * reported hit at t lies in the box grown on every side by {@link #rounding}'s
+     * {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)}. The box does not depend on a
      * camera, so the hierarchy finds the loop's hit for rays from anywhere.
      */
     BoundingBox bounds();
+
+    /**
+     * How fast the rounding of {@link #intersect} lets a reported hit stray from the object's
+     * box as the ray runs farther (see {@link #bounds}). By default the widest cone; a shape
+     * whose test rounds less says so, and its boxes grow less in the hierarchy.
+     */
+    default Rounding rounding() {
+        return Rounding.WIDEST;
+    }
 
     /** The flat colour the object paints the pixels whose ray it is nearest on. */
     Color color();

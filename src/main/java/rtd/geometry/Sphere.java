@@ -65,13 +65,20 @@ public record Sphere(Vector3f center, float radius, Color color, Material materi
      * test hits where an exact test against a sphere of radius {@code r'} would, with
      * {@code r'² ≤ r² + δ} and {@code δ = 15u·D² + 6u·r²} (u the unit roundoff, D = |O − M|;
      * first order, we add a quarter). So the surface moves out by at most
-     * {@code √δ + 8u·D ≤ 1.06e-3·D + 6.7e-4·r}. A hit at t has {@code D ≤ t|R| + r'}, which
-     * makes that {@code 1.062e-3·t|R| + 1.74e-3·r}: the first part is the cone of
-     * {@link IGeometry#bounds}, the second is grown here, as {@code 2e-3·r}.
+     * {@code min(√δ, δ/2r) + 8u·D}. A hit at t has {@code D ≤ L + r'} with {@code L = t|R|},
+     * which bounds that by {@code 1.062e-3·L + 1.74e-3·r} through the root, and by
+     * {@code (18.75u/2r)·L² + 2e-6·L + 1e-6·r} through the quotient. The parts that grow with L
+     * are the sphere's {@link #rounding}; the rest is grown here, as {@code 2e-3·r}.
      */
     @Override
     public BoundingBox bounds() {
         return BoundingBox.around(radius * (1 + 2e-3), center);
+    }
+
+    /** {@code 2e-6·L + min(ROUNDING_CONE·L, (18.75u/2r)·L²)}: see {@link #bounds}. */
+    @Override
+    public Rounding rounding() {
+        return new Rounding(2e-6f, (float) (18.75 * 0x1p-24 / (2.0 * radius) * (1 + 1e-3)));
     }
 
     /** The same shape in the same place, whatever its colour and finish. */

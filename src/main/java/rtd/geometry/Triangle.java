@@ -123,14 +123,28 @@ public final class Triangle implements IGeometry {
         return blend.normalize();
     }
 
-    /** The corners' box, grown by a few rounding errors of the size and coordinates. */
+    /**
+     * The corners' box, grown by a few rounding errors of the size and coordinates. The side
+     * tests err by a few units of the last place of the distances involved, except that the
+     * normal of a thin triangle, {@code n = e1 × e2}, is as uncertain as {@code |e1||e2|} is
+     * large against {@code |n|}: it tilts the side tests by that much more.
+     */
     @Override
     public BoundingBox bounds() {
         Vector3f p1 = corner(0);
         Vector3f p2 = corner(1);
         Vector3f p3 = corner(2);
-        double size = p2.subtract(p1).magnitude() + p3.subtract(p1).magnitude();
-        return BoundingBox.around(16 * BoundingBox.UNIT_ROUNDOFF * size, p1, p2, p3);
+        double e1 = p2.subtract(p1).magnitude();
+        double e2 = p3.subtract(p1).magnitude();
+        double n = planeNormal().magnitude();
+        double thinness = n > 0 ? e1 * e2 / n : 1; // never hit if n = 0; so thin a box may become infinite, and be tested by every ray
+        return BoundingBox.around(32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * thinness, p1, p2, p3);
+    }
+
+    /** The plane's t and the hit point err by a few units of the last place of the distance run. */
+    @Override
+    public Rounding rounding() {
+        return Rounding.linear(1e-5f);
     }
 
     /** The same corners in the same order, whatever its colour, finish and corner normals. */

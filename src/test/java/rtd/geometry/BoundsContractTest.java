@@ -13,8 +13,8 @@ import rtd.testing.MixedScenes;
 
 /**
  * Every shape keeps the promise of {@link IGeometry#bounds}: a hit its float test reports at t
- * lies in its box grown by {@code ROUNDING_CONE · t · |R|}, for rays from near and far, where
- * rounding makes the tests report hits beside the true surface.
+ * lies in its box grown by its {@link Rounding} at the distance {@code t·|R|}, for rays from near
+ * and far, where rounding makes the tests report hits beside the true surface.
  */
 @DisplayName("Each shape's box holds every hit its test reports")
 class BoundsContractTest {
@@ -34,7 +34,10 @@ class BoundsContractTest {
                 continue;
             }
             hits++;
-            double grow = IGeometry.ROUNDING_CONE * hit.t() * (double) ray.direction().magnitude();
+            double distance = hit.t() * (double) ray.direction().magnitude();
+            Rounding rounding = object.rounding();
+            double grow = rounding.linear() * distance
+                    + Math.min(IGeometry.ROUNDING_CONE * distance, rounding.quadratic() * distance * distance);
             Vector3f o = ray.origin();
             Vector3f d = ray.direction();
             double[] p = {o.x() + (double) d.x() * hit.t(), o.y() + (double) d.y() * hit.t(), o.z() + (double) d.z() * hit.t()};
