@@ -18,7 +18,7 @@ import rtd.accel.Bvh;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.image.Picture;
-import rtd.render.FlatShader;
+import rtd.shade.FlatShader;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;

@@ -1,11 +1,27 @@
 package rtd.render;
 
+import rtd.image.Rgb;
+
 /**
- * Decides the colour a ray sees from what it hit: flat colours as in the paper
- * ({@link FlatShader}), and, above the same hit query, shading with lights or a debug view.
+ * Decides the colour a ray sees from what it hit: the paper's flat colours
+ * ({@code rtd.shade.FlatShader}), shading with lights ({@code rtd.shade.WhittedShader}), or a
+ * debug view. It sits above the hit query: a {@link Tracer} has found the hit already, and a
+ * shader that follows secondary rays asks its own tracer for theirs.
+ *
+ * <p>One per thread, with that thread's tracer: a shader may count its work.
  */
 public interface Shader {
 
-    /** The colour, as {@code 0xRRGGBB}, of ray {@code i} of {@code rays}, whose nearest hit is entry {@code i} of {@code hits}. */
-    int rgb(RayBundle rays, HitBuffer hits, int i);
+    /** The colour, as light (channels from 0 to 1, or beyond), of ray {@code i} of {@code rays}, whose nearest hit is entry {@code i} of {@code hits}. */
+    Rgb colour(RayBundle rays, HitBuffer hits, int i);
+
+    /** {@link #colour} as the picture stores it, {@code 0xRRGGBB}: clamped and rounded ({@link Rgb#toColor}). */
+    default int rgb(RayBundle rays, HitBuffer hits, int i) {
+        return colour(rays, hits, i).toColor().getRGB();
+    }
+
+    /** The rays this shader followed beyond the camera's, by kind ("shadow", "reflected", ...); none by default. */
+    default java.util.Map<String, Long> secondaryRays() {
+        return java.util.Map.of();
+    }
 }

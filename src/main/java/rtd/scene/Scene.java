@@ -10,7 +10,8 @@ import rtd.image.Color;
 import rtd.math.Ray;
 
 /**
- * A scene: a background colour, a camera and the objects (paper, sections 4.1 and 4.3).
+ * A scene: a background colour, a camera, the objects and the lights (paper, sections 4.1 and
+ * 4.3; the lights are Part II's).
  *
  * <p>This is where the paper's algorithm (Listing 3.1) lives, in the paper's shape:
  * {@link #render} makes a ray for every pixel (ray generation, section 3.2.1) and
@@ -21,12 +22,19 @@ import rtd.math.Ray;
  * @param ambient the colour of every pixel whose ray hits nothing
  * @param camera  makes the rays
  * @param objects the objects, in the order of the scene file; on a tie the first wins
+ * @param lights  the point lights; none: the paper's flat colours
  */
-public record Scene(Color ambient, ICamera camera, List<IGeometry> objects) {
+public record Scene(Color ambient, ICamera camera, List<IGeometry> objects, List<Light> lights) {
 
-    /** Keeps an unmodifiable copy of the objects, so that a scene never changes. */
+    /** Keeps unmodifiable copies of the objects and lights, so that a scene never changes. */
     public Scene {
         objects = List.copyOf(objects);
+        lights = List.copyOf(lights);
+    }
+
+    /** A scene without lights, as the paper's: drawn in flat colours. */
+    public Scene(Color ambient, ICamera camera, List<IGeometry> objects) {
+        this(ambient, camera, objects, List.of());
     }
 
     /** Listing 4.2: one ray per pixel, traced, and its colour set on the image. */

@@ -1,7 +1,7 @@
 package rtd.testing;
 
 import rtd.accel.Bvh;
-import rtd.render.FlatShader;
+import rtd.shade.FlatShader;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;

@@ -1,5 +1,10 @@
-package rtd.render;
+package rtd.shade;
 
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.image.Color;
+import rtd.image.Rgb;
+import rtd.render.Shader;
 import rtd.scene.Scene;
 
 /**
@@ -24,5 +29,10 @@ public final class FlatShader implements Shader {
     public int rgb(RayBundle rays, HitBuffer hits, int i) {
         int object = hits.index(i);
         return object < 0 ? background : colours[object];
+    }
+
+    @Override
+    public Rgb colour(RayBundle rays, HitBuffer hits, int i) {
+        return Rgb.of(Color.fromRGB(rgb(rays, hits, i)));
     }
 }

@@ -1,0 +1,41 @@
+package rtd.shade;
+
+/**
+ * Snell's law at a surface (Part II, "Light", step 5): the ratio {@code n = n1/n2} of the
+ * indices of refraction on the ray's side and beyond, the cosines of the angles of incidence
+ * and of the refracted ray, and whether the light is totally reflected instead
+ * ({@code sin²θt = n²(1 − cos²θi) > 1}). Air outside every object; nested objects are not
+ * modelled.
+ *
+ * @param from           n1, the index on the ray's side
+ * @param to             n2, the index beyond the surface
+ * @param cosIncidence   {@code cos θi = E·N}
+ * @param sin2Transmitted {@code sin²θt}
+ */
+record Snell(float from, float to, float cosIncidence, float sin2Transmitted) {
+
+    /** The law at {@code surface}: entering the object from air, or leaving it into air. */
+    static Snell at(Surface surface) {
+        float ior = surface.material().ior();
+        float from = surface.inside() ? ior : 1;
+        float to = surface.inside() ? 1 : ior;
+        float ratio = from / to;
+        float cos = surface.eye().dot(surface.normal());
+        return new Snell(from, to, cos, ratio * ratio * (1 - cos * cos));
+    }
+
+    /** {@code n1 / n2}. */
+    float ratio() {
+        return from / to;
+    }
+
+    /** Past the critical angle: no light passes, all is reflected inside. */
+    boolean totalInternalReflection() {
+        return sin2Transmitted > 1;
+    }
+
+    /** {@code cos θt = √(1 − sin²θt)}. */
+    float cosTransmitted() {
+        return (float) Math.sqrt(1 - sin2Transmitted);
+    }
+}

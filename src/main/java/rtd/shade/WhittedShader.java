@@ -1,0 +1,137 @@
+package rtd.shade;
+
+import java.util.Map;
+import java.util.TreeMap;
+import rtd.geometry.Hit;
+import rtd.geometry.Material;
+import rtd.image.Rgb;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.render.Shader;
+import rtd.render.Tracer;
+import rtd.scene.Light;
+import rtd.scene.Scene;
+
+/**
+ * Whitted ray tracing: the colour a ray sees, with lights, shadows, mirror reflection and
+ * refraction (Part II, "Light"; the model of <i>The Ray Tracer Challenge</i>). The paper stops
+ * at the camera's rays and flat colours and names these secondary rays as the way on (sections
+ * 3.2.3 and 5); this is that next chapter.
+ *
+ * <p>{@link #shade} is the one place where a ray's colour is decided: the surface lit by each
+ * light ({@link Lighting}), then what a mirror shows ({@link #reflected}), then what shows
+ * through ({@link #refracted}), mixed by Fresnel's law where a surface does both. Every ray,
+ * secondary or not, asks the same question of the same {@link Tracer}: what does it hit?
+ */
+public final class WhittedShader implements Shader {
+
+    /** How many times a ray may be reflected or refracted: the camera's ray starts with this many. */
+    public static final int BOUNCES = 5;
+
+    private final Scene scene;
+    private final Tracer tracer;
+    private final Rgb background;
+    private long shadowRays;
+    private long reflectedRays;
+    private long refractedRays;
+
+    /** A shader for {@code scene} that follows secondary rays with {@code tracer} (one per thread). */
+    public WhittedShader(Scene scene, Tracer tracer) {
+        this.scene = scene;
+        this.tracer = tracer;
+        this.background = Rgb.of(scene.ambient());
+    }
+
+    @Override
+    public Rgb colour(RayBundle rays, HitBuffer hits, int i) {
+        return shade(rays.ray(i), hits.hit(i, rays, scene.objects()), BOUNCES);
+    }
+
+    /** The colour {@code ray} sees, following at most {@code remaining} more bounces. */
+    public Rgb colourAt(Ray ray, int remaining) {
+        return shade(ray, tracer.nearestHit(ray), remaining);
+    }
+
+    /**
+     * Step 1 to 6: nothing hit shows the background; else the surface's own light, plus what
+     * its mirror reflects, plus what shows through it.
+     */
+    Rgb shade(Ray ray, Hit hit, int remaining) {
+        if (hit == null) {
+            return background;
+        }
+        Surface surface = Surface.at(ray, hit);
+        Rgb lit = lit(surface);
+        Rgb reflected = reflected(surface, remaining);
+        Rgb refracted = refracted(surface, remaining);
+        Material material = surface.material();
+        if (material.reflective() > 0 && material.transparency() > 0) {
+            float reflectance = Fresnel.schlick(surface);
+            return lit.plus(reflected.times(reflectance)).plus(refracted.times(1 - reflectance));
+        }
+        return lit.plus(reflected).plus(refracted);
+    }
+
+    /** Step 3: the light of every light at the point, or only its ambient share where the light is shadowed. */
+    private Rgb lit(Surface surface) {
+        Rgb sum = Rgb.BLACK;
+        for (Light light : scene.lights()) {
+            boolean shadow = isShadowed(surface.over(), light);
+            sum = sum.plus(Lighting.of(surface.material(), surface.colour(), light, surface.over(), surface.eye(),
+                    surface.normal(), shadow));
+        }
+        return sum;
+    }
+
+    /** Whether a ray from {@code point} towards the light hits any object nearer than the light. */
+    boolean isShadowed(Vector3f point, Light light) {
+        shadowRays++;
+        Vector3f toLight = light.position().subtract(point);
+        Hit blocker = tracer.nearestHit(new Ray(point, toLight));
+        return blocker != null && blocker.distance() < toLight.magnitude();
+    }
+
+    /** Step 4: {@code reflective · shade(ray from over along R − 2(R·N)N)}; black for a matt surface or the last bounce. */
+    private Rgb reflected(Surface surface, int remaining) {
+        float reflective = surface.material().reflective();
+        if (reflective <= 0 || remaining <= 0) {
+            return Rgb.BLACK;
+        }
+        reflectedRays++;
+        Vector3f direction = surface.ray().direction();
+        Vector3f normal = surface.normal();
+        Vector3f mirrored = direction.subtract(normal.multiply(2 * direction.dot(normal)));
+        return colourAt(new Ray(surface.over(), mirrored), remaining - 1).times(reflective);
+    }
+
+    /**
+     * Step 5: Snell's law. Entering, from air (1) into the object's ior; leaving, the other way.
+     * Past the critical angle the light is totally reflected inside, and nothing comes through:
+     * black.
+     */
+    private Rgb refracted(Surface surface, int remaining) {
+        float transparency = surface.material().transparency();
+        if (transparency <= 0 || remaining <= 0) {
+            return Rgb.BLACK;
+        }
+        Snell snell = Snell.at(surface);
+        if (snell.totalInternalReflection()) {
+            return Rgb.BLACK;
+        }
+        refractedRays++;
+        Vector3f direction = surface.normal().multiply(snell.ratio() * snell.cosIncidence() - snell.cosTransmitted())
+                .subtract(surface.eye().multiply(snell.ratio()));
+        return colourAt(new Ray(surface.under(), direction), remaining - 1).times(transparency);
+    }
+
+    @Override
+    public Map<String, Long> secondaryRays() {
+        Map<String, Long> rays = new TreeMap<>();
+        rays.put("shadow", shadowRays);
+        rays.put("reflected", reflectedRays);
+        rays.put("refracted", refractedRays);
+        return rays;
+    }
+}
