@@ -6,6 +6,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import java.util.function.Function;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -18,7 +19,9 @@ import rtd.accel.Bvh;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.image.Picture;
+import rtd.render.Shader;
 import rtd.shade.FlatShader;
+import rtd.shade.WhittedShader;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
@@ -74,6 +77,11 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "
             + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
     private boolean paper;
+
+    @Option(names = "--samples", paramLabel = "N", defaultValue = "1", converter = PositiveInt.class,
+            description = "anti-aliasing: N x N rays per pixel, their colours averaged (default: ${DEFAULT-VALUE}, "
+                    + "one ray through the pixel's corner, as the paper)")
+    private int samples;
 
     @Option(names = "--stats", description = "print the time of each phase and the work per ray to standard error")
     private boolean stats;
@@ -131,7 +139,7 @@ public final class RtdCommand implements Callable<Integer> {
         Bvh bvh = paper ? null : buildBvh(scene);
         timer.endPhase("build");
 
-        RenderResult result = paper ? renderAsThePaper(scene) : renderInParallel(scene, bvh, err);
+        RenderResult result = paper ? renderAsThePaper(scene, err) : renderInParallel(scene, bvh, err);
         timer.endPhase("render");
 
         writePicture(result, target, threads);
@@ -148,19 +156,30 @@ public final class RtdCommand implements Callable<Integer> {
         return useBvh ? Bvh.build(scene, threads) : null;
     }
 
-    /** All cores, with the BVH's tracer or the paper's loop ({@link LinearTracer}), in flat colours. */
+    /**
+     * All cores, with the BVH's tracer or the paper's loop ({@link LinearTracer}); in flat
+     * colours, or shaded ({@link WhittedShader}) if the scene has lights.
+     */
     private RenderResult renderInParallel(Scene scene, Bvh bvh, PrintWriter err) {
         Supplier<Tracer> tracers = bvh != null ? bvh::newTracer : () -> new LinearTracer(scene);
         FlatShader flat = new FlatShader(scene);
+        Function<Tracer, Shader> shaders = scene.lights().isEmpty() ? tracer -> flat : tracer -> new WhittedShader(scene, tracer);
         RenderProgress progress = new RenderProgress();
         boolean showProgress = !noProgress && Terminal.stderrIsTerminal();
         try (ProgressDisplay display = ProgressDisplay.start(showProgress, err, progress, width, height)) {
-            return ParallelRenderer.render(scene.camera(), tracers, tracer -> flat, width, height, threads, progress);
+            return ParallelRenderer.render(scene.camera(), tracers, shaders, width, height, samples, threads, progress);
         }
     }
 
-    /** {@code --paper}: the paper's {@link Scene#render} itself, one ray per pixel on this thread. */
-    private RenderResult renderAsThePaper(Scene scene) {
+    /**
+     * {@code --paper}: the paper's {@link Scene#render} itself, one ray per pixel on this
+     * thread, in the paper's flat colours.
+     */
+    private RenderResult renderAsThePaper(Scene scene, PrintWriter err) {
+        if (!scene.lights().isEmpty() || samples > 1) {
+            err.println("rtd: note: --paper draws as the paper does, one ray per pixel in flat colours: "
+                    + "the scene's lights and --samples are not used");
+        }
         BufferedImage image = scene.render(width, height);
         int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
         for (int i = 0; i < rgb.length; i++) {

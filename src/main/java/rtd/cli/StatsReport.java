@@ -21,14 +21,26 @@ final class StatsReport {
         line(text, "build", seconds.get("build"), bvh == null
                 ? "no BVH: the paper's loop tests every object"
                 : String.format(Locale.ROOT, "BVH of %,d nodes", bvh.nodeCount()));
-        line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays on %d thread%s, %.2f Mrays/s",
-                work.rays(), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
+        line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
+                work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
         line(text, "write", seconds.get("write"), output.toString());
         double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
         line(text, "total", total, "");
         text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests%s, %.2f BVH nodes visited%n",
                 work.testsPerRay(), byKind(work), work.nodesPerRay()));
         return text.toString();
+    }
+
+    /** " (2,073,600 camera, 1,234 shadow, ...)" when secondary rays were followed. */
+    private static String raysByKind(WorkCount work) {
+        if (work.secondaryRays().isEmpty()) {
+            return "";
+        }
+        StringBuilder kinds = new StringBuilder(String.format(Locale.ROOT, " (%,d camera", work.cameraRays()));
+        for (Map.Entry<String, Long> kind : work.secondaryRays().entrySet()) {
+            kinds.append(String.format(Locale.ROOT, ", %,d %s", kind.getValue(), kind.getKey()));
+        }
+        return kinds.append(')').toString();
     }
 
     /** " (12.50 sphere, 1.00 plane)" when the scene has more than one kind of object. */

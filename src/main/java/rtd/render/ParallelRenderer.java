@@ -1,6 +1,7 @@
 package rtd.render;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -10,6 +11,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import rtd.camera.ICamera;
+import rtd.image.Rgb;
 import rtd.image.Picture;
 
 /**
@@ -38,45 +40,113 @@ public final class ParallelRenderer {
      */
     public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, Function<Tracer, Shader> shaders,
             int width, int height, int threads, RenderProgress progress) {
+        return render(camera, tracers, shaders, width, height, 1, threads, progress);
+    }
+
+    /**
+     * As {@link #render(ICamera, Supplier, Function, int, int, int, RenderProgress)}, with
+     * {@code samples × samples} rays per pixel (anti-aliasing, Part II): ray (i, j) passes through
+     * the point {@code (x + (i + ½)/samples, y + (j + ½)/samples)}, and the pixel is the mean of
+     * their colours, each clamped to [0, 1] first. One sample is the ray through the corner.
+     */
+    public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, Function<Tracer, Shader> shaders,
+            int width, int height, int samples, int threads, RenderProgress progress) {
         int[] pixels = new int[width * height];
         AtomicInteger nextBand = new AtomicInteger();
         List<Tracer> used = new ArrayList<>();
+        List<Square> squares = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
         int bands = (height + TILE - 1) / TILE;
         for (int i = 0; i < Math.min(threads, bands); i++) { // more threads than bands would idle
             Tracer tracer = tracers.get();
             Shader shader = shaders.apply(tracer);
             used.add(tracer);
-            workers.add(() -> renderBands(camera, tracer, shader, width, height, pixels, nextBand, progress));
+            Square square = new Square(camera, tracer, shader, width, height, samples);
+            squares.add(square);
+            workers.add(() -> renderBands(square, pixels, nextBand, progress));
         }
         runAll(workers);
         WorkCount work = WorkCount.NONE;
         for (Tracer tracer : used) {
             work = work.plus(tracer.work());
         }
+        for (Square square : squares) {
+            work = work.plusSecondary(square.shader.secondaryRays());
+        }
         return new RenderResult(new Picture(width, height, pixels), work);
     }
 
-    private static void renderBands(ICamera camera, Tracer tracer, Shader shader, int width, int height, int[] pixels,
-            AtomicInteger nextBand, RenderProgress progress) {
-        RayBundle rays = new RayBundle(TILE * TILE);
-        HitBuffer hits = new HitBuffer(TILE * TILE);
-        int[] rgb = new int[TILE * TILE];
+    private static void renderBands(Square square, int[] pixels, AtomicInteger nextBand, RenderProgress progress) {
+        int width = square.width;
+        int height = square.height;
         for (int band = nextBand.getAndIncrement(); band * TILE < height; band = nextBand.getAndIncrement()) {
             int top = band * TILE;
             int bottom = Math.min(height, top + TILE);
             for (int left = 0; left < width; left += TILE) {
                 int right = Math.min(width, left + TILE);
-                rays.fill(camera, left, top, right, bottom, width, height);
-                tracer.traceAll(rays, hits);
-                for (int i = 0; i < rays.count(); i++) {
-                    rgb[i] = shader.rgb(rays, hits, i);
-                }
+                int[] rgb = square.render(left, top, right, bottom);
                 for (int y = top; y < bottom; y++) { // the square's rows, into the picture's
                     System.arraycopy(rgb, (y - top) * (right - left), pixels, y * width + left, right - left);
                 }
             }
             progress.rowsDone(bottom - top);
+        }
+    }
+
+    /** One thread's means to render a square of pixels: its tracer, its shader, and room for the rays, hits and colours. */
+    private static final class Square {
+        private final ICamera camera;
+        private final Tracer tracer;
+        private final Shader shader;
+        private final int width;
+        private final int height;
+        private final int samples;
+        private final RayBundle rays = new RayBundle(TILE * TILE);
+        private final HitBuffer hits = new HitBuffer(TILE * TILE);
+        private final int[] rgb = new int[TILE * TILE];
+        private final float[] sum = new float[3 * TILE * TILE];
+
+        Square(ICamera camera, Tracer tracer, Shader shader, int width, int height, int samples) {
+            this.camera = camera;
+            this.tracer = tracer;
+            this.shader = shader;
+            this.width = width;
+            this.height = height;
+            this.samples = samples;
+        }
+
+        /** The colours of the pixels {@code [left, right) × [top, bottom)}, row by row. */
+        int[] render(int left, int top, int right, int bottom) {
+            if (samples == 1) {
+                rays.fill(camera, left, top, right, bottom, width, height);
+                tracer.traceAll(rays, hits);
+                for (int i = 0; i < rays.count(); i++) {
+                    rgb[i] = shader.rgb(rays, hits, i);
+                }
+                return rgb;
+            }
+            Arrays.fill(sum, 0);
+            for (int j = 0; j < samples; j++) {
+                for (int i = 0; i < samples; i++) {
+                    rays.fill(camera, left, top, right, bottom, width, height, (i + 0.5f) / samples, (j + 0.5f) / samples);
+                    tracer.traceAll(rays, hits);
+                    for (int k = 0; k < rays.count(); k++) {
+                        Rgb colour = shader.colour(rays, hits, k);
+                        sum[3 * k] += clamp(colour.red());
+                        sum[3 * k + 1] += clamp(colour.green());
+                        sum[3 * k + 2] += clamp(colour.blue());
+                    }
+                }
+            }
+            float n = samples * samples;
+            for (int k = 0; k < rays.count(); k++) {
+                rgb[k] = new Rgb(sum[3 * k] / n, sum[3 * k + 1] / n, sum[3 * k + 2] / n).toColor().getRGB();
+            }
+            return rgb;
+        }
+
+        private static float clamp(float channel) {
+            return channel > 0 ? Math.min(1f, channel) : 0f;
         }
     }
 

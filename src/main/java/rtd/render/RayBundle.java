@@ -34,6 +34,9 @@ public final class RayBundle {
     private int width;
     private int height;
     private boolean made;
+    /** Where in each pixel the rays pass: 0 is the corner (Listing 4.1), else a sample's offset. */
+    private float sampleX;
+    private float sampleY;
 
     /** An empty bundle with room for {@code capacity} rays. */
     public RayBundle(int capacity) {
@@ -51,6 +54,17 @@ public final class RayBundle {
      * are made on first use.
      */
     public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height) {
+        fill(camera, left, top, right, bottom, width, height, 0, 0);
+    }
+
+    /**
+     * As {@link #fill(ICamera, int, int, int, int, int, int)}, with each ray through the point
+     * {@code (x + sampleX, y + sampleY)} of its pixel instead of the corner (anti-aliasing).
+     */
+    public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height, float sampleX,
+            float sampleY) {
+        this.sampleX = sampleX;
+        this.sampleY = sampleY;
         this.camera = camera;
         this.left = left;
         this.top = top;
@@ -80,7 +94,7 @@ public final class RayBundle {
         int i = 0;
         for (int y = top; y < bottom; y++) {
             for (int x = left; x < right; x++) {
-                store(i++, camera.generateRay(x, y, width, height));
+                store(i++, rayOf(x, y));
             }
         }
         made = true;
@@ -103,7 +117,15 @@ public final class RayBundle {
     public Ray corner(int k) {
         int x = k % 2 == 0 ? left : right - 1;
         int y = k < 2 ? top : bottom - 1;
-        return camera.generateRay(x, y, width, height);
+        return rayOf(x, y);
+    }
+
+    /** The camera's ray of pixel (x, y): through its corner, as Listing 4.1, or through the sample's point. */
+    private Ray rayOf(int x, int y) {
+        if (sampleX == 0 && sampleY == 0) {
+            return camera.generateRay(x, y, width, height);
+        }
+        return camera.generateRay(x + sampleX, y + sampleY, width, height);
     }
 
     private void store(int i, Ray ray) {
@@ -129,7 +151,7 @@ public final class RayBundle {
     public Ray ray(int i) {
         if (camera != null) {
             int squareWidth = right - left;
-            return camera.generateRay(left + i % squareWidth, top + i / squareWidth, width, height);
+            return rayOf(left + i % squareWidth, top + i / squareWidth);
         }
         return new Ray(new Vector3f(originX[i], originY[i], originZ[i]),
                 new Vector3f(directionX[i], directionY[i], directionZ[i]));

@@ -15,14 +15,42 @@ import rtd.geometry.IGeometry;
  * @param testsByKind  intersection tests per kind of object ("sphere", "triangle", ...)
  * @param nodesVisited bounding-volume nodes visited
  */
-public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited) {
+public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited, Map<String, Long> secondaryRays) {
 
     /** No work at all. */
     public static final WorkCount NONE = new WorkCount(0, Map.of(), 0);
 
-    /** Keeps an unmodifiable, sorted copy of the counts. */
+    /** Keeps unmodifiable, sorted copies of the counts. */
     public WorkCount {
         testsByKind = Collections.unmodifiableMap(new TreeMap<>(testsByKind));
+        secondaryRays = Collections.unmodifiableMap(new TreeMap<>(secondaryRays));
+    }
+
+    /** Work without secondary rays counted apart. */
+    public WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited) {
+        this(rays, testsByKind, nodesVisited, Map.of());
+    }
+
+    /** This work, and {@code secondary} rays more by kind (which {@link #rays} already counts: the tracer traced them). */
+    public WorkCount plusSecondary(Map<String, Long> secondary) {
+        return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary));
+    }
+
+    /** The rays the camera made: all rays traced but the secondary ones. */
+    public long cameraRays() {
+        long secondary = 0;
+        for (long count : secondaryRays.values()) {
+            secondary += count;
+        }
+        return rays - secondary;
+    }
+
+    private static Map<String, Long> sum(Map<String, Long> a, Map<String, Long> b) {
+        Map<String, Long> sum = new TreeMap<>(a);
+        for (Map.Entry<String, Long> entry : b.entrySet()) {
+            sum.put(entry.getKey(), sum.getOrDefault(entry.getKey(), 0L) + entry.getValue());
+        }
+        return sum;
     }
 
     /** One ray's work in the paper's loop: a test of each of {@code objects}, times {@code rays}. */
@@ -40,16 +68,13 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
         for (Map.Entry<String, Long> kind : testsByKind.entrySet()) {
             tests.put(kind.getKey(), kind.getValue() * factor);
         }
-        return new WorkCount(rays * factor, tests, nodesVisited * factor);
+        return new WorkCount(rays * factor, tests, nodesVisited * factor, secondaryRays);
     }
 
     /** The sum of this and {@code other}. */
     public WorkCount plus(WorkCount other) {
-        Map<String, Long> tests = new TreeMap<>(testsByKind);
-        for (Map.Entry<String, Long> kind : other.testsByKind.entrySet()) {
-            tests.put(kind.getKey(), tests.getOrDefault(kind.getKey(), 0L) + kind.getValue());
-        }
-        return new WorkCount(rays + other.rays, tests, nodesVisited + other.nodesVisited);
+        return new WorkCount(rays + other.rays, sum(testsByKind, other.testsByKind), nodesVisited + other.nodesVisited,
+                sum(secondaryRays, other.secondaryRays));
     }
 
     /** Intersection tests of every kind. */

@@ -11,8 +11,10 @@ import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
 import rtd.image.Color;
+import rtd.image.Rgb;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
@@ -64,14 +66,42 @@ public final class MixedScenes {
     }
 
     private static IGeometry twin(IGeometry object, Color colour) {
+        return twin(object, colour, Material.DEFAULT);
+    }
+
+    private static IGeometry twin(IGeometry object, Color colour, Material material) {
         if (object instanceof Sphere s) {
-            return new Sphere(s.center(), s.radius(), colour);
+            return new Sphere(s.center(), s.radius(), colour, material);
         }
         if (object instanceof Triangle t) {
-            return new Triangle(t.corner(0), t.corner(1), t.corner(2), colour, Material.DEFAULT);
+            return new Triangle(t.corner(0), t.corner(1), t.corner(2), colour, material);
+        }
+        if (object instanceof Plane p) {
+            return new Plane(p.point(), p.normal(), colour, material);
         }
         Box box = (Box) object;
-        return new Box(box.min(), box.max(), colour, Material.DEFAULT);
+        return new Box(box.min(), box.max(), colour, material);
+    }
+
+    /**
+     * {@code scene} with random finishes (some mirrors, some glass, some both) and one to three
+     * coloured lights, the same for the same seed.
+     */
+    public static Scene shaded(Scene scene, long seed) {
+        Random random = new Random(seed);
+        List<IGeometry> objects = new ArrayList<>();
+        for (IGeometry object : scene.objects()) {
+            float reflective = random.nextInt(3) == 0 ? random.nextFloat() : 0;
+            float transparency = random.nextInt(4) == 0 ? random.nextFloat() : 0;
+            Material material = new Material(random.nextFloat() * 0.3f, random.nextFloat(), random.nextFloat(),
+                    1 + random.nextInt(300), reflective, transparency, 1 + random.nextFloat());
+            objects.add(twin(object, object.color(), material));
+        }
+        List<Light> lights = new ArrayList<>();
+        for (int i = 0; i <= random.nextInt(3); i++) {
+            lights.add(new Light(point(random, 30), new Rgb(random.nextFloat(), random.nextFloat(), random.nextFloat())));
+        }
+        return new Scene(scene.ambient(), scene.camera(), objects, lights);
     }
 
     /**
