@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
@@ -44,26 +43,29 @@ public final class Bvh {
     final int maxDepth;
     final List<IGeometry> objects;
 
-    private Bvh(BvhBuilder builder, List<IGeometry> objects, List<IGeometry> bounded, int[] boundedOrder,
-            List<IGeometry> unbounded, int[] unboundedOrder) {
+    private Bvh(BvhBuilder builder, List<IGeometry> objects) {
         builder.build();
         Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
         this.bounds = compaction.bounds();
         this.nodes = compaction.nodes();
         int[] order = builder.order();
-        IGeometry[] sorted = new IGeometry[order.length];
-        int[] fileOrder = new int[order.length];
+        int count = builder.count();
+        IGeometry[] sorted = new IGeometry[count];
+        int[] fileOrder = Arrays.copyOf(order, count);
         if (builder.parallel()) {
-            builder.forEach(i -> putInLeafOrder(i, order, bounded, boundedOrder, sorted, fileOrder));
+            builder.forEach(i -> sorted[i] = objects.get(order[i]));
         } else {
-            for (int i = 0; i < order.length; i++) {
-                putInLeafOrder(i, order, bounded, boundedOrder, sorted, fileOrder);
+            for (int i = 0; i < count; i++) {
+                sorted[i] = objects.get(order[i]);
             }
         }
         this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
         this.rounding = rounding(nodes, sorted);
-        this.unbounded = unbounded.toArray(IGeometry[]::new);
-        this.unboundedOrder = unboundedOrder;
+        this.unboundedOrder = builder.unbounded();
+        this.unbounded = new IGeometry[unboundedOrder.length];
+        for (int i = 0; i < unbounded.length; i++) {
+            unbounded[i] = objects.get(unboundedOrder[i]);
+        }
         this.maxDepth = builder.maxDepth();
         this.objects = objects;
     }
@@ -91,12 +93,6 @@ public final class Bvh {
         return rounding;
     }
 
-    private static void putInLeafOrder(int i, int[] order, List<IGeometry> bounded, int[] boundedOrder,
-            IGeometry[] sorted, int[] fileOrder) {
-        sorted[i] = bounded.get(order[i]);
-        fileOrder[i] = boundedOrder[order[i]];
-    }
-
     /** Builds the hierarchy for {@code scene} with all cores. */
     public static Bvh build(Scene scene) {
         return build(scene, Runtime.getRuntime().availableProcessors());
@@ -109,27 +105,12 @@ public final class Bvh {
      */
     public static Bvh build(Scene scene, int threads) {
         List<IGeometry> objects = scene.objects();
-        List<IGeometry> bounded = new ArrayList<>();
-        List<IGeometry> unbounded = new ArrayList<>();
-        int[] boundedOrder = new int[objects.size()];
-        int[] unboundedOrder = new int[objects.size()];
-        for (int i = 0; i < objects.size(); i++) {
-            IGeometry object = objects.get(i);
-            if (object.bounds().isBounded()) {
-                boundedOrder[bounded.size()] = i;
-                bounded.add(object);
-            } else {
-                unboundedOrder[unbounded.size()] = i;
-                unbounded.add(object);
-            }
-        }
-        unboundedOrder = Arrays.copyOf(unboundedOrder, unbounded.size());
-        if (threads == 1 || bounded.size() < BvhBuilder.PARALLEL_THRESHOLD) {
-            return new Bvh(new BvhBuilder(bounded, null), objects, bounded, boundedOrder, unbounded, unboundedOrder);
+        if (threads == 1 || objects.size() < BvhBuilder.PARALLEL_THRESHOLD) {
+            return new Bvh(new BvhBuilder(objects, null), objects);
         }
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {
-            return new Bvh(new BvhBuilder(bounded, pool), objects, bounded, boundedOrder, unbounded, unboundedOrder);
+            return new Bvh(new BvhBuilder(objects, pool), objects);
         } finally {
             pool.shutdown();
         }

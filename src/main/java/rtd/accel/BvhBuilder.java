@@ -44,7 +44,10 @@ final class BvhBuilder {
     private static final int INNER = Bvh.INNER;
 
     private final List<IGeometry> objects;
-    private final int count;
+    /** The objects with a finite box, which the tree holds: {@code order[0, count)}. */
+    private int count;
+    /** The objects without one (planes), in file order: {@code order[count, objects.size())}. */
+    private int[] unbounded;
     /*
      * The objects' data, kept in the order of `order` and swapped along with it, so that every
      * pass over a node's objects reads memory front to back (random reads into these arrays
@@ -63,8 +66,9 @@ final class BvhBuilder {
     private int maxDepth;
 
     /**
-     * A builder for {@code objects}, all with a finite {@link IGeometry#bounds}, that works on
-     * {@code pool}, or on the calling thread alone if it is {@code null}.
+     * A builder for the scene's {@code objects}, that works on {@code pool}, or on the calling
+     * thread alone if it is {@code null}. Each object's box is measured once; the objects
+     * without a finite one are kept apart ({@link #unbounded}).
      */
     BvhBuilder(List<IGeometry> objects, ForkJoinPool pool) {
         this.objects = objects;
@@ -80,6 +84,7 @@ final class BvhBuilder {
         } else {
             forEach(this::measureObject);
         }
+        setUnboundedApart();
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
         this.nodes = new int[2 * capacity];
@@ -99,6 +104,50 @@ final class BvhBuilder {
         } else {
             pool.submit(() -> IntStream.range(0, count).parallel().forEach(action)).join();
         }
+    }
+
+    /**
+     * Moves the objects whose box is not finite behind the others, each group in file order,
+     * and leaves {@link #count} at the number of the others.
+     */
+    private void setUnboundedApart() {
+        int kept = 0;
+        int[] apart = new int[0];
+        for (int i = 0; i < count; i++) {
+            if (isFinite(i)) {
+                if (kept != i) {
+                    order[kept] = order[i];
+                    System.arraycopy(boxes, 6 * i, boxes, 6 * kept, 6);
+                    System.arraycopy(centres, 3 * i, centres, 3 * kept, 3);
+                }
+                kept++;
+            } else {
+                apart = Arrays.copyOf(apart, apart.length + 1);
+                apart[apart.length - 1] = order[i];
+            }
+        }
+        System.arraycopy(apart, 0, order, kept, apart.length);
+        unbounded = apart;
+        count = kept;
+    }
+
+    private boolean isFinite(int i) {
+        for (int k = 0; k < 6; k++) {
+            if (!Float.isFinite(boxes[6 * i + k])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The places in the file of the objects without a finite box, in file order. */
+    int[] unbounded() {
+        return unbounded;
+    }
+
+    /** The number of objects in the tree. */
+    int count() {
+        return count;
     }
 
     /** Puts object {@code i}'s box and centre in place {@code i}. */
@@ -123,7 +172,7 @@ final class BvhBuilder {
                 : pool.invoke(new Subtree(0, 1, 0, count, 0, null));
     }
 
-    /** The objects' places in the list given, in the order of the tree's leaves. */
+    /** The objects' places in the file, in the order of the tree's leaves ({@link #count} of them). */
     int[] order() {
         return order;
     }
