@@ -241,7 +241,8 @@ final class GroupValues {
                     return value;
                 }
                 throw errorAt(starts[i], "the " + name + " must be at least " + number(minimum) + ", found " + written(i),
-                        null);
+                        minimum > 0 ? "an index of refraction is 1 for air, 1.33 for water, 1.5 for glass"
+                                : "0 turns this part of the finish off");
             }
         }
         return fallback;

@@ -104,16 +104,16 @@ final class ObjReader {
         if (3 * vertexCount + 3 > vertices.length) {
             vertices = Arrays.copyOf(vertices, 2 * vertices.length);
         }
-        readCoordinates(vertices, 3 * vertexCount, "v", "vertex");
-        vertexCount++; // anything after z (a w, vertex colours) is skipped
+        vertexCount++; // even if the line is wrong: the faces below count it, and would be wrong too
+        readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
     }
 
     private void readNormal() throws StatementError {
         if (3 * normalCount + 3 > normals.length) {
             normals = Arrays.copyOf(normals, 2 * normals.length);
         }
-        readCoordinates(normals, 3 * normalCount, "vn", "normal");
         normalCount++;
+        readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
     }
 
     private void readCoordinates(float[] into, int at, String keyword, String what) throws StatementError {
@@ -135,8 +135,11 @@ final class ObjReader {
                         "numbers are written like 3, -0.5, .5, 1. or 2e3");
             }
             if (!Float.isFinite(value)) {
-                throw error(start, "the " + "xyz".charAt(k) + " of the " + what + " must be a finite number, found "
-                        + source.text(start, pos), null);
+                String written = source.text(start, pos);
+                boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
+                throw error(start, "the " + "xyz".charAt(k) + " of the " + what + " must be a finite number, found " + written
+                        + (overflow ? ", which is too large for a float" : ""),
+                        overflow ? "a float holds numbers up to about 3.4e38" : "a " + what + " is written " + keyword + " 0.5 -1 2");
             }
             into[at + k] = value;
         }
@@ -216,7 +219,8 @@ final class ObjReader {
         long resolved = index > 0 ? index - 1 : count + index;
         if (resolved < 0 || resolved >= count) {
             throw error(at, "the " + what + " index " + index + " is out of range: " + count + " "
-                    + (count == 1 ? what : what + "s") + " come before this face",
+                    + (count == 1 ? what + " comes" : (what.equals("vertex") ? "vertices" : what + "s") + " come")
+                    + " before this face",
                     "1 is the first '" + keyword + "' line of the file, -1 the last one above the face");
         }
         return (int) resolved;

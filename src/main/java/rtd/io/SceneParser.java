@@ -19,16 +19,19 @@ import rtd.image.Color;
 import rtd.scene.Scene;
 
 /**
- * Reads the scene format of the paper (section 4.1, Listing A.1) from a file's bytes.
+ * Reads the scene format of the paper (section 4.1, Listing A.1), as Part II of the spec extends
+ * it, from a file's bytes.
  *
- * <p>One statement a line: {@code keyword:(group):(group)…}, a group being numbers separated
- * by {@code |}. {@code //} starts a comment; blank lines, spaces and tabs around any token,
+ * <p>One statement a line: {@code keyword:(group):(group)…}, the statements being those of the
+ * {@link Grammar}. {@code //} starts a comment; blank lines, spaces and tabs around any token,
  * Windows line ends and a UTF-8 byte-order mark are all fine. Every mistake is reported with
  * its line and column, up to {@value #MAX_ERRORS}, so that one run shows them all.
  *
  * <p>A large file is cut at line breaks into parts that {@link StatementReader}s read in
  * parallel; the parts are joined in file order, so the scene and the messages are the same
- * as from reading the file in one go.
+ * as from reading the file in one go. Joining is also where what only the whole file can tell
+ * is checked: one camera, one {@code ambient}, one material per name; and where the objects that
+ * name a material, which may be defined further down, are built.
  */
 final class SceneParser {
 

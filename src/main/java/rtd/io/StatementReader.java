@@ -178,18 +178,22 @@ final class StatementReader {
             throw groupError(pos, "expected a name in %s, found " + source.describe(pos, lineStart), statement, group);
         }
         values.addName(start, pos);
+        int nameEnd = pos;
         skipBlanks();
         if (!at(')')) {
-            throw error(pos, "expected ')' after the name in " + group.of(statement) + ", found "
+            throw error(pos, "expected ')' after '" + source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
                     + source.describe(pos, lineStart), "a name holds only letters, digits, '_' and '-'");
         }
         pos++;
     }
 
-    /** A path: everything up to the group's ')' on this line, blanks around it trimmed. */
+    /**
+     * A path: everything up to the group's ')' on this line, blanks around it trimmed. A ':' with
+     * a '(' after it ends it too: that is the next group, after a forgotten ')'.
+     */
     private void readPath(Statement statement, Group group) throws StatementError {
         int start = pos;
-        while (pos < bytes.length && bytes[pos] != ')' && bytes[pos] != '\n') {
+        while (pos < bytes.length && bytes[pos] != ')' && bytes[pos] != '\n' && !atNextGroup()) {
             pos++;
         }
         if (!at(')')) {
@@ -251,12 +255,18 @@ final class StatementReader {
             String nearest = Suggestions.nearest(word, group.keys());
             throw error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
                     ? "did you mean '" + nearest + "'?"
-                    : "the keys are " + String.join(", ", group.keys().stream().map(k -> "'" + k + "'").toList()));
+                    : "the keys are " + quotedList(group.keys()));
         }
         if (values.lastHasKey(key)) {
             throw error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
         return key;
+    }
+
+    /** "'a', 'b' and 'c'". */
+    private static String quotedList(List<String> words) {
+        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
+        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
     }
 
     /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
@@ -300,6 +310,18 @@ final class StatementReader {
     /** Where the statement being read stands, for a later message about it. */
     private SceneError located() {
         return new SceneError(source.name(), line, source.column(lineStart, statementStart), "", source.lineText(lineStart), null);
+    }
+
+    /** Whether {@link #pos} is at ':', blanks and '(': the start of a group. */
+    private boolean atNextGroup() {
+        if (bytes[pos] != ':') {
+            return false;
+        }
+        int after = pos + 1;
+        while (after < bytes.length && ByteClasses.isBlank(bytes[after])) {
+            after++;
+        }
+        return after < bytes.length && bytes[after] == '(';
     }
 
     private boolean at(char c) {
