@@ -87,11 +87,6 @@ final class GroupValues {
         keys[count - 1] = key;
     }
 
-    /** How many values the current group holds so far. */
-    int sizeOfLast() {
-        return count - firsts[groupCount - 1];
-    }
-
     /** Whether the current group already holds the key with index {@code key}. */
     boolean lastHasKey(int key) {
         for (int i = firsts[groupCount - 1]; i < count; i++) {
@@ -146,11 +141,6 @@ final class GroupValues {
     /** The source the statement was read from. */
     SourceText source() {
         return source;
-    }
-
-    /** Whether the statement has group {@code g}: for the optional material group. */
-    boolean hasGroup(int g) {
-        return g < groupCount;
     }
 
     /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */

@@ -39,15 +39,19 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
 
     /** Where the values that statements make go: the scene being read. */
     interface Output {
+        /** The background colour ({@code ambient}). */
         void ambient(Color colour);
 
+        /** The camera, of either kind. */
         void camera(ICamera camera);
 
+        /** One object, at the statement's place among the objects. */
         void object(IGeometry object);
 
         /** Several objects, in order, at the statement's place: a mesh's triangles. */
         void objects(List<IGeometry> objects);
 
+        /** A finish that objects may name, defined under {@code name}. */
         void material(String name, Material material);
     }
 

@@ -11,18 +11,19 @@ final class Suggestions {
 
     /** The statement keyword nearest to {@code word}, or null if none is near enough. */
     static String nearestKeyword(String word) {
-        return nearest(word.toLowerCase(Locale.ROOT), Grammar.STATEMENTS.stream().map(Statement::keyword).toList());
+        return nearest(word, Grammar.STATEMENTS.stream().map(Statement::keyword).toList());
     }
 
     /**
-     * The candidate nearest to {@code word} (the first of equally near ones), or null if none is
-     * near enough: within two edits, or a third of the candidate's length for long words.
+     * The candidate nearest to {@code word} (the first in alphabetical order of equally near
+     * ones), or null if none is near enough: within two edits, or a third of the candidate's
+     * length for long words. Case is ignored, so that {@code IOR} finds {@code ior}.
      */
     static String nearest(String word, Collection<String> candidates) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
         for (String candidate : candidates.stream().sorted().toList()) {
-            int distance = editDistance(word, candidate);
+            int distance = editDistance(word.toLowerCase(Locale.ROOT), candidate.toLowerCase(Locale.ROOT));
             if (distance < bestDistance) {
                 bestDistance = distance;
                 best = candidate;

@@ -2,6 +2,7 @@ package rtd.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
+import static org.assertj.core.data.Offset.offset;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -99,8 +100,8 @@ class MeshTest {
         assertThat(t.isSmooth()).isTrue();
         assertThat(t.normalAt(v(0, 0, 0))).isEqualTo(v(1, 0, 0)); // at a corner: that corner's normal
         Vector3f middle = t.normalAt(v(1 / 3f, 1 / 3f, 0));
-        assertThat(middle.x()).isCloseTo(middle.y(), org.assertj.core.data.Offset.offset(1e-6f));
-        assertThat(middle.z()).isCloseTo(middle.x(), org.assertj.core.data.Offset.offset(1e-6f));
+        assertThat(middle.x()).isCloseTo(middle.y(), offset(1e-6f));
+        assertThat(middle.z()).isCloseTo(middle.x(), offset(1e-6f));
     }
 
     @Test

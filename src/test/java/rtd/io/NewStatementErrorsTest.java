@@ -4,10 +4,11 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.junit.jupiter.api.DisplayName;
 
 /** Each mistake in a statement beyond the paper gets its own message at the right line and column. */
 @DisplayName("Mistakes in the statements beyond the paper")
@@ -96,14 +97,21 @@ class NewStatementErrorsTest {
         }
     }
 
-    @org.junit.jupiter.api.Test
+    @Test
     void anUnknownMaterialNearADefinedOneIsSuggested() {
         SceneError error = SceneErrorsTest.errorsOf(CAMERA + "sphere:(0|0|0):(1):(1|2|3):(glas)\nmaterial:(glass):()")
                 .errors().get(0);
         assertThat(error.help()).isEqualTo("did you mean 'glass'?");
     }
 
-    @org.junit.jupiter.api.Test
+    @Test
+    void aKeyInTheWrongCaseIsSuggestedInTheRightOne() {
+        SceneError error = SceneErrorsTest.errorsOf(CAMERA + "material:(glass):(IOR=1.5)").errors().get(0);
+        assertThat(error.message()).isEqualTo("unknown key 'IOR' in the properties of 'material'");
+        assertThat(error.help()).isEqualTo("did you mean 'ior'?");
+    }
+
+    @Test
     void anUnknownKeywordSuggestsTheNewStatements() {
         assertThat(SceneErrorsTest.errorsOf(CAMERA + "trianlge:(0|0|0)").errors().get(0).help())
                 .isEqualTo("did you mean 'triangle'?");
@@ -113,7 +121,7 @@ class NewStatementErrorsTest {
                 .isEqualTo("did you mean 'material'?");
     }
 
-    @org.junit.jupiter.api.Test
+    @Test
     void anObjectWithAnUnknownMaterialStillHasItsOtherMistakesReported() {
         List<SceneError> errors = SceneErrorsTest.errorsOf(CAMERA + "sphere:(0|0|0):(-1):(1|2|3):(glass)").errors();
         assertThat(errors).extracting(SceneError::message)
