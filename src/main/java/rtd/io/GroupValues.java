@@ -87,6 +87,11 @@ final class GroupValues {
         keys[count - 1] = key;
     }
 
+    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
+    boolean hasValue(int g) {
+        return g < groupCount && (g + 1 < groupCount ? firsts[g + 1] : count) > firsts[g];
+    }
+
     /** Whether the current group already holds the key with index {@code key}. */
     boolean lastHasKey(int key) {
         for (int i = firsts[groupCount - 1]; i < count; i++) {

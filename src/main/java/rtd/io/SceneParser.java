@@ -9,8 +9,10 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.stream.IntStream;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
@@ -136,12 +138,14 @@ final class SceneParser {
         List<ScenePart.Located<Color>> ambients = new ArrayList<>();
         List<ScenePart.Located<ICamera>> cameras = new ArrayList<>();
         List<ScenePart.Located<ScenePart.Named>> definitions = new ArrayList<>();
+        Set<String> broken = new HashSet<>();
         int statements = 0;
         for (ScenePart part : parts) {
             errors.addAll(part.errors);
             ambients.addAll(part.ambients);
             cameras.addAll(part.cameras);
             definitions.addAll(part.materials);
+            broken.addAll(part.brokenDefinitions);
             statements += part.statementCount;
         }
         for (ScenePart.Located<Color> second : ambients.subList(Math.min(1, ambients.size()), ambients.size())) {
@@ -153,7 +157,7 @@ final class SceneParser {
                     "the first camera is at line " + cameras.get(0).place().line())));
         }
         Map<String, Material> materials = materials(definitions, errors);
-        List<IGeometry> objects = objects(parts, materials, errors);
+        List<IGeometry> objects = objects(parts, materials, broken, errors);
         if (errors.isEmpty() && statements == 0) {
             errors.add(found(atStart(source, "the scene is empty: it has no statements, only blanks and comments",
                     "a scene needs at least a camera, such as " + CAMERA_EXAMPLE)));
@@ -192,7 +196,7 @@ final class SceneParser {
      * Every object in file order: those the parts built, and between them those that name a
      * material, built now that every material is known.
      */
-    private static List<IGeometry> objects(List<ScenePart> parts, Map<String, Material> materials,
+    private static List<IGeometry> objects(List<ScenePart> parts, Map<String, Material> materials, Set<String> broken,
             List<ScenePart.Found> errors) {
         List<IGeometry> objects = new ArrayList<>();
         Statement.Output out = new ObjectsOutput(objects);
@@ -201,7 +205,7 @@ final class SceneParser {
             for (ScenePart.Pending pending : part.pending) {
                 objects.addAll(part.objects.subList(next, pending.index()));
                 next = pending.index();
-                build(pending.values(), materials, out, errors);
+                build(pending.values(), materials, broken, out, errors);
             }
             objects.addAll(part.objects.subList(next, part.objects.size()));
         }
@@ -209,23 +213,26 @@ final class SceneParser {
     }
 
     /**
-     * Builds an object that names a material. An unknown name is an error at the name; the rest
-     * of the statement is still checked, so that one run shows all its mistakes.
+     * Builds an object that names a material. An unknown name is an error at the name, unless its
+     * definition has a mistake, which is reported already; the rest of the statement is still
+     * checked, so that one run shows all its mistakes.
      */
-    private static void build(GroupValues values, Map<String, Material> materials, Statement.Output out,
-            List<ScenePart.Found> errors) {
+    private static void build(GroupValues values, Map<String, Material> materials, Set<String> broken,
+            Statement.Output out, List<ScenePart.Found> errors) {
         Statement statement = values.statement();
         int group = statement.groups().size(); // the last, optional group: the material's name
         String name = values.name(group);
         Material material = materials.get(name);
         Statement.Output target = out;
-        if (material == null) {
+        if (material == null && !broken.contains(name)) {
             String nearest = Suggestions.nearest(name, materials.keySet());
             ScenePart.addErrors(errors, values.errorAtValue(group, 0, "unknown material '" + name + "'", nearest != null
                     ? "did you mean '" + nearest + "'?"
                     : "define it with a line such as material:(" + name + "):(diffuse=0.9)"));
+        }
+        if (material == null) {
             material = Material.DEFAULT;
-            target = new ObjectsOutput(new ArrayList<>());
+            target = new ObjectsOutput(new ArrayList<>()); // the scene has errors: the object is only checked
         }
         values.useMaterial(material);
         try {

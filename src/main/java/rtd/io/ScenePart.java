@@ -1,7 +1,9 @@
 package rtd.io;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
@@ -40,6 +42,8 @@ final class ScenePart {
     final List<Located<ICamera>> cameras = new ArrayList<>();
     final List<Located<Named>> materials = new ArrayList<>();
     final List<Found> errors = new ArrayList<>();
+    /** The names of definitions ({@code material:}) that have mistakes: not unknown, only broken. */
+    final Set<String> brokenDefinitions = new HashSet<>();
     int statementCount;
 
     /** Keeps an object that names a material, at its place among the part's objects. */

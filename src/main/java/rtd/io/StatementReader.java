@@ -31,6 +31,8 @@ final class StatementReader {
     private int lineStart;
     /** Where the statement being read starts, for a later message about it. */
     private int statementStart;
+    /** The statement being read, once its keyword is known; null before. */
+    private Statement current;
     /** Where the number that {@link #readNumber} read last starts. */
     private int tokenStart;
 
@@ -56,6 +58,7 @@ final class StatementReader {
                 readStatement();
             } catch (StatementError e) {
                 part.addErrors(e);
+                keepNameOfBrokenDefinition();
             }
             skipToNextLine();
         }
@@ -64,6 +67,7 @@ final class StatementReader {
     // ---- one statement ------------------------------------------------------------------
 
     private void readStatement() throws StatementError {
+        current = null;
         skipBlanks();
         if (atEndOfStatement()) {
             return; // a blank line or a comment
@@ -80,6 +84,7 @@ final class StatementReader {
             throw unknownKeyword(statementStart);
         }
         part.statementCount++;
+        current = statement;
         values.begin(statement, line, lineStart);
         List<Group> groups = statement.groups();
         for (int g = 0; g < groups.size(); g++) { // no Iterator for each line of a large file
@@ -103,6 +108,18 @@ final class StatementReader {
             part.addPending(values.copy());
         } else {
             statement.builder().build(values, output);
+        }
+    }
+
+    /**
+     * After a mistake in a statement that defines a name (its first group is a name, as in
+     * {@code material:}), keeps the name if it was read: the objects that use it are then not
+     * also told that it is unknown.
+     */
+    private void keepNameOfBrokenDefinition() {
+        if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
+                && values.hasValue(0)) {
+            part.brokenDefinitions.add(values.name(0));
         }
     }
 

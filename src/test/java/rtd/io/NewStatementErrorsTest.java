@@ -105,6 +105,13 @@ class NewStatementErrorsTest {
     }
 
     @Test
+    void aMaterialWithAMistakeIsReportedOnceNotAgainAtEachObjectThatUsesIt() {
+        List<SceneError> errors = SceneErrorsTest.errorsOf(CAMERA + "sphere:(0|0|0):(1):(1|2|3):(glass)\n"
+                + "material:(glass):(ior=0.5)\nmaterial:(metal):(shine=1)\nbox:(0|0|0):(1|1|1):(1|2|3):(metal)").errors();
+        assertThat(errors).extracting(SceneError::line).containsExactly(3, 4);
+    }
+
+    @Test
     void aKeyInTheWrongCaseIsSuggestedInTheRightOne() {
         SceneError error = SceneErrorsTest.errorsOf(CAMERA + "material:(glass):(IOR=1.5)").errors().get(0);
         assertThat(error.message()).isEqualTo("unknown key 'IOR' in the properties of 'material'");
