@@ -31,7 +31,8 @@ public final class SceneIO {
     /**
      * Reads the scene file at {@code path} (UTF-8), in bounded memory and time: a file over
      * {@link #MAX_SCENE_BYTES} is refused, and a stream such as {@code /dev/zero} is read only
-     * up to its first byte that is not text ({@link SceneFileReader}).
+     * up to its first byte that is not text ({@link SceneFileReader}). The OBJ files of its
+     * meshes are found relative to the folder it is in.
      *
      * @throws SceneException if the file has mistakes; it lists them all
      * @throws IOException    if the file cannot be read
@@ -40,17 +41,31 @@ public final class SceneIO {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
-        return SceneParser.parse(new SourceText(path.toString(), SceneFileReader.read(path)));
+        Path folder = path.getParent() == null ? Path.of("") : path.getParent();
+        return SceneParser.parse(new SourceText(path.toString(), SceneFileReader.read(path), folder));
     }
 
-    /** Reads a scene from {@code text}; {@code name} stands for the file in error messages. */
+    /**
+     * Reads a scene from {@code text}; {@code name} stands for the file in error messages. The
+     * OBJ files of its meshes are found relative to the current directory.
+     */
     public static Scene parseScene(String name, String text) throws SceneException {
-        return SceneParser.parse(new SourceText(name, text.getBytes(StandardCharsets.UTF_8)));
+        return parseScene(name, text, Path.of(""));
+    }
+
+    /** As {@link #parseScene(String, String)}, with the OBJ files of meshes found relative to {@code meshFolder}. */
+    public static Scene parseScene(String name, String text, Path meshFolder) throws SceneException {
+        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), meshFolder);
     }
 
     /** Reads a scene from raw bytes; {@code name} stands for the file in error messages. */
     public static Scene parseScene(String name, byte[] bytes) throws SceneException {
-        return SceneParser.parse(new SourceText(name, bytes));
+        return parseScene(name, bytes, Path.of(""));
+    }
+
+    /** As {@link #parseScene(String, byte[])}, with the OBJ files of meshes found relative to {@code meshFolder}. */
+    public static Scene parseScene(String name, byte[] bytes, Path meshFolder) throws SceneException {
+        return SceneParser.parse(new SourceText(name, bytes, meshFolder));
     }
 
     /**

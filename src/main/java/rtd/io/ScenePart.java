@@ -1,15 +1,19 @@
 package rtd.io;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
 import rtd.image.Color;
 
 /**
- * What one stretch of lines of a scene file holds: its objects, its {@code ambient} and camera
- * statements (a scene may have only one of each, which only the whole file can tell), and the
- * mistakes found in it. {@link StatementReader} fills it; {@link SceneParser} joins the parts.
+ * What one stretch of lines of a scene file holds: its objects, its {@code ambient}, camera and
+ * {@code material} statements (a scene may have only one of each, or one per name, which only
+ * the whole file can tell), the objects that wait for a material defined anywhere in the file,
+ * and the mistakes found. {@link StatementReader} fills it; {@link SceneParser} joins the parts.
  */
 final class ScenePart {
 
@@ -17,9 +21,45 @@ final class ScenePart {
     record Located<T>(T value, SceneError place) {
     }
 
+    /** A material and the name it is defined under. */
+    record Named(String name, Material material) {
+    }
+
+    /**
+     * An object that names a material, to be built when every material is known: the values of
+     * its statement, and how many objects of the part come before it.
+     */
+    record Pending(int index, GroupValues values) {
+    }
+
+    /** A mistake, and where in the scene file it is ordered (an OBJ file's, at its mesh line). */
+    record Found(int line, int column, SceneError error) {
+    }
+
     final List<IGeometry> objects = new ArrayList<>();
+    final List<Pending> pending = new ArrayList<>();
     final List<Located<Color>> ambients = new ArrayList<>();
     final List<Located<ICamera>> cameras = new ArrayList<>();
-    final List<SceneError> errors = new ArrayList<>();
+    final List<Located<Named>> materials = new ArrayList<>();
+    final List<Found> errors = new ArrayList<>();
+    /** The names of definitions ({@code material:}) that have mistakes: not unknown, only broken. */
+    final Set<String> brokenDefinitions = new HashSet<>();
     int statementCount;
+
+    /** Keeps an object that names a material, at its place among the part's objects. */
+    void addPending(GroupValues values) {
+        pending.add(new Pending(objects.size(), values));
+    }
+
+    /** Keeps the errors of a statement, ordered by its place. */
+    void addErrors(StatementError e) {
+        addErrors(errors, e);
+    }
+
+    /** Adds the errors of a statement to {@code errors}, ordered by its place. */
+    static void addErrors(List<Found> errors, StatementError e) {
+        for (SceneError error : e.errors()) {
+            errors.add(new Found(e.place().line(), e.place().column(), error));
+        }
+    }
 }

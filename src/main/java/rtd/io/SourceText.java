@@ -1,12 +1,23 @@
 package rtd.io;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 
 /**
- * The bytes of a scene file and its name, with what an error message needs: the line's text
- * and the column of a byte, counted in characters.
+ * The bytes of a scene (or OBJ) file and its name, with what an error message needs: the line's
+ * text and the column of a byte, counted in characters; and the folder that the file's relative
+ * paths (a mesh's OBJ file) start from.
+ *
+ * @param name   the file's name as the user gave it, for messages
+ * @param bytes  its contents
+ * @param folder where relative paths in it point from; the empty path for the current directory
  */
-record SourceText(String name, byte[] bytes) {
+record SourceText(String name, byte[] bytes, Path folder) {
+
+    /** A text whose relative paths start from the current directory. */
+    SourceText(String name, byte[] bytes) {
+        this(name, bytes, Path.of(""));
+    }
 
     /** The text of the line that starts at byte {@code lineStart}, without its line break. */
     String lineText(int lineStart) {

@@ -1,60 +1,68 @@
 package rtd.io;
 
-import java.util.Arrays;
 import java.util.List;
 import java.util.stream.Collectors;
+import rtd.camera.ICamera;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.image.Color;
 
 /**
- * The three statements of the scene format (paper, section 4.1 and Listing A.1): their
- * keywords and the groups of numbers each takes.
+ * One statement of the scene grammar, declared once in {@link Grammar}: its keyword, its groups,
+ * whether it takes a last, optional material group (Part II of the spec), and how it builds its
+ * value from what was read. {@link StatementReader} reads any statement from this alone.
+ *
+ * @param keyword       the word the line starts with, such as {@code sphere}
+ * @param groups        the groups that must follow, in order
+ * @param takesMaterial whether a last {@code :(material)} group may follow them
+ * @param builder       checks the values read and hands the statement's value to the scene
  */
-enum Statement {
-    AMBIENT("ambient", new Group("colour", "R|G|B")),
-    ORTHOGRAPHIC_CAMERA("orthographic_camera",
-            new Group("position", "x|y|z"), new Group("view direction", "x|y|z"), new Group("zoom", "zoom")),
-    SPHERE("sphere", new Group("centre", "x|y|z"), new Group("radius", "r"), new Group("colour", "R|G|B"));
+record Statement(String keyword, List<Group> groups, boolean takesMaterial, Builder builder) {
 
-    /**
-     * One group of a statement: what it means, the names of its numbers (such as
-     * {@code x|y|z}), and how many numbers it holds.
-     */
-    record Group(String meaning, String shape, int size) {
+    /** The optional last group of an object: the name of a {@code material:}. */
+    static final Group MATERIAL = Group.name("material", "material");
 
-        Group(String meaning, String shape) {
-            this(meaning, shape, shape.split("\\|").length);
-        }
+    Statement {
+        groups = List.copyOf(groups);
     }
 
-    /** Every statement; {@code values()} would copy the array for each line read. */
-    private static final Statement[] ALL = values();
-
-    final String keyword;
-    final List<Group> groups;
-    private final byte[] keywordBytes;
-
-    Statement(String keyword, Group... groups) {
-        this.keyword = keyword;
-        this.groups = List.of(groups);
-        this.keywordBytes = keyword.getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+    /** Builds a statement's value from its groups and gives it to {@code out}. */
+    @FunctionalInterface
+    interface Builder {
+        /**
+         * Checks the values (each broken rule becomes an error at its value) and gives what the
+         * statement makes to {@code out}. For an object, {@link GroupValues#material()} is the
+         * finish it names, or the default.
+         */
+        void build(GroupValues values, Output out) throws StatementError;
     }
 
-    /** The statement whose keyword is {@code bytes[start, end)}, or null. */
-    static Statement find(byte[] bytes, int start, int end) {
-        for (Statement statement : ALL) {
-            if (Arrays.equals(statement.keywordBytes, 0, statement.keywordBytes.length, bytes, start, end)) {
-                return statement;
-            }
-        }
-        return null;
+    /** Where the values that statements make go: the scene being read. */
+    interface Output {
+        /** The background colour ({@code ambient}). */
+        void ambient(Color colour);
+
+        /** The camera, of either kind. */
+        void camera(ICamera camera);
+
+        /** One object, at the statement's place among the objects. */
+        void object(IGeometry object);
+
+        /** Several objects, in order, at the statement's place: a mesh's triangles. */
+        void objects(List<IGeometry> objects);
+
+        /** A finish that objects may name, defined under {@code name}. */
+        void material(String name, Material material);
     }
 
-    /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)}. */
+    /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)[:(material)]}. */
     String usage() {
-        return keyword + groups.stream().map(g -> ":(" + g.shape() + ")").collect(Collectors.joining());
+        return keyword + groups.stream().map(g -> ":(" + g.shape() + ")").collect(Collectors.joining())
+                + (takesMaterial ? "[:(" + MATERIAL.shape() + ")]" : "");
     }
 
-    /** All keywords, for messages: "ambient, orthographic_camera or sphere". */
-    static String keywordList() {
-        return "'ambient', 'orthographic_camera' or 'sphere'";
+    /** How many groups it takes, for "too many groups: 'sphere' takes 3, or 4 with a material". */
+    String groupCount() {
+        return groups.size() + (takesMaterial ? ", or " + (groups.size() + 1) + " with a material" : "");
     }
 }

@@ -1,18 +1,22 @@
 package rtd.io;
 
+import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import rtd.camera.OrthographicCamera;
-import rtd.geometry.Sphere;
-import rtd.io.Statement.Group;
-import rtd.math.Vector3f;
+import rtd.camera.ICamera;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.image.Color;
 
 /**
  * Reads the statements of a stretch of whole lines of a scene file into a {@link ScenePart}:
- * the syntax {@code keyword:(group):(group)…} of section 4.1 and the rules for the values.
+ * the syntax {@code keyword:(group):(group)…} of the scene file (paper, section 4.1, and Part II
+ * of the spec), for any statement of the {@link Grammar}.
  *
  * <p>Each mistake becomes a {@link SceneError} with line and column, and reading goes on with
- * the next line. It works on bytes, not on a String, and makes no object per number.
+ * the next line. It works on bytes, not on a String, and makes no object per number. An object
+ * that names a material waits in the part until the whole file is read (the material may be
+ * defined further down); every other statement is built at once.
  */
 final class StatementReader {
 
@@ -20,12 +24,15 @@ final class StatementReader {
     private final byte[] bytes;
     private final int end;
     private final ScenePart part;
+    private final GroupValues values;
+    private final Statement.Output output = new PartOutput();
     private int pos;
     private int line;
     private int lineStart;
-
-    /** The numbers of the statement being read, with where each stands. */
-    private final StatementNumbers numbers;
+    /** Where the statement being read starts, for a later message about it. */
+    private int statementStart;
+    /** The statement being read, once its keyword is known; null before. */
+    private Statement current;
     /** Where the number that {@link #readNumber} read last starts. */
     private int tokenStart;
 
@@ -41,7 +48,7 @@ final class StatementReader {
         this.pos = start;
         this.lineStart = start;
         this.line = firstLine;
-        this.numbers = new StatementNumbers(source, this::error);
+        this.values = new GroupValues(source);
     }
 
     /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}. */
@@ -50,7 +57,8 @@ final class StatementReader {
             try {
                 readStatement();
             } catch (StatementError e) {
-                part.errors.add(e.error);
+                part.addErrors(e);
+                keepNameOfBrokenDefinition();
             }
             skipToNextLine();
         }
@@ -59,36 +67,60 @@ final class StatementReader {
     // ---- one statement ------------------------------------------------------------------
 
     private void readStatement() throws StatementError {
+        current = null;
         skipBlanks();
         if (atEndOfStatement()) {
             return; // a blank line or a comment
         }
-        int keywordStart = pos;
+        statementStart = pos;
         while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
             pos++;
         }
-        if (pos == keywordStart) {
-            throw error(pos, "expected a statement (" + Statement.keywordList() + "), found " + source.describe(pos, lineStart), null);
+        if (pos == statementStart) {
+            throw error(pos, "expected a statement (" + Grammar.keywordList() + "), found " + source.describe(pos, lineStart), null);
         }
-        Statement statement = Statement.find(bytes, keywordStart, pos);
+        Statement statement = Grammar.find(bytes, statementStart, pos);
         if (statement == null) {
-            throw unknownKeyword(keywordStart);
+            throw unknownKeyword(statementStart);
         }
         part.statementCount++;
-        int count = 0;
-        for (int g = 0; g < statement.groups.size(); g++) { // no Iterator for each line of a large file
-            count = readGroup(statement, statement.groups.get(g), count);
+        current = statement;
+        values.begin(statement, line, lineStart);
+        List<Group> groups = statement.groups();
+        for (int g = 0; g < groups.size(); g++) { // no Iterator for each line of a large file
+            readGroup(statement, groups.get(g));
         }
         skipBlanks();
+        boolean namesMaterial = statement.takesMaterial() && at(':');
+        if (namesMaterial) {
+            readGroup(statement, Statement.MATERIAL);
+            skipBlanks();
+        }
         if (at(':')) {
-            throw error(pos, "too many groups: '" + statement.keyword + "' takes " + statement.groups.size(),
+            throw error(pos, "too many groups: '" + statement.keyword() + "' takes " + statement.groupCount(),
                     "write it as " + statement.usage());
         }
         if (!atEndOfStatement()) {
             throw error(pos, "expected the end of the line after the statement, found " + source.describe(pos, lineStart),
                     "a comment after a statement starts with //");
         }
-        apply(statement, keywordStart);
+        if (namesMaterial) {
+            part.addPending(values.copy());
+        } else {
+            statement.builder().build(values, output);
+        }
+    }
+
+    /**
+     * After a mistake in a statement that defines a name (its first group is a name, as in
+     * {@code material:}), keeps the name if it was read: the objects that use it are then not
+     * also told that it is unknown.
+     */
+    private void keepNameOfBrokenDefinition() {
+        if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
+                && values.hasValue(0)) {
+            part.brokenDefinitions.add(values.name(0));
+        }
     }
 
     private StatementError unknownKeyword(int keywordStart) {
@@ -96,12 +128,12 @@ final class StatementReader {
         String nearest = Suggestions.nearestKeyword(word);
         String help = nearest != null
                 ? "did you mean '" + nearest + "'?"
-                : "a statement starts with " + Statement.keywordList();
+                : "a statement starts with " + Grammar.keywordList();
         return error(keywordStart, "unknown statement '" + word + "'", help);
     }
 
-    /** Reads {@code :(n|n|…)} into {@link #values} from {@code count} on; returns the new count. */
-    private int readGroup(Statement statement, Group group, int count) throws StatementError {
+    /** Reads {@code :(…)} into {@link #values}. */
+    private void readGroup(Statement statement, Group group) throws StatementError {
         skipBlanks();
         if (!at(':')) {
             throw groupError(pos, "expected ':' before %s, found " + source.describe(pos, lineStart), statement, group);
@@ -112,18 +144,29 @@ final class StatementReader {
             throw groupError(pos, "expected '(' to start %s, found " + source.describe(pos, lineStart), statement, group);
         }
         int groupStart = pos++;
+        values.openGroup(groupStart);
         skipBlanks();
-        if (at(')')) {
-            throw groupError(groupStart, "empty group: %s needs " + numbers(group), statement, group);
+        if (at(')') && group.kind() != Group.Kind.PROPERTIES) {
+            throw groupError(groupStart, "empty group: %s needs " + contents(group), statement, group);
         }
+        switch (group.kind()) {
+            case NUMBERS -> readNumbers(statement, group, groupStart);
+            case NAME -> readName(statement, group);
+            case PATH -> readPath(statement, group);
+            case PROPERTIES -> readProperties(statement, group);
+        }
+    }
+
+    /** The numbers of a group, after its '(' and any blanks, up to and with its ')'. */
+    private void readNumbers(Statement statement, Group group, int groupStart) throws StatementError {
         int found = 0;
         while (true) {
             skipBlanks();
             float value = readNumber();
             if (found == group.size()) {
-                throw groupError(tokenStart, "too many numbers in %s: it takes " + numbers(group), statement, group);
+                throw groupError(tokenStart, "too many numbers in %s: it takes " + contents(group), statement, group);
             }
-            numbers.set(count + found, value, tokenStart, pos);
+            values.add(value, tokenStart, pos);
             found++;
             skipBlanks();
             if (at('|')) {
@@ -132,20 +175,120 @@ final class StatementReader {
                 pos++;
                 break;
             } else {
-                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart), statement, group);
+                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart),
+                        statement, group);
             }
         }
         if (found < group.size()) {
-            throw groupError(groupStart, "too few numbers in %s: it takes " + numbers(group) + ", found " + found,
+            throw groupError(groupStart, "too few numbers in %s: it takes " + contents(group) + ", found " + found,
                     statement, group);
         }
-        return count + found;
+    }
+
+    /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
+    private void readName(Statement statement, Group group) throws StatementError {
+        int start = pos;
+        while (pos < bytes.length && (ByteClasses.isWordByte(bytes[pos]) || bytes[pos] == '-')) {
+            pos++;
+        }
+        if (pos == start) {
+            throw groupError(pos, "expected a name in %s, found " + source.describe(pos, lineStart), statement, group);
+        }
+        values.addName(start, pos);
+        int nameEnd = pos;
+        skipBlanks();
+        if (!at(')')) {
+            throw error(pos, "expected ')' after '" + source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
+                    + source.describe(pos, lineStart), "a name holds only letters, digits, '_' and '-'");
+        }
+        pos++;
+    }
+
+    /**
+     * A path: everything up to the group's ')' on this line, blanks around it trimmed. A ':' with
+     * a '(' after it ends it too: that is the next group, after a forgotten ')'.
+     */
+    private void readPath(Statement statement, Group group) throws StatementError {
+        int start = pos;
+        while (pos < bytes.length && bytes[pos] != ')' && bytes[pos] != '\n' && !atNextGroup()) {
+            pos++;
+        }
+        if (!at(')')) {
+            throw groupError(pos, "expected ')' after the path in %s, found " + source.describe(pos, lineStart),
+                    statement, group);
+        }
+        int nameEnd = pos;
+        while (ByteClasses.isBlank(bytes[nameEnd - 1])) {
+            nameEnd--; // the group is not empty, so a byte that is no blank stands before
+        }
+        values.addName(start, nameEnd);
+        pos++;
+    }
+
+    /** {@code key=number} pairs separated by '|', up to and with the group's ')'; none is fine. */
+    private void readProperties(Statement statement, Group group) throws StatementError {
+        if (at(')')) {
+            pos++;
+            return;
+        }
+        while (true) {
+            skipBlanks();
+            int key = readKey(statement, group);
+            skipBlanks();
+            if (!at('=')) {
+                throw groupError(pos, "expected '=' after the key '" + group.keys().get(key) + "' in %s, found "
+                        + source.describe(pos, lineStart), statement, group);
+            }
+            pos++;
+            skipBlanks();
+            float value = readNumber();
+            values.addProperty(key, value, tokenStart, pos);
+            skipBlanks();
+            if (at('|')) {
+                pos++;
+            } else if (at(')')) {
+                pos++;
+                return;
+            } else {
+                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart),
+                        statement, group);
+            }
+        }
+    }
+
+    /** A key of a properties group: its index among the group's keys; known and not given before. */
+    private int readKey(Statement statement, Group group) throws StatementError {
+        int start = pos;
+        while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
+            pos++;
+        }
+        if (pos == start) {
+            throw groupError(pos, "expected a key such as '" + group.keys().get(0) + "' in %s, found "
+                    + source.describe(pos, lineStart), statement, group);
+        }
+        String word = source.text(start, pos);
+        int key = group.keys().indexOf(word);
+        if (key < 0) {
+            String nearest = Suggestions.nearest(word, group.keys());
+            throw error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
+                    ? "did you mean '" + nearest + "'?"
+                    : "the keys are " + quotedList(group.keys()));
+        }
+        if (values.lastHasKey(key)) {
+            throw error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
+        }
+        return key;
+    }
+
+    /** "'a', 'b' and 'c'". */
+    private static String quotedList(List<String> words) {
+        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
+        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
     }
 
     /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
     private StatementError groupError(int offset, String message, Statement statement, Group group) {
-        String what = "the " + group.meaning() + " of '" + statement.keyword + "'";
-        String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(what)); // ours comes first
+        String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
         return error(offset, text, "write it as " + statement.usage());
     }
 
@@ -168,30 +311,34 @@ final class StatementReader {
         }
     }
 
-    private static String numbers(Group group) {
-        return group.size() == 1 ? "1 number (" + group.shape() + ")" : group.size() + " numbers (" + group.shape() + ")";
+    /** What a group holds, for messages: "3 numbers (x|y|z)", "a name". */
+    private static String contents(Group group) {
+        return switch (group.kind()) {
+            case NUMBERS -> group.size() == 1 ? "1 number (" + group.shape() + ")"
+                    : group.size() + " numbers (" + group.shape() + ")";
+            case NAME -> "a name";
+            case PATH -> "a file path";
+            case PROPERTIES -> "key=value pairs";
+        };
     }
 
-    // ---- the meaning of a statement -----------------------------------------------------
+    // ---- bytes ---------------------------------------------------------------------------
 
-    private void apply(Statement statement, int keywordStart) throws StatementError {
-        switch (statement) {
-            case AMBIENT -> part.ambients.add(new ScenePart.Located<>(numbers.colour(0), located(keywordStart)));
-            case ORTHOGRAPHIC_CAMERA -> {
-                Vector3f position = numbers.finiteVector(0, "position");
-                Vector3f direction = numbers.viewDirection(3);
-                float zoom = numbers.positive(6, "zoom");
-                part.cameras.add(new ScenePart.Located<>(new OrthographicCamera(position, direction, zoom),
-                        located(keywordStart)));
-            }
-            case SPHERE -> part.objects.add(new Sphere(numbers.finiteVector(0, "centre"), numbers.positive(3, "radius"),
-                    numbers.colour(4)));
+    /** Where the statement being read stands, for a later message about it. */
+    private SceneError located() {
+        return new SceneError(source.name(), line, source.column(lineStart, statementStart), "", source.lineText(lineStart), null);
+    }
+
+    /** Whether {@link #pos} is at ':', blanks and '(': the start of a group. */
+    private boolean atNextGroup() {
+        if (bytes[pos] != ':') {
+            return false;
         }
-    }
-
-    /** Where a statement that starts at {@code offset} stands, for a later message about it. */
-    private SceneError located(int offset) {
-        return new SceneError(source.name(), line, source.column(lineStart, offset), "", source.lineText(lineStart), null);
+        int after = pos + 1;
+        while (after < bytes.length && ByteClasses.isBlank(bytes[after])) {
+            after++;
+        }
+        return after < bytes.length && bytes[after] == '(';
     }
 
     private boolean at(char c) {
@@ -223,20 +370,37 @@ final class StatementReader {
         }
     }
 
-    StatementError error(int offset, String message, String help) {
-        SceneError error = new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), help);
-        return new StatementError(error);
+    private StatementError error(int offset, String message, String help) {
+        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
+                source.lineText(lineStart), help));
     }
 
-    /** Ends the reading of one statement; the reader records the error and goes on. */
-    static final class StatementError extends Exception {
-        private static final long serialVersionUID = 1L;
-        private final transient SceneError error;
+    /** Hands what a statement makes to the part, with the statement's place where a later check needs it. */
+    private final class PartOutput implements Statement.Output {
 
-        StatementError(SceneError error) {
-            super(error.message(), null, false, false);
-            this.error = error;
+        @Override
+        public void ambient(Color colour) {
+            part.ambients.add(new ScenePart.Located<>(colour, located()));
+        }
+
+        @Override
+        public void camera(ICamera camera) {
+            part.cameras.add(new ScenePart.Located<>(camera, located()));
+        }
+
+        @Override
+        public void object(IGeometry object) {
+            part.objects.add(object);
+        }
+
+        @Override
+        public void objects(List<IGeometry> objects) {
+            part.objects.addAll(objects);
+        }
+
+        @Override
+        public void material(String name, Material material) {
+            part.materials.add(new ScenePart.Located<>(new ScenePart.Named(name, material), values.placeOfValue(0, 0)));
         }
     }
 }

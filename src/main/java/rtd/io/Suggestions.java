@@ -1,8 +1,9 @@
 package rtd.io;
 
+import java.util.Collection;
 import java.util.Locale;
 
-/** Finds the keyword a misspelt word was probably meant to be ("did you mean 'sphere'?"). */
+/** Finds the word a misspelt one was probably meant to be ("did you mean 'sphere'?"). */
 final class Suggestions {
 
     private Suggestions() {
@@ -10,17 +11,25 @@ final class Suggestions {
 
     /** The statement keyword nearest to {@code word}, or null if none is near enough. */
     static String nearestKeyword(String word) {
+        return nearest(word, Grammar.STATEMENTS.stream().map(Statement::keyword).toList());
+    }
+
+    /**
+     * The candidate nearest to {@code word} (the first in alphabetical order of equally near
+     * ones), or null if none is near enough: within two edits, or a third of the candidate's
+     * length for long words. Case is ignored, so that {@code IOR} finds {@code ior}.
+     */
+    static String nearest(String word, Collection<String> candidates) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
-        for (Statement statement : Statement.values()) {
-            int distance = editDistance(word.toLowerCase(Locale.ROOT), statement.keyword);
+        for (String candidate : candidates.stream().sorted().toList()) {
+            int distance = editDistance(word.toLowerCase(Locale.ROOT), candidate.toLowerCase(Locale.ROOT));
             if (distance < bestDistance) {
                 bestDistance = distance;
-                best = statement.keyword;
+                best = candidate;
             }
         }
-        int allowed = Math.max(2, best.length() / 3);
-        return bestDistance <= allowed ? best : null;
+        return best != null && bestDistance <= Math.max(2, best.length() / 3) ? best : null;
     }
 
     /** The Levenshtein distance: the fewest single-character edits that turn a into b. */

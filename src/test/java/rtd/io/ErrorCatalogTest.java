@@ -1,6 +1,7 @@
 package rtd.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -12,29 +13,35 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
-/** docs/errors.md says what rtd says: each example scene there gives exactly the message shown under it. */
+/**
+ * docs/errors.md says what rtd says: each example scene there gives exactly the message shown under
+ * it. An {@code obj} block just before a scene is saved beside it under the name it gives.
+ */
 @DisplayName("The catalogue of messages in docs/errors.md")
 class ErrorCatalogTest {
 
-    private static final Pattern EXAMPLE = Pattern.compile("```scene\\n(.*?)```\\s*```text\\n(.*?)```", Pattern.DOTALL);
+    private static final Pattern EXAMPLE = Pattern.compile(
+            "(?:```obj (\\S+)\\n(.*?)```\\s*)?```scene\\n(.*?)```\\s*```text\\n(.*?)```", Pattern.DOTALL);
 
     static Stream<Arguments> examples() throws IOException {
         String doc = Files.readString(Path.of("docs", "errors.md"));
         List<Arguments> examples = new ArrayList<>();
         Matcher matcher = EXAMPLE.matcher(doc);
         while (matcher.find()) {
-            examples.add(Arguments.of(matcher.group(2).lines().findFirst().orElse(""), matcher.group(1), matcher.group(2)));
+            examples.add(Arguments.of(matcher.group(4).lines().findFirst().orElse(""), matcher.group(3), matcher.group(4),
+                    matcher.group(1), matcher.group(2)));
         }
         return examples.stream();
     }
 
     @Test
     void holdsAnExampleForEveryKindOfSceneMistake() throws IOException {
-        assertThat(examples()).hasSizeGreaterThanOrEqualTo(27);
+        assertThat(examples()).hasSizeGreaterThanOrEqualTo(57);
     }
 
     @Test
@@ -46,8 +53,13 @@ class ErrorCatalogTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("examples")
-    void showsTheMessageThatRtdGives(String firstLine, String scene, String message) {
-        SceneException e = SceneErrorsTest.errorsOf(scene);
+    void showsTheMessageThatRtdGives(String firstLine, String scene, String message, String objName, String obj,
+            @TempDir Path folder) throws IOException {
+        if (objName != null) {
+            Files.writeString(folder.resolve(objName), obj);
+        }
+        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", scene, folder));
+        assertThat(e).as("a SceneException").isNotNull();
         assertThat(e.errors()).hasSize(1);
         assertThat(e.errors().get(0).format().strip()).isEqualTo(message.strip());
     }

@@ -1,0 +1,137 @@
+package rtd.io;
+
+import static rtd.io.Group.name;
+import static rtd.io.Group.numbers;
+import static rtd.io.Group.path;
+import static rtd.io.Group.properties;
+
+import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
+import java.util.List;
+import java.util.stream.Collectors;
+import rtd.camera.OrthographicCamera;
+import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Box;
+import rtd.geometry.Material;
+import rtd.geometry.Plane;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+import rtd.image.Color;
+import rtd.math.Vector3f;
+
+/**
+ * The scene grammar: every statement of the scene file, each declared once, with its keyword,
+ * its groups and how it builds its value (Part I of the spec: {@code ambient},
+ * {@code orthographic_camera}, {@code sphere}; Part II: the perspective camera, planes,
+ * triangles, boxes, OBJ meshes and materials).
+ *
+ * <p>To add a statement, add one entry to {@link #STATEMENTS}: the reader, the messages (the
+ * usage in "write it as …", the keyword list, "did you mean …?") and the parts of a large file
+ * all follow from it. Its groups are read and checked for form by {@link StatementReader}; its
+ * builder asks {@link GroupValues} for values by group index, which checks the rules for them.
+ */
+final class Grammar {
+
+    private static final Material DEFAULT = Material.DEFAULT;
+    private static final String VIEW_HELP = "the camera looks along it; (0|0|-1) looks into the screen";
+
+    /** Every statement, in the order the messages list them. */
+    static final List<Statement> STATEMENTS = List.of(
+            new Statement("ambient", List.of(numbers("colour", "R|G|B")), false,
+                    (v, out) -> out.ambient(v.colour(0))),
+            new Statement("orthographic_camera",
+                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"), numbers("zoom", "zoom")), false,
+                    (v, out) -> out.camera(new OrthographicCamera(v.vector(0), v.direction(1, VIEW_HELP), v.positive(2)))),
+            new Statement("perspective_camera",
+                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"), numbers("field of view", "fov")),
+                    false,
+                    (v, out) -> out.camera(new PerspectiveCamera(v.vector(0), v.direction(1, VIEW_HELP),
+                            v.between(2, 0, 180, "degrees", "it is the angle the picture's width spans, such as 60")))),
+            new Statement("sphere", List.of(numbers("centre", "x|y|z"), numbers("radius", "r"), numbers("colour", "R|G|B")),
+                    true,
+                    (v, out) -> out.object(new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material()))),
+            new Statement("plane", List.of(numbers("point", "x|y|z"), numbers("normal", "nx|ny|nz"), numbers("colour", "R|G|B")),
+                    true,
+                    (v, out) -> out.object(new Plane(v.vector(0),
+                            v.direction(1, "the plane is at right angles to it; (0|1|0) makes a floor"), v.colour(2), v.material()))),
+            new Statement("triangle", List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
+                    numbers("third corner", "x3|y3|z3"), numbers("colour", "R|G|B")), true,
+                    (v, out) -> out.object(triangle(v))),
+            new Statement("box", List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
+                    numbers("colour", "R|G|B")), true,
+                    (v, out) -> out.object(box(v))),
+            new Statement("mesh", List.of(path("file"), numbers("shift", "x|y|z"), numbers("scale", "s"),
+                    numbers("colour", "R|G|B")), true,
+                    (v, out) -> {
+                        Vector3f shift = v.vector(1);
+                        float scale = v.positive(2);
+                        Color colour = v.colour(3);
+                        out.objects(MeshFiles.read(v, 0).triangles(shift, scale, colour, v.material()));
+                    }),
+            new Statement("material", List.of(name("name", "name"), properties("properties",
+                    "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")), false,
+                    (v, out) -> out.material(v.name(0), new Material(v.property(1, "ambient", DEFAULT.ambient(), 0),
+                            v.property(1, "diffuse", DEFAULT.diffuse(), 0), v.property(1, "specular", DEFAULT.specular(), 0),
+                            v.property(1, "shininess", DEFAULT.shininess(), 0),
+                            v.property(1, "reflective", DEFAULT.reflective(), 0),
+                            v.property(1, "transparency", DEFAULT.transparency(), 0), v.property(1, "ior", DEFAULT.ior(), 1)))));
+
+    /** The keywords as bytes, beside {@link #STATEMENTS}, to find a line's statement without a String. */
+    private static final byte[][] KEYWORDS = STATEMENTS.stream()
+            .map(s -> s.keyword().getBytes(StandardCharsets.US_ASCII)).toArray(byte[][]::new);
+    private static final Statement[] ALL = STATEMENTS.toArray(Statement[]::new);
+
+    private Grammar() {
+    }
+
+    /** The statement whose keyword is {@code bytes[start, end)}, or null. */
+    static Statement find(byte[] bytes, int start, int end) {
+        for (int k = 0; k < ALL.length; k++) { // no Iterator for each line of a large file
+            if (Arrays.equals(KEYWORDS[k], 0, KEYWORDS[k].length, bytes, start, end)) {
+                return ALL[k];
+            }
+        }
+        return null;
+    }
+
+    /** All keywords, for messages: "'ambient', 'orthographic_camera', … or 'material'". */
+    static String keywordList() {
+        List<String> quoted = STATEMENTS.stream().map(s -> "'" + s.keyword() + "'").toList();
+        return quoted.subList(0, quoted.size() - 1).stream().collect(Collectors.joining(", "))
+                + " or " + quoted.get(quoted.size() - 1);
+    }
+
+    /** A triangle whose corners do not lie on one line (else it has no area and is never hit). */
+    private static Triangle triangle(GroupValues v) throws StatementError {
+        Vector3f p1 = v.vector(0);
+        Vector3f p2 = v.vector(1);
+        Vector3f p3 = v.vector(2);
+        Color colour = v.colour(3);
+        Vector3f n = p2.subtract(p1).cross(p3.subtract(p1)); // as the triangle computes it
+        if (n.x() == 0 && n.y() == 0 && n.z() == 0) {
+            throw v.errorAtGroup(0, "the corners of the triangle lie on one line, so it has no area",
+                    "three corners that do not lie on one line make a triangle, such as (0|0|0), (1|0|0) and (0|1|0)");
+        }
+        if (!n.isFinite()) {
+            throw v.errorAtGroup(0, "the triangle is too large to compute with in float",
+                    "its sides must be shorter than about 1e19");
+        }
+        return new Triangle(p1, p2, p3, colour, v.material());
+    }
+
+    /** A box whose corners differ in every coordinate (else it is flat). */
+    private static Box box(GroupValues v) throws StatementError {
+        Vector3f a = v.vector(0);
+        Vector3f b = v.vector(1);
+        Color colour = v.colour(2);
+        float[] first = {a.x(), a.y(), a.z()};
+        float[] second = {b.x(), b.y(), b.z()};
+        for (int k = 0; k < 3; k++) {
+            if (first[k] == second[k]) {
+                throw v.errorAtValue(1, k, "the box is flat: both corners have " + "xyz".charAt(k) + " = " + v.written(1, k),
+                        "a box takes two opposite corners, which differ in x, y and z");
+            }
+        }
+        return Box.between(a, b, colour, v.material());
+    }
+}

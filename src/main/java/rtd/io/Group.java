@@ -1,0 +1,55 @@
+package rtd.io;
+
+import java.util.List;
+
+/**
+ * One group {@code :(…)} of a statement in the scene grammar ({@link Grammar}): what it means
+ * in messages ("the centre of 'sphere'") and what it holds. Part I of the spec has groups of
+ * numbers only; Part II adds a group that holds one name (a material's or a file's) and the
+ * {@code key=value} pairs of a material.
+ *
+ * @param meaning what the group is, for messages: "centre", "view direction"
+ * @param kind    what it holds
+ * @param shape   how it is written, for "write it as …": {@code x|y|z}, {@code path}
+ * @param size    how many numbers a {@link Kind#NUMBERS} group holds; 1 for the others
+ * @param keys    the keys a {@link Kind#PROPERTIES} group may hold; empty for the others
+ */
+record Group(String meaning, Kind kind, String shape, int size, List<String> keys) {
+
+    /** What a group holds. */
+    enum Kind {
+        /** A fixed count of numbers separated by {@code |}. */
+        NUMBERS,
+        /** One name of letters, digits, {@code _} and {@code -}, such as a material's. */
+        NAME,
+        /** One file path, everything up to the group's {@code )}, blanks around it trimmed. */
+        PATH,
+        /** {@code key=number} pairs separated by {@code |}, each key at most once, any left out. */
+        PROPERTIES
+    }
+
+    /** A group of numbers written as {@code shape}, such as {@code x|y|z}; their count is the shape's. */
+    static Group numbers(String meaning, String shape) {
+        return new Group(meaning, Kind.NUMBERS, shape, shape.split("\\|").length, List.of());
+    }
+
+    /** A group that holds one name, written as {@code shape} in the statement's usage. */
+    static Group name(String meaning, String shape) {
+        return new Group(meaning, Kind.NAME, shape, 1, List.of());
+    }
+
+    /** A group that holds one file path. */
+    static Group path(String meaning) {
+        return new Group(meaning, Kind.PATH, "path", 1, List.of());
+    }
+
+    /** A group of {@code key=number} pairs with the given keys. */
+    static Group properties(String meaning, String... keys) {
+        return new Group(meaning, Kind.PROPERTIES, "key=value|key=value...", 1, List.of(keys));
+    }
+
+    /** "the centre of 'sphere'", for messages. */
+    String of(Statement statement) {
+        return "the " + meaning + " of '" + statement.keyword() + "'";
+    }
+}

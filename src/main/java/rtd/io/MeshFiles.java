@@ -1,0 +1,94 @@
+package rtd.io;
+
+import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Finds and reads the OBJ file that a {@code mesh} statement names (Part II of the spec): its
+ * path is relative to the scene file's folder. A file that cannot be read is an error at the
+ * path in the scene; mistakes inside the file are located in the file, and each says which line
+ * of the scene uses it.
+ */
+final class MeshFiles {
+
+    /** Larger files do not fit in one Java array. */
+    private static final long MAX_SIZE = Integer.MAX_VALUE - 8;
+
+    private MeshFiles() {
+    }
+
+    /** The mesh in the OBJ file that group {@code g} of the statement names. */
+    static ObjMesh read(GroupValues values, int g) throws StatementError {
+        SourceText scene = values.source();
+        String written = values.name(g);
+        Path file;
+        String shown;
+        try {
+            Path path = Path.of(written);
+            file = scene.folder().resolve(path);
+            shown = path.isAbsolute() ? written : shownName(scene.name(), path);
+        } catch (InvalidPathException e) {
+            throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
+        }
+        byte[] bytes;
+        try {
+            bytes = readFile(file);
+        } catch (IOException e) {
+            throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
+                    "a mesh's path is relative to the folder of the scene file");
+        }
+        try {
+            return ObjReader.read(new SourceText(shown, bytes));
+        } catch (SceneException e) {
+            String usedBy = "this file is used by " + scene.name() + ":" + values.line();
+            List<SceneError> errors = e.errors().stream().map(error -> new SceneError(error.file(), error.line(),
+                    error.column(), error.message(), error.sourceLine(),
+                    error.help() == null ? usedBy : error.help() + "; " + usedBy)).toList();
+            throw new StatementError(values.placeOfValue(g, 0), errors);
+        }
+    }
+
+    /** The OBJ file's name as the user knows it: the scene's name, with the path in place of its file name. */
+    private static String shownName(String sceneName, Path path) {
+        try {
+            return Path.of(sceneName).resolveSibling(path).toString();
+        } catch (InvalidPathException e) {
+            return path.toString();
+        }
+    }
+
+    private static byte[] readFile(Path file) throws IOException {
+        if (Files.isDirectory(file)) {
+            throw new FileSystemException(file.toString(), null, "it is a folder, not a file");
+        }
+        if (Files.exists(file) && !Files.isRegularFile(file)) {
+            // a device or a pipe: it might never end
+            throw new FileSystemException(file.toString(), null, "it is not a regular file");
+        }
+        if (Files.exists(file) && Files.size(file) > MAX_SIZE) {
+            throw new FileSystemException(file.toString(), null, "it is larger than 2 GB");
+        }
+        return Files.readAllBytes(file);
+    }
+
+    /** Why a file could not be read, in words for a person. */
+    private static String reason(IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return "no such file";
+        }
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException failure && failure.getReason() != null) {
+            return failure.getReason().toLowerCase(Locale.ROOT);
+        }
+        return e.getMessage() != null ? e.getMessage() : "an input error";
+    }
+}

@@ -1,0 +1,311 @@
+package rtd.io;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Reads the part of the Wavefront OBJ format that a {@code mesh} statement uses (Part II of the
+ * spec): {@code v x y z [w]} vertices, {@code vn x y z} normals and {@code f} faces whose corners
+ * are written {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, with indices counted from 1
+ * or, when negative, back from the last vertex or normal read so far. A face of more than three
+ * corners becomes a fan of triangles around its first corner. {@code #} starts a comment; every
+ * other line ({@code o}, {@code g}, {@code s}, {@code usemtl}, {@code mtllib}, {@code vt}, …) is
+ * skipped whatever it holds, as are numbers after the third on a {@code v} line (a {@code w}, or
+ * the vertex colours some tools write) and texture indices.
+ *
+ * <p>It works on the file's bytes, like the scene reader, since a model may have millions of
+ * faces. Each mistake is located in the OBJ file, as in a scene file, and reading goes on with
+ * the next line.
+ */
+final class ObjReader {
+
+    private static final String CORNER_FORMS = "a corner is written 3, 3/1, 3//2 or 3/1/2";
+
+    private final SourceText source;
+    private final byte[] bytes;
+    private int pos;
+    private int line = 1;
+    private int lineStart;
+
+    private float[] vertices = new float[3 * 1024];
+    private int vertexCount;
+    private float[] normals = new float[3 * 64];
+    private int normalCount;
+    private int[] corners = new int[3 * 1024];
+    private int[] cornerNormals = new int[3 * 1024];
+    private int triangleCount;
+
+    /** The current face's corners: vertex and normal (−1 for none) indices. */
+    private int[] faceVertices = new int[8];
+    private int[] faceNormals = new int[8];
+
+    private final List<SceneError> errors = new ArrayList<>();
+
+    private ObjReader(SourceText source) {
+        this.source = source;
+        this.bytes = source.bytes();
+    }
+
+    /**
+     * The mesh in {@code source}, or every mistake found in it (up to one more than
+     * {@link SceneParser#MAX_ERRORS}, so that the caller can tell there were more).
+     */
+    static ObjMesh read(SourceText source) throws SceneException {
+        ObjReader reader = new ObjReader(source);
+        reader.readAll();
+        if (!reader.errors.isEmpty()) {
+            throw new SceneException(reader.errors, false);
+        }
+        return new ObjMesh(Arrays.copyOf(reader.vertices, 3 * reader.vertexCount),
+                Arrays.copyOf(reader.normals, 3 * reader.normalCount), Arrays.copyOf(reader.corners, 3 * reader.triangleCount),
+                Arrays.copyOf(reader.cornerNormals, 3 * reader.triangleCount), reader.triangleCount);
+    }
+
+    private void readAll() {
+        int nul = firstNul();
+        if (nul >= 0) {
+            errors.add(notText(nul));
+            return;
+        }
+        if (bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF) {
+            pos = lineStart = 3; // a UTF-8 byte-order mark
+        }
+        while (pos < bytes.length && errors.size() <= SceneParser.MAX_ERRORS) {
+            try {
+                readLine();
+            } catch (StatementError e) {
+                errors.addAll(e.errors());
+            }
+            skipToNextLine();
+        }
+    }
+
+    private void readLine() throws StatementError {
+        skipBlanks();
+        int start = pos;
+        while (!atTokenEnd()) {
+            pos++;
+        }
+        int length = pos - start;
+        if (length == 1 && bytes[start] == 'v') {
+            readVertex();
+        } else if (length == 2 && bytes[start] == 'v' && bytes[start + 1] == 'n') {
+            readNormal();
+        } else if (length == 1 && bytes[start] == 'f') {
+            readFace(start);
+        }
+        // any other line is skipped, whatever it holds
+    }
+
+    // ---- v and vn ---------------------------------------------------------------------------
+
+    private void readVertex() throws StatementError {
+        if (3 * vertexCount + 3 > vertices.length) {
+            vertices = Arrays.copyOf(vertices, 2 * vertices.length);
+        }
+        vertexCount++; // even if the line is wrong: the faces below count it, and would be wrong too
+        readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
+    }
+
+    private void readNormal() throws StatementError {
+        if (3 * normalCount + 3 > normals.length) {
+            normals = Arrays.copyOf(normals, 2 * normals.length);
+        }
+        normalCount++;
+        readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
+    }
+
+    private void readCoordinates(float[] into, int at, String keyword, String what) throws StatementError {
+        for (int k = 0; k < 3; k++) {
+            skipBlanks();
+            int start = pos;
+            while (!atTokenEnd()) {
+                pos++;
+            }
+            if (pos == start) {
+                throw error(pos, "expected 3 numbers (x y z) after '" + keyword + "', found " + (k == 0 ? "none" : k == 1 ? "1" : "2"),
+                        "a " + what + " is written " + keyword + " 0.5 -1 2");
+            }
+            float value;
+            try {
+                value = FloatParser.parse(bytes, start, pos);
+            } catch (NumberFormatException e) {
+                throw error(start, "expected a number, found '" + source.text(start, pos) + "'",
+                        "numbers are written like 3, -0.5, .5, 1. or 2e3");
+            }
+            if (!Float.isFinite(value)) {
+                String written = source.text(start, pos);
+                boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
+                throw error(start, "the " + "xyz".charAt(k) + " of the " + what + " must be a finite number, found " + written
+                        + (overflow ? ", which is too large for a float" : ""),
+                        overflow ? "a float holds numbers up to about 3.4e38" : "a " + what + " is written " + keyword + " 0.5 -1 2");
+            }
+            into[at + k] = value;
+        }
+    }
+
+    // ---- f ------------------------------------------------------------------------------------
+
+    private void readFace(int keywordStart) throws StatementError {
+        int count = 0;
+        while (true) {
+            skipBlanks();
+            if (atTokenEnd()) {
+                break;
+            }
+            if (count == faceVertices.length) {
+                faceVertices = Arrays.copyOf(faceVertices, 2 * count);
+                faceNormals = Arrays.copyOf(faceNormals, 2 * count);
+            }
+            readCorner(count++);
+        }
+        if (count < 3) {
+            throw error(keywordStart, "a face needs at least 3 corners, found " + count, CORNER_FORMS);
+        }
+        for (int k = 1; k + 1 < count; k++) { // a fan around the first corner
+            addTriangle(0, k, k + 1);
+        }
+    }
+
+    /** One corner {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, kept as corner {@code k}. */
+    private void readCorner(int k) throws StatementError {
+        int start = pos;
+        long vertex = readIndex(start);
+        long normal = 0;
+        int normalStart = -1;
+        if (at('/')) {
+            pos++;
+            while (!atTokenEnd() && bytes[pos] != '/') {
+                pos++; // a texture index, which a flat or smooth triangle does not use
+            }
+            if (at('/')) {
+                pos++;
+                normalStart = pos;
+                normal = readIndex(start);
+            }
+        }
+        if (!atTokenEnd()) {
+            throw cornerError(start);
+        }
+        faceVertices[k] = resolve(vertex, vertexCount, start, "vertex", "v");
+        faceNormals[k] = normalStart < 0 ? -1 : resolve(normal, normalCount, normalStart, "normal", "vn");
+    }
+
+    /** A whole number at {@link #pos}, with an optional sign; an error at the corner if there is none. */
+    private long readIndex(int cornerStart) throws StatementError {
+        boolean negative = at('-');
+        if (negative || at('+')) {
+            pos++;
+        }
+        int digitsStart = pos;
+        long value = 0;
+        while (pos < bytes.length && bytes[pos] >= '0' && bytes[pos] <= '9') {
+            value = Math.min(value * 10 + (bytes[pos] - '0'), Integer.MAX_VALUE + 1L); // beyond any file
+            pos++;
+        }
+        if (pos == digitsStart) {
+            throw cornerError(cornerStart);
+        }
+        return negative ? -value : value;
+    }
+
+    /** The index from 0 that {@code index} names among the {@code count} read so far. */
+    private int resolve(long index, int count, int at, String what, String keyword) throws StatementError {
+        if (index == 0) {
+            throw error(at, "a " + what + " index is never 0: they count from 1",
+                    "1 is the first '" + keyword + "' line of the file, -1 the last one above the face");
+        }
+        long resolved = index > 0 ? index - 1 : count + index;
+        if (resolved < 0 || resolved >= count) {
+            throw error(at, "the " + what + " index " + index + " is out of range: " + count + " "
+                    + (count == 1 ? what + " comes" : (what.equals("vertex") ? "vertices" : what + "s") + " come")
+                    + " before this face",
+                    "1 is the first '" + keyword + "' line of the file, -1 the last one above the face");
+        }
+        return (int) resolved;
+    }
+
+    private void addTriangle(int a, int b, int c) {
+        if (3 * triangleCount + 3 > corners.length) {
+            corners = Arrays.copyOf(corners, 2 * corners.length);
+            cornerNormals = Arrays.copyOf(cornerNormals, 2 * cornerNormals.length);
+        }
+        boolean smooth = faceNormals[a] >= 0 && faceNormals[b] >= 0 && faceNormals[c] >= 0;
+        int at = 3 * triangleCount++;
+        corners[at] = faceVertices[a];
+        corners[at + 1] = faceVertices[b];
+        corners[at + 2] = faceVertices[c];
+        cornerNormals[at] = smooth ? faceNormals[a] : -1;
+        cornerNormals[at + 1] = smooth ? faceNormals[b] : -1;
+        cornerNormals[at + 2] = smooth ? faceNormals[c] : -1;
+    }
+
+    private StatementError cornerError(int start) {
+        int end = start;
+        while (end < bytes.length && !ByteClasses.isBlank(bytes[end]) && bytes[end] != '\n' && bytes[end] != '#') {
+            end++;
+        }
+        return error(start, "expected a corner of the face, found " + (end > start ? "'" + source.text(start, end) + "'"
+                : source.describe(start, lineStart)), CORNER_FORMS);
+    }
+
+    // ---- bytes --------------------------------------------------------------------------------
+
+    /** Whether {@link #pos} is at a blank, a comment, the end of the line or of the file. */
+    private boolean atTokenEnd() {
+        if (pos >= bytes.length) {
+            return true;
+        }
+        byte b = bytes[pos];
+        return b == '\n' || b == '#' || ByteClasses.isBlank(b);
+    }
+
+    private boolean at(char c) {
+        return pos < bytes.length && bytes[pos] == c;
+    }
+
+    private void skipBlanks() {
+        while (pos < bytes.length && ByteClasses.isBlank(bytes[pos])) {
+            pos++;
+        }
+    }
+
+    private void skipToNextLine() {
+        while (pos < bytes.length && bytes[pos] != '\n') {
+            pos++;
+        }
+        if (pos < bytes.length) {
+            pos++;
+            line++;
+            lineStart = pos;
+        }
+    }
+
+    private int firstNul() {
+        for (int i = 0; i < bytes.length; i++) {
+            if (bytes[i] == 0) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    private SceneError notText(int nul) {
+        int lineOfNul = 1;
+        int startOfLine = 0;
+        for (int i = 0; i < nul; i++) {
+            if (bytes[i] == '\n') {
+                lineOfNul++;
+                startOfLine = i + 1;
+            }
+        }
+        return new SceneError(source.name(), lineOfNul, source.column(startOfLine, nul),
+                "this is not a text file: found a NUL byte", null, "a mesh is a Wavefront OBJ file, which is text");
+    }
+
+    private StatementError error(int offset, String message, String help) {
+        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
+                source.lineText(lineStart), help));
+    }
+}

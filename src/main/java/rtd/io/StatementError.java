@@ -1,0 +1,38 @@
+package rtd.io;
+
+import java.util.List;
+
+/**
+ * Ends the reading of one statement with its mistakes; the reader records them and goes on with
+ * the next line. Most statements fail with one error; a {@code mesh} whose OBJ file has
+ * mistakes fails with all of them, located in that file, but ordered among the scene's errors
+ * by {@link #place}, the statement's own place.
+ */
+final class StatementError extends Exception {
+
+    private static final long serialVersionUID = 1L;
+    private final transient SceneError place;
+    private final transient List<SceneError> errors;
+
+    /** One error, which is also where it is ordered. */
+    StatementError(SceneError error) {
+        this(error, List.of(error));
+    }
+
+    /** Several errors, ordered among the scene's errors as if they stood at {@code place}. */
+    StatementError(SceneError place, List<SceneError> errors) {
+        super(errors.get(0).message(), null, false, false);
+        this.place = place;
+        this.errors = List.copyOf(errors);
+    }
+
+    /** The place in the scene file by which the errors are ordered. */
+    SceneError place() {
+        return place;
+    }
+
+    /** The errors, in order. */
+    List<SceneError> errors() {
+        return errors;
+    }
+}
