@@ -17,7 +17,9 @@ import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
 import rtd.image.Color;
+import rtd.image.Rgb;
 import rtd.math.Vector3f;
+import rtd.scene.Light;
 
 /**
  * The scene grammar: every statement of the scene file, each declared once, with its keyword,
@@ -68,6 +70,8 @@ final class Grammar {
                         Color colour = v.colour(3);
                         out.objects(MeshFiles.read(v, 0).triangles(shift, scale, colour, v.material()));
                     }),
+            new Statement("light", List.of(numbers("position", "x|y|z"), numbers("intensity", "R|G|B")), false,
+                    (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
             new Statement("material", List.of(name("name", "name"), properties("properties",
                     "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")), false,
                     (v, out) -> out.material(v.name(0), new Material(v.property(1, "ambient", DEFAULT.ambient(), 0),

@@ -5,6 +5,7 @@ import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
+import rtd.scene.Light;
 
 /**
  * Where an object that names a material goes when it is built after the whole file is read:
@@ -40,6 +41,11 @@ final class ObjectsOutput implements Statement.Output {
 
     @Override
     public void material(String name, Material material) {
+        throw onlyObjects();
+    }
+
+    @Override
+    public void light(Light light) {
         throw onlyObjects();
     }
 

@@ -18,6 +18,7 @@ import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
+import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
@@ -139,8 +140,10 @@ final class SceneParser {
         List<ScenePart.Located<ICamera>> cameras = new ArrayList<>();
         List<ScenePart.Located<ScenePart.Named>> definitions = new ArrayList<>();
         Set<String> broken = new HashSet<>();
+        List<Light> lights = new ArrayList<>();
         int statements = 0;
         for (ScenePart part : parts) {
+            lights.addAll(part.lights);
             errors.addAll(part.errors);
             ambients.addAll(part.ambients);
             cameras.addAll(part.cameras);
@@ -171,7 +174,7 @@ final class SceneParser {
             throw new SceneException(shown, errors.size() > MAX_ERRORS);
         }
         Color ambient = ambients.isEmpty() ? Color.BLACK : ambients.get(0).value();
-        return new Scene(ambient, cameras.get(0).value(), objects);
+        return new Scene(ambient, cameras.get(0).value(), objects, lights);
     }
 
     /** The materials by name; a name defined again is an error at the second definition. */

@@ -8,6 +8,7 @@ import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
+import rtd.scene.Light;
 
 /**
  * What one stretch of lines of a scene file holds: its objects, its {@code ambient}, camera and
@@ -41,6 +42,7 @@ final class ScenePart {
     final List<Located<Color>> ambients = new ArrayList<>();
     final List<Located<ICamera>> cameras = new ArrayList<>();
     final List<Located<Named>> materials = new ArrayList<>();
+    final List<Light> lights = new ArrayList<>();
     final List<Found> errors = new ArrayList<>();
     /** The names of definitions ({@code material:}) that have mistakes: not unknown, only broken. */
     final Set<String> brokenDefinitions = new HashSet<>();

@@ -6,6 +6,7 @@ import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
+import rtd.scene.Light;
 
 /**
  * One statement of the scene grammar, declared once in {@link Grammar}: its keyword, its groups,
@@ -53,6 +54,9 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
 
         /** A finish that objects may name, defined under {@code name}. */
         void material(String name, Material material);
+
+        /** A point light. */
+        void light(Light light);
     }
 
     /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)[:(material)]}. */

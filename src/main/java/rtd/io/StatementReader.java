@@ -7,6 +7,7 @@ import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
+import rtd.scene.Light;
 
 /**
  * Reads the statements of a stretch of whole lines of a scene file into a {@link ScenePart}:
@@ -386,6 +387,11 @@ final class StatementReader {
         @Override
         public void camera(ICamera camera) {
             part.cameras.add(new ScenePart.Located<>(camera, located()));
+        }
+
+        @Override
+        public void light(Light light) {
+            part.lights.add(light);
         }
 
         @Override

@@ -12,7 +12,9 @@ import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
 import rtd.image.Color;
+import rtd.image.Rgb;
 import rtd.math.Vector3f;
+import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /** The statements of Part II read into the objects they name, with every field as written. */
@@ -38,6 +40,14 @@ class NewStatementsTest {
     @Test
     void aPerspectiveCameraMayLookStraightDownAsTheOrthographicOneMay() throws SceneException {
         assertThat(read("perspective_camera:(0|10|0):(0|-1|0):(90)").camera()).isInstanceOf(PerspectiveCamera.class);
+    }
+
+    @Test
+    void lightsAreReadInFileOrderWithTheirIntensityAsAFractionOf255() throws SceneException {
+        Scene scene = read(CAMERA + "light:(-10|10|-10):(255|255|255)\nsphere:(0|0|0):(1):(255|0|0)\nlight:(1|2|3):(51|0|255)");
+        assertThat(scene.lights()).containsExactly(new Light(new Vector3f(-10, 10, -10), new Rgb(1, 1, 1)),
+                new Light(new Vector3f(1, 2, 3), new Rgb(0.2f, 0, 1)));
+        assertThat(read(CAMERA).lights()).as("a scene without lights is flat").isEmpty();
     }
 
     @Test
