@@ -8,8 +8,9 @@ import picocli.CommandLine.ParameterException;
 final class ImageSize {
 
     /**
-     * Bytes per pixel: the picture holds one {@code int} a pixel; writing the PNG adds its rows
-     * (3 bytes a pixel) and, at worst, as much again compressed.
+     * Bytes per pixel: the picture holds one {@code int} a pixel; {@code javax.imageio} writes it
+     * from that array, row by row, and a spare 6 bytes a pixel leave room for the encoders that
+     * convert the whole picture first.
      */
     private static final long BYTES_PER_PIXEL = 4 + 3 + 3;
 

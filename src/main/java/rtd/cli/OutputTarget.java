@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import java.util.Optional;
 
 /**
- * Where the picture goes, decided before rendering: the file that a new PNG replaces, or a
+ * Where the picture goes, decided before rendering: the file that a new picture replaces, or a
  * FIFO or character device that it is written into.
  *
  * <p>Decided on the real file, not on the path as spelt: a symbolic link (the output itself or a
@@ -20,12 +20,22 @@ import java.util.Optional;
  */
 record OutputTarget(Path spelt, Path file, Kind kind) {
 
-    /** How the PNG reaches the output. */
+    /** How the picture reaches the output. */
     enum Kind {
         /** A regular file, new or old: written to a temporary file, then moved into place. */
         REPLACE,
-        /** A FIFO or character device such as /dev/null: the PNG is written into it as it is. */
-        STREAM
+        /** A FIFO or character device such as /dev/null: the picture is written into it as it is. */
+        STREAM,
+        /** {@code -o -}: standard output, which must not be a terminal. */
+        STANDARD_OUTPUT
+    }
+
+    /** The name by which {@code -o} names standard output. */
+    static final Path DASH = Path.of("-");
+
+    /** Standard output, for {@code -o -}. */
+    static OutputTarget standardOutput() {
+        return new OutputTarget(DASH, DASH, Kind.STANDARD_OUTPUT);
     }
 
     /** What kind of file a path names, by the file-type bits of its mode (Linux, macOS). */
@@ -84,7 +94,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
 
     private static Refusal notAFile(Path output, String what) {
         return Refusal.misuse("the output '" + output + "' is " + what
-                + "; rtd writes a PNG to a file, a FIFO or a character device such as /dev/null");
+                + "; rtd writes the picture to a file, a FIFO or a character device such as /dev/null");
     }
 
     /** Whether both name one file, after links; spelt paths decide only when a file is missing. */

@@ -1,13 +1,14 @@
 package rtd.cli;
 
-import java.awt.image.BufferedImage;
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.function.Function;
-import java.util.function.Supplier;
+import java.util.concurrent.CompletableFuture;
+import java.util.stream.Collectors;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -15,45 +16,48 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import rtd.accel.Bvh;
+import rtd.io.ImageFormat;
 import rtd.io.SceneException;
-import rtd.io.SceneIO;
-import rtd.image.Picture;
-import rtd.render.Shader;
-import rtd.shade.FlatShader;
-import rtd.shade.WhittedShader;
-import rtd.render.LinearTracer;
-import rtd.render.ParallelRenderer;
-import rtd.render.RenderProgress;
-import rtd.render.RenderResult;
-import rtd.render.Tracer;
-import rtd.render.WorkCount;
-import rtd.scene.Scene;
 
 /**
- * The command line: {@code java -jar rtd.jar SCENE [-o OUT.png] [--width N] [--height N]}.
- * It reads the scene, renders it and writes the PNG, timing each phase for {@code --stats}.
+ * The command line: {@code java -jar rtd.jar SCENE... [-o OUT] [--width N] [--height N] [--scale F]}.
+ * It reads each scene, renders it and writes the picture ({@link SceneRun}), after checking the
+ * whole command line: a mistake there (exit code 2) stops everything before any work, while a
+ * scene that fails (exit code 1) does not keep the others from being rendered.
  */
-@Command(name = "rtd", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+@Command(name = RtdCommand.NAME, mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         sortOptions = false, usageHelpAutoWidth = true,
-        description = "Renders a scene file to a PNG by ray tracing, as the \"3D Raytracing Demo Project\" does.",
+        description = {"Renders scene files to pictures by ray tracing, as the \"3D Raytracing Demo Project\" does.",
+            "Each SCENE is written beside it, as SCENE with .png in place of its extension, unless -o names the "
+                + "picture. SCENE '-' reads the scene from standard input (it needs -o)."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {
-            "0:the picture was written",
-            "1:the scene file has mistakes, a file could not be read or written, or rendering failed",
+            "0:every picture was written (a warning says when nothing was in view)",
+            "1:a scene file has mistakes, a file could not be read or written, or rendering failed",
             "2:the command line is wrong"},
-        footer = {"%nExample:%n  java -jar rtd.jar examples/input_rtd.txt -o out.png",
-            "The scene format and every error message: see README.md and docs/errors.md."})
+        footer = {"%nExamples:",
+            "  java -jar rtd.jar examples/input_rtd.txt -o out.png",
+            "  java -jar rtd.jar examples/input_rtd.txt --scale 0.25 -o thumbnail.jpg",
+            "  java -jar rtd.jar examples/*.txt",
+            "The scene format and every message: see README.md and docs/errors.md."})
 public final class RtdCommand implements Callable<Integer> {
+
+    /** How the command is started, for the help and its messages. */
+    static final String NAME = "java -jar rtd.jar";
 
     @Spec
     private CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCENE", converter = FileName.class, description = "the scene file to render")
-    private Path scenePath;
+    private final StandardStreams streams;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png", converter = FileName.class,
-            description = "where to write the picture (default: SCENE with .png in place of its extension)")
+    @Parameters(index = "0..*", arity = "1..*", paramLabel = "SCENE", converter = FileName.class,
+            description = "the scene files to render; '-' is standard input")
+    private List<Path> scenePaths;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT", converter = FileName.class,
+            description = "where to write the picture, with one SCENE: its extension chooses the format (.png, .jpg, "
+                    + ".bmp, ...; PNG if it has none); '-' is standard output, as PNG "
+                    + "(default: SCENE with .png in place of its extension)")
     private Path output;
 
     @Option(names = "--width", paramLabel = "N", defaultValue = "1920", converter = PositiveInt.class,
@@ -64,8 +68,14 @@ public final class RtdCommand implements Callable<Integer> {
             description = "image height in pixels (default: ${DEFAULT-VALUE})")
     private int height;
 
+    @Option(names = "--scale", paramLabel = "F", defaultValue = "1", converter = Scale.Converter.class,
+            description = "the same view at another size: multiplies the width and height (given or default) and "
+                    + "the orthographic camera's zoom by F, so that --scale 0.25 renders 480x270 pixels of what "
+                    + "1920x1080 shows (default: ${DEFAULT-VALUE})")
+    private Scale scale;
+
     @Option(names = "--threads", paramLabel = "N", converter = ThreadCount.class,
-            description = "threads to render, build the BVH and compress the PNG with (default: all cores, here "
+            description = "threads to render and build the BVH with (default: all cores, here "
                     + "${DEFAULT-VALUE}; a larger N uses at most 4 threads per core)")
     private int threads = Runtime.getRuntime().availableProcessors();
 
@@ -92,9 +102,18 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--debug", description = "show the stack trace of an error")
     private boolean debug;
 
+    private RtdCommand(StandardStreams streams) {
+        this.streams = streams;
+    }
+
     /** The command line of rtd, with its error handlers, ready to {@code execute}. */
     public static CommandLine commandLine() {
-        CommandLine commandLine = new CommandLine(new RtdCommand());
+        return commandLine(StandardStreams.system());
+    }
+
+    /** The command line with {@code streams} for {@code -} and {@code -o -}. */
+    static CommandLine commandLine(StandardStreams streams) {
+        CommandLine commandLine = new CommandLine(new RtdCommand(streams));
         commandLine.setParameterExceptionHandler(new UsageErrorHandler());
         commandLine.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
             PrintWriter err = cmd.getErr();
@@ -112,7 +131,31 @@ public final class RtdCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            return render(err);
+            List<Job> jobs = jobs(scenes());
+            Settings settings = settings();
+            CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
+            int exitCode = 0;
+            for (Job job : jobs) {
+                exitCode = Math.max(exitCode, run(job, settings, writerReady, err));
+            }
+            return exitCode;
+        } finally {
+            err.flush();
+        }
+    }
+
+    /** One scene's run; its exit code, 0 or 1. */
+    private int run(Job job, Settings settings, CompletableFuture<Void> writerReady, PrintWriter err) {
+        try {
+            if (job.refusal() != null) {
+                throw job.refusal();
+            }
+            if (job.source().stdin() && streams.inIsTerminal()) {
+                err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
+                err.flush();
+            }
+            new SceneRun(settings, spec.commandLine(), streams).run(job.source(), job.target(), job.format(), writerReady);
+            return 0;
         } catch (SceneException e) {
             err.print(e.report());
             printDebug(err, e);
@@ -129,102 +172,90 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    private int render(PrintWriter err) throws SceneException, FileError {
-        OutputTarget target = outputTarget();
-        PhaseTimer timer = new PhaseTimer();
-        Scene scene = readScene();
-        timer.endPhase("parse");
-        ImageSize.check(spec.commandLine(), width, height);
-
-        Bvh bvh = paper ? null : buildBvh(scene);
-        timer.endPhase("build");
-
-        RenderResult result = paper ? renderAsThePaper(scene, err) : renderInParallel(scene, bvh, err);
-        timer.endPhase("render");
-
-        writePicture(result, target, threads);
-        timer.endPhase("write");
-        if (stats) {
-            err.print(StatsReport.format(timer, scene, bvh, result.work(), threads, target.spelt()));
+    /** The scenes, checked against {@code -o}: one picture name cannot serve several scenes. */
+    private List<SceneSource> scenes() {
+        List<SceneSource> sources = scenePaths.stream().map(SceneSource::of).toList();
+        if (output != null && sources.size() > 1) {
+            throw misuse("-o names one picture, but " + sources.size() + " scenes were given; leave -o out to write "
+                    + "each picture beside its scene");
         }
-        return 0;
+        if (output == null && sources.stream().anyMatch(SceneSource::stdin)) {
+            throw misuse("the scene '-' comes from standard input, which gives no name for the picture; "
+                    + "name it with -o, such as -o out.png, or -o - for standard output");
+        }
+        return sources;
     }
 
-    /** The BVH, if {@code --accel} asks for one: {@code auto} takes it for any scene with objects. */
-    private Bvh buildBvh(Scene scene) {
-        boolean useBvh = accel == Accel.bvh || accel == Accel.auto && !scene.objects().isEmpty();
-        return useBvh ? Bvh.build(scene, threads) : null;
+    /** The sizes after {@code --scale}, checked. */
+    private Settings settings() {
+        long scaledWidth = scale.times(width);
+        long scaledHeight = scale.times(height);
+        if (scaledWidth < 1 || scaledHeight < 1) {
+            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; a picture needs "
+                    + "at least one pixel each way", scale, width, height, scaledWidth, scaledHeight));
+        }
+        if (scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE) {
+            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; Java images hold "
+                    + "at most %,d", scale, width, height, scaledWidth, scaledHeight, Integer.MAX_VALUE - 8));
+        }
+        boolean progress = !noProgress && Terminal.stderrIsTerminal();
+        return new Settings((int) scaledWidth, (int) scaledHeight, scale, threads, accel, paper, samples, stats, progress);
     }
 
-    /**
-     * All cores, with the BVH's tracer or the paper's loop ({@link LinearTracer}); in flat
-     * colours, or shaded ({@link WhittedShader}) if the scene has lights.
-     */
-    private RenderResult renderInParallel(Scene scene, Bvh bvh, PrintWriter err) {
-        Supplier<Tracer> tracers = bvh != null ? bvh::newTracer : () -> new LinearTracer(scene);
-        FlatShader flat = new FlatShader(scene);
-        Function<Tracer, Shader> shaders = scene.lights().isEmpty() ? tracer -> flat : tracer -> new WhittedShader(scene, tracer);
-        RenderProgress progress = new RenderProgress();
-        boolean showProgress = !noProgress && Terminal.stderrIsTerminal();
-        try (ProgressDisplay display = ProgressDisplay.start(showProgress, err, progress, width, height)) {
-            return ParallelRenderer.render(scene.camera(), tracers, shaders, width, height, samples, threads, progress);
-        }
+    /** A scene with where its picture goes, or why it cannot go there (a file error, reported in its turn). */
+    private record Job(SceneSource source, OutputTarget target, ImageFormat format, FileError refusal) {
     }
 
     /**
-     * {@code --paper}: the paper's {@link Scene#render} itself, one ray per pixel on this
-     * thread, in the paper's flat colours.
+     * Where each picture goes and in which format, all checked before any rendering, so that a
+     * mistake on the command line stops the run before any work, and a long render does not end
+     * in a failed write.
      */
-    private RenderResult renderAsThePaper(Scene scene, PrintWriter err) {
-        if (!scene.lights().isEmpty() || samples > 1) {
-            err.println("rtd: note: --paper draws as the paper does, one ray per pixel in flat colours: "
-                    + "the scene's lights and --samples are not used");
-        }
-        BufferedImage image = scene.render(width, height);
-        int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
-        for (int i = 0; i < rgb.length; i++) {
-            rgb[i] &= 0xFFFFFF; // getRGB adds an opaque alpha channel
-        }
-        return new RenderResult(new Picture(width, height, rgb), WorkCount.testsOf(scene.objects(), (long) width * height));
-    }
-
-    private Scene readScene() throws SceneException, FileError {
-        try {
-            return SceneIO.readScene(scenePath);
-        } catch (IOException e) {
-            throw new FileError("cannot read the scene file '" + scenePath + "': " + FileProblems.reason(e), e);
-        }
-    }
-
-    private static void writePicture(RenderResult result, OutputTarget target, int threads) throws FileError {
-        try {
-            if (target.kind() == OutputTarget.Kind.STREAM) {
-                SceneIO.writePngInto(result.image(), target.file(), threads);
-            } else {
-                SceneIO.writePng(result.image(), target.file(), threads);
+    private List<Job> jobs(List<SceneSource> sources) {
+        List<Job> jobs = new ArrayList<>();
+        for (SceneSource source : sources) {
+            try {
+                OutputTarget target = outputTarget(source);
+                jobs.add(new Job(source, target, format(target), null));
+            } catch (FileError e) {
+                jobs.add(new Job(source, null, ImageFormat.PNG, e));
             }
-        } catch (IOException e) {
-            throw new FileError("cannot write '" + target.spelt() + "': " + FileProblems.reason(e), e);
         }
+        return jobs;
+    }
+
+    /** The format of {@code target}'s extension; an extension that no writer knows is a mistake on the command line. */
+    private ImageFormat format(OutputTarget target) {
+        return ImageFormat.forOutput(target.spelt()).orElseThrow(() -> misuse("the output '" + target.spelt()
+                + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; "
+                + "give it one of " + ImageFormat.writableExtensions().stream().map(e -> "." + e)
+                        .collect(Collectors.joining(", "))));
     }
 
     /**
      * Where the picture goes: {@code -o}, or the scene's name with {@code .png}; checked before
-     * rendering, on the real files behind any symbolic link, so that a long render does not end
-     * in a failed write and nothing but a regular file is ever replaced.
+     * rendering, on the real files behind any symbolic link, so that nothing but a regular file
+     * is ever replaced.
      */
-    private OutputTarget outputTarget() throws FileError {
-        if (Files.isDirectory(scenePath)) {
+    private OutputTarget outputTarget(SceneSource source) throws FileError {
+        if (!source.stdin() && Files.isDirectory(source.path())) {
             // before the default output, which a folder such as / has no name for
-            throw new FileError("cannot read the scene file '" + scenePath + "': it is a folder, not a file", null);
+            throw new FileError("cannot read the scene file '" + source.name() + "': it is a folder, not a file", null);
         }
-        Path spelt = output != null ? output : defaultOutput(scenePath);
+        if (OutputTarget.DASH.equals(output)) {
+            if (streams.outIsTerminal()) {
+                throw misuse("-o - writes the picture to standard output, which is a terminal here; send it to a file "
+                        + "or a program instead, such as: " + NAME + " scene.txt -o - > out.png");
+            }
+            return OutputTarget.standardOutput();
+        }
+        Path spelt = output != null ? output : defaultOutput(source.path());
         OutputTarget target;
         try {
-            target = OutputTarget.of(spelt, scenePath);
+            target = OutputTarget.of(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path());
         } catch (OutputTarget.Refusal refusal) {
             if (refusal.misuse()) {
-                throw new ParameterException(spec.commandLine(), refusal.getMessage());
+                throw misuse(refusal.getMessage());
             }
             throw new FileError(refusal.getMessage(), null);
         }
@@ -232,6 +263,10 @@ public final class RtdCommand implements Callable<Integer> {
             checkFolder(spelt, target.folder().get());
         }
         return target;
+    }
+
+    private ParameterException misuse(String message) {
+        return new ParameterException(spec.commandLine(), message);
     }
 
     private static void checkFolder(Path spelt, Path folder) throws FileError {
@@ -250,15 +285,6 @@ public final class RtdCommand implements Callable<Integer> {
         int dot = name.lastIndexOf('.');
         String base = dot > 0 ? name.substring(0, dot) : name;
         return scene.resolveSibling(base + ".png");
-    }
-
-    /** A file that cannot be read or written; the message says which and why. */
-    private static final class FileError extends Exception {
-        private static final long serialVersionUID = 1L;
-
-        FileError(String message, IOException cause) {
-            super(message, cause);
-        }
     }
 
     private void printDebug(PrintWriter err, Exception e) {

@@ -17,15 +17,15 @@ final class StatsReport {
         Map<String, Double> seconds = timer.seconds();
         double renderSeconds = seconds.getOrDefault("render", 0.0);
         StringBuilder text = new StringBuilder();
-        line(text, "parse", seconds.get("parse"), String.format(Locale.ROOT, "%,d objects", scene.objects().size()));
+        line(text, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));
         line(text, "build", seconds.get("build"), bvh == null
                 ? "no BVH: the paper's loop tests every object"
-                : String.format(Locale.ROOT, "BVH of %,d nodes", bvh.nodeCount()));
+                : "BVH of " + count(bvh.nodeCount(), "node"));
         line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
                 work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
         line(text, "write", seconds.get("write"), output.toString());
         double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
-        line(text, "total", total, "");
+        line(text, "total", total, "from reading the scene to the written picture; the JVM's start is not counted");
         text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests%s, %.2f BVH nodes visited%n",
                 work.testsPerRay(), byKind(work), work.nodesPerRay()));
         return text.toString();
@@ -41,6 +41,11 @@ final class StatsReport {
             kinds.append(String.format(Locale.ROOT, ", %,d %s", kind.getValue(), kind.getKey()));
         }
         return kinds.append(')').toString();
+    }
+
+    /** "1 object", "2,000 objects". */
+    static String count(long n, String thing) {
+        return String.format(Locale.ROOT, "%,d %s%s", n, thing, n == 1 ? "" : "s");
     }
 
     /** " (12.50 sphere, 1.00 plane)" when the scene has more than one kind of object. */

@@ -18,7 +18,7 @@ final class UsageErrorHandler implements IParameterExceptionHandler {
         PrintWriter err = cmd.getErr();
         err.println("rtd: " + ex.getMessage());
         UnmatchedArgumentException.printSuggestions(ex, err);
-        err.println("Try 'rtd --help' for more information.");
+        err.println("Try '" + cmd.getCommandName() + " --help' for more information.");
         err.flush();
         return cmd.getCommandSpec().exitCodeOnInvalidInput();
     }

@@ -2,6 +2,7 @@ package rtd.io;
 
 import java.io.BufferedOutputStream;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
@@ -10,12 +11,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.util.function.DoubleConsumer;
 import rtd.image.Picture;
 import rtd.scene.Scene;
 
 /**
  * Input and output (paper, sections 4.1 and 4.3): reads a scene file, writes the picture as a
- * PNG ({@link PngEncoder}).
+ * PNG, or in another format that {@code javax.imageio} writes ({@link ImageWriting}).
  */
 public final class SceneIO {
 
@@ -46,6 +48,28 @@ public final class SceneIO {
     }
 
     /**
+     * Reads the scene at {@code path} as {@link #readScene(Path)} does, under the name
+     * {@code name} in error messages: {@code <stdin>} for the standard input, read through
+     * {@code /dev/stdin}.
+     */
+    public static Scene readScene(Path path, String name) throws SceneException, IOException {
+        return SceneParser.parse(new SourceText(name, SceneFileReader.read(path), Path.of("")));
+    }
+
+    /**
+     * Reads a scene from the stream {@code in} where the system has no {@code /dev/stdin}: all
+     * of it, up to {@link #MAX_SCENE_BYTES}; {@code name} stands for it in error messages.
+     */
+    public static Scene readScene(InputStream in, String name) throws SceneException, IOException {
+        byte[] bytes = in.readNBytes((int) MAX_SCENE_BYTES + 1);
+        if (bytes.length > MAX_SCENE_BYTES) {
+            throw new FileSystemException(name, null, "it is larger than " + SceneFileReader.bytes(MAX_SCENE_BYTES)
+                    + "; rtd reads scene files of at most " + SceneFileReader.bytes(MAX_SCENE_BYTES));
+        }
+        return SceneParser.parse(new SourceText(name, bytes, Path.of("")));
+    }
+
+    /**
      * Reads a scene from {@code text}; {@code name} stands for the file in error messages. The
      * OBJ files of its meshes are found relative to the current directory.
      */
@@ -69,19 +93,19 @@ public final class SceneIO {
     }
 
     /**
-     * Writes {@code picture} as a 24-bit RGB PNG to {@code output}, compressing with up to
-     * {@code threads} threads ({@link PngEncoder}), all or nothing: the PNG goes
-     * to a temporary file in the same folder first and replaces {@code output} only when it is
-     * complete, so a failed write leaves any earlier file exactly as it was. The temporary file
-     * ({@code .NAME.<hex>.tmp}) is removed on failure and when a signal stops the JVM
-     * ({@link TemporaryFiles}).
+     * Writes {@code picture} to {@code output} in {@code format} ({@link ImageWriting}), all or
+     * nothing: the picture goes to a temporary file in the same folder first and replaces
+     * {@code output} only when it is complete, so a failed write leaves any earlier file exactly
+     * as it was. The temporary file ({@code .NAME.<hex>.tmp}) is removed on failure and when a
+     * signal stops the JVM ({@link TemporaryFiles}). {@code progress} hears the fraction written.
      */
-    public static void writePng(Picture picture, Path output, int threads) throws IOException {
+    public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
+            throws IOException {
         Path folder = output.toAbsolutePath().getParent();
         TemporaryFiles.Created temporary = TemporaryFiles.create(folder, output.getFileName().toString());
         try {
             try (OutputStream out = new BufferedOutputStream(temporary.out(), 1 << 16)) {
-                PngEncoder.write(picture, out, threads);
+                ImageWriting.write(picture, format, out, progress);
             }
             moveIntoPlace(temporary.path(), output);
         } catch (IOException | RuntimeException | Error e) {
@@ -93,14 +117,15 @@ public final class SceneIO {
     }
 
     /**
-     * Writes {@code picture} as a PNG into {@code device}, a FIFO or a character device such as
-     * /dev/null, which stays what it is: it is opened for writing only, never created, replaced
-     * or truncated. A reader of a FIFO gets the PNG as it is written (a failed write leaves it
-     * with part of one).
+     * Writes {@code picture} in {@code format} into {@code device}, a FIFO or a character device
+     * such as /dev/null, which stays what it is: it is opened for writing only, never created,
+     * replaced or truncated. A reader of a FIFO gets the picture as it is written (a failed write
+     * leaves it with part of one).
      */
-    public static void writePngInto(Picture picture, Path device, int threads) throws IOException {
+    public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
+            throws IOException {
         try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), 1 << 16)) {
-            PngEncoder.write(picture, out, threads);
+            ImageWriting.write(picture, format, out, progress);
         }
     }
 

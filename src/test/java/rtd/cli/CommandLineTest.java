@@ -67,7 +67,7 @@ class CommandLineTest {
             Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("x.png").toString(), "--width", width);
             assertThat(run.exitCode()).isEqualTo(2);
             assertThat(run.err()).contains("--width").contains("'" + width + "' is not a positive whole number")
-                    .contains("Try 'rtd --help'").doesNotContain("at rtd.");
+                    .contains("Try 'java -jar rtd.jar --help'").doesNotContain("at rtd.");
         }
         assertThat(dir.resolve("x.png")).doesNotExist();
     }
@@ -76,7 +76,7 @@ class CommandLineTest {
     void anUnknownOptionIsMisuseAndPicocliSuggestsTheNearestOne() {
         Run run = Cli.run(EXAMPLE.toString(), "--widht", "100");
         assertThat(run.exitCode()).isEqualTo(2);
-        assertThat(run.err()).contains("Unknown options: '--widht'").contains("Possible solutions: --width");
+        assertThat(run.err()).contains("Unknown option: '--widht'").contains("Possible solutions: --width");
     }
 
     @Test
@@ -120,7 +120,7 @@ class CommandLineTest {
     void hIsNotTheHeight() {
         Run run = Cli.run(EXAMPLE.toString(), "-h");
         assertThat(run.exitCode()).isZero();
-        assertThat(run.out()).contains("Usage: rtd");
+        assertThat(run.out()).contains("Usage: java -jar rtd.jar");
     }
 
     @Test
@@ -203,7 +203,7 @@ class CommandLineTest {
 
     @Test
     void noProgressLineReachesAnErrorStreamThatIsNoTerminal() {
-        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("p.png").toString(), "--width", "64", "--height", "36");
+        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("p.png").toString(), "--scale", "0.05");
         assertThat(run.exitCode()).isZero();
         assertThat(run.err()).isEmpty();
     }
@@ -218,11 +218,44 @@ class CommandLineTest {
     }
 
     @Test
+    void statsCountOneObjectAndOneNodeInTheSingularAndSayTheTotalLeavesOutTheJvmsStart() throws IOException {
+        Path one = Files.writeString(dir.resolve("one.txt"), "orthographic_camera:(0|0|20):(0|0|-1):(50)\n"
+                + "sphere:(0|0|0):(1):(255|0|0)\n");
+        Run run = Cli.run(one.toString(), "-o", dir.resolve("one.png").toString(), "--stats", "--width", "64",
+                "--height", "36");
+        assertThat(run.exitCode()).isZero();
+        assertThat(run.err()).contains(" 1 object\n").contains("BVH of 1 node\n")
+                .containsPattern("total +[0-9.]+ s  from reading the scene to the written picture; the JVM's start is not "
+                        + "counted\n");
+    }
+
+    @Test
+    void theHelpAndItsMessagesNameTheCommandAsItIsTyped() {
+        Run help = Cli.run("--help");
+        assertThat(help.out()).startsWith("Usage: java -jar rtd.jar ").doesNotContainPattern("(?m)^\\s*rtd ")
+                .contains("  java -jar rtd.jar examples/input_rtd.txt -o out.png");
+        Run misuse = Cli.run("--widht", "3", "x.txt");
+        assertThat(misuse.err()).endsWith("Try 'java -jar rtd.jar --help' for more information.\n");
+        assertThat(Docs.errors()).contains("Each ends with `Try 'java -jar rtd.jar --help' for more information.`")
+                .doesNotContain("'rtd --help'");
+    }
+
+    @Test
+    void picturesWrittenBesideTheExamplesAreIgnoredByGit() throws Exception {
+        for (String picture : new String[] {"examples/input_rtd.png", "examples/meshes/x.png"}) {
+            Process git = new ProcessBuilder("git", "check-ignore", "-q", picture).redirectErrorStream(true).start();
+            org.assertj.core.api.Assumptions.assumeThat(git.waitFor(10, java.util.concurrent.TimeUnit.SECONDS)).isTrue();
+            org.assertj.core.api.Assumptions.assumeThat(git.exitValue()).as("git and a clone are here").isIn(0, 1);
+            assertThat(git.exitValue()).as("git check-ignore %s: 0 means ignored", picture).isZero();
+        }
+    }
+
+    @Test
     void autoUsesTheBvhForAnySceneWithObjectsAndItsSquaresSkipMostTests() throws IOException {
         Run paper = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--width", "480",
                 "--height", "270");
         assertThat(paper.exitCode()).isZero();
-        assertThat(paper.err()).contains("BVH of 1 nodes");
+        assertThat(paper.err()).contains("2 objects").contains("BVH of 1 node\n");
         // Most squares of the paper's example reach neither sphere: far fewer tests than the loop's 2.
         double testsPerRay = Double.parseDouble(paper.err().replaceAll("(?s).*per ray: ([0-9.]+) intersection.*", "$1"));
         assertThat(testsPerRay).isLessThan(1.0);

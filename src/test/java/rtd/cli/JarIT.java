@@ -60,4 +60,17 @@ class JarIT {
         assertThat(result.err()).contains("bad.txt:1:1: error: unknown statement 'spere'")
                 .contains("did you mean 'sphere'?").doesNotContain("Exception").doesNotContain("\tat ");
     }
+
+    @Test
+    void readsTheSceneFromStandardInputAndWritesThePictureToStandardOutput() throws Exception {
+        Path out = dir.resolve("piped.png");
+        String jar = System.getProperty("rtd.jar", "target/rtd.jar");
+        Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-jar", jar,
+                "-", "-o", "-", "--scale", "0.1")
+                .redirectInput(Path.of("examples", "input_rtd.txt").toFile()).redirectOutput(out.toFile()).start();
+        byte[] err = process.getErrorStream().readAllBytes();
+        assertThat(process.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assertThat(process.exitValue()).as(new String(err, StandardCharsets.UTF_8)).isZero();
+        assertThat(ImageIO.read(out.toFile()).getRGB(46, 49) & 0xFFFFFF).isEqualTo(0xFF0000);
+    }
 }

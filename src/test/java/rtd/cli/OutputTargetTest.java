@@ -121,7 +121,7 @@ class OutputTargetTest {
             server.bind(UnixDomainSocketAddress.of(socket));
             Run run = render(scene(), socket);
             assertThat(run.exitCode()).isEqualTo(2);
-            assertThat(run.err()).startsWith("rtd: the output '" + socket + "' is a socket; rtd writes a PNG to a file, "
+            assertThat(run.err()).startsWith("rtd: the output '" + socket + "' is a socket; rtd writes the picture to a file, "
                     + "a FIFO or a character device such as /dev/null");
             assertThat(isOther(socket)).as("still a socket").isTrue();
         }

@@ -1,0 +1,29 @@
+package rtd.cli;
+
+import java.util.concurrent.CompletableFuture;
+import rtd.io.ImageFormat;
+import rtd.io.ImageWriting;
+
+/**
+ * The one warm-up of {@code javax.imageio} per JVM ({@link ImageWriting#warmUp}), started as early
+ * as possible: {@link Main} starts it for PNG before the command line is even parsed, so that it
+ * runs on a spare core while picocli starts and the scene is read.
+ */
+final class WriterWarmUp {
+
+    private static CompletableFuture<Void> started;
+
+    private WriterWarmUp() {
+    }
+
+    /**
+     * Starts the warm-up for {@code format}, unless one has started: the writers share most of
+     * what they load (the imaging classes and the registry of writers), so any one helps.
+     */
+    static synchronized CompletableFuture<Void> start(ImageFormat format) {
+        if (started == null) {
+            started = ImageWriting.warmUp(format);
+        }
+        return started;
+    }
+}

@@ -1,0 +1,80 @@
+package rtd.io;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.TreeSet;
+import javax.imageio.ImageIO;
+import javax.imageio.ImageTypeSpecifier;
+import javax.imageio.ImageWriter;
+
+/**
+ * The file format of the picture, chosen by the output's extension: {@code .png}, {@code .jpg},
+ * {@code .bmp} and whatever else {@code javax.imageio} can write for an RGB picture.
+ *
+ * <p>PNG, the default, is known without asking {@code javax.imageio}, whose start takes longer
+ * than a small render: a run that writes PNG can start it on a spare thread ({@link ImageWriting#warmUp})
+ * while the scene is read. Any other extension is looked up at once, so that one it cannot
+ * write is a mistake on the command line, found before any work.
+ *
+ * @param extension the extension in lower case, without the dot ("png", "jpg")
+ */
+public record ImageFormat(String extension) {
+
+    /** PNG: lossless, and what a name without extension, standard output and the default output get. */
+    public static final ImageFormat PNG = new ImageFormat("png");
+
+    /** The format for {@code output}: by its extension, PNG if it has none; empty if none can be written. */
+    public static Optional<ImageFormat> forOutput(Path output) {
+        Optional<String> extension = extensionOf(output);
+        if (extension.isEmpty() || extension.get().equals(PNG.extension)) {
+            return Optional.of(PNG);
+        }
+        return writerFor(extension.get()).isPresent() ? Optional.of(new ImageFormat(extension.get())) : Optional.empty();
+    }
+
+    /** The extensions (lower case, sorted) whose format {@code javax.imageio} can write an RGB picture in. */
+    public static List<String> writableExtensions() {
+        TreeSet<String> writable = new TreeSet<>();
+        for (String suffix : ImageIO.getWriterFileSuffixes()) {
+            String extension = suffix.toLowerCase(Locale.ROOT);
+            if (!extension.isEmpty() && writerFor(extension).isPresent()) {
+                writable.add(extension);
+            }
+        }
+        return List.copyOf(writable);
+    }
+
+    /** The extension of the last name of {@code path} ("a.b.PNG" gives "png"); none for "a" and ".hidden". */
+    public static Optional<String> extensionOf(Path path) {
+        Path name = path.getFileName();
+        String text = name == null ? "" : name.toString();
+        int dot = text.lastIndexOf('.');
+        return dot > 0 && dot < text.length() - 1 ? Optional.of(text.substring(dot + 1).toLowerCase(Locale.ROOT))
+                : Optional.empty();
+    }
+
+    /** A new writer of this format for an RGB picture. */
+    ImageWriter newWriter() {
+        return writerFor(extension).orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
+    }
+
+    /**
+     * A writer for files with {@code extension} that can encode an RGB picture without alpha: the
+     * WBMP writer, for one, writes only black and white, and is not offered.
+     */
+    private static Optional<ImageWriter> writerFor(String extension) {
+        ImageTypeSpecifier rgb = ImageTypeSpecifier.createFromBufferedImageType(BufferedImage.TYPE_INT_RGB);
+        Iterator<ImageWriter> writers = ImageIO.getImageWritersBySuffix(extension);
+        while (writers.hasNext()) {
+            ImageWriter writer = writers.next();
+            if (writer.getOriginatingProvider().canEncodeImage(rgb)) {
+                return Optional.of(writer);
+            }
+        }
+        return Optional.empty();
+    }
+}

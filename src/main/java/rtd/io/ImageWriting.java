@@ -1,0 +1,121 @@
+package rtd.io;
+
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+import java.awt.image.DirectColorModel;
+import java.awt.image.Raster;
+import java.awt.image.WritableRaster;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.DoubleConsumer;
+import javax.imageio.IIOException;
+import javax.imageio.IIOImage;
+import javax.imageio.ImageWriter;
+import javax.imageio.event.IIOWriteProgressListener;
+import javax.imageio.stream.ImageOutputStream;
+import javax.imageio.stream.MemoryCacheImageOutputStream;
+import rtd.image.Picture;
+
+/**
+ * Encodes a {@link Picture} through {@code javax.imageio}, as the design card says, in the
+ * {@link ImageFormat} of the output.
+ *
+ * <p>The picture's array is handed to {@code javax.imageio} as it is, without a copy, as an
+ * RGB image without alpha (a JPEG cannot hold alpha).
+ */
+public final class ImageWriting {
+
+    private static final int[] RGB_MASKS = {0xFF0000, 0xFF00, 0xFF};
+
+    private ImageWriting() {
+    }
+
+    /**
+     * Starts {@code javax.imageio} and the writer of {@code format} on a daemon thread, by
+     * encoding a picture of one pixel into nothing: loading its classes takes longer than a small
+     * render, and can happen while the scene is read. Wait for the result before writing, so
+     * that two threads never load the same classes at once.
+     */
+    public static CompletableFuture<Void> warmUp(ImageFormat format) {
+        CompletableFuture<Void> done = new CompletableFuture<>();
+        Thread thread = new Thread(() -> {
+            try {
+                write(new Picture(1, 1, new int[1]), format, OutputStream.nullOutputStream(), fraction -> { });
+                done.complete(null);
+            } catch (IOException | RuntimeException | Error e) {
+                done.completeExceptionally(e); // the real write will meet it again, and say so
+            }
+        }, "rtd-imageio-warm-up");
+        thread.setDaemon(true);
+        thread.start();
+        return done;
+    }
+
+    /**
+     * Writes {@code picture} to {@code out} in {@code format}, telling {@code progress} the
+     * fraction written (0 to 1) as it goes. {@code out} is flushed, not closed.
+     */
+    public static void write(Picture picture, ImageFormat format, OutputStream out, DoubleConsumer progress)
+            throws IOException {
+        ImageWriter writer = format.newWriter();
+        // In memory, not javax.imageio's default cache file in the system's temporary folder:
+        // the writer seeks back only within the chunk it writes, which the cache keeps.
+        try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {
+            writer.setOutput(stream);
+            writer.addIIOWriteProgressListener(new Progress(progress));
+            writer.write(null, new IIOImage(asImage(picture), null, null), writer.getDefaultWriteParam());
+            stream.flush();
+        } catch (IIOException e) {
+            // javax.imageio wraps a failed write ("I/O error writing PNG file!"); the system's reason
+            // ("No space left on device") is what a person needs
+            throw e.getCause() instanceof IOException cause ? cause : e;
+        } finally {
+            writer.dispose();
+        }
+        out.flush();
+    }
+
+    /** The picture as an RGB image that shares its array. */
+    static BufferedImage asImage(Picture picture) {
+        DirectColorModel rgb = new DirectColorModel(24, RGB_MASKS[0], RGB_MASKS[1], RGB_MASKS[2]);
+        DataBufferInt data = new DataBufferInt(picture.rgb(), picture.rgb().length);
+        WritableRaster raster = Raster.createPackedRaster(data, picture.width(), picture.height(), picture.width(),
+                RGB_MASKS, null);
+        return new BufferedImage(rgb, raster, false, null);
+    }
+
+    /** Passes the writer's percentage on as a fraction. */
+    private record Progress(DoubleConsumer fraction) implements IIOWriteProgressListener {
+        @Override
+        public void imageProgress(ImageWriter source, float percentageDone) {
+            fraction.accept(percentageDone / 100.0);
+        }
+
+        @Override
+        public void imageStarted(ImageWriter source, int imageIndex) {
+            fraction.accept(0);
+        }
+
+        @Override
+        public void imageComplete(ImageWriter source) {
+            fraction.accept(1);
+        }
+
+        @Override
+        public void thumbnailStarted(ImageWriter source, int imageIndex, int thumbnailIndex) {
+        }
+
+        @Override
+        public void thumbnailProgress(ImageWriter source, float percentageDone) {
+        }
+
+        @Override
+        public void thumbnailComplete(ImageWriter source) {
+        }
+
+        @Override
+        public void writeAborted(ImageWriter source) {
+        }
+    }
+}

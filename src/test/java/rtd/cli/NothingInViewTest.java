@@ -1,0 +1,96 @@
+package rtd.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import rtd.testing.Cli;
+import rtd.testing.Cli.Run;
+
+/** A picture of background alone gets a one-line warning that names the likely cause; the exit code stays 0. */
+@DisplayName("The warning when nothing is in view")
+class NothingInViewTest {
+
+    @TempDir
+    Path dir;
+
+    private Run render(String scene, String... options) throws IOException {
+        Path file = Files.writeString(dir.resolve("scene.txt"), scene);
+        java.util.List<String> args = new java.util.ArrayList<>(
+                java.util.List.of(file.toString(), "-o", dir.resolve("out.png").toString()));
+        args.addAll(java.util.List.of(options));
+        Run run = Cli.run(args.toArray(String[]::new));
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(dir.resolve("out.png")).isRegularFile();
+        return run;
+    }
+
+    /** The warning as the catalogue shows it: for scene.txt, and present there word for word. */
+    private String warning(Run run) {
+        String line = Docs.firstLine(run.err(), dir);
+        assertThat(run.err().lines()).hasSize(1);
+        assertThat(Docs.errors()).contains(line);
+        return line;
+    }
+
+    @Test
+    void objectsBehindTheCameraAreNamedAsTheCause() throws IOException {
+        Run run = render("orthographic_camera:(0|0|20):(0|0|1):(50)\nsphere:(3|8|-1):(2):(0|127|255)\n"
+                + "sphere:(-10|1|5):(5):(255|0|0)\n");
+        assertThat(warning(run)).isEqualTo("rtd: warning: scene.txt: no ray hit anything, so the picture is only "
+                + "background: all 2 objects are behind the camera, which looks along (0|0|1) from (0|0|20)");
+    }
+
+    @Test
+    void objectsOutsideTheVisibleRegionGetTheRegionInWorldUnits() throws IOException {
+        Run run = render("orthographic_camera:(0|0|20):(0|0|-1):(50)\nsphere:(30|0|0):(2):(0|127|255)\n");
+        assertThat(warning(run)).isEqualTo("rtd: warning: scene.txt: no ray hit anything, so the picture is only "
+                + "background: the camera sees 38.4 × 21.6 world units around (0|0|20) (width/zoom × height/zoom), and no "
+                + "object is in that region; move the camera, or lower its zoom to see more");
+    }
+
+    @Test
+    void theRegionFollowsTheSizeAndTheScale() throws IOException {
+        String scene = "orthographic_camera:(0|0|20):(0|0|-1):(50)\nsphere:(30|0|0):(2):(0|127|255)\n";
+        assertThat(render(scene, "--width", "300", "--height", "200").err()).contains("sees 6 × 4 world units");
+        assertThat(render(scene, "--scale", "0.5").err()).contains("sees 38.4 × 21.6 world units");
+    }
+
+    @Test
+    void objectsThatFallBetweenTheRaysAreSaidToDoSo() throws IOException {
+        Run run = render("orthographic_camera:(0|0|20):(0|0|-1):(0.01)\nsphere:(50.5|50.5|0):(0.1):(0|127|255)\n");
+        assertThat(warning(run)).isEqualTo("rtd: warning: scene.txt: no ray hit anything, so the picture is only "
+                + "background: the camera sees 192000 × 108000 world units around (0|0|20) (width/zoom × height/zoom), and "
+                + "the objects there fall between its rays, which are 100 world units apart (1/zoom); raise the zoom");
+    }
+
+    @Test
+    void aSceneWithoutObjectsIsSaidToHaveNone() throws IOException {
+        Run run = render("orthographic_camera:(0|0|20):(0|0|-1):(50)\n");
+        assertThat(warning(run)).isEqualTo("rtd: warning: scene.txt: no ray hit anything, so the picture is only "
+                + "background: the scene has no objects");
+    }
+
+    @Test
+    void thePapersOwnRendererWarnsAlike() throws IOException {
+        Run run = render("orthographic_camera:(0|0|20):(0|0|1):(50)\nsphere:(3|8|-1):(2):(0|127|255)\n", "--paper",
+                "--width", "64", "--height", "36");
+        assertThat(run.err()).contains("the one object is behind the camera");
+    }
+
+    @Test
+    void aPictureWithAnObjectInViewGetsNoWarning() throws IOException {
+        assertThat(render("orthographic_camera:(0|0|20):(0|0|-1):(50)\nsphere:(0|0|0):(2):(0|127|255)\n").err()).isEmpty();
+    }
+
+    @Test
+    void anObjectInTheBackgroundsColourIsSeenAsAHitAndAloneOutOfViewIsNot() throws IOException {
+        String camouflaged = "ambient:(1|2|3)\northographic_camera:(0|0|20):(0|0|-1):(50)\nsphere:(0|0|0):(2):(1|2|3)\n";
+        assertThat(render(camouflaged).err()).isEmpty();
+        assertThat(render(camouflaged.replace("(0|0|0)", "(90|0|0)")).err()).contains("no ray hit anything");
+    }
+}
