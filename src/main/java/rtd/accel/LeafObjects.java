@@ -29,7 +29,7 @@ final class LeafObjects {
     static final byte PACKED_TRIANGLE = 1;
     static final byte OWN_TEST = 2;
     private static final int SPHERE_SIZE = 4;
-    private static final int TRIANGLE_SIZE = 21;
+    private static final int TRIANGLE_SIZE = Triangle.NUMBERS;
 
     final IGeometry[] objects;
     /** Each object's place in the scene file. */

@@ -21,7 +21,21 @@ import rtd.math.Vector3f;
  */
 public final class Triangle implements IGeometry {
 
-    private final float[] v; // p1, p2, p3, n = (p2 − p1) × (p3 − p1), and n × edge for the three edges
+    /** How many numbers the test uses ({@link #testNumbers}). */
+    public static final int NUMBERS = 27;
+    private static final float U = 0x1p-24f; // the unit roundoff of float
+    /**
+     * The largest share of the distance run by which a hit may stray along the ray (see
+     * {@link #hit}); the part of {@link #rounding} that grows with the distance.
+     */
+    private static final float ALONG_THE_RAY = 1e-4f;
+
+    /**
+     * p1, p2, p3; n = (p2 − p1) × (p3 − p1); n × edge for the three edges; their lengths; the
+     * side tests' tolerance per unit of distance from the corner; |n| summed over the axes; the
+     * edges' lengths summed over the axes.
+     */
+    private final float[] v;
     private final Vector3f[] cornerNormals; // null for a flat triangle
     private final Color color;
     private final Material material;
@@ -40,8 +54,12 @@ public final class Triangle implements IGeometry {
         Vector3f in1 = n.cross(p2.subtract(p1));
         Vector3f in2 = n.cross(p3.subtract(p2));
         Vector3f in3 = n.cross(p1.subtract(p3));
+        float tolerance = tolerance(p1, p2, p3);
+        float nSum = Math.abs(n.x()) + Math.abs(n.y()) + Math.abs(n.z());
+        float size = sum(p2.subtract(p1)) + sum(p3.subtract(p2)) + sum(p1.subtract(p3));
         this.v = new float[] {p1.x(), p1.y(), p1.z(), p2.x(), p2.y(), p2.z(), p3.x(), p3.y(), p3.z(),
-            n.x(), n.y(), n.z(), in1.x(), in1.y(), in1.z(), in2.x(), in2.y(), in2.z(), in3.x(), in3.y(), in3.z()};
+            n.x(), n.y(), n.z(), in1.x(), in1.y(), in1.z(), in2.x(), in2.y(), in2.z(), in3.x(), in3.y(), in3.z(),
+            in1.magnitude(), in2.magnitude(), in3.magnitude(), tolerance, nSum, size};
         this.cornerNormals = cornerNormals == null ? null : cornerNormals.clone();
         this.color = color;
         this.material = material;
@@ -57,7 +75,36 @@ public final class Triangle implements IGeometry {
         return vector(9);
     }
 
-    /** The 21 numbers the test uses, in order, for a packed copy of the test (the BVH's). */
+    private static float sum(Vector3f v) {
+        return Math.abs(v.x()) + Math.abs(v.y()) + Math.abs(v.z());
+    }
+
+    /**
+     * How much less certain the normal's direction is than its length suggests, and how thin
+     * the triangle is: one over the sine of its smallest angle, {@code |ei||ej| / |n|} at most;
+     * about 1 for a well-shaped triangle, large for a needle.
+     */
+    private static double thinness(Vector3f p1, Vector3f p2, Vector3f p3) {
+        double e1 = p2.subtract(p1).magnitude();
+        double e2 = p3.subtract(p2).magnitude();
+        double e3 = p1.subtract(p3).magnitude();
+        double n = p2.subtract(p1).cross(p3.subtract(p1)).magnitude();
+        double longest = Math.max(e1 * e2, Math.max(e2 * e3, e3 * e1));
+        return n > 0 ? Math.max(1, longest / n) : 1; // never hit if n = 0
+    }
+
+    /**
+     * The side tests' allowance per unit of distance from the corner: the rounding of the
+     * normal's direction, {@code 16u · thinness}; none for a needle (thinness over 128), whose
+     * own rounding is too coarse to hold its edges together anyway, and which an allowance
+     * would lengthen.
+     */
+    private static float tolerance(Vector3f p1, Vector3f p2, Vector3f p3) {
+        double thinness = thinness(p1, p2, p3);
+        return thinness <= 128 ? 16 * U * (float) thinness : 0;
+    }
+
+    /** The {@value #NUMBERS} numbers the test uses, in order, for a packed copy of the test (the BVH's). */
     public float[] testNumbers() {
         return v.clone();
     }
@@ -73,7 +120,8 @@ public final class Triangle implements IGeometry {
 
     /**
      * The plane's hit {@code t = ((p1 − O)·n) / (R·n)}, then the point {@code P = O + t·R} is
-     * inside, or on an edge, when {@code (P − p)·(n × edge) ≥ 0} for each edge from p.
+     * inside, or on an edge, when {@code (P − p)·(n × edge) ≥ 0} for each edge from p, up to
+     * the rounding of these numbers (see {@link #hit}).
      */
     @Override
     public Intersection intersect(Ray ray) {
@@ -83,8 +131,17 @@ public final class Triangle implements IGeometry {
     }
 
     /**
-     * The test on the 21 numbers of {@link #testNumbers}, starting at {@code v[at]}: t of the hit,
-     * or NaN. Public for the BVH, which keeps the numbers of many triangles in one array.
+     * The test on the {@value #NUMBERS} numbers of {@link #testNumbers}, starting at {@code v[at]}:
+     * t of the hit, or NaN. Public for the BVH, which keeps the numbers of many triangles in one
+     * array.
+     *
+     * <p>Each side test allows for its own rounding: a point within a few units of the last
+     * place of an edge counts as on it. Without that, a ray through an edge that two triangles
+     * of a mesh share could slip between them, as each triangle finds its own P and rounds its
+     * own way, and the mesh would show cracks. The allowance has three parts: the rounding of
+     * the side test itself ({@code (P − p)} times the normal's uncertainty, larger for a thin
+     * triangle), of P's coordinates, and of t along the ray, which grows as the ray comes in
+     * flatter, up to {@value #ALONG_THE_RAY} of the distance run.
      */
     public static float hit(float[] v, int at, float ox, float oy, float oz, float dx, float dy, float dz) {
         float facing = (dx * v[at + 9]) + (dy * v[at + 10]) + (dz * v[at + 11]);
@@ -95,8 +152,34 @@ public final class Triangle implements IGeometry {
         float px = ox + dx * t; // as Ray.pointAt rounds it
         float py = oy + dy * t;
         float pz = oz + dz * t;
-        return side(v, at, at + 12, px, py, pz) >= 0 && side(v, at + 3, at + 15, px, py, pz) >= 0
-                && side(v, at + 6, at + 18, px, py, pz) >= 0 ? t : Float.NaN;
+        float length = Math.abs(dx) + Math.abs(dy) + Math.abs(dz);
+        float along = Math.min(ALONG_THE_RAY, 16 * U * (1 + length * v[at + 25] / Math.abs(facing)));
+        float loose = 16 * U * (Math.abs(px) + Math.abs(py) + Math.abs(pz)) + along * t * length;
+        float reach = v[at + 24] * v[at + 26] + loose;
+        if (!near(v, at, 0, px, reach) || !near(v, at, 1, py, reach) || !near(v, at, 2, pz, reach)) {
+            return Float.NaN; // the allowances must not stretch a hit far beyond the corners
+        }
+        return inside(v, at, 0, px, py, pz, loose) && inside(v, at, 1, px, py, pz, loose)
+                && inside(v, at, 2, px, py, pz, loose) ? t : Float.NaN;
+    }
+
+    /** Whether coordinate {@code axis} of P is within {@code reach} of the corners' range. */
+    private static boolean near(float[] v, int at, int axis, float p, float reach) {
+        float a = v[at + axis];
+        float b = v[at + 3 + axis];
+        float c = v[at + 6 + axis];
+        return p >= Math.min(a, Math.min(b, c)) - reach && p <= Math.max(a, Math.max(b, c)) + reach;
+    }
+
+    /**
+     * Whether P lies on the triangle's side of edge {@code k} (from corner k to the next), up
+     * to the side test's rounding and {@code loose}.
+     */
+    private static boolean inside(float[] v, int at, int k, float px, float py, float pz, float loose) {
+        int corner = at + 3 * k;
+        float fromCorner = Math.abs(px - v[corner]) + Math.abs(py - v[corner + 1]) + Math.abs(pz - v[corner + 2]);
+        float allowance = (v[at + 24] * fromCorner + loose) * v[at + 21 + k];
+        return side(v, corner, at + 12 + 3 * k, px, py, pz) >= -allowance;
     }
 
     /** {@code (P − corner)·inward}: ≥ 0 when P lies on the triangle's side of the edge from that corner. */
@@ -125,8 +208,8 @@ public final class Triangle implements IGeometry {
 
     /**
      * The corners' box, grown by a few rounding errors of the size and coordinates. The side
-     * tests err by a few units of the last place of the distances involved, except that the
-     * normal of a thin triangle, {@code n = e1 × e2}, is as uncertain as {@code |e1||e2|} is
+     * tests err (and allow) a few units of the last place of the distances involved, except that
+     * the normal of a thin triangle, {@code n = e1 × e2}, is as uncertain as {@code |e1||e2|} is
      * large against {@code |n|}: it tilts the side tests by that much more.
      */
     @Override
@@ -136,15 +219,25 @@ public final class Triangle implements IGeometry {
         Vector3f p3 = corner(2);
         double e1 = p2.subtract(p1).magnitude();
         double e2 = p3.subtract(p1).magnitude();
-        double n = planeNormal().magnitude();
-        double thinness = n > 0 ? e1 * e2 / n : 1; // never hit if n = 0; so thin a box may become infinite, and be tested by every ray
-        return BoundingBox.around(32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * thinness, p1, p2, p3);
+        double largest = Math.max(maxAbs(p1), Math.max(maxAbs(p2), maxAbs(p3)));
+        // a needle's box may become infinite: then every ray tests it, as the paper's loop does
+        double sides = 32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * thinness(p1, p2, p3)
+                + 2 * v[24] * v[26];
+        return BoundingBox.around(sides + 64 * BoundingBox.UNIT_ROUNDOFF * (largest + e1 + e2), p1, p2, p3);
     }
 
-    /** The plane's t and the hit point err by a few units of the last place of the distance run. */
+    private static double maxAbs(Vector3f p) {
+        return Math.max(Math.abs(p.x()), Math.max(Math.abs(p.y()), Math.abs(p.z())));
+    }
+
+    /**
+     * The plane's t and the hit point err by a few units of the last place of the distance run,
+     * and the side tests allow up to {@value #ALONG_THE_RAY} of the distance (summed over the
+     * axes, so up to √3 times that).
+     */
     @Override
     public Rounding rounding() {
-        return Rounding.linear(1e-5f);
+        return Rounding.linear(2 * ALONG_THE_RAY);
     }
 
     /** The same corners in the same order, whatever its colour, finish and corner normals. */

@@ -79,4 +79,34 @@ class TriangleTest {
         assertThat(between.y()).isCloseTo((float) (3 / Math.sqrt(13)), within(1e-6f));
         assertThat(between.z()).isCloseTo(0f, within(1e-6f));
     }
+
+    @Test
+    void raysThroughTheEdgeTwoWellShapedTrianglesShareNeverSlipBetweenThem() {
+        java.util.Random random = new java.util.Random(5);
+        for (int r = 0; r < 20_000; r++) {
+            // Two triangles of a mesh that share the edge a-b, at some place, size and tilt.
+            Vector3f shift = new Vector3f(random.nextFloat() * 200 - 100, random.nextFloat() * 200 - 100, random.nextFloat() * 200 - 100);
+            float size = (float) Math.pow(10, random.nextInt(4) - 2);
+            Vector3f a = shift.add(new Vector3f(random.nextFloat(), random.nextFloat(), random.nextFloat()).multiply(size));
+            Vector3f b = shift.add(new Vector3f(random.nextFloat(), random.nextFloat(), random.nextFloat()).multiply(size));
+            // c off the edge's middle, so that the triangles are not needles (their edges may crack)
+            Vector3f across = b.subtract(a).cross(new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, 1))
+                    .normalize().multiply(b.subtract(a).magnitude() * (0.2f + random.nextFloat()));
+            Vector3f c = a.add(b).multiply(0.5f).add(across);
+            Vector3f d = a.add(b).subtract(c); // across the edge from c
+            Triangle first = new Triangle(a, b, c, Color.BLACK, Material.DEFAULT);
+            Triangle second = new Triangle(b, a, d, Color.BLACK, Material.DEFAULT);
+            // A ray through a point of the edge, from up to a hundred sizes away, at most 45° from the normal
+            // (a flatter ray that passes a rounding error beside the edge may miss both faces of a fold for real).
+            Vector3f onEdge = a.add(b.subtract(a).multiply(random.nextFloat()));
+            Vector3f normal = first.planeNormal().normalize();
+            float away = size * (1 + random.nextFloat() * 100);
+            Vector3f from = onEdge.add(normal.multiply(away))
+                    .add(new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f)
+                            .multiply(away));
+            Ray ray = new Ray(from, onEdge.subtract(from));
+            assertThat(first.intersect(ray).happened() || second.intersect(ray).happened())
+                    .as("ray %d %s between %s and %s", r, ray, first.corner(2), d).isTrue();
+        }
+    }
 }
