@@ -17,7 +17,7 @@ import java.util.Map;
  *
  * <p>Usage:
  * <pre>
- * java -cp bench/target/benchmarks.jar rtd.bench.MeshGenerator icosphere LEVEL OUT.obj
+ * java -cp bench/target/benchmarks.jar rtd.bench.MeshGenerator icosphere LEVEL OUT.obj [flat]
  * java -cp bench/target/benchmarks.jar rtd.bench.MeshGenerator terrain N OUT.obj [OUT.pov]
  * </pre>
  */
@@ -28,7 +28,8 @@ public final class MeshGenerator {
 
     public static void main(String[] args) throws IOException {
         switch (args[0]) {
-            case "icosphere" -> writeIcosphere(Integer.parseInt(args[1]), Path.of(args[2]));
+            case "icosphere" -> writeIcosphere(Integer.parseInt(args[1]), Path.of(args[2]),
+                    args.length < 4 || !args[3].equals("flat"));
             case "terrain" -> writeTerrain(Integer.parseInt(args[1]), Path.of(args[2]),
                     args.length > 3 ? Path.of(args[3]) : null);
             default -> throw new IllegalArgumentException("icosphere or terrain, not " + args[0]);
@@ -37,7 +38,8 @@ public final class MeshGenerator {
 
     // ---- the icosahedron, each triangle split into four, `level` times, on the unit sphere ----
 
-    static void writeIcosphere(int level, Path out) throws IOException {
+    /** The icosphere; with {@code smooth}, each corner names its normal ({@code vn}), else the faces are flat. */
+    static void writeIcosphere(int level, Path out, boolean smooth) throws IOException {
         List<double[]> vertices = new ArrayList<>();
         List<int[]> faces = new ArrayList<>();
         double t = (1 + Math.sqrt(5)) / 2;
@@ -66,17 +68,22 @@ public final class MeshGenerator {
         }
         try (BufferedWriter obj = Files.newBufferedWriter(out, StandardCharsets.UTF_8)) {
             obj.write("# An icosahedron subdivided " + level + " times: " + faces.size()
-                    + " triangles on the unit sphere (rtd.bench.MeshGenerator)\n");
+                    + " triangles on the unit sphere, " + (smooth ? "with a normal per corner" : "flat")
+                    + " (rtd.bench.MeshGenerator)\n");
             obj.write("o icosphere\n");
             for (double[] v : vertices) {
                 obj.write(String.format(Locale.ROOT, "v %.6f %.6f %.6f%n", v[0], v[1], v[2]));
             }
-            for (double[] v : vertices) { // on a unit sphere the normal is the point itself
-                obj.write(String.format(Locale.ROOT, "vn %.6f %.6f %.6f%n", v[0], v[1], v[2]));
+            if (smooth) {
+                for (double[] v : vertices) { // on a unit sphere the normal is the point itself
+                    obj.write(String.format(Locale.ROOT, "vn %.6f %.6f %.6f%n", v[0], v[1], v[2]));
+                }
             }
             for (int[] f : faces) {
-                obj.write(String.format(Locale.ROOT, "f %d//%d %d//%d %d//%d%n", f[0] + 1, f[0] + 1, f[1] + 1, f[1] + 1,
-                        f[2] + 1, f[2] + 1));
+                obj.write(smooth
+                        ? String.format(Locale.ROOT, "f %d//%d %d//%d %d//%d%n", f[0] + 1, f[0] + 1, f[1] + 1, f[1] + 1,
+                                f[2] + 1, f[2] + 1)
+                        : String.format(Locale.ROOT, "f %d %d %d%n", f[0] + 1, f[1] + 1, f[2] + 1));
             }
         }
     }
