@@ -10,6 +10,7 @@ import java.util.function.Function;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -92,6 +93,10 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--debug", description = "show the stack trace of an error")
     private boolean debug;
 
+    /** Issue 11: --explain, --view, --export-pov and --watch, all in {@link TeachingOptions}. */
+    @Mixin
+    private TeachingOptions teaching;
+
     /** The command line of rtd, with its error handlers, ready to {@code execute}. */
     public static CommandLine commandLine() {
         CommandLine commandLine = new CommandLine(new RtdCommand());
@@ -112,7 +117,8 @@ public final class RtdCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            return render(err);
+            Integer taught = teaching.run(err); // issue 11: null unless a teaching option answers instead of the render
+            return taught != null ? taught : render(err);
         } catch (SceneException e) {
             err.print(e.report());
             printDebug(err, e);

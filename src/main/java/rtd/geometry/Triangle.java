@@ -62,6 +62,11 @@ public final class Triangle implements IGeometry {
         return v.clone();
     }
 
+    /** The normal given for corner {@code i} (0, 1 or 2) of a smooth triangle, or {@code null} for a flat one. */
+    public Vector3f cornerNormal(int i) {
+        return cornerNormals == null ? null : cornerNormals[i];
+    }
+
     /** Whether the triangle has a normal per corner. */
     public boolean isSmooth() {
         return cornerNormals != null;
