@@ -42,6 +42,8 @@ final class BeamTracer {
     private float exit;
     /** The rays of the square and their nearest hits; reused from square to square. */
     private NearestHit[] hits = new NearestHit[0];
+    /** Each ray's count of tests before this square, so that each ray's own tests can be told ({@code --view cost}). */
+    private long[] testsBefore = new long[0];
     private int count;
     /** Whether the rays' hits are started; not before a leaf's objects are in reach, unless the scene has planes. */
     private boolean started;
@@ -74,6 +76,12 @@ final class BeamTracer {
                 hits[i] = new NearestHit(bvh);
             }
         }
+        if (testsBefore.length < count) {
+            testsBefore = new long[count];
+        }
+        for (int i = 0; i < count; i++) {
+            testsBefore[i] = hits[i].testsRun();
+        }
         this.bundle = bundle;
         started = false;
         farthestSkip = Float.POSITIVE_INFINITY;
@@ -90,6 +98,7 @@ final class BeamTracer {
         }
         for (int i = 0; i < count; i++) {
             out.set(i, hits[i].best(), hits[i].bestT(), hits[i].bestDistance());
+            out.setTests(i, hits[i].testsRun() - testsBefore[i]);
         }
         return true;
     }

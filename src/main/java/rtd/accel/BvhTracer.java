@@ -73,11 +73,13 @@ public final class BvhTracer implements Tracer {
         bundle.make();
         for (int i = 0; i < bundle.count(); i++) {
             rays++;
+            long before = hit.testsRun();
             hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
                     bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
             hit.testUnbounded();
             walkTree();
             hits.set(i, hit.best(), hit.bestT(), hit.bestDistance());
+            hits.setTests(i, hit.testsRun() - before);
         }
     }
 

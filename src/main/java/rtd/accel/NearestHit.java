@@ -55,6 +55,8 @@ final class NearestHit {
     private float exit;
     private final long[] tests;
     private long unboundedTests;
+    /** All intersection tests so far, of every kind: a running count, read before and after a ray. */
+    private long testsRun;
 
     NearestHit(Bvh bvh) {
         this.bvh = bvh;
@@ -160,6 +162,7 @@ final class NearestHit {
         int end = first + bvh.nodes[2 * leaf + 1];
         for (int i = first; i < end; i++) {
             tests[leaves.kinds[i]]++;
+            testsRun++;
             float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);
             if (t >= 0) { // false for NaN: no hit
                 consider(leaves.fileOrder[i], t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
@@ -174,6 +177,7 @@ final class NearestHit {
             return;
         }
         unboundedTests++;
+        testsRun += objects.length;
         Ray ray = new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
         for (int i = 0; i < objects.length; i++) {
             float t = objects[i].intersect(ray).t();
@@ -211,6 +215,11 @@ final class NearestHit {
     /** Intersection tests run for this object's rays so far, by kind of the tree's objects. */
     long[] tests() {
         return tests;
+    }
+
+    /** All intersection tests run for this object's rays so far. */
+    long testsRun() {
+        return testsRun;
     }
 
     /** How many rays tested every object without a box. */

@@ -11,6 +11,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.stream.Collectors;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -102,6 +103,10 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--debug", description = "show the stack trace of an error")
     private boolean debug;
 
+    /** The teaching tools: --explain, --view, --export-pov and --watch, all in {@link TeachingOptions}. */
+    @Mixin
+    private TeachingOptions teaching;
+
     private RtdCommand(StandardStreams streams) {
         this.streams = streams;
     }
@@ -131,6 +136,10 @@ public final class RtdCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
+            Integer taught = teach(err); // null unless a teaching option answers instead of the render
+            if (taught != null) {
+                return taught;
+            }
             List<Job> jobs = jobs(scenes());
             Settings settings = settings();
             CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
@@ -141,6 +150,17 @@ public final class RtdCommand implements Callable<Integer> {
             return exitCode;
         } finally {
             err.flush();
+        }
+    }
+
+    /** The teaching options' answer (see {@link TeachingOptions#run}), or null if none of them was given. */
+    private Integer teach(PrintWriter err) {
+        try {
+            return teaching.run(err);
+        } catch (SceneException e) {
+            err.print(e.report());
+            printDebug(err, e);
+            return 1;
         }
     }
 

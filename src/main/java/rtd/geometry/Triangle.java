@@ -109,6 +109,11 @@ public final class Triangle implements IGeometry {
         return v.clone();
     }
 
+    /** The normal given for corner {@code i} (0, 1 or 2) of a smooth triangle, or {@code null} for a flat one. */
+    public Vector3f cornerNormal(int i) {
+        return cornerNormals == null ? null : cornerNormals[i];
+    }
+
     /** Whether the triangle has a normal per corner. */
     public boolean isSmooth() {
         return cornerNormals != null;
@@ -152,15 +157,46 @@ public final class Triangle implements IGeometry {
         float px = ox + dx * t; // as Ray.pointAt rounds it
         float py = oy + dy * t;
         float pz = oz + dz * t;
-        float length = Math.abs(dx) + Math.abs(dy) + Math.abs(dz);
-        float along = Math.min(ALONG_THE_RAY, 16 * U * (1 + length * v[at + 25] / Math.abs(facing)));
-        float loose = 16 * U * (Math.abs(px) + Math.abs(py) + Math.abs(pz)) + along * t * length;
-        float reach = v[at + 24] * v[at + 26] + loose;
-        if (!near(v, at, 0, px, reach) || !near(v, at, 1, py, reach) || !near(v, at, 2, pz, reach)) {
+        float loose = looseness(v, at, px, py, pz, dx, dy, dz, t, facing);
+        if (!nearTheCorners(v, at, px, py, pz, loose)) {
             return Float.NaN; // the allowances must not stretch a hit far beyond the corners
         }
-        return inside(v, at, 0, px, py, pz, loose) && inside(v, at, 1, px, py, pz, loose)
-                && inside(v, at, 2, px, py, pz, loose) ? t : Float.NaN;
+        return side(v, at, 0, px, py, pz) >= -allowance(v, at, 0, px, py, pz, loose)
+                && side(v, at, 1, px, py, pz) >= -allowance(v, at, 1, px, py, pz, loose)
+                && side(v, at, 2, px, py, pz) >= -allowance(v, at, 2, px, py, pz, loose) ? t : Float.NaN;
+    }
+
+    /**
+     * The part of the side tests' allowance that does not depend on the edge: the rounding of
+     * P's coordinates, and of t along the ray, which grows as the ray comes in flatter
+     * ({@code |R|·|n| / |R·n|}), up to {@value #ALONG_THE_RAY} of the distance run.
+     */
+    public static float looseness(float[] v, int at, float px, float py, float pz, float dx, float dy, float dz, float t,
+            float facing) {
+        float length = Math.abs(dx) + Math.abs(dy) + Math.abs(dz);
+        float along = Math.min(ALONG_THE_RAY, 16 * U * (1 + length * v[at + 25] / Math.abs(facing)));
+        return 16 * U * (Math.abs(px) + Math.abs(py) + Math.abs(pz)) + along * t * length;
+    }
+
+    /** Whether P lies within the allowances of the corners' box, on every axis. */
+    public static boolean nearTheCorners(float[] v, int at, float px, float py, float pz, float loose) {
+        float reach = v[at + 24] * v[at + 26] + loose;
+        return near(v, at, 0, px, reach) && near(v, at, 1, py, reach) && near(v, at, 2, pz, reach);
+    }
+
+    /**
+     * How far below 0 the side test of edge {@code k} (from corner k to the next) may come and
+     * still count P as inside: the side test's own rounding, and {@code loose}.
+     */
+    public static float allowance(float[] v, int at, int k, float px, float py, float pz, float loose) {
+        int corner = at + 3 * k;
+        float fromCorner = Math.abs(px - v[corner]) + Math.abs(py - v[corner + 1]) + Math.abs(pz - v[corner + 2]);
+        return (v[at + 24] * fromCorner + loose) * v[at + 21 + k];
+    }
+
+    /** {@code (P − corner k)·(n × edge k)}: ≥ 0 when P lies on the triangle's side of edge k. */
+    public static float side(float[] v, int at, int k, float px, float py, float pz) {
+        return dotFrom(v, at + 3 * k, at + 12 + 3 * k, px, py, pz);
     }
 
     /** Whether coordinate {@code axis} of P is within {@code reach} of the corners' range. */
@@ -171,19 +207,8 @@ public final class Triangle implements IGeometry {
         return p >= Math.min(a, Math.min(b, c)) - reach && p <= Math.max(a, Math.max(b, c)) + reach;
     }
 
-    /**
-     * Whether P lies on the triangle's side of edge {@code k} (from corner k to the next), up
-     * to the side test's rounding and {@code loose}.
-     */
-    private static boolean inside(float[] v, int at, int k, float px, float py, float pz, float loose) {
-        int corner = at + 3 * k;
-        float fromCorner = Math.abs(px - v[corner]) + Math.abs(py - v[corner + 1]) + Math.abs(pz - v[corner + 2]);
-        float allowance = (v[at + 24] * fromCorner + loose) * v[at + 21 + k];
-        return side(v, corner, at + 12 + 3 * k, px, py, pz) >= -allowance;
-    }
-
-    /** {@code (P − corner)·inward}: ≥ 0 when P lies on the triangle's side of the edge from that corner. */
-    private static float side(float[] v, int corner, int inward, float px, float py, float pz) {
+    /** {@code (P − corner)·inward}, with both given by where they start in {@code v}. */
+    private static float dotFrom(float[] v, int corner, int inward, float px, float py, float pz) {
         return ((px - v[corner]) * v[inward]) + ((py - v[corner + 1]) * v[inward + 1]) + ((pz - v[corner + 2]) * v[inward + 2]);
     }
 
@@ -197,9 +222,9 @@ public final class Triangle implements IGeometry {
         if (cornerNormals == null) {
             return n;
         }
-        float w1 = side(v, 3, 15, point.x(), point.y(), point.z()); // the edge p2 → p3, opposite p1
-        float w2 = side(v, 6, 18, point.x(), point.y(), point.z());
-        float w3 = side(v, 0, 12, point.x(), point.y(), point.z());
+        float w1 = side(v, 0, 1, point.x(), point.y(), point.z()); // the edge p2 → p3, opposite p1
+        float w2 = side(v, 0, 2, point.x(), point.y(), point.z());
+        float w3 = side(v, 0, 0, point.x(), point.y(), point.z());
         float sum = w1 + w2 + w3;
         Vector3f blend = cornerNormals[0].multiply(w1 / sum).add(cornerNormals[1].multiply(w2 / sum))
                 .add(cornerNormals[2].multiply(w3 / sum));

@@ -8,20 +8,33 @@ import rtd.geometry.IGeometry;
 /**
  * The nearest hits of the rays of a {@link RayBundle}, kept as numbers: for ray {@code i} the
  * place of the object hit among the scene's objects (−1: none), t and the distance
- * {@code |P − O|}. A {@link Tracer} fills it; a {@link Shader} reads it. A {@link Hit} record is
- * made only where a shader asks for one.
+ * {@code |P − O|}, and how many intersection tests the tracer ran to find it (for
+ * {@code --view cost}). A {@link Tracer} fills it; a {@link Shader} reads it. A {@link Hit}
+ * record is made only where a shader asks for one.
  */
 public final class HitBuffer {
 
     private final int[] index;
     private final float[] t;
     private final float[] distance;
+    private final int[] tests;
 
     /** Room for {@code capacity} hits. */
     public HitBuffer(int capacity) {
         index = new int[capacity];
         t = new float[capacity];
         distance = new float[capacity];
+        tests = new int[capacity];
+    }
+
+    /** Ray {@code i} took {@code count} intersection tests (every tracer sets this for each ray it traces). */
+    public void setTests(int i, long count) {
+        tests[i] = (int) Math.min(Integer.MAX_VALUE, count);
+    }
+
+    /** The intersection tests the tracer ran for ray {@code i}. */
+    public int tests(int i) {
+        return tests[i];
     }
 
     /** Ray {@code i} hits object {@code object} (its place in the scene) at {@code t}, at {@code distance} from its origin. */
@@ -45,8 +58,9 @@ public final class HitBuffer {
         set(i, -1, Float.NaN, Float.POSITIVE_INFINITY);
     }
 
-    /** Rays 0 to {@code count − 1} hit nothing. */
+    /** Rays 0 to {@code count − 1} hit nothing, and took no intersection test. */
     public void setMisses(int count) {
+        Arrays.fill(tests, 0, count, 0);
         Arrays.fill(index, 0, count, -1);
         Arrays.fill(t, 0, count, Float.NaN);
         Arrays.fill(distance, 0, count, Float.POSITIVE_INFINITY);

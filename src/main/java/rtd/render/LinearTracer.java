@@ -12,12 +12,14 @@ public final class LinearTracer implements Tracer {
 
     private final Scene scene;
     private final WorkCount perRay;
+    private final int objects;
     private long rays;
 
     /** A tracer for {@code scene}. */
     public LinearTracer(Scene scene) {
         this.scene = scene;
         this.perRay = WorkCount.testsOf(scene.objects(), 1);
+        this.objects = scene.objects().size();
     }
 
     @Override
@@ -30,5 +32,11 @@ public final class LinearTracer implements Tracer {
     @Override
     public WorkCount work() {
         return perRay.times(rays);
+    }
+
+    /** N tests for each ray. */
+    @Override
+    public long testsRun() {
+        return rays * objects;
     }
 }

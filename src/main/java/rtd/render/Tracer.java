@@ -20,12 +20,22 @@ public interface Tracer {
     /**
      * The nearest hits of the bundle's rays into {@code hits}. The rays come from a small square
      * of neighbouring pixels; a tracer may use what they share to go faster. By default it
-     * traces them one by one.
+     * traces them one by one. Each ray's count of intersection tests goes into {@code hits} too.
      */
     default void traceAll(RayBundle rays, HitBuffer hits) {
         for (int i = 0; i < rays.count(); i++) {
+            long before = testsRun();
             hits.set(i, nearestHit(rays.ray(i)));
+            hits.setTests(i, testsRun() - before);
         }
+    }
+
+    /**
+     * The intersection tests this tracer has run so far: {@link #work}'s, which a tracer may
+     * count faster ({@code --view cost} asks before and after every ray).
+     */
+    default long testsRun() {
+        return work().intersectionTests();
     }
 
     /** The work this tracer has done so far. */

@@ -30,20 +30,28 @@ public final class Lighting {
      */
     public static Rgb of(Material material, Rgb colour, Light light, Vector3f point, Vector3f eye, Vector3f normal,
             boolean shadow) {
+        return terms(material, colour, light, point, eye, normal, shadow).sum();
+    }
+
+    /** {@link #of}'s three terms, each as it computes them; a term the light does not give is black. */
+    public static LightTerms terms(Material material, Rgb colour, Light light, Vector3f point, Vector3f eye,
+            Vector3f normal, boolean shadow) {
         Rgb effective = colour.times(light.intensity());                     // c ⊙ I
         Rgb ambient = effective.times(material.ambient());
         Vector3f toLight = light.position().subtract(point).normalize();     // L
         float lightFacing = toLight.dot(normal);                             // N·L
         if (shadow || lightFacing <= 0) {
-            return ambient; // the light is behind the surface, or something stands in its way
+            // the light is behind the surface, or something stands in its way
+            return new LightTerms(ambient, Rgb.BLACK, Rgb.BLACK, lightFacing, Float.NaN);
         }
         Rgb diffuse = effective.times(material.diffuse() * lightFacing);
         Vector3f reflected = normal.multiply(2 * lightFacing).subtract(toLight); // Rl = 2(N·L)N − L
         float reflectionToEye = reflected.dot(eye);                          // Rl·E
         if (reflectionToEye <= 0) {
-            return ambient.plus(diffuse); // the highlight points away from the eye
+            return new LightTerms(ambient, diffuse, Rgb.BLACK, lightFacing, reflectionToEye); // the highlight points away
         }
         float highlight = (float) Math.pow(reflectionToEye, material.shininess());
-        return ambient.plus(diffuse).plus(light.intensity().times(material.specular() * highlight));
+        return new LightTerms(ambient, diffuse, light.intensity().times(material.specular() * highlight), lightFacing,
+                reflectionToEye);
     }
 }

@@ -33,15 +33,22 @@ public final class WhittedShader implements Shader {
     private final Scene scene;
     private final Tracer tracer;
     private final Rgb background;
+    private final ShadingObserver observer;
     private long shadowRays;
     private long reflectedRays;
     private long refractedRays;
 
     /** A shader for {@code scene} that follows secondary rays with {@code tracer} (one per thread). */
     public WhittedShader(Scene scene, Tracer tracer) {
+        this(scene, tracer, ShadingObserver.NONE);
+    }
+
+    /** A shader that tells {@code observer} each step's numbers ({@code --explain}). */
+    public WhittedShader(Scene scene, Tracer tracer, ShadingObserver observer) {
         this.scene = scene;
         this.tracer = tracer;
         this.background = Rgb.of(scene.ambient());
+        this.observer = observer;
     }
 
     @Override
@@ -59,16 +66,22 @@ public final class WhittedShader implements Shader {
      * its mirror reflects, plus what shows through it.
      */
     Rgb shade(Ray ray, Hit hit, int remaining) {
-        if (hit == null) {
-            return background;
-        }
+        observer.ray(ray, hit, remaining);
+        Rgb colour = hit == null ? background : shadeSurface(ray, hit, remaining);
+        observer.colour(colour);
+        return colour;
+    }
+
+    private Rgb shadeSurface(Ray ray, Hit hit, int remaining) {
         Surface surface = Surface.at(ray, hit);
+        observer.surface(surface);
         Rgb lit = lit(surface);
         Rgb reflected = reflected(surface, remaining);
         Rgb refracted = refracted(surface, remaining);
         Material material = surface.material();
         if (material.reflective() > 0 && material.transparency() > 0) {
             float reflectance = Fresnel.schlick(surface);
+            observer.fresnel(reflectance);
             return lit.plus(reflected.times(reflectance)).plus(refracted.times(1 - reflectance));
         }
         return lit.plus(reflected).plus(refracted);
@@ -79,8 +92,10 @@ public final class WhittedShader implements Shader {
         Rgb sum = Rgb.BLACK;
         for (Light light : scene.lights()) {
             boolean shadow = isShadowed(surface.over(), light);
-            sum = sum.plus(Lighting.of(surface.material(), surface.colour(), light, surface.over(), surface.eye(),
-                    surface.normal(), shadow));
+            LightTerms terms = Lighting.terms(surface.material(), surface.colour(), light, surface.over(), surface.eye(),
+                    surface.normal(), shadow);
+            observer.light(light, shadow, terms);
+            sum = sum.plus(terms.sum());
         }
         return sum;
     }
@@ -89,7 +104,9 @@ public final class WhittedShader implements Shader {
     boolean isShadowed(Vector3f point, Light light) {
         shadowRays++;
         Vector3f toLight = light.position().subtract(point);
-        Hit blocker = tracer.nearestHit(new Ray(point, toLight));
+        Ray shadowRay = new Ray(point, toLight);
+        Hit blocker = tracer.nearestHit(shadowRay);
+        observer.shadowRay(light, shadowRay, blocker, toLight.magnitude());
         return blocker != null && blocker.distance() < toLight.magnitude();
     }
 
@@ -103,7 +120,9 @@ public final class WhittedShader implements Shader {
         Vector3f direction = surface.ray().direction();
         Vector3f normal = surface.normal();
         Vector3f mirrored = direction.subtract(normal.multiply(2 * direction.dot(normal)));
-        return colourAt(new Ray(surface.over(), mirrored), remaining - 1).times(reflective);
+        Ray ray = new Ray(surface.over(), mirrored);
+        observer.reflected(ray);
+        return colourAt(ray, remaining - 1).times(reflective);
     }
 
     /**
@@ -118,12 +137,15 @@ public final class WhittedShader implements Shader {
         }
         Snell snell = Snell.at(surface);
         if (snell.totalInternalReflection()) {
+            observer.totalInternalReflection();
             return Rgb.BLACK;
         }
         refractedRays++;
         Vector3f direction = surface.normal().multiply(snell.ratio() * snell.cosIncidence() - snell.cosTransmitted())
                 .subtract(surface.eye().multiply(snell.ratio()));
-        return colourAt(new Ray(surface.under(), direction), remaining - 1).times(transparency);
+        Ray ray = new Ray(surface.under(), direction);
+        observer.refracted(ray);
+        return colourAt(ray, remaining - 1).times(transparency);
     }
 
     @Override

@@ -1,0 +1,174 @@
+package rtd.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.IntConsumer;
+import java.util.function.IntSupplier;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.zip.CRC32;
+import picocli.CommandLine;
+
+/**
+ * {@code --watch}: renders, then renders again whenever the scene file or a mesh it names
+ * changes, until stopped (Ctrl-C). For a classroom where the teacher edits a scene and the
+ * projector shows the picture.
+ *
+ * <p>Each render is a whole run of rtd without {@code --watch}, so it does what the same command
+ * does once, and a broken edit fails as such a run fails: it prints its errors and leaves the
+ * last good picture in place (rtd replaces a picture only when a new one is complete).
+ *
+ * <p>It asks the files, every {@value #POLL_MILLIS} ms, for their size, time and (up to 16 MiB)
+ * a checksum of their bytes: an editor that saves twice within the file system's clock tick is
+ * still seen, and saving without a change renders nothing.
+ */
+final class SceneWatcher {
+
+    static final long POLL_MILLIS = 200;
+    private static final long CHECKSUM_LIMIT = 16L << 20;
+    private static final Pattern MESH = Pattern.compile("(?m)^[ \\t]*mesh[ \\t]*:[ \\t]*\\(([^)|\\r\\n]+)\\)");
+
+    private final Path scene;
+    private final IntSupplier render;
+    private final PrintWriter err;
+    private final long pollMillis;
+    private IntConsumer rendered = code -> { };
+    private volatile boolean stopped;
+
+    SceneWatcher(Path scene, IntSupplier render, PrintWriter err, long pollMillis) {
+        this.scene = scene;
+        this.render = render;
+        this.err = err;
+        this.pollMillis = pollMillis;
+    }
+
+    /** A watcher whose renders run {@code commandLine}'s own arguments again, without {@code --watch}. */
+    static SceneWatcher forCommandLine(CommandLine commandLine, Path scene, PrintWriter err) {
+        String[] args = withoutWatch(commandLine.getParseResult().originalArgs());
+        IntSupplier once = () -> {
+            CommandLine fresh = RtdCommand.commandLine();
+            fresh.setOut(commandLine.getOut());
+            fresh.setErr(commandLine.getErr());
+            return fresh.execute(args);
+        };
+        return new SceneWatcher(scene, once, err, POLL_MILLIS);
+    }
+
+    /** The arguments less {@code --watch}. */
+    static String[] withoutWatch(List<String> args) {
+        List<String> rest = new ArrayList<>(args);
+        rest.removeIf(arg -> arg.equals("--watch"));
+        return rest.toArray(String[]::new);
+    }
+
+    /** Tells {@code listener} each render's exit code (tests wait on it). */
+    SceneWatcher onRendered(IntConsumer listener) {
+        this.rendered = listener;
+        return this;
+    }
+
+    /** Ends {@link #run} at its next look at the files. */
+    void stop() {
+        stopped = true;
+    }
+
+    /** Renders, then renders again at each change, until stopped or interrupted; returns the last render's exit code. */
+    int run() {
+        Map<Path, String> seen = fingerprints();
+        int code = renderOnce();
+        err.println("rtd: watching " + describe(seen.keySet()) + " for changes; Ctrl-C stops");
+        err.flush();
+        while (!stopped && !Thread.currentThread().isInterrupted()) {
+            try {
+                Thread.sleep(pollMillis);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                break;
+            }
+            Map<Path, String> now = fingerprints();
+            if (!now.equals(seen)) {
+                err.println("rtd: " + changed(seen, now) + " changed: rendering again");
+                seen = now;
+                err.flush();
+                code = renderOnce();
+            }
+        }
+        return code;
+    }
+
+    private int renderOnce() {
+        int code = render.getAsInt();
+        if (code != 0) {
+            err.println("rtd: the last good picture stays; fix the scene and save it again");
+            err.flush();
+        }
+        rendered.accept(code);
+        return code;
+    }
+
+    /** The first file whose fingerprint differs. */
+    private static Path changed(Map<Path, String> before, Map<Path, String> now) {
+        for (Map.Entry<Path, String> file : now.entrySet()) {
+            if (!file.getValue().equals(before.get(file.getKey()))) {
+                return file.getKey();
+            }
+        }
+        return now.keySet().iterator().next(); // a mesh statement went away: the scene changed
+    }
+
+    /** The scene file and each mesh file it names, with what each looks like now. */
+    private Map<Path, String> fingerprints() {
+        Map<Path, String> prints = new LinkedHashMap<>();
+        prints.put(scene, fingerprint(scene));
+        for (Path mesh : meshes()) {
+            prints.put(mesh, fingerprint(mesh));
+        }
+        return prints;
+    }
+
+    /** The files of the scene's {@code mesh:(path)…} statements, relative to its folder. */
+    private List<Path> meshes() {
+        List<Path> meshes = new ArrayList<>();
+        try {
+            if (Files.size(scene) > CHECKSUM_LIMIT) {
+                return meshes;
+            }
+            Matcher matcher = MESH.matcher(Files.readString(scene, StandardCharsets.UTF_8));
+            Path folder = scene.toAbsolutePath().getParent();
+            while (matcher.find()) {
+                meshes.add(folder.resolve(matcher.group(1).strip()).normalize());
+            }
+        } catch (IOException | RuntimeException e) {
+            // unreadable or not UTF-8: the render says what is wrong; watch the scene alone
+        }
+        return meshes;
+    }
+
+    private static String fingerprint(Path file) {
+        try {
+            long size = Files.size(file);
+            String print = size + "@" + Files.getLastModifiedTime(file).toMillis();
+            if (size <= CHECKSUM_LIMIT) {
+                CRC32 crc = new CRC32();
+                crc.update(Files.readAllBytes(file));
+                print += "#" + crc.getValue();
+            }
+            return print;
+        } catch (IOException e) {
+            return "missing";
+        }
+    }
+
+    private static String describe(java.util.Set<Path> files) {
+        List<Path> list = new ArrayList<>(files);
+        return list.size() == 1 ? list.get(0).toString()
+                : list.get(0) + " and " + (list.size() - 1) + " mesh file" + (list.size() == 2 ? "" : "s");
+    }
+}

@@ -1,0 +1,132 @@
+package rtd.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import picocli.CommandLine;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+import rtd.explain.PixelExplanation;
+import rtd.io.SceneException;
+import rtd.io.SceneIO;
+import rtd.scene.Scene;
+import rtd.view.View;
+
+/**
+ * The teaching options (a picocli mixin of {@link RtdCommand}): {@code --explain X,Y} prints
+ * what rtd does for one pixel in the paper's terms, {@code --view KIND} draws what the rays did,
+ * {@code --export-pov FILE.pov} writes the scene for POV-Ray, and {@code --watch} renders again
+ * whenever the scene changes. They live here, apart from the command's own code, and read its
+ * other options from picocli's model ({@link RenderSettings}).
+ */
+public final class TeachingOptions {
+
+    @Spec(Spec.Target.MIXEE)
+    private CommandSpec command;
+
+    @Option(names = "--explain", paramLabel = "X,Y", description = "instead of a picture, print what rtd does for "
+            + "pixel (X, Y), step by step in the paper's terms: the ray, each object's intersection test, the depth "
+            + "test and the colour (with lights: each light's terms and the reflected and refracted rays)")
+    private String explain;
+
+    @Option(names = "--view", paramLabel = "KIND", description = "instead of the picture, draw what the rays did: "
+            + "cost (intersection tests per ray, a heat map with its scale), depth (|P - O| in grey, near bright), "
+            + "normal (the normal as colour), id (a colour per object); default output SCENE-KIND.png")
+    private View view;
+
+    @Option(names = "--export-pov", paramLabel = "FILE.pov", converter = FileName.class, description = "also write the "
+            + "scene as a POV-Ray 3.7 scene that draws the same picture; its first lines give the povray command")
+    private Path exportPov;
+
+    @Option(names = "--watch", description = "after the first render, render again whenever the scene file (or a mesh "
+            + "it uses) changes, until Ctrl-C; a broken edit prints its errors and keeps the last good picture")
+    private boolean watch;
+
+    /**
+     * Runs what the teaching options ask for, or returns {@code null} if rtd is to render as
+     * usual (after an export, if one was asked for).
+     */
+    Integer run(PrintWriter err) throws SceneException {
+        RenderSettings settings = RenderSettings.of(command);
+        CommandLine commandLine = command.commandLine();
+        if (watch) {
+            return SceneWatcher.forCommandLine(commandLine, settings.scene(), err).run();
+        }
+        PixelArgument pixel = explain == null ? null : PixelArgument.parse(explain, settings.width(), settings.height(), commandLine);
+        if (pixel == null && view == null && exportPov == null) {
+            return null;
+        }
+        Scene scene = readScene(settings.scene(), err);
+        if (scene == null) {
+            return 1;
+        }
+        if (exportPov != null && !PovExportRun.write(scene, exportPov, settings, err)) {
+            return 1;
+        }
+        if (pixel != null) {
+            return explain(scene, pixel, settings, commandLine.getOut());
+        }
+        if (view != null) {
+            return view(scene, settings, commandLine, err);
+        }
+        return null;
+    }
+
+    private static int explain(Scene scene, PixelArgument pixel, RenderSettings settings, PrintWriter out) {
+        out.println("rtd --explain " + pixel.x() + "," + pixel.y() + ": pixel (" + pixel.x() + ", " + pixel.y() + ") of the "
+                + settings.width() + " × " + settings.height() + " picture of " + settings.scene());
+        out.println("(every number is the renderer's own float, written as the shortest decimal that reads back as it)");
+        if (settings.samples() > 1) {
+            out.println("(with --samples " + settings.samples() + " the picture's pixel is the mean of "
+                    + settings.samples() * settings.samples() + " rays; this is the ray through its corner, --samples 1)");
+        }
+        out.println();
+        out.print(PixelExplanation.of(scene, pixel.x(), pixel.y(), settings.width(), settings.height()));
+        out.flush();
+        return 0;
+    }
+
+    private int view(Scene scene, RenderSettings settings, CommandLine commandLine, PrintWriter err) {
+        ImageSize.check(commandLine, settings.width(), settings.height());
+        OutputTarget target = outputTarget(settings, commandLine, err);
+        if (target == null) {
+            return 1;
+        }
+        if (settings.samples() > 1) {
+            err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
+        }
+        ViewRun.Result result = ViewRun.render(scene, view, settings);
+        try {
+            ViewRun.write(result, target, settings.threads(), err);
+        } catch (IOException e) {
+            err.println("rtd: cannot write '" + target.spelt() + "': " + FileProblems.reason(e));
+            return 1;
+        }
+        return 0;
+    }
+
+    private OutputTarget outputTarget(RenderSettings settings, CommandLine commandLine, PrintWriter err) {
+        Path spelt = settings.output() != null ? settings.output() : ViewRun.defaultOutput(settings.scene(), view);
+        try {
+            return OutputTarget.of(spelt, settings.scene());
+        } catch (OutputTarget.Refusal refusal) {
+            if (refusal.misuse()) {
+                throw new ParameterException(commandLine, refusal.getMessage());
+            }
+            err.println("rtd: " + refusal.getMessage());
+            return null;
+        }
+    }
+
+    /** The scene, or null after saying why it cannot be read; mistakes in it are thrown, for the command's report. */
+    private static Scene readScene(Path path, PrintWriter err) throws SceneException {
+        try {
+            return SceneIO.readScene(path);
+        } catch (IOException e) {
+            err.println("rtd: cannot read the scene file '" + path + "': " + FileProblems.reason(e));
+            return null;
+        }
+    }
+}

@@ -1,0 +1,66 @@
+package rtd.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.function.Supplier;
+import rtd.accel.Bvh;
+import rtd.io.ImageFormat;
+import rtd.io.SceneIO;
+import rtd.render.LinearTracer;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.render.RenderResult;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
+import rtd.view.View;
+import rtd.view.ViewPicture;
+import rtd.view.ViewShader;
+
+/**
+ * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture
+ * would take (the paper's loop or the BVH, all threads), and writes it as a PNG, its scale on
+ * standard error.
+ */
+final class ViewRun {
+
+    private ViewRun() {
+    }
+
+    /** The view's picture and the work its rays took. */
+    record Result(ViewPicture view, RenderResult render) {
+    }
+
+    /** Renders {@code view} of {@code scene} with the settings' size, threads and accelerator. */
+    static Result render(Scene scene, View view, RenderSettings settings) {
+        Supplier<Tracer> tracers;
+        if (settings.useBvh(scene.objects().size())) {
+            Bvh bvh = Bvh.build(scene, settings.threads());
+            tracers = bvh::newTracer;
+        } else {
+            tracers = () -> new LinearTracer(scene);
+        }
+        ViewShader shader = new ViewShader(view, scene.objects());
+        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers, tracer -> shader, settings.width(),
+                settings.height(), 1, settings.threads(), new RenderProgress());
+        return new Result(ViewPicture.of(view, raw.image(), scene), raw);
+    }
+
+    /** Writes the view to {@code target}; the scale goes to {@code err}. */
+    static void write(Result result, OutputTarget target, int threads, PrintWriter err) throws IOException {
+        if (target.kind() == OutputTarget.Kind.STREAM) {
+            SceneIO.writeImageInto(result.view().picture(), ImageFormat.PNG, target.file(), done -> { });
+        } else {
+            SceneIO.writeImage(result.view().picture(), ImageFormat.PNG, target.file(), done -> { });
+        }
+        err.print("rtd: " + result.view().report().replace("\n", "\n     ").stripTrailing() + "\n");
+    }
+
+    /** Without {@code -o}: the scene's name with the view's, {@code scene.txt} → {@code scene-cost.png}. */
+    static Path defaultOutput(Path scene, View view) {
+        String name = scene.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String base = dot > 0 ? name.substring(0, dot) : name;
+        return scene.resolveSibling(base + "-" + view + ".png");
+    }
+}

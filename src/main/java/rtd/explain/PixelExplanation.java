@@ -1,0 +1,102 @@
+package rtd.explain;
+
+import java.util.List;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Intersection;
+import rtd.image.Color;
+import rtd.math.Ray;
+import rtd.scene.Scene;
+
+/**
+ * What rtd does for one pixel, in the paper's terms and order ({@code --explain X,Y}): ray
+ * generation (section 3.2.1, Listing 4.1), the intersection test with every object in file
+ * order (section 3.2.2), the depth test (section 3.2.3, Listing 4.3) and the pixel's colour.
+ *
+ * <p>Every number is computed with the renderer's own float operations, and the verdicts are
+ * those of the objects' own tests and of {@link Scene#nearestHit}: the explanation of a pixel
+ * agrees with its colour in the picture. A scene with lights adds the tree of its shading
+ * ({@link ShadingExplanation}).
+ */
+public final class PixelExplanation {
+
+    private PixelExplanation() {
+    }
+
+    /** The explanation of pixel (x, y) of a {@code w × h} picture of {@code scene}. */
+    public static String of(Scene scene, int x, int y, int w, int h) {
+        Text text = new Text();
+        Ray ray = scene.camera().generateRay(x, y, w, h);
+        RayGeneration.explain(text, scene.camera(), ray, x, y, w, h);
+        text.blank();
+        float[] t = intersectionTests(text, scene.objects(), ray);
+        text.blank();
+        int nearest = depthTest(text, scene.objects(), ray, t);
+        text.blank();
+        result(text, scene, ray, nearest);
+        return text.toString();
+    }
+
+    private static float[] intersectionTests(Text text, List<IGeometry> objects, Ray ray) {
+        text.line("2. Intersection tests, every object in file order (section 3.2.2: IGeometry.intersect)").in();
+        if (objects.isEmpty()) {
+            text.line("the scene has no objects");
+        }
+        float[] t = new float[objects.size()];
+        for (int i = 0; i < objects.size(); i++) {
+            text.in();
+            t[i] = IntersectionSteps.explain(text, "#" + (i + 1) + " ", objects.get(i), ray);
+            float own = objects.get(i).intersect(ray).t();
+            if (Float.floatToIntBits(own) != Float.floatToIntBits(t[i]) && (own >= 0 || t[i] >= 0)) {
+                text.line("(the object's own test gives t = " + Numbers.of(own) + ": this explanation is wrong here; please report it)");
+                t[i] = own;
+            }
+            text.out();
+        }
+        text.out();
+        return t;
+    }
+
+    /** Listing 4.3's depth test on the hits, as {@link Scene#nearestHit} runs it; returns the nearest object's place, or −1. */
+    private static int depthTest(Text text, List<IGeometry> objects, Ray ray, float[] t) {
+        text.line("3. Depth test (section 3.2.3, Listing 4.3: Scene.nearestHit): the hit nearest to O wins").in();
+        float distance = Float.POSITIVE_INFINITY;
+        int nearest = -1;
+        for (int i = 0; i < objects.size(); i++) {
+            Intersection intersection = objects.get(i).intersect(ray);
+            if (!intersection.happened()) {
+                continue;
+            }
+            float current = intersection.contactCoord().subtract(ray.origin()).magnitude();
+            String where = "#" + (i + 1) + ": P = " + Numbers.of(intersection.contactCoord()) + ", |P − O| = " + Numbers.of(current);
+            if (current < distance) {
+                text.line(where + " < " + Numbers.of(distance) + ": the nearest so far");
+                distance = current;
+                nearest = i;
+            } else {
+                text.line(where + " ≥ " + Numbers.of(distance) + ": #" + (nearest + 1) + " stays the nearest"
+                        + (current == distance ? " (a tie: the first in the file wins)" : ""));
+            }
+        }
+        text.line(nearest < 0 ? "no object is hit" : "nearest: #" + (nearest + 1) + " " + objects.get(nearest).kind());
+        text.out();
+        return nearest;
+    }
+
+    private static void result(Text text, Scene scene, Ray ray, int nearest) {
+        if (!scene.lights().isEmpty()) {
+            ShadingExplanation.explain(text, scene, ray);
+            return;
+        }
+        text.line("4. Result (section 3.2.3: the paper's flat colours, FlatShader)").in();
+        Color colour;
+        if (nearest < 0) {
+            colour = scene.ambient();
+            text.line("no hit: the background, the scene's ambient colour " + Numbers.of(colour));
+        } else {
+            colour = scene.objects().get(nearest).color();
+            text.line("#" + (nearest + 1) + " " + scene.objects().get(nearest).kind() + ", colour " + Numbers.of(colour));
+        }
+        text.line("pixel colour: " + Numbers.rgb(colour));
+        text.out();
+    }
+}

@@ -1,0 +1,167 @@
+package rtd.explain;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import rtd.geometry.Hit;
+import rtd.geometry.Material;
+import rtd.image.Rgb;
+import rtd.math.Ray;
+import rtd.render.LinearTracer;
+import rtd.scene.Light;
+import rtd.scene.Scene;
+import rtd.shade.LightTerms;
+import rtd.shade.ShadingObserver;
+import rtd.shade.Surface;
+import rtd.shade.WhittedShader;
+
+/**
+ * Step 4 of an explanation for a scene with lights (Part II, "Light"; not in the paper, which
+ * stops at flat colours): the tree of what {@link WhittedShader} computes for the camera's ray,
+ * each light's ambient, diffuse and specular terms, the shadow ray's verdict, and the reflected
+ * and refracted rays, indented, down to the last bounce.
+ *
+ * <p>It watches the renderer's own shader ({@link ShadingObserver}) with the paper's loop as its
+ * tracer, so every number is the picture's.
+ */
+final class ShadingExplanation implements ShadingObserver {
+
+    /** What the tree knows of one open ray: its finish (null: it hit nothing), bounces left, and what was said. */
+    private static final class Frame {
+        Material material;
+        int remaining;
+        boolean reflectionSaid;
+        boolean refractionSaid;
+    }
+
+    private final Text text;
+    private final Deque<Frame> open = new ArrayDeque<>();
+    private Ray shadowRay;
+    private Hit blocker;
+    private float lightDistance;
+    private int lightNumber;
+
+    private ShadingExplanation(Text text) {
+        this.text = text;
+    }
+
+    /** Writes the shading of {@code ray} in {@code scene} into {@code text}, ending with the pixel's colour. */
+    static void explain(Text text, Scene scene, Ray ray) {
+        text.line("4. Result, shaded (Part II \"Light\": WhittedShader.shade; the paper stops at flat colours)").in();
+        text.line(scene.lights().size() + " light" + (scene.lights().size() == 1 ? "" : "s") + ", at most "
+                + WhittedShader.BOUNCES + " bounces; the camera's ray:");
+        ShadingExplanation tree = new ShadingExplanation(text);
+        Rgb colour = new WhittedShader(scene, new LinearTracer(scene), tree).colourAt(ray, WhittedShader.BOUNCES);
+        text.line("pixel colour: each channel clamped to [0, 1], then floor(255·c + ½): " + Numbers.rgb(colour.toColor()));
+        text.out();
+    }
+
+    @Override
+    public void ray(Ray ray, Hit hit, int remaining) {
+        Frame frame = new Frame();
+        frame.remaining = remaining;
+        open.push(frame);
+        text.in();
+        text.line("ray O = " + Numbers.of(ray.origin()) + ", R = " + Numbers.of(ray.direction()) + ", " + remaining
+                + " bounce" + (remaining == 1 ? "" : "s") + " left");
+        if (hit == null) {
+            text.line("hits nothing: the background (ambient) colour");
+            return;
+        }
+        frame.material = hit.object().material();
+        text.line("hits #" + (hit.index() + 1) + " " + hit.object().kind() + " at t = " + Numbers.of(hit.t()) + ", P = "
+                + Numbers.of(hit.point()) + ", |P − O| = " + Numbers.of(hit.distance()) + ", colour " + hit.object().color());
+    }
+
+    @Override
+    public void surface(Surface surface) {
+        Material m = surface.material();
+        text.line("N = " + Numbers.of(surface.normal()) + (surface.inside() ? " (the ray is inside: N turned round)" : "")
+                + ", E = −R/|R| = " + Numbers.of(surface.eye()) + ", over = P + ε·N = " + Numbers.of(surface.over()));
+        text.line("finish: ambient " + Numbers.of(m.ambient()) + ", diffuse " + Numbers.of(m.diffuse()) + ", specular "
+                + Numbers.of(m.specular()) + ", shininess " + Numbers.of(m.shininess()) + ", reflective "
+                + Numbers.of(m.reflective()) + ", transparency " + Numbers.of(m.transparency()) + ", ior " + Numbers.of(m.ior()));
+        lightNumber = 0;
+    }
+
+    @Override
+    public void shadowRay(Light light, Ray ray, Hit hit, float distance) {
+        this.shadowRay = ray;
+        this.blocker = hit;
+        this.lightDistance = distance;
+    }
+
+    @Override
+    public void light(Light light, boolean shadowed, LightTerms terms) {
+        lightNumber++;
+        text.line("light " + lightNumber + " at " + Numbers.of(light.position()) + ", intensity " + Numbers.of(light.intensity())
+                + ":").in();
+        String verdict = blocker == null ? "hits nothing: lit"
+                : "hits #" + (blocker.index() + 1) + " " + blocker.object().kind() + " at |P − O| = "
+                        + Numbers.of(blocker.distance()) + (shadowed ? " < " : " ≥ ") + Numbers.of(lightDistance)
+                        + " to the light: " + (shadowed ? "in shadow" : "lit (it lies beyond the light)");
+        text.line("shadow ray from over along " + Numbers.of(shadowRay.direction()) + " " + verdict);
+        text.line("N·L = " + Numbers.of(terms.lightFacing()) + (terms.lightFacing() <= 0 ? " ≤ 0: the light is behind the surface" : "")
+                + (Float.isNaN(terms.reflectionToEye()) ? "" : ", Rl·E = " + Numbers.of(terms.reflectionToEye())));
+        text.line("ambient  = ambient·c⊙I = " + Numbers.of(terms.ambient()));
+        text.line("diffuse  = diffuse·c⊙I·(N·L) = " + Numbers.of(terms.diffuse()));
+        text.line("specular = specular·I·(Rl·E)^shininess = " + Numbers.of(terms.specular()));
+        text.out();
+    }
+
+    @Override
+    public void reflected(Ray ray) {
+        Frame frame = open.peek();
+        frame.reflectionSaid = true;
+        text.line("reflection (× reflective " + Numbers.of(frame.material.reflective()) + "):");
+    }
+
+    @Override
+    public void refracted(Ray ray) {
+        Frame frame = open.peek();
+        sayNoReflection(frame);
+        frame.refractionSaid = true;
+        text.line("refraction (× transparency " + Numbers.of(frame.material.transparency()) + ", ior "
+                + Numbers.of(frame.material.ior()) + "):");
+    }
+
+    @Override
+    public void totalInternalReflection() {
+        Frame frame = open.peek();
+        sayNoReflection(frame);
+        frame.refractionSaid = true;
+        text.line("refraction: none, total internal reflection (black)");
+    }
+
+    @Override
+    public void fresnel(float reflectance) {
+        Frame frame = open.peek();
+        sayMissing(frame);
+        text.line("Fresnel (Schlick): reflectance " + Numbers.of(reflectance) + "; colour = surface + reflection·"
+                + Numbers.of(reflectance) + " + refraction·(1 − " + Numbers.of(reflectance) + ")");
+    }
+
+    @Override
+    public void colour(Rgb colour) {
+        Frame frame = open.pop();
+        if (frame.material != null) {
+            sayMissing(frame);
+        }
+        text.line("colour = " + Numbers.of(colour));
+        text.out();
+    }
+
+    private void sayMissing(Frame frame) {
+        sayNoReflection(frame);
+        if (!frame.refractionSaid) {
+            frame.refractionSaid = true;
+            text.line("refraction: none (" + (frame.material.transparency() <= 0 ? "transparency 0" : "no bounces left") + ")");
+        }
+    }
+
+    private void sayNoReflection(Frame frame) {
+        if (!frame.reflectionSaid) {
+            frame.reflectionSaid = true;
+            text.line("reflection: none (" + (frame.material.reflective() <= 0 ? "reflective 0" : "no bounces left") + ")");
+        }
+    }
+}

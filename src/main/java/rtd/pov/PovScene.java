@@ -1,0 +1,213 @@
+package rtd.pov;
+
+import java.math.BigDecimal;
+import java.util.Locale;
+import rtd.camera.ICamera;
+import rtd.camera.OrthographicCamera;
+import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Box;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.geometry.Plane;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+import rtd.image.Color;
+import rtd.image.Rgb;
+import rtd.math.Vector3f;
+import rtd.scene.Light;
+import rtd.scene.Scene;
+
+/**
+ * A scene written as a POV-Ray 3.7 scene that draws the same picture ({@code --export-pov}): a
+ * second, independent ray tracer to check rtd against.
+ *
+ * <p>What makes the two agree:
+ * <ul>
+ * <li>the camera is given by explicit vectors, POV-Ray's {@code right} along rtd's u and its
+ *     {@code up} against rtd's v (which points down), so no handedness rule of POV-Ray's
+ *     {@code look_at} applies; POV-Ray samples pixel centres and rtd pixel corners (Listing 4.1:
+ *     {@code x − w/2} in whole numbers), so the camera is shifted by that difference, half a
+ *     pixel for an even size;</li>
+ * <li>flat scenes: {@code finish { ambient 1 diffuse 0 }} and {@code ambient_light 1}, no
+ *     lights, so each object shows its colour exactly;</li>
+ * <li>shaded scenes: the Phong terms map one to one ({@code phong} is the specular term,
+ *     {@code phong_size} the shininess), the ambient light is the sum of the lights'
+ *     intensities, and {@code max_trace_level 6} counts the camera's ray as rtd's 5 bounces do
+ *     not; transparent objects are drawn with {@code rgbt}, their own shadow left to an opaque,
+ *     invisible twin, as rtd's every object casts a full shadow;</li>
+ * <li>gamma 1: values are linear, as rtd's.</li>
+ * </ul>
+ */
+public final class PovScene {
+
+    private PovScene() {
+    }
+
+    /** The POV-Ray command that renders {@code povFile} at {@code w × h} into {@code png}, as rtd would. */
+    public static String command(String povFile, String png, int w, int h) {
+        return "povray +I" + povFile + " +O" + png + " +W" + w + " +H" + h + " +FN -A -D File_Gamma=1.0";
+    }
+
+    /** The POV-Ray text of {@code scene} as rtd draws it at {@code w × h}; {@code povFile} names the file, for the comment. */
+    public static String of(Scene scene, int w, int h, String povFile) {
+        boolean shaded = !scene.lights().isEmpty();
+        StringBuilder pov = new StringBuilder();
+        pov.append("// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n");
+        pov.append("//   ").append(command(povFile, povFile.replaceAll("\\.pov$", "") + "-pov.png", w, h)).append('\n');
+        pov.append(shaded
+                ? "// and compare decoded pixels: shaded scenes agree but for shadow and silhouette edges and a level here\n"
+                        + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also reflects differs.\n"
+                : "// and compare decoded pixels: flat scenes agree but for the odd pixel on an edge.\n");
+        pov.append("#version 3.7;\n\n");
+        pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? rgb(lightSum(scene)) : "rgb <1, 1, 1>")
+                .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
+        pov.append("background { ").append(rgb(scene.ambient())).append(" }\n\n");
+        pov.append(camera(scene.camera(), w, h)).append('\n');
+        for (Light light : scene.lights()) {
+            pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
+                    .append(" }\n");
+        }
+        for (IGeometry object : scene.objects()) {
+            pov.append(object(object, shaded));
+        }
+        return pov.toString();
+    }
+
+    private static Rgb lightSum(Scene scene) {
+        Rgb sum = Rgb.BLACK;
+        for (Light light : scene.lights()) {
+            sum = sum.plus(light.intensity());
+        }
+        return sum;
+    }
+
+    /**
+     * The camera, shifted from pixel centres to rtd's corners: {@code x' = x − ⌊w/2⌋} against
+     * POV-Ray's {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w).
+     */
+    static String camera(ICamera camera, int w, int h) {
+        double shiftX = w / 2.0 - w / 2 - 0.5;
+        double shiftY = h / 2.0 - h / 2 - 0.5;
+        if (camera instanceof OrthographicCamera ortho) {
+            double zoom = ortho.zoom();
+            double[] location = plus(plus(d(ortho.position()), times(d(ortho.widthVector()), shiftX / zoom)),
+                    times(d(ortho.heightVector()), shiftY / zoom));
+            return "camera {\n  orthographic\n  location " + vector(location) + "\n  direction " + vector(d(ortho.direction()))
+                    + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
+                    + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + "\n}\n";
+        }
+        if (camera instanceof PerspectiveCamera perspective) {
+            double f = w / 2.0 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2);
+            double[] forward = d(perspective.direction().normalize());
+            double[] direction = plus(plus(times(forward, f), times(d(perspective.widthVector()), shiftX)),
+                    times(d(perspective.heightVector()), shiftY));
+            return "camera {\n  perspective\n  location " + vector(d(perspective.position())) + "\n  direction "
+                    + vector(direction) + "\n  right " + vector(times(d(perspective.widthVector()), w))
+                    + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
+        }
+        throw new IllegalArgumentException("no POV-Ray camera for " + camera.getClass().getSimpleName());
+    }
+
+    private static String object(IGeometry object, boolean shaded) {
+        String shape = shape(object);
+        if (!shaded) {
+            return shape + " { " + body(object) + " pigment { " + rgb(object.color()) + " } finish { ambient 1 diffuse 0 } }\n";
+        }
+        Material m = object.material();
+        if (m.transparency() <= 0) {
+            return shape + " { " + body(object) + " pigment { " + rgb(object.color()) + " } " + finish(m, 1) + " }\n";
+        }
+        float t = Math.min(m.transparency(), 0.999f); // POV-Ray's rgbt of 1 would leave no share to scale by
+        Rgb c = Rgb.of(object.color());
+        return shape + " { " + body(object) + " pigment { rgbt <" + num(c.red()) + ", " + num(c.green()) + ", "
+                + num(c.blue()) + ", " + num(t) + "> } " + finish(m, 1 - t) + " interior { ior " + num(m.ior())
+                + " } no_shadow }\n"
+                + shape + " { " + body(object) + " pigment { rgb 0 } no_image no_reflection } // its shadow\n";
+    }
+
+    /** RTC's finish in POV-Ray's words; ambient and diffuse scaled by {@code 1/share} where rgbt's filter takes a share. */
+    private static String finish(Material m, float share) {
+        return "finish { ambient " + num(m.ambient() / share) + " diffuse " + num(m.diffuse() / share) + " phong "
+                + num(m.specular()) + " phong_size " + num(m.shininess())
+                + (m.reflective() > 0 ? " reflection { " + num(m.reflective()) + " }" : "") + " }";
+    }
+
+    private static String shape(IGeometry object) {
+        if (object instanceof Sphere) {
+            return "sphere";
+        }
+        if (object instanceof Plane) {
+            return "plane";
+        }
+        if (object instanceof Triangle triangle) {
+            return triangle.isSmooth() ? "smooth_triangle" : "triangle";
+        }
+        if (object instanceof Box) {
+            return "box";
+        }
+        throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
+    }
+
+    private static String body(IGeometry object) {
+        if (object instanceof Sphere s) {
+            return vector(s.center()) + ", " + num(s.radius());
+        }
+        if (object instanceof Plane p) {
+            double[] n = d(p.normal());
+            double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            double[] unit = times(n, 1 / length);
+            double[] q = d(p.point());
+            return vector(unit) + ", " + num(q[0] * unit[0] + q[1] * unit[1] + q[2] * unit[2]);
+        }
+        if (object instanceof Triangle t) {
+            if (t.isSmooth()) {
+                return vector(t.corner(0)) + ", " + vector(t.cornerNormal(0)) + ", " + vector(t.corner(1)) + ", "
+                        + vector(t.cornerNormal(1)) + ", " + vector(t.corner(2)) + ", " + vector(t.cornerNormal(2));
+            }
+            return vector(t.corner(0)) + ", " + vector(t.corner(1)) + ", " + vector(t.corner(2));
+        }
+        Box b = (Box) object;
+        return vector(b.min()) + ", " + vector(b.max());
+    }
+
+    private static String rgb(Color c) {
+        return rgb(Rgb.of(c));
+    }
+
+    private static String rgb(Rgb c) {
+        return "rgb <" + num(c.red()) + ", " + num(c.green()) + ", " + num(c.blue()) + ">";
+    }
+
+    private static String vector(Vector3f v) {
+        return vector(d(v));
+    }
+
+    private static String vector(double[] v) {
+        return "<" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + ">";
+    }
+
+    private static double[] d(Vector3f v) {
+        return new double[] {v.x(), v.y(), v.z()};
+    }
+
+    private static double[] plus(double[] a, double[] b) {
+        return new double[] {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+    }
+
+    private static double[] times(double[] a, double f) {
+        return new double[] {a[0] * f, a[1] * f, a[2] * f};
+    }
+
+    /** A float exactly as rtd holds it (its shortest decimal); POV-Ray reads it as the same number. */
+    private static String num(float value) {
+        return new BigDecimal(Float.toString(value)).stripTrailingZeros().toPlainString();
+    }
+
+    /** A double to 17 significant digits, plain. */
+    private static String num(double value) {
+        if (value == 0) {
+            return "0";
+        }
+        return new BigDecimal(String.format(Locale.ROOT, "%.17g", value)).stripTrailingZeros().toPlainString();
+    }
+}

@@ -1,0 +1,89 @@
+package rtd.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import rtd.testing.Cli;
+import rtd.testing.Cli.Run;
+
+@DisplayName("The teaching options on the command line")
+class TeachingOptionsTest {
+
+    private static final String EXAMPLE = Path.of("examples", "input_rtd.txt").toString();
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void explainPrintsThePixelsStepsToStandardOutputAndWritesNoPicture() {
+        Run run = Cli.run(EXAMPLE, "-o", dir.resolve("out.png").toString(), "--explain", "460,490");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.out()).contains("pixel (460, 490) of the 1920 × 1080 picture", "a = R·R = 1", "pixel colour: 255 0 0");
+        assertThat(dir.resolve("out.png")).doesNotExist();
+    }
+
+    @Test
+    void explainAgreesWithTheRenderedPicture() throws IOException {
+        Path out = dir.resolve("out.png");
+        assertThat(Cli.run(EXAMPLE, "-o", out.toString(), "--width", "96", "--height", "54").exitCode()).isZero();
+        BufferedImage picture = ImageIO.read(out.toFile());
+        for (int[] pixel : new int[][] {{0, 0}, {20, 27}, {60, 10}, {30, 30}, {95, 53}}) {
+            Run run = Cli.run(EXAMPLE, "--width", "96", "--height", "54", "--explain", pixel[0] + "," + pixel[1]);
+            int rgb = picture.getRGB(pixel[0], pixel[1]);
+            assertThat(run.out()).contains("pixel colour: " + (rgb >> 16 & 0xFF) + " " + (rgb >> 8 & 0xFF) + " " + (rgb & 0xFF));
+        }
+    }
+
+    @Test
+    void aPixelOutsideTheImageOrAMalformedOneIsMisuseThatNamesTheImagesSize() {
+        for (String pixel : List.of("1920,0", "0,1080", "99999999999,1", "-1,5", "3", "a,b", "1,2,3", "")) {
+            Run run = Cli.run(EXAMPLE, "--explain", pixel);
+            assertThat(run.exitCode()).as(pixel).isEqualTo(2);
+            assertThat(run.err()).as(pixel).contains("--explain", "1920 × 1080", "Try 'java -jar rtd.jar --help'");
+        }
+        Run small = Cli.run(EXAMPLE, "--width", "30", "--height", "20", "--explain", "30,5");
+        assertThat(small.err()).contains("0 ≤ X < 30 and 0 ≤ Y < 20 (the image is 30 × 20)");
+    }
+
+    @Test
+    void viewCostWritesAHeatMapWithItsLegendAndPrintsTheScale() throws IOException {
+        Path out = dir.resolve("cost.png");
+        Run run = Cli.run(EXAMPLE, "-o", out.toString(), "--width", "96", "--height", "54", "--view", "cost", "--accel", "none");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("logarithmic scale from 0 (black) to 2", "2.00 per ray, at most 2");
+        BufferedImage image = ImageIO.read(out.toFile());
+        assertThat(image.getWidth()).isEqualTo(96);
+        assertThat(image.getHeight()).isEqualTo(54 + 32);
+    }
+
+    @Test
+    void aViewWithoutOutputGoesBesideTheSceneUnderTheViewsName() throws IOException {
+        Path scene = Files.copy(Path.of(EXAMPLE), dir.resolve("paper.txt"));
+        for (String view : List.of("cost", "depth", "normal", "id")) {
+            Run run = Cli.run(scene.toString(), "--width", "48", "--height", "27", "--view", view);
+            assertThat(run.exitCode()).as(run.err()).isZero();
+            assertThat(dir.resolve("paper-" + view + ".png")).isRegularFile();
+        }
+        assertThat(dir.resolve("paper.png")).doesNotExist();
+    }
+
+    @Test
+    void anUnknownViewIsMisuse() {
+        Run run = Cli.run(EXAMPLE, "--view", "heat");
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("--view", "cost, depth, normal, id");
+    }
+
+    @Test
+    void watchRendersWithTheSameArgumentsLessWatch() {
+        assertThat(SceneWatcher.withoutWatch(List.of("a.txt", "--watch", "-o", "b.png"))).containsExactly("a.txt", "-o", "b.png");
+    }
+}

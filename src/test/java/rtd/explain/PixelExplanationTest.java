@@ -1,0 +1,138 @@
+package rtd.explain;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import java.util.Random;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import rtd.accel.Bvh;
+import rtd.camera.OrthographicCamera;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Sphere;
+import rtd.image.Color;
+import rtd.math.Vector3f;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.scene.Scene;
+import rtd.shade.FlatShader;
+import rtd.shade.WhittedShader;
+import rtd.testing.MixedScenes;
+import rtd.testing.RandomScenes;
+import rtd.testing.Scenes;
+
+@DisplayName("Explaining a pixel")
+class PixelExplanationTest {
+
+    private static final Pattern COLOUR = Pattern.compile("pixel colour: [^\\n]*?(\\d+) (\\d+) (\\d+)\\n");
+    private static final Pattern NEAREST = Pattern.compile("   (nearest: #(\\d+)|no object is hit)");
+
+    @Test
+    void thePapersExampleOnTheRedSphereShowsEquations36To38AndTheColour() {
+        String text = PixelExplanation.of(Scenes.example("input_rtd"), 460, 490, 1920, 1080);
+        assertThat(text).contains("x' = x − w/2 = 460 − 960 = -500", "O = pos + u·x'/zoom + v·y'/zoom",
+                "= (-10|1|20)", "R = dir, as the scene file gives it = (0|0|-1)");
+        assertThat(text).contains("a = R·R = 1   (equation 3.6)", "b = 2·R·(O − M) = -42   (equation 3.7)",
+                "c = (O − M)·(O − M) − r² = 655   (equation 3.8)", "discriminant b² − 4ac = -856 < 0");
+        assertThat(text).contains("b = 2·R·(O − M) = -30", "c = (O − M)·(O − M) − r² = 200",
+                "discriminant b² − 4ac = 100 ≥ 0, √ = 10", "t = (−b − √)/2a = 10 ≥ 0: a hit");
+        assertThat(text).contains("#2: P = (-10|1|10), |P − O| = 10 < ∞: the nearest so far", "nearest: #2 sphere",
+                "#2 sphere, colour (255|0|0)", "pixel colour: 255 0 0");
+        assertThat(text.indexOf("1. Ray generation")).isLessThan(text.indexOf("2. Intersection"));
+        assertThat(text.indexOf("2. Intersection")).isLessThan(text.indexOf("3. Depth test"));
+        assertThat(text.indexOf("3. Depth test")).isLessThan(text.indexOf("4. Result"));
+    }
+
+    @Test
+    void aRayFromInsideASphereHitsTheFarRootAndASphereBehindHasBothRootsBehind() {
+        List<IGeometry> spheres = List.of(new Sphere(new Vector3f(0, 0, 0), 5, new Color(1, 2, 3)),
+                new Sphere(new Vector3f(0, 0, 30), 1, new Color(4, 5, 6)));
+        Scene scene = new Scene(Color.BLACK, new OrthographicCamera(new Vector3f(0, 0, 0), new Vector3f(0, 0, -1), 1), spheres);
+        String text = PixelExplanation.of(scene, 2, 2, 4, 4);
+        assertThat(text).contains("< 0, behind O; t = (−b + √)/2a = 5 ≥ 0: O is inside", "both roots behind O, no hit",
+                "pixel colour: 1 2 3");
+    }
+
+    @Test
+    void aPixelThatHitsNothingTakesTheAmbientColour() {
+        String text = PixelExplanation.of(Scenes.example("input_rtd"), 0, 0, 1920, 1080);
+        assertThat(text).contains("no object is hit", "the scene's ambient colour (127|255|255)", "pixel colour: 127 255 255");
+    }
+
+    @ParameterizedTest(name = "random flat scene {0}")
+    @ValueSource(longs = {1, 2, 3, 4, 5})
+    void randomPixelsOfRandomFlatScenesAgreeWithThePictureAndTheLoopsHit(long seed) {
+        Scene spheres = RandomScenes.generate(seed, 40);
+        Scene mixed = MixedScenes.generate(seed, 40);
+        for (Scene scene : List.of(spheres, mixed)) {
+            FlatShader flat = new FlatShader(scene);
+            int[] picture = ParallelRenderer.render(scene.camera(), Bvh.build(scene)::newTracer, tracer -> flat, 80, 60, 2,
+                    new RenderProgress()).image().rgb();
+            checkRandomPixels(scene, picture, seed);
+        }
+    }
+
+    @ParameterizedTest(name = "random shaded scene {0}")
+    @ValueSource(longs = {11, 12, 13, 14})
+    void randomPixelsOfRandomShadedScenesAgreeWithThePictureAndTheLoopsHit(long seed) {
+        Scene scene = MixedScenes.shaded(MixedScenes.generate(seed, 40), seed);
+        int[] picture = ParallelRenderer.render(scene.camera(), Bvh.build(scene)::newTracer,
+                tracer -> new WhittedShader(scene, tracer), 80, 60, 2, new RenderProgress()).image().rgb();
+        checkRandomPixels(scene, picture, seed);
+    }
+
+    private static void checkRandomPixels(Scene scene, int[] picture, long seed) {
+        Random random = new Random(seed);
+        for (int k = 0; k < 40; k++) {
+            int x = random.nextInt(80);
+            int y = random.nextInt(60);
+            String text = PixelExplanation.of(scene, x, y, 80, 60);
+            Matcher colour = COLOUR.matcher(text);
+            assertThat(colour.find()).as(text).isTrue();
+            int rgb = Integer.parseInt(colour.group(1)) << 16 | Integer.parseInt(colour.group(2)) << 8
+                    | Integer.parseInt(colour.group(3));
+            assertThat(rgb).as("pixel (%d, %d)%n%s", x, y, text).isEqualTo(picture[y * 80 + x]);
+            Hit hit = scene.nearestHit(scene.camera().generateRay(x, y, 80, 60));
+            Matcher nearest = NEAREST.matcher(text);
+            assertThat(nearest.find()).isTrue();
+            assertThat(nearest.group(2) == null ? -1 : Integer.parseInt(nearest.group(2)) - 1)
+                    .isEqualTo(hit == null ? -1 : hit.index());
+            assertThat(text).doesNotContain("please report");
+        }
+    }
+
+    @Test
+    void withLightsItShowsEachLightsTermsTheShadowRayAndTheBouncesAsATree() {
+        Scene scene = MixedScenes.shaded(MixedScenes.generate(3, 40), 3);
+        String text = null;
+        for (int y = 0; y < 60 && (text == null || !text.contains("reflection (×")); y++) {
+            for (int x = 0; x < 80; x++) {
+                String candidate = PixelExplanation.of(scene, x, y, 80, 60);
+                if (candidate.contains("reflection (×")) {
+                    text = candidate;
+                    break;
+                }
+            }
+        }
+        assertThat(text).isNotNull().contains("4. Result, shaded", "light 1 at", "shadow ray from over along",
+                "ambient  = ambient·c⊙I = ", "diffuse  = diffuse·c⊙I·(N·L) = ", "specular = specular·I·(Rl·E)^shininess = ",
+                "5 bounces left", "4 bounces left");
+        int camera = indentOf(text, "5 bounces left");
+        assertThat(indentOf(text, "4 bounces left")).isGreaterThan(camera);
+    }
+
+    private static int indentOf(String text, String part) {
+        int at = text.indexOf(part);
+        int lineStart = text.lastIndexOf('\n', at) + 1;
+        int indent = 0;
+        while (text.charAt(lineStart + indent) == ' ') {
+            indent++;
+        }
+        return indent;
+    }
+}

@@ -1,0 +1,137 @@
+package rtd.pov;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Box;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.geometry.Plane;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+import rtd.image.Color;
+import rtd.image.Rgb;
+import rtd.math.Vector3f;
+import rtd.scene.Light;
+import rtd.scene.Scene;
+import rtd.shade.WhittedShader;
+import rtd.render.LinearTracer;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.testing.ImageComparison;
+import rtd.testing.MixedScenes;
+import rtd.testing.RandomScenes;
+import rtd.testing.Renders;
+import rtd.testing.Scenes;
+
+@DisplayName("The POV-Ray export")
+class PovSceneTest {
+
+    @TempDir
+    Path dir;
+
+    private BufferedImage povRay(Scene scene, int w, int h) throws Exception {
+        Files.writeString(dir.resolve("scene.pov"), PovScene.of(scene, w, h, "scene.pov"));
+        return PovRay.render(dir, "scene.pov", w, h);
+    }
+
+    private static BufferedImage rtd(Scene scene, int w, int h) {
+        return Renders.parallel(scene, w, h, 2, true).image().toBufferedImage();
+    }
+
+    @Test
+    void startsWithThePovrayCommandThatRendersItAtRtdsSize() {
+        String pov = PovScene.of(Scenes.example("input_rtd"), 1920, 1080, "paper.pov");
+        assertThat(pov.lines().findFirst()).hasValueSatisfying(line -> assertThat(line).startsWith("//"));
+        assertThat(pov).contains("povray +Ipaper.pov +Opaper-pov.png +W1920 +H1080 +FN -A -D File_Gamma=1.0",
+                "assumed_gamma 1.0", "ambient_light rgb <1, 1, 1>", "finish { ambient 1 diffuse 0 }", "orthographic",
+                "sphere { <-10, 1, 5>, 5 pigment { rgb <1, 0, 0> }");
+        assertThat(pov).doesNotContain("light_source");
+    }
+
+    @Test
+    void aShadedSceneGetsLightsFinishesAndTheTraceLevel() {
+        String pov = PovScene.of(shadedScene(), 64, 48, "s.pov");
+        assertThat(pov).contains("light_source { <-6, 8, 9>, rgb <1, 1, 1> }", "max_trace_level 6 adc_bailout 0",
+                "phong_size 200", "reflection { 0.4 }", "ambient_light rgb <1.3137255, 1.3137255, 1.3137255>",
+                "perspective");
+    }
+
+    @Test
+    void thePapersExampleDrawsTheSamePictureInPovRay() throws Exception {
+        PovRay.assumeInstalled();
+        Scene scene = Scenes.example("input_rtd");
+        assertSameFlatPicture(rtd(scene, 1920, 1080), povRay(scene, 1920, 1080));
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {1, 2, 3})
+    void randomFlatScenesOfEveryKindOfObjectAndBothCamerasDrawTheSamePicture(long seed) throws Exception {
+        PovRay.assumeInstalled();
+        for (Scene scene : List.of(MixedScenes.generate(seed, 40), RandomScenes.generate(seed, 40))) {
+            assertSameFlatPicture(rtd(scene, 160, 120), povRay(scene, 160, 120));
+            assertSameFlatPicture(rtd(scene, 161, 121), povRay(scene, 161, 121)); // odd sizes: no half-pixel shift
+        }
+    }
+
+    private static void assertSameFlatPicture(BufferedImage rtd, BufferedImage pov) {
+        ImageComparison.Result result = ImageComparison.EDGE_TOLERANT.compare(rtd, pov);
+        assertThat(result.matches()).as(result.summary()).isTrue();
+    }
+
+    /**
+     * Shaded, opaque, with mirrors: at most 2 % of the pixels may differ by more than 2 levels in
+     * a channel (shadow and silhouette edges, and POV-Ray aiming shadow rays from P itself).
+     */
+    @Test
+    void aShadedSceneWithMirrorsDrawsNearlyTheSamePicture() throws Exception {
+        PovRay.assumeInstalled();
+        Scene scene = shadedScene();
+        int w = 160;
+        int h = 120;
+        BufferedImage rtd = ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene),
+                tracer -> new WhittedShader(scene, tracer), w, h, 2, new RenderProgress()).image().toBufferedImage();
+        BufferedImage pov = povRay(scene, w, h);
+        int far = 0;
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                far += differ(rtd.getRGB(x, y), pov.getRGB(x, y)) > 2 ? 1 : 0;
+            }
+        }
+        assertThat(far).as("pixels more than 2 levels apart").isLessThanOrEqualTo(w * h / 50);
+    }
+
+    private static int differ(int a, int b) {
+        int most = 0;
+        for (int shift = 0; shift < 24; shift += 8) {
+            most = Math.max(most, Math.abs((a >> shift & 0xFF) - (b >> shift & 0xFF)));
+        }
+        return most;
+    }
+
+    private static Scene shadedScene() {
+        Material matt = Material.DEFAULT;
+        Material mirror = new Material(0.1f, 0.6f, 0.9f, 200, 0.4f, 0, 1);
+        List<IGeometry> objects = new ArrayList<>();
+        objects.add(new Plane(new Vector3f(0, -1, 0), new Vector3f(0, 1, 0), new Color(200, 200, 180), matt));
+        objects.add(new Sphere(new Vector3f(-1.2f, 0, 0), 1, new Color(220, 40, 40), mirror));
+        objects.add(new Sphere(new Vector3f(1.3f, -0.3f, 0.8f), 0.7f, new Color(40, 200, 60), matt));
+        objects.add(Box.between(new Vector3f(1.5f, -1, -2.5f), new Vector3f(2.8f, 0.6f, -1.2f), new Color(60, 80, 230), matt));
+        objects.add(new Triangle(new Vector3f(-3, -1, -2), new Vector3f(-1.5f, 2, -2.5f), new Vector3f(0, -1, -3),
+                new Color(230, 200, 40), matt));
+        List<Light> lights = List.of(new Light(new Vector3f(-6, 8, 9), new Rgb(1, 1, 1)),
+                new Light(new Vector3f(6, 4, 6), Rgb.of(new Color(80, 80, 80))));
+        return new Scene(new Color(30, 30, 50), new PerspectiveCamera(new Vector3f(0, 1.5f, 7), new Vector3f(0, -0.2f, -1), 60),
+                objects, lights);
+    }
+}
