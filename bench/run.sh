@@ -21,6 +21,10 @@ mkdir -p bench/scenes bench/out
 for n in $SIZES; do
   [ -f "bench/scenes/spheres_$n.txt" ] ||
     java -cp bench/target/benchmarks.jar rtd.bench.SceneGenerator "$n" 42 "bench/scenes/spheres_$n.txt"
+  # POV-Ray's twin, as rtd itself writes it (--export-pov; at the same size, for the camera's half-pixel shift)
+  [ -f "bench/scenes/spheres_$n.export.pov" ] ||
+    java -jar target/rtd.jar "bench/scenes/spheres_$n.txt" --export-pov "bench/scenes/spheres_$n.export.pov" \
+      -o bench/out/export.png >/dev/null 2>&1
 done
 
 # One run: prints "seconds peak_kb render_seconds" (render_seconds from --stats, or "-").
@@ -57,7 +61,7 @@ for n in $SIZES; do
   fi
   report "$n" "rtd --accel bvh" "$(median_of_runs java -jar target/rtd.jar "$scene" -o bench/out/bvh.png --accel bvh --stats)"
   if command -v povray >/dev/null; then
-    report "$n" "POV-Ray 3.7" "$(median_of_runs povray "+I${scene%.txt}.pov" +Obench/out/povray.png +W1920 +H1080 -D -A +FN File_Gamma=1.0 -GA)"
+    report "$n" "POV-Ray 3.7" "$(median_of_runs povray "+I${scene%.txt}.export.pov" +Obench/out/povray.png +W1920 +H1080 -D -A +FN File_Gamma=1.0 -GA)"
   fi
 done
 

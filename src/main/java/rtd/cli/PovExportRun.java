@@ -6,6 +6,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.util.concurrent.ThreadLocalRandom;
 import rtd.pov.PovScene;
 import rtd.scene.Scene;
 
@@ -31,9 +33,12 @@ final class PovExportRun {
         }
         try {
             Path folder = file.toAbsolutePath().getParent();
-            Path temporary = Files.createTempFile(folder, "." + name + ".", ".tmp");
+            // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
+            Path temporary = folder.resolve("." + name + "." + Long.toHexString(ThreadLocalRandom.current().nextLong())
+                    + ".tmp");
             try {
-                Files.writeString(temporary, text, StandardCharsets.UTF_8);
+                Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
+                        StandardOpenOption.WRITE);
                 Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
             } finally {
                 Files.deleteIfExists(temporary);

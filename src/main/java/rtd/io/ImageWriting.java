@@ -11,6 +11,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.function.DoubleConsumer;
 import javax.imageio.IIOException;
 import javax.imageio.IIOImage;
+import javax.imageio.ImageWriteParam;
 import javax.imageio.ImageWriter;
 import javax.imageio.event.IIOWriteProgressListener;
 import javax.imageio.stream.ImageOutputStream;
@@ -64,7 +65,7 @@ public final class ImageWriting {
         try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {
             writer.setOutput(stream);
             writer.addIIOWriteProgressListener(new Progress(progress));
-            writer.write(null, new IIOImage(asImage(picture), null, null), writer.getDefaultWriteParam());
+            writer.write(null, new IIOImage(asImage(picture), null, null), parameters(writer, format));
             stream.flush();
         } catch (IIOException e) {
             // javax.imageio wraps a failed write ("I/O error writing PNG file!"); the system's reason
@@ -74,6 +75,21 @@ public final class ImageWriting {
             writer.dispose();
         }
         out.flush();
+    }
+
+    /**
+     * The writer's defaults, but for PNG a faster deflate: quality 0.9 is a low compression level,
+     * still lossless. On the paper's example it writes in half the time (about 0.1 instead of 0.2 s,
+     * measured) a file of 37 instead of 14 KB; rtd's pictures are mostly flat areas of colour, which
+     * any level compresses well.
+     */
+    private static ImageWriteParam parameters(ImageWriter writer, ImageFormat format) {
+        ImageWriteParam parameters = writer.getDefaultWriteParam();
+        if (format.equals(ImageFormat.PNG) && parameters.canWriteCompressed()) {
+            parameters.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
+            parameters.setCompressionQuality(0.9f);
+        }
+        return parameters;
     }
 
     /** The picture as an RGB image that shares its array. */

@@ -10,14 +10,17 @@ import java.util.SplittableRandom;
 
 /**
  * Writes a benchmark scene of N random spheres, the same for the same seed, as an rtd scene
- * file and, beside it, the same scene for POV-Ray 3.7.
+ * file. Its twin for POV-Ray 3.7 is written by rtd itself ({@code --export-pov}, see bench/run.sh).
  *
  * <p>The camera is the paper's: at (0|0|20), looking along −z, 50 pixels per unit, so that the
  * 1920 × 1080 picture shows x in ±19.2 and y in ±10.8. The spheres fill that view and z in
  * ±10; their radius shrinks as N grows (0.5 to 1.5 times 3/∛N), so that every scene is
  * about equally full.
  *
- * <p>Usage: {@code java -cp bench/target/benchmarks.jar rtd.bench.SceneGenerator N SEED OUT.txt}
+ * <p>Usage: {@code java -cp bench/target/benchmarks.jar rtd.bench.SceneGenerator N SEED OUT.txt [shaded]}.
+ * With {@code shaded} it writes the shaded benchmark instead: the same spheres above a mirroring
+ * floor, two lights, a perspective camera, and no POV-Ray twin (make that with rtd's
+ * {@code --export-pov}).
  */
 public final class SceneGenerator {
 
@@ -32,7 +35,11 @@ public final class SceneGenerator {
         int count = Integer.parseInt(args[0]);
         long seed = Long.parseLong(args[1]);
         Path out = Path.of(args[2]);
-        write(count, seed, out, Path.of(out.toString().replaceAll("\\.txt$", "") + ".pov"));
+        if (args.length > 3 && args[3].equals("shaded")) {
+            writeShaded(count, seed, out);
+            return;
+        }
+        write(count, seed, out);
     }
 
     /** One sphere: centre, radius and colour. */
@@ -61,25 +68,32 @@ public final class SceneGenerator {
         return (float) (Math.round(value * (double) factor) / (double) factor);
     }
 
-    static void write(int count, long seed, Path rtdFile, Path povFile) throws IOException {
-        Ball[] balls = balls(count, seed);
-        try (BufferedWriter rtd = Files.newBufferedWriter(rtdFile, StandardCharsets.UTF_8);
-                BufferedWriter pov = Files.newBufferedWriter(povFile, StandardCharsets.UTF_8)) {
+    static void write(int count, long seed, Path rtdFile) throws IOException {
+        try (BufferedWriter rtd = Files.newBufferedWriter(rtdFile, StandardCharsets.UTF_8)) {
             rtd.write("// " + count + " random spheres, seed " + seed + " (bench/run.sh)\n");
             rtd.write("ambient:(16|18|28)\n");
             rtd.write("orthographic_camera:(0|0|20):(0|0|-1):(50)\n");
-            pov.write("// " + count + " random spheres, seed " + seed + ": the rtd scene of the same name\n");
-            pov.write("#version 3.7;\nglobal_settings { assumed_gamma 1.0 ambient_light 1 }\n");
-            pov.write("background { rgb <16/255, 18/255, 28/255> }\n");
-            // POV-Ray is left-handed: its z runs into the picture, so rtd's z changes sign.
-            pov.write("camera { orthographic location <0, 0, -20> direction <0, 0, 1> right x*38.4 up y*21.6 }\n");
-            pov.write("#default { finish { ambient 1 diffuse 0 } }\n");
-            for (Ball b : balls) {
+            for (Ball b : balls(count, seed)) {
                 rtd.write(String.format(Locale.ROOT, "sphere:(%s|%s|%s):(%s):(%d|%d|%d)%n",
                         num(b.x()), num(b.y()), num(b.z()), num(b.r()), b.red(), b.green(), b.blue()));
-                pov.write(String.format(Locale.ROOT, "sphere { <%s, %s, %s>, %s pigment { rgb <%s, %s, %s> } }%n",
-                        num(b.x()), num(b.y()), num(-b.z()), num(b.r()),
-                        num(b.red() / 255f), num(b.green() / 255f), num(b.blue() / 255f)));
+            }
+        }
+    }
+
+    /** The spheres above a floor that mirrors them, lit by two lights, seen from above and in front. */
+    static void writeShaded(int count, long seed, Path rtdFile) throws IOException {
+        try (BufferedWriter rtd = Files.newBufferedWriter(rtdFile, StandardCharsets.UTF_8)) {
+            rtd.write("// " + count + " random spheres on a mirroring floor, two lights, seed " + seed + " (bench/beyond.sh)\n");
+            rtd.write("ambient:(16|18|28)\n");
+            rtd.write("perspective_camera:(0|22|42):(0|-0.55|-1):(62)\n");
+            rtd.write("material:(floor):(ambient=0.1|diffuse=0.6|specular=0.3|shininess=50|reflective=0.5)\n");
+            rtd.write("material:(ball):(ambient=0.1|diffuse=0.8|specular=0.6|shininess=120)\n");
+            rtd.write("plane:(0|-11|0):(0|1|0):(200|200|200):(floor)\n");
+            rtd.write("light:(-30|40|30):(200|190|170)\n");
+            rtd.write("light:(35|25|10):(90|110|160)\n");
+            for (Ball b : balls(count, seed)) {
+                rtd.write(String.format(Locale.ROOT, "sphere:(%s|%s|%s):(%s):(%d|%d|%d):(ball)%n",
+                        num(b.x()), num(b.y()), num(b.z()), num(b.r()), b.red(), b.green(), b.blue()));
             }
         }
     }
