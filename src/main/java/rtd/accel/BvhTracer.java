@@ -36,6 +36,8 @@ public final class BvhTracer implements Tracer {
     private final float[] stackExits;
     private long rays;
     private long nodesVisited;
+    /** Whether the walk may stop at the first hit it finds (a shadow ray's question). */
+    private boolean anyHitWillDo;
 
     BvhTracer(Bvh bvh) {
         this.bvh = bvh;
@@ -55,6 +57,26 @@ public final class BvhTracer implements Tracer {
         }
         IGeometry object = bvh.objects.get(best);
         return new Hit(object, best, hit.bestT(), hit.bestDistance(), ray.pointAt(hit.bestT()));
+    }
+
+    /**
+     * Whether the ray hits anything nearer than {@code distance}: the walk starts as if it had a
+     * hit at that distance, so that it skips every box beyond, and stops at the first hit it finds.
+     */
+    @Override
+    public boolean blocked(Ray ray, float distance) {
+        rays++;
+        Vector3f origin = ray.origin();
+        Vector3f direction = ray.direction();
+        hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+        hit.limitTo(distance);
+        hit.testUnbounded();
+        if (hit.best() < 0) {
+            anyHitWillDo = true;
+            walkTree();
+            anyHitWillDo = false;
+        }
+        return hit.best() >= 0;
     }
 
     private void trace(Vector3f origin, Vector3f direction) {
@@ -127,6 +149,9 @@ public final class BvhTracer implements Tracer {
             int first = nodes[2 * node];
             if (nodes[2 * node + 1] != Bvh.INNER) {
                 hit.testLeaf(node);
+                if (anyHitWillDo && hit.best() >= 0) {
+                    return;
+                }
             } else {
                 nodesVisited += 2;
                 float grow = hit.growth(node, exit); // the node's rounding is its children's largest

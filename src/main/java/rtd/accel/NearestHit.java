@@ -85,6 +85,16 @@ final class NearestHit {
     }
 
     /**
+     * Looks only for hits nearer than {@code distance} from the origin: boxes the ray enters
+     * beyond it are skipped, as they are beyond a nearest hit.
+     */
+    void limitTo(float distance) {
+        float t = distance / length;
+        bestDistance = distance;
+        skipBeyond = t + t * SKIP_MARGIN + margin;
+    }
+
+    /**
      * A t beyond which no object of the tree can report a hit: a hit at t lies in the root's
      * box grown by {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from
      * the origin (summing over the axes), and {@code t·|R|} from it.

@@ -38,6 +38,16 @@ public interface Tracer {
         return work().intersectionTests();
     }
 
+    /**
+     * Whether the ray hits any object nearer than {@code distance} ({@code |P − O| < distance}):
+     * the question of a shadow ray. The answer is the same as {@code nearestHit}'s distance
+     * compared with {@code distance}; a tracer may find it sooner, at the first such hit.
+     */
+    default boolean blocked(Ray ray, float distance) {
+        Hit hit = nearestHit(ray);
+        return hit != null && hit.distance() < distance;
+    }
+
     /** The work this tracer has done so far. */
     WorkCount work();
 }

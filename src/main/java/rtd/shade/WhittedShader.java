@@ -105,9 +105,13 @@ public final class WhittedShader implements Shader {
         shadowRays++;
         Vector3f toLight = light.position().subtract(point);
         Ray shadowRay = new Ray(point, toLight);
-        Hit blocker = tracer.nearestHit(shadowRay);
-        observer.shadowRay(light, shadowRay, blocker, toLight.magnitude());
-        return blocker != null && blocker.distance() < toLight.magnitude();
+        float distance = toLight.magnitude();
+        if (observer == ShadingObserver.NONE) {
+            return tracer.blocked(shadowRay, distance); // any object before the light will do
+        }
+        Hit blocker = tracer.nearestHit(shadowRay); // an explanation names the nearest
+        observer.shadowRay(light, shadowRay, blocker, distance);
+        return blocker != null && blocker.distance() < distance;
     }
 
     /** Step 4: {@code reflective · shade(ray from over along R − 2(R·N)N)}; black for a matt surface or the last bounce. */

@@ -76,4 +76,28 @@ class BvhEqualsLoopTest {
             }
         }
     }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {31, 32, 33, 34})
+    void forShadowRaysThatAskOnlyWhetherAnythingIsNearerThanTheLight(long seed) {
+        Scene scene = MixedScenes.generate(seed, 50 + (int) (seed * 53 % 300));
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        Random random = new Random(seed);
+        int blocked = 0;
+        for (int r = 0; r < 20_000; r++) {
+            Ray ray = MixedScenes.ray(random, scene);
+            Hit nearest = scene.nearestHit(ray);
+            float limit = nearest == null || random.nextInt(4) == 0
+                    ? (float) Math.pow(10, random.nextInt(8) - 2)
+                    : switch (random.nextInt(3)) {
+                        case 0 -> nearest.distance(); // a light exactly at the hit: not nearer, so not blocked
+                        case 1 -> Math.nextUp(nearest.distance());
+                        default -> nearest.distance() * (0.5f + random.nextFloat());
+                    };
+            boolean expected = nearest != null && nearest.distance() < limit;
+            assertThat(tracer.blocked(ray, limit)).as("ray %d %s, limit %s", r, ray, limit).isEqualTo(expected);
+            blocked += expected ? 1 : 0;
+        }
+        assertThat(blocked).as("rays blocked").isGreaterThan(2_000).isLessThan(18_000);
+    }
 }
