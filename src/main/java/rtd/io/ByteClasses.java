@@ -1,13 +1,26 @@
 package rtd.io;
 
-/** Which bytes of a scene file are blanks, letters of a keyword, or end a number. */
+/** Which bytes of a scene file are blanks, letters of a keyword, end a number, or end a line. */
 final class ByteClasses {
 
     private ByteClasses() {
     }
 
+    /** A blank, a carriage return among them: what an OBJ line and a number token end at. */
     static boolean isBlank(byte b) {
         return b == ' ' || b == '\t' || b == '\r' || b == '\f' || b == 0x0B;
+    }
+
+    /**
+     * A blank within a line of a scene file: not a carriage return, which ends a line there,
+     * alone (old Mac files) or before a line feed (Windows files).
+     */
+    static boolean isSpace(byte b) {
+        return b == ' ' || b == '\t' || b == '\f' || b == 0x0B;
+    }
+
+    static boolean isLineBreak(byte b) {
+        return b == '\n' || b == '\r';
     }
 
     static boolean isWordByte(byte b) {
@@ -16,5 +29,13 @@ final class ByteClasses {
 
     static boolean isDelimiter(byte b) {
         return b == '|' || b == ')' || b == '(' || b == ':' || b == '\n' || isBlank(b);
+    }
+
+    /**
+     * Whether a line ends just after {@code bytes[i]}: a line feed, or a carriage return not
+     * followed by a line feed (a CR LF pair is one line break, which ends after its LF).
+     */
+    static boolean endsLine(byte[] bytes, int i) {
+        return bytes[i] == '\n' || bytes[i] == '\r' && (i + 1 == bytes.length || bytes[i + 1] != '\n');
     }
 }

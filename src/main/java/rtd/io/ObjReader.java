@@ -131,8 +131,8 @@ final class ObjReader {
             try {
                 value = FloatParser.parse(bytes, start, pos);
             } catch (NumberFormatException e) {
-                throw error(start, "expected a number, found '" + source.text(start, pos) + "'",
-                        "numbers are written like 3, -0.5, .5, 1. or 2e3");
+                String token = source.text(start, pos);
+                throw error(start, "expected a number, found '" + token + "'", Hints.forObjNumber(token));
             }
             if (!Float.isFinite(value)) {
                 String written = source.text(start, pos);

@@ -1,11 +1,5 @@
 package rtd.io;
 
-import java.nio.ByteBuffer;
-import java.nio.CharBuffer;
-import java.nio.charset.CharsetDecoder;
-import java.nio.charset.CoderResult;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
@@ -27,8 +21,9 @@ import rtd.scene.Scene;
  *
  * <p>One statement a line: {@code keyword:(group):(group)…}, the statements being those of the
  * {@link Grammar}. {@code //} starts a comment; blank lines, spaces and tabs around any token,
- * Windows line ends and a UTF-8 byte-order mark are all fine. Every mistake is reported with
- * its line and column, up to {@value #MAX_ERRORS}, so that one run shows them all.
+ * Windows and old Mac line ends (CR LF, a CR alone) and a UTF-8 byte-order mark are all fine.
+ * Every mistake is reported with its line and column, up to {@value #MAX_ERRORS}, so that one run
+ * shows them all.
  *
  * <p>A large file is cut at line breaks into parts that {@link StatementReader}s read in
  * parallel; the parts are joined in file order, so the scene and the messages are the same
@@ -58,9 +53,9 @@ final class SceneParser {
         byte[] bytes = source.bytes();
         int start = hasByteOrderMark(bytes) ? 3 : 0;
         int[] cuts = cuts(bytes, start, partSize);
-        int bad = firstNonTextByte(bytes, cuts);
+        int bad = NotText.firstBadByte(bytes, cuts);
         if (bad >= 0) {
-            throw new SceneException(List.of(notText(source, bad)), false);
+            throw new SceneException(List.of(NotText.error(source, start, bad)), false);
         }
         int[] firstLines = firstLines(bytes, cuts);
         // The first part, alone and first: it holds the file's first lines, most often its
@@ -70,6 +65,12 @@ final class SceneParser {
         parts.add(readPart(source, cuts, firstLines, 0));
         if (!onePart(cuts)) {
             parts.addAll(IntStream.range(1, cuts.length - 1).parallel().mapToObj(k -> readPart(source, cuts, firstLines, k)).toList());
+        }
+        if (aCommentSpansACut(parts)) {
+            // A part that starts inside a /* comment took its lines for statements. Such a file
+            // has a mistake (the /*), so its speed matters less than its messages being those
+            // of one part: it is read again in one go.
+            parts = List.of(readPart(source, new int[] {start, bytes.length}, new int[] {1}, 0));
         }
         return join(source, parts);
     }
@@ -82,6 +83,15 @@ final class SceneParser {
         return cuts.length == 2;
     }
 
+    private static boolean aCommentSpansACut(List<ScenePart> parts) {
+        for (int k = 0; k < parts.size() - 1; k++) {
+            if (parts.get(k).endsInBlockComment) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     private static ScenePart readPart(SourceText source, int[] cuts, int[] firstLines, int k) {
         ScenePart part = new ScenePart();
         new StatementReader(source, cuts[k], cuts[k + 1], firstLines[k], part).readAll();
@@ -90,14 +100,17 @@ final class SceneParser {
 
     // ---- cutting the file into parts ---------------------------------------------------
 
-    /** Where the parts start, each just after a line break, and the end of the file last. */
+    /**
+     * Where the parts start, each just after a line break (never between the CR and the LF of
+     * one), and the end of the file last.
+     */
     private static int[] cuts(byte[] bytes, int start, int partSize) {
         int count = Math.max(1, (bytes.length - start) / partSize);
         List<Integer> cuts = new ArrayList<>();
         cuts.add(start);
         for (int k = 1; k < count; k++) {
             int cut = start + (int) ((long) (bytes.length - start) * k / count);
-            while (cut < bytes.length && bytes[cut - 1] != '\n') {
+            while (cut < bytes.length && !ByteClasses.endsLine(bytes, cut - 1)) {
                 cut++;
             }
             if (cut > cuts.get(cuts.size() - 1) && cut < bytes.length) {
@@ -120,7 +133,7 @@ final class SceneParser {
         int[] breaks = IntStream.range(0, cuts.length - 1).parallel().map(k -> {
             int n = 0;
             for (int i = cuts[k]; i < cuts[k + 1]; i++) {
-                n += bytes[i] == '\n' ? 1 : 0;
+                n += bytes[i] == '\n' ? 1 : bytes[i] == '\r' && ByteClasses.endsLine(bytes, i) ? 1 : 0;
             }
             return n;
         }).toArray();
@@ -142,6 +155,7 @@ final class SceneParser {
         Set<String> broken = new HashSet<>();
         List<Light> lights = new ArrayList<>();
         int statements = 0;
+        addLineNumbers(parts, errors);
         for (ScenePart part : parts) {
             lights.addAll(part.lights);
             errors.addAll(part.errors);
@@ -175,6 +189,20 @@ final class SceneParser {
         }
         Color ambient = ambients.isEmpty() ? Color.BLACK : ambients.get(0).value();
         return new Scene(ambient, cameras.get(0).value(), objects, lights);
+    }
+
+    /** The lines that start with a line number, as one mistake at the first of them. */
+    private static void addLineNumbers(List<ScenePart> parts, List<ScenePart.Found> errors) {
+        SceneError first = null;
+        int count = 0;
+        for (ScenePart part : parts) {
+            first = first != null ? first : part.firstLineNumber;
+            count += part.lineNumbers;
+        }
+        if (first != null) {
+            String more = count == 1 ? "" : count == 2 ? ", as does 1 more line" : ", as do " + (count - 1) + " more lines";
+            errors.add(found(again(first, first.message() + more, first.help())));
+        }
     }
 
     /** The materials by name; a name defined again is an error at the second definition. */
@@ -258,57 +286,9 @@ final class SceneParser {
         return new SceneError(source.name(), 1, 1, message, source.lineText(start), help);
     }
 
-    // ---- is it text at all? -----------------------------------------------------------------
+    // ---- the byte-order mark ------------------------------------------------------------------
 
     private static boolean hasByteOrderMark(byte[] bytes) {
         return bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF;
-    }
-
-    /**
-     * The offset of the first NUL byte or invalid UTF-8 sequence, or −1, checked part by part
-     * in parallel. A part starts after a line break, so no UTF-8 sequence spans two parts.
-     */
-    private static int firstNonTextByte(byte[] bytes, int[] cuts) {
-        if (onePart(cuts)) {
-            return firstNonTextByte(bytes, cuts[0], cuts[1]);
-        }
-        return IntStream.range(0, cuts.length - 1).parallel()
-                .map(k -> firstNonTextByte(bytes, cuts[k], cuts[k + 1]))
-                .filter(bad -> bad >= 0)
-                .findFirst().orElse(-1);
-    }
-
-    private static int firstNonTextByte(byte[] bytes, int from, int to) {
-        boolean ascii = true;
-        for (int i = from; i < to; i++) {
-            if (bytes[i] == 0) {
-                return i;
-            }
-            ascii &= bytes[i] > 0;
-        }
-        if (ascii) {
-            return -1;
-        }
-        CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
-                .onMalformedInput(CodingErrorAction.REPORT)
-                .onUnmappableCharacter(CodingErrorAction.REPORT);
-        ByteBuffer in = ByteBuffer.wrap(bytes, from, to - from);
-        CoderResult result = decoder.decode(in, CharBuffer.allocate(to - from), true);
-        return result.isError() ? in.position() : -1;
-    }
-
-    private static SceneError notText(SourceText source, int bad) {
-        byte[] bytes = source.bytes();
-        int line = 1;
-        int lineStart = 0;
-        for (int i = 0; i < bad; i++) {
-            if (bytes[i] == '\n') {
-                line++;
-                lineStart = i + 1;
-            }
-        }
-        String what = bytes[bad] == 0 ? "a NUL byte" : String.format("byte 0x%02X, which is not UTF-8", bytes[bad] & 0xFF);
-        return new SceneError(source.name(), line, source.column(lineStart, bad), "this is not a text file: found " + what,
-                null, "a scene is a text file, such as examples/input_rtd.txt");
     }
 }

@@ -47,10 +47,27 @@ final class ScenePart {
     /** The names of definitions ({@code material:}) that have mistakes: not unknown, only broken. */
     final Set<String> brokenDefinitions = new HashSet<>();
     int statementCount;
+    /**
+     * The first line that starts with a line number, as the paper's listing does, and how many
+     * do: they are one mistake (the listing was pasted with its numbers), reported once when the
+     * parts are joined, and do not count towards {@link SceneParser#MAX_ERRORS} while reading.
+     */
+    SceneError firstLineNumber;
+    int lineNumbers;
+    /** Whether the part's last line is inside a {@code /*} comment that goes on in the next part. */
+    boolean endsInBlockComment;
 
     /** Keeps an object that names a material, at its place among the part's objects. */
     void addPending(GroupValues values) {
         pending.add(new Pending(objects.size(), values));
+    }
+
+    /** Notes a line that starts with a line number; {@code error} is the mistake if it is the first. */
+    void noteLineNumber(SceneError error) {
+        if (firstLineNumber == null) {
+            firstLineNumber = error;
+        }
+        lineNumbers++;
     }
 
     /** Keeps the errors of a statement, ordered by its place. */

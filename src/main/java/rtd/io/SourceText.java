@@ -22,11 +22,8 @@ record SourceText(String name, byte[] bytes, Path folder) {
     /** The text of the line that starts at byte {@code lineStart}, without its line break. */
     String lineText(int lineStart) {
         int end = lineStart;
-        while (end < bytes.length && bytes[end] != '\n') {
-            end++;
-        }
-        if (end > lineStart && bytes[end - 1] == '\r') {
-            end--;
+        while (end < bytes.length && !ByteClasses.isLineBreak(bytes[end])) {
+            end++; // a line ends at LF, CR LF or a CR alone (old Mac files)
         }
         return new String(bytes, lineStart, end - lineStart, StandardCharsets.UTF_8);
     }
@@ -60,11 +57,14 @@ record SourceText(String name, byte[] bytes, Path folder) {
         if (offset >= bytes.length) {
             return offset > lineStart ? "the end of the line" : "the end of the file";
         }
-        if (bytes[offset] == '\n' || bytes[offset] == '\r' && offset + 1 < bytes.length && bytes[offset + 1] == '\n') {
+        if (ByteClasses.isLineBreak(bytes[offset])) {
             return "the end of the line";
         }
         if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '/') {
             return "a comment";
+        }
+        if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '*') {
+            return "'/*'";
         }
         int after = offset + 1;
         if (ByteClasses.isWordByte(bytes[offset])) {
@@ -76,8 +76,21 @@ record SourceText(String name, byte[] bytes, Path folder) {
             after++; // the rest of a character of several bytes
         }
         int codePoint = text(offset, after).codePointAt(0);
-        return Character.isISOControl(codePoint)
-                ? String.format("the control character U+%04X", codePoint)
-                : "'" + text(offset, after) + "'";
+        if (Character.isISOControl(codePoint)) {
+            return String.format("the control character U+%04X", codePoint);
+        }
+        return Hints.isInvisible(codePoint) ? Hints.nameOf(codePoint) : "'" + text(offset, after) + "'";
+    }
+
+    /** The character that starts at {@code offset}, or −1 at the end of the file. */
+    int codePointAt(int offset) {
+        if (offset >= bytes.length) {
+            return -1;
+        }
+        int after = offset + 1;
+        while (after < bytes.length && (bytes[after] & 0xC0) == 0x80) {
+            after++;
+        }
+        return new String(bytes, offset, after - offset, StandardCharsets.UTF_8).codePointAt(0);
     }
 }

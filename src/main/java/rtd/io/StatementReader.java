@@ -36,6 +36,11 @@ final class StatementReader {
     private Statement current;
     /** Where the number that {@link #readNumber} read last starts. */
     private int tokenStart;
+    /**
+     * Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once,
+     * at its start: the lines up to its end are skipped.
+     */
+    private boolean inBlockComment;
 
     /**
      * A reader for {@code source.bytes()[start, end)}, which begins a line (numbered
@@ -63,6 +68,7 @@ final class StatementReader {
             }
             skipToNextLine();
         }
+        part.endsInBlockComment = inBlockComment;
     }
 
     // ---- one statement ------------------------------------------------------------------
@@ -70,19 +76,15 @@ final class StatementReader {
     private void readStatement() throws StatementError {
         current = null;
         skipBlanks();
+        if (inBlockComment && !leaveBlockComment()) {
+            return; // a line inside a /* */ comment, which is reported at its start
+        }
         if (atEndOfStatement()) {
             return; // a blank line or a comment
         }
-        statementStart = pos;
-        while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
-            pos++;
-        }
-        if (pos == statementStart) {
-            throw error(pos, "expected a statement (" + Grammar.keywordList() + "), found " + source.describe(pos, lineStart), null);
-        }
-        Statement statement = Grammar.find(bytes, statementStart, pos);
+        Statement statement = readKeyword(false);
         if (statement == null) {
-            throw unknownKeyword(statementStart);
+            return; // a line number and nothing else
         }
         part.statementCount++;
         current = statement;
@@ -102,8 +104,7 @@ final class StatementReader {
                     "write it as " + statement.usage());
         }
         if (!atEndOfStatement()) {
-            throw error(pos, "expected the end of the line after the statement, found " + source.describe(pos, lineStart),
-                    "a comment after a statement starts with //");
+            throw textAfterStatement();
         }
         if (namesMaterial) {
             part.addPending(values.copy());
@@ -124,13 +125,123 @@ final class StatementReader {
         }
     }
 
+    /**
+     * Reads the keyword at {@link #pos}: the statement it names, or null if the line holds only a
+     * line number. A line number, as in the paper's listing, is noted in the part (which reports
+     * them all as one mistake) and the statement after it is read as if it were not there.
+     */
+    private Statement readKeyword(boolean afterLineNumber) throws StatementError {
+        statementStart = pos;
+        while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
+            pos++;
+        }
+        if (pos == statementStart) {
+            throw noStatement();
+        }
+        Statement statement = Grammar.find(bytes, statementStart, pos);
+        if (statement != null) {
+            return statement;
+        }
+        if (afterLineNumber || !atLineNumber()) {
+            throw unknownKeyword(statementStart);
+        }
+        part.noteLineNumber(error(statementStart, "the line starts with a line number, '" + source.text(statementStart, pos)
+                + "'", Hints.LINE_NUMBERS).place());
+        skipBlanks();
+        return atEndOfStatement() ? null : readKeyword(true);
+    }
+
+    /** Whether the word from {@link #statementStart} to {@link #pos} is a line number: digits, then a blank or the end. */
+    private boolean atLineNumber() {
+        for (int i = statementStart; i < pos; i++) {
+            if (bytes[i] < '0' || bytes[i] > '9') {
+                return false;
+            }
+        }
+        return atEndOfStatement() || ByteClasses.isSpace(bytes[pos]);
+    }
+
     private StatementError unknownKeyword(int keywordStart) {
         String word = source.text(keywordStart, pos);
-        String nearest = Suggestions.nearestKeyword(word);
-        String help = nearest != null
-                ? "did you mean '" + nearest + "'?"
-                : "a statement starts with " + Grammar.keywordList();
-        return error(keywordStart, "unknown statement '" + word + "'", help);
+        return error(keywordStart, "unknown statement '" + word + "'", Suggestions.keywordHelp(word));
+    }
+
+    /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
+    private StatementError noStatement() {
+        String help = null;
+        if (at('#') || atBlockComment()) {
+            help = Hints.COMMENTS;
+            openBlockComment();
+        }
+        return error(pos, "expected a statement (" + Grammar.keywordList() + "), found " + source.describe(pos, lineStart), help);
+    }
+
+    /** Text after a whole statement: a comment as other languages write it, a ';', a second statement. */
+    private StatementError textAfterStatement() {
+        String help;
+        if (at('#') || atBlockComment()) {
+            help = Hints.COMMENTS;
+            openBlockComment();
+        } else if (at(';')) {
+            String second = secondStatement(pos + 1);
+            help = second != null ? second : Hints.SEMICOLON;
+        } else {
+            String second = secondStatement(pos);
+            help = second != null ? second : "a comment after a statement starts with //";
+        }
+        return error(pos, "expected the end of the line after the statement, found " + source.describe(pos, lineStart), help);
+    }
+
+    /** The help for a second statement (a keyword, then ':') from {@code from} on, after blanks; or null. */
+    private String secondStatement(int from) {
+        int start = from;
+        while (start < bytes.length && ByteClasses.isSpace(bytes[start])) {
+            start++;
+        }
+        int end = start;
+        while (end < bytes.length && ByteClasses.isWordByte(bytes[end])) {
+            end++;
+        }
+        Statement statement = Grammar.find(bytes, start, end);
+        int after = end;
+        while (after < bytes.length && ByteClasses.isSpace(bytes[after])) {
+            after++;
+        }
+        return statement != null && after < bytes.length && bytes[after] == ':'
+                ? Hints.oneStatementPerLine(statement.keyword()) : null;
+    }
+
+    // ---- comments as other languages write them ---------------------------------------------
+
+    private boolean atBlockComment() {
+        return pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '*';
+    }
+
+    /** At a {@code /*}: if the comment does not end on this line, skips the lines up to its end. */
+    private void openBlockComment() {
+        inBlockComment = atBlockComment() && commentEnd(pos + 2) < 0;
+    }
+
+    /** On a line inside a block comment: whether the comment ends on it; {@link #pos} is then after the end. */
+    private boolean leaveBlockComment() {
+        int after = commentEnd(pos);
+        if (after < 0) {
+            return false;
+        }
+        inBlockComment = false;
+        pos = after;
+        skipBlanks();
+        return true;
+    }
+
+    /** The offset after the first {@code *}{@code /} from {@code from} to the end of its line, or −1. */
+    private int commentEnd(int from) {
+        for (int i = from; i + 1 < end && !ByteClasses.isLineBreak(bytes[i]); i++) {
+            if (bytes[i] == '*' && bytes[i + 1] == '/') {
+                return i + 2;
+            }
+        }
+        return -1;
     }
 
     /** Reads {@code :(…)} into {@link #values}. */
@@ -211,7 +322,7 @@ final class StatementReader {
      */
     private void readPath(Statement statement, Group group) throws StatementError {
         int start = pos;
-        while (pos < bytes.length && bytes[pos] != ')' && bytes[pos] != '\n' && !atNextGroup()) {
+        while (pos < bytes.length && bytes[pos] != ')' && !ByteClasses.isLineBreak(bytes[pos]) && !atNextGroup()) {
             pos++;
         }
         if (!at(')')) {
@@ -305,11 +416,43 @@ final class StatementReader {
         try {
             return FloatParser.parse(bytes, tokenStart, pos);
         } catch (NumberFormatException e) {
-            String token = source.text(tokenStart, pos);
-            throw error(tokenStart, "expected a number, found '" + token + "'", token.contains("\u2212")
-                    ? "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead"
-                    : "numbers are written like 3, -0.5, .5, 1. or 2e3");
+            throw notANumber();
         }
+    }
+
+    /**
+     * The error for the token just read, which is no number: at an invisible character that
+     * starts it or follows a number (which {@link #error} names), else at the token, with a hint.
+     */
+    private StatementError notANumber() {
+        int invisible = firstInvisible(tokenStart, pos);
+        if (invisible == tokenStart) {
+            return error(invisible, "expected a number, found " + source.describe(invisible, lineStart), null);
+        }
+        if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
+            return error(invisible, "expected '|' or ')' after a number, found " + source.describe(invisible, lineStart), null);
+        }
+        String token = source.text(tokenStart, pos);
+        return error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
+    }
+
+    private boolean isNumber(int from, int to) {
+        try {
+            FloatParser.parse(bytes, from, to);
+            return true;
+        } catch (NumberFormatException e) {
+            return false;
+        }
+    }
+
+    /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */
+    private int firstInvisible(int from, int to) {
+        for (int i = from; i < to; i++) {
+            if (bytes[i] < 0 && (bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(source.codePointAt(i))) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /** What a group holds, for messages: "3 numbers (x|y|z)", "a name". */
@@ -336,7 +479,7 @@ final class StatementReader {
             return false;
         }
         int after = pos + 1;
-        while (after < bytes.length && ByteClasses.isBlank(bytes[after])) {
+        while (after < bytes.length && ByteClasses.isSpace(bytes[after])) {
             after++;
         }
         return after < bytes.length && bytes[after] == '(';
@@ -346,34 +489,41 @@ final class StatementReader {
         return pos < bytes.length && bytes[pos] == c;
     }
 
+    /** Skips spaces and tabs, not a carriage return: it ends a line ({@link #skipToNextLine}). */
     private void skipBlanks() {
-        while (pos < bytes.length && ByteClasses.isBlank(bytes[pos])) {
+        while (pos < bytes.length && ByteClasses.isSpace(bytes[pos])) {
             pos++;
         }
     }
 
     private boolean atEndOfStatement() {
-        return pos >= bytes.length || bytes[pos] == '\n' || atComment();
+        return pos >= bytes.length || ByteClasses.isLineBreak(bytes[pos]) || atComment();
     }
 
     private boolean atComment() {
         return pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
     }
 
+    /** Goes past the next line break: LF, CR LF, or a CR alone, as old Mac files end lines. */
     private void skipToNextLine() {
-        while (pos < end && bytes[pos] != '\n') {
+        while (pos < end && !ByteClasses.isLineBreak(bytes[pos])) {
             pos++;
         }
         if (pos < end) {
+            if (bytes[pos] == '\r' && pos + 1 < end && bytes[pos + 1] == '\n') {
+                pos++;
+            }
             pos++;
             line++;
             lineStart = pos;
         }
     }
 
+    /** An error at {@code offset}; at an invisible character, the help says what it is and what to do. */
     private StatementError error(int offset, String message, String help) {
+        int codePoint = offset < bytes.length && bytes[offset] < 0 ? source.codePointAt(offset) : -1;
         return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), help));
+                source.lineText(lineStart), Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));
     }
 
     /** Hands what a statement makes to the part, with the statement's place where a later check needs it. */

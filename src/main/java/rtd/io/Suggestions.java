@@ -1,17 +1,56 @@
 package rtd.io;
 
 import java.util.Collection;
+import java.util.HashMap;
+import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
-/** Finds the word a misspelt one was probably meant to be ("did you mean 'sphere'?"). */
+/**
+ * Finds the word a misspelt one was probably meant to be ("did you mean 'sphere'?"), and the
+ * statements meant by words that share no spelling with them ({@code camera}, {@code kugel}).
+ */
 final class Suggestions {
+
+    /**
+     * Words people write for a statement, in English, in German (the paper's language) and from
+     * other tools, that are too far from its keyword for {@link #nearest} to find it. Looked up
+     * before the spelling: "bg" is two edits from "box", but means the background.
+     */
+    private static final Map<String, List<String>> SYNONYMS = new HashMap<>();
+
+    static {
+        synonyms("camera cam kamera view eye", "orthographic_camera", "perspective_camera");
+        synonyms("ortho orthographic orthocamera", "orthographic_camera");
+        synonyms("perspective persp perspectivecamera", "perspective_camera");
+        synonyms("ball kugel circle kreis globe", "sphere");
+        synonyms("background hintergrund bg color colour farbe backgroundcolor sky", "ambient");
+        synonyms("lamp licht lichtquelle pointlight point_light lightsource light_source sun", "light");
+        synonyms("floor ground boden ebene wall", "plane");
+        synonyms("cube cuboid quader wuerfel aabb", "box");
+        synonyms("tri dreieck face", "triangle");
+        synonyms("obj model modell", "mesh");
+        synonyms("mat finish surface", "material");
+    }
 
     private Suggestions() {
     }
 
-    /** The statement keyword nearest to {@code word}, or null if none is near enough. */
-    static String nearestKeyword(String word) {
-        return nearest(word, Grammar.STATEMENTS.stream().map(Statement::keyword).toList());
+    /** The help for an unknown statement keyword: "did you mean …?", or the list of keywords. */
+    static String keywordHelp(String word) {
+        List<String> meant = SYNONYMS.get(word.toLowerCase(Locale.ROOT));
+        if (meant != null) {
+            return "did you mean '" + String.join("' or '", meant) + "'?";
+        }
+        String nearest = nearest(word, Grammar.STATEMENTS.stream().map(Statement::keyword).toList());
+        return nearest != null ? "did you mean '" + nearest + "'?" : "a statement starts with " + Grammar.keywordList();
+    }
+
+    /** Makes each of {@code words} (separated by blanks) mean {@code keywords}. */
+    private static void synonyms(String words, String... keywords) {
+        for (String word : words.split(" ")) {
+            SYNONYMS.put(word, List.of(keywords));
+        }
     }
 
     /**

@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.io.IOException;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -20,28 +22,45 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * docs/errors.md says what rtd says: each example scene there gives exactly the message shown under
- * it. An {@code obj} block just before a scene is saved beside it under the name it gives.
+ * it. An {@code obj} block just before a scene is saved beside it under the name it gives. A scene
+ * block is saved as UTF-8 with LF line ends, unless its fence names another form after
+ * {@code scene}: {@code latin1}, {@code windows-1252}, {@code utf-16le-bom} or {@code cr} (lines
+ * ended by a CR alone), for the examples of files that old or foreign editors write.
  */
 @DisplayName("The catalogue of messages in docs/errors.md")
 class ErrorCatalogTest {
 
     private static final Pattern EXAMPLE = Pattern.compile(
-            "(?:```obj (\\S+)\\n(.*?)```\\s*)?```scene\\n(.*?)```\\s*```text\\n(.*?)```", Pattern.DOTALL);
+            "(?:```obj (\\S+)\\n(.*?)```\\s*)?```scene(?: (\\S+))?\\n(.*?)```\\s*```text\\n(.*?)```", Pattern.DOTALL);
 
     static Stream<Arguments> examples() throws IOException {
         String doc = Files.readString(Path.of("docs", "errors.md"));
         List<Arguments> examples = new ArrayList<>();
         Matcher matcher = EXAMPLE.matcher(doc);
         while (matcher.find()) {
-            examples.add(Arguments.of(matcher.group(4).lines().findFirst().orElse(""), matcher.group(3), matcher.group(4),
-                    matcher.group(1), matcher.group(2)));
+            examples.add(Arguments.of(matcher.group(5).lines().findFirst().orElse(""), matcher.group(4), matcher.group(3),
+                    matcher.group(5), matcher.group(1), matcher.group(2)));
         }
         return examples.stream();
     }
 
+    /** The bytes of a scene block in the form its fence names. */
+    private static byte[] bytes(String scene, String form) {
+        if (form == null) {
+            return scene.getBytes(StandardCharsets.UTF_8);
+        }
+        return switch (form) {
+            case "latin1" -> scene.getBytes(StandardCharsets.ISO_8859_1);
+            case "windows-1252" -> scene.getBytes(Charset.forName("windows-1252"));
+            case "utf-16le-bom" -> ("\uFEFF" + scene).getBytes(StandardCharsets.UTF_16LE);
+            case "cr" -> scene.replace('\n', '\r').getBytes(StandardCharsets.UTF_8);
+            default -> throw new IllegalArgumentException("unknown form of a scene block: " + form);
+        };
+    }
+
     @Test
     void holdsAnExampleForEveryKindOfSceneMistake() throws IOException {
-        assertThat(examples()).hasSizeGreaterThanOrEqualTo(57);
+        assertThat(examples()).hasSizeGreaterThanOrEqualTo(74);
     }
 
     @Test
@@ -53,12 +72,13 @@ class ErrorCatalogTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("examples")
-    void showsTheMessageThatRtdGives(String firstLine, String scene, String message, String objName, String obj,
+    void showsTheMessageThatRtdGives(String firstLine, String scene, String form, String message, String objName, String obj,
             @TempDir Path folder) throws IOException {
         if (objName != null) {
             Files.writeString(folder.resolve(objName), obj);
         }
-        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", scene, folder));
+        byte[] bytes = bytes(scene, form);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", bytes, folder));
         assertThat(e).as("a SceneException").isNotNull();
         assertThat(e.errors()).hasSize(1);
         assertThat(e.errors().get(0).format().strip()).isEqualTo(message.strip());

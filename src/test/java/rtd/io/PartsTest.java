@@ -16,7 +16,8 @@ import rtd.testing.RandomScenes;
 class PartsTest {
 
     private static final String[] MISTAKES = {"spere:(1|2|3):(1):(0|0|0)", "sphere:(1|2):(1):(0|0|0)",
-        "orthographic_camera:(0|0|20):(0|0|-1):(50)", "ambient:(1|2|3)", "sphere:(1|2|3):(-1):(0|0|0)", "x"};
+        "orthographic_camera:(0|0|20):(0|0|-1):(50)", "ambient:(1|2|3)", "sphere:(1|2|3):(-1):(0|0|0)", "x",
+        "7 sphere:(1|2|3):(1):(0|0|0)", "/* a comment\nof two lines */", "# a comment", "sphere:(1|2|3):(1,5):(0|0|0)"};
 
     @ParameterizedTest(name = "a valid scene, seed {0}")
     @ValueSource(longs = {1, 2, 3})
@@ -40,7 +41,8 @@ class PartsTest {
         for (String line : valid.split("\n", -1)) {
             text.append(random.nextInt(12) == 0 ? MISTAKES[random.nextInt(MISTAKES.length)] + "\n" : "").append(line).append('\n');
         }
-        SourceText source = new SourceText("scene.txt", text.toString().getBytes(StandardCharsets.UTF_8));
+        String lineEnds = seed % 2 == 0 ? text.toString() : text.toString().replace('\n', '\r'); // old Mac files too
+        SourceText source = new SourceText("scene.txt", lineEnds.getBytes(StandardCharsets.UTF_8));
         String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, Integer.MAX_VALUE)).report();
         for (int partSize : new int[] {1, 64, 700, 5000}) {
             assertThat(catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, partSize)).report())

@@ -55,7 +55,7 @@ class SceneErrorsTest {
                 Arguments.of("an empty number", CAMERA + "sphere:(3||-1):(2):(0|127|255)", 2, 11,
                         "expected a number, found '|'", null),
                 Arguments.of("a word for a number", CAMERA + "sphere:(3|eight|-1):(2):(0|127|255)", 2, 11,
-                        "expected a number, found 'eight'", "numbers are written like 3, -0.5, .5, 1. or 2e3"),
+                        "expected a number, found 'eight'", "numbers are written like 3 or -0.5 or .5 or 1. or 2e3"),
                 Arguments.of("a typographic minus", CAMERA + "sphere:(3|8|\u22121):(2):(0|127|255)", 2, 13,
                         "expected a number, found '\u22121'", "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead"),
                 Arguments.of("text after the statement", CAMERA + "sphere:(3|8|-1):(2):(0|127|255) red", 2, 33,
@@ -120,7 +120,8 @@ class SceneErrorsTest {
         assertThat(error.format()).doesNotContain(" | ");
         byte[] latin1 = "// Kugel f\u00fcr die Szene\n".getBytes(StandardCharsets.ISO_8859_1);
         SceneError notUtf8 = errorsOf(latin1).errors().get(0);
-        assertThat(notUtf8.message()).isEqualTo("this is not a text file: found byte 0xFC, which is not UTF-8");
+        assertThat(notUtf8.message()).isEqualTo(
+                "the file is not UTF-8 but looks like Latin-1 (ISO-8859-1) or Windows-1252: found byte 0xFC, which is '\u00fc' there");
         assertThat(notUtf8.line()).isEqualTo(1);
         assertThat(notUtf8.column()).isEqualTo(11);
     }

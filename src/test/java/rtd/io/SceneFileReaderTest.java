@@ -84,6 +84,7 @@ class SceneFileReaderTest {
         System.arraycopy(new byte[] {'/', '/', ' ', (byte) 0xFF, '\n'}, 0, bad, valid.length, 5);
         Path latin1 = Files.write(dir.resolve("latin1.txt"), bad);
         SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.readScene(latin1));
-        assertThat(e.errors().get(0).format()).startsWith(latin1 + ":3003:4: error: this is not a text file: found byte 0xFF");
+        assertThat(e.errors().get(0).format()).startsWith(latin1 + ":3003:4: error: the file is not UTF-8 but looks like Latin-1 (ISO-8859-1) or Windows-1252: "
+                + "found byte 0xFF, which is '\u00ff' there");
     }
 }

@@ -1,0 +1,156 @@
+package rtd.io;
+
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.Charset;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.util.stream.IntStream;
+
+/**
+ * Finds the first byte of a scene file that is not UTF-8 text (a NUL byte, or bytes that are
+ * not UTF-8), and says what the file looks like instead: UTF-16, as some old Windows editors
+ * save; Latin-1 or Windows-1252, as editors in Germany and elsewhere save an umlaut in a
+ * comment; or no text at all, such as a picture. For text in another encoding the help is to
+ * save the file as UTF-8.
+ */
+final class NotText {
+
+    private static final Charset WINDOWS_1252 = Charset.forName("windows-1252");
+    private static final String SAVE_AS_UTF8 = "save the file as UTF-8";
+    /** How many bytes at the start of a file tell whether it is UTF-16. */
+    private static final int SAMPLE = 512;
+
+    private NotText() {
+    }
+
+    /**
+     * The offset of the first NUL byte or invalid UTF-8 sequence, or −1, checked part by part
+     * in parallel. A part starts after a line break, so no UTF-8 sequence spans two parts.
+     */
+    static int firstBadByte(byte[] bytes, int[] cuts) {
+        if (cuts.length == 2) {
+            return firstBadByte(bytes, cuts[0], cuts[1]);
+        }
+        return IntStream.range(0, cuts.length - 1).parallel()
+                .map(k -> firstBadByte(bytes, cuts[k], cuts[k + 1]))
+                .filter(bad -> bad >= 0)
+                .findFirst().orElse(-1);
+    }
+
+    /** The first bad byte of {@code bytes[from, to)}: the first NUL byte, unless an invalid UTF-8 sequence comes before it. */
+    private static int firstBadByte(byte[] bytes, int from, int to) {
+        boolean ascii = true;
+        int nul = to;
+        for (int i = from; i < to; i++) {
+            if (bytes[i] == 0) {
+                nul = i;
+                break;
+            }
+            ascii &= bytes[i] > 0;
+        }
+        if (ascii) {
+            return nul < to ? nul : -1;
+        }
+        CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT);
+        ByteBuffer in = ByteBuffer.wrap(bytes, from, nul - from);
+        CoderResult result = decoder.decode(in, CharBuffer.allocate(nul - from), true);
+        return result.isError() ? in.position() : nul < to ? nul : -1;
+    }
+
+    /**
+     * The error for the bad byte at {@code bad}: where it is, and what the file looks like. The
+     * text starts at {@code start}, after a UTF-8 byte-order mark if the file has one.
+     */
+    static SceneError error(SourceText source, int start, int bad) {
+        byte[] bytes = source.bytes();
+        int line = 1;
+        int lineStart = start;
+        for (int i = start; i < bad; i++) {
+            if (ByteClasses.endsLine(bytes, i)) {
+                line++;
+                lineStart = i + 1;
+            }
+        }
+        int column = source.column(lineStart, bad);
+        String utf16 = utf16(bytes);
+        if (utf16 != null) {
+            return new SceneError(source.name(), line, column, "the file is not UTF-8 but looks like UTF-16 (" + utf16
+                    + "): found " + name(bytes[bad]), null, SAVE_AS_UTF8);
+        }
+        if (!looksLikeText(bytes)) {
+            String what = bytes[bad] == 0 ? "a NUL byte" : name(bytes[bad]) + ", which is not UTF-8";
+            return new SceneError(source.name(), line, column, "this is not a text file: found " + what, null,
+                    "a scene is a text file, such as examples/input_rtd.txt");
+        }
+        return new SceneError(source.name(), line, column, "the file is not UTF-8" + legacy(bytes[bad]),
+                legacyLine(bytes, lineStart, bad), SAVE_AS_UTF8);
+    }
+
+    private static String name(byte b) {
+        return b == 0 ? "a NUL byte" : String.format("byte 0x%02X", b & 0xFF);
+    }
+
+    /**
+     * "little-endian, with a byte-order mark" and the like if the file looks like UTF-16: it
+     * starts with UTF-16's byte-order mark, or (mostly ASCII text) every other byte of its
+     * start is 0; otherwise null.
+     */
+    private static String utf16(byte[] bytes) {
+        if (bytes.length >= 2 && (bytes[0] & 0xFF) == 0xFF && (bytes[1] & 0xFF) == 0xFE) {
+            return "little-endian, with a byte-order mark";
+        }
+        if (bytes.length >= 2 && (bytes[0] & 0xFF) == 0xFE && (bytes[1] & 0xFF) == 0xFF) {
+            return "big-endian, with a byte-order mark";
+        }
+        int pairs = Math.min(bytes.length, SAMPLE) / 2;
+        int evenZeros = 0;
+        int oddZeros = 0;
+        for (int k = 0; k < pairs; k++) {
+            evenZeros += bytes[2 * k] == 0 ? 1 : 0;
+            oddZeros += bytes[2 * k + 1] == 0 ? 1 : 0;
+        }
+        if (pairs > 0 && 2 * oddZeros > pairs && 4 * evenZeros < pairs) {
+            return "little-endian, without a byte-order mark";
+        }
+        if (pairs > 0 && 2 * evenZeros > pairs && 4 * oddZeros < pairs) {
+            return "big-endian, without a byte-order mark";
+        }
+        return null;
+    }
+
+    /** Whether the file holds no NUL and no control character but tab, line breaks and form feed: text, if not UTF-8. */
+    private static boolean looksLikeText(byte[] bytes) {
+        for (byte b : bytes) {
+            if (b >= 0 && b < ' ' && b != '\t' && b != '\n' && b != '\r' && b != '\f' || b == 0x7F) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** ": it looks like Latin-1 …, where byte 0xF6 is 'ö'", or only the byte if no such encoding has a letter for it. */
+    private static String legacy(byte b) {
+        String inWindows1252 = new String(new byte[] {b}, WINDOWS_1252);
+        String hex = String.format("0x%02X", b & 0xFF);
+        if (inWindows1252.equals("\uFFFD")) {
+            return ": found byte " + hex; // one of the few bytes that even Windows-1252 leaves out
+        }
+        String encodings = (b & 0xFF) >= 0xA0 ? "Latin-1 (ISO-8859-1) or Windows-1252" : "Windows-1252";
+        return " but looks like " + encodings + ": found byte " + hex + ", which is '" + inWindows1252 + "' there";
+    }
+
+    /** The line, its UTF-8 start as UTF-8 and its rest from the bad byte on as Windows-1252, so that the caret lines up. */
+    private static String legacyLine(byte[] bytes, int lineStart, int bad) {
+        int end = bad;
+        while (end < bytes.length && !ByteClasses.isLineBreak(bytes[end])) {
+            end++;
+        }
+        return new String(bytes, lineStart, bad - lineStart, StandardCharsets.UTF_8)
+                + new String(bytes, bad, end - bad, WINDOWS_1252);
+    }
+}
