@@ -246,7 +246,7 @@ final class BvhBuilder {
         nodes[2 * node + 1] = INNER;
         int leftCount = split.middle() - start;
         int rightFree = free + 2 * leftCount;
-        if (n < PARALLEL_THRESHOLD) {
+        if (pool == null || n < PARALLEL_THRESHOLD) { // fork() outside a pool would use the common pool
             return Math.max(buildNode(left, free + 2, start, split.middle(), depth + 1, split.left(), bins),
                     buildNode(left + 1, rightFree, split.middle(), end, depth + 1, split.right(), bins));
         }

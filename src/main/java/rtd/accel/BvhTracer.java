@@ -20,7 +20,7 @@ import rtd.render.WorkCount;
  * intersection test and depth test unchanged ({@link NearestHit}).
  *
  * <p>This is the accelerator's one door: {@link #nearestHit} for one ray, {@link #traceAll}
- * for the rays of a square of pixels. Parallel rays in a square (the orthographic camera's)
+ * for the rays of a square of pixels, {@link #blocked} for a shadow ray. Parallel rays in a square (the orthographic camera's)
  * walk the tree together ({@link BeamTracer}); that fast path is an affair of this package
  * alone.
  *

@@ -91,7 +91,7 @@ final class NearestHit {
     void limitTo(float distance) {
         float t = distance / length;
         bestDistance = distance;
-        skipBeyond = t + t * SKIP_MARGIN + margin;
+        skipBeyond = skipFor(t);
     }
 
     /**
@@ -203,8 +203,13 @@ final class NearestHit {
             best = index;
             bestT = t;
             bestDistance = distance;
-            skipBeyond = t + t * SKIP_MARGIN + margin;
+            skipBeyond = skipFor(t);
         }
+    }
+
+    /** Boxes entered beyond a hit at {@code t}, by more than rounding can explain, cannot hold a nearer one. */
+    private float skipFor(float t) {
+        return t + t * SKIP_MARGIN + margin;
     }
 
     /** The place in the file of the nearest object hit, or −1. */

@@ -7,7 +7,8 @@ import rtd.io.ImageWriting;
 /**
  * The one warm-up of {@code javax.imageio} per JVM ({@link ImageWriting#warmUp}), started as early
  * as possible: {@link Main} starts it for PNG before the command line is even parsed, so that it
- * runs on a spare core while picocli starts and the scene is read.
+ * runs on a spare core while picocli starts and the scene is read. The one piece of state that
+ * outlives a call: the warm-up is per JVM, as what it loads is.
  */
 final class WriterWarmUp {
 

@@ -44,10 +44,11 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
             enter = Math.max(enter, Math.min(t0, t1));
             exit = Math.min(exit, Math.max(t0, t1));
         }
-        if (enter > exit || exit < 0) {
+        float t = enter >= 0 ? enter : exit;
+        if (enter > exit || exit < 0 || !Float.isFinite(t)) { // infinite: a direction of no length
             return Intersection.at(ray, Float.NaN);
         }
-        return Intersection.at(ray, enter >= 0 ? enter : exit);
+        return Intersection.at(ray, t);
     }
 
     /** The normal of the face the point lies on: the axis along which it is nearest a face. */

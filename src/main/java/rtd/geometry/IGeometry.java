@@ -8,7 +8,8 @@ import rtd.math.Vector3f;
  * A geometric object of a scene (paper, section 4.2.2).
  *
  * <p>Each kind of object knows how to test itself against a ray, because that test differs
- * from shape to shape; the depth test that compares objects lives in {@link rtd.scene.Scene}.
+ * from shape to shape; the depth test that compares objects lives above, in {@code rtd.scene.Scene.nearestHit} (the
+ * paper's loop) and {@code rtd.accel.NearestHit} (the hierarchy's).
  * A new shape implements this interface: its test, its normal, its box, its colour and finish.
  * The paper has spheres; Part II adds planes, triangles, boxes and (as triangles) meshes.
  */
@@ -22,7 +23,9 @@ public interface IGeometry {
 
     /**
      * The intersection test (section 3.2.2): where, if anywhere, the ray hits this object at
-     * some {@code t ≥ 0}. A ray that starts inside a closed object hits its far side.
+     * some {@code t ≥ 0}. A ray that starts inside a closed object hits its far side. Return
+     * {@code Intersection.at(ray, t)} (NaN: no hit): the hierarchy finds the hit point from t the
+     * same way, and the two must agree to the last bit.
      */
     Intersection intersect(Ray ray);
 

@@ -22,7 +22,7 @@ public record Plane(Vector3f point, Vector3f normal, Color color, Material mater
     public Intersection intersect(Ray ray) {
         float facing = ray.direction().dot(normal);
         float t = point.subtract(ray.origin()).dot(normal) / facing; // NaN or infinite if facing is 0
-        return Intersection.at(ray, t >= 0 && facing != 0 ? t : Float.NaN);
+        return Intersection.at(ray, t >= 0 && t < Float.POSITIVE_INFINITY && facing != 0 ? t : Float.NaN);
     }
 
     /** {@code n / |n|}, the same everywhere. */

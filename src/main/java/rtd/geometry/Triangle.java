@@ -21,6 +21,14 @@ import rtd.math.Vector3f;
  */
 public final class Triangle implements IGeometry {
 
+    // Where each of the test's numbers stands in its array (testNumbers, and the BVH's packed copy).
+    private static final int CORNERS = 0;        // p1, p2, p3: x, y, z each
+    private static final int NORMAL = 9;         // n = (p2 − p1) × (p3 − p1)
+    private static final int INWARD = 12;        // n × edge, for the edges from p1, p2, p3
+    private static final int INWARD_LENGTH = 21; // |n × edge|, for the three edges
+    private static final int TOLERANCE = 24;     // the side tests' allowance per unit of distance from a corner
+    private static final int NORMAL_SUM = 25;    // |nx| + |ny| + |nz|
+    private static final int SIZE = 26;          // the edges' lengths, summed over the axes
     /** How many numbers the test uses ({@link #testNumbers}). */
     public static final int NUMBERS = 27;
     private static final float U = 0x1p-24f; // the unit roundoff of float
@@ -67,12 +75,12 @@ public final class Triangle implements IGeometry {
 
     /** Corner {@code i} (0, 1 or 2). */
     public Vector3f corner(int i) {
-        return vector(3 * i);
+        return vector(CORNERS + 3 * i);
     }
 
     /** The unnormalised normal {@code (p2 − p1) × (p3 − p1)}. */
     public Vector3f planeNormal() {
-        return vector(9);
+        return vector(NORMAL);
     }
 
     private static float sum(Vector3f v) {
@@ -149,8 +157,9 @@ public final class Triangle implements IGeometry {
      * flatter, up to {@value #ALONG_THE_RAY} of the distance run.
      */
     public static float hit(float[] v, int at, float ox, float oy, float oz, float dx, float dy, float dz) {
-        float facing = (dx * v[at + 9]) + (dy * v[at + 10]) + (dz * v[at + 11]);
-        float t = (((v[at] - ox) * v[at + 9]) + ((v[at + 1] - oy) * v[at + 10]) + ((v[at + 2] - oz) * v[at + 11])) / facing;
+        float facing = (dx * v[at + NORMAL]) + (dy * v[at + NORMAL + 1]) + (dz * v[at + NORMAL + 2]);
+        float t = (((v[at] - ox) * v[at + NORMAL]) + ((v[at + 1] - oy) * v[at + NORMAL + 1]) + ((v[at + 2] - oz) * v[at + NORMAL + 2]))
+                / facing;
         if (!(t >= 0) || facing == 0 || Float.isInfinite(t)) {
             return Float.NaN;
         }
@@ -174,13 +183,13 @@ public final class Triangle implements IGeometry {
     public static float looseness(float[] v, int at, float px, float py, float pz, float dx, float dy, float dz, float t,
             float facing) {
         float length = Math.abs(dx) + Math.abs(dy) + Math.abs(dz);
-        float along = Math.min(ALONG_THE_RAY, 16 * U * (1 + length * v[at + 25] / Math.abs(facing)));
+        float along = Math.min(ALONG_THE_RAY, 16 * U * (1 + length * v[at + NORMAL_SUM] / Math.abs(facing)));
         return 16 * U * (Math.abs(px) + Math.abs(py) + Math.abs(pz)) + along * t * length;
     }
 
     /** Whether P lies within the allowances of the corners' box, on every axis. */
     public static boolean nearTheCorners(float[] v, int at, float px, float py, float pz, float loose) {
-        float reach = v[at + 24] * v[at + 26] + loose;
+        float reach = v[at + TOLERANCE] * v[at + SIZE] + loose;
         return near(v, at, 0, px, reach) && near(v, at, 1, py, reach) && near(v, at, 2, pz, reach);
     }
 
@@ -189,21 +198,21 @@ public final class Triangle implements IGeometry {
      * still count P as inside: the side test's own rounding, and {@code loose}.
      */
     public static float allowance(float[] v, int at, int k, float px, float py, float pz, float loose) {
-        int corner = at + 3 * k;
+        int corner = at + CORNERS + 3 * k;
         float fromCorner = Math.abs(px - v[corner]) + Math.abs(py - v[corner + 1]) + Math.abs(pz - v[corner + 2]);
-        return (v[at + 24] * fromCorner + loose) * v[at + 21 + k];
+        return (v[at + TOLERANCE] * fromCorner + loose) * v[at + INWARD_LENGTH + k];
     }
 
     /** {@code (P − corner k)·(n × edge k)}: ≥ 0 when P lies on the triangle's side of edge k. */
     public static float side(float[] v, int at, int k, float px, float py, float pz) {
-        return dotFrom(v, at + 3 * k, at + 12 + 3 * k, px, py, pz);
+        return dotFrom(v, at + CORNERS + 3 * k, at + INWARD + 3 * k, px, py, pz);
     }
 
     /** Whether coordinate {@code axis} of P is within {@code reach} of the corners' range. */
     private static boolean near(float[] v, int at, int axis, float p, float reach) {
-        float a = v[at + axis];
-        float b = v[at + 3 + axis];
-        float c = v[at + 6 + axis];
+        float a = v[at + CORNERS + axis];
+        float b = v[at + CORNERS + 3 + axis];
+        float c = v[at + CORNERS + 6 + axis];
         return p >= Math.min(a, Math.min(b, c)) - reach && p <= Math.max(a, Math.max(b, c)) + reach;
     }
 
@@ -218,9 +227,8 @@ public final class Triangle implements IGeometry {
      */
     @Override
     public Vector3f normalAt(Vector3f point) {
-        Vector3f n = planeNormal().normalize();
         if (cornerNormals == null) {
-            return n;
+            return planeNormal().normalize();
         }
         float w1 = side(v, 0, 1, point.x(), point.y(), point.z()); // the edge p2 → p3, opposite p1
         float w2 = side(v, 0, 2, point.x(), point.y(), point.z());
@@ -247,7 +255,7 @@ public final class Triangle implements IGeometry {
         double largest = Math.max(maxAbs(p1), Math.max(maxAbs(p2), maxAbs(p3)));
         // a needle's box may become infinite: then every ray tests it, as the paper's loop does
         double sides = 32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * thinness(p1, p2, p3)
-                + 2 * v[24] * v[26];
+                + 2 * v[TOLERANCE] * v[SIZE];
         return BoundingBox.around(sides + 64 * BoundingBox.UNIT_ROUNDOFF * (largest + e1 + e2), p1, p2, p3);
     }
 

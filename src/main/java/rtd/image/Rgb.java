@@ -32,13 +32,21 @@ public record Rgb(float red, float green, float blue) {
         return new Rgb(red * other.red, green * other.green, blue * other.blue);
     }
 
+    /** Each channel clamped to [0, 1]: the most a pixel can show. */
+    public Rgb clamped() {
+        return new Rgb(clamp(red), clamp(green), clamp(blue));
+    }
+
     /** The 8-bit colour: each channel clamped to [0, 1], then {@code floor(255·c + ½)}. */
     public Color toColor() {
         return new Color(toByte(red), toByte(green), toByte(blue));
     }
 
+    private static float clamp(float channel) {
+        return channel > 0 ? Math.min(1f, channel) : 0f; // NaN, too, becomes 0
+    }
+
     private static int toByte(float channel) {
-        float clamped = channel > 0 ? Math.min(1f, channel) : 0f; // NaN, too, becomes 0
-        return (int) Math.floor(255 * clamped + 0.5f);
+        return (int) Math.floor(255 * clamp(channel) + 0.5f);
     }
 }

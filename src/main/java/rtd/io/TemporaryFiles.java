@@ -15,6 +15,9 @@ import java.util.concurrent.ThreadLocalRandom;
  * {@code .NAME.<16 hex digits>.tmp} beside the output, and removed whatever happens: after a
  * failed write by {@link SceneIO}, and on the way out of a JVM stopped by a signal (SIGINT,
  * SIGTERM, SIGHUP) by a shutdown hook. Only {@code kill -9}, which runs no Java code, can leave one.
+ *
+ * <p>Its list of open files is global state, on purpose: a shutdown hook belongs to the JVM, not
+ * to one run, so the list it reads must too (guarded by this class's lock).
  */
 final class TemporaryFiles {
 

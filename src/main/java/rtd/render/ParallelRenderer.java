@@ -57,7 +57,7 @@ public final class ParallelRenderer {
         List<Square> squares = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
         int bands = (height + TILE - 1) / TILE;
-        for (int i = 0; i < Math.min(threads, bands); i++) { // more threads than bands would idle
+        for (int i = 0; i < Math.max(1, Math.min(threads, bands)); i++) { // more threads than bands would idle
             Tracer tracer = tracers.get();
             Shader shader = shaders.apply(tracer);
             used.add(tracer);
@@ -80,6 +80,9 @@ public final class ParallelRenderer {
         int width = square.width;
         int height = square.height;
         for (int band = nextBand.getAndIncrement(); band * TILE < height; band = nextBand.getAndIncrement()) {
+            if (Thread.currentThread().isInterrupted()) {
+                return; // another thread failed, and the picture will not be used
+            }
             int top = band * TILE;
             int bottom = Math.min(height, top + TILE);
             for (int left = 0; left < width; left += TILE) {
@@ -132,9 +135,10 @@ public final class ParallelRenderer {
                     tracer.traceAll(rays, hits);
                     for (int k = 0; k < rays.count(); k++) {
                         Rgb colour = shader.colour(rays, hits, k);
-                        sum[3 * k] += clamp(colour.red());
-                        sum[3 * k + 1] += clamp(colour.green());
-                        sum[3 * k + 2] += clamp(colour.blue());
+                        Rgb clamped = colour.clamped();
+                        sum[3 * k] += clamped.red();
+                        sum[3 * k + 1] += clamped.green();
+                        sum[3 * k + 2] += clamped.blue();
                     }
                 }
             }
@@ -145,9 +149,6 @@ public final class ParallelRenderer {
             return rgb;
         }
 
-        private static float clamp(float channel) {
-            return channel > 0 ? Math.min(1f, channel) : 0f;
-        }
     }
 
     /** Runs the workers, the last one on the calling thread, and rethrows what any threw. */

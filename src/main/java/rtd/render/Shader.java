@@ -1,5 +1,6 @@
 package rtd.render;
 
+import java.util.Map;
 import rtd.image.Rgb;
 
 /**
@@ -21,7 +22,7 @@ public interface Shader {
     }
 
     /** The rays this shader followed beyond the camera's, by kind ("shadow", "reflected", ...); none by default. */
-    default java.util.Map<String, Long> secondaryRays() {
-        return java.util.Map.of();
+    default Map<String, Long> secondaryRays() {
+        return Map.of();
     }
 }

@@ -17,7 +17,7 @@ import rtd.math.Ray;
  * {@link #render} makes a ray for every pixel (ray generation, section 3.2.1) and
  * {@link #trace} tests it against every object (intersection test, section 3.2.2) and keeps
  * the nearest (depth test, section 3.2.3). It is the plain reference, and {@code --paper} runs
- * it; {@link rtd.render} and {@code rtd.accel} hold faster paths that draw the same pixels.
+ * it; {@code rtd.render} and {@code rtd.accel} hold faster paths that draw the same pixels.
  *
  * @param ambient the colour of every pixel whose ray hits nothing
  * @param camera  makes the rays

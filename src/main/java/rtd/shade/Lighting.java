@@ -40,7 +40,7 @@ public final class Lighting {
         Rgb ambient = effective.times(material.ambient());
         Vector3f toLight = light.position().subtract(point).normalize();     // L
         float lightFacing = toLight.dot(normal);                             // N·L
-        if (shadow || lightFacing <= 0) {
+        if (shadow || !(lightFacing > 0)) { // also a light at the point itself: no direction, NaN
             // the light is behind the surface, or something stands in its way
             return new LightTerms(ambient, Rgb.BLACK, Rgb.BLACK, lightFacing, Float.NaN);
         }

@@ -91,13 +91,20 @@ public final class WhittedShader implements Shader {
     private Rgb lit(Surface surface) {
         Rgb sum = Rgb.BLACK;
         for (Light light : scene.lights()) {
-            boolean shadow = isShadowed(surface.over(), light);
+            // a light behind the surface gives only its ambient part: no shadow ray needed to know
+            boolean shadow = facesTheLight(surface, light) && isShadowed(surface.over(), light);
             LightTerms terms = Lighting.terms(surface.material(), surface.colour(), light, surface.over(), surface.eye(),
                     surface.normal(), shadow);
             observer.light(light, shadow, terms);
             sum = sum.plus(terms.sum());
         }
         return sum;
+    }
+
+    /** Whether the light is in front of the surface ({@code N·L > 0}), where its shadow ray matters; always while explaining. */
+    private boolean facesTheLight(Surface surface, Light light) {
+        return observer != ShadingObserver.NONE
+                || light.position().subtract(surface.over()).normalize().dot(surface.normal()) > 0;
     }
 
     /** Whether a ray from {@code point} towards the light hits any object nearer than the light. */

@@ -57,4 +57,9 @@ class BoxTest {
         assertThat(box.normalAt(new Vector3f(-1, 0.5f, 1))).isEqualTo(new Vector3f(-1, 0, 0));
         assertThat(box.normalAt(new Vector3f(0.2f, -2, -2.5f))).isEqualTo(new Vector3f(0, -1, 0));
     }
+
+    @Test
+    void aRayOfNoLengthFromInsideHitsNothing() {
+        assertThat(box.intersect(ray(0, 0, 0, 0, 0, 0)).happened()).isFalse();
+    }
 }

@@ -52,4 +52,11 @@ class PlaneTest {
         assertThat(floor.normalAt(new Vector3f(100, -1, -50))).isEqualTo(new Vector3f(0, 1, 0));
         assertThat(floor.bounds().isBounded()).isFalse();
     }
+
+    @Test
+    void aRaySoNearlyParallelThatItsHitLiesBeyondFloatsRangeMisses() {
+        Intersection hit = floor.intersect(ray(0, 1, 0, 1, -1e-45f, 0));
+        assertThat(hit.happened()).isFalse();
+        assertThat(hit.contactCoord().isFinite()).isFalse();
+    }
 }

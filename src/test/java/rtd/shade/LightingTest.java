@@ -71,4 +71,10 @@ class LightingTest {
         assertThat(lit.green()).isCloseTo(0.5f + 0.9f, within(1e-5f));
         assertThat(lit.blue()).isCloseTo(0.45f, within(1e-5f));
     }
+
+    @Test
+    void aLightAtThePointItselfGivesItsAmbientPartAndNoNotANumber() {
+        Rgb lit = Lighting.of(Material.DEFAULT, WHITE, new Light(POINT, WHITE), POINT, new Vector3f(0, 0, -1), NORMAL, false);
+        assertThat(lit).isEqualTo(new Rgb(0.1f, 0.1f, 0.1f));
+    }
 }
