@@ -38,9 +38,10 @@ final class LeafObjects {
     final float[] boxes;
     /** Each object's kind, an index into {@link #kindNames}. */
     final byte[] kinds;
-    /** The names of the kinds, and for each how it is tested ({@link #PACKED_SPHERE}, ...). */
+    /** Each object's way to test ({@link #PACKED_SPHERE}, ...), beside it for the hot loop. */
+    private final byte[] testOf;
+    /** The names of the kinds (a kind is a name and a way to test), for statistics. */
     final String[] kindNames;
-    final byte[] kindTests;
     /** Where each object's numbers start in {@link #numbers}. */
     final int[] offsets;
     final float[] numbers;
@@ -55,11 +56,12 @@ final class LeafObjects {
         this.boxes = boxes;
         this.kinds = new byte[objects.length];
         this.offsets = new int[objects.length];
+        this.testOf = new byte[objects.length];
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
         int size = 0;
         for (int i = 0; i < objects.length; i++) { // in order: the offsets are a running sum
-            byte test = testOf(objects[i]);
+            byte test = testFor(objects[i]);
             int kind = kindOf(names, tests, objects[i].kind(), test);
             if (kind < 0) {
                 kind = names.size();
@@ -67,14 +69,11 @@ final class LeafObjects {
                 tests.add(test);
             }
             kinds[i] = (byte) kind;
+            testOf[i] = test;
             offsets[i] = size;
             size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
         }
         this.kindNames = names.toArray(String[]::new);
-        this.kindTests = new byte[tests.size()];
-        for (int k = 0; k < kindTests.length; k++) {
-            kindTests[k] = tests.get(k);
-        }
         this.numbers = new float[size];
         if (threads.parallel()) {
             threads.forEach(this::pack);
@@ -95,7 +94,7 @@ final class LeafObjects {
         return -1;
     }
 
-    private static byte testOf(IGeometry object) {
+    private static byte testFor(IGeometry object) {
         return object instanceof Sphere ? PACKED_SPHERE : object instanceof Triangle ? PACKED_TRIANGLE : OWN_TEST;
     }
 
@@ -116,7 +115,7 @@ final class LeafObjects {
      * is D·D, the same for every object.
      */
     float t(int i, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
-        byte test = kindTests[kinds[i]];
+        byte test = testOf[i];
         if (test == PACKED_SPHERE) {
             return sphere(offsets[i], ox, oy, oz, dx, dy, dz, dd);
         }

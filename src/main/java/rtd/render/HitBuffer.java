@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.List;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
+import rtd.math.Ray;
 
 /**
  * The nearest hits of the rays of a {@link RayBundle}, kept as numbers: for ray {@code i} the
@@ -83,9 +84,14 @@ public final class HitBuffer {
 
     /** Ray {@code i}'s hit as a record, with the hit point as the intersection test computes it; {@code null} if none. */
     public Hit hit(int i, RayBundle rays, List<IGeometry> objects) {
+        return hit(i, rays.ray(i), objects);
+    }
+
+    /** As {@link #hit(int, RayBundle, List)}, for a caller that has made ray {@code i} already. */
+    public Hit hit(int i, Ray ray, List<IGeometry> objects) {
         if (index[i] < 0) {
             return null;
         }
-        return new Hit(objects.get(index[i]), index[i], t[i], distance[i], rays.ray(i).pointAt(t[i]));
+        return new Hit(objects.get(index[i]), index[i], t[i], distance[i], ray.pointAt(t[i]));
     }
 }

@@ -149,7 +149,7 @@ public final class RayBundle {
      * camera (it need not be {@linkplain #make made}), or as it was given.
      */
     public Ray ray(int i) {
-        if (camera != null) {
+        if (camera != null && !made) {
             int squareWidth = right - left;
             return rayOf(left + i % squareWidth, top + i / squareWidth);
         }

@@ -53,7 +53,8 @@ public final class WhittedShader implements Shader {
 
     @Override
     public Rgb colour(RayBundle rays, HitBuffer hits, int i) {
-        return shade(rays.ray(i), hits.hit(i, rays, scene.objects()), BOUNCES);
+        Ray ray = rays.ray(i);
+        return shade(ray, hits.hit(i, ray, scene.objects()), BOUNCES);
     }
 
     /** The colour {@code ray} sees, following at most {@code remaining} more bounces. */
