@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import rtd.geometry.IGeometry;
+import rtd.geometry.Plane;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
@@ -188,9 +189,17 @@ final class NearestHit {
         }
         unboundedTests++;
         testsRun += objects.length;
-        Ray ray = new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
+        Ray ray = null; // made only for a shape without a test on numbers
         for (int i = 0; i < objects.length; i++) {
-            float t = objects[i].intersect(ray).t();
+            float t;
+            if (objects[i] instanceof Plane plane) {
+                Vector3f q = plane.point();
+                Vector3f n = plane.normal();
+                t = Plane.hit(q.x(), q.y(), q.z(), n.x(), n.y(), n.z(), ox, oy, oz, dx, dy, dz);
+            } else {
+                ray = ray != null ? ray : new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
+                t = objects[i].intersect(ray).t();
+            }
             if (t >= 0) {
                 consider(bvh.unboundedOrder[i], t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
             }

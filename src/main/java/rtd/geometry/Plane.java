@@ -20,9 +20,22 @@ public record Plane(Vector3f point, Vector3f normal, Color color, Material mater
      */
     @Override
     public Intersection intersect(Ray ray) {
-        float facing = ray.direction().dot(normal);
-        float t = point.subtract(ray.origin()).dot(normal) / facing; // NaN or infinite if facing is 0
-        return Intersection.at(ray, t >= 0 && t < Float.POSITIVE_INFINITY && facing != 0 ? t : Float.NaN);
+        Vector3f o = ray.origin();
+        Vector3f d = ray.direction();
+        return Intersection.at(ray, hit(point.x(), point.y(), point.z(), normal.x(), normal.y(), normal.z(),
+                o.x(), o.y(), o.z(), d.x(), d.y(), d.z()));
+    }
+
+    /**
+     * The test on numbers: Q, n, the ray's O and R; t of the hit, or NaN. Public for the BVH,
+     * which tests the planes of every ray without making objects; the same float operations in
+     * the same order as {@code (Q − O)·n / (R·n)} with {@code Vector3f}.
+     */
+    public static float hit(float qx, float qy, float qz, float nx, float ny, float nz, float ox, float oy, float oz,
+            float dx, float dy, float dz) {
+        float facing = (dx * nx) + (dy * ny) + (dz * nz);
+        float t = (((qx - ox) * nx) + ((qy - oy) * ny) + ((qz - oz) * nz)) / facing; // NaN or infinite if facing is 0
+        return t >= 0 && t < Float.POSITIVE_INFINITY && facing != 0 ? t : Float.NaN;
     }
 
     /** {@code n / |n|}, the same everywhere. */
