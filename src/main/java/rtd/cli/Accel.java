@@ -10,5 +10,10 @@ enum Accel {
     /** The paper's loop over every object (Listing 4.3). */
     none,
     /** The bounding volume hierarchy ({@link rtd.accel.Bvh}). */
-    bvh
+    bvh;
+
+    /** Whether to trace a scene of {@code objects} objects with the hierarchy. */
+    boolean usesBvh(int objects) {
+        return this == bvh || this == auto && objects > 0;
+    }
 }

@@ -33,6 +33,6 @@ record RenderSettings(Path scene, Path output, int width, int height, int thread
 
     /** Whether to trace with the BVH: as {@code rtd} renders, {@code auto} takes it for any scene with objects. */
     boolean useBvh(int objects) {
-        return !paper && (accel == Accel.bvh || accel == Accel.auto && objects > 0);
+        return !paper && accel.usesBvh(objects);
     }
 }

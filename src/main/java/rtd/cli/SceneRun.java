@@ -95,8 +95,7 @@ final class SceneRun {
 
     /** The BVH, if {@code --accel} asks for one: {@code auto} takes it for any scene with objects. */
     private Bvh buildBvh(Scene scene) {
-        boolean useBvh = settings.accel() == Accel.bvh || settings.accel() == Accel.auto && !scene.objects().isEmpty();
-        return useBvh ? Bvh.build(scene, settings.threads()) : null;
+        return settings.accel().usesBvh(scene.objects().size()) ? Bvh.build(scene, settings.threads()) : null;
     }
 
     private Supplier<Tracer> tracers(Scene scene, Bvh bvh) {
