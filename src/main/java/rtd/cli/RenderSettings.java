@@ -9,26 +9,30 @@ import picocli.CommandLine.Model.CommandSpec;
  * read from picocli's model of the command, so that those options live apart from the command's
  * own code.
  *
- * @param scene   the scene file
+ * @param scenes  the scene files, as given
+ * @param scene   the first of them, the one the teaching options work on
  * @param output  {@code -o}, or null
- * @param width   {@code --width}
- * @param height  {@code --height}
+ * @param width   {@code --width}, times {@code --scale}
+ * @param height  {@code --height}, times {@code --scale}
+ * @param scale   {@code --scale}, for the camera
  * @param threads {@code --threads}
  * @param accel   {@code --accel}
  * @param samples {@code --samples}
  * @param paper   {@code --paper}: the paper's loop
  */
-record RenderSettings(Path scene, Path output, int width, int height, int threads, Accel accel, int samples,
-        boolean paper) {
+record RenderSettings(List<Path> scenes, Path scene, Path output, int width, int height, Scale scale, int threads,
+        Accel accel, int samples, boolean paper) {
 
-    /** The values the command line gave {@code command} (or their defaults). */
+    /** The values the command line gave {@code command} (or their defaults), with {@code --scale} applied to the size. */
     static RenderSettings of(CommandSpec command) {
         List<Path> scenes = command.positionalParameters().get(0).getValue();
-        return new RenderSettings(scenes.get(0),
-                command.findOption("--output").getValue(), command.findOption("--width").getValue(),
-                command.findOption("--height").getValue(), command.findOption("--threads").getValue(),
-                command.findOption("--accel").getValue(), command.findOption("--samples").getValue(),
-                command.findOption("--paper").getValue());
+        Scale scale = command.findOption("--scale").getValue();
+        int width = command.findOption("--width").getValue();
+        int height = command.findOption("--height").getValue();
+        return new RenderSettings(scenes, scenes.get(0), command.findOption("--output").getValue(),
+                (int) Math.max(1, scale.times(width)), (int) Math.max(1, scale.times(height)), scale,
+                command.findOption("--threads").getValue(), command.findOption("--accel").getValue(),
+                command.findOption("--samples").getValue(), command.findOption("--paper").getValue());
     }
 
     /** Whether to trace with the BVH: as {@code rtd} renders, {@code auto} takes it for any scene with objects. */

@@ -51,6 +51,9 @@ public final class TeachingOptions {
     Integer run(PrintWriter err) throws SceneException {
         RenderSettings settings = RenderSettings.of(command);
         CommandLine commandLine = command.commandLine();
+        if (watch || explain != null || view != null || exportPov != null) {
+            checkOneSceneFile(settings, commandLine);
+        }
         if (watch) {
             return SceneWatcher.forCommandLine(commandLine, settings.scene(), err).run();
         }
@@ -58,7 +61,7 @@ public final class TeachingOptions {
         if (pixel == null && view == null && exportPov == null) {
             return null;
         }
-        Scene scene = readScene(settings.scene(), err);
+        Scene scene = readScene(settings, err);
         if (scene == null) {
             return 1;
         }
@@ -121,9 +124,25 @@ public final class TeachingOptions {
     }
 
     /** The scene, or null after saying why it cannot be read; mistakes in it are thrown, for the command's report. */
-    private static Scene readScene(Path path, PrintWriter err) throws SceneException {
+    /**
+     * The teaching options work on one scene file: several would need several explanations, views
+     * or exports under one name, and standard input can be neither watched nor read twice.
+     */
+    private void checkOneSceneFile(RenderSettings settings, CommandLine commandLine) {
+        String option = watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : "--export-pov";
+        if (settings.scenes().size() > 1) {
+            throw new ParameterException(commandLine, option + " works on one scene file, but " + settings.scenes().size()
+                    + " were given; run rtd once for each");
+        }
+        if (settings.scene().toString().equals("-")) {
+            throw new ParameterException(commandLine, option + " needs a scene file; it cannot work on standard input ('-')");
+        }
+    }
+
+    private static Scene readScene(RenderSettings settings, PrintWriter err) throws SceneException {
+        Path path = settings.scene();
         try {
-            return SceneIO.readScene(path);
+            return settings.scale().of(SceneIO.readScene(path));
         } catch (IOException e) {
             err.println("rtd: cannot read the scene file '" + path + "': " + FileProblems.reason(e));
             return null;

@@ -86,4 +86,33 @@ class TeachingOptionsTest {
     void watchRendersWithTheSameArgumentsLessWatch() {
         assertThat(SceneWatcher.withoutWatch(List.of("a.txt", "--watch", "-o", "b.png"))).containsExactly("a.txt", "-o", "b.png");
     }
+
+    @Test
+    void theTeachingOptionsSeeTheSameScaledPictureAsTheRender() throws IOException {
+        Path out = dir.resolve("thumb.png");
+        assertThat(Cli.run(EXAMPLE, "-o", out.toString(), "--scale", "0.25").exitCode()).isZero();
+        BufferedImage picture = ImageIO.read(out.toFile());
+        assertThat(picture.getWidth()).isEqualTo(480);
+        int rgb = picture.getRGB(115, 122);
+        assertThat(rgb & 0xFFFFFF).as("the red sphere in the thumbnail").isEqualTo(0xFF0000);
+        Run run = Cli.run(EXAMPLE, "--scale", "0.25", "--explain", "115,122");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.out()).contains("of the 480 × 270 picture", "pixel colour: 255 0 0");
+        Path view = dir.resolve("view.png");
+        assertThat(Cli.run(EXAMPLE, "--scale", "0.25", "--view", "id", "-o", view.toString()).exitCode()).isZero();
+        assertThat(ImageIO.read(view.toFile()).getWidth()).isEqualTo(480);
+    }
+
+    @Test
+    void theTeachingOptionsRefuseSeveralScenesAndStandardInput() {
+        Run several = Cli.run(EXAMPLE, EXAMPLE, "--view", "id");
+        assertThat(several.exitCode()).isEqualTo(2);
+        assertThat(several.err()).contains("--view works on one scene file, but 2 were given");
+        Run stdin = Cli.run("-", "--explain", "1,1");
+        assertThat(stdin.exitCode()).isEqualTo(2);
+        assertThat(stdin.err()).contains("--explain needs a scene file; it cannot work on standard input");
+        Run watch = Cli.run(EXAMPLE, EXAMPLE, "--watch");
+        assertThat(watch.exitCode()).isEqualTo(2);
+        assertThat(watch.err()).contains("--watch works on one scene file");
+    }
 }
