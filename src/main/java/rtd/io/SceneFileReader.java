@@ -16,7 +16,8 @@ import java.util.Locale;
 
 /**
  * Reads a scene file into memory in bounded time and memory, whatever the file is: a file larger
- * than {@link SceneIO#MAX_SCENE_BYTES} is refused before it is read, and a stream that never ends
+ * than {@link SceneIO#MAX_SCENE_BYTES} is refused before it is read, one within it is read whole,
+ * and a stream that never ends
  * ({@code /dev/zero}, a pipe) is read in chunks, each checked as it arrives, so that reading stops
  * at the first chunk with a byte that is not text (a NUL byte, bytes that are not UTF-8), or once
  * the stream has grown past the limit. The parser then names that byte, with its line and column.
@@ -38,6 +39,15 @@ final class SceneFileReader {
         long size = Files.isRegularFile(path) ? Files.size(path) : -1; // devices, FIFOs: unknown
         if (size > limit) {
             throw tooLarge(path, "is " + bytes(size), limit);
+        }
+        if (size >= 0) {
+            // A regular file of known size is bounded already: read it in one go (the parser then
+            // checks its text in parallel parts), which is faster for a large scene than chunks.
+            byte[] bytes = Files.readAllBytes(path);
+            if (bytes.length > limit) { // it grew while we read it
+                throw tooLarge(path, "is larger than " + bytes(limit), limit);
+            }
+            return bytes;
         }
         try (InputStream in = Files.newInputStream(path)) {
             return read(path, in, size, (int) limit);
