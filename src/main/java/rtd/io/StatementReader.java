@@ -280,15 +280,8 @@ final class StatementReader {
             }
             values.add(value, tokenStart, pos);
             found++;
-            skipBlanks();
-            if (at('|')) {
-                pos++;
-            } else if (at(')')) {
-                pos++;
+            if (groupEndsAfterNumber(statement, group)) {
                 break;
-            } else {
-                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart),
-                        statement, group);
             }
         }
         if (found < group.size()) {
@@ -355,17 +348,20 @@ final class StatementReader {
             skipBlanks();
             float value = readNumber();
             values.addProperty(key, value, tokenStart, pos);
-            skipBlanks();
-            if (at('|')) {
-                pos++;
-            } else if (at(')')) {
-                pos++;
+            if (groupEndsAfterNumber(statement, group)) {
                 return;
-            } else {
-                throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart),
-                        statement, group);
             }
         }
+    }
+
+    /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
+    private boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
+        skipBlanks();
+        if (at('|') || at(')')) {
+            return bytes[pos++] == ')';
+        }
+        throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart),
+                statement, group);
     }
 
     /** A key of a properties group: its index among the group's keys; known and not given before. */
