@@ -27,8 +27,22 @@ final class ByteClasses {
         return (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z') || (b >= '0' && b <= '9') || b == '_';
     }
 
+    /** Whether {@code b} ends a number: a table, as it is asked for every byte of every number of the file. */
     static boolean isDelimiter(byte b) {
-        return b == '|' || b == ')' || b == '(' || b == ':' || b == '\n' || isBlank(b);
+        return DELIMITERS[b & 0xFF];
+    }
+
+    /**
+     * {@link #isDelimiter} for each byte value: one look-up instead of ten comparisons for each
+     * digit of the seven million numbers of a million spheres.
+     */
+    private static final boolean[] DELIMITERS = new boolean[256];
+
+    static {
+        for (int value = 0; value < 256; value++) {
+            byte b = (byte) value;
+            DELIMITERS[value] = b == '|' || b == ')' || b == '(' || b == ':' || b == '\n' || isBlank(b);
+        }
     }
 
     /**

@@ -7,7 +7,6 @@ import java.nio.charset.CharsetDecoder;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
-import java.util.stream.IntStream;
 
 /**
  * Finds the first byte of a scene file that is not UTF-8 text (a NUL byte, or bytes that are
@@ -26,22 +25,8 @@ final class NotText {
     private NotText() {
     }
 
-    /**
-     * The offset of the first NUL byte or invalid UTF-8 sequence, or −1, checked part by part
-     * in parallel. A part starts after a line break, so no UTF-8 sequence spans two parts.
-     */
-    static int firstBadByte(byte[] bytes, int[] cuts) {
-        if (cuts.length == 2) {
-            return firstBadByte(bytes, cuts[0], cuts[1]);
-        }
-        return IntStream.range(0, cuts.length - 1).parallel()
-                .map(k -> firstBadByte(bytes, cuts[k], cuts[k + 1]))
-                .filter(bad -> bad >= 0)
-                .findFirst().orElse(-1);
-    }
-
     /** The first bad byte of {@code bytes[from, to)}: the first NUL byte, unless an invalid UTF-8 sequence comes before it. */
-    private static int firstBadByte(byte[] bytes, int from, int to) {
+    static int firstBadByte(byte[] bytes, int from, int to) {
         boolean ascii = true;
         int nul = to;
         for (int i = from; i < to; i++) {

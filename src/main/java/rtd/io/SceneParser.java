@@ -38,6 +38,9 @@ final class SceneParser {
     /** The size of the parts a large file is cut into: big enough to be worth a task. */
     private static final int PART_SIZE = 4 << 20;
 
+    /** Fewer bytes than any line that makes an object, {@code sphere:(0|0|0):(1):(0|0|0)} and its line break. */
+    private static final int SHORTEST_OBJECT = 24;
+
     private static final String CAMERA_EXAMPLE = "orthographic_camera:(0|0|20):(0|0|-1):(50)";
 
     private SceneParser() {
@@ -53,11 +56,13 @@ final class SceneParser {
         byte[] bytes = source.bytes();
         int start = hasByteOrderMark(bytes) ? 3 : 0;
         int[] cuts = cuts(bytes, start, partSize);
-        int bad = NotText.firstBadByte(bytes, cuts);
-        if (bad >= 0) {
-            throw new SceneException(List.of(NotText.error(source, start, bad)), false);
+        TextScan[] scans = scan(bytes, cuts);
+        for (TextScan scan : scans) {
+            if (scan.badByte() >= 0) {
+                throw new SceneException(List.of(NotText.error(source, start, scan.badByte())), false);
+            }
         }
-        int[] firstLines = firstLines(bytes, cuts);
+        int[] firstLines = firstLines(scans);
         // The first part, alone and first: it holds the file's first lines, most often its
         // comments, ambient and camera. Read later, they would meet a reader that the JIT has
         // compiled for sphere lines only, and it would throw that away and compile it again.
@@ -70,7 +75,7 @@ final class SceneParser {
             // A part that starts inside a /* comment took its lines for statements. Such a file
             // has a mistake (the /*), so its speed matters less than its messages being those
             // of one part: it is read again in one go.
-            parts = List.of(readPart(source, new int[] {start, bytes.length}, new int[] {1}, 0));
+            parts = List.of(readPart(source, new int[] {start, bytes.length}, new int[] {1, firstLines[cuts.length - 1]}, 0));
         }
         return join(source, parts);
     }
@@ -93,7 +98,11 @@ final class SceneParser {
     }
 
     private static ScenePart readPart(SourceText source, int[] cuts, int[] firstLines, int k) {
-        ScenePart part = new ScenePart();
+        // Most lines of a large file make one object, so the part's list is made that long at
+        // once (growing it line by line would copy it a dozen times); a blank line makes none,
+        // and the shortest line that makes one is longer than SHORTEST_OBJECT bytes.
+        int lines = firstLines[k + 1] - firstLines[k] + 1;
+        ScenePart part = new ScenePart(Math.min(lines, (cuts[k + 1] - cuts[k]) / SHORTEST_OBJECT + 1));
         new StatementReader(source, cuts[k], cuts[k + 1], firstLines[k], part).readAll();
         return part;
     }
@@ -125,22 +134,25 @@ final class SceneParser {
         return array;
     }
 
-    /** The number of the first line of each part. */
-    private static int[] firstLines(byte[] bytes, int[] cuts) {
+    /**
+     * Each part's {@link TextScan}, in parallel if there are several. Only a part that is text
+     * is read, so its first line number is known before it is.
+     */
+    private static TextScan[] scan(byte[] bytes, int[] cuts) {
         if (onePart(cuts)) {
-            return new int[] {1};
+            return new TextScan[] {TextScan.of(bytes, cuts[0], cuts[1])};
         }
-        int[] breaks = IntStream.range(0, cuts.length - 1).parallel().map(k -> {
-            int n = 0;
-            for (int i = cuts[k]; i < cuts[k + 1]; i++) {
-                n += bytes[i] == '\n' ? 1 : bytes[i] == '\r' && ByteClasses.endsLine(bytes, i) ? 1 : 0;
-            }
-            return n;
-        }).toArray();
-        int[] firstLines = new int[breaks.length];
+        return IntStream.range(0, cuts.length - 1).parallel()
+                .mapToObj(k -> TextScan.of(bytes, cuts[k], cuts[k + 1]))
+                .toArray(TextScan[]::new);
+    }
+
+    /** The number of the first line of each part, and last the number a line after the last part would have. */
+    private static int[] firstLines(TextScan[] scans) {
+        int[] firstLines = new int[scans.length + 1];
         firstLines[0] = 1;
-        for (int k = 1; k < breaks.length; k++) {
-            firstLines[k] = firstLines[k - 1] + breaks[k - 1];
+        for (int k = 1; k <= scans.length; k++) {
+            firstLines[k] = firstLines[k - 1] + scans[k - 1].lineBreaks();
         }
         return firstLines;
     }
@@ -229,7 +241,11 @@ final class SceneParser {
      */
     private static List<IGeometry> objects(List<ScenePart> parts, Map<String, Material> materials, Set<String> broken,
             List<ScenePart.Found> errors) {
-        List<IGeometry> objects = new ArrayList<>();
+        int count = 0;
+        for (ScenePart part : parts) {
+            count += part.objects.size() + part.pending.size(); // a pending mesh may make more
+        }
+        List<IGeometry> objects = new ArrayList<>(count);
         Statement.Output out = new ObjectsOutput(objects);
         for (ScenePart part : parts) {
             int next = 0;
@@ -238,7 +254,7 @@ final class SceneParser {
                 next = pending.index();
                 build(pending.values(), materials, broken, out, errors);
             }
-            objects.addAll(part.objects.subList(next, part.objects.size()));
+            objects.addAll(part.objects.subList(next, part.objects.size())); // copied in bulk: early in a run, faster than one by one
         }
         return objects;
     }

@@ -37,7 +37,7 @@ final class ScenePart {
     record Found(int line, int column, SceneError error) {
     }
 
-    final List<IGeometry> objects = new ArrayList<>();
+    final List<IGeometry> objects;
     final List<Pending> pending = new ArrayList<>();
     final List<Located<Color>> ambients = new ArrayList<>();
     final List<Located<ICamera>> cameras = new ArrayList<>();
@@ -56,6 +56,11 @@ final class ScenePart {
     int lineNumbers;
     /** Whether the part's last line is inside a {@code /*} comment that goes on in the next part. */
     boolean endsInBlockComment;
+
+    /** A part for about {@code expectedObjects} objects; more are fine. */
+    ScenePart(int expectedObjects) {
+        objects = new ArrayList<>(expectedObjects);
+    }
 
     /** Keeps an object that names a material, at its place among the part's objects. */
     void addPending(GroupValues values) {
