@@ -11,37 +11,12 @@ import rtd.math.Vector3f;
  *
  * <p>{@link #intersect} solves the quadratic equation 3.5 in single precision, exactly in the
  * order of equations 3.6 to 3.8, so that it draws what the paper's program draws.
- *
- * <p>It keeps the centre's coordinates in its own fields, not as a {@link Vector3f} beside it: a
- * scene of a million spheres then holds two objects of 64 bytes per sphere instead of three of
- * 80, less memory and a third fewer objects for the garbage collector to copy while the file is
- * read. {@link #center()} gives the centre as the vector it is; where it is used at once, as in
- * {@link #intersect}, the JIT's escape analysis makes no object for it. (The colour stays an
- * object: shading asks for it at every hit, through calls the JIT does not see through.)
- *
- * @param centerX  the x of the centre M
- * @param centerY  the y of the centre M
- * @param centerZ  the z of the centre M
- * @param radius   r, greater than 0
- * @param color    the flat colour
- * @param material the finish
  */
-public record Sphere(float centerX, float centerY, float centerZ, float radius, Color color, Material material)
-        implements IGeometry {
-
-    /** A sphere around {@code center}, of {@code color} and {@code material}. */
-    public Sphere(Vector3f center, float radius, Color color, Material material) {
-        this(center.x(), center.y(), center.z(), radius, color, material);
-    }
+public record Sphere(Vector3f center, float radius, Color color, Material material) implements IGeometry {
 
     /** A sphere with the default finish, as the paper's scene file gives one. */
     public Sphere(Vector3f center, float radius, Color color) {
         this(center, radius, color, Material.DEFAULT);
-    }
-
-    /** The centre M. */
-    public Vector3f center() {
-        return new Vector3f(centerX, centerY, centerZ);
     }
 
     /**
@@ -51,7 +26,7 @@ public record Sphere(float centerX, float centerY, float centerZ, float radius, 
     @Override
     public Intersection intersect(Ray ray) {
         Vector3f direction = ray.direction();
-        Vector3f centerToOrigin = ray.origin().subtract(center());            // O − M
+        Vector3f centerToOrigin = ray.origin().subtract(center);            // O − M
         float a = direction.dot(direction);                                  // equation 3.6
         float b = 2 * direction.dot(centerToOrigin);                        // equation 3.7
         float c = centerToOrigin.dot(centerToOrigin) - radius * radius;      // equation 3.8
@@ -79,7 +54,7 @@ public record Sphere(float centerX, float centerY, float centerZ, float radius, 
     /** {@code (P − M) / r}. */
     @Override
     public Vector3f normalAt(Vector3f point) {
-        return point.subtract(center()).divide(radius);
+        return point.subtract(center).divide(radius);
     }
 
     /**
@@ -97,7 +72,7 @@ public record Sphere(float centerX, float centerY, float centerZ, float radius, 
      */
     @Override
     public BoundingBox bounds() {
-        return BoundingBox.around(radius * (1 + 2e-3), center());
+        return BoundingBox.around(radius * (1 + 2e-3), center);
     }
 
     /** {@code 2e-6·L + min(ROUNDING_CONE·L, (18.75u/2r)·L²)}: see {@link #bounds}. */
@@ -109,7 +84,7 @@ public record Sphere(float centerX, float centerY, float centerZ, float radius, 
     /** The same shape in the same place, whatever its colour and finish. */
     @Override
     public Object sameTest() {
-        return List.of(center(), radius);
+        return List.of(center, radius);
     }
 
     @Override
