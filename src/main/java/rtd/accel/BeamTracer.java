@@ -229,8 +229,9 @@ final class BeamTracer {
         }
     }
 
+    /** As {@link NearestHit#worthVisiting}, for the farthest of the rays' nearest hits. */
     private boolean worthVisiting(float entry) {
-        return entry != MISS && entry <= farthestSkip;
+        return entry <= FastMath.min(farthestSkip, Float.MAX_VALUE);
     }
 
     /** The rounding margin of {@code node}'s objects for rays not beyond {@code reach}: the same for every ray of the beam. */
@@ -299,6 +300,6 @@ final class BeamTracer {
             leave = FastMath.min(leave, FastMath.max(t0, t1));
         }
         exit = leave;
-        return enter <= leave && leave >= 0 ? enter : MISS;
+        return FastMath.max(enter, 0) <= leave ? enter : MISS; // as NearestHit#entry
     }
 }

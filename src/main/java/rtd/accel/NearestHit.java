@@ -164,8 +164,9 @@ final class NearestHit {
 
     /**
      * The slab test of the box of {@code node} grown by {@code grow}: the t at which the ray
-     * enters it, or {@link #MISS}; negative when the origin lies inside. {@link #exit} gives
-     * where it leaves.
+     * enters it, or {@link #MISS}; negative when the origin lies inside; NaN (which
+     * {@link #worthVisiting} refuses, as it does a miss) for a ray running exactly along a grown
+     * side. {@link #exit} gives where it leaves.
      */
     float entry(int node, float grow) {
         float[] bounds = bvh.bounds;
@@ -178,7 +179,7 @@ final class NearestHit {
         float z1 = (bounds[at + 5] + grow - oz) * iz;
         float enter = FastMath.max(FastMath.max(FastMath.min(x0, x1), FastMath.min(y0, y1)), FastMath.min(z0, z1));
         exit = FastMath.min(FastMath.min(FastMath.max(x0, x1), FastMath.max(y0, y1)), FastMath.max(z0, z1));
-        return enter <= exit && exit >= 0 ? enter : MISS;
+        return FastMath.max(enter, 0) <= exit ? enter : MISS; // entered no later than left, and not left behind
     }
 
     /** Where the ray leaves the box of the last {@link #entry}. */
@@ -186,9 +187,13 @@ final class NearestHit {
         return exit;
     }
 
-    /** Whether the ray enters a box ({@code entry} finite) no farther than the nearest hit allows. */
+    /**
+     * Whether the ray enters a box ({@code entry} finite) no farther than the nearest hit allows.
+     * One comparison, as a missed box's entry (infinite) lies beyond the largest float: a branch
+     * that the first rays never take would make the JIT compile the walk again when one does.
+     */
     boolean worthVisiting(float entry) {
-        return entry != MISS && entry <= skipBeyond;
+        return entry <= FastMath.min(skipBeyond, Float.MAX_VALUE);
     }
 
     /** Boxes that the ray enters beyond this t cannot hold a nearer hit (infinite while there is none). */
