@@ -133,8 +133,9 @@ final class BeamTracer {
         long[] tests = new long[bvh.leaves.kindNames.length];
         long unbounded = 0;
         for (NearestHit hit : hits) {
+            long[] counts = hit.tests();
             for (int k = 0; k < tests.length; k++) {
-                tests[k] += hit.tests()[k];
+                tests[k] += counts[k];
             }
             unbounded += hit.unboundedTests();
         }

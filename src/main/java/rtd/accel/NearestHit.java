@@ -291,10 +291,7 @@ final class NearestHit {
 
     /** Intersection tests run for this object's rays so far, by kind of the tree's objects. */
     long[] tests() {
-        if (!severalKinds && tests.length == 1) {
-            tests[0] = treeTests;
-        }
-        return tests;
+        return tests.length == 1 ? new long[] {treeTests} : tests; // one kind: counted per leaf only
     }
 
     /** All intersection tests run for this object's rays so far: a running count, read before and after a ray. */
