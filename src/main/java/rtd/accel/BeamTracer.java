@@ -40,6 +40,14 @@ final class BeamTracer {
     private final float[] centre = new float[3];
     private final float[] half = new float[3];
     private final float[] inverse = new float[3];
+    /**
+     * Per axis, how much to grow every box for this beam, before the objects' rounding: the
+     * half size and the allowance for rounding, taken for the largest numbers of the tree (its
+     * root's box holds every box), so that a box's own numbers need not be looked at.
+     */
+    private final float[] pad = new float[3];
+    /** Per axis, whether the rays do not move along it (1 / direction is infinite). */
+    private final boolean[] still = new boolean[3];
     private float length;
     /** The exit of the grown box of the last {@link #grownEntry}. */
     private float exit;
@@ -125,8 +133,9 @@ final class BeamTracer {
         long[] tests = new long[bvh.leaves.kindNames.length];
         long unbounded = 0;
         for (NearestHit hit : hits) {
+            long[] counts = hit.tests();
             for (int k = 0; k < tests.length; k++) {
-                tests[k] += hit.tests()[k];
+                tests[k] += counts[k];
             }
             unbounded += hit.unboundedTests();
         }
@@ -150,6 +159,15 @@ final class BeamTracer {
         inverse[0] = 1f / beam.dx;
         inverse[1] = 1f / beam.dy;
         inverse[2] = 1f / beam.dz;
+        float[] root = bvh.bounds;
+        for (int k = 0; k < 3; k++) {
+            float largest = bvh.hasTree() ? Math.max(Math.abs(root[k]), Math.abs(root[k + 3])) : 0;
+            pad[k] = half[k] + ROUNDING * (2 * largest + Math.abs(centre[k]));
+            still[k] = Float.isInfinite(inverse[k]);
+            if (!Float.isFinite(pad[k])) {
+                return false;
+            }
+        }
         length = (float) Math.sqrt((beam.dx * beam.dx) + (beam.dy * beam.dy) + (beam.dz * beam.dz));
         return true;
     }
@@ -212,8 +230,9 @@ final class BeamTracer {
         }
     }
 
+    /** As {@link NearestHit#worthVisiting}, for the farthest of the rays' nearest hits. */
     private boolean worthVisiting(float entry) {
-        return entry != MISS && entry <= farthestSkip;
+        return entry <= FastMath.min(farthestSkip, Float.MAX_VALUE);
     }
 
     /** The rounding margin of {@code node}'s objects for rays not beyond {@code reach}: the same for every ray of the beam. */
@@ -261,28 +280,27 @@ final class BeamTracer {
 
     /**
      * The slab test of the middle ray against box {@code i} of {@code boxes}, grown by the beam's
-     * half size and by {@code grow}; {@link #exit} is left where it leaves.
+     * {@link #pad} and by {@code grow}; {@link #exit} is left where it leaves.
      */
     private float grownEntry(float[] boxes, int i, float grow) {
         float enter = Float.NEGATIVE_INFINITY;
         float leave = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
-            float min = boxes[6 * i + k];
-            float max = boxes[6 * i + 3 + k];
-            float g = half[k] + grow + ROUNDING * (Math.abs(min) + Math.abs(max) + Math.abs(centre[k]));
-            if (Float.isInfinite(inverse[k])) { // the rays do not move along axis k
-                if (min - g > centre[k] || max + g < centre[k]) {
+            float low = boxes[6 * i + k] - pad[k] - grow;
+            float high = boxes[6 * i + 3 + k] + pad[k] + grow;
+            if (still[k]) { // the rays do not move along axis k
+                if (low > centre[k] || high < centre[k]) {
                     exit = MISS;
                     return MISS;
                 }
                 continue;
             }
-            float t0 = (min - g - centre[k]) * inverse[k];
-            float t1 = (max + g - centre[k]) * inverse[k];
+            float t0 = (low - centre[k]) * inverse[k];
+            float t1 = (high - centre[k]) * inverse[k];
             enter = FastMath.max(enter, FastMath.min(t0, t1));
             leave = FastMath.min(leave, FastMath.max(t0, t1));
         }
         exit = leave;
-        return enter <= leave && leave >= 0 ? enter : MISS;
+        return FastMath.max(enter, 0) <= leave ? enter : MISS; // as NearestHit#entry
     }
 }

@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.Arrays;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Plane;
 import rtd.math.Ray;
@@ -32,6 +33,8 @@ final class NearestHit {
     private static final float SKIP_MARGIN = 1e-5f;
     /** The entry of a box the ray misses. */
     static final float MISS = Float.POSITIVE_INFINITY;
+    /** The {@link #depthKey} that no hit beats: an infinite distance ties with it at best, and loses. */
+    private static final long NO_HIT = depthKey(Float.POSITIVE_INFINITY, 0);
 
     private final Bvh bvh;
     private final LeafObjects leaves;
@@ -51,18 +54,42 @@ final class NearestHit {
     private int best;
     private float bestT;
     private float bestDistance;
+    /** The nearest hit's {@link #depthKey}: a hit with a smaller key wins the depth test. */
+    private long bestKey;
     private float skipBeyond;
     /** The exit of the box of the last {@link #entry}. */
     private float exit;
+    /** The tests of the tree's objects by kind; counted one by one only if the tree has more than one kind. */
     private final long[] tests;
+    private final boolean severalKinds;
+    /** The intersection tests of the tree's objects so far. */
+    private long treeTests;
     private long unboundedTests;
-    /** All intersection tests so far, of every kind: a running count, read before and after a ray. */
-    private long testsRun;
+    /** The numbers of the planes among {@link Bvh#unbounded}: Q and n, six floats each; NaN for other shapes. */
+    private final float[] planes;
 
     NearestHit(Bvh bvh) {
         this.bvh = bvh;
         this.leaves = bvh.leaves;
         this.tests = new long[leaves.kindNames.length];
+        this.severalKinds = tests.length > 1;
+        this.planes = planeNumbers(bvh.unbounded);
+    }
+
+    /** Each plane's Q and n, in a row, so that every ray's plane tests read numbers side by side. */
+    private static float[] planeNumbers(IGeometry[] objects) {
+        float[] numbers = new float[6 * objects.length];
+        for (int i = 0; i < objects.length; i++) {
+            if (objects[i] instanceof Plane plane) {
+                Vector3f q = plane.point();
+                Vector3f n = plane.normal();
+                float[] values = {q.x(), q.y(), q.z(), n.x(), n.y(), n.z()};
+                System.arraycopy(values, 0, numbers, 6 * i, 6);
+            } else {
+                Arrays.fill(numbers, 6 * i, 6 * i + 6, Float.NaN);
+            }
+        }
+        return numbers;
     }
 
     /** Starts on a new ray {@code O + t·D}, with no hit yet. */
@@ -82,6 +109,7 @@ final class NearestHit {
         best = -1;
         bestT = Float.NaN;
         bestDistance = Float.POSITIVE_INFINITY;
+        bestKey = NO_HIT;
         skipBeyond = Float.POSITIVE_INFINITY;
     }
 
@@ -92,6 +120,7 @@ final class NearestHit {
     void limitTo(float distance) {
         float t = distance / length;
         bestDistance = distance;
+        bestKey = distance >= 0 ? depthKey(distance, 0) : Long.MIN_VALUE; // a hit at the limit, or beyond, loses
         skipBeyond = skipFor(t);
     }
 
@@ -135,8 +164,9 @@ final class NearestHit {
 
     /**
      * The slab test of the box of {@code node} grown by {@code grow}: the t at which the ray
-     * enters it, or {@link #MISS}; negative when the origin lies inside. {@link #exit} gives
-     * where it leaves.
+     * enters it, or {@link #MISS}; negative when the origin lies inside; NaN (which
+     * {@link #worthVisiting} refuses, as it does a miss) for a ray running exactly along a grown
+     * side. {@link #exit} gives where it leaves.
      */
     float entry(int node, float grow) {
         float[] bounds = bvh.bounds;
@@ -149,7 +179,7 @@ final class NearestHit {
         float z1 = (bounds[at + 5] + grow - oz) * iz;
         float enter = FastMath.max(FastMath.max(FastMath.min(x0, x1), FastMath.min(y0, y1)), FastMath.min(z0, z1));
         exit = FastMath.min(FastMath.min(FastMath.max(x0, x1), FastMath.max(y0, y1)), FastMath.max(z0, z1));
-        return enter <= exit && exit >= 0 ? enter : MISS;
+        return FastMath.max(enter, 0) <= exit ? enter : MISS; // entered no later than left, and not left behind
     }
 
     /** Where the ray leaves the box of the last {@link #entry}. */
@@ -157,9 +187,13 @@ final class NearestHit {
         return exit;
     }
 
-    /** Whether the ray enters a box ({@code entry} finite) no farther than the nearest hit allows. */
+    /**
+     * Whether the ray enters a box ({@code entry} finite) no farther than the nearest hit allows.
+     * One comparison, as a missed box's entry (infinite) lies beyond the largest float: a branch
+     * that the first rays never take would make the JIT compile the walk again when one does.
+     */
     boolean worthVisiting(float entry) {
-        return entry != MISS && entry <= skipBeyond;
+        return entry <= FastMath.min(skipBeyond, Float.MAX_VALUE);
     }
 
     /** Boxes that the ray enters beyond this t cannot hold a nearer hit (infinite while there is none). */
@@ -171,13 +205,21 @@ final class NearestHit {
     void testLeaf(int leaf) {
         int first = bvh.nodes[2 * leaf];
         int end = first + bvh.nodes[2 * leaf + 1];
+        treeTests += end - first;
+        if (severalKinds) {
+            countKinds(first, end);
+        }
         for (int i = first; i < end; i++) {
-            tests[leaves.kinds[i]]++;
-            testsRun++;
             float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);
             if (t >= 0) { // false for NaN: no hit
                 consider(leaves.fileOrder[i], t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
             }
+        }
+    }
+
+    private void countKinds(int first, int end) {
+        for (int i = first; i < end; i++) {
+            tests[leaves.kinds[i]]++;
         }
     }
 
@@ -188,14 +230,13 @@ final class NearestHit {
             return;
         }
         unboundedTests++;
-        testsRun += objects.length;
         Ray ray = null; // made only for a shape without a test on numbers
         for (int i = 0; i < objects.length; i++) {
             float t;
-            if (objects[i] instanceof Plane plane) {
-                Vector3f q = plane.point();
-                Vector3f n = plane.normal();
-                t = Plane.hit(q.x(), q.y(), q.z(), n.x(), n.y(), n.z(), ox, oy, oz, dx, dy, dz);
+            int at = 6 * i;
+            if (planes[at] == planes[at]) { // a plane: its numbers are not NaN
+                t = Plane.hit(planes[at], planes[at + 1], planes[at + 2], planes[at + 3], planes[at + 4], planes[at + 5],
+                        ox, oy, oz, dx, dy, dz);
             } else {
                 ray = ray != null ? ray : new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
                 t = objects[i].intersect(ray).t();
@@ -208,12 +249,24 @@ final class NearestHit {
 
     /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file. */
     private void consider(int index, float t, float distance) {
-        if (distance < bestDistance || distance == bestDistance && index < best) {
+        long key = depthKey(distance, index);
+        if (key < bestKey) {
             best = index;
             bestT = t;
             bestDistance = distance;
+            bestKey = key;
             skipBeyond = skipFor(t);
         }
+    }
+
+    /**
+     * The depth test's order as one number, smaller wins: the distance, then the place in the
+     * file. The bits of a float {@code ≥ 0} (or NaN, which is larger than all) order as its values
+     * do, so they go first; the place breaks ties. One comparison instead of two also keeps the
+     * JIT from compiling the hot loop anew the first time two objects tie.
+     */
+    private static long depthKey(float distance, int index) {
+        return ((long) Float.floatToRawIntBits(distance) << 32) | index;
     }
 
     /** Boxes entered beyond a hit at {@code t}, by more than rounding can explain, cannot hold a nearer one. */
@@ -238,12 +291,12 @@ final class NearestHit {
 
     /** Intersection tests run for this object's rays so far, by kind of the tree's objects. */
     long[] tests() {
-        return tests;
+        return tests.length == 1 ? new long[] {treeTests} : tests; // one kind: counted per leaf only
     }
 
-    /** All intersection tests run for this object's rays so far. */
+    /** All intersection tests run for this object's rays so far: a running count, read before and after a ray. */
     long testsRun() {
-        return testsRun;
+        return treeTests + unboundedTests * bvh.unbounded.length;
     }
 
     /** How many rays tested every object without a box. */
