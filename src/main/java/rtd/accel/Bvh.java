@@ -77,20 +77,32 @@ public final class Bvh {
     private static float[] rounding(int[] nodes, IGeometry[] objects) {
         float[] rounding = new float[nodes.length];
         for (int node = nodes.length / 2 - 1; node >= 0; node--) {
-            Rounding most = new Rounding(0, 0);
             if (nodes[2 * node + 1] == INNER) {
                 int child = nodes[2 * node];
-                most = new Rounding(Math.max(rounding[2 * child], rounding[2 * child + 2]),
-                        Math.max(rounding[2 * child + 1], rounding[2 * child + 3]));
+                rounding[2 * node] = Math.max(rounding[2 * child], rounding[2 * child + 2]);
+                rounding[2 * node + 1] = Math.max(rounding[2 * child + 1], rounding[2 * child + 3]);
             } else {
-                for (int i = nodes[2 * node]; i < nodes[2 * node] + nodes[2 * node + 1]; i++) {
-                    most = most.max(objects[i].rounding());
-                }
+                leafRounding(objects, nodes[2 * node], nodes[2 * node + 1], rounding, 2 * node);
             }
-            rounding[2 * node] = most.linear();
-            rounding[2 * node + 1] = most.quadratic();
         }
         return rounding;
+    }
+
+    /**
+     * The largest rounding of {@code count} objects from {@code first}, as {@link Rounding#max}
+     * finds it, written to {@code into[at]} (linear) and {@code into[at + 1]} (quadratic): two
+     * numbers kept apart, not a record per object.
+     */
+    private static void leafRounding(IGeometry[] objects, int first, int count, float[] into, int at) {
+        float linear = 0;
+        float quadratic = 0;
+        for (int i = first; i < first + count; i++) {
+            Rounding own = objects[i].rounding();
+            linear = Math.max(linear, own.linear());
+            quadratic = Math.max(quadratic, own.quadratic());
+        }
+        into[at] = linear;
+        into[at + 1] = quadratic;
     }
 
     /** Builds the hierarchy for {@code scene} with all cores. */

@@ -8,9 +8,7 @@ import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
 import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
-import rtd.geometry.BoundingBox;
 import rtd.geometry.IGeometry;
-import rtd.math.Vector3f;
 
 /**
  * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH).
@@ -20,14 +18,15 @@ import rtd.math.Vector3f;
  * where a child's cost is its box's surface area (how likely a ray passes through it) times
  * its object count. A node becomes a leaf when no split is cheaper than testing its objects.
  *
- * <p>Large subtrees are built in parallel. The tree does not depend on the number of threads:
- * each subtree owns a range of node numbers reserved in advance (a subtree of n objects needs
- * at most 2n − 1 nodes), and at the end the used nodes are numbered anew, depth first
- * ({@link Compaction}).
+ * <p>Large subtrees are built in parallel, and the nodes of very many objects near the root
+ * bin and partition their objects in chunks side by side ({@link ChunkedPasses}). The tree does
+ * not depend on the number of threads: each subtree owns a range of node numbers reserved in
+ * advance (a subtree of n objects needs at most 2n − 1 nodes), the chunks depend only on the
+ * node, and at the end the used nodes are numbered anew, depth first ({@link Compaction}).
  */
 final class BvhBuilder {
 
-    private static final int BINS = 16;
+    private static final int BINS = SahBins.COUNT;
     private static final int MAX_LEAF_SIZE = 16;
     /** Past this depth the builder halves by count, which bounds the depth for any input. */
     private static final int MAX_SAH_DEPTH = 48;
@@ -41,6 +40,11 @@ final class BvhBuilder {
      * fewer objects on the calling thread alone ({@link Bvh#build}).
      */
     static final int PARALLEL_THRESHOLD = 20_000;
+    /**
+     * Nodes with at least this many objects measure, bin and partition them in chunks
+     * ({@link ChunkedPasses}), on any number of threads, so that the tree is the same for any.
+     */
+    private static final int CHUNKED_THRESHOLD = 4 * ChunkedPasses.CHUNK;
     private static final int INNER = Bvh.INNER;
 
     private final List<IGeometry> objects;
@@ -49,20 +53,21 @@ final class BvhBuilder {
     /** The objects without one (planes), in file order: {@code order[count, objects.size())}. */
     private int[] unbounded;
     /*
-     * The objects' data, kept in the order of `order` and swapped along with it, so that every
+     * The objects' boxes, kept in the order of `order` and swapped along with it, so that every
      * pass over a node's objects reads memory front to back (random reads into these arrays
-     * made building a million objects ten times slower).
+     * made building a million objects ten times slower). An object's centre, by which it is
+     * sorted, is computed from its box where needed: fewer numbers to move than to keep.
      */
     /** Places in {@code objects}, reordered so that each node's objects are adjacent. */
     private final int[] order;
     /** Per place in {@code order}: the object's box, min x, y, z, max x, y, z. */
     private final float[] boxes;
-    /** Per place in {@code order}: the centre of the object's box, x, y, z. */
-    private final float[] centres;
     /** Node boxes and contents as in {@link Bvh}, at the reserved node numbers. */
     private final float[] bounds;
     private final int[] nodes;
     private final ForkJoinPool pool;
+    /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects; {@code null} if there are none. */
+    private final ChunkedPasses chunked;
     private int maxDepth;
 
     /**
@@ -76,7 +81,6 @@ final class BvhBuilder {
         this.pool = pool;
         this.order = new int[count];
         this.boxes = new float[6 * count];
-        this.centres = new float[3 * count];
         if (pool == null) { // no lambda either: its first use costs more than a small scene's whole build
             for (int i = 0; i < count; i++) {
                 measureObject(i);
@@ -88,6 +92,7 @@ final class BvhBuilder {
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
         this.nodes = new int[2 * capacity];
+        this.chunked = count >= CHUNKED_THRESHOLD ? new ChunkedPasses(order, boxes, count, pool) : null;
     }
 
     /** Whether this builder works on a pool of threads. */
@@ -118,7 +123,6 @@ final class BvhBuilder {
                 if (kept != i) {
                     order[kept] = order[i];
                     System.arraycopy(boxes, 6 * i, boxes, 6 * kept, 6);
-                    System.arraycopy(centres, 3 * i, centres, 3 * kept, 3);
                 }
                 kept++;
             } else {
@@ -150,25 +154,16 @@ final class BvhBuilder {
         return count;
     }
 
-    /** Puts object {@code i}'s box and centre in place {@code i}. */
+    /** Puts object {@code i}'s box in place {@code i}. */
     private void measureObject(int i) {
-        BoundingBox box = objects.get(i).bounds();
-        put(boxes, 6 * i, box.min());
-        put(boxes, 6 * i + 3, box.max());
-        put(centres, 3 * i, box.centre());
+        objects.get(i).putBounds(boxes, 6 * i);
         order[i] = i;
-    }
-
-    private static void put(float[] array, int at, Vector3f v) {
-        array[at] = v.x();
-        array[at + 1] = v.y();
-        array[at + 2] = v.z();
     }
 
     /** Builds the tree; afterwards {@link #order} and {@link #boxes} are in leaf order. */
     void build() {
         maxDepth = pool == null
-                ? buildNode(0, 1, 0, count, 0, null, new SahBins(BINS))
+                ? buildNode(0, 1, 0, count, 0, null, new SahBins())
                 : pool.invoke(new Subtree(0, 1, 0, count, 0, null));
     }
 
@@ -218,7 +213,7 @@ final class BvhBuilder {
 
         @Override
         protected Integer compute() {
-            return buildNode(node, free, start, end, depth, extent, new SahBins(BINS));
+            return buildNode(node, free, start, end, depth, extent, new SahBins());
         }
     }
 
@@ -258,17 +253,21 @@ final class BvhBuilder {
 
     /** The extent of {@code order[start, end)}, by one pass over the objects. */
     private Extent measure(int start, int end) {
+        if (end - start >= CHUNKED_THRESHOLD) {
+            return chunked.measure(start, end);
+        }
         Extent extent = Extent.empty();
         for (int i = start; i < end; i++) {
-            extent.add(boxes, 6 * i, centres, 3 * i);
+            extent.add(boxes, 6 * i);
         }
         return extent;
     }
 
     /**
      * Finds the cheapest split by the SAH and partitions {@code order[start, end)} by it.
-     * Returns {@code null} when a leaf is cheaper. Each child's extent is the union of its
-     * bins', exactly what a pass over its objects would measure.
+     * Returns {@code null} when a leaf is cheaper. Each child's box is the union of its bins',
+     * and its box of centres is found by the partition: exactly what a pass over its objects
+     * would measure.
      */
     private Split splitBySah(Extent extent, int start, int end, SahBins bins) {
         int n = end - start;
@@ -277,11 +276,17 @@ final class BvhBuilder {
         if (axis < 0) {
             return n > MAX_LEAF_SIZE ? splitByCount(start, end) : null; // all centres coincide
         }
+        if (alwaysLeaf(n, extent)) {
+            return null;
+        }
         float lo = centreBox[axis];
         float scale = BINS / (centreBox[axis + 3] - lo);
         bins.clear();
-        for (int i = start; i < end; i++) {
-            bins.add(binOf(centres[3 * i + axis], lo, scale), boxes, 6 * i, centres, 3 * i);
+        SahBins[] chunks = null;
+        if (n >= CHUNKED_THRESHOLD) {
+            chunks = chunked.bin(start, end, axis, lo, scale, bins);
+        } else {
+            bins.add(boxes, start, end, axis, lo, scale);
         }
         float[] costs = bins.splitCosts();
         float bestCost = Float.POSITIVE_INFINITY;
@@ -297,11 +302,26 @@ final class BvhBuilder {
         if (splitCost >= leafCost && n <= MAX_LEAF_SIZE) {
             return null;
         }
-        int middle = partition(start, end, axis, bestBin, lo, scale);
+        Extent left = bins.box(0, bestBin + 1);
+        Extent right = bins.box(bestBin + 1, BINS);
+        int middle = chunks != null
+                ? chunked.partition(start, end, axis, lo, scale, bestBin, chunks, left, right)
+                : partition(start, end, axis, bestBin, lo, scale, left, right);
         if (middle == start || middle == end) {
             return splitByCount(start, end);
         }
-        return new Split(middle, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS));
+        return new Split(middle, left, right);
+    }
+
+    /**
+     * Whether a node of {@code n} objects is a leaf whatever its bins: with no more objects than
+     * a visit costs and a box of finite, nonzero area, a split costs at least
+     * {@link #TRAVERSAL_COST} ≥ n, so {@link #splitBySah} would choose the leaf. Half the nodes
+     * are this small, and need not be binned.
+     */
+    private static boolean alwaysLeaf(int n, Extent extent) {
+        float area = SahBins.area(extent.box(), 0);
+        return n <= TRAVERSAL_COST && area > 0 && area < Float.POSITIVE_INFINITY;
     }
 
     /**
@@ -327,13 +347,10 @@ final class BvhBuilder {
         return kept;
     }
 
-    /** Puts each object's box and centre back at its place in {@code order[start, end)}. */
+    /** Puts each object's box back at its place in {@code order[start, end)}. */
     private void refreshData(int start, int end) {
         for (int i = start; i < end; i++) {
-            BoundingBox box = objects.get(order[i]).bounds();
-            put(boxes, 6 * i, box.min());
-            put(boxes, 6 * i + 3, box.max());
-            put(centres, 3 * i, box.centre());
+            objects.get(order[i]).putBounds(boxes, 6 * i);
         }
     }
 
@@ -351,33 +368,37 @@ final class BvhBuilder {
         return axis;
     }
 
-    private static int binOf(float centre, float lo, float scale) {
-        int bin = (int) ((centre - lo) * scale);
-        return Math.min(BINS - 1, Math.max(0, bin));
-    }
-
-    /** Moves the objects in bins {@code ≤ lastLeftBin} to the front; returns where the rest start. */
-    private int partition(int start, int end, int axis, int lastLeftBin, float lo, float scale) {
+    /**
+     * Moves the objects in bins {@code ≤ lastLeftBin} to the front; returns where the rest
+     * start. Grows the boxes of centres of {@code left} and {@code right} by their objects'.
+     */
+    private int partition(int start, int end, int axis, int lastLeftBin, float lo, float scale, Extent left, Extent right) {
+        CentreBox leftCentres = new CentreBox();
+        CentreBox rightCentres = new CentreBox();
         int i = start;
         int j = end - 1;
         while (i <= j) {
-            if (binOf(centres[3 * i + axis], lo, scale) <= lastLeftBin) {
+            int at = 6 * i;
+            if (SahBins.binOf((boxes[at + axis] + boxes[at + axis + 3]) * 0.5f, lo, scale) <= lastLeftBin) {
+                leftCentres.add(boxes, at);
                 i++;
             } else {
+                rightCentres.add(boxes, at);
                 swap(i, j);
                 j--;
             }
         }
+        leftCentres.growInto(left.centres());
+        rightCentres.growInto(right.centres());
         return i;
     }
 
-    /** Swaps the objects at places i and j of {@code order}, with their data. */
+    /** Swaps the objects at places i and j of {@code order}, with their boxes. */
     private void swap(int i, int j) {
         int object = order[i];
         order[i] = order[j];
         order[j] = object;
         swapRange(boxes, 6 * i, 6 * j, 6);
-        swapRange(centres, 3 * i, 3 * j, 3);
     }
 
     private static void swapRange(float[] array, int a, int b, int length) {
