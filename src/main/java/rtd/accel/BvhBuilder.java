@@ -18,11 +18,13 @@ import rtd.geometry.IGeometry;
  * where a child's cost is its box's surface area (how likely a ray passes through it) times
  * its object count. A node becomes a leaf when no split is cheaper than testing its objects.
  *
- * <p>Large subtrees are built in parallel, and the nodes of very many objects near the root
- * bin and partition their objects in chunks side by side ({@link ChunkedPasses}). The tree does
- * not depend on the number of threads: each subtree owns a range of node numbers reserved in
- * advance (a subtree of n objects needs at most 2n − 1 nodes), the chunks depend only on the
- * node, and at the end the used nodes are numbered anew, depth first ({@link Compaction}).
+ * <p>A node's objects are partitioned by copying them, in order, from one {@link ObjectArrays}
+ * into the other; the children partition them back. Large subtrees are built in parallel, and
+ * the nodes of very many objects near the root bin and partition their objects in chunks side
+ * by side ({@link ChunkedPasses}). The tree does not depend on the number of threads: each
+ * subtree owns a range of node numbers reserved in advance (a subtree of n objects needs at
+ * most 2n − 1 nodes), the partition keeps the objects' order, and at the end the used nodes
+ * are numbered anew, depth first ({@link Compaction}).
  */
 final class BvhBuilder {
 
@@ -40,10 +42,7 @@ final class BvhBuilder {
      * fewer objects on the calling thread alone ({@link Bvh#build}).
      */
     static final int PARALLEL_THRESHOLD = 20_000;
-    /**
-     * Nodes with at least this many objects measure, bin and partition them in chunks
-     * ({@link ChunkedPasses}), on any number of threads, so that the tree is the same for any.
-     */
+    /** Nodes with at least this many objects measure, bin and partition them in chunks ({@link ChunkedPasses}). */
     private static final int CHUNKED_THRESHOLD = 4 * ChunkedPasses.CHUNK;
     private static final int INNER = Bvh.INNER;
 
@@ -53,15 +52,15 @@ final class BvhBuilder {
     /** The objects without one (planes), in file order: {@code order[count, objects.size())}. */
     private int[] unbounded;
     /*
-     * The objects' boxes, kept in the order of `order` and swapped along with it, so that every
-     * pass over a node's objects reads memory front to back (random reads into these arrays
-     * made building a million objects ten times slower). An object's centre, by which it is
-     * sorted, is computed from its box where needed: fewer numbers to move than to keep.
+     * The objects' boxes travel with them, so that every pass over a node's objects reads
+     * memory front to back (random reads into these arrays made building a million objects ten
+     * times slower). An object's centre, by which it is sorted, is computed from its box where
+     * needed: fewer numbers to move than to keep.
      */
-    /** Places in {@code objects}, reordered so that each node's objects are adjacent. */
-    private final int[] order;
-    /** Per place in {@code order}: the object's box, min x, y, z, max x, y, z. */
-    private final float[] boxes;
+    /** The objects, where the leaves' objects end, in leaf order. */
+    private final ObjectArrays primary;
+    /** The second set of arrays, which the partitions copy into and back out of. */
+    private final ObjectArrays spare;
     /** Node boxes and contents as in {@link Bvh}, at the reserved node numbers. */
     private final float[] bounds;
     private final int[] nodes;
@@ -79,8 +78,8 @@ final class BvhBuilder {
         this.objects = objects;
         this.count = objects.size();
         this.pool = pool;
-        this.order = new int[count];
-        this.boxes = new float[6 * count];
+        this.primary = ObjectArrays.of(count);
+        this.spare = ObjectArrays.of(count);
         if (pool == null) { // no lambda either: its first use costs more than a small scene's whole build
             for (int i = 0; i < count; i++) {
                 measureObject(i);
@@ -92,7 +91,7 @@ final class BvhBuilder {
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
         this.nodes = new int[2 * capacity];
-        this.chunked = count >= CHUNKED_THRESHOLD ? new ChunkedPasses(order, boxes, count, pool) : null;
+        this.chunked = new ChunkedPasses(pool);
     }
 
     /** Whether this builder works on a pool of threads. */
@@ -121,23 +120,23 @@ final class BvhBuilder {
         for (int i = 0; i < count; i++) {
             if (isFinite(i)) {
                 if (kept != i) {
-                    order[kept] = order[i];
-                    System.arraycopy(boxes, 6 * i, boxes, 6 * kept, 6);
+                    primary.order()[kept] = primary.order()[i];
+                    System.arraycopy(primary.boxes(), 6 * i, primary.boxes(), 6 * kept, 6);
                 }
                 kept++;
             } else {
                 apart = Arrays.copyOf(apart, apart.length + 1);
-                apart[apart.length - 1] = order[i];
+                apart[apart.length - 1] = primary.order()[i];
             }
         }
-        System.arraycopy(apart, 0, order, kept, apart.length);
+        System.arraycopy(apart, 0, primary.order(), kept, apart.length);
         unbounded = apart;
         count = kept;
     }
 
     private boolean isFinite(int i) {
         for (int k = 0; k < 6; k++) {
-            if (!Float.isFinite(boxes[6 * i + k])) {
+            if (!Float.isFinite(primary.boxes()[6 * i + k])) {
                 return false;
             }
         }
@@ -156,25 +155,25 @@ final class BvhBuilder {
 
     /** Puts object {@code i}'s box in place {@code i}. */
     private void measureObject(int i) {
-        objects.get(i).putBounds(boxes, 6 * i);
-        order[i] = i;
+        objects.get(i).putBounds(primary.boxes(), 6 * i);
+        primary.order()[i] = i;
     }
 
     /** Builds the tree; afterwards {@link #order} and {@link #boxes} are in leaf order. */
     void build() {
         maxDepth = pool == null
-                ? buildNode(0, 1, 0, count, 0, null, new SahBins())
-                : pool.invoke(new Subtree(0, 1, 0, count, 0, null));
+                ? buildNode(0, 1, 0, count, 0, null, primary, new SahBins())
+                : pool.invoke(new Subtree(0, 1, 0, count, 0, null, primary));
     }
 
     /** The objects' places in the file, in the order of the tree's leaves ({@link #count} of them). */
     int[] order() {
-        return order;
+        return primary.order();
     }
 
     /** The objects' boxes in leaf order, six floats each. */
     float[] boxes() {
-        return boxes;
+        return primary.boxes();
     }
 
     /** The depth of the deepest leaf. */
@@ -201,37 +200,44 @@ final class BvhBuilder {
         private final int end;
         private final int depth;
         private final Extent extent;
+        private final ObjectArrays data;
 
-        Subtree(int node, int free, int start, int end, int depth, Extent extent) {
+        Subtree(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data) {
             this.node = node;
             this.free = free;
             this.start = start;
             this.end = end;
             this.depth = depth;
             this.extent = extent;
+            this.data = data;
         }
 
         @Override
         protected Integer compute() {
-            return buildNode(node, free, start, end, depth, extent, new SahBins());
+            return buildNode(node, free, start, end, depth, extent, data, new SahBins());
         }
     }
 
     /**
-     * Builds the node numbered {@code node} over {@code order[start, end)}; its descendants get
-     * the numbers from {@code free} on, at most {@code 2(end − start) − 2} of them. The node's
-     * {@code extent} comes from its parent's bins, or is {@code null} and measured here.
-     * Answers the subtree's depth.
+     * Builds the node numbered {@code node} over places {@code [start, end)} of {@code data}
+     * (the primary or the spare arrays); its descendants get the numbers from {@code free} on,
+     * at most {@code 2(end − start) − 2} of them. The node's {@code extent} comes from its
+     * parent's bins, or is {@code null} and measured here. Answers the subtree's depth.
      */
-    private int buildNode(int node, int free, int start, int end, int depth, Extent extent, SahBins bins) {
-        Extent known = extent != null ? extent : measure(start, end);
+    private int buildNode(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data,
+            SahBins bins) {
+        Extent known = extent != null ? extent : measure(data, start, end);
         System.arraycopy(known.box(), 0, bounds, 6 * node, 6);
         if (end - start > 1 && widestAxis(known.centres()) < 0) {
-            end = withoutTwins(start, end);
+            end = withoutTwins(data, start, end);
         }
         int n = end - start;
-        Split split = n <= 1 ? null : depth < MAX_SAH_DEPTH ? splitBySah(known, start, end, bins) : splitByCount(start, end);
+        Split split = n <= 1 ? null
+                : depth < MAX_SAH_DEPTH ? splitBySah(known, data, start, end, bins) : splitByCount(data, start, end);
         if (split == null) {
+            if (data != primary) {
+                data.copy(start, end, primary);
+            }
             nodes[2 * node] = start;
             nodes[2 * node + 1] = n;
             return depth;
@@ -239,42 +245,42 @@ final class BvhBuilder {
         int left = free;
         nodes[2 * node] = left;
         nodes[2 * node + 1] = INNER;
-        int leftCount = split.middle() - start;
-        int rightFree = free + 2 * leftCount;
+        int middle = split.middle();
+        int rightFree = free + 2 * (middle - start);
         if (pool == null || n < PARALLEL_THRESHOLD) { // fork() outside a pool would use the common pool
-            return Math.max(buildNode(left, free + 2, start, split.middle(), depth + 1, split.left(), bins),
-                    buildNode(left + 1, rightFree, split.middle(), end, depth + 1, split.right(), bins));
+            return Math.max(buildNode(left, free + 2, start, middle, depth + 1, split.left(), split.data(), bins),
+                    buildNode(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins));
         }
-        Subtree leftTree = new Subtree(left, free + 2, start, split.middle(), depth + 1, split.left());
+        Subtree leftTree = new Subtree(left, free + 2, start, middle, depth + 1, split.left(), split.data());
         leftTree.fork();
-        int rightDepth = buildNode(left + 1, rightFree, split.middle(), end, depth + 1, split.right(), bins);
+        int rightDepth = buildNode(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins);
         return Math.max(leftTree.join(), rightDepth);
     }
 
-    /** The extent of {@code order[start, end)}, by one pass over the objects. */
-    private Extent measure(int start, int end) {
+    /** The extent of places {@code [start, end)} of {@code data}, by one pass over the objects. */
+    private Extent measure(ObjectArrays data, int start, int end) {
         if (end - start >= CHUNKED_THRESHOLD) {
-            return chunked.measure(start, end);
+            return chunked.measure(data, start, end);
         }
         Extent extent = Extent.empty();
         for (int i = start; i < end; i++) {
-            extent.add(boxes, 6 * i);
+            extent.add(data.boxes(), 6 * i);
         }
         return extent;
     }
 
     /**
-     * Finds the cheapest split by the SAH and partitions {@code order[start, end)} by it.
-     * Returns {@code null} when a leaf is cheaper. Each child's box is the union of its bins',
-     * and its box of centres is found by the partition: exactly what a pass over its objects
-     * would measure.
+     * Finds the cheapest split by the SAH and partitions places {@code [start, end)} of
+     * {@code data} by it, into the other arrays. Returns {@code null} when a leaf is cheaper.
+     * Each child's extent is the union of its bins', exactly what a pass over its objects would
+     * measure.
      */
-    private Split splitBySah(Extent extent, int start, int end, SahBins bins) {
+    private Split splitBySah(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
         int n = end - start;
         float[] centreBox = extent.centres();
         int axis = widestAxis(centreBox);
         if (axis < 0) {
-            return n > MAX_LEAF_SIZE ? splitByCount(start, end) : null; // all centres coincide
+            return n > MAX_LEAF_SIZE ? splitByCount(data, start, end) : null; // all centres coincide
         }
         if (alwaysLeaf(n, extent)) {
             return null;
@@ -284,9 +290,9 @@ final class BvhBuilder {
         bins.clear();
         SahBins[] chunks = null;
         if (n >= CHUNKED_THRESHOLD) {
-            chunks = chunked.bin(start, end, axis, lo, scale, bins);
+            chunks = chunked.bin(data, start, end, axis, lo, scale, bins);
         } else {
-            bins.add(boxes, start, end, axis, lo, scale);
+            bins.add(data.boxes(), start, end, axis, lo, scale);
         }
         float[] costs = bins.splitCosts();
         float bestCost = Float.POSITIVE_INFINITY;
@@ -302,15 +308,17 @@ final class BvhBuilder {
         if (splitCost >= leafCost && n <= MAX_LEAF_SIZE) {
             return null;
         }
-        Extent left = bins.box(0, bestBin + 1);
-        Extent right = bins.box(bestBin + 1, BINS);
-        int middle = chunks != null
-                ? chunked.partition(start, end, axis, lo, scale, bestBin, chunks, left, right)
-                : partition(start, end, axis, bestBin, lo, scale, left, right);
+        int middle = start + bins.count(bestBin + 1);
         if (middle == start || middle == end) {
-            return splitByCount(start, end);
+            return splitByCount(data, start, end);
         }
-        return new Split(middle, left, right);
+        ObjectArrays to = data == primary ? spare : primary;
+        if (chunks != null) {
+            chunked.partition(data, start, end, axis, lo, scale, bestBin, chunks, to, middle);
+        } else {
+            data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
+        }
+        return new Split(middle, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
     }
 
     /**
@@ -325,14 +333,15 @@ final class BvhBuilder {
     }
 
     /**
-     * Moves the objects of {@code order[start, end)} that are the twin of one before them in
+     * Moves the objects of places {@code [start, end)} of {@code data} that are the twin of one before them in
      * the file ({@link IGeometry#sameTest}) to the back, and returns where they start: the tree
      * leaves them out. A twin reports the same hit as the first of its kind for every ray, and
      * on that tie the first in the file wins, so the twin never does. Only where all centres
      * coincide, the one place where many twins can gather and defeat the tree (a hundred
      * thousand copies of one sphere would all be tested by every ray that reaches them).
      */
-    private int withoutTwins(int start, int end) {
+    private int withoutTwins(ObjectArrays data, int start, int end) {
+        int[] order = data.order();
         Arrays.sort(order, start, end); // file order, so that the first of each kind is kept
         Map<Object, Boolean> seen = new HashMap<>();
         int kept = start;
@@ -343,15 +352,13 @@ final class BvhBuilder {
                 order[kept++] = object;
             }
         }
-        refreshData(start, end);
-        return kept;
-    }
-
-    /** Puts each object's box back at its place in {@code order[start, end)}. */
-    private void refreshData(int start, int end) {
-        for (int i = start; i < end; i++) {
-            objects.get(order[i]).putBounds(boxes, 6 * i);
+        for (int i = start; i < end; i++) { // each object's box back at its place
+            objects.get(order[i]).putBounds(data.boxes(), 6 * i);
         }
+        if (data != primary) { // the twins stay in no leaf, but in the list of objects
+            data.copy(kept, end, primary);
+        }
+        return kept;
     }
 
     /** The axis along which the centres spread most, or −1 if they all coincide. */
@@ -369,57 +376,19 @@ final class BvhBuilder {
     }
 
     /**
-     * Moves the objects in bins {@code ≤ lastLeftBin} to the front; returns where the rest
-     * start. Grows the boxes of centres of {@code left} and {@code right} by their objects'.
-     */
-    private int partition(int start, int end, int axis, int lastLeftBin, float lo, float scale, Extent left, Extent right) {
-        CentreBox leftCentres = new CentreBox();
-        CentreBox rightCentres = new CentreBox();
-        int i = start;
-        int j = end - 1;
-        while (i <= j) {
-            int at = 6 * i;
-            if (SahBins.binOf((boxes[at + axis] + boxes[at + axis + 3]) * 0.5f, lo, scale) <= lastLeftBin) {
-                leftCentres.add(boxes, at);
-                i++;
-            } else {
-                rightCentres.add(boxes, at);
-                swap(i, j);
-                j--;
-            }
-        }
-        leftCentres.growInto(left.centres());
-        rightCentres.growInto(right.centres());
-        return i;
-    }
-
-    /** Swaps the objects at places i and j of {@code order}, with their boxes. */
-    private void swap(int i, int j) {
-        int object = order[i];
-        order[i] = order[j];
-        order[j] = object;
-        swapRange(boxes, 6 * i, 6 * j, 6);
-    }
-
-    private static void swapRange(float[] array, int a, int b, int length) {
-        for (int k = 0; k < length; k++) {
-            float value = array[a + k];
-            array[a + k] = array[b + k];
-            array[b + k] = value;
-        }
-    }
-
-    /**
      * Splits in half by count, keeping the present order: a fallback for objects that the SAH
      * cannot separate (equal centres) and for very deep trees. The children measure their
      * extents themselves.
      */
-    private static Split splitByCount(int start, int end) {
-        return end - start <= 1 ? null : new Split(start + (end - start) / 2, null, null);
+    private static Split splitByCount(ObjectArrays data, int start, int end) {
+        return end - start <= 1 ? null : new Split(start + (end - start) / 2, null, null, data);
     }
 
-    /** Where a node's objects divide ({@code order[middle]} is the right child's first), and the children's extents, if known. */
-    private record Split(int middle, Extent left, Extent right) {
+    /**
+     * Where a node's objects divide (place {@code middle} is the right child's first), the
+     * children's extents, if known, and the arrays that hold the children's objects.
+     */
+    private record Split(int middle, Extent left, Extent right, ObjectArrays data) {
     }
 
 }

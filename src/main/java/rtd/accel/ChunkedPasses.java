@@ -13,39 +13,30 @@ import java.util.function.IntConsumer;
  * top levels of the tree hold all objects in few nodes: without this, one thread would bin and
  * partition a million objects while the other cores wait.
  *
- * <p>The result does not depend on the number of threads. The chunks depend only on the node's
- * range; their bins are added up in chunk order; and the partition is stable: each chunk
- * copies its objects to the left or right part of a second set of arrays at places counted in
- * advance from the chunks' bins, keeping their order, and the node's range is copied back.
+ * <p>The result does not depend on the number of threads, nor on the chunks: their bins are
+ * added up in chunk order, and each chunk copies its objects to the places that the chunks
+ * before it leave free on each side, counted in advance from their bins, so the partition
+ * keeps the objects' order as {@link ObjectArrays#scatter} on the whole node would.
  */
 final class ChunkedPasses {
 
     /** The number of objects in a chunk. */
     static final int CHUNK = 1 << 14;
 
-    private final int[] order;
-    private final float[] boxes;
-    /** The second set of arrays that the partition copies into, as large as the first. */
-    private final int[] orderCopy;
-    private final float[] boxesCopy;
     /** The threads, or {@code null} to run the chunks one after another on this thread. */
     private final ForkJoinPool pool;
 
-    ChunkedPasses(int[] order, float[] boxes, int count, ForkJoinPool pool) {
-        this.order = order;
-        this.boxes = boxes;
-        this.orderCopy = new int[count];
-        this.boxesCopy = new float[6 * count];
+    ChunkedPasses(ForkJoinPool pool) {
         this.pool = pool;
     }
 
-    /** The extent of the objects in {@code order[start, end)}. */
-    Extent measure(int start, int end) {
+    /** The extent of the objects in places {@code [start, end)} of {@code data}. */
+    Extent measure(ObjectArrays data, int start, int end) {
         Extent[] parts = new Extent[chunks(start, end)];
         run(parts.length, c -> {
             Extent part = Extent.empty();
             for (int i = first(start, c); i < last(start, end, c); i++) {
-                part.add(boxes, 6 * i);
+                part.add(data.boxes(), 6 * i);
             }
             parts[c] = part;
         });
@@ -57,14 +48,15 @@ final class ChunkedPasses {
     }
 
     /**
-     * Bins the objects of {@code order[start, end)} along {@code axis} into {@code into} (which
-     * starts empty), and answers each chunk's bins, which {@link #partition} needs.
+     * Bins the objects of places {@code [start, end)} of {@code data} along {@code axis} into
+     * {@code into} (which starts empty), and answers each chunk's bins, which {@link #partition}
+     * needs.
      */
-    SahBins[] bin(int start, int end, int axis, float lo, float scale, SahBins into) {
+    SahBins[] bin(ObjectArrays data, int start, int end, int axis, float lo, float scale, SahBins into) {
         SahBins[] parts = new SahBins[chunks(start, end)];
         run(parts.length, c -> {
             SahBins part = new SahBins();
-            part.add(boxes, first(start, c), last(start, end, c), axis, lo, scale);
+            part.add(data.boxes(), first(start, c), last(start, end, c), axis, lo, scale);
             parts[c] = part;
         });
         for (SahBins part : parts) {
@@ -74,62 +66,25 @@ final class ChunkedPasses {
     }
 
     /**
-     * Moves the objects of {@code order[start, end)} in bins {@code ≤ lastLeftBin} to the front,
-     * keeping the order on each side; {@code parts} are the chunks' bins from {@link #bin}.
-     * Answers where the right side starts.
+     * {@link ObjectArrays#scatter} of places {@code [start, end)} from {@code data} to
+     * {@code to}, the left side from {@code start} on and the right side from {@code middle}
+     * on; {@code parts} are the chunks' bins from {@link #bin}.
      */
-    int partition(int start, int end, int axis, float lo, float scale, int lastLeftBin, SahBins[] parts,
-            Extent left, Extent right) {
+    void partition(ObjectArrays data, int start, int end, int axis, float lo, float scale, int lastLeftBin,
+            SahBins[] parts, ObjectArrays to, int middle) {
         int[] lefts = new int[parts.length];
         int[] rights = new int[parts.length];
-        int middle = start;
+        int left = start;
+        int right = middle;
         for (int c = 0; c < parts.length; c++) {
-            lefts[c] = middle;
-            middle += parts[c].count(lastLeftBin + 1);
+            lefts[c] = left;
+            rights[c] = right;
+            int goingLeft = parts[c].count(lastLeftBin + 1);
+            left += goingLeft;
+            right += last(start, end, c) - first(start, c) - goingLeft;
         }
-        int place = middle;
-        for (int c = 0; c < parts.length; c++) {
-            rights[c] = place;
-            place += (last(start, end, c) - first(start, c)) - parts[c].count(lastLeftBin + 1);
-        }
-        CentreBox[] leftCentres = new CentreBox[parts.length];
-        CentreBox[] rightCentres = new CentreBox[parts.length];
-        run(parts.length, c -> {
-            leftCentres[c] = new CentreBox();
-            rightCentres[c] = new CentreBox();
-            scatter(first(start, c), last(start, end, c), axis, lo, scale, lastLeftBin, lefts[c], rights[c],
-                    leftCentres[c], rightCentres[c]);
-        });
-        run(parts.length, c -> copyBack(first(start, c), last(start, end, c)));
-        for (int c = 0; c < parts.length; c++) {
-            leftCentres[c].growInto(left.centres());
-            rightCentres[c].growInto(right.centres());
-        }
-        return middle;
-    }
-
-    /**
-     * Copies the objects of {@code [from, to)} to the copies, those going left from {@code left}
-     * on, the others from {@code right} on, and grows each side's box of centres by theirs.
-     */
-    private void scatter(int from, int to, int axis, float lo, float scale, int lastLeftBin, int left, int right,
-            CentreBox leftCentres, CentreBox rightCentres) {
-        for (int i = from; i < to; i++) {
-            int at = 6 * i;
-            boolean goesLeft = SahBins.binOf((boxes[at + axis] + boxes[at + axis + 3]) * 0.5f, lo, scale) <= lastLeftBin;
-            (goesLeft ? leftCentres : rightCentres).add(boxes, at);
-            int place = goesLeft ? left++ : right++;
-            orderCopy[place] = order[i];
-            int to6 = 6 * place;
-            for (int k = 0; k < 6; k++) {
-                boxesCopy[to6 + k] = boxes[at + k];
-            }
-        }
-    }
-
-    private void copyBack(int from, int to) {
-        System.arraycopy(orderCopy, from, order, from, to - from);
-        System.arraycopy(boxesCopy, 6 * from, boxes, 6 * from, 6 * (to - from));
+        run(parts.length, c -> data.scatter(first(start, c), last(start, end, c), axis, lo, scale, lastLeftBin, to,
+                lefts[c], rights[c]));
     }
 
     private static int chunks(int start, int end) {

@@ -27,11 +27,11 @@ final class Extent {
         for (int k = 0; k < 3; k++) {
             float min = boxes[at + k];
             float max = boxes[at + k + 3];
-            box[k] = FastMath.min(box[k], min);
-            box[k + 3] = FastMath.max(box[k + 3], max);
+            box[k] = Math.min(box[k], min);
+            box[k + 3] = Math.max(box[k + 3], max);
             float centre = (min + max) * 0.5f;
-            centres[k] = FastMath.min(centres[k], centre);
-            centres[k + 3] = FastMath.max(centres[k + 3], centre);
+            centres[k] = Math.min(centres[k], centre);
+            centres[k + 3] = Math.max(centres[k + 3], centre);
         }
     }
 
@@ -44,8 +44,8 @@ final class Extent {
     /** Grows the box at {@code box[at ..]} to hold the box at {@code other[otherAt ..]}. */
     static void grow(float[] box, int at, float[] other, int otherAt) {
         for (int k = 0; k < 3; k++) {
-            box[at + k] = FastMath.min(box[at + k], other[otherAt + k]);
-            box[at + k + 3] = FastMath.max(box[at + k + 3], other[otherAt + k + 3]);
+            box[at + k] = Math.min(box[at + k], other[otherAt + k]);
+            box[at + k + 3] = Math.max(box[at + k + 3], other[otherAt + k + 3]);
         }
     }
 
