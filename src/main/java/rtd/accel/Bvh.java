@@ -60,7 +60,7 @@ public final class Bvh {
             }
         }
         this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
-        this.rounding = rounding(nodes, sorted);
+        this.rounding = rounding(nodes, fileOrder, builder.roundings());
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];
         for (int i = 0; i < unbounded.length; i++) {
@@ -72,9 +72,10 @@ public final class Bvh {
 
     /**
      * Each node's largest rounding, from the leaves up: a node's children have larger numbers
-     * than the node itself ({@link Compaction}), so one pass backwards meets them first.
+     * than the node itself ({@link Compaction}), so one pass backwards meets them first. The
+     * objects' own are in {@code roundings}, by place in the file ({@link BvhBuilder#roundings}).
      */
-    private static float[] rounding(int[] nodes, IGeometry[] objects) {
+    private static float[] rounding(int[] nodes, int[] fileOrder, float[] roundings) {
         float[] rounding = new float[nodes.length];
         for (int node = nodes.length / 2 - 1; node >= 0; node--) {
             if (nodes[2 * node + 1] == INNER) {
@@ -82,24 +83,23 @@ public final class Bvh {
                 rounding[2 * node] = Math.max(rounding[2 * child], rounding[2 * child + 2]);
                 rounding[2 * node + 1] = Math.max(rounding[2 * child + 1], rounding[2 * child + 3]);
             } else {
-                leafRounding(objects, nodes[2 * node], nodes[2 * node + 1], rounding, 2 * node);
+                leafRounding(fileOrder, nodes[2 * node], nodes[2 * node + 1], roundings, rounding, 2 * node);
             }
         }
         return rounding;
     }
 
     /**
-     * The largest rounding of {@code count} objects from {@code first}, as {@link Rounding#max}
-     * finds it, written to {@code into[at]} (linear) and {@code into[at + 1]} (quadratic): two
-     * numbers kept apart, not a record per object.
+     * The largest rounding of the {@code count} objects from place {@code first} in leaf order,
+     * as {@link Rounding#max} finds it, written to {@code into[at]} (linear) and
+     * {@code into[at + 1]} (quadratic).
      */
-    private static void leafRounding(IGeometry[] objects, int first, int count, float[] into, int at) {
+    private static void leafRounding(int[] fileOrder, int first, int count, float[] roundings, float[] into, int at) {
         float linear = 0;
         float quadratic = 0;
         for (int i = first; i < first + count; i++) {
-            Rounding own = objects[i].rounding();
-            linear = Math.max(linear, own.linear());
-            quadratic = Math.max(quadratic, own.quadratic());
+            linear = Math.max(linear, roundings[2 * fileOrder[i]]);
+            quadratic = Math.max(quadratic, roundings[2 * fileOrder[i] + 1]);
         }
         into[at] = linear;
         into[at + 1] = quadratic;

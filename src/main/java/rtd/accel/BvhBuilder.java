@@ -9,6 +9,7 @@ import java.util.concurrent.RecursiveTask;
 import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Rounding;
 
 /**
  * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH).
@@ -63,6 +64,12 @@ final class BvhBuilder {
     private final ObjectArrays spare;
     /** Node boxes and contents as in {@link Bvh}, at the reserved node numbers. */
     private final float[] bounds;
+    /**
+     * Per place in the file: the object's {@link IGeometry#rounding}, linear at {@code [2i]} and
+     * quadratic at {@code [2i + 1]}, asked while its box is (the objects in file order lie
+     * mostly in order in memory; in leaf order each would be a wait for memory).
+     */
+    private final float[] roundings;
     private final int[] nodes;
     private final ForkJoinPool pool;
     /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects; {@code null} if there are none. */
@@ -78,6 +85,7 @@ final class BvhBuilder {
         this.objects = objects;
         this.count = objects.size();
         this.pool = pool;
+        this.roundings = new float[2 * count];
         this.primary = ObjectArrays.of(count);
         this.spare = ObjectArrays.of(count);
         if (pool == null) { // no lambda either: its first use costs more than a small scene's whole build
@@ -155,8 +163,12 @@ final class BvhBuilder {
 
     /** Puts object {@code i}'s box in place {@code i}. */
     private void measureObject(int i) {
-        objects.get(i).putBounds(primary.boxes(), 6 * i);
+        IGeometry object = objects.get(i);
+        object.putBounds(primary.boxes(), 6 * i);
         primary.order()[i] = i;
+        Rounding rounding = object.rounding();
+        roundings[2 * i] = rounding.linear();
+        roundings[2 * i + 1] = rounding.quadratic();
     }
 
     /** Builds the tree; afterwards {@link #order} and {@link #boxes} are in leaf order. */
@@ -174,6 +186,11 @@ final class BvhBuilder {
     /** The objects' boxes in leaf order, six floats each. */
     float[] boxes() {
         return primary.boxes();
+    }
+
+    /** Per place in the file, the object's rounding: linear at {@code [2i]}, quadratic at {@code [2i + 1]}. */
+    float[] roundings() {
+        return roundings;
     }
 
     /** The depth of the deepest leaf. */
