@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.ArrayDeque;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
@@ -46,6 +47,8 @@ final class BvhBuilder {
     /** Nodes with at least this many objects measure, bin and partition them in chunks ({@link ChunkedPasses}). */
     private static final int CHUNKED_THRESHOLD = 4 * ChunkedPasses.CHUNK;
     private static final int INNER = Bvh.INNER;
+    /** What {@link #cheapestBin} answers when a leaf is cheaper than any split. */
+    private static final int LEAF = Integer.MIN_VALUE;
 
     private final List<IGeometry> objects;
     /** The objects with a finite box, which the tree holds: {@code order[0, count)}. */
@@ -174,7 +177,7 @@ final class BvhBuilder {
     /** Builds the tree; afterwards {@link #order} and {@link #boxes} are in leaf order. */
     void build() {
         maxDepth = pool == null
-                ? buildNode(0, 1, 0, count, 0, null, primary, new SahBins())
+                ? buildLarge(0, 1, 0, count, 0, null, primary, new SahBins())
                 : pool.invoke(new Subtree(0, 1, 0, count, 0, null, primary));
     }
 
@@ -231,54 +234,126 @@ final class BvhBuilder {
 
         @Override
         protected Integer compute() {
-            return buildNode(node, free, start, end, depth, extent, data, new SahBins());
+            return buildLarge(node, free, start, end, depth, extent, data, new SahBins());
         }
     }
 
     /**
+     * {@link #buildNode} for a node of any size: one of {@value #PARALLEL_THRESHOLD} objects or
+     * more is built here, its children in parallel, its passes in chunks if it is larger still;
+     * smaller ones go to {@link #buildNode}. A few dozen nodes take this path: kept apart, it
+     * leaves the code that builds the other hundreds of thousands free of branches that only
+     * the top of the tree takes, on which the JIT would compile it anew (one that is never
+     * taken while the JIT watches is compiled as a trap).
+     */
+    private int buildLarge(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data,
+            SahBins bins) {
+        if (end - start < PARALLEL_THRESHOLD) {
+            return buildNode(node, free, start, end, depth, extent, data, bins);
+        }
+        Extent known = extent != null ? extent
+                : end - start >= CHUNKED_THRESHOLD ? chunked.measure(data, start, end) : measure(data, start, end);
+        System.arraycopy(known.box(), 0, bounds, 6 * node, 6);
+        if (widestAxis(known.centres()) < 0) {
+            end = withoutTwins(data, start, end);
+        }
+        Split split = depth < MAX_SAH_DEPTH ? splitLarge(known, data, start, end, bins) : splitByCount(data, start, end);
+        if (split == null) {
+            return leaf(node, start, end, depth, data);
+        }
+        int left = inner(node, free);
+        int middle = split.middle();
+        int rightFree = free + 2 * (middle - start);
+        if (pool == null) {
+            return Math.max(buildLarge(left, free + 2, start, middle, depth + 1, split.left(), split.data(), bins),
+                    buildLarge(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins));
+        }
+        Subtree leftTree = new Subtree(left, free + 2, start, middle, depth + 1, split.left(), split.data());
+        leftTree.fork();
+        int rightDepth = buildLarge(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins);
+        return Math.max(leftTree.join(), rightDepth);
+    }
+
+    /**
      * Builds the node numbered {@code node} over places {@code [start, end)} of {@code data}
-     * (the primary or the spare arrays); its descendants get the numbers from {@code free} on,
-     * at most {@code 2(end − start) − 2} of them. The node's {@code extent} comes from its
-     * parent's bins, or is {@code null} and measured here. Answers the subtree's depth.
+     * (the primary or the spare arrays), with fewer than {@value #PARALLEL_THRESHOLD} objects,
+     * on this thread; its descendants get the numbers from {@code free} on, at most
+     * {@code 2(end − start) − 2} of them. The node's {@code extent} comes from its parent's
+     * bins, or is {@code null} and measured here. Answers the subtree's depth.
+     *
+     * <p>The subtree's nodes are built in a loop over a stack of those waiting, not by
+     * recursion: the JIT compiles a loop early, while it runs, and a recursive method that it
+     * inlines into itself is a long compilation, during which the build runs slower code.
      */
     private int buildNode(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data,
             SahBins bins) {
-        Extent known = extent != null ? extent : measure(data, start, end);
-        System.arraycopy(known.box(), 0, bounds, 6 * node, 6);
+        ArrayDeque<Pending> waiting = new ArrayDeque<>();
+        waiting.push(new Pending(node, free, start, end, depth, extent, data));
+        int deepest = depth;
+        while (!waiting.isEmpty()) {
+            Pending next = waiting.pop();
+            Split split = split(next, bins);
+            if (split == null) {
+                deepest = Math.max(deepest, next.depth());
+                continue;
+            }
+            int left = nodes[2 * next.node()];
+            int rightFree = next.free() + 2 * (split.middle() - next.start());
+            waiting.push(new Pending(left + 1, rightFree, split.middle(), split.end(), next.depth() + 1, split.right(),
+                    split.data()));
+            waiting.push(new Pending(left, next.free() + 2, next.start(), split.middle(), next.depth() + 1, split.left(),
+                    split.data()));
+        }
+        return deepest;
+    }
+
+    /**
+     * Makes the {@code waiting} node a leaf (answers {@code null}) or an inner node, whose
+     * children's objects are then divided as the answer says.
+     */
+    private Split split(Pending waiting, SahBins bins) {
+        int start = waiting.start();
+        int end = waiting.end();
+        ObjectArrays data = waiting.data();
+        Extent known = waiting.extent() != null ? waiting.extent() : measure(data, start, end);
+        System.arraycopy(known.box(), 0, bounds, 6 * waiting.node(), 6);
         if (end - start > 1 && widestAxis(known.centres()) < 0) {
             end = withoutTwins(data, start, end);
         }
         int n = end - start;
         Split split = n <= 1 ? null
-                : depth < MAX_SAH_DEPTH ? splitBySah(known, data, start, end, bins) : splitByCount(data, start, end);
+                : waiting.depth() < MAX_SAH_DEPTH ? splitBySah(known, data, start, end, bins) : splitByCount(data, start, end);
         if (split == null) {
-            if (data != primary) {
-                data.copy(start, end, primary);
-            }
-            nodes[2 * node] = start;
-            nodes[2 * node + 1] = n;
-            return depth;
+            leaf(waiting.node(), start, end, waiting.depth(), data);
+        } else {
+            inner(waiting.node(), waiting.free());
         }
-        int left = free;
-        nodes[2 * node] = left;
+        return split;
+    }
+
+    /** A node that waits to be built, with what {@link #buildNode} would be called with. */
+    private record Pending(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data) {
+    }
+
+    /** Makes node {@code node} the leaf of places {@code [start, end)}, whose objects go to the primary arrays. */
+    private int leaf(int node, int start, int end, int depth, ObjectArrays data) {
+        if (data != primary) {
+            data.copy(start, end, primary);
+        }
+        nodes[2 * node] = start;
+        nodes[2 * node + 1] = end - start;
+        return depth;
+    }
+
+    /** Makes node {@code node} an inner node whose children are numbered {@code free} and {@code free + 1}; answers {@code free}. */
+    private int inner(int node, int free) {
+        nodes[2 * node] = free;
         nodes[2 * node + 1] = INNER;
-        int middle = split.middle();
-        int rightFree = free + 2 * (middle - start);
-        if (pool == null || n < PARALLEL_THRESHOLD) { // fork() outside a pool would use the common pool
-            return Math.max(buildNode(left, free + 2, start, middle, depth + 1, split.left(), split.data(), bins),
-                    buildNode(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins));
-        }
-        Subtree leftTree = new Subtree(left, free + 2, start, middle, depth + 1, split.left(), split.data());
-        leftTree.fork();
-        int rightDepth = buildNode(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins);
-        return Math.max(leftTree.join(), rightDepth);
+        return free;
     }
 
     /** The extent of places {@code [start, end)} of {@code data}, by one pass over the objects. */
     private Extent measure(ObjectArrays data, int start, int end) {
-        if (end - start >= CHUNKED_THRESHOLD) {
-            return chunked.measure(data, start, end);
-        }
         Extent extent = Extent.empty();
         for (int i = start; i < end; i++) {
             extent.add(data.boxes(), 6 * i);
@@ -305,24 +380,42 @@ final class BvhBuilder {
         float lo = centreBox[axis];
         float scale = BINS / (centreBox[axis + 3] - lo);
         bins.clear();
+        bins.add(data.boxes(), start, end, axis, lo, scale);
+        int bestBin = cheapestBin(bins, extent, n);
+        if (bestBin == LEAF) {
+            return null;
+        }
+        int middle = start + bins.count(bestBin + 1);
+        if (middle == start || middle == end) {
+            return splitByCount(data, start, end);
+        }
+        ObjectArrays to = data == primary ? spare : primary;
+        data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
+        return new Split(middle, end, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
+    }
+
+    /**
+     * {@link #splitBySah} for a node of {@value #PARALLEL_THRESHOLD} objects or more, whose
+     * passes go in chunks ({@link ChunkedPasses}) from {@value #CHUNKED_THRESHOLD} objects on.
+     */
+    private Split splitLarge(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
+        int n = end - start;
+        float[] centreBox = extent.centres();
+        int axis = widestAxis(centreBox);
+        if (axis < 0) {
+            return n > MAX_LEAF_SIZE ? splitByCount(data, start, end) : null; // all centres coincide
+        }
+        float lo = centreBox[axis];
+        float scale = BINS / (centreBox[axis + 3] - lo);
+        bins.clear();
         SahBins[] chunks = null;
         if (n >= CHUNKED_THRESHOLD) {
             chunks = chunked.bin(data, start, end, axis, lo, scale, bins);
         } else {
             bins.add(data.boxes(), start, end, axis, lo, scale);
         }
-        float[] costs = bins.splitCosts();
-        float bestCost = Float.POSITIVE_INFINITY;
-        int bestBin = -1;
-        for (int split = 0; split < BINS - 1; split++) {
-            if (costs[split] < bestCost) {
-                bestCost = costs[split];
-                bestBin = split;
-            }
-        }
-        float leafCost = n;
-        float splitCost = TRAVERSAL_COST + bestCost / SahBins.area(extent.box(), 0);
-        if (splitCost >= leafCost && n <= MAX_LEAF_SIZE) {
+        int bestBin = cheapestBin(bins, extent, n);
+        if (bestBin == LEAF) {
             return null;
         }
         int middle = start + bins.count(bestBin + 1);
@@ -335,7 +428,26 @@ final class BvhBuilder {
         } else {
             data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
         }
-        return new Split(middle, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
+        return new Split(middle, end, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
+    }
+
+    /**
+     * The last bin of the left side of the cheapest split of filled {@code bins} (−1 if none
+     * has two sides), or {@link #LEAF} if {@code n} objects cost less as a leaf.
+     */
+    private static int cheapestBin(SahBins bins, Extent extent, int n) {
+        float[] costs = bins.splitCosts();
+        float bestCost = Float.POSITIVE_INFINITY;
+        int bestBin = -1;
+        for (int split = 0; split < BINS - 1; split++) {
+            if (costs[split] < bestCost) {
+                bestCost = costs[split];
+                bestBin = split;
+            }
+        }
+        float leafCost = n;
+        float splitCost = TRAVERSAL_COST + bestCost / SahBins.area(extent.box(), 0);
+        return splitCost >= leafCost && n <= MAX_LEAF_SIZE ? LEAF : bestBin;
     }
 
     /**
@@ -398,14 +510,15 @@ final class BvhBuilder {
      * extents themselves.
      */
     private static Split splitByCount(ObjectArrays data, int start, int end) {
-        return end - start <= 1 ? null : new Split(start + (end - start) / 2, null, null, data);
+        return end - start <= 1 ? null : new Split(start + (end - start) / 2, end, null, null, data);
     }
 
     /**
-     * Where a node's objects divide (place {@code middle} is the right child's first), the
-     * children's extents, if known, and the arrays that hold the children's objects.
+     * Where a node's objects divide (place {@code middle} is the right child's first) and end
+     * (before any twins left out), the children's extents, if known, and the arrays that hold
+     * the children's objects.
      */
-    private record Split(int middle, Extent left, Extent right, ObjectArrays data) {
+    private record Split(int middle, int end, Extent left, Extent right, ObjectArrays data) {
     }
 
 }
