@@ -45,15 +45,15 @@ final class BvhBuilder {
      */
     static final int PARALLEL_THRESHOLD = 20_000;
     /** Nodes with at least this many objects measure, bin and partition them in chunks ({@link ChunkedPasses}). */
-    private static final int CHUNKED_THRESHOLD = 4 * ChunkedPasses.CHUNK;
+    private static final int CHUNKED_THRESHOLD = 8 * ChunkedPasses.CHUNK;
     private static final int INNER = Bvh.INNER;
     /** What {@link #cheapestBin} answers when a leaf is cheaper than any split. */
     private static final int LEAF = Integer.MIN_VALUE;
 
     private final List<IGeometry> objects;
-    /** The objects with a finite box, which the tree holds: {@code order[0, count)}. */
+    /** The objects with a finite box, which the tree holds: places {@code [0, count)} of {@link #primary}. */
     private int count;
-    /** The objects without one (planes), in file order: {@code order[count, objects.size())}. */
+    /** The objects without one (planes), in file order: places {@code [count, objects.size())} of its order. */
     private int[] unbounded;
     /*
      * The objects' boxes travel with them, so that every pass over a node's objects reads
@@ -75,7 +75,7 @@ final class BvhBuilder {
     private final float[] roundings;
     private final int[] nodes;
     private final ForkJoinPool pool;
-    /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects; {@code null} if there are none. */
+    /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects. */
     private final ChunkedPasses chunked;
     private int maxDepth;
 
@@ -174,7 +174,7 @@ final class BvhBuilder {
         roundings[2 * i + 1] = rounding.quadratic();
     }
 
-    /** Builds the tree; afterwards {@link #order} and {@link #boxes} are in leaf order. */
+    /** Builds the tree; afterwards {@link #order()} and {@link #boxes()} are in leaf order. */
     void build() {
         maxDepth = pool == null
                 ? buildLarge(0, 1, 0, count, 0, null, primary, new SahBins())
