@@ -56,23 +56,39 @@ final class SahBins {
 
     /**
      * Adds the objects whose boxes are at {@code boxes[6i .. 6i+5]} for i in {@code [from, to)},
-     * each to the bin of its centre along {@code axis} ({@link #binOf}).
+     * each to the bin of its centre along {@code axis} ({@link #binOf}): {@link #addMany} or
+     * {@link #addFew}, by their number.
      */
     void add(float[] objectBoxes, int from, int to, int axis, float lo, float scale) {
         if (to - from >= MANY) {
-            for (int i = from; i < to; i++) {
-                int at = 6 * i;
-                int bin = binOf((objectBoxes[at + axis] + objectBoxes[at + axis + 3]) * 0.5f, lo, scale);
-                counts[bin]++;
-                addRarelyGrowing(6 * bin, objectBoxes, at);
-            }
+            addMany(objectBoxes, from, to, axis, lo, scale);
         } else {
-            for (int i = from; i < to; i++) {
-                int at = 6 * i;
-                int bin = binOf((objectBoxes[at + axis] + objectBoxes[at + axis + 3]) * 0.5f, lo, scale);
-                counts[bin]++;
-                addOftenGrowing(6 * bin, objectBoxes, at);
-            }
+            addFew(objectBoxes, from, to, axis, lo, scale);
+        }
+    }
+
+    /**
+     * {@link #add} for many objects, at least {@value #MANY}. Its own method, and the loop of
+     * {@link #addFew} another: the JIT compiles each loop while it runs, and one method with
+     * both, compiled in the top levels of the tree where only this loop runs, would be
+     * compiled again when the other is first taken.
+     */
+    void addMany(float[] objectBoxes, int from, int to, int axis, float lo, float scale) {
+        for (int i = from; i < to; i++) {
+            int at = 6 * i;
+            int bin = binOf((objectBoxes[at + axis] + objectBoxes[at + axis + 3]) * 0.5f, lo, scale);
+            counts[bin]++;
+            addRarelyGrowing(6 * bin, objectBoxes, at);
+        }
+    }
+
+    /** {@link #add} for fewer than {@value #MANY} objects. */
+    private void addFew(float[] objectBoxes, int from, int to, int axis, float lo, float scale) {
+        for (int i = from; i < to; i++) {
+            int at = 6 * i;
+            int bin = binOf((objectBoxes[at + axis] + objectBoxes[at + axis + 3]) * 0.5f, lo, scale);
+            counts[bin]++;
+            addOftenGrowing(6 * bin, objectBoxes, at);
         }
     }
 
