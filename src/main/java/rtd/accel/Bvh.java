@@ -60,7 +60,7 @@ public final class Bvh {
             }
         }
         this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
-        this.rounding = rounding(nodes, sorted);
+        this.rounding = rounding(nodes, fileOrder, builder.roundings());
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];
         for (int i = 0; i < unbounded.length; i++) {
@@ -72,25 +72,37 @@ public final class Bvh {
 
     /**
      * Each node's largest rounding, from the leaves up: a node's children have larger numbers
-     * than the node itself ({@link Compaction}), so one pass backwards meets them first.
+     * than the node itself ({@link Compaction}), so one pass backwards meets them first. The
+     * objects' own are in {@code roundings}, by place in the file ({@link BvhBuilder#roundings}).
      */
-    private static float[] rounding(int[] nodes, IGeometry[] objects) {
+    private static float[] rounding(int[] nodes, int[] fileOrder, float[] roundings) {
         float[] rounding = new float[nodes.length];
         for (int node = nodes.length / 2 - 1; node >= 0; node--) {
-            Rounding most = new Rounding(0, 0);
             if (nodes[2 * node + 1] == INNER) {
                 int child = nodes[2 * node];
-                most = new Rounding(Math.max(rounding[2 * child], rounding[2 * child + 2]),
-                        Math.max(rounding[2 * child + 1], rounding[2 * child + 3]));
+                rounding[2 * node] = Math.max(rounding[2 * child], rounding[2 * child + 2]);
+                rounding[2 * node + 1] = Math.max(rounding[2 * child + 1], rounding[2 * child + 3]);
             } else {
-                for (int i = nodes[2 * node]; i < nodes[2 * node] + nodes[2 * node + 1]; i++) {
-                    most = most.max(objects[i].rounding());
-                }
+                leafRounding(fileOrder, nodes[2 * node], nodes[2 * node + 1], roundings, rounding, 2 * node);
             }
-            rounding[2 * node] = most.linear();
-            rounding[2 * node + 1] = most.quadratic();
         }
         return rounding;
+    }
+
+    /**
+     * The largest rounding of the {@code count} objects from place {@code first} in leaf order,
+     * as {@link Rounding#max} finds it, written to {@code into[at]} (linear) and
+     * {@code into[at + 1]} (quadratic).
+     */
+    private static void leafRounding(int[] fileOrder, int first, int count, float[] roundings, float[] into, int at) {
+        float linear = 0;
+        float quadratic = 0;
+        for (int i = first; i < first + count; i++) {
+            linear = Math.max(linear, roundings[2 * fileOrder[i]]);
+            quadratic = Math.max(quadratic, roundings[2 * fileOrder[i] + 1]);
+        }
+        into[at] = linear;
+        into[at + 1] = quadratic;
     }
 
     /** Builds the hierarchy for {@code scene} with all cores. */

@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.ArrayDeque;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
@@ -8,9 +9,8 @@ import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
 import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
-import rtd.geometry.BoundingBox;
 import rtd.geometry.IGeometry;
-import rtd.math.Vector3f;
+import rtd.geometry.Rounding;
 
 /**
  * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH).
@@ -20,14 +20,17 @@ import rtd.math.Vector3f;
  * where a child's cost is its box's surface area (how likely a ray passes through it) times
  * its object count. A node becomes a leaf when no split is cheaper than testing its objects.
  *
- * <p>Large subtrees are built in parallel. The tree does not depend on the number of threads:
- * each subtree owns a range of node numbers reserved in advance (a subtree of n objects needs
- * at most 2n − 1 nodes), and at the end the used nodes are numbered anew, depth first
- * ({@link Compaction}).
+ * <p>A node's objects are partitioned by copying them, in order, from one {@link ObjectArrays}
+ * into the other; the children partition them back. Large subtrees are built in parallel, and
+ * the nodes of very many objects near the root bin and partition their objects in chunks side
+ * by side ({@link ChunkedPasses}). The tree does not depend on the number of threads: each
+ * subtree owns a range of node numbers reserved in advance (a subtree of n objects needs at
+ * most 2n − 1 nodes), the partition keeps the objects' order, and at the end the used nodes
+ * are numbered anew, depth first ({@link Compaction}).
  */
 final class BvhBuilder {
 
-    private static final int BINS = 16;
+    private static final int BINS = SahBins.COUNT;
     private static final int MAX_LEAF_SIZE = 16;
     /** Past this depth the builder halves by count, which bounds the depth for any input. */
     private static final int MAX_SAH_DEPTH = 48;
@@ -41,28 +44,39 @@ final class BvhBuilder {
      * fewer objects on the calling thread alone ({@link Bvh#build}).
      */
     static final int PARALLEL_THRESHOLD = 20_000;
+    /** Nodes with at least this many objects measure, bin and partition them in chunks ({@link ChunkedPasses}). */
+    private static final int CHUNKED_THRESHOLD = 8 * ChunkedPasses.CHUNK;
     private static final int INNER = Bvh.INNER;
+    /** What {@link #cheapestBin} answers when a leaf is cheaper than any split. */
+    private static final int LEAF = Integer.MIN_VALUE;
 
     private final List<IGeometry> objects;
-    /** The objects with a finite box, which the tree holds: {@code order[0, count)}. */
+    /** The objects with a finite box, which the tree holds: places {@code [0, count)} of {@link #primary}. */
     private int count;
-    /** The objects without one (planes), in file order: {@code order[count, objects.size())}. */
+    /** The objects without one (planes), in file order: places {@code [count, objects.size())} of its order. */
     private int[] unbounded;
     /*
-     * The objects' data, kept in the order of `order` and swapped along with it, so that every
-     * pass over a node's objects reads memory front to back (random reads into these arrays
-     * made building a million objects ten times slower).
+     * The objects' boxes travel with them, so that every pass over a node's objects reads
+     * memory front to back (random reads into these arrays made building a million objects ten
+     * times slower). An object's centre, by which it is sorted, is computed from its box where
+     * needed: fewer numbers to move than to keep.
      */
-    /** Places in {@code objects}, reordered so that each node's objects are adjacent. */
-    private final int[] order;
-    /** Per place in {@code order}: the object's box, min x, y, z, max x, y, z. */
-    private final float[] boxes;
-    /** Per place in {@code order}: the centre of the object's box, x, y, z. */
-    private final float[] centres;
+    /** The objects, where the leaves' objects end, in leaf order. */
+    private final ObjectArrays primary;
+    /** The second set of arrays, which the partitions copy into and back out of. */
+    private final ObjectArrays spare;
     /** Node boxes and contents as in {@link Bvh}, at the reserved node numbers. */
     private final float[] bounds;
+    /**
+     * Per place in the file: the object's {@link IGeometry#rounding}, linear at {@code [2i]} and
+     * quadratic at {@code [2i + 1]}, asked while its box is (the objects in file order lie
+     * mostly in order in memory; in leaf order each would be a wait for memory).
+     */
+    private final float[] roundings;
     private final int[] nodes;
     private final ForkJoinPool pool;
+    /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects. */
+    private final ChunkedPasses chunked;
     private int maxDepth;
 
     /**
@@ -74,9 +88,9 @@ final class BvhBuilder {
         this.objects = objects;
         this.count = objects.size();
         this.pool = pool;
-        this.order = new int[count];
-        this.boxes = new float[6 * count];
-        this.centres = new float[3 * count];
+        this.roundings = new float[2 * count];
+        this.primary = ObjectArrays.of(count);
+        this.spare = ObjectArrays.of(count);
         if (pool == null) { // no lambda either: its first use costs more than a small scene's whole build
             for (int i = 0; i < count; i++) {
                 measureObject(i);
@@ -88,6 +102,7 @@ final class BvhBuilder {
         int capacity = Math.max(1, 2 * count - 1);
         this.bounds = new float[6 * capacity];
         this.nodes = new int[2 * capacity];
+        this.chunked = new ChunkedPasses(pool);
     }
 
     /** Whether this builder works on a pool of threads. */
@@ -116,24 +131,23 @@ final class BvhBuilder {
         for (int i = 0; i < count; i++) {
             if (isFinite(i)) {
                 if (kept != i) {
-                    order[kept] = order[i];
-                    System.arraycopy(boxes, 6 * i, boxes, 6 * kept, 6);
-                    System.arraycopy(centres, 3 * i, centres, 3 * kept, 3);
+                    primary.order()[kept] = primary.order()[i];
+                    System.arraycopy(primary.boxes(), 6 * i, primary.boxes(), 6 * kept, 6);
                 }
                 kept++;
             } else {
                 apart = Arrays.copyOf(apart, apart.length + 1);
-                apart[apart.length - 1] = order[i];
+                apart[apart.length - 1] = primary.order()[i];
             }
         }
-        System.arraycopy(apart, 0, order, kept, apart.length);
+        System.arraycopy(apart, 0, primary.order(), kept, apart.length);
         unbounded = apart;
         count = kept;
     }
 
     private boolean isFinite(int i) {
         for (int k = 0; k < 6; k++) {
-            if (!Float.isFinite(boxes[6 * i + k])) {
+            if (!Float.isFinite(primary.boxes()[6 * i + k])) {
                 return false;
             }
         }
@@ -150,36 +164,36 @@ final class BvhBuilder {
         return count;
     }
 
-    /** Puts object {@code i}'s box and centre in place {@code i}. */
+    /** Puts object {@code i}'s box in place {@code i}. */
     private void measureObject(int i) {
-        BoundingBox box = objects.get(i).bounds();
-        put(boxes, 6 * i, box.min());
-        put(boxes, 6 * i + 3, box.max());
-        put(centres, 3 * i, box.centre());
-        order[i] = i;
+        IGeometry object = objects.get(i);
+        object.putBounds(primary.boxes(), 6 * i);
+        primary.order()[i] = i;
+        Rounding rounding = object.rounding();
+        roundings[2 * i] = rounding.linear();
+        roundings[2 * i + 1] = rounding.quadratic();
     }
 
-    private static void put(float[] array, int at, Vector3f v) {
-        array[at] = v.x();
-        array[at + 1] = v.y();
-        array[at + 2] = v.z();
-    }
-
-    /** Builds the tree; afterwards {@link #order} and {@link #boxes} are in leaf order. */
+    /** Builds the tree; afterwards {@link #order()} and {@link #boxes()} are in leaf order. */
     void build() {
         maxDepth = pool == null
-                ? buildNode(0, 1, 0, count, 0, null, new SahBins(BINS))
-                : pool.invoke(new Subtree(0, 1, 0, count, 0, null));
+                ? buildLarge(0, 1, 0, count, 0, null, primary, new SahBins())
+                : pool.invoke(new Subtree(0, 1, 0, count, 0, null, primary));
     }
 
     /** The objects' places in the file, in the order of the tree's leaves ({@link #count} of them). */
     int[] order() {
-        return order;
+        return primary.order();
     }
 
     /** The objects' boxes in leaf order, six floats each. */
     float[] boxes() {
-        return boxes;
+        return primary.boxes();
+    }
+
+    /** Per place in the file, the object's rounding: linear at {@code [2i]}, quadratic at {@code [2i + 1]}. */
+    float[] roundings() {
+        return roundings;
     }
 
     /** The depth of the deepest leaf. */
@@ -206,83 +220,222 @@ final class BvhBuilder {
         private final int end;
         private final int depth;
         private final Extent extent;
+        private final ObjectArrays data;
 
-        Subtree(int node, int free, int start, int end, int depth, Extent extent) {
+        Subtree(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data) {
             this.node = node;
             this.free = free;
             this.start = start;
             this.end = end;
             this.depth = depth;
             this.extent = extent;
+            this.data = data;
         }
 
         @Override
         protected Integer compute() {
-            return buildNode(node, free, start, end, depth, extent, new SahBins(BINS));
+            return buildLarge(node, free, start, end, depth, extent, data, new SahBins());
         }
     }
 
     /**
-     * Builds the node numbered {@code node} over {@code order[start, end)}; its descendants get
-     * the numbers from {@code free} on, at most {@code 2(end − start) − 2} of them. The node's
-     * {@code extent} comes from its parent's bins, or is {@code null} and measured here.
-     * Answers the subtree's depth.
+     * {@link #buildNode} for a node of any size: one of {@value #PARALLEL_THRESHOLD} objects or
+     * more is built here, its children in parallel, its passes in chunks if it is larger still;
+     * smaller ones go to {@link #buildNode}. A few dozen nodes take this path: kept apart, it
+     * leaves the code that builds the other hundreds of thousands free of branches that only
+     * the top of the tree takes, on which the JIT would compile it anew (one that is never
+     * taken while the JIT watches is compiled as a trap).
      */
-    private int buildNode(int node, int free, int start, int end, int depth, Extent extent, SahBins bins) {
-        Extent known = extent != null ? extent : measure(start, end);
+    private int buildLarge(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data,
+            SahBins bins) {
+        if (end - start < PARALLEL_THRESHOLD) {
+            return buildNode(node, free, start, end, depth, extent, data, bins);
+        }
+        Extent known = extent != null ? extent
+                : end - start >= CHUNKED_THRESHOLD ? chunked.measure(data, start, end) : measure(data, start, end);
         System.arraycopy(known.box(), 0, bounds, 6 * node, 6);
-        if (end - start > 1 && widestAxis(known.centres()) < 0) {
-            end = withoutTwins(start, end);
+        if (widestAxis(known.centres()) < 0) {
+            end = withoutTwins(data, start, end);
         }
-        int n = end - start;
-        Split split = n <= 1 ? null : depth < MAX_SAH_DEPTH ? splitBySah(known, start, end, bins) : splitByCount(start, end);
+        Split split = depth < MAX_SAH_DEPTH ? splitLarge(known, data, start, end, bins) : splitByCount(data, start, end);
         if (split == null) {
-            nodes[2 * node] = start;
-            nodes[2 * node + 1] = n;
-            return depth;
+            return leaf(node, start, end, depth, data);
         }
-        int left = free;
-        nodes[2 * node] = left;
-        nodes[2 * node + 1] = INNER;
-        int leftCount = split.middle() - start;
-        int rightFree = free + 2 * leftCount;
-        if (pool == null || n < PARALLEL_THRESHOLD) { // fork() outside a pool would use the common pool
-            return Math.max(buildNode(left, free + 2, start, split.middle(), depth + 1, split.left(), bins),
-                    buildNode(left + 1, rightFree, split.middle(), end, depth + 1, split.right(), bins));
+        int left = inner(node, free);
+        int middle = split.middle();
+        int rightFree = free + 2 * (middle - start);
+        if (pool == null) {
+            return Math.max(buildLarge(left, free + 2, start, middle, depth + 1, split.left(), split.data(), bins),
+                    buildLarge(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins));
         }
-        Subtree leftTree = new Subtree(left, free + 2, start, split.middle(), depth + 1, split.left());
+        Subtree leftTree = new Subtree(left, free + 2, start, middle, depth + 1, split.left(), split.data());
         leftTree.fork();
-        int rightDepth = buildNode(left + 1, rightFree, split.middle(), end, depth + 1, split.right(), bins);
+        int rightDepth = buildLarge(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins);
         return Math.max(leftTree.join(), rightDepth);
     }
 
-    /** The extent of {@code order[start, end)}, by one pass over the objects. */
-    private Extent measure(int start, int end) {
+    /**
+     * Builds the node numbered {@code node} over places {@code [start, end)} of {@code data}
+     * (the primary or the spare arrays), with fewer than {@value #PARALLEL_THRESHOLD} objects,
+     * on this thread; its descendants get the numbers from {@code free} on, at most
+     * {@code 2(end − start) − 2} of them. The node's {@code extent} comes from its parent's
+     * bins, or is {@code null} and measured here. Answers the subtree's depth.
+     *
+     * <p>The subtree's nodes are built in a loop over a stack of those waiting, not by
+     * recursion: the JIT compiles a loop early, while it runs, and a recursive method that it
+     * inlines into itself is a long compilation, during which the build runs slower code.
+     */
+    private int buildNode(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data,
+            SahBins bins) {
+        ArrayDeque<Pending> waiting = new ArrayDeque<>();
+        waiting.push(new Pending(node, free, start, end, depth, extent, data));
+        int deepest = depth;
+        while (!waiting.isEmpty()) {
+            Pending next = waiting.pop();
+            Split split = split(next, bins);
+            if (split == null) {
+                deepest = Math.max(deepest, next.depth());
+                continue;
+            }
+            int left = nodes[2 * next.node()];
+            int rightFree = next.free() + 2 * (split.middle() - next.start());
+            waiting.push(new Pending(left + 1, rightFree, split.middle(), split.end(), next.depth() + 1, split.right(),
+                    split.data()));
+            waiting.push(new Pending(left, next.free() + 2, next.start(), split.middle(), next.depth() + 1, split.left(),
+                    split.data()));
+        }
+        return deepest;
+    }
+
+    /**
+     * Makes the {@code waiting} node a leaf (answers {@code null}) or an inner node, whose
+     * children's objects are then divided as the answer says.
+     */
+    private Split split(Pending waiting, SahBins bins) {
+        int start = waiting.start();
+        int end = waiting.end();
+        ObjectArrays data = waiting.data();
+        Extent known = waiting.extent() != null ? waiting.extent() : measure(data, start, end);
+        System.arraycopy(known.box(), 0, bounds, 6 * waiting.node(), 6);
+        if (end - start > 1 && widestAxis(known.centres()) < 0) {
+            end = withoutTwins(data, start, end);
+        }
+        int n = end - start;
+        Split split = n <= 1 ? null
+                : waiting.depth() < MAX_SAH_DEPTH ? splitBySah(known, data, start, end, bins) : splitByCount(data, start, end);
+        if (split == null) {
+            leaf(waiting.node(), start, end, waiting.depth(), data);
+        } else {
+            inner(waiting.node(), waiting.free());
+        }
+        return split;
+    }
+
+    /** A node that waits to be built, with what {@link #buildNode} would be called with. */
+    private record Pending(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data) {
+    }
+
+    /** Makes node {@code node} the leaf of places {@code [start, end)}, whose objects go to the primary arrays. */
+    private int leaf(int node, int start, int end, int depth, ObjectArrays data) {
+        if (data != primary) {
+            data.copy(start, end, primary);
+        }
+        nodes[2 * node] = start;
+        nodes[2 * node + 1] = end - start;
+        return depth;
+    }
+
+    /** Makes node {@code node} an inner node whose children are numbered {@code free} and {@code free + 1}; answers {@code free}. */
+    private int inner(int node, int free) {
+        nodes[2 * node] = free;
+        nodes[2 * node + 1] = INNER;
+        return free;
+    }
+
+    /** The extent of places {@code [start, end)} of {@code data}, by one pass over the objects. */
+    private Extent measure(ObjectArrays data, int start, int end) {
         Extent extent = Extent.empty();
         for (int i = start; i < end; i++) {
-            extent.add(boxes, 6 * i, centres, 3 * i);
+            extent.add(data.boxes(), 6 * i);
         }
         return extent;
     }
 
     /**
-     * Finds the cheapest split by the SAH and partitions {@code order[start, end)} by it.
-     * Returns {@code null} when a leaf is cheaper. Each child's extent is the union of its
-     * bins', exactly what a pass over its objects would measure.
+     * Finds the cheapest split by the SAH and partitions places {@code [start, end)} of
+     * {@code data} by it, into the other arrays. Returns {@code null} when a leaf is cheaper.
+     * Each child's extent is the union of its bins', exactly what a pass over its objects would
+     * measure.
      */
-    private Split splitBySah(Extent extent, int start, int end, SahBins bins) {
+    private Split splitBySah(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
         int n = end - start;
         float[] centreBox = extent.centres();
         int axis = widestAxis(centreBox);
         if (axis < 0) {
-            return n > MAX_LEAF_SIZE ? splitByCount(start, end) : null; // all centres coincide
+            return n > MAX_LEAF_SIZE ? splitByCount(data, start, end) : null; // all centres coincide
+        }
+        if (alwaysLeaf(n, extent)) {
+            return null;
         }
         float lo = centreBox[axis];
         float scale = BINS / (centreBox[axis + 3] - lo);
         bins.clear();
-        for (int i = start; i < end; i++) {
-            bins.add(binOf(centres[3 * i + axis], lo, scale), boxes, 6 * i, centres, 3 * i);
+        bins.add(data.boxes(), start, end, axis, lo, scale);
+        int bestBin = cheapestBin(bins, extent, n);
+        if (bestBin == LEAF) {
+            return null;
         }
+        int middle = start + bins.count(bestBin + 1);
+        if (middle == start || middle == end) {
+            return splitByCount(data, start, end);
+        }
+        ObjectArrays to = data == primary ? spare : primary;
+        data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
+        return new Split(middle, end, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
+    }
+
+    /**
+     * {@link #splitBySah} for a node of {@value #PARALLEL_THRESHOLD} objects or more, whose
+     * passes go in chunks ({@link ChunkedPasses}) from {@value #CHUNKED_THRESHOLD} objects on.
+     */
+    private Split splitLarge(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
+        int n = end - start;
+        float[] centreBox = extent.centres();
+        int axis = widestAxis(centreBox);
+        if (axis < 0) {
+            return n > MAX_LEAF_SIZE ? splitByCount(data, start, end) : null; // all centres coincide
+        }
+        float lo = centreBox[axis];
+        float scale = BINS / (centreBox[axis + 3] - lo);
+        bins.clear();
+        SahBins[] chunks = null;
+        if (n >= CHUNKED_THRESHOLD) {
+            chunks = chunked.bin(data, start, end, axis, lo, scale, bins);
+        } else {
+            bins.add(data.boxes(), start, end, axis, lo, scale);
+        }
+        int bestBin = cheapestBin(bins, extent, n);
+        if (bestBin == LEAF) {
+            return null;
+        }
+        int middle = start + bins.count(bestBin + 1);
+        if (middle == start || middle == end) {
+            return splitByCount(data, start, end);
+        }
+        ObjectArrays to = data == primary ? spare : primary;
+        if (chunks != null) {
+            chunked.partition(data, start, end, axis, lo, scale, bestBin, chunks, to, middle);
+        } else {
+            data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
+        }
+        return new Split(middle, end, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
+    }
+
+    /**
+     * The last bin of the left side of the cheapest split of filled {@code bins} (−1 if none
+     * has two sides), or {@link #LEAF} if {@code n} objects cost less as a leaf.
+     */
+    private static int cheapestBin(SahBins bins, Extent extent, int n) {
         float[] costs = bins.splitCosts();
         float bestCost = Float.POSITIVE_INFINITY;
         int bestBin = -1;
@@ -294,25 +447,30 @@ final class BvhBuilder {
         }
         float leafCost = n;
         float splitCost = TRAVERSAL_COST + bestCost / SahBins.area(extent.box(), 0);
-        if (splitCost >= leafCost && n <= MAX_LEAF_SIZE) {
-            return null;
-        }
-        int middle = partition(start, end, axis, bestBin, lo, scale);
-        if (middle == start || middle == end) {
-            return splitByCount(start, end);
-        }
-        return new Split(middle, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS));
+        return splitCost >= leafCost && n <= MAX_LEAF_SIZE ? LEAF : bestBin;
     }
 
     /**
-     * Moves the objects of {@code order[start, end)} that are the twin of one before them in
+     * Whether a node of {@code n} objects is a leaf whatever its bins: with no more objects than
+     * a visit costs and a box of finite, nonzero area, a split costs at least
+     * {@link #TRAVERSAL_COST} ≥ n, so {@link #splitBySah} would choose the leaf. Half the nodes
+     * are this small, and need not be binned.
+     */
+    private static boolean alwaysLeaf(int n, Extent extent) {
+        float area = SahBins.area(extent.box(), 0);
+        return n <= TRAVERSAL_COST && area > 0 && area < Float.POSITIVE_INFINITY;
+    }
+
+    /**
+     * Moves the objects of places {@code [start, end)} of {@code data} that are the twin of one before them in
      * the file ({@link IGeometry#sameTest}) to the back, and returns where they start: the tree
      * leaves them out. A twin reports the same hit as the first of its kind for every ray, and
      * on that tie the first in the file wins, so the twin never does. Only where all centres
      * coincide, the one place where many twins can gather and defeat the tree (a hundred
      * thousand copies of one sphere would all be tested by every ray that reaches them).
      */
-    private int withoutTwins(int start, int end) {
+    private int withoutTwins(ObjectArrays data, int start, int end) {
+        int[] order = data.order();
         Arrays.sort(order, start, end); // file order, so that the first of each kind is kept
         Map<Object, Boolean> seen = new HashMap<>();
         int kept = start;
@@ -323,18 +481,13 @@ final class BvhBuilder {
                 order[kept++] = object;
             }
         }
-        refreshData(start, end);
-        return kept;
-    }
-
-    /** Puts each object's box and centre back at its place in {@code order[start, end)}. */
-    private void refreshData(int start, int end) {
-        for (int i = start; i < end; i++) {
-            BoundingBox box = objects.get(order[i]).bounds();
-            put(boxes, 6 * i, box.min());
-            put(boxes, 6 * i + 3, box.max());
-            put(centres, 3 * i, box.centre());
+        for (int i = start; i < end; i++) { // each object's box back at its place
+            objects.get(order[i]).putBounds(data.boxes(), 6 * i);
         }
+        if (data != primary) { // the twins stay in no leaf, but in the list of objects
+            data.copy(kept, end, primary);
+        }
+        return kept;
     }
 
     /** The axis along which the centres spread most, or −1 if they all coincide. */
@@ -351,54 +504,21 @@ final class BvhBuilder {
         return axis;
     }
 
-    private static int binOf(float centre, float lo, float scale) {
-        int bin = (int) ((centre - lo) * scale);
-        return Math.min(BINS - 1, Math.max(0, bin));
-    }
-
-    /** Moves the objects in bins {@code ≤ lastLeftBin} to the front; returns where the rest start. */
-    private int partition(int start, int end, int axis, int lastLeftBin, float lo, float scale) {
-        int i = start;
-        int j = end - 1;
-        while (i <= j) {
-            if (binOf(centres[3 * i + axis], lo, scale) <= lastLeftBin) {
-                i++;
-            } else {
-                swap(i, j);
-                j--;
-            }
-        }
-        return i;
-    }
-
-    /** Swaps the objects at places i and j of {@code order}, with their data. */
-    private void swap(int i, int j) {
-        int object = order[i];
-        order[i] = order[j];
-        order[j] = object;
-        swapRange(boxes, 6 * i, 6 * j, 6);
-        swapRange(centres, 3 * i, 3 * j, 3);
-    }
-
-    private static void swapRange(float[] array, int a, int b, int length) {
-        for (int k = 0; k < length; k++) {
-            float value = array[a + k];
-            array[a + k] = array[b + k];
-            array[b + k] = value;
-        }
-    }
-
     /**
      * Splits in half by count, keeping the present order: a fallback for objects that the SAH
      * cannot separate (equal centres) and for very deep trees. The children measure their
      * extents themselves.
      */
-    private static Split splitByCount(int start, int end) {
-        return end - start <= 1 ? null : new Split(start + (end - start) / 2, null, null);
+    private static Split splitByCount(ObjectArrays data, int start, int end) {
+        return end - start <= 1 ? null : new Split(start + (end - start) / 2, end, null, null, data);
     }
 
-    /** Where a node's objects divide ({@code order[middle]} is the right child's first), and the children's extents, if known. */
-    private record Split(int middle, Extent left, Extent right) {
+    /**
+     * Where a node's objects divide (place {@code middle} is the right child's first) and end
+     * (before any twins left out), the children's extents, if known, and the arrays that hold
+     * the children's objects.
+     */
+    private record Split(int middle, int end, Extent left, Extent right, ObjectArrays data) {
     }
 
 }

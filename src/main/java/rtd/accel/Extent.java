@@ -3,7 +3,9 @@ package rtd.accel;
 /**
  * What the {@link BvhBuilder} must know of a group of objects to split it: the box around
  * their boxes, and the box around their centres (along which axis they spread, and where the
- * bins lie). Both grow as objects are added; boxes are {min x, y, z, max x, y, z}.
+ * bins lie). Both grow as objects are added; boxes are {min x, y, z, max x, y, z}, and an
+ * object's centre is the centre of its box, {@code (min + max) · 0.5} in float as
+ * {@link rtd.geometry.BoundingBox#centre} computes it.
  */
 final class Extent {
 
@@ -11,7 +13,8 @@ final class Extent {
     private final float[] centres = new float[6];
 
     private Extent() {
-        clear();
+        setEmpty(box);
+        setEmpty(centres);
     }
 
     /** An extent of no objects. */
@@ -19,33 +22,30 @@ final class Extent {
         return new Extent();
     }
 
-    /** Forgets every object added. */
-    void clear() {
-        setEmpty(box);
-        setEmpty(centres);
-    }
-
-    /** Adds the object whose box is {@code boxes[boxAt .. +5]} and centre {@code centrePoints[centreAt .. +2]}. */
-    void add(float[] boxes, int boxAt, float[] centrePoints, int centreAt) {
+    /** Adds the object whose box is {@code boxes[at .. at+5]}. */
+    void add(float[] boxes, int at) {
         for (int k = 0; k < 3; k++) {
-            box[k] = FastMath.min(box[k], boxes[boxAt + k]);
-            box[k + 3] = FastMath.max(box[k + 3], boxes[boxAt + k + 3]);
-            centres[k] = FastMath.min(centres[k], centrePoints[centreAt + k]);
-            centres[k + 3] = FastMath.max(centres[k + 3], centrePoints[centreAt + k]);
+            float min = boxes[at + k];
+            float max = boxes[at + k + 3];
+            box[k] = Math.min(box[k], min);
+            box[k + 3] = Math.max(box[k + 3], max);
+            float centre = (min + max) * 0.5f;
+            centres[k] = Math.min(centres[k], centre);
+            centres[k + 3] = Math.max(centres[k + 3], centre);
         }
     }
 
     /** Adds every object of {@code other}. */
     void add(Extent other) {
-        grow(box, other.box);
-        grow(centres, other.centres);
+        grow(box, 0, other.box, 0);
+        grow(centres, 0, other.centres, 0);
     }
 
-    /** Grows the box {@code box} to hold the box {@code other}. */
-    static void grow(float[] box, float[] other) {
+    /** Grows the box at {@code box[at ..]} to hold the box at {@code other[otherAt ..]}. */
+    static void grow(float[] box, int at, float[] other, int otherAt) {
         for (int k = 0; k < 3; k++) {
-            box[k] = FastMath.min(box[k], other[k]);
-            box[k + 3] = FastMath.max(box[k + 3], other[k + 3]);
+            box[at + k] = Math.min(box[at + k], other[otherAt + k]);
+            box[at + k + 3] = Math.max(box[at + k + 3], other[otherAt + k + 3]);
         }
     }
 
@@ -61,11 +61,16 @@ final class Extent {
 
     /** Makes {@code box} the empty box, which grows into any box it is grown by. */
     static void setEmpty(float[] box) {
-        box[0] = Float.POSITIVE_INFINITY;
-        box[1] = Float.POSITIVE_INFINITY;
-        box[2] = Float.POSITIVE_INFINITY;
-        box[3] = Float.NEGATIVE_INFINITY;
-        box[4] = Float.NEGATIVE_INFINITY;
-        box[5] = Float.NEGATIVE_INFINITY;
+        setEmpty(box, 0);
+    }
+
+    /** Makes the box at {@code box[at .. at+5]} the empty box. */
+    static void setEmpty(float[] box, int at) {
+        box[at] = Float.POSITIVE_INFINITY;
+        box[at + 1] = Float.POSITIVE_INFINITY;
+        box[at + 2] = Float.POSITIVE_INFINITY;
+        box[at + 3] = Float.NEGATIVE_INFINITY;
+        box[at + 4] = Float.NEGATIVE_INFINITY;
+        box[at + 5] = Float.NEGATIVE_INFINITY;
     }
 }

@@ -50,6 +50,57 @@ public record BoundingBox(Vector3f min, Vector3f max) {
                 new Vector3f(up(hi[0] + grow), up(hi[1] + grow), up(hi[2] + grow)));
     }
 
+    /**
+     * {@link #around} for one point {@code (x, y, z)}, written to {@code into[at .. at+5]} (min x,
+     * y, z, max x, y, z) instead of a new box: the same numbers, without making objects, for a
+     * hierarchy that measures a million of them.
+     */
+    static void around(double margin, float x, float y, float z, float[] into, int at) {
+        double largest = Math.max(Math.max(Math.max(0, Math.abs((double) x)), Math.abs((double) y)), Math.abs((double) z));
+        double grow = margin * (1 + 1e-6) + 8 * UNIT_ROUNDOFF * largest;
+        into[at] = down(x - grow);
+        into[at + 1] = down(y - grow);
+        into[at + 2] = down(z - grow);
+        into[at + 3] = up(x + grow);
+        into[at + 4] = up(y + grow);
+        into[at + 5] = up(z + grow);
+    }
+
+    /**
+     * {@link #around} for the {@code points} points whose coordinates are
+     * {@code coords[from ..]} (x, y, z each), written to {@code into[at .. at+5]} instead of a
+     * new box: the same numbers (a minimum or maximum is the same in any order), without making
+     * objects.
+     */
+    static void around(double margin, float[] coords, int from, int points, float[] into, int at) {
+        double largest = 0;
+        for (int i = from; i < from + 3 * points; i++) {
+            largest = Math.max(largest, Math.abs((double) coords[i]));
+        }
+        double grow = margin * (1 + 1e-6) + 8 * UNIT_ROUNDOFF * largest;
+        for (int k = 0; k < 3; k++) {
+            double lo = Double.POSITIVE_INFINITY;
+            double hi = Double.NEGATIVE_INFINITY;
+            for (int p = 0; p < points; p++) {
+                double c = coords[from + 3 * p + k];
+                lo = Math.min(lo, c);
+                hi = Math.max(hi, c);
+            }
+            into[at + k] = down(lo - grow);
+            into[at + k + 3] = up(hi + grow);
+        }
+    }
+
+    /** Writes this box to {@code into[at .. at+5]}: min x, y, z, max x, y, z. */
+    public void put(float[] into, int at) {
+        into[at] = min.x();
+        into[at + 1] = min.y();
+        into[at + 2] = min.z();
+        into[at + 3] = max.x();
+        into[at + 4] = max.y();
+        into[at + 5] = max.z();
+    }
+
     private static float down(double value) {
         return Math.nextDown((float) value);
     }

@@ -46,6 +46,15 @@ public interface IGeometry {
     BoundingBox bounds();
 
     /**
+     * Writes {@link #bounds} to {@code into[at .. at+5]}: min x, y, z, max x, y, z. A shape of
+     * which scenes hold millions (spheres) writes the same numbers without making a box, so that
+     * the hierarchy measures its objects without garbage.
+     */
+    default void putBounds(float[] into, int at) {
+        bounds().put(into, at);
+    }
+
+    /**
      * How fast the rounding of {@link #intersect} lets a reported hit stray from the object's
      * box as the ray runs farther (see {@link #bounds}). By default the widest cone; a shape
      * whose test rounds less says so, and its boxes grow less in the hierarchy.

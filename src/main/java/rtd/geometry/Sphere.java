@@ -75,6 +75,12 @@ public record Sphere(Vector3f center, float radius, Color color, Material materi
         return BoundingBox.around(radius * (1 + 2e-3), center);
     }
 
+    /** {@link #bounds}, the same numbers, written without making a box. */
+    @Override
+    public void putBounds(float[] into, int at) {
+        BoundingBox.around(radius * (1 + 2e-3), center.x(), center.y(), center.z(), into, at);
+    }
+
     /** {@code 2e-6·L + min(ROUNDING_CONE·L, (18.75u/2r)·L²)}: see {@link #bounds}. */
     @Override
     public Rounding rounding() {

@@ -2,7 +2,9 @@ package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.render.RenderResult;
@@ -17,8 +19,9 @@ class BvhTest {
 
     @Test
     void isTheSameTreeForAnyNumberOfBuildThreads() {
-        // Large enough to build in parallel; with one thread it is built on the calling thread.
-        Scene scene = RandomScenes.generate(7, 60_000);
+        // Large enough to build in parallel, and for the top nodes to bin and partition their
+        // objects in chunks side by side; with one thread it is built on the calling thread.
+        Scene scene = RandomScenes.generate(7, 150_000);
         Bvh one = Bvh.build(scene, 1);
         for (int threads : new int[] {2, 3, 4}) {
             Bvh many = Bvh.build(scene, threads);
@@ -28,6 +31,29 @@ class BvhTest {
             assertThat(many.leaves.boxes).isEqualTo(one.leaves.boxes);
             assertThat(many.leaves.numbers).isEqualTo(one.leaves.numbers);
         }
+    }
+
+    @Test
+    void holdsEachObjectInOneLeafOrLeavesItOutAsTheTwinOfOneItHolds() {
+        // Large enough for the top nodes to bin and partition their objects in chunks.
+        Scene scene = RandomScenes.generate(11, 150_000);
+        Bvh bvh = Bvh.build(scene, 2);
+        Set<Integer> inLeaves = new HashSet<>();
+        for (int node = 0; node < bvh.nodeCount(); node++) {
+            if (bvh.nodes[2 * node + 1] != Bvh.INNER) {
+                for (int i = bvh.nodes[2 * node]; i < bvh.nodes[2 * node] + bvh.nodes[2 * node + 1]; i++) {
+                    assertThat(inLeaves.add(bvh.leaves.fileOrder[i])).as("object %d in two leaves", bvh.leaves.fileOrder[i]).isTrue();
+                }
+            }
+        }
+        Set<Object> heldShapes = new HashSet<>();
+        for (int object : inLeaves) {
+            heldShapes.add(scene.objects().get(object).sameTest());
+        }
+        for (int object = 0; object < scene.objects().size(); object++) {
+            assertThat(heldShapes.contains(scene.objects().get(object).sameTest())).as("object %d held", object).isTrue();
+        }
+        assertThat(inLeaves.size()).isGreaterThan(140_000);
     }
 
     @Test

@@ -3,6 +3,7 @@ package rtd.geometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.image.Color;
@@ -107,6 +108,25 @@ class TriangleTest {
             Ray ray = new Ray(from, onEdge.subtract(from));
             assertThat(first.intersect(ray).happened() || second.intersect(ray).happened())
                     .as("ray %d %s between %s and %s", r, ray, first.corner(2), d).isTrue();
+        }
+    }
+
+    @Test
+    void writesTheSameBoxWithoutMakingOneAsItMakes() {
+        Random random = new Random(9);
+        for (int i = 0; i < 10_000; i++) {
+            float scale = (float) Math.pow(10, random.nextInt(9) - 4);
+            Vector3f p1 = new Vector3f((random.nextFloat() - 0.5f) * scale, (random.nextFloat() - 0.5f) * scale, -random.nextFloat() * scale);
+            Vector3f p2 = p1.add(new Vector3f(random.nextFloat() * scale, random.nextFloat() * scale, 0));
+            Vector3f p3 = random.nextInt(4) == 0 // a needle now and then
+                    ? p1.add(p2.subtract(p1).multiply(2 + random.nextFloat() * 1e-6f))
+                    : p1.add(new Vector3f(0, random.nextFloat() * scale, random.nextFloat() * scale));
+            Triangle any = new Triangle(p1, p2, p3, Color.BLACK, Material.DEFAULT);
+            float[] written = new float[8];
+            any.putBounds(written, 1);
+            float[] made = new float[8];
+            any.bounds().put(made, 1);
+            assertThat(written).as(p1 + " " + p2 + " " + p3).isEqualTo(made);
         }
     }
 }
