@@ -27,7 +27,8 @@ import picocli.CommandLine;
  *
  * <p>It asks the files, every {@value #POLL_MILLIS} ms, for their size, time and (up to 16 MiB)
  * a checksum of their bytes: an editor that saves twice within the file system's clock tick is
- * still seen, and saving without a change renders nothing.
+ * still seen, and saving without a change renders nothing. A change is rendered once the files
+ * have stopped changing for one look, so that a save caught halfway is not.
  */
 final class SceneWatcher {
 
@@ -94,6 +95,12 @@ final class SceneWatcher {
             }
             Map<Path, String> now = fingerprints();
             if (!now.equals(seen)) {
+                try {
+                    now = settled(now);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    break;
+                }
                 err.println("rtd: " + changed(seen, now) + " changed: rendering again");
                 seen = now;
                 err.flush();
@@ -101,6 +108,21 @@ final class SceneWatcher {
             }
         }
         return code;
+    }
+
+    /**
+     * The files' fingerprints once they look the same on two looks in a row. An editor may save
+     * in steps (empty the file, then write it), and a render of the file caught between them
+     * would report errors the teacher never wrote.
+     */
+    private Map<Path, String> settled(Map<Path, String> now) throws InterruptedException {
+        Map<Path, String> before;
+        do {
+            before = now;
+            Thread.sleep(pollMillis);
+            now = fingerprints();
+        } while (!now.equals(before) && !stopped);
+        return now;
     }
 
     private int renderOnce() {
