@@ -19,6 +19,8 @@ public final class HitBuffer {
     private final float[] t;
     private final float[] distance;
     private final int[] tests;
+    /** Whether the last {@link #setMisses} has not been followed by a {@link #set}: every ray missed. */
+    private boolean missedAll;
 
     /** Room for {@code capacity} hits. */
     public HitBuffer(int capacity) {
@@ -40,6 +42,7 @@ public final class HitBuffer {
 
     /** Ray {@code i} hits object {@code object} (its place in the scene) at {@code t}, at {@code distance} from its origin. */
     public void set(int i, int object, float t, float distance) {
+        missedAll = false;
         this.index[i] = object;
         this.t[i] = t;
         this.distance[i] = distance;
@@ -61,6 +64,7 @@ public final class HitBuffer {
 
     /** Rays 0 to {@code count − 1} hit nothing, and took no intersection test. */
     public void setMisses(int count) {
+        missedAll = true;
         Arrays.fill(tests, 0, count, 0);
         Arrays.fill(index, 0, count, -1);
         Arrays.fill(t, 0, count, Float.NaN);
@@ -68,6 +72,15 @@ public final class HitBuffer {
     }
 
     /** The place of the object ray {@code i} hits among the scene's objects, or −1. */
+    /**
+     * Whether no ray of the bundle hit anything, as a tracer said at once for all of them
+     * ({@link #setMisses}, as a beam that reaches no box does); {@code false} does not say that
+     * one hit. A shader may then colour the whole bundle at once.
+     */
+    public boolean missedAll() {
+        return missedAll;
+    }
+
     public int index(int i) {
         return index[i];
     }

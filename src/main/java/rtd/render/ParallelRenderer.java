@@ -123,9 +123,7 @@ public final class ParallelRenderer {
             if (samples == 1) {
                 rays.fill(camera, left, top, right, bottom, width, height);
                 tracer.traceAll(rays, hits);
-                for (int i = 0; i < rays.count(); i++) {
-                    rgb[i] = shader.rgb(rays, hits, i);
-                }
+                shader.rgbAll(rays, hits, rays.count(), rgb);
                 return rgb;
             }
             Arrays.fill(sum, 0);

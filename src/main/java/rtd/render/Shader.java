@@ -21,6 +21,16 @@ public interface Shader {
         return colour(rays, hits, i).toColor().getRGB();
     }
 
+    /**
+     * {@link #rgb} of rays {@code 0} to {@code count − 1}, into {@code rgb}. A shader may colour
+     * a bundle whose rays all missed ({@link HitBuffer#missedAll}) at once.
+     */
+    default void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
+        for (int i = 0; i < count; i++) {
+            rgb[i] = rgb(rays, hits, i);
+        }
+    }
+
     /** The rays this shader followed beyond the camera's, by kind ("shadow", "reflected", ...); none by default. */
     default Map<String, Long> secondaryRays() {
         return Map.of();

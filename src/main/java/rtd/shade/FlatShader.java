@@ -1,5 +1,6 @@
 package rtd.shade;
 
+import java.util.Arrays;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.image.Color;
@@ -26,6 +27,21 @@ public final class FlatShader implements Shader {
         colours[0] = scene.ambient().getRGB();
         for (int i = 1; i < colours.length; i++) {
             colours[i] = scene.objects().get(i - 1).color().getRGB();
+        }
+    }
+
+    /**
+     * A bundle that missed everything is the background throughout, filled at once: most of
+     * the paper's picture is sky, and colouring it ray by ray was most of its render.
+     */
+    @Override
+    public void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
+        if (hits.missedAll()) {
+            Arrays.fill(rgb, 0, count, colours[0]);
+        } else {
+            for (int i = 0; i < count; i++) {
+                rgb[i] = colours[hits.index(i) + 1];
+            }
         }
     }
 
