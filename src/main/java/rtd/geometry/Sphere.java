@@ -51,6 +51,21 @@ public record Sphere(Vector3f center, float radius, Color color, Material materi
         return far >= 0 ? far : Float.NaN;
     }
 
+    /** How many numbers {@link #putTestNumbers} writes. */
+    public static final int NUMBERS = 4;
+
+    /**
+     * Writes the {@value #NUMBERS} numbers {@link #intersect} uses into {@code into} from
+     * {@code at}: M's x, y, z and {@code r·r} (equation 3.8), for the BVH's packed copy of the
+     * test.
+     */
+    public void putTestNumbers(float[] into, int at) {
+        into[at] = center.x();
+        into[at + 1] = center.y();
+        into[at + 2] = center.z();
+        into[at + 3] = radius * radius;
+    }
+
     /** {@code (P − M) / r}. */
     @Override
     public Vector3f normalAt(Vector3f point) {

@@ -117,6 +117,14 @@ public final class Triangle implements IGeometry {
         return v.clone();
     }
 
+    /**
+     * Writes the {@value #NUMBERS} numbers of {@link #testNumbers} into {@code into} from
+     * {@code at}: the BVH packs a million triangles this way without a copy of each in between.
+     */
+    public void putTestNumbers(float[] into, int at) {
+        System.arraycopy(v, 0, into, at, NUMBERS);
+    }
+
     /** The normal given for corner {@code i} (0, 1 or 2) of a smooth triangle, or {@code null} for a flat one. */
     public Vector3f cornerNormal(int i) {
         return cornerNormals == null ? null : cornerNormals[i];

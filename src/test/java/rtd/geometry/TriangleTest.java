@@ -3,6 +3,7 @@ package rtd.geometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
@@ -127,6 +128,28 @@ class TriangleTest {
             float[] made = new float[8];
             any.bounds().put(made, 1);
             assertThat(written).as(p1 + " " + p2 + " " + p3).isEqualTo(made);
+        }
+    }
+
+    @Test
+    void writesExactlyItsTestNumbersWhereItIsToldAndNothingElse() {
+        Random random = new Random(11);
+        for (int i = 0; i < 10_000; i++) {
+            float scale = (float) Math.pow(10, random.nextInt(9) - 4);
+            Vector3f p1 = new Vector3f((random.nextFloat() - 0.5f) * scale, (random.nextFloat() - 0.5f) * scale, -random.nextFloat() * scale);
+            Vector3f p2 = p1.add(new Vector3f(random.nextFloat() * scale, random.nextFloat() * scale, 0));
+            Vector3f p3 = random.nextInt(4) == 0 // a needle now and then
+                    ? p1.add(p2.subtract(p1).multiply(2 + random.nextFloat() * 1e-6f))
+                    : p1.add(new Vector3f(0, random.nextFloat() * scale, random.nextFloat() * scale));
+            Triangle any = new Triangle(p1, p2, p3, Color.BLACK, Material.DEFAULT);
+            int at = 1 + random.nextInt(Triangle.NUMBERS);
+            float[] written = new float[at + Triangle.NUMBERS + 2];
+            Arrays.fill(written, -7f);
+            any.putTestNumbers(written, at);
+            float[] expected = new float[written.length];
+            Arrays.fill(expected, -7f);
+            System.arraycopy(any.testNumbers(), 0, expected, at, Triangle.NUMBERS);
+            assertThat(written).as(p1 + " " + p2 + " " + p3).isEqualTo(expected);
         }
     }
 }
