@@ -28,7 +28,7 @@ final class LeafObjects {
     static final byte PACKED_SPHERE = 0;
     static final byte PACKED_TRIANGLE = 1;
     static final byte OWN_TEST = 2;
-    private static final int SPHERE_SIZE = 4;
+    private static final int SPHERE_SIZE = Sphere.NUMBERS;
     private static final int TRIANGLE_SIZE = Triangle.NUMBERS;
 
     final IGeometry[] objects;
@@ -60,13 +60,18 @@ final class LeafObjects {
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
         int size = 0;
+        int kind = -1;
         for (int i = 0; i < objects.length; i++) { // in order: the offsets are a running sum
             byte test = testFor(objects[i]);
-            int kind = kindOf(names, tests, objects[i].kind(), test);
-            if (kind < 0) {
-                kind = names.size();
-                names.add(objects[i].kind());
-                tests.add(test);
+            String name = objects[i].kind();
+            // a mesh's triangles come in a run of one kind: look the kind up only when it changes
+            if (kind < 0 || test != tests.get(kind) || !name.equals(names.get(kind))) {
+                kind = kindOf(names, tests, name, test);
+                if (kind < 0) {
+                    kind = names.size();
+                    names.add(name);
+                    tests.add(test);
+                }
             }
             kinds[i] = (byte) kind;
             testOf[i] = test;
@@ -99,14 +104,10 @@ final class LeafObjects {
     }
 
     private void pack(int i) {
-        int at = offsets[i];
-        if (objects[i] instanceof Sphere sphere) {
-            numbers[at] = sphere.center().x();
-            numbers[at + 1] = sphere.center().y();
-            numbers[at + 2] = sphere.center().z();
-            numbers[at + 3] = sphere.radius() * sphere.radius();
-        } else if (objects[i] instanceof Triangle triangle) {
-            System.arraycopy(triangle.testNumbers(), 0, numbers, at, TRIANGLE_SIZE);
+        if (testOf[i] == PACKED_SPHERE) {
+            ((Sphere) objects[i]).putTestNumbers(numbers, offsets[i]);
+        } else if (testOf[i] == PACKED_TRIANGLE) {
+            ((Triangle) objects[i]).putTestNumbers(numbers, offsets[i]);
         }
     }
 
