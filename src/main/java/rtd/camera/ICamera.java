@@ -26,6 +26,23 @@ public interface ICamera {
      */
     Ray generateRay(float x, float y, int w, int h);
 
+    /**
+     * {@link #generateRay(float, float, int, int)} as numbers: the origin's x, y, z, then the
+     * direction's, into {@code into[at .. at + 5]}. The renderer makes its rays this way, so that no
+     * {@code Ray} or {@code Vector3f} is made per pixel while the JIT has not yet learnt to leave
+     * them out (a million pixels' worth of garbage in the first render). A camera that overrides
+     * it writes exactly {@code generateRay}'s numbers, by the same operations in the same order.
+     */
+    default void putRay(float x, float y, int w, int h, float[] into, int at) {
+        Ray ray = generateRay(x, y, w, h);
+        into[at] = ray.origin().x();
+        into[at + 1] = ray.origin().y();
+        into[at + 2] = ray.origin().z();
+        into[at + 3] = ray.direction().x();
+        into[at + 4] = ray.direction().y();
+        into[at + 5] = ray.direction().z();
+    }
+
     /** The camera's position in the scene. */
     Vector3f position();
 }

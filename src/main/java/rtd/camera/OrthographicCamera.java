@@ -60,6 +60,19 @@ public final class OrthographicCamera implements ICamera {
         return new Ray(origin, dir);
     }
 
+    /** {@link #generateRay(float, float, int, int)}'s numbers, component by component in its order. */
+    @Override
+    public void putRay(float x, float y, int w, int h, float[] into, int at) {
+        float offsetX = x - (w / 2);
+        float offsetY = y - (h / 2);
+        into[at] = pos.x() + (widthVector.x() * offsetX / zoom + heightVector.x() * offsetY / zoom);
+        into[at + 1] = pos.y() + (widthVector.y() * offsetX / zoom + heightVector.y() * offsetY / zoom);
+        into[at + 2] = pos.z() + (widthVector.z() * offsetX / zoom + heightVector.z() * offsetY / zoom);
+        into[at + 3] = dir.x();
+        into[at + 4] = dir.y();
+        into[at + 5] = dir.z();
+    }
+
     @Override
     public Vector3f position() {
         return pos;

@@ -57,6 +57,20 @@ public final class PerspectiveCamera implements ICamera {
         return new Ray(pos, direction);
     }
 
+    /** {@link #generateRay(float, float, int, int)}'s numbers, component by component in its order. */
+    @Override
+    public void putRay(float x, float y, int w, int h, float[] into, int at) {
+        float offsetX = x - (w / 2);
+        float offsetY = y - (h / 2);
+        float f = (float) (w / 2.0 * focal);
+        into[at] = pos.x();
+        into[at + 1] = pos.y();
+        into[at + 2] = pos.z();
+        into[at + 3] = forward.x() * f + widthVector.x() * offsetX + heightVector.x() * offsetY;
+        into[at + 4] = forward.y() * f + widthVector.y() * offsetX + heightVector.y() * offsetY;
+        into[at + 5] = forward.z() * f + widthVector.z() * offsetX + heightVector.z() * offsetY;
+    }
+
     @Override
     public Vector3f position() {
         return pos;

@@ -13,8 +13,8 @@ import rtd.math.Vector3f;
  * <p>The rays are made only when a tracer first asks for their numbers ({@link #make}): a
  * tracer that can tell from the square's corners that no ray reaches any object never needs
  * them. Numbers, not {@link Ray} objects: a {@code Ray} stored in an array lives on the heap,
- * 48 bytes a pixel; here the camera's {@code Ray} is only read, so once the JIT has inlined
- * {@link ICamera#generateRay} it never exists as an object.
+ * 48 bytes a pixel; here the camera writes each ray's numbers ({@link ICamera#putRay}, exactly
+ * {@link ICamera#generateRay}'s), so no object is made per pixel.
  */
 public final class RayBundle {
 
@@ -25,6 +25,8 @@ public final class RayBundle {
     private final float[] directionY;
     private final float[] directionZ;
     private int count;
+    /** One ray's numbers as the camera writes them ({@link ICamera#putRay}), before they are stored. */
+    private final float[] numbers = new float[6];
     /** The square whose rays these are, or no camera if the rays were given one by one. */
     private ICamera camera;
     private int left;
@@ -94,7 +96,8 @@ public final class RayBundle {
         int i = 0;
         for (int y = top; y < bottom; y++) {
             for (int x = left; x < right; x++) {
-                store(i++, rayOf(x, y));
+                camera.putRay(x + sampleX, y + sampleY, width, height, numbers, 0);
+                store(i++);
             }
         }
         made = true;
@@ -126,6 +129,16 @@ public final class RayBundle {
             return camera.generateRay(x, y, width, height);
         }
         return camera.generateRay(x + sampleX, y + sampleY, width, height);
+    }
+
+    /** Ray i from {@link #numbers}. */
+    private void store(int i) {
+        originX[i] = numbers[0];
+        originY[i] = numbers[1];
+        originZ[i] = numbers[2];
+        directionX[i] = numbers[3];
+        directionY[i] = numbers[4];
+        directionZ[i] = numbers[5];
     }
 
     private void store(int i, Ray ray) {
