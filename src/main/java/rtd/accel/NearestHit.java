@@ -164,9 +164,8 @@ final class NearestHit {
 
     /**
      * The slab test of the box of {@code node} grown by {@code grow}: the t at which the ray
-     * enters it, or {@link #MISS}; negative when the origin lies inside; NaN (which
-     * {@link #worthVisiting} refuses, as it does a miss) for a ray running exactly along a grown
-     * side. {@link #exit} gives where it leaves.
+     * enters it, or {@link #MISS}; negative when the origin lies inside. {@link #worthVisiting}
+     * refuses a NaN as it does a miss. {@link #exit} gives where it leaves.
      */
     float entry(int node, float grow) {
         float[] bounds = bvh.bounds;
@@ -261,12 +260,15 @@ final class NearestHit {
 
     /**
      * The depth test's order as one number, smaller wins: the distance, then the place in the
-     * file. The bits of a float {@code ≥ 0} (or NaN, which is larger than all) order as its values
-     * do, so they go first; the place breaks ties. One comparison instead of two also keeps the
-     * JIT from compiling the hot loop anew the first time two objects tie.
+     * file. The bits of a float {@code ≥ 0} order as its values do, so they go first; the place
+     * breaks ties. A distance is never negative, so its sign bit is cleared: a NaN distance
+     * (0 · ∞, a hit at t = ∞ on a ray with a zero component) made at run time may carry the sign,
+     * and must sort above +∞ ({@link #NO_HIT}), never winning, as {@code distance < nearest} never
+     * lets it in the paper's loop. One comparison instead of two also keeps the JIT from compiling
+     * the hot loop anew the first time two objects tie.
      */
     private static long depthKey(float distance, int index) {
-        return ((long) Float.floatToRawIntBits(distance) << 32) | index;
+        return ((long) (Float.floatToRawIntBits(distance) & 0x7FFF_FFFF) << 32) | index;
     }
 
     /** Boxes entered beyond a hit at {@code t}, by more than rounding can explain, cannot hold a nearer one. */

@@ -36,8 +36,8 @@ record ObjectArrays(int[] order, float[] boxes) {
         for (int i = start; i < end; i++) {
             int at = 6 * i;
             int bin = SahBins.binOf((boxes[at + axis] + boxes[at + axis + 3]) * 0.5f, lo, scale);
-            int goesRight = (lastLeftBin - bin) >>> 31;
-            int place = left + ((right - left) & -goesRight);
+            int goesRight = (lastLeftBin - bin) >>> 31; // 1 if bin > lastLeftBin (the difference's sign bit), else 0
+            int place = left + ((right - left) & -goesRight); // right if it goes right (-1 masks all bits), else left
             left += 1 - goesRight;
             right += goesRight;
             toOrder[place] = order[i];

@@ -71,7 +71,6 @@ public final class HitBuffer {
         Arrays.fill(distance, 0, count, Float.POSITIVE_INFINITY);
     }
 
-    /** The place of the object ray {@code i} hits among the scene's objects, or −1. */
     /**
      * Whether no ray of the bundle hit anything, as a tracer said at once for all of them
      * ({@link #setMisses}, as a beam that reaches no box does); {@code false} does not say that
@@ -81,6 +80,7 @@ public final class HitBuffer {
         return missedAll;
     }
 
+    /** The place of the object ray {@code i} hits among the scene's objects, or −1. */
     public int index(int i) {
         return index[i];
     }
