@@ -55,13 +55,12 @@ final class BvhBuilder {
     private int count;
     /** The objects without one (planes), in file order: places {@code [count, objects.size())} of its order. */
     private int[] unbounded;
-    /*
-     * The objects' boxes travel with them, so that every pass over a node's objects reads
-     * memory front to back (random reads into these arrays made building a million objects ten
-     * times slower). An object's centre, by which it is sorted, is computed from its box where
-     * needed: fewer numbers to move than to keep.
+    /**
+     * The objects, where the leaves' objects end, in leaf order. Their boxes travel with them,
+     * so that every pass over a node's objects reads memory front to back (random reads into
+     * these arrays made building a million objects ten times slower). An object's centre, by
+     * which it is sorted, is computed from its box where needed: fewer numbers to move than to keep.
      */
-    /** The objects, where the leaves' objects end, in leaf order. */
     private final ObjectArrays primary;
     /** The second set of arrays, which the partitions copy into and back out of. */
     private final ObjectArrays spare;

@@ -112,7 +112,9 @@ final class SahBins {
     /**
      * Grows bin {@code bin}'s boxes by an object's, without branches ({@link Math#min} is
      * compiled to a fixed sequence of instructions): with few objects per bin, about every
-     * other comparison would be mispredicted.
+     * other comparison would be mispredicted. For the finite boxes the builder bins it gives
+     * the numbers of {@link #addRarelyGrowing} (at most the sign of a zero differs, which no
+     * comparison sees), so which of the two runs does not change the tree.
      */
     private void addOftenGrowing(int bin, float[] objectBoxes, int at) {
         for (int k = 0; k < 3; k++) {
