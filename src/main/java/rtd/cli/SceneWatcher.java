@@ -28,12 +28,19 @@ import picocli.CommandLine;
  * <p>It asks the files, every {@value #POLL_MILLIS} ms, for their size, time and (up to 16 MiB)
  * a checksum of their bytes: an editor that saves twice within the file system's clock tick is
  * still seen, and saving without a change renders nothing. A change is rendered once the files
- * have stopped changing for one look, so that a save caught halfway is not.
+ * have looked the same for a while ({@value #SETTLE_MILLIS} ms at least), so that a save caught
+ * halfway is not.
  */
 final class SceneWatcher {
 
     static final long POLL_MILLIS = 200;
     private static final long CHECKSUM_LIMIT = 16L << 20;
+    /**
+     * How long the files must look the same before a change is rendered, at least: longer than
+     * the steps of one save, even on a busy machine (where a thread may wait tens of ms between
+     * emptying a file and writing it).
+     */
+    static final long SETTLE_MILLIS = 100;
     private static final Pattern MESH = Pattern.compile("(?m)^[ \\t]*mesh[ \\t]*:[ \\t]*\\(([^)|\\r\\n]+)\\)");
 
     private final Path scene;
@@ -119,7 +126,7 @@ final class SceneWatcher {
         Map<Path, String> before;
         do {
             before = now;
-            Thread.sleep(pollMillis);
+            Thread.sleep(Math.max(pollMillis, SETTLE_MILLIS));
             now = fingerprints();
         } while (!now.equals(before) && !stopped);
         return now;
