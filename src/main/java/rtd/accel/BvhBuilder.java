@@ -256,7 +256,7 @@ final class BvhBuilder {
         if (widestAxis(known.centres()) < 0) {
             end = withoutTwins(data, start, end);
         }
-        Split split = depth < MAX_SAH_DEPTH ? splitLarge(known, data, start, end, bins) : splitByCount(data, start, end);
+        Split split = depth < MAX_SAH_DEPTH ? splitBySah(known, data, start, end, bins) : splitByCount(data, start, end);
         if (split == null) {
             return leaf(node, start, end, depth, data);
         }
@@ -364,7 +364,8 @@ final class BvhBuilder {
      * Finds the cheapest split by the SAH and partitions places {@code [start, end)} of
      * {@code data} by it, into the other arrays. Returns {@code null} when a leaf is cheaper.
      * Each child's extent is the union of its bins', exactly what a pass over its objects would
-     * measure.
+     * measure. A node of {@value #CHUNKED_THRESHOLD} objects or more bins and partitions in
+     * chunks on all threads ({@link ChunkedPasses}), with the same result.
      */
     private Split splitBySah(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
         int n = end - start;
@@ -375,34 +376,6 @@ final class BvhBuilder {
         }
         if (alwaysLeaf(n, extent)) {
             return null;
-        }
-        float lo = centreBox[axis];
-        float scale = BINS / (centreBox[axis + 3] - lo);
-        bins.clear();
-        bins.add(data.boxes(), start, end, axis, lo, scale);
-        int bestBin = cheapestBin(bins, extent, n);
-        if (bestBin == LEAF) {
-            return null;
-        }
-        int middle = start + bins.count(bestBin + 1);
-        if (middle == start || middle == end) {
-            return splitByCount(data, start, end);
-        }
-        ObjectArrays to = data == primary ? spare : primary;
-        data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
-        return new Split(middle, end, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
-    }
-
-    /**
-     * {@link #splitBySah} for a node of {@value #PARALLEL_THRESHOLD} objects or more, whose
-     * passes go in chunks ({@link ChunkedPasses}) from {@value #CHUNKED_THRESHOLD} objects on.
-     */
-    private Split splitLarge(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
-        int n = end - start;
-        float[] centreBox = extent.centres();
-        int axis = widestAxis(centreBox);
-        if (axis < 0) {
-            return n > MAX_LEAF_SIZE ? splitByCount(data, start, end) : null; // all centres coincide
         }
         float lo = centreBox[axis];
         float scale = BINS / (centreBox[axis + 3] - lo);
