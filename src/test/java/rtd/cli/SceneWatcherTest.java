@@ -28,66 +28,69 @@ class SceneWatcherTest {
 
     @Test
     void rendersAgainAfterAnEditAndKeepsTheLastGoodPictureAfterABrokenOne() throws Exception {
-        Path scene = dir.resolve("lesson.txt");
-        Path out = dir.resolve("lesson.png");
-        Files.writeString(scene, CAMERA + "sphere:(0|0|0):(3):(255|0|0)\n");
-        StringWriter err = new StringWriter();
-        PrintWriter errors = new PrintWriter(err, true);
-        String[] args = {scene.toString(), "-o", out.toString(), "--width", "16", "--height", "16"};
-        BlockingQueue<Integer> renders = new LinkedBlockingQueue<>();
-        SceneWatcher watcher = new SceneWatcher(scene, () -> {
-            CommandLine once = RtdCommand.commandLine();
-            once.setErr(errors);
-            return once.execute(args);
-        }, errors, 10).onRendered(renders::add);
-        Thread thread = new Thread(watcher::run, "watcher");
-        thread.start();
-        try {
+        BlockingQueue<Integer> renders;
+        try (Watching watching = new Watching(dir, CAMERA + "sphere:(0|0|0):(3):(255|0|0)\n")) {
+            renders = watching.renders;
             assertThat(next(renders)).isZero();
-            assertThat(centre(out)).isEqualTo(0xFF0000);
+            assertThat(centre(watching.out)).isEqualTo(0xFF0000);
 
-            save(scene, CAMERA + "sphere:(0|0|0):(3):(0|0|255)\n");
+            save(watching.scene, CAMERA + "sphere:(0|0|0):(3):(0|0|255)\n");
             assertThat(next(renders)).isZero();
-            assertThat(centre(out)).isEqualTo(0x0000FF);
+            assertThat(centre(watching.out)).isEqualTo(0x0000FF);
 
-            save(scene, CAMERA + "sphere:(0|0|0):(3)(0|255|0)\n"); // a ':' missing
+            save(watching.scene, CAMERA + "sphere:(0|0|0):(3)(0|255|0)\n"); // a ':' missing
             assertThat(next(renders)).isEqualTo(1);
-            assertThat(centre(out)).isEqualTo(0x0000FF);
-            assertThat(err.toString()).contains("lesson.txt:2:", "error", "the last good picture stays");
-        } finally {
-            watcher.stop();
-            thread.join();
+            assertThat(centre(watching.out)).isEqualTo(0x0000FF);
+            assertThat(watching.err.toString()).contains("lesson.txt:2:", "error", "the last good picture stays");
         }
         assertThat(renders).isEmpty(); // nothing changed after the broken edit: no render more
     }
 
     @Test
     void rendersASaveMadeInStepsOnlyOnceItIsWhole() throws Exception {
-        Path scene = dir.resolve("lesson.txt");
-        Path out = dir.resolve("lesson.png");
-        Files.writeString(scene, CAMERA + "sphere:(0|0|0):(3):(255|0|0)\n");
-        StringWriter err = new StringWriter();
-        PrintWriter errors = new PrintWriter(err, true);
-        String[] args = {scene.toString(), "-o", out.toString(), "--width", "16", "--height", "16"};
-        BlockingQueue<Integer> renders = new LinkedBlockingQueue<>();
-        SceneWatcher watcher = new SceneWatcher(scene, () -> {
-            CommandLine once = RtdCommand.commandLine();
-            once.setErr(errors);
-            return once.execute(args);
-        }, errors, 10).onRendered(renders::add);
-        Thread thread = new Thread(watcher::run, "watcher");
-        thread.start();
-        try {
-            assertThat(next(renders)).isZero();
+        try (Watching watching = new Watching(dir, CAMERA + "sphere:(0|0|0):(3):(255|0|0)\n")) {
+            assertThat(next(watching.renders)).isZero();
 
-            Files.writeString(scene, ""); // an editor that empties the file first,
+            Files.writeString(watching.scene, ""); // an editor that empties the file first,
             Thread.sleep(40); // and writes it a few looks later, but within one settling time
-            Files.writeString(scene, CAMERA + "sphere:(0|0|0):(3):(0|0|255)\n");
+            Files.writeString(watching.scene, CAMERA + "sphere:(0|0|0):(3):(0|0|255)\n");
 
-            assertThat(next(renders)).isZero();
-            assertThat(centre(out)).isEqualTo(0x0000FF);
-            assertThat(err.toString()).doesNotContain("error");
-        } finally {
+            assertThat(next(watching.renders)).isZero();
+            assertThat(centre(watching.out)).isEqualTo(0x0000FF);
+            assertThat(watching.err.toString()).doesNotContain("error");
+        }
+    }
+
+    /**
+     * A watcher of {@code lesson.txt} in {@code folder}, written with {@code text} first, on a
+     * thread of its own, looking every 10 ms and rendering 16 × 16 to {@code lesson.png};
+     * closing it stops the watcher and waits for it.
+     */
+    private static final class Watching implements AutoCloseable {
+        final Path scene;
+        final Path out;
+        final StringWriter err = new StringWriter();
+        final BlockingQueue<Integer> renders = new LinkedBlockingQueue<>();
+        private final SceneWatcher watcher;
+        private final Thread thread;
+
+        Watching(Path folder, String text) throws IOException {
+            scene = folder.resolve("lesson.txt");
+            out = folder.resolve("lesson.png");
+            Files.writeString(scene, text);
+            PrintWriter errors = new PrintWriter(err, true);
+            String[] args = {scene.toString(), "-o", out.toString(), "--width", "16", "--height", "16"};
+            watcher = new SceneWatcher(scene, () -> {
+                CommandLine once = RtdCommand.commandLine();
+                once.setErr(errors);
+                return once.execute(args);
+            }, errors, 10).onRendered(renders::add);
+            thread = new Thread(watcher::run, "watcher");
+            thread.start();
+        }
+
+        @Override
+        public void close() throws InterruptedException {
             watcher.stop();
             thread.join();
         }
