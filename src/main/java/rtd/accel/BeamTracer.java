@@ -159,7 +159,7 @@ final class BeamTracer {
         inverse[0] = 1f / beam.dx;
         inverse[1] = 1f / beam.dy;
         inverse[2] = 1f / beam.dz;
-        float[] root = bvh.bounds;
+        float[] root = bvh.boxes; // node 0
         for (int k = 0; k < 3; k++) {
             float largest = bvh.hasTree() ? Math.max(Math.abs(root[k]), Math.abs(root[k + 3])) : 0;
             pad[k] = half[k] + ROUNDING * (2 * largest + Math.abs(centre[k]));
@@ -179,7 +179,7 @@ final class BeamTracer {
         int stackSize = 0;
         int node = 0;
         nodesVisited++;
-        if (!worthVisiting(grownEntry(bvh.bounds, node, growth(node, reach)))) {
+        if (!worthVisiting(grownEntry(bvh.boxes, Bvh.BOX * node, growth(node, reach)))) {
             return;
         }
         float nodeExit = FastMath.min(exit, reach);
@@ -192,9 +192,9 @@ final class BeamTracer {
                 float grow = growth(node, nodeExit);
                 int near = first;
                 int far = first + 1;
-                float nearEntry = grownEntry(bvh.bounds, near, grow);
+                float nearEntry = grownEntry(bvh.boxes, Bvh.BOX * near, grow);
                 float nearExit = FastMath.min(exit, nodeExit);
-                float farEntry = grownEntry(bvh.bounds, far, grow);
+                float farEntry = grownEntry(bvh.boxes, Bvh.BOX * far, grow);
                 float farExit = FastMath.min(exit, nodeExit);
                 if (farEntry < nearEntry) {
                     int swapNode = near;
@@ -237,7 +237,7 @@ final class BeamTracer {
 
     /** The rounding margin of {@code node}'s objects for rays not beyond {@code reach}: the same for every ray of the beam. */
     private float growth(int node, float reach) {
-        return NearestHit.growth(bvh.rounding, node, reach * length);
+        return NearestHit.growth(bvh.boxes, node, reach * length);
     }
 
     /**
@@ -273,21 +273,21 @@ final class BeamTracer {
         int end = first + bvh.nodes[2 * leaf + 1];
         float entry = MISS;
         for (int i = first; i < end; i++) {
-            entry = FastMath.min(entry, grownEntry(bvh.leaves.boxes, i, grow));
+            entry = FastMath.min(entry, grownEntry(bvh.leaves.boxes, 6 * i, grow));
         }
         return entry;
     }
 
     /**
-     * The slab test of the middle ray against box {@code i} of {@code boxes}, grown by the beam's
-     * {@link #pad} and by {@code grow}; {@link #exit} is left where it leaves.
+     * The slab test of the middle ray against the box at {@code boxes[at .. at+5]}, grown by the
+     * beam's {@link #pad} and by {@code grow}; {@link #exit} is left where it leaves.
      */
-    private float grownEntry(float[] boxes, int i, float grow) {
+    private float grownEntry(float[] boxes, int at, float grow) {
         float enter = Float.NEGATIVE_INFINITY;
         float leave = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
-            float low = boxes[6 * i + k] - pad[k] - grow;
-            float high = boxes[6 * i + 3 + k] + pad[k] + grow;
+            float low = boxes[at + k] - pad[k] - grow;
+            float high = boxes[at + 3 + k] + pad[k] + grow;
             if (still[k]) { // the rays do not move along axis k
                 if (low > centre[k] || high < centre[k]) {
                     exit = MISS;

@@ -15,10 +15,17 @@ import rtd.scene.Scene;
  * ({@link BvhTracer}), and knows nothing of colours.
  *
  * <p>The tree is stored flat, for speed: node {@code i} has its box in
- * {@code bounds[6i .. 6i+5]} (min x, y, z, max x, y, z) and two numbers in
- * {@code nodes[2i], nodes[2i+1]}. An inner node has {@code nodes[2i+1] == INNER} and its
- * children at {@code nodes[2i]} and {@code nodes[2i] + 1}; a leaf holds {@code nodes[2i+1]}
- * objects starting at place {@code nodes[2i]} of {@link #leaves}.
+ * {@code boxes[8i .. 8i+5]} (min x, y, z, max x, y, z), how much the box grows as a ray runs in
+ * {@code boxes[8i+6 .. 8i+7]}, and two numbers in {@code nodes[2i], nodes[2i+1]}. An inner node
+ * has {@code nodes[2i+1] == INNER} and its children at {@code nodes[2i]} and
+ * {@code nodes[2i] + 1}; a leaf holds {@code nodes[2i+1]} objects starting at place
+ * {@code nodes[2i]} of {@link #leaves}.
+ *
+ * <p>A node's box and growth lie side by side, and so do two children's ({@link Compaction}):
+ * a walk that opens a node reads both its children's from one stretch of 64 bytes. With a
+ * hundred thousand objects the tree no longer fits in the processor's nearest caches, and a
+ * walk waits for memory at every node it opens; it waited three times per node when boxes and
+ * growths were kept in separate arrays (docs/performance.md).
  *
  * <p>Objects without a box (planes) have no place in a tree of boxes: they stay beside it,
  * in {@link #unbounded}, and every ray tests them, as the paper's loop does.
@@ -28,13 +35,17 @@ public final class Bvh {
     /** Marks an inner node in {@code nodes[2i+1]}, where a leaf has its object count. */
     static final int INNER = -1;
 
-    final float[] bounds;
-    final int[] nodes;
+    /** The floats of a node in {@link #boxes}. */
+    static final int BOX = 8;
+    /** Where a node's linear rounding is among its {@link #BOX} floats; the quadratic one follows. */
+    static final int ROUNDING = 6;
+
     /**
-     * How much node {@code i}'s box grows as a ray runs: the largest {@link Rounding} of its
-     * objects, linear at {@code [2i]} and quadratic at {@code [2i+1]}.
+     * Each node's box, six floats, and how much it grows as a ray runs: the largest
+     * {@link Rounding} of its objects, linear and quadratic; {@link #BOX} floats a node.
      */
-    final float[] rounding;
+    final float[] boxes;
+    final int[] nodes;
     /** The tree's objects in leaf order. */
     final LeafObjects leaves;
     /** The objects without a box, in file order, and their places in the file. */
@@ -46,7 +57,7 @@ public final class Bvh {
     private Bvh(BvhBuilder builder, List<IGeometry> objects) {
         builder.build();
         Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
-        this.bounds = compaction.bounds();
+        this.boxes = compaction.boxes();
         this.nodes = compaction.nodes();
         int[] order = builder.order();
         int count = builder.count();
@@ -60,7 +71,7 @@ public final class Bvh {
             }
         }
         this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
-        this.rounding = rounding(nodes, fileOrder, builder.roundings());
+        putRoundings(boxes, nodes, fileOrder, builder.roundings());
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];
         for (int i = 0; i < unbounded.length; i++) {
@@ -75,18 +86,17 @@ public final class Bvh {
      * than the node itself ({@link Compaction}), so one pass backwards meets them first. The
      * objects' own are in {@code roundings}, by place in the file ({@link BvhBuilder#roundings}).
      */
-    private static float[] rounding(int[] nodes, int[] fileOrder, float[] roundings) {
-        float[] rounding = new float[nodes.length];
+    private static void putRoundings(float[] boxes, int[] nodes, int[] fileOrder, float[] roundings) {
         for (int node = nodes.length / 2 - 1; node >= 0; node--) {
+            int at = BOX * node + ROUNDING;
             if (nodes[2 * node + 1] == INNER) {
-                int child = nodes[2 * node];
-                rounding[2 * node] = Math.max(rounding[2 * child], rounding[2 * child + 2]);
-                rounding[2 * node + 1] = Math.max(rounding[2 * child + 1], rounding[2 * child + 3]);
+                int child = BOX * nodes[2 * node] + ROUNDING;
+                boxes[at] = Math.max(boxes[child], boxes[child + BOX]);
+                boxes[at + 1] = Math.max(boxes[child + 1], boxes[child + BOX + 1]);
             } else {
-                leafRounding(fileOrder, nodes[2 * node], nodes[2 * node + 1], roundings, rounding, 2 * node);
+                leafRounding(fileOrder, nodes[2 * node], nodes[2 * node + 1], roundings, boxes, at);
             }
         }
-        return rounding;
     }
 
     /**

@@ -135,10 +135,10 @@ final class NearestHit {
 
     /** {@link #reach} for origins within {@code (x, y, z) ± half} and direction length {@code length}. */
     static float reach(Bvh bvh, float x, float y, float z, float halfX, float halfY, float halfZ, float length) {
-        float[] bounds = bvh.bounds;
-        double far = farthest(x, bounds[0], bounds[3]) + halfX + farthest(y, bounds[1], bounds[4]) + halfY
-                + farthest(z, bounds[2], bounds[5]) + halfZ;
-        double widest = IGeometry.ROUNDING_CONE + bvh.rounding[0]; // the root's rounding is the largest
+        float[] root = bvh.boxes; // node 0
+        double far = farthest(x, root[0], root[3]) + halfX + farthest(y, root[1], root[4]) + halfY
+                + farthest(z, root[2], root[5]) + halfZ;
+        double widest = IGeometry.ROUNDING_CONE + root[Bvh.ROUNDING]; // the root's rounding is the largest
         float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
         return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
     }
@@ -152,13 +152,14 @@ final class NearestHit {
      * beyond {@code reach}: their {@link rtd.geometry.Rounding} at the distance the ray runs.
      */
     float growth(int node, float reach) {
-        return growth(bvh.rounding, node, reach * length);
+        return growth(bvh.boxes, node, reach * length);
     }
 
     /** {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)} of {@code node}, infinite if that is not a number. */
-    static float growth(float[] rounding, int node, float distance) {
-        float grow = rounding[2 * node] * distance
-                + Math.min(IGeometry.ROUNDING_CONE * distance, rounding[2 * node + 1] * distance * distance);
+    static float growth(float[] boxes, int node, float distance) {
+        int at = Bvh.BOX * node + Bvh.ROUNDING;
+        float grow = boxes[at] * distance
+                + Math.min(IGeometry.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
         return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
     }
 
@@ -168,8 +169,8 @@ final class NearestHit {
      * refuses a NaN as it does a miss. {@link #exit} gives where it leaves.
      */
     float entry(int node, float grow) {
-        float[] bounds = bvh.bounds;
-        int at = 6 * node;
+        float[] bounds = bvh.boxes;
+        int at = Bvh.BOX * node;
         float x0 = (bounds[at] - grow - ox) * ix;
         float x1 = (bounds[at + 3] + grow - ox) * ix;
         float y0 = (bounds[at + 1] - grow - oy) * iy;
