@@ -31,6 +31,7 @@ public final class BvhTracer implements Tracer {
     private final Bvh bvh;
     private final NearestHit hit;
     private final BeamTracer beam;
+    private final RecentBlockers recentBlockers = new RecentBlockers();
     private final int[] stackNodes;
     private final float[] stackEntries;
     private final float[] stackExits;
@@ -60,8 +61,9 @@ public final class BvhTracer implements Tracer {
     }
 
     /**
-     * Whether the ray hits anything nearer than {@code distance}: the walk starts as if it had a
-     * hit at that distance, so that it skips every box beyond, and stops at the first hit it finds.
+     * Whether the ray hits anything nearer than {@code distance}: the objects that blocked the
+     * last shadow rays are tried first ({@link RecentBlockers}); then the walk starts as if it had
+     * a hit at that distance, so that it skips every box beyond, and stops at the first hit it finds.
      */
     @Override
     public boolean blocked(Ray ray, float distance) {
@@ -72,9 +74,15 @@ public final class BvhTracer implements Tracer {
         hit.limitTo(distance);
         hit.testUnbounded();
         if (hit.best() < 0) {
+            hit.testPlaces(recentBlockers.places());
+        }
+        if (hit.best() < 0) {
             anyHitWillDo = true;
             walkTree();
             anyHitWillDo = false;
+            if (hit.bestPlace() >= 0) {
+                recentBlockers.remember(hit.bestPlace());
+            }
         }
         return hit.best() >= 0;
     }

@@ -52,6 +52,8 @@ final class NearestHit {
     private float length;
     private float margin;
     private int best;
+    /** The nearest hit's place in leaf order ({@link LeafObjects}), −1 if it is none of the tree's objects. */
+    private int bestPlace;
     private float bestT;
     private float bestDistance;
     /** The nearest hit's {@link #depthKey}: a hit with a smaller key wins the depth test. */
@@ -107,6 +109,7 @@ final class NearestHit {
         length = (float) Math.sqrt(dd);
         margin = SKIP_MARGIN * (float) Math.sqrt(ox * ox + oy * oy + oz * oz) / length;
         best = -1;
+        bestPlace = -1;
         bestT = Float.NaN;
         bestDistance = Float.POSITIVE_INFINITY;
         bestKey = NO_HIT;
@@ -210,10 +213,31 @@ final class NearestHit {
             countKinds(first, end);
         }
         for (int i = first; i < end; i++) {
-            float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);
-            if (t >= 0) { // false for NaN: no hit
-                consider(leaves.fileOrder[i], t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
+            test(i);
+        }
+    }
+
+    /**
+     * The paper's intersection test and depth test on the objects at these places in leaf order;
+     * a place of −1 is passed over.
+     */
+    void testPlaces(int[] places) {
+        for (int place : places) {
+            if (place >= 0) {
+                treeTests++;
+                if (severalKinds) {
+                    tests[leaves.kinds[place]]++;
+                }
+                test(place);
             }
+        }
+    }
+
+    /** The paper's intersection test and depth test on the object at place {@code i} in leaf order. */
+    private void test(int i) {
+        float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);
+        if (t >= 0) { // false for NaN: no hit
+            consider(leaves.fileOrder[i], i, t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
         }
     }
 
@@ -242,16 +266,17 @@ final class NearestHit {
                 t = objects[i].intersect(ray).t();
             }
             if (t >= 0) {
-                consider(bvh.unboundedOrder[i], t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
+                consider(bvh.unboundedOrder[i], -1, t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
             }
         }
     }
 
     /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file. */
-    private void consider(int index, float t, float distance) {
+    private void consider(int index, int place, float t, float distance) {
         long key = depthKey(distance, index);
         if (key < bestKey) {
             best = index;
+            bestPlace = place;
             bestT = t;
             bestDistance = distance;
             bestKey = key;
@@ -280,6 +305,11 @@ final class NearestHit {
     /** The place in the file of the nearest object hit, or −1. */
     int best() {
         return best;
+    }
+
+    /** The nearest hit's place in leaf order, −1 if none or if it is an object without a box. */
+    int bestPlace() {
+        return bestPlace;
     }
 
     /** The t of the nearest hit, NaN if none. */

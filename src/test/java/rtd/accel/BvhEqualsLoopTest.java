@@ -100,4 +100,35 @@ class BvhEqualsLoopTest {
         }
         assertThat(blocked).as("rays blocked").isGreaterThan(2_000).isLessThan(18_000);
     }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {41, 42, 43})
+    void forShadowRaysFromNeighbouringPointsWhichTheSameObjectsMostlyBlock(long seed) {
+        // Rays from points close together towards two lights in turn: the objects that blocked
+        // the last rays, tried first, block most of them; the answer must stay the loop's even
+        // where such an object lies beyond the light, or exactly at it.
+        Scene scene = MixedScenes.generate(seed, 300);
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        Random random = new Random(seed);
+        Vector3f[] lights = {new Vector3f(0, 40, 0), new Vector3f(35, 5, -20)};
+        int blocked = 0;
+        for (int patch = 0; patch < 200; patch++) {
+            Vector3f centre = new Vector3f(random.nextFloat() * 20 - 10, -12, random.nextFloat() * 20 - 10);
+            for (int r = 0; r < 100; r++) {
+                Vector3f from = centre.add(new Vector3f(random.nextFloat() * 0.2f, 0, random.nextFloat() * 0.2f));
+                Ray ray = new Ray(from, lights[r % 2].subtract(from));
+                Hit nearest = scene.nearestHit(ray);
+                float limit = nearest == null ? ray.direction().magnitude() : switch (random.nextInt(3)) {
+                    case 0 -> nearest.distance(); // a light exactly at the hit: not nearer, so not blocked
+                    case 1 -> nearest.distance() * 0.99f;
+                    default -> ray.direction().magnitude();
+                };
+                boolean expected = nearest != null && nearest.distance() < limit;
+                assertThat(tracer.blocked(ray, limit)).as("patch %d ray %d %s, limit %s", patch, r, ray, limit)
+                        .isEqualTo(expected);
+                blocked += expected ? 1 : 0;
+            }
+        }
+        assertThat(blocked).as("rays blocked").isGreaterThan(1_000);
+    }
 }
