@@ -6,16 +6,21 @@ import rtd.render.RayBundle;
 import rtd.render.WorkCount;
 
 /**
- * Traces the parallel rays of a square of pixels together through a {@link Bvh}. Not in the
- * paper: it serves the orthographic camera, whose rays all share one direction.
+ * Traces the rays of a square of pixels together through a {@link Bvh}. Not in the paper: it
+ * serves the cameras, whose rays in a square are alike: the orthographic camera's all share one
+ * direction, the perspective camera's all start at the eye and differ in direction by a few
+ * thousandths ({@link Beam}).
  *
- * <p>Parallel rays from origins within C ± h form a beam: a ray from such an origin passes
- * through a box only if the beam's middle ray, from C, passes through the box grown by h. So one
- * walk down the tree with the middle ray and grown boxes visits every box that any ray of the
- * square enters, and the middle ray's entry into a grown box is a t before which no ray of the
- * square enters that box. The boxes grow a little more (a millionth of the numbers involved)
- * than h, so that rounding can never make the beam miss a box that one of its rays enters, and
- * by the rounding margin of the objects' tests, as for one ray ({@link NearestHit}).
+ * <p>Rays from origins within C ± h, with directions within D ± s, form a beam: at any t, every
+ * ray's point lies within the middle ray's point C + t·D grown by h + t·s. So a ray passes
+ * through a box at some t only if the middle ray passes through the box grown by h + t·s, and
+ * t·s may be taken at any t the rays cannot be in the box beyond: the exit of the middle ray from
+ * the parent's grown box, which holds the child. One walk down the tree with the middle ray
+ * and grown boxes visits every box that any ray of the square enters, and the middle ray's entry
+ * into a grown box is a t before which no ray of the square enters that box. The boxes grow a
+ * little more (a millionth of the numbers involved, a hundred-thousandth of t·s) than that, so
+ * that rounding can never make the beam miss a box that one of its rays enters, and by the
+ * rounding margin of the objects' tests, as for one ray ({@link NearestHit}).
  *
  * <p>The walk is {@link BvhTracer}'s walk for one ray, with the beam's grown boxes in place
  * of the ray's boxes, and the farthest of the rays' nearest hits in place of the ray's own: it
@@ -29,6 +34,8 @@ import rtd.render.WorkCount;
 final class BeamTracer {
 
     private static final float ROUNDING = 1e-6f;
+    /** The share by which the rays' spread grows a box beyond {@code t·spread}, against rounding in the t it is taken at. */
+    private static final float FAN_ROUNDING = 1e-5f;
     private static final float MISS = NearestHit.MISS;
 
     private final Bvh bvh;
@@ -48,7 +55,11 @@ final class BeamTracer {
     private final float[] pad = new float[3];
     /** Per axis, whether the rays do not move along it (1 / direction is infinite). */
     private final boolean[] still = new boolean[3];
-    private float length;
+    /** Per axis, how far any ray's direction is from the middle ray's ({@link Beam#spread}), with a margin for rounding. */
+    private final float[] fan = new float[3];
+    /** The shortest and longest |D| of the rays: the first bounds how far (in t) they reach, the second how far they run. */
+    private float shortest;
+    private float longest;
     /** The exit of the grown box of the last {@link #grownEntry}. */
     private float exit;
     /** The rays of the square and their nearest hits; reused from square to square. */
@@ -72,8 +83,8 @@ final class BeamTracer {
     }
 
     /**
-     * Traces the bundle's rays into {@code out} if they are all parallel; false, having traced
-     * nothing, if they are not, or if the origins are too far out for float to hold the beam's size.
+     * Traces the bundle's rays into {@code out} if they form a beam; false, having traced
+     * nothing, if they are too unlike, or too far out for float to hold the beam's size.
      */
     boolean trace(RayBundle bundle, HitBuffer out) {
         if (!aim(bundle)) {
@@ -142,7 +153,7 @@ final class BeamTracer {
         return new WorkCount(rays, BvhTracer.testsByKind(bvh, tests, unbounded), nodesVisited);
     }
 
-    /** Aims at the beam of the bundle's rays; false if they are not all parallel, or the beam is too large for float. */
+    /** Aims at the beam of the bundle's rays; false if they are too unlike for a beam ({@link Beam#aimAt}), or it is too large for float. */
     private boolean aim(RayBundle bundle) {
         if (!beam.aimAt(bundle)) {
             return false;
@@ -168,33 +179,37 @@ final class BeamTracer {
                 return false;
             }
         }
-        length = (float) Math.sqrt((beam.dx * beam.dx) + (beam.dy * beam.dy) + (beam.dz * beam.dz));
+        for (int k = 0; k < 3; k++) {
+            fan[k] = beam.spread[k] * (1 + FAN_ROUNDING);
+        }
+        shortest = beam.shortest;
+        longest = beam.longest;
         return true;
     }
 
     /** Walks down the tree, nearer child first, skipping boxes entered beyond every ray's nearest hit. */
     private void walk() {
         int[] nodes = bvh.nodes;
-        float reach = NearestHit.reach(bvh, centre[0], centre[1], centre[2], half[0], half[1], half[2], length);
+        float reach = NearestHit.reach(bvh, centre[0], centre[1], centre[2], half[0], half[1], half[2], shortest);
         int stackSize = 0;
         int node = 0;
         nodesVisited++;
-        if (!worthVisiting(grownEntry(bvh.boxes, Bvh.BOX * node, growth(node, reach)))) {
+        if (!worthVisiting(grownEntry(bvh.boxes, Bvh.BOX * node, growth(node, reach), reach))) {
             return;
         }
         float nodeExit = FastMath.min(exit, reach);
         while (true) {
             int first = nodes[2 * node];
             if (nodes[2 * node + 1] != Bvh.INNER) {
-                testLeaf(node, growth(node, nodeExit));
+                testLeaf(node, growth(node, nodeExit), nodeExit);
             } else {
                 nodesVisited += 2;
                 float grow = growth(node, nodeExit);
                 int near = first;
                 int far = first + 1;
-                float nearEntry = grownEntry(bvh.boxes, Bvh.BOX * near, grow);
+                float nearEntry = grownEntry(bvh.boxes, Bvh.BOX * near, grow, nodeExit);
                 float nearExit = FastMath.min(exit, nodeExit);
-                float farEntry = grownEntry(bvh.boxes, Bvh.BOX * far, grow);
+                float farEntry = grownEntry(bvh.boxes, Bvh.BOX * far, grow, nodeExit);
                 float farExit = FastMath.min(exit, nodeExit);
                 if (farEntry < nearEntry) {
                     int swapNode = near;
@@ -237,7 +252,7 @@ final class BeamTracer {
 
     /** The rounding margin of {@code node}'s objects for rays not beyond {@code reach}: the same for every ray of the beam. */
     private float growth(int node, float reach) {
-        return NearestHit.growth(bvh.boxes, node, reach * length);
+        return NearestHit.growth(bvh.boxes, node, reach * longest);
     }
 
     /**
@@ -245,8 +260,8 @@ final class BeamTracer {
      * there. {@code reach}, the beam's entry into the nearest of the objects' boxes, is a t
      * before which no ray of the square hits any of them.
      */
-    private void testLeaf(int leaf, float grow) {
-        float reach = objectsEntry(leaf, grow);
+    private void testLeaf(int leaf, float grow, float within) {
+        float reach = objectsEntry(leaf, grow, within);
         if (!worthVisiting(reach)) {
             return;
         }
@@ -268,26 +283,28 @@ final class BeamTracer {
     }
 
     /** The beam's entry into the nearest box of the leaf's objects, or {@link #MISS} if it reaches none. */
-    private float objectsEntry(int leaf, float grow) {
+    private float objectsEntry(int leaf, float grow, float within) {
         int first = bvh.nodes[2 * leaf];
         int end = first + bvh.nodes[2 * leaf + 1];
         float entry = MISS;
         for (int i = first; i < end; i++) {
-            entry = FastMath.min(entry, grownEntry(bvh.leaves.boxes, 6 * i, grow));
+            entry = FastMath.min(entry, grownEntry(bvh.leaves.boxes, 6 * i, grow, within));
         }
         return entry;
     }
 
     /**
      * The slab test of the middle ray against the box at {@code boxes[at .. at+5]}, grown by the
-     * beam's {@link #pad} and by {@code grow}; {@link #exit} is left where it leaves.
+     * beam's {@link #pad}, by {@code grow}, and by how far the rays fan out up to {@code within}, a t
+     * beyond which none of them is in the box; {@link #exit} is left where it leaves.
      */
-    private float grownEntry(float[] boxes, int at, float grow) {
+    private float grownEntry(float[] boxes, int at, float grow, float within) {
         float enter = Float.NEGATIVE_INFINITY;
         float leave = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
-            float low = boxes[at + k] - pad[k] - grow;
-            float high = boxes[at + 3 + k] + pad[k] + grow;
+            float widen = pad[k] + grow + (fan[k] > 0 ? fan[k] * within : 0); // 0 · ∞ would be NaN
+            float low = boxes[at + k] - widen;
+            float high = boxes[at + 3 + k] + widen;
             if (still[k]) { // the rays do not move along axis k
                 if (low > centre[k] || high < centre[k]) {
                     exit = MISS;

@@ -20,9 +20,9 @@ import rtd.render.WorkCount;
  * intersection test and depth test unchanged ({@link NearestHit}).
  *
  * <p>This is the accelerator's one door: {@link #nearestHit} for one ray, {@link #traceAll}
- * for the rays of a square of pixels, {@link #blocked} for a shadow ray. Parallel rays in a square (the orthographic camera's)
- * walk the tree together ({@link BeamTracer}); that fast path is an affair of this package
- * alone.
+ * for the rays of a square of pixels, {@link #blocked} for a shadow ray. The rays of a camera's
+ * square walk the tree together ({@link BeamTracer}); that fast path is an affair of this
+ * package alone.
  *
  * <p>Not thread-safe: it keeps a stack and counters of its own. Use one per thread.
  */
@@ -94,7 +94,7 @@ public final class BvhTracer implements Tracer {
         walkTree();
     }
 
-    /** Parallel rays walk the tree together ({@link BeamTracer}); others walk it one by one. */
+    /** Rays alike enough walk the tree together ({@link BeamTracer}); others walk it one by one. */
     @Override
     public void traceAll(RayBundle bundle, HitBuffer hits) {
         if (beam.trace(bundle, hits)) {

@@ -7,6 +7,8 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import rtd.camera.ICamera;
+import rtd.camera.OrthographicCamera;
+import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
@@ -62,6 +64,36 @@ class BeamTest {
             }
         }
         assertThat(bundled.work().intersectionTests()).isLessThanOrEqualTo(3 * alone.work().intersectionTests());
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {1, 2, 3, 4, 5, 6})
+    void aSquareOfAPerspectiveCameraFindsTheHitsEachRayFindsAloneAndVisitsFewerBoxes(long seed) {
+        Scene scene = RandomScenes.generate(seed, 3_000);
+        OrthographicCamera paper = (OrthographicCamera) scene.camera();
+        // from where the orthographic camera stands, or from the middle of the spheres
+        Vector3f eye = seed % 2 == 0 ? paper.position() : new Vector3f(0.5f, 0.25f, -0.5f);
+        ICamera camera = new PerspectiveCamera(eye, paper.direction(), 10 + 4 * seed); // squares of 0.4° to 0.9°: beams
+        Bvh bvh = Bvh.build(scene);
+        BvhTracer bundled = bvh.newTracer();
+        BvhTracer alone = bvh.newTracer();
+        HitBuffer hits = new HitBuffer(64);
+        int hitCount = 0;
+        for (int top = 0; top < 240; top += 8) {
+            for (int left = 0; left < 320; left += 8) {
+                RayBundle rays = square(camera, left, top, 320, 240);
+                bundled.traceAll(rays, hits);
+                for (int i = 0; i < rays.count(); i++) {
+                    Hit expected = scene.nearestHit(rays.ray(i));
+                    assertSameHit(hits, i, alone.nearestHit(rays.ray(i)),
+                            "ray " + i + " of the square at (" + left + ", " + top + ")");
+                    assertSameHit(hits, i, expected, "the paper's loop, ray " + i);
+                    hitCount += expected == null ? 0 : 1;
+                }
+            }
+        }
+        assertThat(hitCount).as("rays that hit").isGreaterThan(1_000);
+        assertThat(bundled.work().nodesVisited()).isLessThan(alone.work().nodesVisited());
     }
 
     @ParameterizedTest(name = "random scene {0}")

@@ -17,7 +17,7 @@ import rtd.testing.MixedScenes;
 /**
  * The hierarchy's answer to "what does this ray hit?" is the paper's loop's, for any ray: from
  * inside, around and far outside random scenes of every kind of object, one at a time, in
- * bundles of unrelated rays and in beams of parallel rays.
+ * bundles of unrelated rays, in beams of parallel rays and in beams of rays from one point.
  */
 @DisplayName("The BVH finds the loop's hit")
 class BvhEqualsLoopTest {
@@ -52,20 +52,22 @@ class BvhEqualsLoopTest {
 
     @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {21, 22, 23, 24})
-    void forBundlesOfUnrelatedRaysAndForBeamsOfParallelRaysFromFarAway(long seed) {
+    void forBundlesOfUnrelatedRaysAndForBeamsOfParallelRaysOrOfRaysFromOnePoint(long seed) {
         Scene scene = MixedScenes.generate(seed, 300);
         BvhTracer tracer = Bvh.build(scene).newTracer();
         Random random = new Random(seed);
         HitBuffer hits = new HitBuffer(64);
-        for (int b = 0; b < 300; b++) {
+        for (int b = 0; b < 450; b++) {
             Ray[] rays = new Ray[64];
             Ray first = MixedScenes.ray(random, scene);
-            boolean parallel = b % 2 == 0;
             float spacing = (float) Math.pow(10, random.nextInt(5) - 3);
+            float fan = (float) Math.pow(10, -1 - random.nextInt(6)) * first.direction().magnitude();
             for (int i = 0; i < rays.length; i++) {
-                rays[i] = parallel
-                        ? new Ray(first.origin().add(new Vector3f(i % 8 * spacing, i / 8 * spacing, 0)), first.direction())
-                        : MixedScenes.ray(random, scene);
+                rays[i] = switch (b % 3) {
+                    case 0 -> new Ray(first.origin().add(new Vector3f(i % 8 * spacing, i / 8 * spacing, 0)), first.direction());
+                    case 1 -> new Ray(first.origin(), first.direction().add(new Vector3f(i % 8 * fan, i / 8 * fan, (i % 3) * fan)));
+                    default -> MixedScenes.ray(random, scene);
+                };
             }
             RayBundle bundle = new RayBundle(64);
             bundle.fill(rays);
