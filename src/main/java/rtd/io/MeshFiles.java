@@ -75,7 +75,7 @@ final class MeshFiles {
         if (Files.exists(file) && Files.size(file) > MAX_SIZE) {
             throw new FileSystemException(file.toString(), null, "it is larger than 2 GB");
         }
-        return Files.readAllBytes(file);
+        return SceneFileReader.readWhole(file); // not Files.readAllBytes: it keeps a buffer as large as the file
     }
 
     /** Why a file could not be read, in words for a person. */
