@@ -45,7 +45,9 @@ final class MeshFiles {
                     "a mesh's path is relative to the folder of the scene file");
         }
         try {
-            return ObjReader.read(new SourceText(shown, bytes));
+            try (SourceText obj = new SourceText(shown, bytes)) {
+                return ObjReader.read(obj);
+            }
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();
             List<SceneError> errors = e.errors().stream().map(error -> new SceneError(error.file(), error.line(),
