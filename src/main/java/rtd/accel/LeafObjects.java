@@ -58,7 +58,7 @@ final class LeafObjects {
         this.fileOrder = fileOrder;
         this.boxes = boxes;
         this.kinds = new byte[objects.length];
-        this.offsets = zeroed(threads.spare().order(), objects.length);
+        this.offsets = reused(threads.spare().order(), objects.length);
         this.testOf = new byte[objects.length];
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
@@ -82,7 +82,7 @@ final class LeafObjects {
             size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
         }
         this.kindNames = names.toArray(String[]::new);
-        this.numbers = zeroed(threads.spare().boxes(), size);
+        this.numbers = reused(threads.spare().boxes(), size);
         if (threads.parallel()) {
             threads.forEach(this::pack);
         } else {
@@ -92,21 +92,25 @@ final class LeafObjects {
         }
     }
 
-    /** {@code spare}, zeroed, if it has at least {@code length} places, else a new array of {@code length}. */
-    private static int[] zeroed(int[] spare, int length) {
+    /**
+     * {@code spare} if it has at least {@code length} places, else a new array of {@code length}.
+     * The packing writes all of the first {@code length}; those after are zeroed, so that the
+     * array depends on the tree alone.
+     */
+    private static int[] reused(int[] spare, int length) {
         if (spare.length < length) {
             return new int[length];
         }
-        Arrays.fill(spare, 0);
+        Arrays.fill(spare, length, spare.length, 0);
         return spare;
     }
 
-    /** {@code spare}, zeroed, if it has at least {@code length} places, else a new array of {@code length}. */
-    private static float[] zeroed(float[] spare, int length) {
+    /** As {@link #reused(int[], int)}, for floats. */
+    private static float[] reused(float[] spare, int length) {
         if (spare.length < length) {
             return new float[length];
         }
-        Arrays.fill(spare, 0);
+        Arrays.fill(spare, length, spare.length, 0);
         return spare;
     }
 
