@@ -279,8 +279,9 @@ final class BvhBuilder {
     /**
      * Builds the node numbered {@code node} over places {@code [start, end)} of {@code data}
      * (the primary or the spare arrays), with fewer than {@value #PARALLEL_THRESHOLD} objects,
-     * on this thread; its descendants get their numbers from {@code numbers}. The node's {@code extent} comes from its parent's
-     * bins, or is {@code null} and measured here. Answers the subtree's depth.
+     * on this thread; its descendants get their numbers from {@code numbers}. The node's
+     * {@code extent} comes from its parent's bins, or is {@code null} and measured here.
+     * Answers the subtree's depth.
      *
      * <p>The subtree's nodes are built in a loop over a stack of those waiting, not by
      * recursion: the JIT compiles a loop early, while it runs, and a recursive method that it
@@ -299,7 +300,8 @@ final class BvhBuilder {
                 continue;
             }
             int left = tree.firstChild(next.node());
-            waiting.push(new Pending(left + 1, split.middle(), split.end(), next.depth() + 1, split.right(), split.data()));
+            waiting.push(new Pending(left + 1, split.middle(), split.end(), next.depth() + 1, split.right(),
+                    split.data()));
             waiting.push(new Pending(left, next.start(), split.middle(), next.depth() + 1, split.left(), split.data()));
         }
         return deepest;

@@ -43,7 +43,10 @@ final class LeafObjects {
     private final byte[] testOf;
     /** The names of the kinds (a kind is a name and a way to test), for statistics. */
     final String[] kindNames;
-    /** Where each object's numbers start in {@link #numbers} (longer than the objects, if it is the builder's spare array). */
+    /**
+     * Where each object's numbers start in {@link #numbers}; longer than the objects, with
+     * zeros, if it is the builder's spare array.
+     */
     final int[] offsets;
     /** The numbers of the packed tests, followed by zeros if it is the builder's spare array. */
     final float[] numbers;

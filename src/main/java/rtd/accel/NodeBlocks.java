@@ -12,9 +12,9 @@ import java.util.Arrays;
  * too large (64 of the 280 MB alive while a million spheres were built). So a block holds
  * n / 2 nodes, and the tree mostly fits in the first; more blocks are made only if it does not.
  * (Not a power of two: for a million objects, 12 MB of boxes fill three of the heap's regions
- * of 4 MB, where 2<sup>19</sup> boxes took four.) The builder's threads take numbers in runs ({@link Run}); the
- * numbers then depend on which thread came first, but only the tree's shape reaches
- * {@link Bvh}, whose {@link Compaction} numbers the nodes anew.
+ * of 4 MB, where 2<sup>19</sup> boxes took four.) The builder's threads take numbers in runs
+ * ({@link Run}); the numbers then depend on which thread came first, but only the tree's shape
+ * reaches {@link Bvh}, whose {@link Compaction} numbers the nodes anew.
  */
 final class NodeBlocks {
 
