@@ -67,28 +67,38 @@ final class NodeBlocks {
         }
     }
 
+    /** The block of node {@code node}: almost always the first, known without a division. */
+    private int blockOf(int node) {
+        return node < block ? 0 : node / block;
+    }
+
     /** Sets node {@code node}'s box to the six floats of {@code box}. */
     void setBox(int node, float[] box) {
-        System.arraycopy(box, 0, boundsBlocks[node / block], 6 * (node % block), 6);
+        int b = blockOf(node);
+        System.arraycopy(box, 0, boundsBlocks[b], 6 * (node - b * block), 6);
     }
 
     /** Makes node {@code node} an inner node whose children are {@code firstChild} and {@code firstChild + 1}. */
     void setInner(int node, int firstChild) {
-        int[] contents = nodeBlocks[node / block];
-        contents[2 * (node % block)] = firstChild;
-        contents[2 * (node % block) + 1] = Bvh.INNER;
+        setContents(node, firstChild, Bvh.INNER);
     }
 
     /** Makes node {@code node} a leaf of {@code count} objects from place {@code first}. */
     void setLeaf(int node, int first, int count) {
-        int[] contents = nodeBlocks[node / block];
-        contents[2 * (node % block)] = first;
-        contents[2 * (node % block) + 1] = count;
+        setContents(node, first, count);
+    }
+
+    private void setContents(int node, int first, int second) {
+        int b = blockOf(node);
+        int at = 2 * (node - b * block);
+        nodeBlocks[b][at] = first;
+        nodeBlocks[b][at + 1] = second;
     }
 
     /** The first child of inner node {@code node}. */
     int firstChild(int node) {
-        return nodeBlocks[node / block][2 * (node % block)];
+        int b = blockOf(node);
+        return nodeBlocks[b][2 * (node - b * block)];
     }
 
     /**
