@@ -24,12 +24,12 @@ final class NodeBlocks {
     private static final int RUN_LENGTH = 128;
 
     /**
-     * The blocks, made (and these lists grown) under the lock of {@link #handOut}; a thread
-     * reads only the blocks of numbers handed out before it, through the lock or the fork of
-     * its task, so it sees them without a lock of its own.
+     * The blocks, made (and these lists grown) under the lock of {@link #handOut}. A thread
+     * uses only the blocks of numbers handed out before it (through the lock or the fork of its
+     * task); volatile, so that a list grown meanwhile by another thread is seen whole.
      */
-    private float[][] boundsBlocks = new float[1][];
-    private int[][] nodeBlocks = new int[1][];
+    private volatile float[][] boundsBlocks = new float[1][];
+    private volatile int[][] nodeBlocks = new int[1][];
     /** How many numbers are handed out (guarded by {@code this}); the root, 0, is the first. */
     private int handedOut = 1;
     /** Nodes per block. */
@@ -53,18 +53,22 @@ final class NodeBlocks {
         return first;
     }
 
+    /** Makes the blocks for numbers up to {@code nodes}, in new lists that are then published whole. */
     private void makeBlocksUpTo(int nodes) {
         int blocks = (nodes - 1) / block + 1;
-        if (blocks > boundsBlocks.length) {
-            boundsBlocks = Arrays.copyOf(boundsBlocks, Math.max(blocks, 2 * boundsBlocks.length));
-            nodeBlocks = Arrays.copyOf(nodeBlocks, boundsBlocks.length);
+        if (blocks <= boundsBlocks.length && boundsBlocks[blocks - 1] != null) {
+            return;
         }
+        float[][] newBounds = Arrays.copyOf(boundsBlocks, Math.max(blocks, boundsBlocks.length));
+        int[][] newNodes = Arrays.copyOf(nodeBlocks, newBounds.length);
         for (int b = 0; b < blocks; b++) {
-            if (boundsBlocks[b] == null) {
-                boundsBlocks[b] = new float[6 * block];
-                nodeBlocks[b] = new int[2 * block];
+            if (newBounds[b] == null) {
+                newBounds[b] = new float[6 * block];
+                newNodes[b] = new int[2 * block];
             }
         }
+        boundsBlocks = newBounds;
+        nodeBlocks = newNodes;
     }
 
     /** The block of node {@code node}: almost always the first, known without a division. */
