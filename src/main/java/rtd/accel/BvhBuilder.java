@@ -23,10 +23,10 @@ import rtd.geometry.Rounding;
  * <p>A node's objects are partitioned by copying them, in order, from one {@link ObjectArrays}
  * into the other; the children partition them back. Large subtrees are built in parallel, and
  * the nodes of very many objects near the root bin and partition their objects in chunks side
- * by side ({@link ChunkedPasses}). The tree does not depend on the number of threads: each
- * subtree owns a range of node numbers reserved in advance (a subtree of n objects needs at
- * most 2n − 1 nodes), the partition keeps the objects' order, and at the end the used nodes
- * are numbered anew, depth first ({@link Compaction}).
+ * by side ({@link ChunkedPasses}). The tree does not depend on the number of threads: the
+ * partition keeps the objects' order, each node is split by its own objects alone, and the
+ * nodes, numbered as the threads happen to make them ({@link NodeBlocks}), are numbered anew
+ * at the end, depth first ({@link Compaction}).
  */
 final class BvhBuilder {
 
@@ -46,7 +46,6 @@ final class BvhBuilder {
     static final int PARALLEL_THRESHOLD = 20_000;
     /** Nodes with at least this many objects measure, bin and partition them in chunks ({@link ChunkedPasses}). */
     private static final int CHUNKED_THRESHOLD = 8 * ChunkedPasses.CHUNK;
-    private static final int INNER = Bvh.INNER;
     /** What {@link #cheapestBin} answers when a leaf is cheaper than any split. */
     private static final int LEAF = Integer.MIN_VALUE;
 
@@ -64,15 +63,14 @@ final class BvhBuilder {
     private final ObjectArrays primary;
     /** The second set of arrays, which the partitions copy into and back out of. */
     private final ObjectArrays spare;
-    /** Node boxes and contents as in {@link Bvh}, at the reserved node numbers. */
-    private final float[] bounds;
+    /** The nodes as they are made. */
+    private final NodeBlocks tree;
     /**
      * Per place in the file: the object's {@link IGeometry#rounding}, linear at {@code [2i]} and
      * quadratic at {@code [2i + 1]}, asked while its box is (the objects in file order lie
      * mostly in order in memory; in leaf order each would be a wait for memory).
      */
     private final float[] roundings;
-    private final int[] nodes;
     private final ForkJoinPool pool;
     /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects. */
     private final ChunkedPasses chunked;
@@ -98,9 +96,7 @@ final class BvhBuilder {
             forEach(this::measureObject);
         }
         setUnboundedApart();
-        int capacity = Math.max(1, 2 * count - 1);
-        this.bounds = new float[6 * capacity];
-        this.nodes = new int[2 * capacity];
+        this.tree = new NodeBlocks(count);
         this.chunked = new ChunkedPasses(pool);
     }
 
@@ -176,13 +172,23 @@ final class BvhBuilder {
     /** Builds the tree; afterwards {@link #order()} and {@link #boxes()} are in leaf order. */
     void build() {
         maxDepth = pool == null
-                ? buildLarge(0, 1, 0, count, 0, null, primary, new SahBins())
-                : pool.invoke(new Subtree(0, 1, 0, count, 0, null, primary));
+                ? buildLarge(0, 0, count, 0, null, primary, new SahBins(), tree.newRun())
+                : pool.invoke(new Subtree(0, 0, count, 0, null, primary));
     }
 
     /** The objects' places in the file, in the order of the tree's leaves ({@link #count} of them). */
     int[] order() {
         return primary.order();
+    }
+
+    /**
+     * The second set of arrays, which the partitions no longer need once the tree is built: for
+     * {@link LeafObjects} to pack its numbers into. New arrays would take new memory (28 MB for
+     * a million spheres): the spare arrays stay alive anyway, until a concurrent mark finds them
+     * dead, since the tasks of the build that point to them have reached the old generation.
+     */
+    ObjectArrays spare() {
+        return spare;
     }
 
     /** The objects' boxes in leaf order, six floats each. */
@@ -200,30 +206,28 @@ final class BvhBuilder {
         return maxDepth;
     }
 
-    /** The node boxes, with numbers reserved but not all used. */
+    /** The node boxes, with numbers not all used ({@link NodeBlocks#bounds}); asked once. */
     float[] bounds() {
-        return bounds;
+        return tree.bounds();
     }
 
-    /** The node contents, with numbers reserved but not all used. */
+    /** The node contents, with numbers not all used ({@link NodeBlocks#nodes}); asked once. */
     int[] nodes() {
-        return nodes;
+        return tree.nodes();
     }
 
     /** A large subtree, built as a task of its own so that another thread can take it. */
     private final class Subtree extends RecursiveTask<Integer> {
         private static final long serialVersionUID = 1L;
         private final int node;
-        private final int free;
         private final int start;
         private final int end;
         private final int depth;
         private final Extent extent;
         private final ObjectArrays data;
 
-        Subtree(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data) {
+        Subtree(int node, int start, int end, int depth, Extent extent, ObjectArrays data) {
             this.node = node;
-            this.free = free;
             this.start = start;
             this.end = end;
             this.depth = depth;
@@ -233,7 +237,7 @@ final class BvhBuilder {
 
         @Override
         protected Integer compute() {
-            return buildLarge(node, free, start, end, depth, extent, data, new SahBins());
+            return buildLarge(node, start, end, depth, extent, data, new SahBins(), tree.newRun());
         }
     }
 
@@ -245,14 +249,14 @@ final class BvhBuilder {
      * the top of the tree takes, on which the JIT would compile it anew (one that is never
      * taken while the JIT watches is compiled as a trap).
      */
-    private int buildLarge(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data,
-            SahBins bins) {
+    private int buildLarge(int node, int start, int end, int depth, Extent extent, ObjectArrays data,
+            SahBins bins, NodeBlocks.Run numbers) {
         if (end - start < PARALLEL_THRESHOLD) {
-            return buildNode(node, free, start, end, depth, extent, data, bins);
+            return buildNode(node, start, end, depth, extent, data, bins, numbers);
         }
         Extent known = extent != null ? extent
                 : end - start >= CHUNKED_THRESHOLD ? chunked.measure(data, start, end) : measure(data, start, end);
-        System.arraycopy(known.box(), 0, bounds, 6 * node, 6);
+        tree.setBox(node, known.box());
         if (widestAxis(known.centres()) < 0) {
             end = withoutTwins(data, start, end);
         }
@@ -260,48 +264,45 @@ final class BvhBuilder {
         if (split == null) {
             return leaf(node, start, end, depth, data);
         }
-        int left = inner(node, free);
+        int left = inner(node, numbers);
         int middle = split.middle();
-        int rightFree = free + 2 * (middle - start);
         if (pool == null) {
-            return Math.max(buildLarge(left, free + 2, start, middle, depth + 1, split.left(), split.data(), bins),
-                    buildLarge(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins));
+            return Math.max(buildLarge(left, start, middle, depth + 1, split.left(), split.data(), bins, numbers),
+                    buildLarge(left + 1, middle, end, depth + 1, split.right(), split.data(), bins, numbers));
         }
-        Subtree leftTree = new Subtree(left, free + 2, start, middle, depth + 1, split.left(), split.data());
+        Subtree leftTree = new Subtree(left, start, middle, depth + 1, split.left(), split.data());
         leftTree.fork();
-        int rightDepth = buildLarge(left + 1, rightFree, middle, end, depth + 1, split.right(), split.data(), bins);
+        int rightDepth = buildLarge(left + 1, middle, end, depth + 1, split.right(), split.data(), bins, numbers);
         return Math.max(leftTree.join(), rightDepth);
     }
 
     /**
      * Builds the node numbered {@code node} over places {@code [start, end)} of {@code data}
      * (the primary or the spare arrays), with fewer than {@value #PARALLEL_THRESHOLD} objects,
-     * on this thread; its descendants get the numbers from {@code free} on, at most
-     * {@code 2(end − start) − 2} of them. The node's {@code extent} comes from its parent's
-     * bins, or is {@code null} and measured here. Answers the subtree's depth.
+     * on this thread; its descendants get their numbers from {@code numbers}. The node's
+     * {@code extent} comes from its parent's bins, or is {@code null} and measured here.
+     * Answers the subtree's depth.
      *
      * <p>The subtree's nodes are built in a loop over a stack of those waiting, not by
      * recursion: the JIT compiles a loop early, while it runs, and a recursive method that it
      * inlines into itself is a long compilation, during which the build runs slower code.
      */
-    private int buildNode(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data,
-            SahBins bins) {
+    private int buildNode(int node, int start, int end, int depth, Extent extent, ObjectArrays data,
+            SahBins bins, NodeBlocks.Run numbers) {
         ArrayDeque<Pending> waiting = new ArrayDeque<>();
-        waiting.push(new Pending(node, free, start, end, depth, extent, data));
+        waiting.push(new Pending(node, start, end, depth, extent, data));
         int deepest = depth;
         while (!waiting.isEmpty()) {
             Pending next = waiting.pop();
-            Split split = split(next, bins);
+            Split split = split(next, bins, numbers);
             if (split == null) {
                 deepest = Math.max(deepest, next.depth());
                 continue;
             }
-            int left = nodes[2 * next.node()];
-            int rightFree = next.free() + 2 * (split.middle() - next.start());
-            waiting.push(new Pending(left + 1, rightFree, split.middle(), split.end(), next.depth() + 1, split.right(),
+            int left = tree.firstChild(next.node());
+            waiting.push(new Pending(left + 1, split.middle(), split.end(), next.depth() + 1, split.right(),
                     split.data()));
-            waiting.push(new Pending(left, next.free() + 2, next.start(), split.middle(), next.depth() + 1, split.left(),
-                    split.data()));
+            waiting.push(new Pending(left, next.start(), split.middle(), next.depth() + 1, split.left(), split.data()));
         }
         return deepest;
     }
@@ -310,12 +311,12 @@ final class BvhBuilder {
      * Makes the {@code waiting} node a leaf (answers {@code null}) or an inner node, whose
      * children's objects are then divided as the answer says.
      */
-    private Split split(Pending waiting, SahBins bins) {
+    private Split split(Pending waiting, SahBins bins, NodeBlocks.Run numbers) {
         int start = waiting.start();
         int end = waiting.end();
         ObjectArrays data = waiting.data();
         Extent known = waiting.extent() != null ? waiting.extent() : measure(data, start, end);
-        System.arraycopy(known.box(), 0, bounds, 6 * waiting.node(), 6);
+        tree.setBox(waiting.node(), known.box());
         if (end - start > 1 && widestAxis(known.centres()) < 0) {
             end = withoutTwins(data, start, end);
         }
@@ -325,13 +326,13 @@ final class BvhBuilder {
         if (split == null) {
             leaf(waiting.node(), start, end, waiting.depth(), data);
         } else {
-            inner(waiting.node(), waiting.free());
+            inner(waiting.node(), numbers);
         }
         return split;
     }
 
     /** A node that waits to be built, with what {@link #buildNode} would be called with. */
-    private record Pending(int node, int free, int start, int end, int depth, Extent extent, ObjectArrays data) {
+    private record Pending(int node, int start, int end, int depth, Extent extent, ObjectArrays data) {
     }
 
     /** Makes node {@code node} the leaf of places {@code [start, end)}, whose objects go to the primary arrays. */
@@ -339,16 +340,15 @@ final class BvhBuilder {
         if (data != primary) {
             data.copy(start, end, primary);
         }
-        nodes[2 * node] = start;
-        nodes[2 * node + 1] = end - start;
+        tree.setLeaf(node, start, end - start);
         return depth;
     }
 
-    /** Makes node {@code node} an inner node whose children are numbered {@code free} and {@code free + 1}; answers {@code free}. */
-    private int inner(int node, int free) {
-        nodes[2 * node] = free;
-        nodes[2 * node + 1] = INNER;
-        return free;
+    /** Makes node {@code node} an inner node with two new children from {@code numbers}; answers the first. */
+    private int inner(int node, NodeBlocks.Run numbers) {
+        int first = numbers.pair();
+        tree.setInner(node, first);
+        return first;
     }
 
     /** The extent of places {@code [start, end)} of {@code data}, by one pass over the objects. */

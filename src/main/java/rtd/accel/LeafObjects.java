@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
@@ -42,20 +43,25 @@ final class LeafObjects {
     private final byte[] testOf;
     /** The names of the kinds (a kind is a name and a way to test), for statistics. */
     final String[] kindNames;
-    /** Where each object's numbers start in {@link #numbers}. */
+    /**
+     * Where each object's numbers start in {@link #numbers}; longer than the objects, with
+     * zeros, if it is the builder's spare array.
+     */
     final int[] offsets;
+    /** The numbers of the packed tests, followed by zeros if it is the builder's spare array. */
     final float[] numbers;
 
     /**
      * Packs {@code objects} (in leaf order; {@code fileOrder} and {@code boxes} alike) with the
-     * builder's threads.
+     * builder's threads, into the builder's spare arrays where they are long enough
+     * ({@link BvhBuilder#spare}).
      */
     LeafObjects(IGeometry[] objects, int[] fileOrder, float[] boxes, BvhBuilder threads) {
         this.objects = objects;
         this.fileOrder = fileOrder;
         this.boxes = boxes;
         this.kinds = new byte[objects.length];
-        this.offsets = new int[objects.length];
+        this.offsets = reused(threads.spare().order(), objects.length);
         this.testOf = new byte[objects.length];
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
@@ -79,7 +85,7 @@ final class LeafObjects {
             size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
         }
         this.kindNames = names.toArray(String[]::new);
-        this.numbers = new float[size];
+        this.numbers = reused(threads.spare().boxes(), size);
         if (threads.parallel()) {
             threads.forEach(this::pack);
         } else {
@@ -87,6 +93,28 @@ final class LeafObjects {
                 pack(i);
             }
         }
+    }
+
+    /**
+     * {@code spare} if it has at least {@code length} places, else a new array of {@code length}.
+     * The packing writes all of the first {@code length}; those after are zeroed, so that the
+     * array depends on the tree alone.
+     */
+    private static int[] reused(int[] spare, int length) {
+        if (spare.length < length) {
+            return new int[length];
+        }
+        Arrays.fill(spare, length, spare.length, 0);
+        return spare;
+    }
+
+    /** As {@link #reused(int[], int)}, for floats. */
+    private static float[] reused(float[] spare, int length) {
+        if (spare.length < length) {
+            return new float[length];
+        }
+        Arrays.fill(spare, length, spare.length, 0);
+        return spare;
     }
 
     /** The kind with this name and way to test among those found so far, or −1. */

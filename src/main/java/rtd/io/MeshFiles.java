@@ -45,7 +45,9 @@ final class MeshFiles {
                     "a mesh's path is relative to the folder of the scene file");
         }
         try {
-            return ObjReader.read(new SourceText(shown, bytes));
+            try (SourceText obj = new SourceText(shown, bytes)) {
+                return ObjReader.read(obj);
+            }
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();
             List<SceneError> errors = e.errors().stream().map(error -> new SceneError(error.file(), error.line(),
@@ -75,7 +77,7 @@ final class MeshFiles {
         if (Files.exists(file) && Files.size(file) > MAX_SIZE) {
             throw new FileSystemException(file.toString(), null, "it is larger than 2 GB");
         }
-        return Files.readAllBytes(file);
+        return SceneFileReader.readWhole(file); // not Files.readAllBytes: it keeps a buffer as large as the file
     }
 
     /** Why a file could not be read, in words for a person. */

@@ -23,7 +23,8 @@ final class ObjReader {
     private static final String CORNER_FORMS = "a corner is written 3, 3/1, 3//2 or 3/1/2";
 
     private final SourceText source;
-    private final byte[] bytes;
+    /** The source's bytes, until the file is read (see {@link SourceText#close}). */
+    private byte[] bytes;
     private int pos;
     private int line = 1;
     private int lineStart;
@@ -54,6 +55,7 @@ final class ObjReader {
     static ObjMesh read(SourceText source) throws SceneException {
         ObjReader reader = new ObjReader(source);
         reader.readAll();
+        reader.bytes = null;
         if (!reader.errors.isEmpty()) {
             throw new SceneException(reader.errors, false);
         }

@@ -25,6 +25,8 @@ import java.util.Locale;
 final class SceneFileReader {
 
     private static final int CHUNK = 1 << 16;
+    /** The most bytes of a regular file read at once ({@link #readWhole}). */
+    private static final int WHOLE_FILE_PIECE = 1 << 20;
 
     private SceneFileReader() {
     }
@@ -41,9 +43,10 @@ final class SceneFileReader {
             throw tooLarge(path, "is " + bytes(size), limit);
         }
         if (size >= 0) {
-            // A regular file of known size is bounded already: read it in one go (the parser then
-            // checks its text in parallel parts), which is faster for a large scene than chunks.
-            byte[] bytes = Files.readAllBytes(path);
+            // A regular file of known size is bounded already: read it without checking each
+            // chunk (the parser checks its text in parallel parts), which is faster for a large
+            // scene than chunks of 64 KiB.
+            byte[] bytes = readWhole(path, size);
             if (bytes.length > limit) { // it grew while we read it
                 throw tooLarge(path, "is larger than " + bytes(limit), limit);
             }
@@ -51,6 +54,39 @@ final class SceneFileReader {
         }
         try (InputStream in = Files.newInputStream(path)) {
             return read(path, in, size, (int) limit);
+        }
+    }
+
+    /**
+     * All bytes of the regular file {@code path}, which had {@code size} of them (more if it
+     * grew meanwhile), read {@value #WHOLE_FILE_PIECE} bytes at a time: Java reads a file into
+     * an array through a buffer outside the heap as large as each read, and keeps that buffer
+     * for the thread ({@code Files.readAllBytes} of a million spheres kept 50 MB for the whole
+     * run).
+     */
+    static byte[] readWhole(Path path) throws IOException {
+        return readWhole(path, Files.size(path));
+    }
+
+    /** {@link #readWhole(Path)} of a file that had {@code size} bytes. */
+    private static byte[] readWhole(Path path, long size) throws IOException {
+        try (InputStream in = Files.newInputStream(path)) {
+            byte[] bytes = new byte[(int) size];
+            int filled = 0;
+            while (filled < bytes.length) {
+                int read = in.read(bytes, filled, Math.min(WHOLE_FILE_PIECE, bytes.length - filled));
+                if (read < 0) {
+                    return Arrays.copyOf(bytes, filled); // it shrank while we read it
+                }
+                filled += read;
+            }
+            byte[] more = in.readAllBytes(); // what it grew by, in small reads
+            if (more.length == 0) {
+                return bytes;
+            }
+            byte[] all = Arrays.copyOf(bytes, Math.addExact(bytes.length, more.length));
+            System.arraycopy(more, 0, all, bytes.length, more.length);
+            return all;
         }
     }
 

@@ -44,7 +44,7 @@ public final class SceneIO {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
         Path folder = path.getParent() == null ? Path.of("") : path.getParent();
-        return SceneParser.parse(new SourceText(path.toString(), SceneFileReader.read(path), folder));
+        return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder));
     }
 
     /**
@@ -53,7 +53,7 @@ public final class SceneIO {
      * {@code /dev/stdin}.
      */
     public static Scene readScene(Path path, String name) throws SceneException, IOException {
-        return SceneParser.parse(new SourceText(name, SceneFileReader.read(path), Path.of("")));
+        return parse(new SourceText(name, SceneFileReader.read(path), Path.of("")));
     }
 
     /**
@@ -66,7 +66,7 @@ public final class SceneIO {
             throw new FileSystemException(name, null, "it is larger than " + SceneFileReader.bytes(MAX_SCENE_BYTES)
                     + "; rtd reads scene files of at most " + SceneFileReader.bytes(MAX_SCENE_BYTES));
         }
-        return SceneParser.parse(new SourceText(name, bytes, Path.of("")));
+        return parse(new SourceText(name, bytes, Path.of("")));
     }
 
     /**
@@ -89,7 +89,14 @@ public final class SceneIO {
 
     /** As {@link #parseScene(String, byte[])}, with the OBJ files of meshes found relative to {@code meshFolder}. */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder) throws SceneException {
-        return SceneParser.parse(new SourceText(name, bytes, meshFolder));
+        return parse(new SourceText(name, bytes, meshFolder));
+    }
+
+    /** Parses {@code source}, and then closes it: the scene needs its bytes no more. */
+    private static Scene parse(SourceText source) throws SceneException {
+        try (source) {
+            return SceneParser.parse(source);
+        }
     }
 
     /**

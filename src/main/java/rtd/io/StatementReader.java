@@ -22,7 +22,8 @@ import rtd.scene.Light;
 final class StatementReader {
 
     private final SourceText source;
-    private final byte[] bytes;
+    /** The source's bytes, until {@link #readAll} is done (see {@link SourceText#close}). */
+    private byte[] bytes;
     private final int end;
     private final ScenePart part;
     private final GroupValues values;
@@ -69,6 +70,7 @@ final class StatementReader {
             skipToNextLine();
         }
         part.endsInBlockComment = inBlockComment;
+        bytes = null;
     }
 
     // ---- one statement ------------------------------------------------------------------

@@ -2,12 +2,15 @@ package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Random;
 import java.util.Set;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.render.RenderResult;
+import rtd.geometry.IGeometry;
 import rtd.image.Color;
 import rtd.scene.Scene;
 import rtd.testing.RandomScenes;
@@ -30,6 +33,33 @@ class BvhTest {
             assertThat(many.leaves.fileOrder).isEqualTo(one.leaves.fileOrder);
             assertThat(many.leaves.boxes).isEqualTo(one.leaves.boxes);
             assertThat(many.leaves.numbers).isEqualTo(one.leaves.numbers);
+        }
+    }
+
+    @Test
+    void isTheSameTreeForAnyNumberOfBuildThreadsAlsoWhenItOutgrowsItsFirstBlockOfNodes() {
+        // Threes of spheres far apart make leaves of fewer than four objects on average: more
+        // nodes than half the objects, the first block of NodeBlocks, and enough objects that
+        // the threads take their node numbers side by side.
+        Random random = new Random(3);
+        List<IGeometry> objects = new ArrayList<>();
+        for (int group = 0; group < 20_000; group++) {
+            float x = 100 * (group % 28);
+            float y = 100 * (group / 28 % 28);
+            float z = 100 * (group / 784);
+            for (int k = 0; k < 3; k++) {
+                objects.add(Scenes.sphere(x + 10 * random.nextFloat(), y + 10 * random.nextFloat(),
+                        z + 10 * random.nextFloat(), 0.5f + random.nextInt(3), 0x102030));
+            }
+        }
+        Scene scene = new Scene(Color.BLACK, Scenes.frontCamera(5000, 1), objects);
+        Bvh one = Bvh.build(scene, 1);
+        assertThat(one.nodeCount()).isGreaterThan(objects.size() / 2);
+        for (int threads : new int[] {2, 3}) {
+            Bvh many = Bvh.build(scene, threads);
+            assertThat(many.nodes).isEqualTo(one.nodes);
+            assertThat(many.bounds).isEqualTo(one.bounds);
+            assertThat(many.leaves.fileOrder).isEqualTo(one.leaves.fileOrder);
         }
     }
 
