@@ -58,7 +58,7 @@ class BvhTest {
         for (int threads : new int[] {2, 3}) {
             Bvh many = Bvh.build(scene, threads);
             assertThat(many.nodes).isEqualTo(one.nodes);
-            assertThat(many.bounds).isEqualTo(one.bounds);
+            assertThat(many.boxes).isEqualTo(one.boxes);
             assertThat(many.leaves.fileOrder).isEqualTo(one.leaves.fileOrder);
         }
     }
