@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import java.util.Arrays;
+import rtd.camera.OrthographicCamera;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.WorkCount;
@@ -58,6 +59,8 @@ final class BeamTracer {
     private int count;
     /** Whether the rays' hits are started; not before a leaf's objects are in reach, unless the scene has planes. */
     private boolean started;
+    /** Whether the walk only asks if the beam reaches any object ({@link #reachesNothing}), and makes no rays. */
+    private boolean probing;
     private RayBundle bundle;
     /** The farthest of the rays' {@link NearestHit#skipBeyond}: no box beyond it can matter. */
     private float farthestSkip;
@@ -90,9 +93,6 @@ final class BeamTracer {
         if (testsBefore.length < count) {
             testsBefore = new long[count];
         }
-        for (int i = 0; i < count; i++) {
-            testsBefore[i] = hits[i].testsRun();
-        }
         this.bundle = bundle;
         started = false;
         farthestSkip = Float.POSITIVE_INFINITY;
@@ -114,12 +114,38 @@ final class BeamTracer {
         return true;
     }
 
+    /**
+     * Whether the beam of the bundle's parallel rays reaches no object, so that none of its rays
+     * can hit anything: found by the walk alone, without making a ray, and then the rays count
+     * as traced. False if some object is in reach, if the scene has objects without a box
+     * (which every ray meets), or if the rays are not the orthographic camera's. The bundle may be any rectangle
+     * of pixels, as the corners of any rectangle hold its origins ({@link Beam#aimAt}).
+     */
+    boolean reachesNothing(RayBundle bundle) {
+        if (bvh.unbounded.length > 0 || !(bundle.camera() instanceof OrthographicCamera) || !aim(bundle)) {
+            return false; // other bundles are parallel seldom, and telling would make all their rays
+        }
+        started = false;
+        farthestSkip = Float.POSITIVE_INFINITY;
+        if (bvh.hasTree()) {
+            probing = true;
+            walk();
+            probing = false;
+        }
+        if (started) {
+            return false;
+        }
+        rays += bundle.count();
+        return true;
+    }
+
     /** Starts each ray's nearest hit, with the objects that have no box, which every ray meets. */
     private void start() {
         bundle.make();
         farthestSkip = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
             NearestHit hit = hits[i];
+            testsBefore[i] = hit.testsRun();
             hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
                     bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
             hit.testUnbounded();
@@ -248,6 +274,11 @@ final class BeamTracer {
     private void testLeaf(int leaf, float grow) {
         float reach = objectsEntry(leaf, grow);
         if (!worthVisiting(reach)) {
+            return;
+        }
+        if (probing) { // an object in reach: that is the answer, and the walk ends here
+            started = true;
+            farthestSkip = Float.NEGATIVE_INFINITY;
             return;
         }
         if (!started) {
