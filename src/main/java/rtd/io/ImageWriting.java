@@ -85,7 +85,7 @@ public final class ImageWriting {
      */
     private static ImageWriteParam parameters(ImageWriter writer, ImageFormat format) {
         ImageWriteParam parameters = writer.getDefaultWriteParam();
-        if (format.equals(ImageFormat.PNG) && parameters.canWriteCompressed()) {
+        if (format.isPng() && parameters.canWriteCompressed()) {
             parameters.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
             parameters.setCompressionQuality(0.9f);
         }
