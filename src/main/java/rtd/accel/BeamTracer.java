@@ -2,6 +2,7 @@ package rtd.accel;
 
 import java.util.Arrays;
 import rtd.camera.OrthographicCamera;
+import rtd.geometry.Sphere;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.WorkCount;
@@ -26,6 +27,11 @@ import rtd.render.WorkCount;
  * million spheres and 11 % of a million-triangle mesh, the price of a call the JIT cannot bind to
  * one class in the innermost loop. At a leaf, each ray that enters the leaf's box no farther than its own
  * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}).
+ *
+ * <p>Two answers need no ray at all. A beam that reaches no object's box misses everywhere: a
+ * square, or a whole run of squares ({@link #reachesNothing}), is background. And when the
+ * shader reads only which object a ray hits (the paper's flat colours), a square inside the
+ * outline of the one sphere in its reach is that sphere throughout ({@link #coveredBySphere}).
  */
 final class BeamTracer {
 
@@ -61,6 +67,13 @@ final class BeamTracer {
     private boolean started;
     /** Whether the walk only asks if the beam reaches any object ({@link #reachesNothing}), and makes no rays. */
     private boolean probing;
+    /** Whether where each ray hits is asked for, not only the object ({@link HitBuffer#hitPointsRead}). */
+    private boolean hitPointsRead;
+    /** The sphere (its place among the leaves' objects) that every ray of the square hits, found before any ray is made; else −1. */
+    private int covering = -1;
+    /** The leaf of {@link #covering}, and its growth, to trace its rays there after all if another object is in reach. */
+    private int coveringLeaf;
+    private float coveringGrow;
     private RayBundle bundle;
     /** The farthest of the rays' {@link NearestHit#skipBeyond}: no box beyond it can matter. */
     private float farthestSkip;
@@ -95,6 +108,8 @@ final class BeamTracer {
         }
         this.bundle = bundle;
         started = false;
+        hitPointsRead = out.hitPointsRead();
+        covering = -1;
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.unbounded.length > 0) {
             start();
@@ -103,6 +118,11 @@ final class BeamTracer {
             walk();
         }
         rays += count;
+        if (covering >= 0) {
+            out.setHits(bvh.leaves.fileOrder[covering], count); // inside the sphere's outline: no ray was needed
+            covering = -1;
+            return true;
+        }
         if (!started) {
             out.setMisses(count); // the beam reached no object: no ray was needed
             return true;
@@ -282,8 +302,67 @@ final class BeamTracer {
             return;
         }
         if (!started) {
+            if (covering < 0 && !hitPointsRead && coveredBySphere(leaf, grow)) {
+                return;
+            }
             start();
+            if (covering >= 0) { // another object in reach after all: the rays are traced, in the sphere's leaf too
+                int putOff = coveringLeaf;
+                covering = -1;
+                testRays(putOff, objectsEntry(putOff, coveringGrow), coveringGrow);
+            }
         }
+        testRays(leaf, reach, grow);
+    }
+
+    /**
+     * Whether the beam reaches only one object of the leaf, a sphere that every ray of the
+     * square surely hits ({@link Sphere#everyRayHitsBefore}): then no ray need be traced, as long
+     * as the walk meets no other object in reach before the sphere's hits. The walk goes on,
+     * skipping the boxes beyond them; if it meets another object in reach, the rays are traced
+     * after all, in the sphere's leaf too ({@link #testLeaf}).
+     */
+    private boolean coveredBySphere(int leaf, float grow) {
+        int only = onlyObjectInReach(leaf, grow);
+        if (only < 0 || !(bvh.leaves.objects[only] instanceof Sphere sphere)) {
+            return false;
+        }
+        double before = sphere.everyRayHitsBefore(beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz);
+        if (!(before >= 0)) {
+            return false;
+        }
+        double origins = Math.sqrt(square(Math.abs(centre[0]) + half[0]) + square(Math.abs(centre[1]) + half[1])
+                + square(Math.abs(centre[2]) + half[2]));
+        covering = only;
+        coveringLeaf = leaf;
+        coveringGrow = grow;
+        // a ray's skip distance for a hit there (NearestHit.skipFor), generously: boxes beyond cannot hold a nearer hit
+        farthestSkip = (float) (before * (1 + 1e-4) + 1e-4 * origins / length);
+        return true;
+    }
+
+    private static double square(double x) {
+        return x * x;
+    }
+
+    /** The one object of the leaf whose box the beam reaches, or −1 if none or several do. */
+    private int onlyObjectInReach(int leaf, float grow) {
+        int first = bvh.nodes[2 * leaf];
+        int end = first + bvh.nodes[2 * leaf + 1];
+        int only = -1;
+        for (int i = first; i < end; i++) {
+            if (worthVisiting(grownEntry(bvh.leaves.boxes, i, grow))) {
+                if (only >= 0) {
+                    return -1;
+                }
+                only = i;
+            }
+        }
+        return only;
+    }
+
+    /** Each ray that could find a nearer hit in the leaf, whose objects the beam enters at {@code reach}, runs the paper's tests there. */
+    private void testRays(int leaf, float reach, float grow) {
         float farthest = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
             NearestHit hit = hits[i];

@@ -117,6 +117,7 @@ public final class ParallelRenderer {
             this.width = width;
             this.height = height;
             this.samples = samples;
+            hits.readHitPoints(shader.readsHitPoints());
         }
 
         /**

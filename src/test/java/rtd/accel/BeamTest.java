@@ -97,6 +97,31 @@ class BeamTest {
     }
 
     @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {41, 42, 43, 44, 45, 46})
+    void aSquareInsideASpheresOutlineTakesTheSphereForEveryRayAsThePapersLoopDoes(long seed) {
+        Scene scene = RandomScenes.generate(seed, 25);
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        HitBuffer hits = new HitBuffer(64);
+        hits.readHitPoints(false);
+        int atOnce = 0;
+        for (int top = 0; top < 240; top += 8) {
+            for (int left = 0; left < 320; left += 8) {
+                RayBundle rays = square(scene.camera(), left, top, 320, 240);
+                tracer.traceAll(rays, hits);
+                if (hits.everyRayHits() >= 0) {
+                    atOnce++;
+                }
+                for (int i = 0; i < rays.count(); i++) {
+                    Hit expected = scene.nearestHit(rays.ray(i));
+                    assertThat(hits.index(i)).as("ray " + i + " of the square at (" + left + ", " + top + ")")
+                            .isEqualTo(expected == null ? -1 : expected.index());
+                }
+            }
+        }
+        assertThat(atOnce).as("squares taken at once").isPositive();
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {11, 12})
     void raysOfDifferentDirectionsAreTracedOneByOne(long seed) {
         Scene scene = RandomScenes.generate(seed, 500);
