@@ -1,7 +1,6 @@
 package rtd.accel;
 
 import rtd.camera.OrthographicCamera;
-import rtd.math.Ray;
 import rtd.render.RayBundle;
 
 /**
@@ -20,6 +19,8 @@ final class Beam {
     float dx;
     float dy;
     float dz;
+    /** One ray's numbers, origin then direction, as the bundle gives them; kept so that aiming makes no garbage. */
+    private final float[] ray = new float[6];
 
     /**
      * Becomes the beam of the bundle's rays; false if they are not all parallel or an origin is
@@ -27,9 +28,9 @@ final class Beam {
      *
      * <p>For a square of the orthographic camera the four corner rays suffice, and the others
      * are not made. Why the corners hold every origin, even with rounding: in
-     * {@link OrthographicCamera#generateRay(int, int, int, int)} each coordinate of the origin
-     * is made from the pixel's x by a product, a quotient by {@code zoom > 0} and two sums, and
-     * from y likewise. Each of these is monotonic in its input, and rounding to nearest keeps it
+     * {@link OrthographicCamera#putRay} (the numbers of its {@code generateRay}, to the bit)
+     * each coordinate of the origin is made from the pixel's x by a product, a quotient by
+     * {@code zoom > 0} and two sums, and from y likewise. Each of these is monotonic in its input, and rounding to nearest keeps it
      * monotonic, so each coordinate only grows (or only shrinks) as x grows, and as y grows: its
      * smallest and largest values over the square lie at corners.
      */
@@ -43,30 +44,38 @@ final class Beam {
         }
         int rays = corners ? 4 : bundle.count();
         for (int i = 0; i < rays; i++) {
-            Ray ray = corners ? bundle.corner(i) : bundle.ray(i);
-            if (!add(i == 0, ray)) {
+            if (corners) {
+                bundle.putCorner(i, ray);
+            } else {
+                ray[0] = bundle.originX(i);
+                ray[1] = bundle.originY(i);
+                ray[2] = bundle.originZ(i);
+                ray[3] = bundle.directionX(i);
+                ray[4] = bundle.directionY(i);
+                ray[5] = bundle.directionZ(i);
+            }
+            if (!add(i == 0)) {
                 return false;
             }
         }
         return true;
     }
 
-    /** Grows the beam to hold {@code ray}'s origin; false if the ray is not parallel to the beam or not finite. */
-    private boolean add(boolean first, Ray ray) {
-        if (!ray.origin().isFinite()) {
+    /** Grows the beam to hold {@link #ray}'s origin; false if the ray is not parallel to the beam or not finite. */
+    private boolean add(boolean first) {
+        if (!Float.isFinite(ray[0]) || !Float.isFinite(ray[1]) || !Float.isFinite(ray[2])) {
             return false;
         }
         if (first) {
-            dx = ray.direction().x();
-            dy = ray.direction().y();
-            dz = ray.direction().z();
-        } else if (!sameBits(ray.direction().x(), dx) || !sameBits(ray.direction().y(), dy)
-                || !sameBits(ray.direction().z(), dz)) {
+            dx = ray[3];
+            dy = ray[4];
+            dz = ray[5];
+        } else if (!sameBits(ray[3], dx) || !sameBits(ray[4], dy) || !sameBits(ray[5], dz)) {
             return false;
         }
-        grow(0, ray.origin().x(), first);
-        grow(1, ray.origin().y(), first);
-        grow(2, ray.origin().z(), first);
+        grow(0, ray[0], first);
+        grow(1, ray[1], first);
+        grow(2, ray[2], first);
         return true;
     }
 
