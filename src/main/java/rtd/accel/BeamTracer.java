@@ -56,6 +56,12 @@ final class BeamTracer {
     /** Per axis, whether the rays do not move along it (1 / direction is infinite). */
     private final boolean[] still = new boolean[3];
     private float length;
+    /**
+     * The squared radius from which a sphere's box leaves room for squares outside its outline
+     * worth telling ({@link #objectEntry}): eight times the beam's half diagonal. Smaller
+     * spheres, such as a million random ones, are not worth the check.
+     */
+    private float cornerWorthy;
     /** The exit of the grown box of the last {@link #grownEntry}. */
     private float exit;
     /** The rays of the square and their nearest hits; reused from square to square. */
@@ -215,6 +221,7 @@ final class BeamTracer {
             }
         }
         length = (float) Math.sqrt((beam.dx * beam.dx) + (beam.dy * beam.dy) + (beam.dz * beam.dz));
+        cornerWorthy = 64 * (half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
         return true;
     }
 
@@ -351,7 +358,7 @@ final class BeamTracer {
         int end = first + bvh.nodes[2 * leaf + 1];
         int only = -1;
         for (int i = first; i < end; i++) {
-            if (worthVisiting(grownEntry(bvh.leaves.boxes, i, grow))) {
+            if (worthVisiting(objectEntry(i, grow))) {
                 if (only >= 0) {
                     return -1;
                 }
@@ -383,9 +390,21 @@ final class BeamTracer {
         int end = first + bvh.nodes[2 * leaf + 1];
         float entry = MISS;
         for (int i = first; i < end; i++) {
-            entry = FastMath.min(entry, grownEntry(bvh.leaves.boxes, i, grow));
+            entry = FastMath.min(entry, objectEntry(i, grow));
         }
         return entry;
+    }
+
+    /**
+     * The beam's entry into the box of the leaves' object {@code i}, or {@link #MISS} if it
+     * reaches none, or if the object is a sphere that no ray of the square hits (a square in
+     * the corner of a sphere's box, outside its outline).
+     */
+    private float objectEntry(int i, float grow) {
+        float entry = grownEntry(bvh.leaves.boxes, i, grow);
+        return entry < MISS
+                && bvh.leaves.missedByEvery(i, cornerWorthy, beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz)
+                ? MISS : entry;
     }
 
     /**

@@ -95,6 +95,34 @@ public record Sphere(Vector3f center, float radius, Color color, Material materi
         return sure ? farthestT * (1 + 1e-5) + 1e-5 * Math.sqrt(farthestSquared / dd) : Double.NaN;
     }
 
+    /**
+     * Whether {@link #intersect} surely reports no hit for any ray along {@code (dx, dy, dz)}
+     * from an origin in the box from {@code lowest} to {@code highest}, for the sphere of centre
+     * {@code (cx, cy, cz)} and squared radius {@code rr} (the numbers of {@link #putTestNumbers}).
+     * Not in the paper: the beam tracer leaves such a sphere out of a square's tests.
+     *
+     * <p>Why it is sure: a ray whose line passes the centre at a distance {@code p} with
+     * {@code p² > r² + 8δ} gets a discriminant below 0 (see {@link #everyRayHitsBefore}), and no
+     * origin's line passes nearer than the box's centre's line less the box's half diagonal.
+     */
+    public static boolean everyRayMisses(float cx, float cy, float cz, float rr, float[] lowest, float[] highest,
+            float dx, float dy, float dz) {
+        double dd = (double) dx * dx + (double) dy * dy + (double) dz * dz;
+        double mx = (lowest[0] + (double) highest[0]) / 2 - cx;
+        double my = (lowest[1] + (double) highest[1]) / 2 - cy;
+        double mz = (lowest[2] + (double) highest[2]) / 2 - cz;
+        double along = dx * mx + dy * my + dz * mz;
+        double passing = Math.sqrt(Math.max(0, mx * mx + my * my + mz * mz - along * along / dd));
+        double hx = (highest[0] - (double) lowest[0]) / 2;
+        double hy = (highest[1] - (double) lowest[1]) / 2;
+        double hz = (highest[2] - (double) lowest[2]) / 2;
+        double halfDiagonal = Math.sqrt(hx * hx + hy * hy + hz * hz);
+        double farthest = Math.sqrt(mx * mx + my * my + mz * mz) + halfDiagonal;
+        double delta = 0x1p-24 * (15 * farthest * farthest + 6 * rr);
+        double nearest = passing - halfDiagonal;
+        return nearest > 0 && nearest * nearest > rr + 8 * delta;
+    }
+
     /** The squared distance from the centre to the nearest point of the box. */
     private double nearestSquared(float[] lowest, float[] highest) {
         double sum = 0;
