@@ -30,9 +30,10 @@ final class Beam {
      * are not made. Why the corners hold every origin, even with rounding: in
      * {@link OrthographicCamera#putRay} (the numbers of its {@code generateRay}, to the bit)
      * each coordinate of the origin is made from the pixel's x by a product, a quotient by
-     * {@code zoom > 0} and two sums, and from y likewise. Each of these is monotonic in its input, and rounding to nearest keeps it
-     * monotonic, so each coordinate only grows (or only shrinks) as x grows, and as y grows: its
-     * smallest and largest values over the square lie at corners.
+     * {@code zoom > 0} and two sums, and from y likewise. Each of these is monotonic in its
+     * input, and rounding to nearest keeps it monotonic, so each coordinate only grows (or only
+     * shrinks) as x grows, and as y grows: its smallest and largest values over the square lie at
+     * corners.
      */
     boolean aimAt(RayBundle bundle) {
         if (bundle.count() == 0) {

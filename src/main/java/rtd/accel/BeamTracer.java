@@ -75,9 +75,12 @@ final class BeamTracer {
     private boolean probing;
     /** Whether where each ray hits is asked for, not only the object ({@link HitBuffer#hitPointsRead}). */
     private boolean hitPointsRead;
-    /** The sphere (its place among the leaves' objects) that every ray of the square hits, found before any ray is made; else −1. */
+    /**
+     * The sphere (its place among the leaves' objects) that every ray of the square hits, found
+     * before any ray is made ({@link #coveredBySphere}); else −1.
+     */
     private int covering = -1;
-    /** The leaf of {@link #covering}, and its growth, to trace its rays there after all if another object is in reach. */
+    /** The leaf of {@link #covering} and its growth, where its rays are traced after all if another object is in reach. */
     private int coveringLeaf;
     private float coveringGrow;
     private RayBundle bundle;
@@ -144,8 +147,9 @@ final class BeamTracer {
      * Whether the beam of the bundle's parallel rays reaches no object, so that none of its rays
      * can hit anything: found by the walk alone, without making a ray, and then the rays count
      * as traced. False if some object is in reach, if the scene has objects without a box
-     * (which every ray meets), or if the rays are not the orthographic camera's. The bundle may be any rectangle
-     * of pixels, as the corners of any rectangle hold its origins ({@link Beam#aimAt}).
+     * (which every ray meets), or if the rays are not the orthographic camera's. The bundle may
+     * be any rectangle of pixels, as the corners of any rectangle hold its origins
+     * ({@link Beam#aimAt}).
      */
     boolean reachesNothing(RayBundle bundle) {
         if (bvh.unbounded.length > 0 || !(bundle.camera() instanceof OrthographicCamera) || !aim(bundle)) {
@@ -368,7 +372,10 @@ final class BeamTracer {
         return only;
     }
 
-    /** Each ray that could find a nearer hit in the leaf, whose objects the beam enters at {@code reach}, runs the paper's tests there. */
+    /**
+     * Each ray that could find a nearer hit in the leaf, whose objects the beam enters at
+     * {@code reach}, runs the paper's tests there.
+     */
     private void testRays(int leaf, float reach, float grow) {
         float farthest = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {

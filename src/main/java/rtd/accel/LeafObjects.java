@@ -120,8 +120,8 @@ final class LeafObjects {
     boolean missedByEvery(int i, float leastSquared, float[] lowest, float[] highest, float dx, float dy, float dz) {
         int at = offsets[i];
         return testOf[i] == PACKED_SPHERE && numbers[at + 3] >= leastSquared
-                && Sphere.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], numbers[at + 3], lowest, highest,
-                        dx, dy, dz);
+                && Sphere.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], numbers[at + 3], lowest,
+                        highest, dx, dy, dz);
     }
 
     /**

@@ -26,7 +26,7 @@ final class RendererWarmUp {
     private RendererWarmUp() {
     }
 
-    /** Renders {@link #SCENE} at 24 × 16 pixels on this thread; a failure here is left for the real run to meet and report. */
+    /** Renders {@link #SCENE} at 24 × 16 pixels on this thread; the run itself meets and reports any failure. */
     static void run() {
         try {
             Scene scene = SceneIO.parseScene("warm-up", SCENE);

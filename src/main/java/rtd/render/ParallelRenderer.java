@@ -148,7 +148,7 @@ public final class ParallelRenderer {
             renderRun(middle, right, top, bottom, pixels);
         }
 
-        /** The colours of {@code [left, right) × [top, bottom)}, row by row in {@code rgb}, into the picture's rows. */
+        /** The colours of {@code [left, right) × [top, bottom)}, row by row in {@code rgb}, into the picture. */
         private void copy(int[] rgb, int left, int top, int right, int bottom, int[] pixels) {
             for (int y = top; y < bottom; y++) {
                 System.arraycopy(rgb, (y - top) * (right - left), pixels, y * width + left, right - left);

@@ -87,8 +87,8 @@ class BeamTest {
                 assertThat(run.isMade()).as("the run's rays were made").isFalse();
                 assertThat(tracer.work().rays()).as("rays traced").isEqualTo(raysBefore + run.count());
                 for (int i = 0; i < run.count(); i++) {
-                    assertThat(scene.nearestHit(run.ray(i))).as("ray " + i + " of the run at (" + left + ", " + top + ")")
-                            .isNull();
+                    assertThat(scene.nearestHit(run.ray(i)))
+                            .as("ray " + i + " of the run at (" + left + ", " + top + ")").isNull();
                 }
             }
         }
