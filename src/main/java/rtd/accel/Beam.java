@@ -1,7 +1,6 @@
 package rtd.accel;
 
 import rtd.camera.OrthographicCamera;
-import rtd.math.Ray;
 import rtd.render.RayBundle;
 
 /**
@@ -38,6 +37,8 @@ final class Beam {
     float longest;
     private final float[] lowestDirection = new float[3];
     private final float[] highestDirection = new float[3];
+    /** A corner ray's numbers, origin then direction; kept so that aiming makes no garbage. */
+    private final float[] corner = new float[6];
 
     /**
      * Becomes the beam of the bundle's rays; false if an origin or direction is not finite (then
@@ -45,9 +46,9 @@ final class Beam {
      *
      * <p>For a square of the orthographic camera the four corner rays suffice, and the others
      * are not made. Why the corners hold every origin, even with rounding: in
-     * {@link OrthographicCamera#generateRay(int, int, int, int)} each coordinate of the origin
-     * is made from the pixel's x by a product, a quotient by {@code zoom > 0} and two sums, and
-     * from y likewise. Each of these is monotonic in its input, and rounding to nearest keeps it
+     * {@link OrthographicCamera#putRay} (the numbers of its {@code generateRay}, to the bit) each
+     * coordinate of the origin is made from the pixel's x by a product, a quotient by
+     * {@code zoom > 0} and two sums, and from y likewise. Each of these is monotonic in its input, and rounding to nearest keeps it
      * monotonic, so each coordinate only grows (or only shrinks) as x grows, and as y grows: its
      * smallest and largest values over the square lie at corners. Other cameras' rays are all
      * made and looked at.
@@ -58,9 +59,8 @@ final class Beam {
         }
         if (bundle.camera() instanceof OrthographicCamera) {
             for (int k = 0; k < 4; k++) {
-                Ray ray = bundle.corner(k);
-                add(k == 0, ray.origin().x(), ray.origin().y(), ray.origin().z(),
-                        ray.direction().x(), ray.direction().y(), ray.direction().z());
+                bundle.putCorner(k, corner);
+                add(k == 0, corner[0], corner[1], corner[2], corner[3], corner[4], corner[5]);
             }
         } else {
             bundle.make();

@@ -1,6 +1,8 @@
 package rtd.accel;
 
 import java.util.Arrays;
+import rtd.camera.OrthographicCamera;
+import rtd.geometry.Sphere;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.WorkCount;
@@ -30,6 +32,11 @@ import rtd.render.WorkCount;
  * million spheres and 11 % of a million-triangle mesh, the price of a call the JIT cannot bind to
  * one class in the innermost loop. At a leaf, each ray that enters the leaf's box no farther than its own
  * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}).
+ *
+ * <p>Two answers need no ray at all. A beam that reaches no object's box misses everywhere: a
+ * square, or a whole run of squares ({@link #reachesNothing}), is background. And when the
+ * shader reads only which object a ray hits (the paper's flat colours), a square inside the
+ * outline of the one sphere in its reach is that sphere throughout ({@link #coveredBySphere}).
  */
 final class BeamTracer {
 
@@ -60,6 +67,14 @@ final class BeamTracer {
     /** The shortest and longest |D| of the rays: the first bounds how far (in t) they reach, the second how far they run. */
     private float shortest;
     private float longest;
+    /** Whether the rays are parallel (their spread is 0): the checks against a sphere's outline assume it. */
+    private boolean parallel;
+    /**
+     * The squared radius from which a sphere's box leaves room for squares outside its outline
+     * worth telling ({@link #objectEntry}): eight times the beam's half diagonal. Smaller
+     * spheres, such as a million random ones, are not worth the check.
+     */
+    private float cornerWorthy;
     /** The exit of the grown box of the last {@link #grownEntry}. */
     private float exit;
     /** The rays of the square and their nearest hits; reused from square to square. */
@@ -69,6 +84,19 @@ final class BeamTracer {
     private int count;
     /** Whether the rays' hits are started; not before a leaf's objects are in reach, unless the scene has planes. */
     private boolean started;
+    /** Whether the walk only asks if the beam reaches any object ({@link #reachesNothing}), and makes no rays. */
+    private boolean probing;
+    /** Whether where each ray hits is asked for, not only the object ({@link HitBuffer#hitPointsRead}). */
+    private boolean hitPointsRead;
+    /**
+     * The sphere (its place among the leaves' objects) that every ray of the square hits, found
+     * before any ray is made ({@link #coveredBySphere}); else −1.
+     */
+    private int covering = -1;
+    /** The leaf of {@link #covering}, its growth and its t bound, where its rays are traced after all if another object is in reach. */
+    private int coveringLeaf;
+    private float coveringGrow;
+    private float coveringWithin;
     private RayBundle bundle;
     /** The farthest of the rays' {@link NearestHit#skipBeyond}: no box beyond it can matter. */
     private float farthestSkip;
@@ -101,11 +129,10 @@ final class BeamTracer {
         if (testsBefore.length < count) {
             testsBefore = new long[count];
         }
-        for (int i = 0; i < count; i++) {
-            testsBefore[i] = hits[i].testsRun();
-        }
         this.bundle = bundle;
         started = false;
+        hitPointsRead = out.hitPointsRead();
+        covering = -1;
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.unbounded.length > 0) {
             start();
@@ -114,6 +141,11 @@ final class BeamTracer {
             walk();
         }
         rays += count;
+        if (covering >= 0) {
+            out.setHits(bvh.leaves.fileOrder[covering], count); // inside the sphere's outline: no ray was needed
+            covering = -1;
+            return true;
+        }
         if (!started) {
             out.setMisses(count); // the beam reached no object: no ray was needed
             return true;
@@ -125,12 +157,39 @@ final class BeamTracer {
         return true;
     }
 
+    /**
+     * Whether the beam of the bundle's parallel rays reaches no object, so that none of its rays
+     * can hit anything: found by the walk alone, without making a ray, and then the rays count
+     * as traced. False if some object is in reach, if the scene has objects without a box
+     * (which every ray meets), or if the rays are not the orthographic camera's. The bundle may
+     * be any rectangle of pixels, as the corners of any rectangle hold its origins
+     * ({@link Beam#aimAt}).
+     */
+    boolean reachesNothing(RayBundle bundle) {
+        if (bvh.unbounded.length > 0 || !(bundle.camera() instanceof OrthographicCamera) || !aim(bundle)) {
+            return false; // other bundles are parallel seldom, and telling would make all their rays
+        }
+        started = false;
+        farthestSkip = Float.POSITIVE_INFINITY;
+        if (bvh.hasTree()) {
+            probing = true;
+            walk();
+            probing = false;
+        }
+        if (started) {
+            return false;
+        }
+        rays += bundle.count();
+        return true;
+    }
+
     /** Starts each ray's nearest hit, with the objects that have no box, which every ray meets. */
     private void start() {
         bundle.make();
         farthestSkip = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
             NearestHit hit = hits[i];
+            testsBefore[i] = hit.testsRun();
             hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
                     bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
             hit.testUnbounded();
@@ -184,6 +243,8 @@ final class BeamTracer {
         }
         shortest = beam.shortest;
         longest = beam.longest;
+        parallel = fan[0] == 0 && fan[1] == 0 && fan[2] == 0;
+        cornerWorthy = 64 * (half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
         return true;
     }
 
@@ -265,9 +326,80 @@ final class BeamTracer {
         if (!worthVisiting(reach)) {
             return;
         }
-        if (!started) {
-            start();
+        if (probing) { // an object in reach: that is the answer, and the walk ends here
+            started = true;
+            farthestSkip = Float.NEGATIVE_INFINITY;
+            return;
         }
+        if (!started) {
+            if (covering < 0 && !hitPointsRead && coveredBySphere(leaf, grow, within)) {
+                return;
+            }
+            start();
+            if (covering >= 0) { // another object in reach after all: the rays are traced, in the sphere's leaf too
+                int putOff = coveringLeaf;
+                covering = -1;
+                testRays(putOff, objectsEntry(putOff, coveringGrow, coveringWithin), coveringGrow);
+            }
+        }
+        testRays(leaf, reach, grow);
+    }
+
+    /**
+     * Whether the beam reaches only one object of the leaf, a sphere that every ray of the
+     * square surely hits ({@link Sphere#everyRayHitsBefore}): then no ray need be traced, as long
+     * as the walk meets no other object in reach before the sphere's hits. The walk goes on,
+     * skipping the boxes beyond them; if it meets another object in reach, the rays are traced
+     * after all, in the sphere's leaf too ({@link #testLeaf}).
+     */
+    private boolean coveredBySphere(int leaf, float grow, float within) {
+        if (!parallel) {
+            return false; // the outline's check is for parallel rays
+        }
+        int only = onlyObjectInReach(leaf, grow, within);
+        if (only < 0 || !(bvh.leaves.objects[only] instanceof Sphere sphere)) {
+            return false;
+        }
+        double before = sphere.everyRayHitsBefore(beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz);
+        if (!(before >= 0)) {
+            return false;
+        }
+        double origins = Math.sqrt(square(Math.abs(centre[0]) + half[0]) + square(Math.abs(centre[1]) + half[1])
+                + square(Math.abs(centre[2]) + half[2]));
+        covering = only;
+        coveringLeaf = leaf;
+        coveringGrow = grow;
+        coveringWithin = within;
+        // a ray's skip distance for a hit there (NearestHit.skipFor), generously: boxes beyond cannot hold a nearer hit
+        farthestSkip = (float) (before * (1 + 1e-4) + 1e-4 * origins / shortest);
+        return true;
+    }
+
+    private static double square(double x) {
+        return x * x;
+    }
+
+    /** The one object of the leaf whose box the beam reaches, or −1 if none or several do. */
+    private int onlyObjectInReach(int leaf, float grow, float within) {
+        int first = bvh.nodes[2 * leaf];
+        int end = first + bvh.nodes[2 * leaf + 1];
+        int only = -1;
+        for (int i = first; i < end; i++) {
+            if (worthVisiting(objectEntry(i, grow, within))) {
+                if (only >= 0) {
+                    return -1;
+                }
+                only = i;
+            }
+        }
+        return only;
+    }
+
+    /**
+     * Each ray that could find a nearer hit in the leaf, whose objects the beam enters at
+     * {@code reach}, runs the paper's tests there.
+     */
+    private void testRays(int leaf, float reach, float grow) {
         float farthest = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < count; i++) {
             NearestHit hit = hits[i];
@@ -288,9 +420,21 @@ final class BeamTracer {
         int end = first + bvh.nodes[2 * leaf + 1];
         float entry = MISS;
         for (int i = first; i < end; i++) {
-            entry = FastMath.min(entry, grownEntry(bvh.leaves.boxes, 6 * i, grow, within));
+            entry = FastMath.min(entry, objectEntry(i, grow, within));
         }
         return entry;
+    }
+
+    /**
+     * The beam's entry into the box of the leaves' object {@code i}, or {@link #MISS} if it
+     * reaches none, or if the object is a sphere that no ray of the square hits (a square in
+     * the corner of a sphere's box, outside its outline).
+     */
+    private float objectEntry(int i, float grow, float within) {
+        float entry = grownEntry(bvh.leaves.boxes, 6 * i, grow, within);
+        return entry < MISS && parallel
+                && bvh.leaves.missedByEvery(i, cornerWorthy, beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz)
+                ? MISS : entry;
     }
 
     /**

@@ -113,6 +113,12 @@ public final class BvhTracer implements Tracer {
         }
     }
 
+    /** A beam that reaches no object ({@link BeamTracer#reachesNothing}); rays that are not parallel cannot tell. */
+    @Override
+    public boolean traceIfAllMiss(RayBundle bundle) {
+        return beam.reachesNothing(bundle);
+    }
+
     @Override
     public WorkCount work() {
         WorkCount beams = beam.work();

@@ -5,10 +5,11 @@ import rtd.io.ImageFormat;
 import rtd.io.ImageWriting;
 
 /**
- * The one warm-up of {@code javax.imageio} per JVM ({@link ImageWriting#warmUp}), started as early
- * as possible: {@link Main} starts it for PNG before the command line is even parsed, so that it
- * runs on a spare core while picocli starts and the scene is read. The one piece of state that
- * outlives a call: the warm-up is per JVM, as what it loads is.
+ * The one warm-up of {@code javax.imageio} per JVM ({@link ImageWriting#warmUp}), and after it
+ * of the reader and the renderer ({@link RendererWarmUp}), started as early as possible:
+ * {@link Main} starts it for PNG before the command line is even parsed, so that it runs on a
+ * spare core while picocli starts and the scene is read. The one piece of state that outlives
+ * a call: the warm-up is per JVM, as what it loads is.
  */
 final class WriterWarmUp {
 
@@ -23,7 +24,7 @@ final class WriterWarmUp {
      */
     static synchronized CompletableFuture<Void> start(ImageFormat format) {
         if (started == null) {
-            started = ImageWriting.warmUp(format);
+            started = ImageWriting.warmUp(format, RendererWarmUp::run);
         }
         return started;
     }

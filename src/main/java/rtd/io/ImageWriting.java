@@ -39,6 +39,14 @@ public final class ImageWriting {
      * that two threads never load the same classes at once.
      */
     public static CompletableFuture<Void> warmUp(ImageFormat format) {
+        return warmUp(format, () -> { });
+    }
+
+    /**
+     * As {@link #warmUp(ImageFormat)}, and then runs {@code then} on the same thread, once the
+     * writer is ready: more of the caller's warming up, which the result does not wait for.
+     */
+    public static CompletableFuture<Void> warmUp(ImageFormat format, Runnable then) {
         CompletableFuture<Void> done = new CompletableFuture<>();
         Thread thread = new Thread(() -> {
             try {
@@ -47,7 +55,8 @@ public final class ImageWriting {
             } catch (IOException | RuntimeException | Error e) {
                 done.completeExceptionally(e); // the real write will meet it again, and say so
             }
-        }, "rtd-imageio-warm-up");
+            then.run();
+        }, "rtd-warm-up");
         thread.setDaemon(true);
         thread.start();
         return done;
@@ -85,7 +94,7 @@ public final class ImageWriting {
      */
     private static ImageWriteParam parameters(ImageWriter writer, ImageFormat format) {
         ImageWriteParam parameters = writer.getDefaultWriteParam();
-        if (format.equals(ImageFormat.PNG) && parameters.canWriteCompressed()) {
+        if (format.isPng() && parameters.canWriteCompressed()) {
             parameters.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
             parameters.setCompressionQuality(0.9f);
         }

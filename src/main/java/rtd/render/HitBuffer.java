@@ -21,6 +21,10 @@ public final class HitBuffer {
     private final int[] tests;
     /** Whether the last {@link #setMisses} has not been followed by a {@link #set}: every ray missed. */
     private boolean missedAll;
+    /** The object of the last {@link #setHits}, if no {@link #set} has followed; else −1. */
+    private int everyRayHits = -1;
+    /** Whether the reader reads the hits' t and distance ({@link #readHitPoints}); yes unless told otherwise. */
+    private boolean hitPointsRead = true;
 
     /** Room for {@code capacity} hits. */
     public HitBuffer(int capacity) {
@@ -40,9 +44,24 @@ public final class HitBuffer {
         return tests[i];
     }
 
+    /**
+     * Says whether whoever reads these hits (a shader) reads where each ray hits, its t and
+     * distance. If not, a tracer may answer for a whole bundle at once ({@link #setHits})
+     * without finding them: the paper's flat colours need only the object.
+     */
+    public void readHitPoints(boolean read) {
+        this.hitPointsRead = read;
+    }
+
+    /** Whether the hits' t and distance are read ({@link #readHitPoints}). */
+    public boolean hitPointsRead() {
+        return hitPointsRead;
+    }
+
     /** Ray {@code i} hits object {@code object} (its place in the scene) at {@code t}, at {@code distance} from its origin. */
     public void set(int i, int object, float t, float distance) {
         missedAll = false;
+        everyRayHits = -1;
         this.index[i] = object;
         this.t[i] = t;
         this.distance[i] = distance;
@@ -65,6 +84,7 @@ public final class HitBuffer {
     /** Rays 0 to {@code count − 1} hit nothing, and took no intersection test. */
     public void setMisses(int count) {
         missedAll = true;
+        everyRayHits = -1;
         Arrays.fill(tests, 0, count, 0);
         Arrays.fill(index, 0, count, -1);
         Arrays.fill(t, 0, count, Float.NaN);
@@ -78,6 +98,31 @@ public final class HitBuffer {
      */
     public boolean missedAll() {
         return missedAll;
+    }
+
+    /**
+     * Rays 0 to {@code count − 1} all hit object {@code object} (its place in the scene), as a
+     * tracer can tell at once, without tests of its own: only for a buffer whose hit points
+     * are not read ({@link #readHitPoints}). Their t and distance are not known (NaN).
+     */
+    public void setHits(int object, int count) {
+        if (hitPointsRead) {
+            throw new IllegalStateException("the hits' t and distance are read, so each ray must be traced");
+        }
+        missedAll = false;
+        everyRayHits = object;
+        Arrays.fill(tests, 0, count, 0);
+        Arrays.fill(index, 0, count, object);
+        Arrays.fill(t, 0, count, Float.NaN);
+        Arrays.fill(distance, 0, count, Float.NaN);
+    }
+
+    /**
+     * The object every ray of the bundle hits, as a tracer said at once for all of them
+     * ({@link #setHits}); −1 if it did not say so. A shader may then colour the whole bundle at once.
+     */
+    public int everyRayHits() {
+        return everyRayHits;
     }
 
     /** The place of the object ray {@code i} hits among the scene's objects, or −1. */

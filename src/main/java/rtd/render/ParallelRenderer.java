@@ -29,6 +29,8 @@ public final class ParallelRenderer {
 
     /** The side of the squares of pixels handed to {@link Tracer#traceAll} together. */
     static final int TILE = 8;
+    /** How many squares side by side the renderer asks about at once first ({@link Tracer#traceIfAllMiss}). */
+    static final int RUN = 64;
 
     private ParallelRenderer() {
     }
@@ -85,18 +87,17 @@ public final class ParallelRenderer {
             }
             int top = band * TILE;
             int bottom = Math.min(height, top + TILE);
-            for (int left = 0; left < width; left += TILE) {
-                int right = Math.min(width, left + TILE);
-                int[] rgb = square.render(left, top, right, bottom);
-                for (int y = top; y < bottom; y++) { // the square's rows, into the picture's
-                    System.arraycopy(rgb, (y - top) * (right - left), pixels, y * width + left, right - left);
-                }
+            for (int left = 0; left < width; left += RUN * TILE) {
+                square.renderRun(left, Math.min(width, left + RUN * TILE), top, bottom, pixels);
             }
             progress.rowsDone(bottom - top);
         }
     }
 
-    /** One thread's means to render a square of pixels: its tracer, its shader, and room for the rays, hits and colours. */
+    /**
+     * One thread's means to render squares of pixels, and runs of them: its tracer, its shader,
+     * and room for the rays, hits and colours of a run.
+     */
     private static final class Square {
         private final ICamera camera;
         private final Tracer tracer;
@@ -104,9 +105,9 @@ public final class ParallelRenderer {
         private final int width;
         private final int height;
         private final int samples;
-        private final RayBundle rays = new RayBundle(TILE * TILE);
-        private final HitBuffer hits = new HitBuffer(TILE * TILE);
-        private final int[] rgb = new int[TILE * TILE];
+        private final RayBundle rays = new RayBundle(RUN * TILE * TILE);
+        private final HitBuffer hits = new HitBuffer(RUN * TILE * TILE);
+        private final int[] rgb = new int[RUN * TILE * TILE];
         private final float[] sum = new float[3 * TILE * TILE];
 
         Square(ICamera camera, Tracer tracer, Shader shader, int width, int height, int samples) {
@@ -116,10 +117,46 @@ public final class ParallelRenderer {
             this.width = width;
             this.height = height;
             this.samples = samples;
+            hits.readHitPoints(shader.readsHitPoints());
         }
 
-        /** The colours of the pixels {@code [left, right) × [top, bottom)}, row by row. */
-        int[] render(int left, int top, int right, int bottom) {
+        /**
+         * The pixels {@code [left, right) × [top, bottom)} of a band into {@code pixels}: all at
+         * once if the tracer can tell that none of their rays hits anything, else each half in
+         * the same way, down to the squares. Most of the paper's picture is sky, which a few
+         * questions about long runs settle, instead of one for each square. A run's rays would
+         * each miss in their squares too, so the picture is the same.
+         */
+        void renderRun(int left, int right, int top, int bottom, int[] pixels) {
+            if (right - left <= TILE || samples > 1) {
+                for (int x = left; x < right; x += TILE) {
+                    int end = Math.min(right, x + TILE);
+                    copy(render(x, top, end, bottom), x, top, end, bottom, pixels);
+                }
+                return;
+            }
+            rays.fill(camera, left, top, right, bottom, width, height);
+            if (tracer.traceIfAllMiss(rays)) {
+                hits.setMisses(rays.count());
+                shader.rgbAll(rays, hits, rays.count(), rgb);
+                copy(rgb, left, top, right, bottom, pixels);
+                return;
+            }
+            int squares = (right - left + TILE - 1) / TILE;
+            int middle = left + squares / 2 * TILE; // halves of whole squares: the same squares as one by one
+            renderRun(left, middle, top, bottom, pixels);
+            renderRun(middle, right, top, bottom, pixels);
+        }
+
+        /** The colours of {@code [left, right) × [top, bottom)}, row by row in {@code rgb}, into the picture. */
+        private void copy(int[] rgb, int left, int top, int right, int bottom, int[] pixels) {
+            for (int y = top; y < bottom; y++) {
+                System.arraycopy(rgb, (y - top) * (right - left), pixels, y * width + left, right - left);
+            }
+        }
+
+        /** The colours of the pixels {@code [left, right) × [top, bottom)} of a square, row by row. */
+        private int[] render(int left, int top, int right, int bottom) {
             if (samples == 1) {
                 rays.fill(camera, left, top, right, bottom, width, height);
                 tracer.traceAll(rays, hits);

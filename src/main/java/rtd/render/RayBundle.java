@@ -114,13 +114,14 @@ public final class RayBundle {
     }
 
     /**
-     * The ray of the square's corner {@code k}: 0 top left, 1 top right, 2 bottom left, 3 bottom
-     * right; only for a square of a camera.
+     * The six numbers (origin, then direction) of the ray of the square's corner {@code k}, into
+     * {@code into}: 0 top left, 1 top right, 2 bottom left, 3 bottom right; only for a square
+     * of a camera. They are the numbers {@link #make} gives that ray, and make no object.
      */
-    public Ray corner(int k) {
+    public void putCorner(int k, float[] into) {
         int x = k % 2 == 0 ? left : right - 1;
         int y = k < 2 ? top : bottom - 1;
-        return rayOf(x, y);
+        camera.putRay(x + sampleX, y + sampleY, width, height, into, 0);
     }
 
     /** The camera's ray of pixel (x, y): through its corner, as Listing 4.1, or through the sample's point. */

@@ -23,12 +23,22 @@ public interface Shader {
 
     /**
      * {@link #rgb} of rays {@code 0} to {@code count − 1}, into {@code rgb}. A shader may colour
-     * a bundle whose rays all missed ({@link HitBuffer#missedAll}) at once.
+     * a bundle whose rays all missed ({@link HitBuffer#missedAll}), or all hit one object
+     * ({@link HitBuffer#everyRayHits}), at once.
      */
     default void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
         for (int i = 0; i < count; i++) {
             rgb[i] = rgb(rays, hits, i);
         }
+    }
+
+    /**
+     * Whether this shader reads where each ray hits, the t and distance of its hit; if not, the
+     * tracer need not find them where it can tell the object at once
+     * ({@link HitBuffer#readHitPoints}). Yes by default.
+     */
+    default boolean readsHitPoints() {
+        return true;
     }
 
     /** The rays this shader followed beyond the camera's, by kind ("shadow", "reflected", ...); none by default. */

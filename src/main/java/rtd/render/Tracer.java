@@ -31,6 +31,17 @@ public interface Tracer {
     }
 
     /**
+     * Whether the tracer can tell at once, without following them one by one, that none of the
+     * bundle's rays hits anything: then they count as traced, with no intersection test, and
+     * the answer is true. False, with nothing traced, if some ray may hit or if the tracer
+     * cannot tell; by default it cannot. The bundle may be larger than a square:
+     * {@link ParallelRenderer} asks this of a run of squares before it traces them.
+     */
+    default boolean traceIfAllMiss(RayBundle rays) {
+        return false;
+    }
+
+    /**
      * The intersection tests this tracer has run so far: {@link #work}'s, which a tracer may
      * count faster ({@code --view cost} asks before and after every ray).
      */

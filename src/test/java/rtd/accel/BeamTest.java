@@ -97,6 +97,63 @@ class BeamTest {
     }
 
     @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {31, 32, 33, 34})
+    void aRunOfSquaresIsTracedAtOnceOnlyIfEveryOneOfItsRaysMisses(long seed) {
+        Scene scene = RandomScenes.generate(seed, 12);
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        int width = 320;
+        int height = 240;
+        int atOnce = 0;
+        int notAtOnce = 0;
+        for (int top = 0; top < height; top += 8) {
+            for (int left = 0; left < width; left += 64) {
+                RayBundle run = new RayBundle(64 * 8);
+                run.fill(scene.camera(), left, top, left + 64, top + 8, width, height);
+                long raysBefore = tracer.work().rays();
+                if (!tracer.traceIfAllMiss(run)) {
+                    notAtOnce++;
+                    assertThat(tracer.work().rays()).as("rays traced").isEqualTo(raysBefore);
+                    continue;
+                }
+                atOnce++;
+                assertThat(run.isMade()).as("the run's rays were made").isFalse();
+                assertThat(tracer.work().rays()).as("rays traced").isEqualTo(raysBefore + run.count());
+                for (int i = 0; i < run.count(); i++) {
+                    assertThat(scene.nearestHit(run.ray(i)))
+                            .as("ray " + i + " of the run at (" + left + ", " + top + ")").isNull();
+                }
+            }
+        }
+        assertThat(atOnce).as("runs traced at once").isPositive();
+        assertThat(notAtOnce).as("runs that reach an object").isPositive();
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {41, 42, 43, 44, 45, 46})
+    void aSquareInsideASpheresOutlineTakesTheSphereForEveryRayAsThePapersLoopDoes(long seed) {
+        Scene scene = RandomScenes.generate(seed, 25);
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        HitBuffer hits = new HitBuffer(64);
+        hits.readHitPoints(false);
+        int atOnce = 0;
+        for (int top = 0; top < 240; top += 8) {
+            for (int left = 0; left < 320; left += 8) {
+                RayBundle rays = square(scene.camera(), left, top, 320, 240);
+                tracer.traceAll(rays, hits);
+                if (hits.everyRayHits() >= 0) {
+                    atOnce++;
+                }
+                for (int i = 0; i < rays.count(); i++) {
+                    Hit expected = scene.nearestHit(rays.ray(i));
+                    assertThat(hits.index(i)).as("ray " + i + " of the square at (" + left + ", " + top + ")")
+                            .isEqualTo(expected == null ? -1 : expected.index());
+                }
+            }
+        }
+        assertThat(atOnce).as("squares taken at once").isPositive();
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {11, 12})
     void raysOfDifferentDirectionsAreTracedOneByOne(long seed) {
         Scene scene = RandomScenes.generate(seed, 500);
