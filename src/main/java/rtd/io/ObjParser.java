@@ -56,13 +56,8 @@ final class ObjParser {
         }
         float[] vertices = new float[3 * firstVertices[parts]];
         float[] normals = new float[3 * firstNormals[parts]];
-        IntFunction<ObjPart> readPart = k -> new ObjReader(source, cuts[k], cuts[k + 1], firstLines[k], firstVertices[k],
-                firstNormals[k], vertices, normals, expectedTriangles(scans[k])).readAll();
-        // The first part alone and first: while it is read the JIT compiles the reader, which the
-        // other parts then share; two threads starting cold on the same code cost more CPU.
-        List<ObjPart> read = new ArrayList<>();
-        read.add(readPart.apply(0));
-        read.addAll(inParallel(parts - 1, k -> readPart.apply(k + 1)).toList());
+        List<ObjPart> read = inParallel(parts, k -> new ObjReader(source, cuts[k], cuts[k + 1], firstLines[k], firstVertices[k],
+                firstNormals[k], vertices, normals, expectedTriangles(scans[k])).readAll()).toList();
         return join(read, vertices, normals);
     }
 
