@@ -23,7 +23,7 @@ import java.util.stream.Stream;
 final class ObjParser {
 
     /** The size of the parts a large file is cut into: big enough to be worth a task. */
-    private static final int PART_SIZE = 4 << 20;
+    private static final int PART_SIZE = 32 << 20;
 
     private ObjParser() {
     }
