@@ -44,17 +44,27 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];
         Vector3f[] normalVectors = normalVectors();
-        IntStream blocks = IntStream.range(0, (count + BLOCK - 1) / BLOCK);
-        (count >= PARALLEL_FROM ? blocks.parallel() : blocks).forEach(b -> {
-            int first = b * BLOCK;
-            int end = Math.min(count, first + BLOCK);
-            float[] numbers = new float[Triangle.NUMBERS * (end - first)]; // the block's triangles' numbers, in one array
-            for (int t = first; t < end; t++) {
-                triangles[t] = triangle(t, shift, scale, colour, material, numbers, Triangle.NUMBERS * (t - first),
-                        normalVectors);
+        int blocks = (count + BLOCK - 1) / BLOCK;
+        if (count < PARALLEL_FROM) {
+            for (int b = 0; b < blocks; b++) { // a plain loop: a small mesh is placed before a stream would start
+                placeBlock(b, triangles, shift, scale, colour, material, normalVectors);
             }
-        });
+        } else {
+            IntStream.range(0, blocks).parallel().forEach(b -> placeBlock(b, triangles, shift, scale, colour, material,
+                    normalVectors));
+        }
         return Arrays.asList(triangles);
+    }
+
+    /** Makes the triangles of block {@code b} into {@code triangles}, their numbers in one new array. */
+    private void placeBlock(int b, IGeometry[] triangles, Vector3f shift, float scale, Color colour, Material material,
+            Vector3f[] normalVectors) {
+        int first = b * BLOCK;
+        int end = Math.min(count, first + BLOCK);
+        float[] numbers = new float[Triangle.NUMBERS * (end - first)];
+        for (int t = first; t < end; t++) {
+            triangles[t] = triangle(t, shift, scale, colour, material, numbers, Triangle.NUMBERS * (t - first), normalVectors);
+        }
     }
 
     /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */
