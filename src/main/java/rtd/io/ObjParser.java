@@ -5,7 +5,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.function.IntFunction;
 import java.util.stream.IntStream;
-import java.util.stream.Stream;
 
 /**
  * Reads a Wavefront OBJ file, as a {@code mesh} statement names it, into an {@link ObjMesh}, or
@@ -63,7 +62,7 @@ final class ObjParser {
         float[] vertices = new float[3 * firstVertices[parts]];
         float[] normals = new float[3 * firstNormals[parts]];
         List<ObjPart> read = inParallel(parts, k -> new ObjReader(source, cuts[k], cuts[k + 1], firstLines[k], firstVertices[k],
-                firstNormals[k], vertices, normals, expectedTriangles(scans[k])).readAll()).toList();
+                firstNormals[k], vertices, normals, expectedTriangles(scans[k])).readAll());
         return join(read, vertices, normals);
     }
 
@@ -78,11 +77,10 @@ final class ObjParser {
 
     /**
      * {@code task} for each part, in order: in parallel if there are several, on the calling
-     * thread alone for one, where starting a parallel stream would take longer than the part.
+     * thread alone for one, with no stream: starting one would take longer than a small file.
      */
-    private static <T> Stream<T> inParallel(int parts, IntFunction<T> task) {
-        IntStream indices = IntStream.range(0, parts);
-        return (parts > 1 ? indices.parallel() : indices).mapToObj(task);
+    private static <T> List<T> inParallel(int parts, IntFunction<T> task) {
+        return parts == 1 ? List.of(task.apply(0)) : IntStream.range(0, parts).parallel().mapToObj(task).toList();
     }
 
     /** The parts' triangles one after the other, or their mistakes. */
