@@ -1,5 +1,6 @@
 package rtd.geometry;
 
+import java.util.Arrays;
 import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
@@ -44,6 +45,8 @@ public final class Triangle implements IGeometry {
      * edges' lengths summed over the axes.
      */
     private final float[] v;
+    /** Where this triangle's numbers start in {@link #v}: 0, or its place in its mesh's one array. */
+    private final int at;
     private final Vector3f[] cornerNormals; // null for a flat triangle
     private final Color color;
     private final Material material;
@@ -58,19 +61,64 @@ public final class Triangle implements IGeometry {
      * any length) by the point's barycentric weights; {@code null} for a flat triangle.
      */
     public Triangle(Vector3f p1, Vector3f p2, Vector3f p3, Vector3f[] cornerNormals, Color color, Material material) {
-        Vector3f n = p2.subtract(p1).cross(p3.subtract(p1));
-        Vector3f in1 = n.cross(p2.subtract(p1));
-        Vector3f in2 = n.cross(p3.subtract(p2));
-        Vector3f in3 = n.cross(p1.subtract(p3));
-        float tolerance = tolerance(p1, p2, p3);
-        float nSum = Math.abs(n.x()) + Math.abs(n.y()) + Math.abs(n.z());
-        float size = sum(p2.subtract(p1)) + sum(p3.subtract(p2)) + sum(p1.subtract(p3));
-        this.v = new float[] {p1.x(), p1.y(), p1.z(), p2.x(), p2.y(), p2.z(), p3.x(), p3.y(), p3.z(),
-            n.x(), n.y(), n.z(), in1.x(), in1.y(), in1.z(), in2.x(), in2.y(), in2.z(), in3.x(), in3.y(), in3.z(),
-            in1.magnitude(), in2.magnitude(), in3.magnitude(), tolerance, nSum, size};
+        this(numbersOf(p1, p2, p3), 0, cornerNormals, color, material);
+    }
+
+    /**
+     * The triangle whose test numbers {@link #putNumbers} wrote into {@code numbers} from
+     * {@code at}, with {@code cornerNormals} as above. A mesh of a million triangles keeps
+     * their numbers in a few hundred arrays, shared by thousands of triangles each: the collector
+     * copies a few hundred arrays while the mesh is read, instead of a million small ones.
+     */
+    public Triangle(float[] numbers, int at, Vector3f[] cornerNormals, Color color, Material material) {
+        this.v = numbers;
+        this.at = at;
         this.cornerNormals = cornerNormals == null ? null : cornerNormals.clone();
         this.color = color;
         this.material = material;
+    }
+
+    private static float[] numbersOf(Vector3f p1, Vector3f p2, Vector3f p3) {
+        float[] numbers = new float[NUMBERS];
+        putNumbers(p1, p2, p3, numbers, 0);
+        return numbers;
+    }
+
+    /**
+     * Writes the {@value #NUMBERS} numbers of the triangle with corners p1, p2, p3 into
+     * {@code into} from {@code at}: the corners, the normal n, the per-edge vectors and their
+     * lengths, the tolerance, and the sums (see {@link #v}).
+     */
+    public static void putNumbers(Vector3f p1, Vector3f p2, Vector3f p3, float[] into, int at) {
+        Vector3f edge1 = p2.subtract(p1); // each difference once: a mesh makes a million triangles
+        Vector3f edge2 = p3.subtract(p2);
+        Vector3f edge3 = p1.subtract(p3);
+        Vector3f n = edge1.cross(p3.subtract(p1));
+        Vector3f in1 = n.cross(edge1);
+        Vector3f in2 = n.cross(edge2);
+        Vector3f in3 = n.cross(edge3);
+        float tolerance = tolerance(thinness(edge1, edge2, edge3, n));
+        float nSum = Math.abs(n.x()) + Math.abs(n.y()) + Math.abs(n.z());
+        float size = sum(edge1) + sum(edge2) + sum(edge3);
+        put(p1, into, at + CORNERS);
+        put(p2, into, at + CORNERS + 3);
+        put(p3, into, at + CORNERS + 6);
+        put(n, into, at + NORMAL);
+        put(in1, into, at + INWARD);
+        put(in2, into, at + INWARD + 3);
+        put(in3, into, at + INWARD + 6);
+        into[at + INWARD_LENGTH] = in1.magnitude();
+        into[at + INWARD_LENGTH + 1] = in2.magnitude();
+        into[at + INWARD_LENGTH + 2] = in3.magnitude();
+        into[at + TOLERANCE] = tolerance;
+        into[at + NORMAL_SUM] = nSum;
+        into[at + SIZE] = size;
+    }
+
+    private static void put(Vector3f p, float[] into, int at) {
+        into[at] = p.x();
+        into[at + 1] = p.y();
+        into[at + 2] = p.z();
     }
 
     /** Corner {@code i} (0, 1 or 2). */
@@ -93,10 +141,15 @@ public final class Triangle implements IGeometry {
      * about 1 for a well-shaped triangle, large for a needle.
      */
     private static double thinness(Vector3f p1, Vector3f p2, Vector3f p3) {
-        double e1 = p2.subtract(p1).magnitude();
-        double e2 = p3.subtract(p2).magnitude();
-        double e3 = p1.subtract(p3).magnitude();
-        double n = p2.subtract(p1).cross(p3.subtract(p1)).magnitude();
+        return thinness(p2.subtract(p1), p3.subtract(p2), p1.subtract(p3), p2.subtract(p1).cross(p3.subtract(p1)));
+    }
+
+    /** {@link #thinness(Vector3f, Vector3f, Vector3f)} from the edges p1 → p2 → p3 → p1 and the normal. */
+    private static double thinness(Vector3f edge1, Vector3f edge2, Vector3f edge3, Vector3f normal) {
+        double e1 = edge1.magnitude();
+        double e2 = edge2.magnitude();
+        double e3 = edge3.magnitude();
+        double n = normal.magnitude();
         double longest = Math.max(e1 * e2, Math.max(e2 * e3, e3 * e1));
         return n > 0 ? Math.max(1, longest / n) : 1; // never hit if n = 0
     }
@@ -107,14 +160,13 @@ public final class Triangle implements IGeometry {
      * own rounding is too coarse to hold its edges together anyway, and which an allowance
      * would lengthen.
      */
-    private static float tolerance(Vector3f p1, Vector3f p2, Vector3f p3) {
-        double thinness = thinness(p1, p2, p3);
+    private static float tolerance(double thinness) {
         return thinness <= 128 ? 16 * U * (float) thinness : 0;
     }
 
     /** The {@value #NUMBERS} numbers the test uses, in order, for a packed copy of the test (the BVH's). */
     public float[] testNumbers() {
-        return v.clone();
+        return Arrays.copyOfRange(v, at, at + NUMBERS);
     }
 
     /**
@@ -122,7 +174,7 @@ public final class Triangle implements IGeometry {
      * {@code at}: the BVH packs a million triangles this way without a copy of each in between.
      */
     public void putTestNumbers(float[] into, int at) {
-        System.arraycopy(v, 0, into, at, NUMBERS);
+        System.arraycopy(v, this.at, into, at, NUMBERS);
     }
 
     /** The normal given for corner {@code i} (0, 1 or 2) of a smooth triangle, or {@code null} for a flat one. */
@@ -135,8 +187,8 @@ public final class Triangle implements IGeometry {
         return cornerNormals != null;
     }
 
-    private Vector3f vector(int at) {
-        return new Vector3f(v[at], v[at + 1], v[at + 2]);
+    private Vector3f vector(int offset) {
+        return new Vector3f(v[at + offset], v[at + offset + 1], v[at + offset + 2]);
     }
 
     /**
@@ -148,7 +200,7 @@ public final class Triangle implements IGeometry {
     public Intersection intersect(Ray ray) {
         Vector3f o = ray.origin();
         Vector3f d = ray.direction();
-        return Intersection.at(ray, hit(v, 0, o.x(), o.y(), o.z(), d.x(), d.y(), d.z()));
+        return Intersection.at(ray, hit(v, at, o.x(), o.y(), o.z(), d.x(), d.y(), d.z()));
     }
 
     /**
@@ -238,9 +290,9 @@ public final class Triangle implements IGeometry {
         if (cornerNormals == null) {
             return planeNormal().normalize();
         }
-        float w1 = side(v, 0, 1, point.x(), point.y(), point.z()); // the edge p2 → p3, opposite p1
-        float w2 = side(v, 0, 2, point.x(), point.y(), point.z());
-        float w3 = side(v, 0, 0, point.x(), point.y(), point.z());
+        float w1 = side(v, at, 1, point.x(), point.y(), point.z()); // the edge p2 → p3, opposite p1
+        float w2 = side(v, at, 2, point.x(), point.y(), point.z());
+        float w3 = side(v, at, 0, point.x(), point.y(), point.z());
         float sum = w1 + w2 + w3;
         Vector3f blend = cornerNormals[0].multiply(w1 / sum).add(cornerNormals[1].multiply(w2 / sum))
                 .add(cornerNormals[2].multiply(w3 / sum));
@@ -264,7 +316,7 @@ public final class Triangle implements IGeometry {
     /** {@link #bounds}, the same numbers, written without making a box. */
     @Override
     public void putBounds(float[] into, int at) {
-        BoundingBox.around(margin(corner(0), corner(1), corner(2)), v, CORNERS, 3, into, at);
+        BoundingBox.around(margin(corner(0), corner(1), corner(2)), v, this.at + CORNERS, 3, into, at);
     }
 
     /** How far {@link #bounds} grows the corners' box on every side. */
@@ -274,7 +326,7 @@ public final class Triangle implements IGeometry {
         double largest = Math.max(maxAbs(p1), Math.max(maxAbs(p2), maxAbs(p3)));
         // a needle's box may become infinite: then every ray tests it, as the paper's loop does
         double sides = 32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * thinness(p1, p2, p3)
-                + 2 * v[TOLERANCE] * v[SIZE];
+                + 2 * v[at + TOLERANCE] * v[at + SIZE];
         return sides + 64 * BoundingBox.UNIT_ROUNDOFF * (largest + e1 + e2);
     }
 

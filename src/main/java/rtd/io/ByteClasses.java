@@ -46,6 +46,24 @@ final class ByteClasses {
     }
 
     /**
+     * Whether an OBJ file's word (a keyword, a number, a face's corner) ends at {@code bytes[i]}:
+     * at a blank, a {@code #} (a comment), the end of the line or of the file.
+     */
+    static boolean endsObjWord(byte[] bytes, int i) {
+        return i >= bytes.length || OBJ_WORD_ENDS[bytes[i] & 0xFF];
+    }
+
+    /** {@link #endsObjWord} for each byte value: one look-up for each byte of every number of an OBJ file. */
+    private static final boolean[] OBJ_WORD_ENDS = new boolean[256];
+
+    static {
+        for (int value = 0; value < 256; value++) {
+            byte b = (byte) value;
+            OBJ_WORD_ENDS[value] = b == '\n' || b == '#' || isBlank(b);
+        }
+    }
+
+    /**
      * Whether a line ends just after {@code bytes[i]}: a line feed, or a carriage return not
      * followed by a line feed (a CR LF pair is one line break, which ends after its LF).
      */

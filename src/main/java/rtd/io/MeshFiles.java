@@ -46,7 +46,7 @@ final class MeshFiles {
         }
         try {
             try (SourceText obj = new SourceText(shown, bytes)) {
-                return ObjReader.read(obj);
+                return ObjParser.parse(obj);
             }
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();

@@ -1,7 +1,8 @@
 package rtd.io;
 
-import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.stream.IntStream;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
@@ -9,10 +10,11 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The triangles of a Wavefront OBJ file as {@link ObjReader} read them: the vertices and normals,
+ * The triangles of a Wavefront OBJ file as {@link ObjParser} read them: the vertices and normals,
  * and for each triangle, in face order, the index of each corner's vertex and normal. A
  * {@code mesh} statement (Part II of the spec) places them in the scene with
- * {@link #triangles}. The arrays are the reader's own and are never changed.
+ * {@link #triangles}. The arrays are the reader's own and are never changed; those of the
+ * triangles may be longer than {@code 3 * count}.
  *
  * @param vertices      x, y, z of each vertex
  * @param normals       x, y, z of each normal
@@ -22,26 +24,60 @@ import rtd.math.Vector3f;
  */
 record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNormals, int count) {
 
+    /** Meshes of fewer triangles are placed on the calling thread: starting tasks would take longer. */
+    private static final int PARALLEL_FROM = 1 << 15;
+    /**
+     * How many triangles share one array of numbers (see {@link Triangle}): 442 KiB of them,
+     * under half of G1's smallest region (1 MiB). A larger array would be "humongous": put
+     * straight into the old generation, where a few of them, large against a heap that has
+     * not grown yet, start a concurrent mark of the whole heap (measured: 0.3 to 0.5 s of CPU
+     * for a million triangles).
+     */
+    private static final int BLOCK = 1 << 12;
+
     /**
      * The triangles, in order, each corner p moved to {@code scale·p + shift}. A triangle whose
      * every corner named a normal is smooth, with those normals as written: a scale above 0
-     * does not turn them.
+     * does not turn them. A large mesh is placed in blocks on all cores; each triangle is the
+     * same whichever thread makes it.
      */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
-        List<IGeometry> triangles = new ArrayList<>(count);
-        for (int t = 0; t < count; t++) {
-            Vector3f p1 = corner(corners[3 * t], shift, scale);
-            Vector3f p2 = corner(corners[3 * t + 1], shift, scale);
-            Vector3f p3 = corner(corners[3 * t + 2], shift, scale);
-            if (cornerNormals[3 * t] < 0) {
-                triangles.add(new Triangle(p1, p2, p3, colour, material));
-            } else {
-                Vector3f[] normalsOfCorners = {normal(cornerNormals[3 * t]), normal(cornerNormals[3 * t + 1]),
-                    normal(cornerNormals[3 * t + 2])};
-                triangles.add(new Triangle(p1, p2, p3, normalsOfCorners, colour, material));
+        IGeometry[] triangles = new IGeometry[count];
+        Vector3f[] normalVectors = normalVectors();
+        int blocks = (count + BLOCK - 1) / BLOCK;
+        if (count < PARALLEL_FROM) {
+            for (int b = 0; b < blocks; b++) { // a plain loop: a small mesh is placed before a stream would start
+                placeBlock(b, triangles, shift, scale, colour, material, normalVectors);
             }
+        } else {
+            IntStream.range(0, blocks).parallel().forEach(b -> placeBlock(b, triangles, shift, scale, colour, material,
+                    normalVectors));
         }
-        return triangles;
+        return Arrays.asList(triangles);
+    }
+
+    /** Makes the triangles of block {@code b} into {@code triangles}, their numbers in one new array. */
+    private void placeBlock(int b, IGeometry[] triangles, Vector3f shift, float scale, Color colour, Material material,
+            Vector3f[] normalVectors) {
+        int first = b * BLOCK;
+        int end = Math.min(count, first + BLOCK);
+        float[] numbers = new float[Triangle.NUMBERS * (end - first)];
+        for (int t = first; t < end; t++) {
+            triangles[t] = triangle(t, shift, scale, colour, material, numbers, Triangle.NUMBERS * (t - first), normalVectors);
+        }
+    }
+
+    /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */
+    private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
+            Vector3f[] normalVectors) {
+        Triangle.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
+                corner(corners[3 * t + 2], shift, scale), numbers, at);
+        if (cornerNormals[3 * t] < 0) {
+            return new Triangle(numbers, at, null, colour, material);
+        }
+        Vector3f[] normalsOfCorners = {normalVectors[cornerNormals[3 * t]], normalVectors[cornerNormals[3 * t + 1]],
+            normalVectors[cornerNormals[3 * t + 2]]};
+        return new Triangle(numbers, at, normalsOfCorners, colour, material);
     }
 
     private Vector3f corner(int vertex, Vector3f shift, float scale) {
@@ -49,7 +85,12 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                 scale * vertices[3 * vertex + 2] + shift.z());
     }
 
-    private Vector3f normal(int index) {
-        return new Vector3f(normals[3 * index], normals[3 * index + 1], normals[3 * index + 2]);
+    /** Each normal as a vector, made once and shared by the corners that name it. */
+    private Vector3f[] normalVectors() {
+        Vector3f[] vectors = new Vector3f[normals.length / 3];
+        for (int i = 0; i < vectors.length; i++) {
+            vectors[i] = new Vector3f(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+        }
+        return vectors;
     }
 }

@@ -17,24 +17,32 @@ import java.util.List;
  * <p>It works on the file's bytes, like the scene reader, since a model may have millions of
  * faces. Each mistake is located in the OBJ file, as in a scene file, and reading goes on with
  * the next line.
+ *
+ * <p>One reader reads one stretch of whole lines ({@link ObjParser} reads the parts of a large
+ * file in parallel): it knows from an {@link ObjScan} of the parts before it how many lines,
+ * vertices and normals come before its first line, so that it numbers its lines and vertices as
+ * reading the file in one go would. It writes its vertices and normals into the mesh's arrays,
+ * at their places in the file, and keeps its faces' triangles in its own {@link ObjPart}.
  */
 final class ObjReader {
 
     private static final String CORNER_FORMS = "a corner is written 3, 3/1, 3//2 or 3/1/2";
 
     private final SourceText source;
-    /** The source's bytes, until the file is read (see {@link SourceText#close}). */
+    /** The source's bytes, until the part is read (see {@link SourceText#close}). */
     private byte[] bytes;
+    private final int end;
     private int pos;
-    private int line = 1;
+    private int line;
     private int lineStart;
 
-    private float[] vertices = new float[3 * 1024];
+    /** The whole file's vertices and normals, x, y, z each; this part writes its own. */
+    private final float[] vertices;
     private int vertexCount;
-    private float[] normals = new float[3 * 64];
+    private final float[] normals;
     private int normalCount;
-    private int[] corners = new int[3 * 1024];
-    private int[] cornerNormals = new int[3 * 1024];
+    private int[] corners;
+    private int[] cornerNormals;
     private int triangleCount;
 
     /** The current face's corners: vertex and normal (−1 for none) indices. */
@@ -43,37 +51,34 @@ final class ObjReader {
 
     private final List<SceneError> errors = new ArrayList<>();
 
-    private ObjReader(SourceText source) {
+    /**
+     * A reader for {@code source.bytes()[start, end)}, which begins a line (numbered
+     * {@code firstLine}, after {@code firstVertex} vertices and {@code firstNormal} normals) and
+     * ends after a line feed or at the end of the file; it writes the part's vertices and normals
+     * into {@code vertices} and {@code normals}, and expects about {@code expectedTriangles}.
+     */
+    ObjReader(SourceText source, int start, int end, int firstLine, int firstVertex, int firstNormal, float[] vertices,
+            float[] normals, int expectedTriangles) {
         this.source = source;
         this.bytes = source.bytes();
+        this.end = end;
+        this.pos = start;
+        this.lineStart = start;
+        this.line = firstLine;
+        this.vertexCount = firstVertex;
+        this.normalCount = firstNormal;
+        this.vertices = vertices;
+        this.normals = normals;
+        this.corners = new int[3 * Math.max(1, expectedTriangles)];
+        this.cornerNormals = new int[corners.length];
     }
 
     /**
-     * The mesh in {@code source}, or every mistake found in it (up to one more than
-     * {@link SceneParser#MAX_ERRORS}, so that the caller can tell there were more).
+     * Reads every line of the part, until its end or one error past {@link SceneParser#MAX_ERRORS}
+     * (so that the caller can tell there were more): its triangles, or its mistakes.
      */
-    static ObjMesh read(SourceText source) throws SceneException {
-        ObjReader reader = new ObjReader(source);
-        reader.readAll();
-        reader.bytes = null;
-        if (!reader.errors.isEmpty()) {
-            throw new SceneException(reader.errors, false);
-        }
-        return new ObjMesh(Arrays.copyOf(reader.vertices, 3 * reader.vertexCount),
-                Arrays.copyOf(reader.normals, 3 * reader.normalCount), Arrays.copyOf(reader.corners, 3 * reader.triangleCount),
-                Arrays.copyOf(reader.cornerNormals, 3 * reader.triangleCount), reader.triangleCount);
-    }
-
-    private void readAll() {
-        int nul = firstNul();
-        if (nul >= 0) {
-            errors.add(notText(nul));
-            return;
-        }
-        if (bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF) {
-            pos = lineStart = 3; // a UTF-8 byte-order mark
-        }
-        while (pos < bytes.length && errors.size() <= SceneParser.MAX_ERRORS) {
+    ObjPart readAll() {
+        while (pos < end && errors.size() <= SceneParser.MAX_ERRORS) {
             try {
                 readLine();
             } catch (StatementError e) {
@@ -81,6 +86,8 @@ final class ObjReader {
             }
             skipToNextLine();
         }
+        bytes = null;
+        return new ObjPart(corners, cornerNormals, triangleCount, errors);
     }
 
     private void readLine() throws StatementError {
@@ -103,17 +110,11 @@ final class ObjReader {
     // ---- v and vn ---------------------------------------------------------------------------
 
     private void readVertex() throws StatementError {
-        if (3 * vertexCount + 3 > vertices.length) {
-            vertices = Arrays.copyOf(vertices, 2 * vertices.length);
-        }
         vertexCount++; // even if the line is wrong: the faces below count it, and would be wrong too
         readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
     }
 
     private void readNormal() throws StatementError {
-        if (3 * normalCount + 3 > normals.length) {
-            normals = Arrays.copyOf(normals, 2 * normals.length);
-        }
         normalCount++;
         readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
     }
@@ -244,11 +245,11 @@ final class ObjReader {
     }
 
     private StatementError cornerError(int start) {
-        int end = start;
-        while (end < bytes.length && !ByteClasses.isBlank(bytes[end]) && bytes[end] != '\n' && bytes[end] != '#') {
-            end++;
+        int after = start;
+        while (!ByteClasses.endsObjWord(bytes, after)) {
+            after++;
         }
-        return error(start, "expected a corner of the face, found " + (end > start ? "'" + source.text(start, end) + "'"
+        return error(start, "expected a corner of the face, found " + (after > start ? "'" + source.text(start, after) + "'"
                 : source.describe(start, lineStart)), CORNER_FORMS);
     }
 
@@ -256,11 +257,7 @@ final class ObjReader {
 
     /** Whether {@link #pos} is at a blank, a comment, the end of the line or of the file. */
     private boolean atTokenEnd() {
-        if (pos >= bytes.length) {
-            return true;
-        }
-        byte b = bytes[pos];
-        return b == '\n' || b == '#' || ByteClasses.isBlank(b);
+        return ByteClasses.endsObjWord(bytes, pos);
     }
 
     private boolean at(char c) {
@@ -282,28 +279,6 @@ final class ObjReader {
             line++;
             lineStart = pos;
         }
-    }
-
-    private int firstNul() {
-        for (int i = 0; i < bytes.length; i++) {
-            if (bytes[i] == 0) {
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    private SceneError notText(int nul) {
-        int lineOfNul = 1;
-        int startOfLine = 0;
-        for (int i = 0; i < nul; i++) {
-            if (bytes[i] == '\n') {
-                lineOfNul++;
-                startOfLine = i + 1;
-            }
-        }
-        return new SceneError(source.name(), lineOfNul, source.column(startOfLine, nul),
-                "this is not a text file: found a NUL byte", null, "a mesh is a Wavefront OBJ file, which is text");
     }
 
     private StatementError error(int offset, String message, String help) {

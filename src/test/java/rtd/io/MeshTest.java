@@ -235,4 +235,33 @@ class MeshTest {
         assertThat(corners(objects.get(objects.size() - 1))).containsExactly(v(nx - 1, ny - 1, ((nx - 1) * (ny - 1)) % 7),
                 v(nx, ny, (nx * ny) % 7), v(nx - 1, ny, ((nx - 1) * ny) % 7));
     }
+    @Test
+    void aLargeMeshsTrianglesHoldTheNumbersOfTrianglesMadeOneByOne() throws Exception {
+        java.util.Random random = new java.util.Random(7);
+        StringBuilder obj = new StringBuilder();
+        for (int i = 0; i < 3000; i++) {
+            obj.append("v ").append(random.nextFloat() * 10 - 5).append(' ').append(random.nextFloat()).append(' ')
+                    .append(random.nextGaussian()).append('\n');
+            obj.append("vn ").append(random.nextFloat()).append(' ').append(random.nextFloat()).append(" 1\n");
+        }
+        for (int f = 0; f < 40_000; f++) { // enough to be placed in parallel
+            int a = 1 + random.nextInt(3000);
+            int b = 1 + random.nextInt(3000);
+            int c = 1 + random.nextInt(3000);
+            obj.append(f % 3 == 0 ? "f " + a + "//" + b + " " + b + "//" + c + " " + c + "//" + a : "f " + a + " " + b + " " + c)
+                    .append('\n');
+        }
+        Scene scene = scene(obj.toString(), "mesh:(model.obj):(1|-2|0.5):(1.7):(255|0|0)");
+        assertThat(scene.objects()).hasSize(40_000);
+        for (IGeometry object : scene.objects()) {
+            Triangle t = (Triangle) object;
+            Vector3f[] normals = t.isSmooth() ? new Vector3f[] {t.cornerNormal(0), t.cornerNormal(1), t.cornerNormal(2)} : null;
+            Triangle alone = new Triangle(t.corner(0), t.corner(1), t.corner(2), normals, t.color(), t.material());
+            assertThat(t.testNumbers()).isEqualTo(alone.testNumbers());
+            float[] packed = new float[Triangle.NUMBERS + 3];
+            t.putTestNumbers(packed, 3);
+            assertThat(java.util.Arrays.copyOfRange(packed, 3, packed.length)).isEqualTo(alone.testNumbers());
+            assertThat(t.bounds()).isEqualTo(alone.bounds());
+        }
+    }
 }
