@@ -59,18 +59,8 @@ public final class Bvh {
         Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
         this.boxes = compaction.boxes();
         this.nodes = compaction.nodes();
-        int[] order = builder.order();
-        int count = builder.count();
-        IGeometry[] sorted = new IGeometry[count];
-        int[] fileOrder = Arrays.copyOf(order, count);
-        if (builder.parallel()) {
-            builder.forEach(i -> sorted[i] = objects.get(order[i]));
-        } else {
-            for (int i = 0; i < count; i++) {
-                sorted[i] = objects.get(order[i]);
-            }
-        }
-        this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
+        int[] fileOrder = Arrays.copyOf(builder.order(), builder.count());
+        this.leaves = new LeafObjects(objects, fileOrder, builder.boxes(), builder);
         putRoundings(boxes, nodes, fileOrder, builder.roundings());
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];
@@ -150,6 +140,6 @@ public final class Bvh {
 
     /** Whether there is a tree: whether the scene has objects with a box. */
     boolean hasTree() {
-        return leaves.objects.length > 0;
+        return leaves.fileOrder.length > 0;
     }
 }

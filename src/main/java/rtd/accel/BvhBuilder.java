@@ -107,12 +107,17 @@ final class BvhBuilder {
 
     /** Runs {@code action} for 0 to count − 1: in parallel on the pool, or in order on this thread. */
     void forEach(IntConsumer action) {
+        forEach(count, action);
+    }
+
+    /** Runs {@code action} for 0 to {@code n} − 1: in parallel on the pool, or in order on this thread. */
+    void forEach(int n, IntConsumer action) {
         if (pool == null) {
-            for (int i = 0; i < count; i++) {
+            for (int i = 0; i < n; i++) {
                 action.accept(i);
             }
         } else {
-            pool.submit(() -> IntStream.range(0, count).parallel().forEach(action)).join();
+            pool.submit(() -> IntStream.range(0, n).parallel().forEach(action)).join();
         }
     }
 
