@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
+import rtd.geometry.Rounding;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
 import rtd.math.Ray;
@@ -55,13 +56,15 @@ final class LeafObjects {
     /**
      * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order; {@code boxes}
      * alike) with the builder's threads, into the builder's spare arrays where they are long
-     * enough ({@link BvhBuilder#spare}).
+     * enough ({@link BvhBuilder#spare}); writes each one's {@link IGeometry#rounding} to
+     * {@code roundings} in leaf order too, linear at {@code [2i]} and quadratic at
+     * {@code [2i + 1]}, for the {@link Bvh} to grow its nodes by.
      *
      * <p>Each object is read in file order, as it lies in memory, and its numbers are written to
      * its place in leaf order: reading the objects in leaf order waited for memory at each one
      * (and again at a sphere's centre), and was a fifth of the build of a million spheres.
      */
-    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, BvhBuilder threads) {
+    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, BvhBuilder threads, float[] roundings) {
         this.scene = scene;
         this.fileOrder = fileOrder;
         this.boxes = boxes;
@@ -93,10 +96,10 @@ final class LeafObjects {
         this.numbers = reused(threads.spare().boxes(), size);
         int[] leafPlaces = leafPlaces(scene.size(), fileOrder);
         if (threads.parallel()) {
-            threads.forEach(scene.size(), f -> pack(f, leafPlaces[f]));
+            threads.forEach(scene.size(), f -> pack(f, leafPlaces[f], roundings));
         } else {
             for (int f = 0; f < scene.size(); f++) {
-                pack(f, leafPlaces[f]);
+                pack(f, leafPlaces[f], roundings);
             }
         }
     }
@@ -172,12 +175,18 @@ final class LeafObjects {
         return object instanceof Sphere ? PACKED_SPHERE : object instanceof Triangle ? PACKED_TRIANGLE : OWN_TEST;
     }
 
-    /** Packs the numbers of the object at place {@code f} in the file, which has place {@code i} in leaf order (or none, −1). */
-    private void pack(int f, int i) {
+    /**
+     * Packs the numbers and the rounding of the object at place {@code f} in the file, which has
+     * place {@code i} in leaf order (or none, −1).
+     */
+    private void pack(int f, int i, float[] roundings) {
         if (i < 0) {
             return;
         }
         IGeometry object = scene.get(f);
+        Rounding rounding = object.rounding();
+        roundings[2 * i] = rounding.linear();
+        roundings[2 * i + 1] = rounding.quadratic();
         if (object instanceof Sphere sphere) {
             sphere.putTestNumbers(numbers, offsets[i]);
         } else if (object instanceof Triangle triangle) {
