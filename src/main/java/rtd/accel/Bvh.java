@@ -59,7 +59,9 @@ public final class Bvh {
         Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
         this.boxes = compaction.boxes();
         this.nodes = compaction.nodes();
-        int[] fileOrder = Arrays.copyOf(builder.order(), builder.count());
+        int[] order = builder.order();
+        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
+        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
         float[] roundings = new float[2 * fileOrder.length];
         this.leaves = new LeafObjects(objects, fileOrder, builder.boxes(), builder, roundings);
         putRoundings(boxes, nodes, roundings);
