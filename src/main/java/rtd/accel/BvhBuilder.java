@@ -68,6 +68,8 @@ final class BvhBuilder {
     /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects. */
     private final ChunkedPasses chunked;
     private int maxDepth;
+    /** Whether {@link #measureObject} met an object without a finite box; set by any thread, seldom. */
+    private volatile boolean anyUnbounded;
 
     /**
      * A builder for the scene's {@code objects}, that works on {@code pool}, or on the calling
@@ -87,7 +89,11 @@ final class BvhBuilder {
         } else {
             forEach(this::measureObject);
         }
-        setUnboundedApart();
+        if (anyUnbounded) {
+            setUnboundedApart();
+        } else {
+            unbounded = new int[0];
+        }
         this.tree = new NodeBlocks(count);
         this.chunked = new ChunkedPasses(pool);
     }
@@ -161,6 +167,9 @@ final class BvhBuilder {
         IGeometry object = objects.get(i);
         object.putBounds(primary.boxes(), 6 * i);
         primary.order()[i] = i;
+        if (!isFinite(i)) {
+            anyUnbounded = true;
+        }
     }
 
     /** Builds the tree; afterwards {@link #order()} and {@link #boxes()} are in leaf order. */

@@ -72,6 +72,10 @@ final class LeafObjects {
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
         byte[] fileKinds = kindsInFileOrder(scene, names, tests);
+        byte[] testOfKind = new byte[tests.size()];
+        for (int k = 0; k < testOfKind.length; k++) {
+            testOfKind[k] = tests.get(k);
+        }
         // the kinds are numbered anew as the leaves meet them, so that the statistics list them in that order
         byte[] leafKind = new byte[names.size()];
         Arrays.fill(leafKind, (byte) -1);
@@ -79,14 +83,18 @@ final class LeafObjects {
         this.kinds = new byte[count];
         this.testOf = new byte[count];
         this.offsets = reused(threads.spare().order(), count);
+        int[] leafPlaces = new int[scene.size()]; // per place in the file, the place in leaf order, or −1 for none
+        Arrays.fill(leafPlaces, -1);
         int size = 0;
         for (int i = 0; i < count; i++) { // in order: the offsets are a running sum
-            int kind = fileKinds[fileOrder[i]];
+            int f = fileOrder[i];
+            leafPlaces[f] = i;
+            int kind = fileKinds[f];
             if (leafKind[kind] < 0) {
                 leafKind[kind] = (byte) leafNames.size();
                 leafNames.add(names.get(kind));
             }
-            byte test = tests.get(kind);
+            byte test = testOfKind[kind];
             kinds[i] = leafKind[kind];
             testOf[i] = test;
             offsets[i] = size;
@@ -94,7 +102,6 @@ final class LeafObjects {
         }
         this.kindNames = leafNames.toArray(String[]::new);
         this.numbers = reused(threads.spare().boxes(), size);
-        int[] leafPlaces = leafPlaces(scene.size(), fileOrder);
         if (threads.parallel()) {
             threads.forEach(scene.size(), f -> pack(f, leafPlaces[f], roundings));
         } else {
@@ -127,16 +134,6 @@ final class LeafObjects {
             fileKinds[f] = (byte) kind;
         }
         return fileKinds;
-    }
-
-    /** Per place in the file, the object's place in leaf order, or −1 for an object in no leaf. */
-    private static int[] leafPlaces(int objects, int[] fileOrder) {
-        int[] places = new int[objects];
-        Arrays.fill(places, -1);
-        for (int i = 0; i < fileOrder.length; i++) {
-            places[fileOrder[i]] = i;
-        }
-        return places;
     }
 
     /**
