@@ -357,7 +357,7 @@ final class BeamTracer {
             return false; // the outline's check is for parallel rays
         }
         int only = onlyObjectInReach(leaf, grow, within);
-        if (only < 0 || !(bvh.leaves.objects[only] instanceof Sphere sphere)) {
+        if (only < 0 || !(bvh.objects.get(bvh.leaves.fileOrder[only]) instanceof Sphere sphere)) {
             return false;
         }
         double before = sphere.everyRayHitsBefore(beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz);

@@ -60,18 +60,11 @@ public final class Bvh {
         this.boxes = compaction.boxes();
         this.nodes = compaction.nodes();
         int[] order = builder.order();
-        int count = builder.count();
-        IGeometry[] sorted = new IGeometry[count];
-        int[] fileOrder = Arrays.copyOf(order, count);
-        if (builder.parallel()) {
-            builder.forEach(i -> sorted[i] = objects.get(order[i]));
-        } else {
-            for (int i = 0; i < count; i++) {
-                sorted[i] = objects.get(order[i]);
-            }
-        }
-        this.leaves = new LeafObjects(sorted, fileOrder, builder.boxes(), builder);
-        putRoundings(boxes, nodes, fileOrder, builder.roundings());
+        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
+        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
+        float[] roundings = new float[2 * fileOrder.length];
+        this.leaves = new LeafObjects(objects, fileOrder, builder.boxes(), builder, roundings);
+        putRoundings(boxes, nodes, roundings);
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];
         for (int i = 0; i < unbounded.length; i++) {
@@ -84,9 +77,9 @@ public final class Bvh {
     /**
      * Each node's largest rounding, from the leaves up: a node's children have larger numbers
      * than the node itself ({@link Compaction}), so one pass backwards meets them first. The
-     * objects' own are in {@code roundings}, by place in the file ({@link BvhBuilder#roundings}).
+     * objects' own are in {@code roundings}, in leaf order ({@link LeafObjects}).
      */
-    private static void putRoundings(float[] boxes, int[] nodes, int[] fileOrder, float[] roundings) {
+    private static void putRoundings(float[] boxes, int[] nodes, float[] roundings) {
         for (int node = nodes.length / 2 - 1; node >= 0; node--) {
             int at = BOX * node + ROUNDING;
             if (nodes[2 * node + 1] == INNER) {
@@ -94,7 +87,7 @@ public final class Bvh {
                 boxes[at] = Math.max(boxes[child], boxes[child + BOX]);
                 boxes[at + 1] = Math.max(boxes[child + 1], boxes[child + BOX + 1]);
             } else {
-                leafRounding(fileOrder, nodes[2 * node], nodes[2 * node + 1], roundings, boxes, at);
+                leafRounding(nodes[2 * node], nodes[2 * node + 1], roundings, boxes, at);
             }
         }
     }
@@ -104,12 +97,12 @@ public final class Bvh {
      * as {@link Rounding#max} finds it, written to {@code into[at]} (linear) and
      * {@code into[at + 1]} (quadratic).
      */
-    private static void leafRounding(int[] fileOrder, int first, int count, float[] roundings, float[] into, int at) {
+    private static void leafRounding(int first, int count, float[] roundings, float[] into, int at) {
         float linear = 0;
         float quadratic = 0;
         for (int i = first; i < first + count; i++) {
-            linear = Math.max(linear, roundings[2 * fileOrder[i]]);
-            quadratic = Math.max(quadratic, roundings[2 * fileOrder[i] + 1]);
+            linear = Math.max(linear, roundings[2 * i]);
+            quadratic = Math.max(quadratic, roundings[2 * i + 1]);
         }
         into[at] = linear;
         into[at + 1] = quadratic;
@@ -150,6 +143,6 @@ public final class Bvh {
 
     /** Whether there is a tree: whether the scene has objects with a box. */
     boolean hasTree() {
-        return leaves.objects.length > 0;
+        return leaves.fileOrder.length > 0;
     }
 }

@@ -10,7 +10,6 @@ import java.util.concurrent.RecursiveTask;
 import java.util.function.IntConsumer;
 import java.util.stream.IntStream;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Rounding;
 
 /**
  * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH).
@@ -65,16 +64,12 @@ final class BvhBuilder {
     private final ObjectArrays spare;
     /** The nodes as they are made. */
     private final NodeBlocks tree;
-    /**
-     * Per place in the file: the object's {@link IGeometry#rounding}, linear at {@code [2i]} and
-     * quadratic at {@code [2i + 1]}, asked while its box is (the objects in file order lie
-     * mostly in order in memory; in leaf order each would be a wait for memory).
-     */
-    private final float[] roundings;
     private final ForkJoinPool pool;
     /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects. */
     private final ChunkedPasses chunked;
     private int maxDepth;
+    /** Whether {@link #measureObject} met an object without a finite box; set by any thread, seldom. */
+    private volatile boolean anyUnbounded;
 
     /**
      * A builder for the scene's {@code objects}, that works on {@code pool}, or on the calling
@@ -85,7 +80,6 @@ final class BvhBuilder {
         this.objects = objects;
         this.count = objects.size();
         this.pool = pool;
-        this.roundings = new float[2 * count];
         this.primary = ObjectArrays.of(count);
         this.spare = ObjectArrays.of(count);
         if (pool == null) { // no lambda either: its first use costs more than a small scene's whole build
@@ -95,7 +89,11 @@ final class BvhBuilder {
         } else {
             forEach(this::measureObject);
         }
-        setUnboundedApart();
+        if (anyUnbounded) {
+            setUnboundedApart();
+        } else {
+            unbounded = new int[0];
+        }
         this.tree = new NodeBlocks(count);
         this.chunked = new ChunkedPasses(pool);
     }
@@ -107,12 +105,17 @@ final class BvhBuilder {
 
     /** Runs {@code action} for 0 to count − 1: in parallel on the pool, or in order on this thread. */
     void forEach(IntConsumer action) {
+        forEach(count, action);
+    }
+
+    /** Runs {@code action} for 0 to {@code n} − 1: in parallel on the pool, or in order on this thread. */
+    void forEach(int n, IntConsumer action) {
         if (pool == null) {
-            for (int i = 0; i < count; i++) {
+            for (int i = 0; i < n; i++) {
                 action.accept(i);
             }
         } else {
-            pool.submit(() -> IntStream.range(0, count).parallel().forEach(action)).join();
+            pool.submit(() -> IntStream.range(0, n).parallel().forEach(action)).join();
         }
     }
 
@@ -164,9 +167,9 @@ final class BvhBuilder {
         IGeometry object = objects.get(i);
         object.putBounds(primary.boxes(), 6 * i);
         primary.order()[i] = i;
-        Rounding rounding = object.rounding();
-        roundings[2 * i] = rounding.linear();
-        roundings[2 * i + 1] = rounding.quadratic();
+        if (!isFinite(i)) {
+            anyUnbounded = true;
+        }
     }
 
     /** Builds the tree; afterwards {@link #order()} and {@link #boxes()} are in leaf order. */
@@ -194,11 +197,6 @@ final class BvhBuilder {
     /** The objects' boxes in leaf order, six floats each. */
     float[] boxes() {
         return primary.boxes();
-    }
-
-    /** Per place in the file, the object's rounding: linear at {@code [2i]}, quadratic at {@code [2i + 1]}. */
-    float[] roundings() {
-        return roundings;
     }
 
     /** The depth of the deepest leaf. */

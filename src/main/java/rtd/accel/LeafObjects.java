@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
+import rtd.geometry.Rounding;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
 import rtd.math.Ray;
@@ -32,7 +33,8 @@ final class LeafObjects {
     private static final int SPHERE_SIZE = Sphere.NUMBERS;
     private static final int TRIANGLE_SIZE = Triangle.NUMBERS;
 
-    final IGeometry[] objects;
+    /** The scene's objects, in file order: for the objects tested by their own {@code intersect}. */
+    private final List<IGeometry> scene;
     /** Each object's place in the scene file. */
     final int[] fileOrder;
     /** Each object's box, six floats: min x, y, z, max x, y, z. */
@@ -41,7 +43,7 @@ final class LeafObjects {
     final byte[] kinds;
     /** Each object's way to test ({@link #PACKED_SPHERE}, ...), beside it for the hot loop. */
     private final byte[] testOf;
-    /** The names of the kinds (a kind is a name and a way to test), for statistics. */
+    /** The names of the kinds (a kind is a name and a way to test), in the order the leaves meet them, for statistics. */
     final String[] kindNames;
     /**
      * Where each object's numbers start in {@link #numbers}; longer than the objects, with
@@ -52,24 +54,74 @@ final class LeafObjects {
     final float[] numbers;
 
     /**
-     * Packs {@code objects} (in leaf order; {@code fileOrder} and {@code boxes} alike) with the
-     * builder's threads, into the builder's spare arrays where they are long enough
-     * ({@link BvhBuilder#spare}).
+     * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order; {@code boxes}
+     * alike) with the builder's threads, into the builder's spare arrays where they are long
+     * enough ({@link BvhBuilder#spare}); writes each one's {@link IGeometry#rounding} to
+     * {@code roundings} in leaf order too, linear at {@code [2i]} and quadratic at
+     * {@code [2i + 1]}, for the {@link Bvh} to grow its nodes by.
+     *
+     * <p>Each object is read in file order, as it lies in memory, and its numbers are written to
+     * its place in leaf order: reading the objects in leaf order waited for memory at each one
+     * (and again at a sphere's centre), and was a fifth of the build of a million spheres.
      */
-    LeafObjects(IGeometry[] objects, int[] fileOrder, float[] boxes, BvhBuilder threads) {
-        this.objects = objects;
+    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, BvhBuilder threads, float[] roundings) {
+        this.scene = scene;
         this.fileOrder = fileOrder;
         this.boxes = boxes;
-        this.kinds = new byte[objects.length];
-        this.offsets = reused(threads.spare().order(), objects.length);
-        this.testOf = new byte[objects.length];
+        int count = fileOrder.length;
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
+        byte[] fileKinds = kindsInFileOrder(scene, names, tests);
+        byte[] testOfKind = new byte[tests.size()];
+        for (int k = 0; k < testOfKind.length; k++) {
+            testOfKind[k] = tests.get(k);
+        }
+        // the kinds are numbered anew as the leaves meet them, so that the statistics list them in that order
+        byte[] leafKind = new byte[names.size()];
+        Arrays.fill(leafKind, (byte) -1);
+        List<String> leafNames = new ArrayList<>();
+        this.kinds = new byte[count];
+        this.testOf = new byte[count];
+        this.offsets = reused(threads.spare().order(), count);
+        int[] leafPlaces = new int[scene.size()]; // per place in the file, the place in leaf order, or −1 for none
+        Arrays.fill(leafPlaces, -1);
         int size = 0;
+        for (int i = 0; i < count; i++) { // in order: the offsets are a running sum
+            int f = fileOrder[i];
+            leafPlaces[f] = i;
+            int kind = fileKinds[f];
+            if (leafKind[kind] < 0) {
+                leafKind[kind] = (byte) leafNames.size();
+                leafNames.add(names.get(kind));
+            }
+            byte test = testOfKind[kind];
+            kinds[i] = leafKind[kind];
+            testOf[i] = test;
+            offsets[i] = size;
+            size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
+        }
+        this.kindNames = leafNames.toArray(String[]::new);
+        this.numbers = reused(threads.spare().boxes(), size);
+        if (threads.parallel()) {
+            threads.forEach(scene.size(), f -> pack(f, leafPlaces[f], roundings));
+        } else {
+            for (int f = 0; f < scene.size(); f++) {
+                pack(f, leafPlaces[f], roundings);
+            }
+        }
+    }
+
+    /**
+     * Each object's kind, by place in the file, as an index into {@code names} and {@code tests},
+     * which it fills in the order the file meets the kinds.
+     */
+    private static byte[] kindsInFileOrder(List<IGeometry> scene, List<String> names, List<Byte> tests) {
+        byte[] fileKinds = new byte[scene.size()];
         int kind = -1;
-        for (int i = 0; i < objects.length; i++) { // in order: the offsets are a running sum
-            byte test = testFor(objects[i]);
-            String name = objects[i].kind();
+        for (int f = 0; f < fileKinds.length; f++) {
+            IGeometry object = scene.get(f);
+            byte test = testFor(object);
+            String name = object.kind();
             // a mesh's triangles come in a run of one kind: look the kind up only when it changes
             if (kind < 0 || test != tests.get(kind) || !name.equals(names.get(kind))) {
                 kind = kindOf(names, tests, name, test);
@@ -79,20 +131,9 @@ final class LeafObjects {
                     tests.add(test);
                 }
             }
-            kinds[i] = (byte) kind;
-            testOf[i] = test;
-            offsets[i] = size;
-            size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
+            fileKinds[f] = (byte) kind;
         }
-        this.kindNames = names.toArray(String[]::new);
-        this.numbers = reused(threads.spare().boxes(), size);
-        if (threads.parallel()) {
-            threads.forEach(this::pack);
-        } else {
-            for (int i = 0; i < objects.length; i++) {
-                pack(i);
-            }
-        }
+        return fileKinds;
     }
 
     /**
@@ -131,11 +172,22 @@ final class LeafObjects {
         return object instanceof Sphere ? PACKED_SPHERE : object instanceof Triangle ? PACKED_TRIANGLE : OWN_TEST;
     }
 
-    private void pack(int i) {
-        if (testOf[i] == PACKED_SPHERE) {
-            ((Sphere) objects[i]).putTestNumbers(numbers, offsets[i]);
-        } else if (testOf[i] == PACKED_TRIANGLE) {
-            ((Triangle) objects[i]).putTestNumbers(numbers, offsets[i]);
+    /**
+     * Packs the numbers and the rounding of the object at place {@code f} in the file, which has
+     * place {@code i} in leaf order (or none, −1).
+     */
+    private void pack(int f, int i, float[] roundings) {
+        if (i < 0) {
+            return;
+        }
+        IGeometry object = scene.get(f);
+        Rounding rounding = object.rounding();
+        roundings[2 * i] = rounding.linear();
+        roundings[2 * i + 1] = rounding.quadratic();
+        if (object instanceof Sphere sphere) {
+            sphere.putTestNumbers(numbers, offsets[i]);
+        } else if (object instanceof Triangle triangle) {
+            triangle.putTestNumbers(numbers, offsets[i]);
         }
     }
 
@@ -164,7 +216,7 @@ final class LeafObjects {
         if (test == PACKED_TRIANGLE) {
             return Triangle.hit(numbers, offsets[i], ox, oy, oz, dx, dy, dz);
         }
-        Intersection hit = objects[i].intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
+        Intersection hit = scene.get(fileOrder[i]).intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
         return hit.t();
     }
 

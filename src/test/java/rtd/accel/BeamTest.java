@@ -191,7 +191,7 @@ class BeamTest {
         int hits = 0;
         for (int r = 0; r < 4_000; r++) {
             int i = r % objects.length;
-            IGeometry object = leaves.objects[i];
+            IGeometry object = objects[leaves.fileOrder[i]];
             Vector3f aim = object.bounds().centre();
             float spread = 3;
             Vector3f origin = aim.add(new Vector3f((random.nextFloat() - 0.5f) * spread,
