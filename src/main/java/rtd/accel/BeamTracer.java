@@ -89,6 +89,15 @@ final class BeamTracer {
     /** Whether where each ray hits is asked for, not only the object ({@link HitBuffer#hitPointsRead}). */
     private boolean hitPointsRead;
     /**
+     * Whether a sphere could cover this square ({@link #coveredBySphere}): not unless the rays
+     * are parallel, only the object is asked for, and the tree's largest sphere is wider than
+     * the square. Not asked where it cannot pay (a million small spheres), the check drops out of
+     * the code the JIT compiles: with it, their first render took 0.4 s longer.
+     */
+    private boolean coverable;
+    /** The largest squared radius of the tree's spheres. */
+    private final float largestSphereSquared;
+    /**
      * The sphere (its place among the leaves' objects) that every ray of the square hits, found
      * before any ray is made ({@link #coveredBySphere}); else −1.
      */
@@ -105,6 +114,7 @@ final class BeamTracer {
 
     BeamTracer(Bvh bvh) {
         this.bvh = bvh;
+        this.largestSphereSquared = bvh.leaves.largestSphereSquared();
         this.stackNodes = new int[bvh.maxDepth + 2];
         this.stackEntries = new float[bvh.maxDepth + 2];
         this.stackExits = new float[bvh.maxDepth + 2];
@@ -132,6 +142,8 @@ final class BeamTracer {
         this.bundle = bundle;
         started = false;
         hitPointsRead = out.hitPointsRead();
+        coverable = !hitPointsRead && parallel
+                && largestSphereSquared > half[0] * half[0] + half[1] * half[1] + half[2] * half[2];
         covering = -1;
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.unbounded.length > 0) {
@@ -332,7 +344,7 @@ final class BeamTracer {
             return;
         }
         if (!started) {
-            if (covering < 0 && !hitPointsRead && coveredBySphere(leaf, grow, within)) {
+            if (covering < 0 && coverable && coveredBySphere(leaf, grow, within)) {
                 return;
             }
             start();

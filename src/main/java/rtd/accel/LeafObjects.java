@@ -204,6 +204,17 @@ final class LeafObjects {
                         highest, dx, dy, dz);
     }
 
+    /** The largest squared radius of the packed spheres, 0 if there are none. */
+    float largestSphereSquared() {
+        float largest = 0;
+        for (int i = 0; i < fileOrder.length; i++) {
+            if (testOf[i] == PACKED_SPHERE) {
+                largest = Math.max(largest, numbers[offsets[i] + 3]);
+            }
+        }
+        return largest;
+    }
+
     /**
      * The smallest {@code t ≥ 0} where the ray O + t·D hits object {@code i}, or NaN; {@code dd}
      * is D·D, the same for every object.
