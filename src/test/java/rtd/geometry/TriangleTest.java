@@ -112,22 +112,27 @@ class TriangleTest {
         }
     }
 
+    /** A triangle of any size from 1e-4 to 1e4, now and then a needle. */
+    private static Triangle randomTriangle(Random random) {
+        float scale = (float) Math.pow(10, random.nextInt(9) - 4);
+        Vector3f p1 = new Vector3f((random.nextFloat() - 0.5f) * scale, (random.nextFloat() - 0.5f) * scale, -random.nextFloat() * scale);
+        Vector3f p2 = p1.add(new Vector3f(random.nextFloat() * scale, random.nextFloat() * scale, 0));
+        Vector3f p3 = random.nextInt(4) == 0 // a needle now and then
+                ? p1.add(p2.subtract(p1).multiply(2 + random.nextFloat() * 1e-6f))
+                : p1.add(new Vector3f(0, random.nextFloat() * scale, random.nextFloat() * scale));
+        return new Triangle(p1, p2, p3, Color.BLACK, Material.DEFAULT);
+    }
+
     @Test
     void writesTheSameBoxWithoutMakingOneAsItMakes() {
         Random random = new Random(9);
         for (int i = 0; i < 10_000; i++) {
-            float scale = (float) Math.pow(10, random.nextInt(9) - 4);
-            Vector3f p1 = new Vector3f((random.nextFloat() - 0.5f) * scale, (random.nextFloat() - 0.5f) * scale, -random.nextFloat() * scale);
-            Vector3f p2 = p1.add(new Vector3f(random.nextFloat() * scale, random.nextFloat() * scale, 0));
-            Vector3f p3 = random.nextInt(4) == 0 // a needle now and then
-                    ? p1.add(p2.subtract(p1).multiply(2 + random.nextFloat() * 1e-6f))
-                    : p1.add(new Vector3f(0, random.nextFloat() * scale, random.nextFloat() * scale));
-            Triangle any = new Triangle(p1, p2, p3, Color.BLACK, Material.DEFAULT);
+            Triangle any = randomTriangle(random);
             float[] written = new float[8];
             any.putBounds(written, 1);
             float[] made = new float[8];
             any.bounds().put(made, 1);
-            assertThat(written).as(p1 + " " + p2 + " " + p3).isEqualTo(made);
+            assertThat(written).as(any.corner(0) + " " + any.corner(1) + " " + any.corner(2)).isEqualTo(made);
         }
     }
 
@@ -135,13 +140,7 @@ class TriangleTest {
     void writesExactlyItsTestNumbersWhereItIsToldAndNothingElse() {
         Random random = new Random(11);
         for (int i = 0; i < 10_000; i++) {
-            float scale = (float) Math.pow(10, random.nextInt(9) - 4);
-            Vector3f p1 = new Vector3f((random.nextFloat() - 0.5f) * scale, (random.nextFloat() - 0.5f) * scale, -random.nextFloat() * scale);
-            Vector3f p2 = p1.add(new Vector3f(random.nextFloat() * scale, random.nextFloat() * scale, 0));
-            Vector3f p3 = random.nextInt(4) == 0 // a needle now and then
-                    ? p1.add(p2.subtract(p1).multiply(2 + random.nextFloat() * 1e-6f))
-                    : p1.add(new Vector3f(0, random.nextFloat() * scale, random.nextFloat() * scale));
-            Triangle any = new Triangle(p1, p2, p3, Color.BLACK, Material.DEFAULT);
+            Triangle any = randomTriangle(random);
             int at = 1 + random.nextInt(Triangle.NUMBERS);
             float[] written = new float[at + Triangle.NUMBERS + 2];
             Arrays.fill(written, -7f);
@@ -149,7 +148,7 @@ class TriangleTest {
             float[] expected = new float[written.length];
             Arrays.fill(expected, -7f);
             System.arraycopy(any.testNumbers(), 0, expected, at, Triangle.NUMBERS);
-            assertThat(written).as(p1 + " " + p2 + " " + p3).isEqualTo(expected);
+            assertThat(written).as(any.corner(0) + " " + any.corner(1) + " " + any.corner(2)).isEqualTo(expected);
         }
     }
 }
