@@ -359,7 +359,7 @@ final class BeamTracer {
 
     /**
      * Whether the beam reaches only one object of the leaf, a sphere that every ray of the
-     * square surely hits ({@link Sphere#everyRayHitsBefore}): then no ray need be traced, as long
+     * square surely hits ({@link SphereOutline#everyRayHitsBefore}): then no ray need be traced, as long
      * as the walk meets no other object in reach before the sphere's hits. The walk goes on,
      * skipping the boxes beyond them; if it meets another object in reach, the rays are traced
      * after all, in the sphere's leaf too ({@link #testLeaf}).
@@ -372,7 +372,7 @@ final class BeamTracer {
         if (only < 0 || !(bvh.objects.get(bvh.leaves.fileOrder[only]) instanceof Sphere sphere)) {
             return false;
         }
-        double before = sphere.everyRayHitsBefore(beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz);
+        double before = SphereOutline.everyRayHitsBefore(sphere, beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz);
         if (!(before >= 0)) {
             return false;
         }

@@ -194,13 +194,13 @@ final class LeafObjects {
     /**
      * Whether object {@code i} is a sphere of squared radius at least {@code leastSquared} that
      * no ray along D from an origin in the box from {@code lowest} to {@code highest} can hit
-     * ({@link Sphere#everyRayMisses}); false for any other shape, and for a smaller sphere,
+     * ({@link SphereOutline#everyRayMisses}); false for any other shape, and for a smaller sphere,
      * whose box leaves little room outside its outline.
      */
     boolean missedByEvery(int i, float leastSquared, float[] lowest, float[] highest, float dx, float dy, float dz) {
         int at = offsets[i];
         return testOf[i] == PACKED_SPHERE && numbers[at + 3] >= leastSquared
-                && Sphere.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], numbers[at + 3], lowest,
+                && SphereOutline.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], numbers[at + 3], lowest,
                         highest, dx, dy, dz);
     }
 
