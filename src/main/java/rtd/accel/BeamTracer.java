@@ -362,12 +362,9 @@ final class BeamTracer {
      * square surely hits ({@link SphereOutline#everyRayHitsBefore}): then no ray need be traced, as long
      * as the walk meets no other object in reach before the sphere's hits. The walk goes on,
      * skipping the boxes beyond them; if it meets another object in reach, the rays are traced
-     * after all, in the sphere's leaf too ({@link #testLeaf}).
+     * after all, in the sphere's leaf too ({@link #testLeaf}). Asked only of parallel rays ({@link #coverable}).
      */
     private boolean coveredBySphere(int leaf, float grow, float within) {
-        if (!parallel) {
-            return false; // the outline's check is for parallel rays
-        }
         int only = onlyObjectInReach(leaf, grow, within);
         if (only < 0 || !(bvh.objects.get(bvh.leaves.fileOrder[only]) instanceof Sphere sphere)) {
             return false;
