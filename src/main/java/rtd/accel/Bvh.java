@@ -54,8 +54,12 @@ public final class Bvh {
     final int maxDepth;
     final List<IGeometry> objects;
 
-    private Bvh(BvhBuilder builder, List<IGeometry> objects) {
-        builder.build();
+    private Bvh(BvhBuilder builder, List<IGeometry> objects, boolean oneLeaf) {
+        if (oneLeaf) {
+            builder.buildOneLeaf();
+        } else {
+            builder.build();
+        }
         Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
         this.boxes = compaction.boxes();
         this.nodes = compaction.nodes();
@@ -121,14 +125,23 @@ public final class Bvh {
     public static Bvh build(Scene scene, int threads) {
         List<IGeometry> objects = scene.objects();
         if (threads == 1 || objects.size() < BvhBuilder.PARALLEL_THRESHOLD) {
-            return new Bvh(new BvhBuilder(objects, null), objects);
+            return new Bvh(new BvhBuilder(objects, null), objects, false);
         }
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {
-            return new Bvh(new BvhBuilder(objects, pool), objects);
+            return new Bvh(new BvhBuilder(objects, pool), objects, false);
         } finally {
             pool.shutdown();
         }
+    }
+
+    /**
+     * All of the scene's objects with a box in one leaf, in file order, packed for the tests as
+     * a hierarchy's leaves are, on {@code pool} (or on the calling thread if it is null): no
+     * tree, for a {@link ViewGrid}, which finds the objects a ray may hit in its own way.
+     */
+    static Bvh oneLeaf(Scene scene, ForkJoinPool pool) {
+        return new Bvh(new BvhBuilder(scene.objects(), pool), scene.objects(), true);
     }
 
     /** A new tracer that follows rays through this hierarchy; one per thread. */

@@ -233,6 +233,21 @@ final class NearestHit {
         }
     }
 
+    /**
+     * The paper's intersection test and depth test on the objects at places
+     * {@code places[from .. to)} in leaf order: the objects of a {@link ViewGrid}'s cell.
+     */
+    void testPlaces(int[] places, int from, int to) {
+        treeTests += to - from;
+        for (int k = from; k < to; k++) {
+            int place = places[k];
+            if (severalKinds) {
+                tests[leaves.kinds[place]]++;
+            }
+            test(place);
+        }
+    }
+
     /** The paper's intersection test and depth test on the object at place {@code i} in leaf order. */
     private void test(int i) {
         float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);

@@ -34,9 +34,4 @@ record RenderSettings(List<Path> scenes, Path scene, Path output, int width, int
                 command.findOption("--threads").getValue(), command.findOption("--accel").getValue(),
                 command.findOption("--samples").getValue(), command.findOption("--paper").getValue());
     }
-
-    /** Whether to trace with the BVH: as {@code rtd} renders, {@code auto} takes it for any scene with objects. */
-    boolean useBvh(int objects) {
-        return !paper && accel.usesBvh(objects);
-    }
 }

@@ -10,7 +10,6 @@ import java.util.function.DoubleConsumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import picocli.CommandLine;
-import rtd.accel.Bvh;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
 import rtd.io.ImageWriting;
@@ -61,15 +60,16 @@ final class SceneRun {
             ImageSize.check(commandLine, settings.width(), settings.height());
 
             display.show(ProgressDisplay.Phase.of("building the BVH"));
-            Bvh bvh = settings.paper() ? null : buildBvh(scene);
+            Accelerator accelerator = settings.paper() ? null : Accelerator.of(scene, settings.accel(), settings.width(),
+                    settings.height(), settings.samples(), settings.threads());
             timer.endPhase("build");
 
             RenderProgress progress = new RenderProgress();
             display.show(ProgressDisplay.Phase.rendering(() -> progress.rowsDone() / (double) settings.height(),
                     (double) settings.width() * settings.height() / 1e6));
-            RenderResult result = settings.paper() ? renderAsThePaper(scene) : renderInParallel(scene, bvh, progress);
+            RenderResult result = settings.paper() ? renderAsThePaper(scene) : renderInParallel(scene, accelerator, progress);
             timer.endPhase("render");
-            if (!hitSomething(scene, bvh, result.image())) {
+            if (!hitSomething(scene, accelerator, result.image())) {
                 display.message(NothingInView.warning(source.name(), scene, settings.width(), settings.height()));
             }
 
@@ -80,7 +80,7 @@ final class SceneRun {
             write(result.image(), target, format, fraction -> written.set(Double.doubleToLongBits(fraction)));
             timer.endPhase("write");
             report = settings.stats()
-                    ? StatsReport.format(timer, scene, bvh, result.work(), settings.threads(), target.spelt()) : "";
+                    ? StatsReport.format(timer, scene, accelerator, result.work(), settings.threads(), target.spelt()) : "";
         }
         err.print(report); // once the progress line is gone
     }
@@ -93,25 +93,21 @@ final class SceneRun {
         }
     }
 
-    /** The BVH, if {@code --accel} asks for one: {@code auto} takes it for any scene with objects. */
-    private Bvh buildBvh(Scene scene) {
-        return settings.accel().usesBvh(scene.objects().size()) ? Bvh.build(scene, settings.threads()) : null;
-    }
-
-    private Supplier<Tracer> tracers(Scene scene, Bvh bvh) {
-        return bvh != null ? bvh::newTracer : () -> new LinearTracer(scene);
+    /** The tracers for the BVH, the view grid, or the paper's loop; for {@code --paper}, the paper's loop. */
+    private static Supplier<Tracer> tracers(Scene scene, Accelerator accelerator) {
+        return accelerator != null ? accelerator.tracers() : () -> new LinearTracer(scene);
     }
 
     /**
-     * All cores, with the BVH's tracer or the paper's loop ({@link LinearTracer}); in flat
+     * All cores, with the tracers {@code --accel} chose ({@link Accelerator}); in flat
      * colours, or shaded ({@link WhittedShader}) if the scene has lights.
      */
-    private RenderResult renderInParallel(Scene scene, Bvh bvh, RenderProgress progress) {
+    private RenderResult renderInParallel(Scene scene, Accelerator accelerator, RenderProgress progress) {
         FlatShader flat = new FlatShader(scene);
         Function<Tracer, Shader> shaders = scene.lights().isEmpty()
                 ? tracer -> flat
                 : tracer -> new WhittedShader(scene, tracer);
-        return ParallelRenderer.render(scene.camera(), tracers(scene, bvh), shaders, settings.width(),
+        return ParallelRenderer.render(scene.camera(), accelerator.tracers(), shaders, settings.width(),
                 settings.height(), settings.samples(), settings.threads(), progress);
     }
 
@@ -139,7 +135,7 @@ final class SceneRun {
      * of background alone says so only if no object has the background's colour, and otherwise
      * the rays are traced again with a shader that marks hits (rare: such an object alone in view).
      */
-    private boolean hitSomething(Scene scene, Bvh bvh, Picture picture) {
+    private boolean hitSomething(Scene scene, Accelerator accelerator, Picture picture) {
         int background = scene.ambient().getRGB();
         if (NothingInView.showsSomething(picture, background)) {
             return true;
@@ -148,7 +144,7 @@ final class SceneRun {
             return false;
         }
         Shader hitMarks = (rays, hits, i) -> hits.index(i) < 0 ? Rgb.BLACK : new Rgb(1, 1, 1);
-        Picture marks = ParallelRenderer.render(scene.camera(), tracers(scene, bvh), tracer -> hitMarks,
+        Picture marks = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> hitMarks,
                 settings.width(), settings.height(), settings.threads(), new RenderProgress()).image();
         return NothingInView.showsSomething(marks, 0);
     }

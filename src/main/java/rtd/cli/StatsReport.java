@@ -3,7 +3,6 @@ package rtd.cli;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Map;
-import rtd.accel.Bvh;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
 
@@ -13,21 +12,22 @@ final class StatsReport {
     private StatsReport() {
     }
 
-    static String format(PhaseTimer timer, Scene scene, Bvh bvh, WorkCount work, int threads, Path output) {
+    static String format(PhaseTimer timer, Scene scene, Accelerator accelerator, WorkCount work, int threads,
+            Path output) {
         Map<String, Double> seconds = timer.seconds();
         double renderSeconds = seconds.getOrDefault("render", 0.0);
         StringBuilder text = new StringBuilder();
         line(text, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));
-        line(text, "build", seconds.get("build"), bvh == null
-                ? "no BVH: the paper's loop tests every object"
-                : "BVH of " + count(bvh.nodeCount(), "node"));
+        line(text, "build", seconds.get("build"), accelerator == null
+                ? "no BVH: the paper's loop tests every object" : accelerator.built());
         line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
                 work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
         line(text, "write", seconds.get("write"), output.toString());
         double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
         line(text, "total", total, "from reading the scene to the written picture; the JVM's start is not counted");
-        text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests%s, %.2f BVH nodes visited%n",
-                work.testsPerRay(), byKind(work), work.nodesPerRay()));
+        text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests%s", work.testsPerRay(), byKind(work)));
+        text.append(accelerator != null && accelerator.walksTree()
+                ? String.format(Locale.ROOT, ", %.2f BVH nodes visited%n", work.nodesPerRay()) : String.format("%n"));
         return text.toString();
     }
 
@@ -45,7 +45,12 @@ final class StatsReport {
 
     /** "1 object", "2,000 objects". */
     static String count(long n, String thing) {
-        return String.format(Locale.ROOT, "%,d %s%s", n, thing, n == 1 ? "" : "s");
+        return count(n, thing, thing + "s");
+    }
+
+    /** "1 entry", "2,000 entries". */
+    static String count(long n, String one, String many) {
+        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }
 
     /** " (12.50 sphere, 1.00 plane)" when the scene has more than one kind of object. */

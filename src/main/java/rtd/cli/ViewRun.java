@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.function.Supplier;
-import rtd.accel.Bvh;
 import rtd.io.ImageFormat;
 import rtd.io.SceneIO;
 import rtd.render.LinearTracer;
@@ -33,13 +32,9 @@ final class ViewRun {
 
     /** Renders {@code view} of {@code scene} with the settings' size, threads and accelerator. */
     static Result render(Scene scene, View view, RenderSettings settings) {
-        Supplier<Tracer> tracers;
-        if (settings.useBvh(scene.objects().size())) {
-            Bvh bvh = Bvh.build(scene, settings.threads());
-            tracers = bvh::newTracer;
-        } else {
-            tracers = () -> new LinearTracer(scene);
-        }
+        Supplier<Tracer> tracers = settings.paper() ? () -> new LinearTracer(scene)
+                : Accelerator.of(scene, settings.accel(), settings.width(), settings.height(), 1, settings.threads())
+                        .tracers();
         ViewShader shader = new ViewShader(view, scene.objects());
         RenderResult raw = ParallelRenderer.render(scene.camera(), tracers, tracer -> shader, settings.width(),
                 settings.height(), 1, settings.threads(), new RenderProgress());

@@ -113,6 +113,48 @@ public final class RayBundle {
         return camera;
     }
 
+    // The square of pixels whose rays these are, for a tracer that knows the camera; only for a camera's square.
+
+    /** The first column of the square. */
+    public int left() {
+        return left;
+    }
+
+    /** The first row of the square. */
+    public int top() {
+        return top;
+    }
+
+    /** The column after the square's last. */
+    public int right() {
+        return right;
+    }
+
+    /** The row after the square's last. */
+    public int bottom() {
+        return bottom;
+    }
+
+    /** The width of the picture. */
+    public int width() {
+        return width;
+    }
+
+    /** The height of the picture. */
+    public int height() {
+        return height;
+    }
+
+    /** Where across its pixel each ray passes, 0 at the corner. */
+    public float sampleX() {
+        return sampleX;
+    }
+
+    /** Where down its pixel each ray passes, 0 at the corner. */
+    public float sampleY() {
+        return sampleY;
+    }
+
     /**
      * The six numbers (origin, then direction) of the ray of the square's corner {@code k}, into
      * {@code into}: 0 top left, 1 top right, 2 bottom left, 3 bottom right; only for a square

@@ -186,9 +186,9 @@ class CommandLineTest {
         assertThat(Cli.run(EXAMPLE.toString(), "--threads", "0").exitCode()).isEqualTo(2);
         Run accel = Cli.run(EXAMPLE.toString(), "--accel", "fast");
         assertThat(accel.exitCode()).isEqualTo(2);
-        assertThat(accel.err()).contains("expected one of [auto, none, bvh]");
+        assertThat(accel.err()).contains("expected one of [auto, none, bvh, grid]");
         byte[] reference = null;
-        for (String[] choice : new String[][] {{"1", "none"}, {"64", "none"}, {"3", "bvh"}, {"2", "auto"}}) {
+        for (String[] choice : new String[][] {{"1", "none"}, {"64", "none"}, {"3", "bvh"}, {"2", "auto"}, {"2", "grid"}}) {
             Path out = dir.resolve("t" + choice[0] + choice[1] + ".png");
             Run run = Cli.run(EXAMPLE.toString(), "-o", out.toString(), "--width", "96", "--height", "54",
                     "--threads", choice[0], "--accel", choice[1]);
@@ -215,6 +215,33 @@ class CommandLineTest {
         assertThat(run.exitCode()).isZero();
         assertThat(run.err()).contains("parse").contains("build").contains("render").contains("write")
                 .contains("5,000 rays").contains("per ray: 2.00 intersection tests");
+    }
+
+    @Test
+    void autoTakesTheViewGridForALargeSceneInFlatColoursAndDrawsWhatTheBvhDraws() throws IOException {
+        StringBuilder text = new StringBuilder("orthographic_camera:(0|0|20):(0|0|-1):(50)\n");
+        java.util.Random random = new java.util.Random(5);
+        for (int i = 0; i < Accelerator.GRID_THRESHOLD; i++) {
+            text.append(String.format(java.util.Locale.ROOT, "sphere:(%.3f|%.3f|%.3f):(%.3f):(%d|%d|%d)%n",
+                    random.nextFloat() * 4 - 2, random.nextFloat() * 2 - 1, random.nextFloat() * 4 - 2,
+                    0.01 + random.nextFloat() * 0.05, i % 256, i / 256 % 256, 99));
+        }
+        Path many = Files.writeString(dir.resolve("many.txt"), text);
+        Run auto = Cli.run(many.toString(), "-o", dir.resolve("auto.png").toString(), "--stats", "--width", "200",
+                "--height", "100");
+        assertThat(auto.exitCode()).as(auto.err()).isZero();
+        assertThat(auto.err()).containsPattern("build .* view grid of [0-9,]+ cells of [0-9]+ × [0-9]+ pixels, [0-9,]+ "
+                + "entries\n").doesNotContain("BVH");
+        Run bvh = Cli.run(many.toString(), "-o", dir.resolve("bvh.png").toString(), "--stats", "--width", "200",
+                "--height", "100", "--accel", "bvh");
+        assertThat(bvh.err()).contains("BVH of").contains("BVH nodes visited");
+        assertThat(Files.readAllBytes(dir.resolve("auto.png"))).isEqualTo(Files.readAllBytes(dir.resolve("bvh.png")));
+
+        Path lit = Files.writeString(dir.resolve("lit.txt"), text + "light:(0|5|20):(255|255|255)\n");
+        Run shaded = Cli.run(lit.toString(), "-o", dir.resolve("lit.png").toString(), "--stats", "--width", "20",
+                "--height", "10");
+        assertThat(shaded.exitCode()).as(shaded.err()).isZero();
+        assertThat(shaded.err()).as("shadow rays need the BVH").contains("BVH of");
     }
 
     @Test

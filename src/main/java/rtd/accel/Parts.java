@@ -1,0 +1,71 @@
+package rtd.accel;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.Future;
+
+/**
+ * The places {@code [0, count)} cut into a part per thread of a pool, for passes whose parts run
+ * in parallel ({@link ViewGrid}); one part, on the calling thread, without a pool.
+ */
+final class Parts {
+
+    /** A pass over the places {@code [start, end)}, the part numbered {@code part}. */
+    interface Pass {
+        void run(int start, int end, int part);
+    }
+
+    /** A pass that does not need its part's number. */
+    interface Range {
+        void run(int start, int end);
+    }
+
+    final int count;
+    final int parts;
+    private final ForkJoinPool pool;
+
+    Parts(int count, ForkJoinPool pool) {
+        this.count = count;
+        this.pool = pool;
+        this.parts = pool == null ? 1 : pool.getParallelism();
+    }
+
+    /** Runs {@code pass} on every part, in parallel if there is a pool, and returns when all are done. */
+    void run(Pass pass) {
+        if (pool == null) {
+            pass.run(0, count, 0);
+            return;
+        }
+        List<Callable<Void>> tasks = new ArrayList<>();
+        for (int p = 0; p < parts; p++) {
+            int part = p;
+            tasks.add(() -> {
+                pass.run(start(part), start(part + 1), part);
+                return null;
+            });
+        }
+        for (Future<Void> done : pool.invokeAll(tasks)) {
+            try {
+                done.get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("building was interrupted", e);
+            } catch (ExecutionException e) {
+                throw e.getCause() instanceof RuntimeException failure ? failure : new IllegalStateException(e.getCause());
+            }
+        }
+    }
+
+    /** As {@link #run(Pass)}, for a pass that does not need its part's number. */
+    void run(Range range) {
+        run((start, end, part) -> range.run(start, end));
+    }
+
+    /** Where part {@code part} starts. */
+    private int start(int part) {
+        return (int) ((long) count * part / parts);
+    }
+}

@@ -1,0 +1,105 @@
+package rtd.accel;
+
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.render.Tracer;
+import rtd.render.WorkCount;
+
+/**
+ * Finds what the camera's rays hit through a {@link ViewGrid}: each ray runs the paper's
+ * intersection test and depth test (Listing 4.3, {@link NearestHit}) on the objects of its
+ * pixel's cell, and on the objects without a box. The objects a ray can hit all lie in its cell,
+ * and the depth test does not depend on the order of the tests, so the hit is the paper's loop's.
+ *
+ * <p>A ray that is not the grid camera's, such as a ray given alone, runs the tests on every
+ * object, as the paper's loop does: right for any ray, and fast only for the camera's.
+ *
+ * <p>Not thread-safe: it keeps the ray's state and counters of its own. Use one per thread.
+ */
+public final class ViewGridTracer implements Tracer {
+
+    private final ViewGrid grid;
+    private final Bvh objects;
+    private final NearestHit hit;
+    private long rays;
+
+    ViewGridTracer(ViewGrid grid) {
+        this.grid = grid;
+        this.objects = grid.objects;
+        this.hit = new NearestHit(objects);
+    }
+
+    /** The loop over every object, for any ray. */
+    @Override
+    public Hit nearestHit(Ray ray) {
+        rays++;
+        Vector3f origin = ray.origin();
+        Vector3f direction = ray.direction();
+        hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+        hit.testUnbounded();
+        if (objects.hasTree()) {
+            hit.testLeaf(0);
+        }
+        int best = hit.best();
+        if (best < 0) {
+            return null;
+        }
+        IGeometry object = objects.objects.get(best);
+        return new Hit(object, best, hit.bestT(), hit.bestDistance(), ray.pointAt(hit.bestT()));
+    }
+
+    /** The camera's rays test the objects of their cells; other rays are traced one by one. */
+    @Override
+    public void traceAll(RayBundle bundle, HitBuffer hits) {
+        if (!serves(bundle)) {
+            Tracer.super.traceAll(bundle, hits);
+            return;
+        }
+        bundle.make();
+        int squareWidth = bundle.right() - bundle.left();
+        int[] cellStart = grid.cellStart;
+        for (int i = 0; i < bundle.count(); i++) {
+            int cell = grid.cellOf(bundle.left() + i % squareWidth, bundle.top() + i / squareWidth);
+            rays++;
+            long before = hit.testsRun();
+            hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
+                    bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
+            hit.testUnbounded();
+            hit.testPlaces(grid.places, cellStart[cell], cellStart[cell + 1]);
+            hits.set(i, hit.best(), hit.bestT(), hit.bestDistance());
+            hits.setTests(i, hit.testsRun() - before);
+        }
+    }
+
+    /** The camera's rays of empty cells hit nothing, if every object has a box. */
+    @Override
+    public boolean traceIfAllMiss(RayBundle bundle) {
+        if (objects.unbounded.length > 0 || !serves(bundle)
+                || !grid.emptyOver(bundle.left(), bundle.top(), bundle.right(), bundle.bottom())) {
+            return false;
+        }
+        rays += bundle.count();
+        return true;
+    }
+
+    /** Whether the bundle holds rays of the grid's camera and picture, through points of their pixels the grid allows for. */
+    private boolean serves(RayBundle bundle) {
+        return bundle.camera() == grid.camera && bundle.width() == grid.width && bundle.height() == grid.height
+                && bundle.sampleX() >= 0 && bundle.sampleX() <= grid.latestOffset
+                && bundle.sampleY() >= 0 && bundle.sampleY() <= grid.latestOffset;
+    }
+
+    @Override
+    public long testsRun() {
+        return hit.testsRun();
+    }
+
+    @Override
+    public WorkCount work() {
+        return new WorkCount(rays, BvhTracer.testsByKind(objects, hit.tests(), hit.unboundedTests()), 0);
+    }
+}

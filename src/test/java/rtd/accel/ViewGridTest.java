@@ -1,0 +1,208 @@
+package rtd.accel;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import rtd.camera.OrthographicCamera;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Sphere;
+import rtd.image.Color;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.scene.Scene;
+import rtd.testing.MixedScenes;
+
+/**
+ * The view grid's answer to "what does this camera ray hit?" is the paper's loop's, bit for bit:
+ * for random scenes of every kind of object seen by random orthographic cameras, through the
+ * pixels' corners and through samples, and where rounding lets the test hit far beside a sphere.
+ */
+@DisplayName("The view grid finds the loop's hit")
+class ViewGridTest {
+
+    private static final int WIDTH = 72;
+    private static final int HEIGHT = 40;
+
+    private static void assertSame(Hit actual, Hit expected, String what) {
+        if (expected == null) {
+            assertThat(actual).as(what).isNull();
+            return;
+        }
+        assertThat(actual).as(what).isNotNull();
+        assertThat(actual.index()).as(what + ": object").isEqualTo(expected.index());
+        assertThat(Float.floatToIntBits(actual.t())).as(what + ": t").isEqualTo(Float.floatToIntBits(expected.t()));
+        assertThat(actual.distance()).as(what + ": distance").isEqualTo(expected.distance());
+        assertThat(actual.point()).as(what + ": point").isEqualTo(expected.point());
+    }
+
+    /**
+     * Traces every pixel's ray through {@code (x + offset, y + offset)} as the renderer does, in
+     * squares of 8 × 8, asks first whether a whole square misses, and checks each against the
+     * loop; answers the hits.
+     */
+    private static List<Hit> checkEveryPixel(Scene scene, ViewGrid grid, int samples, float offset) {
+        ViewGridTracer tracer = grid.newTracer();
+        RayBundle bundle = new RayBundle(64);
+        HitBuffer hits = new HitBuffer(64);
+        List<Hit> found = new ArrayList<>();
+        for (int top = 0; top < HEIGHT; top += 8) {
+            for (int left = 0; left < WIDTH; left += 8) {
+                int right = Math.min(WIDTH, left + 8);
+                int bottom = Math.min(HEIGHT, top + 8);
+                bundle.fill(scene.camera(), left, top, right, bottom, WIDTH, HEIGHT, offset, offset);
+                boolean allMiss = tracer.traceIfAllMiss(bundle);
+                if (!allMiss) {
+                    tracer.traceAll(bundle, hits);
+                }
+                for (int i = 0; i < bundle.count(); i++) {
+                    Ray ray = bundle.ray(i);
+                    Hit expected = scene.nearestHit(ray);
+                    String what = "samples " + samples + ", pixel (" + (left + i % (right - left)) + ", "
+                            + (top + i / (right - left)) + ") " + ray;
+                    assertSame(allMiss ? null : hits.hit(i, bundle, scene.objects()), expected, what);
+                    if (expected != null) {
+                        found.add(expected);
+                    }
+                }
+            }
+        }
+        return found;
+    }
+
+    private static OrthographicCamera randomCamera(Random random) {
+        Vector3f direction = switch (random.nextInt(4)) {
+            case 0 -> new Vector3f(0, 0, -1); // the paper's
+            case 1 -> new Vector3f(0, -1, 0); // straight down: the image axes' special case
+            default -> new Vector3f(random.nextFloat() * 2 - 1, random.nextFloat() * 2 - 1, random.nextFloat() * 2 - 1);
+        };
+        float distance = random.nextBoolean() ? 5 : 60; // inside the scene, or outside
+        Vector3f position = direction.normalize().multiply(-distance)
+                .add(new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f));
+        return new OrthographicCamera(position, direction.multiply(0.5f + random.nextFloat() * 2),
+                2 + random.nextFloat() * 6);
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8})
+    void forEveryPixelOfRandomScenesSeenByRandomOrthographicCameras(long seed) {
+        Scene mixed = MixedScenes.generate(seed, 100 + (int) (seed * 89 % 300));
+        Random random = new Random(seed);
+        int hits = 0;
+        for (int view = 0; view < 4; view++) {
+            Scene scene = new Scene(mixed.ambient(), randomCamera(random), mixed.objects());
+            for (int samples = 1; samples <= 3; samples++) {
+                ViewGrid grid = ViewGrid.build(scene, WIDTH, HEIGHT, samples, 1);
+                float offset = samples == 1 ? 0 : (samples - 0.5f) / samples; // the last sample of a pixel
+                hits += checkEveryPixel(scene, grid, samples, offset).size();
+                if (samples > 1) {
+                    hits += checkEveryPixel(scene, grid, samples, 0.5f / samples).size(); // and the first
+                }
+            }
+        }
+        assertThat(hits).as("rays that hit something").isGreaterThan(10_000);
+    }
+
+    @Test
+    void evenWhereRoundingLetsTheTestHitFarBesideSmallSpheresSeenFromAfar() {
+        // From 2,000 units away a sphere's test rounds its discriminant by more than a small
+        // sphere's r²: the paper's loop reports hits well outside the sphere, which the grid must
+        // find as well, not only the sphere's outline.
+        Random random = new Random(7);
+        List<IGeometry> objects = new ArrayList<>();
+        for (int i = 0; i < 60; i++) {
+            Vector3f centre = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
+            objects.add(new Sphere(centre, 0.002f + random.nextFloat() * 0.02f, new Color(i, 2 * i, 3 * i)));
+        }
+        Vector3f direction = new Vector3f(0.3f, -0.2f, -1);
+        OrthographicCamera camera = new OrthographicCamera(direction.normalize().multiply(-2000), direction, 60);
+        Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
+        List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
+        long beside = hits.stream().filter(hit -> {
+            Sphere sphere = (Sphere) hit.object();
+            return hit.point().subtract(sphere.center()).magnitude() > 1.5 * sphere.radius();
+        }).count();
+        assertThat(beside).as("hits farther than 1.5 r from the centre, of %d", hits.size()).isGreaterThan(20);
+    }
+
+    @Test
+    void aSpheresFootprintIsThePixelsOfItsOutlineGrownByTheRoundingOfItsTest() {
+        // Camera at z = 20 looking down −z, 50 pixels a unit, 1920 × 1080: u = (1, 0, 0), v = (0, −1, 0).
+        // A sphere at (1, 0.5, 0) of radius 0.1 has the box ±0.1002 (Sphere.bounds) and is met
+        // 20.1002 units from the plane, 20.139 with the cone: its rounding grows the box by
+        // 2e-6 · 20.139 + 5.597e-6 · 20.139² = 0.00231. So x = 960 + 50 · (1 ± 0.10251) runs from
+        // 1004.87 to 1015.13 and y = 540 + 50 · (−0.5 ± 0.10251) from 509.87 to 520.13.
+        OrthographicCamera camera = new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50);
+        Sphere sphere = new Sphere(new Vector3f(1, 0.5f, 0), 0.1f, new Color(1, 2, 3));
+        float[] box = new float[6];
+        sphere.putBounds(box, 0);
+        int[] pixels = new int[4];
+        boolean seen = new ImageFootprint(camera, 1920, 1080, 0).put(box, 0, sphere.rounding().linear(),
+                sphere.rounding().quadratic(), pixels, 0);
+        assertThat(seen).isTrue();
+        assertThat(pixels).containsExactly(1005, 510, 1015, 520);
+        // Samples up to 5/6 into a pixel: the pixel before each range may send one in.
+        new ImageFootprint(camera, 1920, 1080, 5 / 6.0).put(box, 0, sphere.rounding().linear(),
+                sphere.rounding().quadratic(), pixels, 0);
+        assertThat(pixels).containsExactly(1005, 510, 1015, 520);
+        new ImageFootprint(camera, 1920, 1080, 0.99).put(box, 0, sphere.rounding().linear(),
+                sphere.rounding().quadratic(), pixels, 0);
+        assertThat(pixels).containsExactly(1004, 509, 1015, 520);
+    }
+
+    @Test
+    void anObjectBehindTheCameraOrBesideThePictureHasNoFootprint() {
+        OrthographicCamera camera = new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50);
+        int[] pixels = {-7, -7, -7, -7};
+        float[] behind = new float[6];
+        new Sphere(new Vector3f(0, 0, 21), 0.5f, new Color(1, 2, 3)).putBounds(behind, 0);
+        float[] beside = new float[6];
+        new Sphere(new Vector3f(30, 0, 0), 0.5f, new Color(1, 2, 3)).putBounds(beside, 0);
+        ImageFootprint footprint = new ImageFootprint(camera, 1920, 1080, 0);
+        assertThat(footprint.put(behind, 0, 0, 0, pixels, 0)).isFalse();
+        assertThat(footprint.put(beside, 0, 0, 0, pixels, 0)).isFalse();
+        assertThat(pixels).containsOnly(-7);
+        float[] through = new float[6]; // the camera's plane cuts it: rays start inside it
+        new Sphere(new Vector3f(0, 0, 20.2f), 0.5f, new Color(1, 2, 3)).putBounds(through, 0);
+        assertThat(footprint.put(through, 0, 0, 0, pixels, 0)).isTrue();
+        assertThat(pixels).containsExactly(935, 515, 985, 565);
+    }
+
+    @Test
+    void isTheSameForOneThreadAndForTwo() {
+        Random random = new Random(3);
+        List<IGeometry> objects = new ArrayList<>();
+        for (int i = 0; i < 30_000; i++) { // above the count built in parallel
+            Vector3f centre = new Vector3f(random.nextFloat() * 40 - 20, random.nextFloat() * 20 - 10, random.nextFloat() * 10);
+            objects.add(new Sphere(centre, 0.01f + random.nextFloat() * 0.3f, new Color(1, 2, 3)));
+        }
+        Scene scene = new Scene(new Color(0, 0, 0),
+                new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50), objects);
+        ViewGrid one = ViewGrid.build(scene, 1920, 1080, 1, 1);
+        ViewGrid two = ViewGrid.build(scene, 1920, 1080, 1, 2);
+        assertThat(two.shift).isEqualTo(one.shift);
+        assertThat(two.cellStart).isEqualTo(one.cellStart);
+        assertThat(two.places).isEqualTo(one.places);
+        assertThat(one.entries()).isGreaterThan(objects.size());
+    }
+
+    @Test
+    void aRayThatIsNotTheCamerasFindsTheLoopsHitToo() {
+        Scene mixed = MixedScenes.generate(11, 200);
+        Scene scene = new Scene(mixed.ambient(), randomCamera(new Random(11)), mixed.objects());
+        ViewGridTracer tracer = ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1).newTracer();
+        Random random = new Random(11);
+        for (int r = 0; r < 2_000; r++) {
+            Ray ray = MixedScenes.ray(random, scene);
+            assertSame(tracer.nearestHit(ray), scene.nearestHit(ray), "ray " + r + " " + ray);
+        }
+    }
+}
