@@ -54,12 +54,8 @@ public final class Bvh {
     final int maxDepth;
     final List<IGeometry> objects;
 
-    private Bvh(BvhBuilder builder, List<IGeometry> objects, boolean oneLeaf) {
-        if (oneLeaf) {
-            builder.buildOneLeaf();
-        } else {
-            builder.build();
-        }
+    private Bvh(BvhBuilder builder, List<IGeometry> objects) {
+        builder.build();
         Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
         this.boxes = compaction.boxes();
         this.nodes = compaction.nodes();
@@ -125,23 +121,35 @@ public final class Bvh {
     public static Bvh build(Scene scene, int threads) {
         List<IGeometry> objects = scene.objects();
         if (threads == 1 || objects.size() < BvhBuilder.PARALLEL_THRESHOLD) {
-            return new Bvh(new BvhBuilder(objects, null), objects, false);
+            return new Bvh(new BvhBuilder(objects, null), objects);
         }
         ForkJoinPool pool = new ForkJoinPool(threads);
         try {
-            return new Bvh(new BvhBuilder(objects, pool), objects, false);
+            return new Bvh(new BvhBuilder(objects, pool), objects);
         } finally {
             pool.shutdown();
         }
     }
 
     /**
-     * All of the scene's objects with a box in one leaf, in file order, packed for the tests as
-     * a hierarchy's leaves are, on {@code pool} (or on the calling thread if it is null): no
-     * tree, for a {@link ViewGrid}, which finds the objects a ray may hit in its own way.
+     * A hierarchy of one leaf, {@code leaves}, and the objects without a box beside it: no tree,
+     * for a {@link ViewGrid}, which finds the objects a ray may hit in its own way.
      */
-    static Bvh oneLeaf(Scene scene, ForkJoinPool pool) {
-        return new Bvh(new BvhBuilder(scene.objects(), pool), scene.objects(), true);
+    static Bvh oneLeaf(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
+        return new Bvh(leaves, unboundedOrder, objects);
+    }
+
+    private Bvh(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
+        this.boxes = new float[BOX]; // a root that no walk reads: the grid's tracer tests the leaf's objects itself
+        this.nodes = new int[] {0, leaves.fileOrder.length};
+        this.leaves = leaves;
+        this.unboundedOrder = unboundedOrder;
+        this.unbounded = new IGeometry[unboundedOrder.length];
+        for (int i = 0; i < unbounded.length; i++) {
+            unbounded[i] = objects.get(unboundedOrder[i]);
+        }
+        this.maxDepth = 0;
+        this.objects = objects;
     }
 
     /** A new tracer that follows rays through this hierarchy; one per thread. */

@@ -179,16 +179,6 @@ final class BvhBuilder {
                 : pool.invoke(new Subtree(0, 0, count, 0, null, primary));
     }
 
-    /**
-     * Makes all objects one leaf, in file order, instead of a tree: for a {@link ViewGrid},
-     * which finds the objects a ray may hit without one.
-     */
-    void buildOneLeaf() {
-        tree.setBox(0, measure(primary, 0, count).box());
-        tree.setLeaf(0, 0, count);
-        maxDepth = 0;
-    }
-
     /** The objects' places in the file, in the order of the tree's leaves ({@link #count} of them). */
     int[] order() {
         return primary.order();

@@ -34,6 +34,8 @@ final class ImageFootprint {
     private final double rx;
     private final double ry;
     private final double rz;
+    /** |R|, to turn distances along R into t. */
+    private final double length;
     private final double ux;
     private final double uy;
     private final double uz;
@@ -65,7 +67,7 @@ final class ImageFootprint {
         px = pos.x();
         py = pos.y();
         pz = pos.z();
-        double length = Math.sqrt((double) dir.x() * dir.x() + (double) dir.y() * dir.y() + (double) dir.z() * dir.z());
+        length = Math.sqrt((double) dir.x() * dir.x() + (double) dir.y() * dir.y() + (double) dir.z() * dir.z());
         rx = dir.x() / length;
         ry = dir.y() / length;
         rz = dir.z() / length;
@@ -89,24 +91,26 @@ final class ImageFootprint {
     /**
      * The pixels {@code [x0, x1] × [y0, y1]} (inclusive, within the image) whose rays may hit
      * the object of box {@code boxes[at .. at+5]} and rounding {@code linear}, {@code quadratic},
-     * into {@code into[to .. to+3]} as x0, y0, x1, y1; false, with nothing written, if there are
-     * none. A box the numbers cannot place (not finite, or a rounding too wide to bound) covers
-     * the whole image.
+     * into {@code into[to .. to+3]} as x0, y0, x1, y1; and the answer: a t before which none of
+     * them hits it. NaN, with nothing written, if no ray of the picture can hit it. A box the
+     * numbers cannot place (not finite, or a rounding too wide to bound) covers the whole image,
+     * from t = −∞.
      */
-    boolean put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
+    float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
         double hx = (boxes[at + 3] - (double) boxes[at]) / 2;
         double hy = (boxes[at + 4] - (double) boxes[at + 1]) / 2;
         double hz = (boxes[at + 5] - (double) boxes[at + 2]) / 2;
         double cx = (boxes[at] + (double) boxes[at + 3]) / 2 - px;
         double cy = (boxes[at + 1] + (double) boxes[at + 4]) / 2 - py;
         double cz = (boxes[at + 2] + (double) boxes[at + 5]) / 2 - pz;
-        double farSide = cx * rx + cy * ry + cz * rz + Math.abs(rx) * hx + Math.abs(ry) * hy + Math.abs(rz) * hz;
+        double middle = cx * rx + cy * ry + cz * rz;
+        double depth = Math.abs(rx) * hx + Math.abs(ry) * hy + Math.abs(rz) * hz;
         double widest = linear + IGeometry.ROUNDING_CONE;
-        if (farSide + originError < 0) {
-            return false; // wholly behind the rays' origins: a hit lies no farther from the box than √3 growths
+        if (middle + depth + originError < 0) {
+            return Float.NaN; // wholly behind the rays' origins: a hit lies no farther from the box than √3 growths
         }
         // a hit runs L ≤ farSide + √3·growth(L) ≤ farSide + √3·widest·L from the plane
-        double reach = (farSide + originError) / (1 - Math.sqrt(3) * widest);
+        double reach = (middle + depth + originError) / (1 - Math.sqrt(3) * widest);
         double grow = linear * reach + Math.min(IGeometry.ROUNDING_CONE * reach, quadratic * reach * reach);
         double a = cx * ux + cy * uy + cz * uz;
         double b = cx * vx + cy * vy + cz * vz;
@@ -115,10 +119,15 @@ final class ImageFootprint {
         double halfB = Math.abs(vx) * (hx + grow) + Math.abs(vy) * (hy + grow) + Math.abs(vz) * (hz + grow)
                 + reach * driftV + originError;
         if (!(widest * Math.sqrt(3) < 0.5 && Double.isFinite(halfA + halfB + a + b))) {
-            return whole(into, to);
+            whole(into, to);
+            return Float.NEGATIVE_INFINITY;
         }
-        return range(halfWidth + zoom * (a - halfA), halfWidth + zoom * (a + halfA), width, into, to)
+        boolean seen = range(halfWidth + zoom * (a - halfA), halfWidth + zoom * (a + halfA), width, into, to)
                 && range(halfHeight + zoom * (b - halfB), halfHeight + zoom * (b + halfB), height, into, to + 1);
+        // the hit P = O + t·R lies in the grown box, so t·|R| = (P − O)·R/|R| is at least its near side less the origin's error
+        double nearest = (middle - depth - Math.sqrt(3) * grow - originError) / length;
+        float before = Math.nextDown((float) (nearest - 1e-6 * Math.abs(nearest)));
+        return !seen ? Float.NaN : before == before ? before : Float.NEGATIVE_INFINITY;
     }
 
     /**
@@ -137,11 +146,10 @@ final class ImageFootprint {
         return true;
     }
 
-    private boolean whole(int[] into, int to) {
+    private void whole(int[] into, int to) {
         into[to] = 0;
         into[to + 1] = 0;
         into[to + 2] = width - 1;
         into[to + 3] = height - 1;
-        return true;
     }
 }

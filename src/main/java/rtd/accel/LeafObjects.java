@@ -3,6 +3,7 @@ package rtd.accel;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.IntConsumer;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
 import rtd.geometry.Rounding;
@@ -37,7 +38,7 @@ final class LeafObjects {
     private final List<IGeometry> scene;
     /** Each object's place in the scene file. */
     final int[] fileOrder;
-    /** Each object's box, six floats: min x, y, z, max x, y, z. */
+    /** Each object's box, six floats: min x, y, z, max x, y, z; empty for a {@link ViewGrid}'s leaf, which needs none. */
     final float[] boxes;
     /** Each object's kind, an index into {@link #kindNames}. */
     final byte[] kinds;
@@ -65,6 +66,21 @@ final class LeafObjects {
      * (and again at a sphere's centre), and was a fifth of the build of a million spheres.
      */
     LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, BvhBuilder threads, float[] roundings) {
+        this(scene, fileOrder, boxes, threads.spare(), threads.parallel() ? threads::forEach : null, roundings);
+    }
+
+    /** Runs an action for 0 to n − 1, in parallel. */
+    interface ParallelLoop {
+        void forEach(int n, IntConsumer action);
+    }
+
+    /**
+     * As {@link #LeafObjects(List, int[], float[], BvhBuilder, float[])}, packing into
+     * {@code spare}'s arrays where they are long enough, with {@code loop}, or on this thread if
+     * it is null; without the roundings if {@code roundings} is null.
+     */
+    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, ObjectArrays spare, ParallelLoop loop,
+            float[] roundings) {
         this.scene = scene;
         this.fileOrder = fileOrder;
         this.boxes = boxes;
@@ -82,7 +98,7 @@ final class LeafObjects {
         List<String> leafNames = new ArrayList<>();
         this.kinds = new byte[count];
         this.testOf = new byte[count];
-        this.offsets = reused(threads.spare().order(), count);
+        this.offsets = reused(spare.order(), count);
         int[] leafPlaces = new int[scene.size()]; // per place in the file, the place in leaf order, or −1 for none
         Arrays.fill(leafPlaces, -1);
         int size = 0;
@@ -101,9 +117,9 @@ final class LeafObjects {
             size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
         }
         this.kindNames = leafNames.toArray(String[]::new);
-        this.numbers = reused(threads.spare().boxes(), size);
-        if (threads.parallel()) {
-            threads.forEach(scene.size(), f -> pack(f, leafPlaces[f], roundings));
+        this.numbers = reused(spare.boxes(), size);
+        if (loop != null) {
+            loop.forEach(scene.size(), f -> pack(f, leafPlaces[f], roundings));
         } else {
             for (int f = 0; f < scene.size(); f++) {
                 pack(f, leafPlaces[f], roundings);
@@ -181,9 +197,11 @@ final class LeafObjects {
             return;
         }
         IGeometry object = scene.get(f);
-        Rounding rounding = object.rounding();
-        roundings[2 * i] = rounding.linear();
-        roundings[2 * i + 1] = rounding.quadratic();
+        if (roundings != null) {
+            Rounding rounding = object.rounding();
+            roundings[2 * i] = rounding.linear();
+            roundings[2 * i + 1] = rounding.quadratic();
+        }
         if (object instanceof Sphere sphere) {
             sphere.putTestNumbers(numbers, offsets[i]);
         } else if (object instanceof Triangle triangle) {

@@ -248,6 +248,26 @@ final class NearestHit {
         }
     }
 
+    /**
+     * As {@link #testPlaces(int[], int, int)}, for places in the order of {@code nearest}, a t
+     * before which no hit on the object at a place lies, growing along them: stops at the
+     * first that lies beyond the nearest hit found, by more than rounding can explain, as all
+     * after it do.
+     */
+    void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest) {
+        for (int k = from; k < to; k++) {
+            int place = places[k];
+            if (nearest[place] > skipBeyond) {
+                return;
+            }
+            treeTests++;
+            if (severalKinds) {
+                tests[leaves.kinds[place]]++;
+            }
+            test(place);
+        }
+    }
+
     /** The paper's intersection test and depth test on the object at place {@code i} in leaf order. */
     private void test(int i) {
         float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);

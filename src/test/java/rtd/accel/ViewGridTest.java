@@ -145,10 +145,12 @@ class ViewGridTest {
         float[] box = new float[6];
         sphere.putBounds(box, 0);
         int[] pixels = new int[4];
-        boolean seen = new ImageFootprint(camera, 1920, 1080, 0).put(box, 0, sphere.rounding().linear(),
+        float nearest = new ImageFootprint(camera, 1920, 1080, 0).put(box, 0, sphere.rounding().linear(),
                 sphere.rounding().quadratic(), pixels, 0);
-        assertThat(seen).isTrue();
         assertThat(pixels).containsExactly(1005, 510, 1015, 520);
+        // Its box's near side is 19.8998 from the plane, less √3 growths (0.00400), the origins'
+        // error (0.00008) and a millionth for rounding (0.00002): 19.8957.
+        assertThat(nearest).isCloseTo(19.8957f, org.assertj.core.data.Offset.offset(0.00002f));
         // Samples up to 5/6 into a pixel: the pixel before each range may send one in.
         new ImageFootprint(camera, 1920, 1080, 5 / 6.0).put(box, 0, sphere.rounding().linear(),
                 sphere.rounding().quadratic(), pixels, 0);
@@ -167,12 +169,12 @@ class ViewGridTest {
         float[] beside = new float[6];
         new Sphere(new Vector3f(30, 0, 0), 0.5f, new Color(1, 2, 3)).putBounds(beside, 0);
         ImageFootprint footprint = new ImageFootprint(camera, 1920, 1080, 0);
-        assertThat(footprint.put(behind, 0, 0, 0, pixels, 0)).isFalse();
-        assertThat(footprint.put(beside, 0, 0, 0, pixels, 0)).isFalse();
+        assertThat(footprint.put(behind, 0, 0, 0, pixels, 0)).isNaN();
+        assertThat(footprint.put(beside, 0, 0, 0, pixels, 0)).isNaN();
         assertThat(pixels).containsOnly(-7);
         float[] through = new float[6]; // the camera's plane cuts it: rays start inside it
         new Sphere(new Vector3f(0, 0, 20.2f), 0.5f, new Color(1, 2, 3)).putBounds(through, 0);
-        assertThat(footprint.put(through, 0, 0, 0, pixels, 0)).isTrue();
+        assertThat(footprint.put(through, 0, 0, 0, pixels, 0)).isNegative(); // the near side lies behind the plane
         assertThat(pixels).containsExactly(935, 515, 985, 565);
     }
 

@@ -1,0 +1,273 @@
+package rtd.accel;
+
+import java.util.List;
+import java.util.concurrent.ForkJoinPool;
+import rtd.camera.OrthographicCamera;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Rounding;
+
+/**
+ * Builds a {@link ViewGrid}, in passes over arrays, each on all threads where it can be: every
+ * object's footprint on the image and nearest t ({@link ImageFootprint}); a place for it in the
+ * leaf, by the square of the image it lies in, so that neighbours on the image lie side by side
+ * in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists; and each
+ * list sorted nearest first. The grid is the same for any number of threads.
+ */
+final class ViewGridBuilder {
+
+    /** An object that some ray of the picture can hit, one that none can, one without a box (a plane). */
+    private static final byte SEEN = 0;
+    private static final byte UNSEEN = 1;
+    private static final byte UNBOUNDED = 2;
+    /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's squares. */
+    private static final int TILE_SHIFT = 3;
+
+    private final List<IGeometry> objects;
+    private final ForkJoinPool pool;
+    private final int width;
+    private final int height;
+    /** The most cell entries the grid is made with if a larger cell keeps under it (4 bytes each). */
+    private static final long MOST_ENTRIES = 1L << 25;
+    /** How many objects at most {@link #cellShift} looks at to estimate the entries. */
+    private static final int SAMPLE = 1 << 16;
+
+    /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
+    private final int[] footprints;
+    /** Per object in file order: a t before which no ray hits it, if it is {@link #SEEN}. */
+    private final float[] nearest;
+    private final byte[] state;
+    /** Per object in file order: its place in the leaf, −1 for one without a box. */
+    private int[] leafOf;
+
+    ViewGridBuilder(List<IGeometry> objects, int width, int height, ForkJoinPool pool) {
+        this.objects = objects;
+        this.pool = pool;
+        this.width = width;
+        this.height = height;
+        this.footprints = new int[4 * objects.size()];
+        this.nearest = new float[objects.size()];
+        this.state = new byte[objects.size()];
+    }
+
+    /** The grid of {@code camera}'s rays through points up to {@code latestOffset} into their pixels, {@code samples²} a pixel. */
+    ViewGrid build(OrthographicCamera camera, float latestOffset, int samples) {
+        measure(new ImageFootprint(camera, width, height, latestOffset));
+        int[] fileOrder = leafOrder();
+        Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
+        int shift = cellShift(footprints, width, height, samples);
+        int columns = ViewGrid.cellsAlong(width, shift);
+        int[] cellStart = new int[columns * ViewGrid.cellsAlong(height, shift) + 1];
+        float[] nearestByPlace = new float[fileOrder.length];
+        int[] places = fill(shift, columns, cellStart, nearestByPlace);
+        sortNearestFirst(cellStart, places, nearestByPlace);
+        return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
+    }
+
+    /** Each object's box, footprint and nearest t, and whether a ray can see it. */
+    private void measure(ImageFootprint footprint) {
+        new Parts(objects.size(), pool).run((start, end) -> {
+            float[] box = new float[6];
+            for (int f = start; f < end; f++) {
+                IGeometry object = objects.get(f);
+                object.putBounds(box, 0);
+                Rounding rounding = object.rounding();
+                float t = isFinite(box) ? footprint.put(box, 0, rounding.linear(), rounding.quadratic(), footprints, 4 * f)
+                        : Float.NaN;
+                nearest[f] = t;
+                state[f] = t == t ? SEEN : isFinite(box) ? UNSEEN : UNBOUNDED;
+                if (state[f] != SEEN) {
+                    footprints[4 * f] = 1; // x0 > x1: no pixel
+                    footprints[4 * f + 2] = 0;
+                }
+            }
+        });
+    }
+
+    private static boolean isFinite(float[] box) {
+        for (float value : box) {
+            if (!Float.isFinite(value)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Gives each object with a box its place in the leaf, {@link #leafOf}: the objects seen by
+     * the square of 8 × 8 pixels their footprint's middle lies in, square after square, row by
+     * row; then those no ray sees. Answers the places' objects ({@code fileOrder}).
+     */
+    private int[] leafOrder() {
+        int across = ViewGrid.cellsAlong(width, TILE_SHIFT);
+        int tiles = across * ViewGrid.cellsAlong(height, TILE_SHIFT);
+        leafOf = new int[objects.size()];
+        int[] next = new int[tiles + 2];
+        for (int f = 0; f < leafOf.length; f++) {
+            int at = 4 * f;
+            if (state[f] == UNBOUNDED) {
+                leafOf[f] = -1;
+                continue;
+            }
+            int tile = state[f] == UNSEEN ? tiles
+                    : ((footprints[at + 1] + footprints[at + 3]) / 2 >> TILE_SHIFT) * across
+                            + ((footprints[at] + footprints[at + 2]) / 2 >> TILE_SHIFT);
+            leafOf[f] = tile;
+            next[tile + 1]++;
+        }
+        for (int t = 1; t < next.length; t++) {
+            next[t] += next[t - 1]; // now where each square's objects start
+        }
+        int[] fileOrder = new int[next[tiles + 1]];
+        for (int f = 0; f < leafOf.length; f++) {
+            if (leafOf[f] >= 0) {
+                int place = next[leafOf[f]]++;
+                leafOf[f] = place;
+                fileOrder[place] = f;
+            }
+        }
+        return fileOrder;
+    }
+
+    /** The numbers of the objects' tests, packed in leaf order. */
+    private LeafObjects pack(int[] fileOrder) {
+        LeafObjects.ParallelLoop loop = pool == null ? null
+                : (n, action) -> new Parts(n, pool).run((start, end) -> {
+                    for (int i = start; i < end; i++) {
+                        action.accept(i);
+                    }
+                });
+        return new LeafObjects(objects, fileOrder, new float[0], ObjectArrays.of(0), loop, null);
+    }
+
+    /** The places in the file of the objects without a box, in file order. */
+    private int[] unboundedOrder() {
+        int count = 0;
+        for (byte s : state) {
+            count += s == UNBOUNDED ? 1 : 0;
+        }
+        int[] order = new int[count];
+        for (int f = 0, k = 0; k < count; f++) {
+            if (state[f] == UNBOUNDED) {
+                order[k++] = f;
+            }
+        }
+        return order;
+    }
+
+    /**
+     * The cell side's power of two for which building and tracing together cost least: each
+     * entry of an object in a cell costs a write, and a test by each ray of the cell
+     * ({@code 4^shift · samples²} rays). The entries are estimated on a sample of the objects.
+     * A side whose grid would hold more than {@link #MOST_ENTRIES} entries is passed over when
+     * a larger one does not.
+     */
+    private static int cellShift(int[] footprints, int width, int height, int samples) {
+        int count = footprints.length / 4;
+        int step = Math.max(1, count / SAMPLE);
+        int best = 0;
+        double bestCost = Double.POSITIVE_INFINITY;
+        for (int shift = 0; shift < 31; shift++) {
+            long entries = 0;
+            for (int i = 0; i < count; i += step) {
+                entries += cellsOf(footprints, 4 * i, shift);
+            }
+            double estimate = (double) entries * count / ((count + step - 1) / step);
+            double rays = (double) (1L << (2 * shift)) * samples * samples;
+            double cost = estimate * (1 + rays) * (estimate > MOST_ENTRIES ? 1e6 : 1);
+            if (cost < bestCost) {
+                best = shift;
+                bestCost = cost;
+            }
+            if (1 << shift >= Math.max(width, height)) {
+                break; // one cell holds the whole image: no more entries than objects
+            }
+        }
+        return best;
+    }
+
+    /** The number of cells of side {@code 1 << shift} that the footprint at {@code at} overlaps. */
+    private static long cellsOf(int[] footprints, int at, int shift) {
+        if (footprints[at] > footprints[at + 2]) {
+            return 0;
+        }
+        long across = (footprints[at + 2] >> shift) - (footprints[at] >> shift) + 1;
+        long down = (footprints[at + 3] >> shift) - (footprints[at + 1] >> shift) + 1;
+        return across * down;
+    }
+
+    /**
+     * Writes each seen object's leaf place into the cells its footprint overlaps, part by part of
+     * the objects in parallel: each part counts its objects per cell; a cell's objects take
+     * places in the order of the parts, each part's from where the earlier parts' end, and
+     * {@code cellStart} becomes the running sum; then each part writes its objects' places into
+     * theirs, and their nearest t by place into {@code nearestByPlace}. So a cell's objects come
+     * in file order, however many parts there are.
+     */
+    private int[] fill(int shift, int columns, int[] cellStart, float[] nearestByPlace) {
+        int cells = cellStart.length - 1;
+        Parts parts = new Parts(objects.size(), pool);
+        int[][] next = new int[parts.parts][cells];
+        parts.run((start, end, part) -> {
+            int[] counts = next[part];
+            for (int f = start; f < end; f++) {
+                if (state[f] == SEEN) {
+                    int at = 4 * f;
+                    for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
+                        for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
+                            counts[y * columns + x]++;
+                        }
+                    }
+                }
+            }
+        });
+        int total = 0;
+        for (int c = 0; c < cells; c++) {
+            cellStart[c] = total;
+            for (int[] counts : next) {
+                int count = counts[c];
+                counts[c] = total;
+                total += count;
+            }
+        }
+        cellStart[cells] = total;
+        int[] places = new int[total];
+        parts.run((start, end, part) -> {
+            int[] cursor = next[part];
+            for (int f = start; f < end; f++) {
+                if (state[f] == SEEN) {
+                    int at = 4 * f;
+                    int place = leafOf[f];
+                    nearestByPlace[place] = nearest[f];
+                    for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
+                        for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
+                            places[cursor[y * columns + x]++] = place;
+                        }
+                    }
+                }
+            }
+        });
+        return places;
+    }
+
+    /**
+     * Sorts each cell's objects by their nearest t, in parallel by cells: an insertion sort, as
+     * a cell holds a dozen or so, which keeps objects of equal t in file order.
+     */
+    private void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace) {
+        new Parts(cellStart.length - 1, pool).run((first, end) -> {
+            for (int c = first; c < end; c++) {
+                int from = cellStart[c];
+                for (int k = from + 1; k < cellStart[c + 1]; k++) {
+                    int place = places[k];
+                    float t = nearestByPlace[place];
+                    int j = k - 1;
+                    while (j >= from && nearestByPlace[places[j]] > t) {
+                        places[j + 1] = places[j];
+                        j--;
+                    }
+                    places[j + 1] = place;
+                }
+            }
+        });
+    }
+}
