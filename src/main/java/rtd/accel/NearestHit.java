@@ -235,24 +235,10 @@ final class NearestHit {
 
     /**
      * The paper's intersection test and depth test on the objects at places
-     * {@code places[from .. to)} in leaf order: the objects of a {@link ViewGrid}'s cell.
-     */
-    void testPlaces(int[] places, int from, int to) {
-        treeTests += to - from;
-        for (int k = from; k < to; k++) {
-            int place = places[k];
-            if (severalKinds) {
-                tests[leaves.kinds[place]]++;
-            }
-            test(place);
-        }
-    }
-
-    /**
-     * As {@link #testPlaces(int[], int, int)}, for places in the order of {@code nearest}, a t
-     * before which no hit on the object at a place lies, growing along them: stops at the
-     * first that lies beyond the nearest hit found, by more than rounding can explain, as all
-     * after it do.
+     * {@code places[from .. to)} in leaf order (a {@link ViewGrid}'s cell), in the order of
+     * {@code nearest}, a t before which no hit on the object at a place lies, growing along
+     * them: stops at the first that lies beyond the nearest hit found, by more than rounding
+     * can explain, as all after it do.
      */
     void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest) {
         for (int k = from; k < to; k++) {

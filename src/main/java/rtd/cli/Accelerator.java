@@ -23,7 +23,7 @@ record Accelerator(Supplier<Tracer> tracers, String built, boolean walksTree) {
      * squares of rays, tuned on the paper's two spheres, are as fast, and already compiled for
      * the warm-up.
      */
-    static final int GRID_THRESHOLD = 10_000;
+    static final int GRID_THRESHOLD = 1_000;
 
     /**
      * Builds what {@code accel} asks for {@code scene}, for a {@code width × height} picture with
