@@ -51,36 +51,61 @@ final class ViewGridBuilder {
 
     /** The grid of {@code camera}'s rays through points up to {@code latestOffset} into their pixels, {@code samples²} a pixel. */
     ViewGrid build(OrthographicCamera camera, float latestOffset, int samples) {
-        measure(new ImageFootprint(camera, width, height, latestOffset));
-        int[] fileOrder = leafOrder();
-        Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
-        int shift = cellShift(footprints, width, height, samples);
+        ImageFootprint footprint = new ImageFootprint(camera, width, height, latestOffset);
+        int shift = cellShift(footprint, samples);
         int columns = ViewGrid.cellsAlong(width, shift);
         int[] cellStart = new int[columns * ViewGrid.cellsAlong(height, shift) + 1];
+        Parts parts = new Parts(objects.size(), pool);
+        int[][] perPart = new int[parts.parts][cellStart.length - 1];
+        measure(footprint, parts, shift, columns, perPart);
+        int[] fileOrder = leafOrder();
+        Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
         float[] nearestByPlace = new float[fileOrder.length];
-        int[] places = fill(shift, columns, cellStart, nearestByPlace);
+        int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
         sortNearestFirst(cellStart, places, nearestByPlace);
         return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
     }
 
-    /** Each object's box, footprint and nearest t, and whether a ray can see it. */
-    private void measure(ImageFootprint footprint) {
-        new Parts(objects.size(), pool).run((start, end) -> {
+    /**
+     * Each object's box, footprint and nearest t, and whether a ray can see it; and, part by part
+     * of {@code parts}, how many objects each cell of side {@code 1 << shift} gets, into
+     * {@code perPart}.
+     */
+    private void measure(ImageFootprint footprint, Parts parts, int shift, int columns, int[][] perPart) {
+        parts.run((start, end, part) -> {
             float[] box = new float[6];
+            int[] counts = perPart[part];
             for (int f = start; f < end; f++) {
-                IGeometry object = objects.get(f);
-                object.putBounds(box, 0);
-                Rounding rounding = object.rounding();
-                float t = isFinite(box) ? footprint.put(box, 0, rounding.linear(), rounding.quadratic(), footprints, 4 * f)
-                        : Float.NaN;
-                nearest[f] = t;
-                state[f] = t == t ? SEEN : isFinite(box) ? UNSEEN : UNBOUNDED;
-                if (state[f] != SEEN) {
-                    footprints[4 * f] = 1; // x0 > x1: no pixel
-                    footprints[4 * f + 2] = 0;
+                int at = 4 * f;
+                state[f] = measure(objects.get(f), footprint, box, footprints, at);
+                nearest[f] = box[0];
+                if (state[f] == SEEN) {
+                    for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
+                        for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
+                            counts[y * columns + x]++;
+                        }
+                    }
                 }
             }
         });
+    }
+
+    /**
+     * Whether {@code object} is {@link #SEEN}, with its footprint in {@code into[at ..]} (x0 > x1
+     * if not) and its nearest t in {@code box[0]}: the box is room for its bounds first.
+     */
+    private static byte measure(IGeometry object, ImageFootprint footprint, float[] box, int[] into, int at) {
+        object.putBounds(box, 0);
+        boolean finite = isFinite(box);
+        Rounding rounding = object.rounding();
+        float t = finite ? footprint.put(box, 0, rounding.linear(), rounding.quadratic(), into, at) : Float.NaN;
+        box[0] = t;
+        if (t == t) {
+            return SEEN;
+        }
+        into[at] = 1; // x0 > x1: no pixel
+        into[at + 2] = 0;
+        return finite ? UNSEEN : UNBOUNDED;
     }
 
     private static boolean isFinite(float[] box) {
@@ -157,21 +182,26 @@ final class ViewGridBuilder {
     /**
      * The cell side's power of two for which building and tracing together cost least: each
      * entry of an object in a cell costs a write, and a test by each ray of the cell
-     * ({@code 4^shift · samples²} rays). The entries are estimated on a sample of the objects.
-     * A side whose grid would hold more than {@link #MOST_ENTRIES} entries is passed over when
-     * a larger one does not.
+     * ({@code 4^shift · samples²} rays). The entries are estimated on a sample of the objects,
+     * whose footprints are measured for it. A side whose grid would hold more than
+     * {@link #MOST_ENTRIES} entries is passed over when a larger one does not.
      */
-    private static int cellShift(int[] footprints, int width, int height, int samples) {
-        int count = footprints.length / 4;
+    private int cellShift(ImageFootprint footprint, int samples) {
+        int count = objects.size();
         int step = Math.max(1, count / SAMPLE);
+        int[] sample = new int[4 * ((count + step - 1) / step)];
+        float[] box = new float[6];
+        for (int f = 0, at = 0; f < count; f += step, at += 4) {
+            measure(objects.get(f), footprint, box, sample, at);
+        }
         int best = 0;
         double bestCost = Double.POSITIVE_INFINITY;
         for (int shift = 0; shift < 31; shift++) {
             long entries = 0;
-            for (int i = 0; i < count; i += step) {
-                entries += cellsOf(footprints, 4 * i, shift);
+            for (int at = 0; at < sample.length; at += 4) {
+                entries += cellsOf(sample, at, shift);
             }
-            double estimate = (double) entries * count / ((count + step - 1) / step);
+            double estimate = (double) entries * count / (sample.length / 4.0);
             double rays = (double) (1L << (2 * shift)) * samples * samples;
             double cost = estimate * (1 + rays) * (estimate > MOST_ENTRIES ? 1e6 : 1);
             if (cost < bestCost) {
@@ -197,29 +227,14 @@ final class ViewGridBuilder {
 
     /**
      * Writes each seen object's leaf place into the cells its footprint overlaps, part by part of
-     * the objects in parallel: each part counts its objects per cell; a cell's objects take
-     * places in the order of the parts, each part's from where the earlier parts' end, and
-     * {@code cellStart} becomes the running sum; then each part writes its objects' places into
-     * theirs, and their nearest t by place into {@code nearestByPlace}. So a cell's objects come
-     * in file order, however many parts there are.
+     * the objects in parallel, from each part's counts per cell ({@link #measure}, in
+     * {@code next}): a cell's objects take places in the order of the parts, each part's from
+     * where the earlier parts' end, and {@code cellStart} becomes the running sum; then each
+     * part writes its objects' places into theirs, and their nearest t by place into
+     * {@code nearestByPlace}. So a cell's objects come in file order, however many parts there are.
      */
-    private int[] fill(int shift, int columns, int[] cellStart, float[] nearestByPlace) {
+    private int[] fill(Parts parts, int[][] next, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
         int cells = cellStart.length - 1;
-        Parts parts = new Parts(objects.size(), pool);
-        int[][] next = new int[parts.parts][cells];
-        parts.run((start, end, part) -> {
-            int[] counts = next[part];
-            for (int f = start; f < end; f++) {
-                if (state[f] == SEEN) {
-                    int at = 4 * f;
-                    for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
-                        for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
-                            counts[y * columns + x]++;
-                        }
-                    }
-                }
-            }
-        });
         int total = 0;
         for (int c = 0; c < cells; c++) {
             cellStart[c] = total;
