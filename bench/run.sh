@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Whole-process benchmark of rtd (--accel none and bvh) and, where installed, POV-Ray 3.7, on
+# Whole-process benchmark of rtd (--accel none, the default, and bvh) and, where installed, POV-Ray 3.7, on
 # random scenes of 10 to 1,000,000 spheres rendered at 1920x1080.
 #
 #   bench/run.sh              # 3 runs per case, the median is reported
@@ -59,6 +59,7 @@ for n in $SIZES; do
   if [ "$n" -le "$NONE_UP_TO" ]; then
     report "$n" "rtd --accel none" "$(median_of_runs java -jar target/rtd.jar "$scene" -o bench/out/none.png --accel none --stats)"
   fi
+  report "$n" "rtd (default)" "$(median_of_runs java -jar target/rtd.jar "$scene" -o bench/out/auto.png --stats)"
   report "$n" "rtd --accel bvh" "$(median_of_runs java -jar target/rtd.jar "$scene" -o bench/out/bvh.png --accel bvh --stats)"
   if command -v povray >/dev/null; then
     report "$n" "POV-Ray 3.7" "$(median_of_runs povray "+I${scene%.txt}.export.pov" +Obench/out/povray.png +W1920 +H1080 -D -A +FN File_Gamma=1.0 -GA)"

@@ -29,7 +29,8 @@ public final class ChartWriter {
     private static final int RIGHT = 230;
     private static final int TOP = 40;
     private static final int BOTTOM = 70;
-    private static final Color[] COLOURS = {new Color(200, 60, 40), new Color(40, 110, 200), new Color(60, 150, 70)};
+    private static final Color[] COLOURS = {new Color(200, 60, 40), new Color(40, 110, 200), new Color(60, 150, 70),
+        new Color(150, 80, 170)};
 
     private ChartWriter() {
     }
