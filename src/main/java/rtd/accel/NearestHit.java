@@ -236,14 +236,14 @@ final class NearestHit {
     /**
      * The paper's intersection test and depth test on the objects at places
      * {@code places[from .. to)} in leaf order (a {@link ViewGrid}'s cell), in the order of
-     * {@code nearest}, a t before which no hit on the object at a place lies, growing along
-     * them: stops at the first that lies beyond the nearest hit found, by more than rounding
-     * can explain, as all after it do.
+     * {@code nearest}, a distance from the origin before which no hit on the object at a place
+     * lies, growing along them: stops at the first that lies beyond the nearest hit found, by
+     * more than rounding can explain, as all after it do.
      */
     void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest) {
         for (int k = from; k < to; k++) {
             int place = places[k];
-            if (nearest[place] > skipBeyond) {
+            if (nearest[place] > skipBeyond * length) {
                 return;
             }
             treeTests++;

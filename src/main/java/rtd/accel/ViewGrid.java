@@ -2,16 +2,17 @@ package rtd.accel;
 
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
-import rtd.camera.OrthographicCamera;
+import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Rounding;
 import rtd.scene.Scene;
 
 /**
- * For the paper's orthographic camera, which objects each pixel's ray may hit: the image cut
- * into square cells of pixels, and for each cell the objects whose {@link ImageFootprint}
- * overlaps it, nearest first. Not in the paper. When every ray runs in the same direction, the
- * search for what a ray hits is a search in two dimensions, on the image: a ray tests only the
+ * For a camera's rays, which objects each pixel's ray may hit: the image cut into square cells
+ * of pixels, and for each cell the objects whose {@link ImageFootprint} overlaps it, nearest
+ * first. Not in the paper. When every ray runs in the same direction (the paper's orthographic
+ * camera) or leaves the same point (the perspective camera), each object shows on a patch of the
+ * image, and the search for what a ray hits is a search in two dimensions: a ray tests only the
  * objects of its cell, a few where the paper's loop tests all, and no tree is built or walked.
  *
  * <p>It serves only the camera's rays ({@link ViewGridTracer}), so it pays for scenes in flat
@@ -29,7 +30,7 @@ public final class ViewGrid {
 
     /** The objects with a box, in one leaf, and those without. */
     final Bvh objects;
-    final OrthographicCamera camera;
+    final ICamera camera;
     final int width;
     final int height;
     /** The largest offset into its pixel of a ray that the grid serves: 0, the corner, unless samples. */
@@ -46,13 +47,13 @@ public final class ViewGrid {
      */
     final int[] places;
     /**
-     * Per place in the leaf, a t before which no camera ray hits the object: it never decreases
+     * Per place in the leaf, a distance from the ray's origin before which no camera ray hits the object: it never decreases
      * along a cell's objects, so a ray that has a hit nearer than an object's may stop there
      * ({@link NearestHit#testPlacesNearestFirst}).
      */
     final float[] nearest;
 
-    ViewGrid(Bvh objects, OrthographicCamera camera, int width, int height, float latestOffset,
+    ViewGrid(Bvh objects, ICamera camera, int width, int height, float latestOffset,
             int shift, int[] cellStart, int[] places, float[] nearest) {
         this.objects = objects;
         this.camera = camera;
@@ -68,7 +69,7 @@ public final class ViewGrid {
     }
 
     /**
-     * The grid for {@code scene}, whose camera must be orthographic, for a {@code width × height}
+     * The grid for {@code scene}, whose camera must {@link #fits fit}, for a {@code width × height}
      * picture with {@code samples × samples} rays per pixel, built with {@code threads} threads.
      */
     public static ViewGrid build(Scene scene, int width, int height, int samples, int threads) {
@@ -77,7 +78,7 @@ public final class ViewGrid {
         try {
             float latestOffset = samples == 1 ? 0 : (samples - 0.5f) / samples;
             return new ViewGridBuilder(scene.objects(), width, height, pool)
-                    .build((OrthographicCamera) scene.camera(), latestOffset, samples);
+                    .build(scene.camera(), latestOffset, samples);
         } finally {
             if (pool != null) {
                 pool.shutdown();
@@ -85,9 +86,9 @@ public final class ViewGrid {
         }
     }
 
-    /** Whether {@link #build} can make a grid for this scene: its camera's rays are parallel. */
+    /** Whether {@link #build} can make a grid for this scene's camera: the orthographic or the perspective one. */
     public static boolean fits(Scene scene) {
-        return scene.camera() instanceof OrthographicCamera;
+        return ImageFootprint.fits(scene.camera());
     }
 
     /** How many cells of side {@code 1 << shift} cover {@code pixels}. */

@@ -2,13 +2,13 @@ package rtd.accel;
 
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
-import rtd.camera.OrthographicCamera;
+import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Rounding;
 
 /**
  * Builds a {@link ViewGrid}, in passes over arrays, each on all threads where it can be: every
- * object's footprint on the image and nearest t ({@link ImageFootprint}); a place for it in the
+ * object's footprint on the image and nearest distance ({@link ImageFootprint}); a place for it in the
  * leaf, by the square of the image it lies in, so that neighbours on the image lie side by side
  * in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists; and each
  * list sorted nearest first. The grid is the same for any number of threads.
@@ -33,7 +33,7 @@ final class ViewGridBuilder {
 
     /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
     private final int[] footprints;
-    /** Per object in file order: a t before which no ray hits it, if it is {@link #SEEN}. */
+    /** Per object in file order: a distance from the ray's origin before which no ray hits it, if it is {@link #SEEN}. */
     private final float[] nearest;
     private final byte[] state;
     /** Per object in file order: its place in the leaf, −1 for one without a box. */
@@ -50,8 +50,8 @@ final class ViewGridBuilder {
     }
 
     /** The grid of {@code camera}'s rays through points up to {@code latestOffset} into their pixels, {@code samples²} a pixel. */
-    ViewGrid build(OrthographicCamera camera, float latestOffset, int samples) {
-        ImageFootprint footprint = new ImageFootprint(camera, width, height, latestOffset);
+    ViewGrid build(ICamera camera, float latestOffset, int samples) {
+        ImageFootprint footprint = ImageFootprint.of(camera, width, height, latestOffset);
         int shift = cellShift(footprint, samples);
         int columns = ViewGrid.cellsAlong(width, shift);
         int[] cellStart = new int[columns * ViewGrid.cellsAlong(height, shift) + 1];
@@ -67,7 +67,7 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Each object's box, footprint and nearest t, and whether a ray can see it; and, part by part
+     * Each object's box, footprint and nearest distance, and whether a ray can see it; and, part by part
      * of {@code parts}, how many objects each cell of side {@code 1 << shift} gets, into
      * {@code perPart}.
      */
@@ -92,7 +92,7 @@ final class ViewGridBuilder {
 
     /**
      * Whether {@code object} is {@link #SEEN}, with its footprint in {@code into[at ..]} (x0 > x1
-     * if not) and its nearest t in {@code box[0]}: the box is room for its bounds first.
+     * if not) and its nearest distance in {@code box[0]}: the box is room for its bounds first.
      */
     private static byte measure(IGeometry object, ImageFootprint footprint, float[] box, int[] into, int at) {
         object.putBounds(box, 0);
@@ -230,7 +230,7 @@ final class ViewGridBuilder {
      * the objects in parallel, from each part's counts per cell ({@link #measure}, in
      * {@code next}): a cell's objects take places in the order of the parts, each part's from
      * where the earlier parts' end, and {@code cellStart} becomes the running sum; then each
-     * part writes its objects' places into theirs, and their nearest t by place into
+     * part writes its objects' places into theirs, and their nearest distance by place into
      * {@code nearestByPlace}. So a cell's objects come in file order, however many parts there are.
      */
     private int[] fill(Parts parts, int[][] next, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
@@ -265,7 +265,7 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Sorts each cell's objects by their nearest t, in parallel by cells: an insertion sort, as
+     * Sorts each cell's objects by their nearest distance, in parallel by cells: an insertion sort, as
      * a cell holds a dozen or so, which keeps objects of equal t in file order.
      */
     private void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace) {

@@ -52,7 +52,7 @@ public final class PerspectiveCamera implements ICamera {
     public Ray generateRay(float x, float y, int w, int h) {
         float offsetX = x - (w / 2);
         float offsetY = y - (h / 2);
-        float f = (float) (w / 2.0 * focal);
+        float f = focalLength(w);
         Vector3f direction = forward.multiply(f).add(widthVector.multiply(offsetX)).add(heightVector.multiply(offsetY));
         return new Ray(pos, direction);
     }
@@ -62,13 +62,23 @@ public final class PerspectiveCamera implements ICamera {
     public void putRay(float x, float y, int w, int h, float[] into, int at) {
         float offsetX = x - (w / 2);
         float offsetY = y - (h / 2);
-        float f = (float) (w / 2.0 * focal);
+        float f = focalLength(w);
         into[at] = pos.x();
         into[at + 1] = pos.y();
         into[at + 2] = pos.z();
         into[at + 3] = forward.x() * f + widthVector.x() * offsetX + heightVector.x() * offsetY;
         into[at + 4] = forward.y() * f + widthVector.y() * offsetX + heightVector.y() * offsetY;
         into[at + 5] = forward.z() * f + widthVector.z() * offsetX + heightVector.z() * offsetY;
+    }
+
+    /** {@code f}, the image plane's distance from the eye in pixels, for a picture {@code w} pixels wide. */
+    public float focalLength(int w) {
+        return (float) (w / 2.0 * focal);
+    }
+
+    /** The unit view direction, {@code normalize(dir)}. */
+    public Vector3f forward() {
+        return forward;
     }
 
     @Override

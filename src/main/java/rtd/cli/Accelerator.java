@@ -31,7 +31,7 @@ record Accelerator(Supplier<Tracer> tracers, String built, boolean walksTree) {
      */
     static Accelerator of(Scene scene, Accel accel, int width, int height, int samples, int threads) {
         int objects = scene.objects().size();
-        boolean gridFits = ViewGrid.fits(scene);
+        boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
         boolean grid = accel == Accel.grid && gridFits
                 || accel == Accel.auto && gridFits && scene.lights().isEmpty() && objects >= GRID_THRESHOLD;
         if (grid) {

@@ -9,7 +9,9 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
+import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
@@ -78,7 +80,7 @@ class ViewGridTest {
         return found;
     }
 
-    private static OrthographicCamera randomCamera(Random random) {
+    private static ICamera randomCamera(Random random) {
         Vector3f direction = switch (random.nextInt(4)) {
             case 0 -> new Vector3f(0, 0, -1); // the paper's
             case 1 -> new Vector3f(0, -1, 0); // straight down: the image axes' special case
@@ -87,13 +89,17 @@ class ViewGridTest {
         float distance = random.nextBoolean() ? 5 : 60; // inside the scene, or outside
         Vector3f position = direction.normalize().multiply(-distance)
                 .add(new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f));
+        if (random.nextBoolean()) {
+            return new PerspectiveCamera(position, direction.multiply(0.5f + random.nextFloat() * 2),
+                    5 + random.nextFloat() * 150);
+        }
         return new OrthographicCamera(position, direction.multiply(0.5f + random.nextFloat() * 2),
                 2 + random.nextFloat() * 6);
     }
 
     @ParameterizedTest(name = "random scene {0}")
-    @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8})
-    void forEveryPixelOfRandomScenesSeenByRandomOrthographicCameras(long seed) {
+    @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12})
+    void forEveryPixelOfRandomScenesSeenByRandomCamerasOfBothKinds(long seed) {
         Scene mixed = MixedScenes.generate(seed, 100 + (int) (seed * 89 % 300));
         Random random = new Random(seed);
         int hits = 0;
@@ -109,6 +115,61 @@ class ViewGridTest {
             }
         }
         assertThat(hits).as("rays that hit something").isGreaterThan(10_000);
+    }
+
+    @Test
+    void evenWhereRoundingLetsTheTestHitFarBesideSmallSpheresSeenFromAfarThroughAPerspectiveCamera() {
+        Random random = new Random(9);
+        List<IGeometry> objects = new ArrayList<>();
+        for (int i = 0; i < 60; i++) {
+            Vector3f centre = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
+            objects.add(new Sphere(centre, 0.002f + random.nextFloat() * 0.02f, new Color(i, 2 * i, 3 * i)));
+        }
+        Vector3f direction = new Vector3f(-0.2f, 0.1f, -1);
+        ICamera camera = new PerspectiveCamera(direction.normalize().multiply(-3000), direction, 0.03f);
+        Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
+        List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
+        long beside = hits.stream().filter(hit -> {
+            Sphere sphere = (Sphere) hit.object();
+            return hit.point().subtract(sphere.center()).magnitude() > 1.5 * sphere.radius();
+        }).count();
+        assertThat(beside).as("hits farther than 1.5 r from the centre, of %d", hits.size()).isGreaterThan(20);
+    }
+
+    @Test
+    void aSpheresPictureThroughThePerspectiveCameraIsTheRectangleOfItsGrownBoxsCorners() {
+        // Eye at z = 20 looking down −z, 90° across 200 × 100 pixels: f = 100. The sphere at the
+        // origin, radius 1, has the box ±1.002; its near corners at depth 18.998 show at
+        // x' = ±100 · 1.002 / 18.998 = ±5.274, widened by 0.016 (rounding of the rays), so
+        // x = 100 ± 5.29: pixels 95 to 105, and y = 50 ± 5.29: 45 to 55. The box's near face is
+        // 18.998 from the eye, less √3 growths at 21.1 units (0.0005).
+        PerspectiveCamera camera = new PerspectiveCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 90);
+        PerspectiveFootprint footprint = new PerspectiveFootprint(camera, 200, 100, 0);
+        int[] pixels = {-7, -7, -7, -7};
+        Sphere sphere = new Sphere(new Vector3f(0, 0, 0), 1, new Color(1, 2, 3));
+        float[] box = new float[6];
+        sphere.putBounds(box, 0);
+        float nearest = footprint.put(box, 0, sphere.rounding().linear(), sphere.rounding().quadratic(), pixels, 0);
+        assertThat(pixels).containsExactly(95, 45, 105, 55);
+        assertThat(nearest).isCloseTo(18.9975f, org.assertj.core.data.Offset.offset(0.0001f));
+
+        // A box whose picture ends a thousandth of a pixel short of pixel 105's ray (x' = 100 ·
+        // 0.9998 / 20 = 4.999): the rays' rounding could reach it, so the pixel is kept.
+        float[] edge = {0, -1, -1, 0.9998f, 1, 0};
+        footprint.put(edge, 0, 0, 0, pixels, 0);
+        assertThat(pixels[2]).isEqualTo(105);
+
+        // Beside the eye and half behind it: its points in front show at x' ≥ 100 · 1.998 / 1.002
+        // = 199.4, beyond the picture's right edge (x' ≤ 100): no pixel.
+        new Sphere(new Vector3f(3, 0, 20), 1, new Color(1, 2, 3)).putBounds(box, 0);
+        assertThat(footprint.put(box, 0, 0, 0, pixels, 0)).isNaN();
+        // Around the eye: every pixel, from distance 0.
+        new Sphere(new Vector3f(0.5f, 0, 20), 1, new Color(1, 2, 3)).putBounds(box, 0);
+        assertThat(footprint.put(box, 0, 0, 0, pixels, 0)).isLessThanOrEqualTo(0);
+        assertThat(pixels).containsExactly(0, 0, 199, 99);
+        // Wholly behind the eye: no pixel.
+        new Sphere(new Vector3f(0, 0, 25), 1, new Color(1, 2, 3)).putBounds(box, 0);
+        assertThat(footprint.put(box, 0, 0, 0, pixels, 0)).isNaN();
     }
 
     @Test
@@ -145,17 +206,17 @@ class ViewGridTest {
         float[] box = new float[6];
         sphere.putBounds(box, 0);
         int[] pixels = new int[4];
-        float nearest = new ImageFootprint(camera, 1920, 1080, 0).put(box, 0, sphere.rounding().linear(),
+        float nearest = new OrthographicFootprint(camera, 1920, 1080, 0).put(box, 0, sphere.rounding().linear(),
                 sphere.rounding().quadratic(), pixels, 0);
         assertThat(pixels).containsExactly(1005, 510, 1015, 520);
         // Its box's near side is 19.8998 from the plane, less √3 growths (0.00400), the origins'
         // error (0.00008) and a millionth for rounding (0.00002): 19.8957.
         assertThat(nearest).isCloseTo(19.8957f, org.assertj.core.data.Offset.offset(0.00002f));
         // Samples up to 5/6 into a pixel: the pixel before each range may send one in.
-        new ImageFootprint(camera, 1920, 1080, 5 / 6.0).put(box, 0, sphere.rounding().linear(),
+        new OrthographicFootprint(camera, 1920, 1080, 5 / 6.0).put(box, 0, sphere.rounding().linear(),
                 sphere.rounding().quadratic(), pixels, 0);
         assertThat(pixels).containsExactly(1005, 510, 1015, 520);
-        new ImageFootprint(camera, 1920, 1080, 0.99).put(box, 0, sphere.rounding().linear(),
+        new OrthographicFootprint(camera, 1920, 1080, 0.99).put(box, 0, sphere.rounding().linear(),
                 sphere.rounding().quadratic(), pixels, 0);
         assertThat(pixels).containsExactly(1004, 509, 1015, 520);
     }
@@ -168,7 +229,7 @@ class ViewGridTest {
         new Sphere(new Vector3f(0, 0, 21), 0.5f, new Color(1, 2, 3)).putBounds(behind, 0);
         float[] beside = new float[6];
         new Sphere(new Vector3f(30, 0, 0), 0.5f, new Color(1, 2, 3)).putBounds(beside, 0);
-        ImageFootprint footprint = new ImageFootprint(camera, 1920, 1080, 0);
+        ImageFootprint footprint = new OrthographicFootprint(camera, 1920, 1080, 0);
         assertThat(footprint.put(behind, 0, 0, 0, pixels, 0)).isNaN();
         assertThat(footprint.put(beside, 0, 0, 0, pixels, 0)).isNaN();
         assertThat(pixels).containsOnly(-7);

@@ -1,0 +1,155 @@
+package rtd.accel;
+
+import rtd.camera.PerspectiveCamera;
+import rtd.geometry.IGeometry;
+import rtd.math.Vector3f;
+
+/**
+ * The {@link ImageFootprint} of an object for the perspective camera: its grown box as the eye
+ * sees it.
+ *
+ * <p>Every ray leaves the eye O along {@code D = F·f + u·x' + v·y'} (Part II, "The perspective
+ * camera"), so a point P that a ray meets, {@code P − O = t·D}, shows at
+ * {@code x' = f·((P − O)·u)/((P − O)·F)}, and likewise y'. A box wholly in front of the eye shows
+ * within the rectangle of its eight corners' pictures. A box that reaches behind the plane of the
+ * eye is only bounded from one side: a point at depth {@code c ≤ cmax} with
+ * {@code (P − O)·u ≥ a > 0} shows at {@code x' ≥ f·a/cmax}, however near the eye it lies. The
+ * rectangle is widened by what the rounding of the rays' float directions and of the image axes
+ * can move a ray: a few thousandths of a pixel, and a hundred times that is kept.
+ */
+final class PerspectiveFootprint implements ImageFootprint {
+
+    /** A pixel's share of rounding, relative to {@code f + w + h}, with ample room: see the class comment. */
+    private static final double DIRECTION_ERROR = 1e-5;
+
+    private final double ox;
+    private final double oy;
+    private final double oz;
+    private final double[] forward;
+    private final double[] right;
+    private final double[] down;
+    private final double focal;
+    private final int width;
+    private final int height;
+    private final int halfWidth;
+    private final int halfHeight;
+    private final double latestOffset;
+    /** How far a ray's picture may lie from where exact arithmetic puts it, in pixels. */
+    private final double margin;
+
+    PerspectiveFootprint(PerspectiveCamera camera, int width, int height, double latestOffset) {
+        Vector3f eye = camera.position();
+        ox = eye.x();
+        oy = eye.y();
+        oz = eye.z();
+        forward = numbers(camera.forward());
+        right = numbers(camera.widthVector());
+        down = numbers(camera.heightVector());
+        focal = camera.focalLength(width);
+        this.width = width;
+        this.height = height;
+        halfWidth = width / 2; // as the camera divides
+        halfHeight = height / 2;
+        this.latestOffset = latestOffset;
+        double size = Math.abs(focal) + width + height;
+        margin = DIRECTION_ERROR * size * (1 + (width + height) / Math.abs(focal));
+    }
+
+    private static double[] numbers(Vector3f vector) {
+        return new double[] {vector.x(), vector.y(), vector.z()};
+    }
+
+    @Override
+    public float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
+        double x0 = boxes[at] - ox;
+        double y0 = boxes[at + 1] - oy;
+        double z0 = boxes[at + 2] - oz;
+        double x1 = boxes[at + 3] - ox;
+        double y1 = boxes[at + 4] - oy;
+        double z1 = boxes[at + 5] - oz;
+        double widest = linear + IGeometry.ROUNDING_CONE;
+        // a hit runs L ≤ farthest corner + √3·growth(L) ≤ farthest + √3·widest·L from the eye
+        double farthest = Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
+        double reach = farthest / (1 - Math.sqrt(3) * widest);
+        double grow = linear * reach + Math.min(IGeometry.ROUNDING_CONE * reach, quadratic * reach * reach);
+        double nearest = Math.sqrt(outside(x0, x1) + outside(y0, y1) + outside(z0, z1)) - Math.sqrt(3) * grow;
+        if (!(widest * Math.sqrt(3) < 0.5 && Double.isFinite(grow))) {
+            ImageFootprint.whole(width, height, into, to);
+            return Float.NEGATIVE_INFINITY;
+        }
+        x0 -= grow;
+        y0 -= grow;
+        z0 -= grow;
+        x1 += grow;
+        y1 += grow;
+        z1 += grow;
+        // the corners' least and largest depth along F, and sides along u and v: sums of each axis' least and largest
+        double depthLeast = least(x0, x1, forward[0]) + least(y0, y1, forward[1]) + least(z0, z1, forward[2]);
+        double depthMost = most(x0, x1, forward[0]) + most(y0, y1, forward[1]) + most(z0, z1, forward[2]);
+        if (depthMost < -1e-9 * reach) {
+            return Float.NaN; // wholly behind the eye: a ray's points have (P − O)·F = t·D·F ≥ 0
+        }
+        double left;
+        double rightmost;
+        double top;
+        double bottom;
+        if (depthLeast > 1e-6 * depthMost) { // wholly in front: the corners' pictures bound it
+            left = Double.POSITIVE_INFINITY;
+            rightmost = Double.NEGATIVE_INFINITY;
+            top = Double.POSITIVE_INFINITY;
+            bottom = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < 8; k++) {
+                double x = (k & 1) == 0 ? x0 : x1;
+                double y = (k & 2) == 0 ? y0 : y1;
+                double z = (k & 4) == 0 ? z0 : z1;
+                double scale = focal / (x * forward[0] + y * forward[1] + z * forward[2]);
+                double across = (x * right[0] + y * right[1] + z * right[2]) * scale;
+                double down = (x * this.down[0] + y * this.down[1] + z * this.down[2]) * scale;
+                left = Math.min(left, across);
+                rightmost = Math.max(rightmost, across);
+                top = Math.min(top, down);
+                bottom = Math.max(bottom, down);
+            }
+        } else { // reaching behind the eye's plane: a side is bounded only where the box keeps to it
+            double acrossLeast = least(x0, x1, right[0]) + least(y0, y1, right[1]) + least(z0, z1, right[2]);
+            double acrossMost = most(x0, x1, right[0]) + most(y0, y1, right[1]) + most(z0, z1, right[2]);
+            double downLeast = least(x0, x1, this.down[0]) + least(y0, y1, this.down[1]) + least(z0, z1, this.down[2]);
+            double downMost = most(x0, x1, this.down[0]) + most(y0, y1, this.down[1]) + most(z0, z1, this.down[2]);
+            left = acrossLeast > 0 ? focal * acrossLeast / depthMost : Double.NEGATIVE_INFINITY;
+            rightmost = acrossMost < 0 ? focal * acrossMost / depthMost : Double.POSITIVE_INFINITY;
+            top = downLeast > 0 ? focal * downLeast / depthMost : Double.NEGATIVE_INFINITY;
+            bottom = downMost < 0 ? focal * downMost / depthMost : Double.POSITIVE_INFINITY;
+        }
+        if (Double.isNaN(left) || Double.isNaN(rightmost) || Double.isNaN(top) || Double.isNaN(bottom)) {
+            ImageFootprint.whole(width, height, into, to);
+            return Float.NEGATIVE_INFINITY;
+        }
+        boolean seen = ImageFootprint.range(halfWidth + left - margin, halfWidth + rightmost + margin, width,
+                latestOffset, into, to)
+                && ImageFootprint.range(halfHeight + top - margin, halfHeight + bottom + margin, height,
+                        latestOffset, into, to + 1);
+        return seen ? ImageFootprint.below(nearest) : Float.NaN;
+    }
+
+    /** The larger square of two ends of a side. */
+    private static double farther(double low, double high) {
+        double far = Math.max(Math.abs(low), Math.abs(high));
+        return far * far;
+    }
+
+    /** The square of how far 0 lies outside {@code [low, high]}. */
+    private static double outside(double low, double high) {
+        double outside = Math.max(0, Math.max(low, -high));
+        return outside * outside;
+    }
+
+    /** The least of {@code low·factor} and {@code high·factor}. */
+    private static double least(double low, double high, double factor) {
+        return Math.min(low * factor, high * factor);
+    }
+
+    /** The largest of {@code low·factor} and {@code high·factor}. */
+    private static double most(double low, double high, double factor) {
+        return Math.max(low * factor, high * factor);
+    }
+}
