@@ -28,8 +28,8 @@ final class ViewGridBuilder {
     private final int height;
     /** The most cell entries the grid is made with if a larger cell keeps under it (4 bytes each). */
     private static final long MOST_ENTRIES = 1L << 25;
-    /** How many objects at most {@link #cellShift} looks at to estimate the entries. */
-    private static final int SAMPLE = 1 << 16;
+    /** How many objects at most {@link #cellShift} measures to estimate the entries: enough for a mean. */
+    private static final int SAMPLE = 1 << 12;
 
     /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
     private final int[] footprints;
