@@ -13,10 +13,11 @@ import rtd.scene.Scene;
  * thread) and the line {@code --stats} gives the build.
  *
  * @param tracers   a new tracer for each thread
- * @param built     what was built, for {@code --stats}
+ * @param built     what was built, for {@code --stats}: made only if asked, as formatting numbers
+ *                  the first time costs a run of the paper's example some 20 ms
  * @param walksTree whether the tracers walk a tree, so that nodes per ray mean something
  */
-record Accelerator(Supplier<Tracer> tracers, String built, boolean walksTree) {
+record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
     /**
      * The fewest objects for which {@code --accel auto} takes the view grid: below, the hierarchy's
@@ -36,14 +37,14 @@ record Accelerator(Supplier<Tracer> tracers, String built, boolean walksTree) {
                 || accel == Accel.auto && gridFits && scene.lights().isEmpty() && objects >= GRID_THRESHOLD;
         if (grid) {
             ViewGrid viewGrid = ViewGrid.build(scene, width, height, samples, threads);
-            return new Accelerator(viewGrid::newTracer, String.format(Locale.ROOT,
+            return new Accelerator(viewGrid::newTracer, () -> String.format(Locale.ROOT,
                     "view grid of %s of %d × %d pixels, %s", StatsReport.count(viewGrid.cellCount(), "cell"),
                     viewGrid.cellSide(), viewGrid.cellSide(), StatsReport.count(viewGrid.entries(), "entry", "entries")), false);
         }
         if (accel != Accel.none && objects > 0) {
             Bvh bvh = Bvh.build(scene, threads);
-            return new Accelerator(bvh::newTracer, "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+            return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
         }
-        return new Accelerator(() -> new LinearTracer(scene), "no BVH: the paper's loop tests every object", false);
+        return new Accelerator(() -> new LinearTracer(scene), () -> "no BVH: the paper's loop tests every object", false);
     }
 }

@@ -19,7 +19,7 @@ final class StatsReport {
         StringBuilder text = new StringBuilder();
         line(text, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));
         line(text, "build", seconds.get("build"), accelerator == null
-                ? "no BVH: the paper's loop tests every object" : accelerator.built());
+                ? "no BVH: the paper's loop tests every object" : accelerator.built().get());
         line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
                 work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
         line(text, "write", seconds.get("write"), output.toString());
