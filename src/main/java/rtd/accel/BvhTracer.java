@@ -52,12 +52,7 @@ public final class BvhTracer implements Tracer {
     @Override
     public Hit nearestHit(Ray ray) {
         trace(ray.origin(), ray.direction());
-        int best = hit.best();
-        if (best < 0) {
-            return null;
-        }
-        IGeometry object = bvh.objects.get(best);
-        return new Hit(object, best, hit.bestT(), hit.bestDistance(), ray.pointAt(hit.bestT()));
+        return hit.hit(ray);
     }
 
     /**

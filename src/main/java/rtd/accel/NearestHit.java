@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import java.util.Arrays;
+import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Plane;
 import rtd.math.Ray;
@@ -321,6 +322,14 @@ final class NearestHit {
     /** Boxes entered beyond a hit at {@code t}, by more than rounding can explain, cannot hold a nearer one. */
     private float skipFor(float t) {
         return t + t * SKIP_MARGIN + margin;
+    }
+
+    /** The nearest hit found for {@code ray} (the ray these numbers are of) as a hit record, or null if none. */
+    Hit hit(Ray ray) {
+        if (best < 0) {
+            return null;
+        }
+        return new Hit(bvh.objects.get(best), best, bestT, bestDistance, ray.pointAt(bestT));
     }
 
     /** The place in the file of the nearest object hit, or −1. */

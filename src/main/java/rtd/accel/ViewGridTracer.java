@@ -1,7 +1,6 @@
 package rtd.accel;
 
 import rtd.geometry.Hit;
-import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.render.HitBuffer;
@@ -44,12 +43,7 @@ public final class ViewGridTracer implements Tracer {
         if (objects.hasTree()) {
             hit.testLeaf(0);
         }
-        int best = hit.best();
-        if (best < 0) {
-            return null;
-        }
-        IGeometry object = objects.objects.get(best);
-        return new Hit(object, best, hit.bestT(), hit.bestDistance(), ray.pointAt(hit.bestT()));
+        return hit.hit(ray);
     }
 
     /** The camera's rays test the objects of their cells; other rays are traced one by one. */

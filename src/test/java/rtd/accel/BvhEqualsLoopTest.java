@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static rtd.accel.SameHit.assertSame;
 
 import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
@@ -22,17 +23,6 @@ import rtd.testing.MixedScenes;
 @DisplayName("The BVH finds the loop's hit")
 class BvhEqualsLoopTest {
 
-    private static void assertSame(Hit actual, Hit expected, String what) {
-        if (expected == null) {
-            assertThat(actual).as(what).isNull();
-            return;
-        }
-        assertThat(actual).as(what).isNotNull();
-        assertThat(actual.index()).as(what + ": object").isEqualTo(expected.index());
-        assertThat(Float.floatToIntBits(actual.t())).as(what + ": t").isEqualTo(Float.floatToIntBits(expected.t()));
-        assertThat(actual.distance()).as(what + ": distance").isEqualTo(expected.distance());
-        assertThat(actual.point()).as(what + ": point").isEqualTo(expected.point());
-    }
 
     @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10})

@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static rtd.accel.SameHit.assertSame;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -25,7 +26,7 @@ import rtd.testing.MixedScenes;
 
 /**
  * The view grid's answer to "what does this camera ray hit?" is the paper's loop's, bit for bit:
- * for random scenes of every kind of object seen by random orthographic cameras, through the
+ * for random scenes of every kind of object seen by random cameras of both kinds, through the
  * pixels' corners and through samples, and where rounding lets the test hit far beside a sphere.
  */
 @DisplayName("The view grid finds the loop's hit")
@@ -34,17 +35,6 @@ class ViewGridTest {
     private static final int WIDTH = 72;
     private static final int HEIGHT = 40;
 
-    private static void assertSame(Hit actual, Hit expected, String what) {
-        if (expected == null) {
-            assertThat(actual).as(what).isNull();
-            return;
-        }
-        assertThat(actual).as(what).isNotNull();
-        assertThat(actual.index()).as(what + ": object").isEqualTo(expected.index());
-        assertThat(Float.floatToIntBits(actual.t())).as(what + ": t").isEqualTo(Float.floatToIntBits(expected.t()));
-        assertThat(actual.distance()).as(what + ": distance").isEqualTo(expected.distance());
-        assertThat(actual.point()).as(what + ": point").isEqualTo(expected.point());
-    }
 
     /**
      * Traces every pixel's ray through {@code (x + offset, y + offset)} as the renderer does, in
@@ -119,21 +109,8 @@ class ViewGridTest {
 
     @Test
     void evenWhereRoundingLetsTheTestHitFarBesideSmallSpheresSeenFromAfarThroughAPerspectiveCamera() {
-        Random random = new Random(9);
-        List<IGeometry> objects = new ArrayList<>();
-        for (int i = 0; i < 60; i++) {
-            Vector3f centre = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
-            objects.add(new Sphere(centre, 0.002f + random.nextFloat() * 0.02f, new Color(i, 2 * i, 3 * i)));
-        }
         Vector3f direction = new Vector3f(-0.2f, 0.1f, -1);
-        ICamera camera = new PerspectiveCamera(direction.normalize().multiply(-3000), direction, 0.03f);
-        Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
-        List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
-        long beside = hits.stream().filter(hit -> {
-            Sphere sphere = (Sphere) hit.object();
-            return hit.point().subtract(sphere.center()).magnitude() > 1.5 * sphere.radius();
-        }).count();
-        assertThat(beside).as("hits farther than 1.5 r from the centre, of %d", hits.size()).isGreaterThan(20);
+        assertFindsHitsBesideSmallSpheres(new PerspectiveCamera(direction.normalize().multiply(-3000), direction, 0.03f), 9);
     }
 
     @Test
@@ -174,17 +151,24 @@ class ViewGridTest {
 
     @Test
     void evenWhereRoundingLetsTheTestHitFarBesideSmallSpheresSeenFromAfar() {
-        // From 2,000 units away a sphere's test rounds its discriminant by more than a small
-        // sphere's r²: the paper's loop reports hits well outside the sphere, which the grid must
-        // find as well, not only the sphere's outline.
-        Random random = new Random(7);
+        Vector3f direction = new Vector3f(0.3f, -0.2f, -1);
+        assertFindsHitsBesideSmallSpheres(new OrthographicCamera(direction.normalize().multiply(-2000), direction, 60), 7);
+    }
+
+    /**
+     * From thousands of units away a sphere's test rounds its discriminant by more than a small
+     * sphere's r²: the paper's loop reports hits well outside the sphere, which the grid must
+     * find as well, not only the sphere's outline. Sixty small spheres around the origin, seen
+     * by {@code camera}: every pixel as the loop's, and more than 20 hits farther than 1.5 r
+     * from their sphere's centre, so that the test does meet such hits.
+     */
+    private static void assertFindsHitsBesideSmallSpheres(ICamera camera, long seed) {
+        Random random = new Random(seed);
         List<IGeometry> objects = new ArrayList<>();
         for (int i = 0; i < 60; i++) {
             Vector3f centre = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
             objects.add(new Sphere(centre, 0.002f + random.nextFloat() * 0.02f, new Color(i, 2 * i, 3 * i)));
         }
-        Vector3f direction = new Vector3f(0.3f, -0.2f, -1);
-        OrthographicCamera camera = new OrthographicCamera(direction.normalize().multiply(-2000), direction, 60);
         Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
         List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
         long beside = hits.stream().filter(hit -> {
