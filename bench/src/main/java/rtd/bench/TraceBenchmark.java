@@ -15,6 +15,7 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import rtd.accel.Bvh;
+import rtd.accel.ViewGrid;
 import rtd.camera.OrthographicCamera;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
@@ -23,8 +24,9 @@ import rtd.scene.Scene;
 
 /**
  * One ray per pixel of a 1920 × 1080 image, made and traced as the renderer does it, row by
- * row, through the bounding volume hierarchy one ray at a time ({@code bvh}) and, as the renderer
- * now does, in 8 × 8 squares ({@code bvhSquares}), for random scenes of N spheres (those of
+ * row, through the bounding volume hierarchy one ray at a time ({@code bvh}) and in 8 × 8
+ * squares ({@code bvhSquares}), and through the view grid in 8 × 8 squares ({@code gridSquares},
+ * as the renderer does for these flat scenes), for random scenes of N spheres (those of
  * {@link SceneGenerator}). The score is nanoseconds per ray; {@link PaperLoopBenchmark} is the
  * same for the paper's loop.
  * With {@code -prof gc}, {@code gc.alloc.rate.norm} is the bytes allocated per ray.
@@ -43,6 +45,7 @@ public class TraceBenchmark {
     private Scene scene;
     private OrthographicCamera camera;
     private Tracer bvh;
+    private Tracer grid;
     private int row;
     private int band;
     private final RayBundle rays = new RayBundle(64);
@@ -51,8 +54,9 @@ public class TraceBenchmark {
     @Setup(Level.Trial)
     public void setUp() {
         scene = BenchScenes.randomSpheres(spheres);
-        camera = BenchScenes.paperCamera();
+        camera = (OrthographicCamera) scene.camera(); // the grid serves its own camera's rays
         bvh = Bvh.build(scene).newTracer();
+        grid = ViewGrid.build(scene, BenchScenes.WIDTH, BenchScenes.HEIGHT, 1, 1).newTracer();
     }
 
     @Benchmark
@@ -67,6 +71,14 @@ public class TraceBenchmark {
     public int bvhSquares() {
         band = (band + 1) % (BenchScenes.HEIGHT / 8);
         return BenchScenes.traceBand(bvh, camera, 8 * band, rays, hits);
+    }
+
+    /** The view grid: each ray tests its cell's spheres, nearest first, until one lies beyond its hit. */
+    @Benchmark
+    @OperationsPerInvocation(8 * BenchScenes.WIDTH)
+    public int gridSquares() {
+        band = (band + 1) % (BenchScenes.HEIGHT / 8);
+        return BenchScenes.traceBand(grid, camera, 8 * band, rays, hits);
     }
 
     private int traceRow(Tracer tracer) {
