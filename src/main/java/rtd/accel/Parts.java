@@ -8,8 +8,9 @@ import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.Future;
 
 /**
- * The places {@code [0, count)} cut into a part per thread of a pool, for passes whose parts run
- * in parallel ({@link ViewGrid}); one part, on the calling thread, without a pool.
+ * The places {@code [0, count)} cut into a part per thread of a pool, {@value #MOST} at most, for
+ * passes whose parts run in parallel ({@link ViewGridBuilder}); one part, on the calling thread,
+ * without a pool.
  */
 final class Parts {
 
@@ -23,6 +24,9 @@ final class Parts {
         void run(int start, int end);
     }
 
+    /** The most parts: a part of the view grid's passes keeps a count for every cell of the image. */
+    static final int MOST = 8;
+
     final int count;
     final int parts;
     private final ForkJoinPool pool;
@@ -30,7 +34,7 @@ final class Parts {
     Parts(int count, ForkJoinPool pool) {
         this.count = count;
         this.pool = pool;
-        this.parts = pool == null ? 1 : pool.getParallelism();
+        this.parts = pool == null ? 1 : Math.min(MOST, pool.getParallelism());
     }
 
     /** Runs {@code pass} on every part, in parallel if there is a pool, and returns when all are done. */

@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
@@ -22,14 +23,17 @@ final class ViewGridBuilder {
     /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's squares. */
     private static final int TILE_SHIFT = 3;
 
-    private final List<IGeometry> objects;
-    private final ForkJoinPool pool;
-    private final int width;
-    private final int height;
     /** The most cell entries the grid is made with if a larger cell keeps under it (4 bytes each). */
     private static final long MOST_ENTRIES = 1L << 25;
     /** How many objects at most {@link #cellShift} measures to estimate the entries: enough for a mean. */
     private static final int SAMPLE = 1 << 12;
+    /** A cell of more objects than this is sorted by {@link Arrays#sort}, not by insertion. */
+    private static final int INSERTION_SORT_MOST = 32;
+
+    private final List<IGeometry> objects;
+    private final ForkJoinPool pool;
+    private final int width;
+    private final int height;
 
     /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
     private final int[] footprints;
@@ -265,18 +269,23 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Sorts each cell's objects by their nearest distance, in parallel by cells: an insertion sort, as
-     * a cell holds a dozen or so, which keeps objects of equal t in file order.
+     * Sorts each cell's objects by their nearest distance, in parallel by cells: by insertion, as
+     * a cell holds a dozen or so (which keeps objects of equal distance in file order), and a
+     * crowded cell (objects that cover the whole image, say) by their distances and places.
      */
     private void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace) {
         new Parts(cellStart.length - 1, pool).run((first, end) -> {
             for (int c = first; c < end; c++) {
+                if (cellStart[c + 1] - cellStart[c] > INSERTION_SORT_MOST) {
+                    sortCrowded(places, cellStart[c], cellStart[c + 1], nearestByPlace);
+                    continue;
+                }
                 int from = cellStart[c];
                 for (int k = from + 1; k < cellStart[c + 1]; k++) {
                     int place = places[k];
-                    float t = nearestByPlace[place];
+                    float distance = nearestByPlace[place];
                     int j = k - 1;
-                    while (j >= from && nearestByPlace[places[j]] > t) {
+                    while (j >= from && nearestByPlace[places[j]] > distance) {
                         places[j + 1] = places[j];
                         j--;
                     }
@@ -284,5 +293,22 @@ final class ViewGridBuilder {
                 }
             }
         });
+    }
+
+    /**
+     * Sorts {@code places[from .. to)} by distance, then place: each as one long, the distance's
+     * bits turned into an int that orders as the floats do (negative ones too), above the place.
+     */
+    static void sortCrowded(int[] places, int from, int to, float[] nearestByPlace) {
+        long[] keys = new long[to - from];
+        for (int k = from; k < to; k++) {
+            int bits = Float.floatToIntBits(nearestByPlace[places[k]]);
+            bits ^= (bits >> 31) & 0x7FFF_FFFF; // a negative float's bits order backwards: turn them round
+            keys[k - from] = (long) bits << 32 | places[k];
+        }
+        Arrays.sort(keys);
+        for (int k = from; k < to; k++) {
+            places[k] = (int) keys[k - from];
+        }
     }
 }

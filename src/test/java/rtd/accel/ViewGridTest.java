@@ -237,6 +237,34 @@ class ViewGridTest {
     }
 
     @Test
+    void whereHundredsOfObjectsCoverEveryCellTheyAreSortedNearestFirstAllTheSame() {
+        // 300 large spheres and boxes around the origin, some behind the eye, seen through both
+        // cameras: cells of hundreds of objects, which are sorted another way than the usual dozen.
+        Random random = new Random(13);
+        List<IGeometry> objects = new ArrayList<>();
+        for (int i = 0; i < 300; i++) {
+            Vector3f centre = new Vector3f(random.nextFloat() * 4 - 2, random.nextFloat() * 4 - 2, random.nextFloat() * 40 - 20);
+            objects.add(i % 3 == 0 ? rtd.geometry.Box.between(centre, centre.add(new Vector3f(3, 3, 0.5f)), new Color(i % 256, 0, 0),
+                    rtd.geometry.Material.DEFAULT) : new Sphere(centre, 2 + random.nextFloat() * 3, new Color(0, i % 256, 0)));
+        }
+        for (ICamera camera : new ICamera[] {new PerspectiveCamera(new Vector3f(0, 0, 15), new Vector3f(0, 0, -1), 60),
+            new OrthographicCamera(new Vector3f(0, 0, 25), new Vector3f(0.1f, 0, -1), 12)}) {
+            Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
+            ViewGrid grid = ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1);
+            assertThat(grid.entries() / grid.cellCount()).as("objects a cell").isGreaterThan(32);
+            assertThat(checkEveryPixel(scene, grid, 1, 0)).hasSize(WIDTH * HEIGHT);
+        }
+    }
+
+    @Test
+    void aCrowdedCellIsSortedByDistanceNegativeOnesTooThenByPlace() {
+        float[] nearestByPlace = {3, -2, Float.NEGATIVE_INFINITY, -0.5f, 3, 0, -7};
+        int[] places = {9, 0, 1, 2, 3, 4, 5, 6, 9}; // the cell is places[1 .. 8)
+        ViewGridBuilder.sortCrowded(places, 1, 8, nearestByPlace);
+        assertThat(places).containsExactly(9, 2, 6, 1, 3, 5, 0, 4, 9);
+    }
+
+    @Test
     void isTheSameForOneThreadAndForTwo() {
         Random random = new Random(3);
         List<IGeometry> objects = new ArrayList<>();
