@@ -270,18 +270,24 @@ final class ViewGridBuilder {
 
     /**
      * Sorts each cell's objects by their nearest distance, in parallel by cells: by insertion, as
-     * a cell holds a dozen or so (which keeps objects of equal distance in file order), and a
-     * crowded cell (objects that cover the whole image, say) by their distances and places.
+     * a cell holds a dozen or so, and a crowded cell (objects that cover the whole image, say) by
+     * their distances and places. A list that runs from far to near is turned round first: a
+     * file that lists a mesh from the back to the front fills every cell that way, the worst
+     * order for an insertion sort.
      */
     private void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace) {
         new Parts(cellStart.length - 1, pool).run((first, end) -> {
             for (int c = first; c < end; c++) {
-                if (cellStart[c + 1] - cellStart[c] > INSERTION_SORT_MOST) {
-                    sortCrowded(places, cellStart[c], cellStart[c + 1], nearestByPlace);
+                int from = cellStart[c];
+                int to = cellStart[c + 1];
+                if (to - from > INSERTION_SORT_MOST) {
+                    sortCrowded(places, from, to, nearestByPlace);
                     continue;
                 }
-                int from = cellStart[c];
-                for (int k = from + 1; k < cellStart[c + 1]; k++) {
+                if (to - from > 1 && nearestByPlace[places[from]] > nearestByPlace[places[to - 1]]) {
+                    reverse(places, from, to);
+                }
+                for (int k = from + 1; k < to; k++) {
                     int place = places[k];
                     float distance = nearestByPlace[place];
                     int j = k - 1;
@@ -293,6 +299,14 @@ final class ViewGridBuilder {
                 }
             }
         });
+    }
+
+    private static void reverse(int[] places, int from, int to) {
+        for (int i = from, j = to - 1; i < j; i++, j--) {
+            int swap = places[i];
+            places[i] = places[j];
+            places[j] = swap;
+        }
     }
 
     /**
