@@ -26,8 +26,9 @@ interface ImageFootprint {
      * The pixels {@code [x0, x1] × [y0, y1]} (inclusive, within the image) whose rays may hit
      * the object of box {@code boxes[at .. at+5]} and rounding {@code linear}, {@code quadratic},
      * into {@code into[to .. to+3]} as x0, y0, x1, y1; and the answer: a distance from the ray's
-     * origin before which none of them hits it. NaN, with nothing written, if no ray of the
-     * picture can hit it; −∞ where the numbers cannot bound it (then all pixels).
+     * origin before which none of them hits it. NaN if no ray of the picture can hit it (what it
+     * wrote into {@code into} then means nothing); −∞ where the numbers cannot bound it (then all
+     * pixels).
      */
     float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to);
 

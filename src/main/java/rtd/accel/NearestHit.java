@@ -9,7 +9,8 @@ import rtd.math.Vector3f;
 
 /**
  * One ray, kept as numbers, and the nearest hit found for it so far: the state of the paper's
- * depth test (Listing 4.3) while a tracer visits the leaves of a {@link Bvh} in some order.
+ * depth test (Listing 4.3) while a tracer visits the leaves of a {@link Bvh} in some order, or
+ * the objects of a {@link ViewGrid}'s cell ({@link #testPlacesNearestFirst}).
  *
  * <p>{@link #testLeaf} runs the paper's intersection test and depth test unchanged: the hit
  * nearest to the origin ({@code |P − O|}) wins, and on a tie the object that comes first in

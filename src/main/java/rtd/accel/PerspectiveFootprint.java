@@ -36,6 +36,11 @@ final class PerspectiveFootprint implements ImageFootprint {
     private final double latestOffset;
     /** How far a ray's picture may lie from where exact arithmetic puts it, in pixels. */
     private final double margin;
+    /**
+     * How far behind the eye's plane a ray may run, per unit it runs: {@code D·F} is about f, but
+     * rounding can take it below 0 where f is tiny beside the picture (a field of view near 180°).
+     */
+    private final double backward;
 
     PerspectiveFootprint(PerspectiveCamera camera, int width, int height, double latestOffset) {
         Vector3f eye = camera.position();
@@ -53,6 +58,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         this.latestOffset = latestOffset;
         double size = Math.abs(focal) + width + height;
         margin = DIRECTION_ERROR * size * (1 + (width + height) / Math.abs(focal));
+        backward = Math.max(1e-9, DIRECTION_ERROR * (width + height) / Math.abs(focal));
     }
 
     private static double[] numbers(Vector3f vector) {
@@ -86,8 +92,8 @@ final class PerspectiveFootprint implements ImageFootprint {
         // the corners' least and largest depth along F, and sides along u and v: sums of each axis' least and largest
         double depthLeast = least(x0, x1, forward[0]) + least(y0, y1, forward[1]) + least(z0, z1, forward[2]);
         double depthMost = most(x0, x1, forward[0]) + most(y0, y1, forward[1]) + most(z0, z1, forward[2]);
-        if (depthMost < -1e-9 * reach) {
-            return Float.NaN; // wholly behind the eye: a ray's points have (P − O)·F = t·D·F ≥ 0
+        if (depthMost < -reach * backward) {
+            return Float.NaN; // wholly behind the eye: a ray's points have (P − O)·F = t·D·F ≥ 0, give or take rounding
         }
         double left;
         double rightmost;
@@ -110,6 +116,11 @@ final class PerspectiveFootprint implements ImageFootprint {
                 top = Math.min(top, down);
                 bottom = Math.max(bottom, down);
             }
+        } else if (!(depthMost > 0)) { // at the eye's plane, give or take rounding: anywhere
+            left = Double.NEGATIVE_INFINITY;
+            rightmost = Double.POSITIVE_INFINITY;
+            top = Double.NEGATIVE_INFINITY;
+            bottom = Double.POSITIVE_INFINITY;
         } else { // reaching behind the eye's plane: a side is bounded only where the box keeps to it
             double acrossLeast = least(x0, x1, right[0]) + least(y0, y1, right[1]) + least(z0, z1, right[2]);
             double acrossMost = most(x0, x1, right[0]) + most(y0, y1, right[1]) + most(z0, z1, right[2]);

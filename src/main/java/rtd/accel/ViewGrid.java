@@ -1,10 +1,7 @@
 package rtd.accel;
 
-import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
-import rtd.geometry.IGeometry;
-import rtd.geometry.Rounding;
 import rtd.scene.Scene;
 
 /**

@@ -57,11 +57,17 @@ final class ViewGridBuilder {
     ViewGrid build(ICamera camera, float latestOffset, int samples) {
         ImageFootprint footprint = ImageFootprint.of(camera, width, height, latestOffset);
         int shift = cellShift(footprint, samples);
-        int columns = ViewGrid.cellsAlong(width, shift);
-        int[] cellStart = new int[columns * ViewGrid.cellsAlong(height, shift) + 1];
         Parts parts = new Parts(objects.size(), pool);
-        int[][] perPart = new int[parts.parts][cellStart.length - 1];
-        measure(footprint, parts, shift, columns, perPart);
+        int[][] perPart = new int[parts.parts][cellCount(shift)];
+        measure(footprint, parts, shift, perPart);
+        while (entries(perPart) > MOST_ENTRIES && cellCount(shift) > 1) {
+            // the sample missed objects that cover much of the image: larger cells, counted again
+            shift++;
+            perPart = new int[parts.parts][cellCount(shift)];
+            count(parts, shift, perPart);
+        }
+        int columns = ViewGrid.cellsAlong(width, shift);
+        int[] cellStart = new int[cellCount(shift) + 1];
         int[] fileOrder = leafOrder();
         Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
         float[] nearestByPlace = new float[fileOrder.length];
@@ -75,41 +81,72 @@ final class ViewGridBuilder {
      * of {@code parts}, how many objects each cell of side {@code 1 << shift} gets, into
      * {@code perPart}.
      */
-    private void measure(ImageFootprint footprint, Parts parts, int shift, int columns, int[][] perPart) {
+    private void measure(ImageFootprint footprint, Parts parts, int shift, int[][] perPart) {
+        int columns = ViewGrid.cellsAlong(width, shift);
         parts.run((start, end, part) -> {
             float[] box = new float[6];
-            int[] counts = perPart[part];
             for (int f = start; f < end; f++) {
-                int at = 4 * f;
-                state[f] = measure(objects.get(f), footprint, box, footprints, at);
-                nearest[f] = box[0];
-                if (state[f] == SEEN) {
-                    for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
-                        for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
-                            counts[y * columns + x]++;
-                        }
-                    }
-                }
+                nearest[f] = footprintOf(objects.get(f), footprint, box, footprints, 4 * f);
+                state[f] = nearest[f] == nearest[f] ? SEEN : isFinite(box) ? UNSEEN : UNBOUNDED;
+                countCells(f, shift, columns, perPart[part]);
             }
         });
     }
 
-    /**
-     * Whether {@code object} is {@link #SEEN}, with its footprint in {@code into[at ..]} (x0 > x1
-     * if not) and its nearest distance in {@code box[0]}: the box is room for its bounds first.
-     */
-    private static byte measure(IGeometry object, ImageFootprint footprint, float[] box, int[] into, int at) {
-        object.putBounds(box, 0);
-        boolean finite = isFinite(box);
-        Rounding rounding = object.rounding();
-        float t = finite ? footprint.put(box, 0, rounding.linear(), rounding.quadratic(), into, at) : Float.NaN;
-        box[0] = t;
-        if (t == t) {
-            return SEEN;
+    /** How many objects each cell of side {@code 1 << shift} gets, part by part, into {@code perPart}. */
+    private void count(Parts parts, int shift, int[][] perPart) {
+        int columns = ViewGrid.cellsAlong(width, shift);
+        parts.run((start, end, part) -> {
+            for (int f = start; f < end; f++) {
+                countCells(f, shift, columns, perPart[part]);
+            }
+        });
+    }
+
+    /** Counts object {@code f} in the cells its footprint overlaps, if it is {@link #SEEN}. */
+    private void countCells(int f, int shift, int columns, int[] counts) {
+        if (state[f] != SEEN) {
+            return;
         }
-        into[at] = 1; // x0 > x1: no pixel
-        into[at + 2] = 0;
-        return finite ? UNSEEN : UNBOUNDED;
+        int at = 4 * f;
+        for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
+            for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
+                counts[y * columns + x]++;
+            }
+        }
+    }
+
+    /** All the counts together: the entries the cells would hold. */
+    private static long entries(int[][] perPart) {
+        long sum = 0;
+        for (int[] counts : perPart) {
+            for (int count : counts) {
+                sum += count;
+            }
+        }
+        return sum;
+    }
+
+    /** How many cells of side {@code 1 << shift} cover the image. */
+    private int cellCount(int shift) {
+        return ViewGrid.cellsAlong(width, shift) * ViewGrid.cellsAlong(height, shift);
+    }
+
+    /**
+     * {@code object}'s footprint into {@code into[at ..]} (x0 > x1 if no ray sees it), and its
+     * nearest distance, NaN if no ray sees it (or it has no box); {@code box} is room for its
+     * bounds, which it holds afterwards.
+     */
+    private static float footprintOf(IGeometry object, ImageFootprint footprint, float[] box, int[] into, int at) {
+        object.putBounds(box, 0);
+        Rounding rounding = object.rounding();
+        float nearest = isFinite(box) ? footprint.put(box, 0, rounding.linear(), rounding.quadratic(), into, at)
+                : Float.NaN;
+        if (nearest != nearest) {
+            into[at] = 1; // x0 > x1: no pixel
+            into[at + 2] = 0;
+        }
+        return nearest;
     }
 
     private static boolean isFinite(float[] box) {
@@ -159,13 +196,7 @@ final class ViewGridBuilder {
 
     /** The numbers of the objects' tests, packed in leaf order. */
     private LeafObjects pack(int[] fileOrder) {
-        LeafObjects.ParallelLoop loop = pool == null ? null
-                : (n, action) -> new Parts(n, pool).run((start, end) -> {
-                    for (int i = start; i < end; i++) {
-                        action.accept(i);
-                    }
-                });
-        return new LeafObjects(objects, fileOrder, new float[0], ObjectArrays.of(0), loop, null);
+        return new LeafObjects(objects, fileOrder, new float[0], ObjectArrays.of(0), Parts.loopOn(pool), null);
     }
 
     /** The places in the file of the objects without a box, in file order. */
@@ -186,9 +217,10 @@ final class ViewGridBuilder {
     /**
      * The cell side's power of two for which building and tracing together cost least: each
      * entry of an object in a cell costs a write, and a test by each ray of the cell
-     * ({@code 4^shift · samples²} rays). The entries are estimated on a sample of the objects,
-     * whose footprints are measured for it. A side whose grid would hold more than
-     * {@link #MOST_ENTRIES} entries is passed over when a larger one does not.
+     * ({@code 4^shift · samples²} rays). The entries are estimated on a sample of the objects, whose footprints are measured for it. A side whose grid
+     * would hold more than {@link #MOST_ENTRIES} entries is passed over when a larger one does not;
+     * {@link #build} makes the cells larger still if the sample missed objects that cover much
+     * of the image.
      */
     private int cellShift(ImageFootprint footprint, int samples) {
         int count = objects.size();
@@ -196,7 +228,7 @@ final class ViewGridBuilder {
         int[] sample = new int[4 * ((count + step - 1) / step)];
         float[] box = new float[6];
         for (int f = 0, at = 0; f < count; f += step, at += 4) {
-            measure(objects.get(f), footprint, box, sample, at);
+            footprintOf(objects.get(f), footprint, box, sample, at);
         }
         int best = 0;
         double bestCost = Double.POSITIVE_INFINITY;
@@ -205,10 +237,10 @@ final class ViewGridBuilder {
             for (int at = 0; at < sample.length; at += 4) {
                 entries += cellsOf(sample, at, shift);
             }
-            double estimate = (double) entries * count / (sample.length / 4.0);
+            double estimate = sample.length == 0 ? 0 : (double) entries * count / (sample.length / 4.0);
             double rays = (double) (1L << (2 * shift)) * samples * samples;
             double cost = estimate * (1 + rays) * (estimate > MOST_ENTRIES ? 1e6 : 1);
-            if (cost < bestCost) {
+            if (cost <= bestCost) { // on a tie the larger cells: an empty grid is one cell
                 best = shift;
                 bestCost = cost;
             }
@@ -232,17 +264,17 @@ final class ViewGridBuilder {
     /**
      * Writes each seen object's leaf place into the cells its footprint overlaps, part by part of
      * the objects in parallel, from each part's counts per cell ({@link #measure}, in
-     * {@code next}): a cell's objects take places in the order of the parts, each part's from
+     * {@code perPart}, which become each part's next place per cell): a cell's objects take places in the order of the parts, each part's from
      * where the earlier parts' end, and {@code cellStart} becomes the running sum; then each
      * part writes its objects' places into theirs, and their nearest distance by place into
      * {@code nearestByPlace}. So a cell's objects come in file order, however many parts there are.
      */
-    private int[] fill(Parts parts, int[][] next, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
+    private int[] fill(Parts parts, int[][] perPart, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
         int cells = cellStart.length - 1;
         int total = 0;
         for (int c = 0; c < cells; c++) {
             cellStart[c] = total;
-            for (int[] counts : next) {
+            for (int[] counts : perPart) {
                 int count = counts[c];
                 counts[c] = total;
                 total += count;
@@ -251,7 +283,7 @@ final class ViewGridBuilder {
         cellStart[cells] = total;
         int[] places = new int[total];
         parts.run((start, end, part) -> {
-            int[] cursor = next[part];
+            int[] cursor = perPart[part];
             for (int f = start; f < end; f++) {
                 if (state[f] == SEEN) {
                     int at = 4 * f;

@@ -13,6 +13,9 @@ import rtd.render.WorkCount;
  * intersection test and depth test (Listing 4.3, {@link NearestHit}) on the objects of its
  * pixel's cell, and on the objects without a box. The objects a ray can hit all lie in its cell,
  * and the depth test does not depend on the order of the tests, so the hit is the paper's loop's.
+ * The cell lists its objects by a distance before which none of their hits lies, nearest first:
+ * once that distance passes the hit found, by more than rounding can explain (as a box's entry
+ * does in {@link BvhTracer}), no object after it can win or tie, and the ray stops.
  *
  * <p>A ray that is not the grid camera's, such as a ray given alone, runs the tests on every
  * object, as the paper's loop does: right for any ray, and fast only for the camera's.
@@ -80,9 +83,14 @@ public final class ViewGridTracer implements Tracer {
         return true;
     }
 
-    /** Whether the bundle holds rays of the grid's camera and picture, through points of their pixels the grid allows for. */
+    /**
+     * Whether the bundle holds rays of the grid's camera and picture, for pixels of the picture,
+     * through points of their pixels the grid allows for.
+     */
     private boolean serves(RayBundle bundle) {
         return bundle.camera() == grid.camera && bundle.width() == grid.width && bundle.height() == grid.height
+                && bundle.left() >= 0 && bundle.top() >= 0 && bundle.right() <= grid.width
+                && bundle.bottom() <= grid.height
                 && bundle.sampleX() >= 0 && bundle.sampleX() <= grid.latestOffset
                 && bundle.sampleY() >= 0 && bundle.sampleY() <= grid.latestOffset;
     }

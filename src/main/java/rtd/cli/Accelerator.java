@@ -26,25 +26,58 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      */
     static final int GRID_THRESHOLD = 1_000;
 
+    /** What a run finds its hits with, and how the progress line names its building. */
+    enum Kind {
+        LOOP("the paper's loop: nothing to build"),
+        BVH("building the BVH"),
+        GRID("building the view grid");
+
+        final String building;
+
+        Kind(String building) {
+            this.building = building;
+        }
+    }
+
     /**
-     * Builds what {@code accel} asks for {@code scene}, for a {@code width × height} picture with
-     * {@code samples²} rays per pixel, with {@code threads} threads.
+     * What {@code accel} asks for {@code scene}: {@code auto} takes the view grid for a scene
+     * in flat colours of {@link #GRID_THRESHOLD} objects or more, else the BVH if it has objects.
      */
-    static Accelerator of(Scene scene, Accel accel, int width, int height, int samples, int threads) {
+    static Kind choose(Scene scene, Accel accel) {
         int objects = scene.objects().size();
         boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
-        boolean grid = accel == Accel.grid && gridFits
-                || accel == Accel.auto && gridFits && scene.lights().isEmpty() && objects >= GRID_THRESHOLD;
-        if (grid) {
-            ViewGrid viewGrid = ViewGrid.build(scene, width, height, samples, threads);
-            return new Accelerator(viewGrid::newTracer, () -> String.format(Locale.ROOT,
-                    "view grid of %s of %d × %d pixels, %s", StatsReport.count(viewGrid.cellCount(), "cell"),
-                    viewGrid.cellSide(), viewGrid.cellSide(), StatsReport.count(viewGrid.entries(), "entry", "entries")), false);
+        if (accel == Accel.grid && gridFits
+                || accel == Accel.auto && gridFits && scene.lights().isEmpty() && objects >= GRID_THRESHOLD) {
+            return Kind.GRID;
         }
-        if (accel != Accel.none && objects > 0) {
-            Bvh bvh = Bvh.build(scene, threads);
-            return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+        return accel != Accel.none && objects > 0 ? Kind.BVH : Kind.LOOP;
+    }
+
+    /** {@link #build} of what {@code accel} asks ({@link #choose}). */
+    static Accelerator of(Scene scene, Accel accel, int width, int height, int samples, int threads) {
+        return build(choose(scene, accel), scene, width, height, samples, threads);
+    }
+
+    /**
+     * Builds {@code kind} for {@code scene}, for a {@code width × height} picture with
+     * {@code samples²} rays per pixel, with {@code threads} threads.
+     */
+    static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads) {
+        switch (kind) {
+            case GRID -> {
+                ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
+                return new Accelerator(grid::newTracer, () -> String.format(Locale.ROOT,
+                        "view grid of %s of %d × %d pixels, %s", StatsReport.count(grid.cellCount(), "cell"),
+                        grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries")), false);
+            }
+            case BVH -> {
+                Bvh bvh = Bvh.build(scene, threads);
+                return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+            }
+            default -> {
+                return new Accelerator(() -> new LinearTracer(scene), () -> "no BVH: the paper's loop tests every object",
+                        false);
+            }
         }
-        return new Accelerator(() -> new LinearTracer(scene), () -> "no BVH: the paper's loop tests every object", false);
     }
 }

@@ -59,8 +59,9 @@ final class SceneRun {
             timer.endPhase("parse");
             ImageSize.check(commandLine, settings.width(), settings.height());
 
-            display.show(ProgressDisplay.Phase.of("building the BVH"));
-            Accelerator accelerator = settings.paper() ? null : Accelerator.of(scene, settings.accel(), settings.width(),
+            Accelerator.Kind kind = settings.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, settings.accel());
+            display.show(ProgressDisplay.Phase.of(kind.building));
+            Accelerator accelerator = settings.paper() ? null : Accelerator.build(kind, scene, settings.width(),
                     settings.height(), settings.samples(), settings.threads());
             timer.endPhase("build");
 

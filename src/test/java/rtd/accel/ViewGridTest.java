@@ -257,6 +257,57 @@ class ViewGridTest {
     }
 
     @Test
+    void whenTheCellSidesSampleMissesTheObjectsThatCoverThePictureTheCellsGrowInstead() {
+        // 8,192 spheres: the even ones tiny, the odd ones large enough to cover the whole picture.
+        // The cell side is estimated on every second object, the tiny ones: pixel-sized cells
+        // would then hold 4,096 objects each, 8.5 billion entries. The builder counts, and grows.
+        List<IGeometry> objects = new ArrayList<>();
+        Random random = new Random(17);
+        for (int i = 0; i < 8_192; i++) {
+            Vector3f centre = new Vector3f(random.nextFloat() * 30 - 15, random.nextFloat() * 16 - 8, -100 - i % 2 * 100);
+            objects.add(new Sphere(centre, i % 2 == 0 ? 0.05f : 80, new Color(i % 256, 0, 0)));
+        }
+        Scene scene = new Scene(new Color(0, 0, 0),
+                new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50), objects);
+        ViewGrid grid = ViewGrid.build(scene, 1920, 1080, 1, 2);
+        assertThat((long) grid.entries()).isPositive().isLessThanOrEqualTo(1L << 25);
+        assertThat(grid.cellSide()).isGreaterThan(1);
+        ViewGridTracer tracer = grid.newTracer();
+        RayBundle bundle = new RayBundle(64);
+        HitBuffer hits = new HitBuffer(64);
+        for (int square = 0; square < 40; square++) {
+            int left = random.nextInt(1920 / 8) * 8;
+            int top = random.nextInt(1080 / 8) * 8;
+            bundle.fill(scene.camera(), left, top, left + 8, top + 8, 1920, 1080);
+            tracer.traceAll(bundle, hits);
+            for (int i = 0; i < 64; i++) {
+                assertSame(hits.hit(i, bundle, objects), scene.nearestHit(bundle.ray(i)), "square at " + left + ", " + top);
+            }
+        }
+    }
+
+    @Test
+    void aSquareOfRaysBeyondThePictureIsTracedByTheLoop() {
+        Scene mixed = MixedScenes.generate(19, 200);
+        Scene scene = new Scene(mixed.ambient(), new PerspectiveCamera(new Vector3f(0, 0, 40), new Vector3f(0, 0, -1), 60),
+                mixed.objects());
+        ViewGridTracer tracer = ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1).newTracer();
+        RayBundle bundle = new RayBundle(64);
+        HitBuffer hits = new HitBuffer(64);
+        int hit = 0;
+        for (int[] square : new int[][] {{WIDTH, 0}, {-8, 8}, {8, HEIGHT}, {16, -8}}) {
+            bundle.fill(scene.camera(), square[0], square[1], square[0] + 8, square[1] + 8, WIDTH, HEIGHT);
+            tracer.traceAll(bundle, hits);
+            for (int i = 0; i < 64; i++) {
+                Hit expected = scene.nearestHit(bundle.ray(i));
+                assertSame(hits.hit(i, bundle, scene.objects()), expected, "square at " + square[0] + ", " + square[1]);
+                hit += expected == null ? 0 : 1;
+            }
+        }
+        assertThat(hit).as("rays beyond the picture that hit something").isGreaterThan(50);
+    }
+
+    @Test
     void aCrowdedCellIsSortedByDistanceNegativeOnesTooThenByPlace() {
         float[] nearestByPlace = {3, -2, Float.NEGATIVE_INFINITY, -0.5f, 3, 0, -7};
         int[] places = {9, 0, 1, 2, 3, 4, 5, 6, 9}; // the cell is places[1 .. 8)
