@@ -4,6 +4,7 @@ import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Rounding;
 
 /**
  * Where on the image a camera may see an object: the rectangle of pixels whose rays
@@ -31,6 +32,32 @@ interface ImageFootprint {
      * pixels).
      */
     float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to);
+
+    /**
+     * {@link #put} for {@code object}: its footprint into {@code into[at ..]} (x0 > x1 if no ray
+     * sees it) and its nearest distance, NaN if no ray sees it or it has no finite box;
+     * {@code box} is room for its bounds, which it holds afterwards.
+     */
+    default float putObject(IGeometry object, float[] box, int[] into, int at) {
+        object.putBounds(box, 0);
+        Rounding rounding = object.rounding();
+        float nearest = isFinite(box) ? put(box, 0, rounding.linear(), rounding.quadratic(), into, at) : Float.NaN;
+        if (nearest != nearest) {
+            into[at] = 1; // x0 > x1: no pixel
+            into[at + 2] = 0;
+        }
+        return nearest;
+    }
+
+    /** Whether all six numbers of a box are finite. */
+    static boolean isFinite(float[] box) {
+        for (float value : box) {
+            if (!Float.isFinite(value)) {
+                return false;
+            }
+        }
+        return true;
+    }
 
     /**
      * The footprints on a {@code width × height} image of {@code camera}, for rays through the

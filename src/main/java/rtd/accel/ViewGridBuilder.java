@@ -1,18 +1,17 @@
 package rtd.accel;
 
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Rounding;
 
 /**
  * Builds a {@link ViewGrid}, in passes over arrays, each on all threads where it can be: every
  * object's footprint on the image and nearest distance ({@link ImageFootprint}); a place for it in the
  * leaf, by the square of the image it lies in, so that neighbours on the image lie side by side
- * in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists; and each
- * list sorted nearest first. The grid is the same for any number of threads.
+ * in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists, with cells
+ * of the side {@link CellSide} chooses; and each list sorted nearest first ({@link NearestFirst}).
+ * The grid is the same for any number of threads.
  */
 final class ViewGridBuilder {
 
@@ -22,13 +21,6 @@ final class ViewGridBuilder {
     private static final byte UNBOUNDED = 2;
     /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's squares. */
     private static final int TILE_SHIFT = 3;
-
-    /** The most cell entries the grid is made with if a larger cell keeps under it (4 bytes each). */
-    private static final long MOST_ENTRIES = 1L << 25;
-    /** How many objects at most {@link #cellShift} measures to estimate the entries: enough for a mean. */
-    private static final int SAMPLE = 1 << 12;
-    /** A cell of more objects than this is sorted by {@link Arrays#sort}, not by insertion. */
-    private static final int INSERTION_SORT_MOST = 32;
 
     private final List<IGeometry> objects;
     private final ForkJoinPool pool;
@@ -56,11 +48,11 @@ final class ViewGridBuilder {
     /** The grid of {@code camera}'s rays through points up to {@code latestOffset} into their pixels, {@code samples²} a pixel. */
     ViewGrid build(ICamera camera, float latestOffset, int samples) {
         ImageFootprint footprint = ImageFootprint.of(camera, width, height, latestOffset);
-        int shift = cellShift(footprint, samples);
+        int shift = CellSide.choose(objects, footprint, width, height, samples);
         Parts parts = new Parts(objects.size(), pool);
         int[][] perPart = new int[parts.parts][cellCount(shift)];
         measure(footprint, parts, shift, perPart);
-        while (entries(perPart) > MOST_ENTRIES && cellCount(shift) > 1) {
+        while (entries(perPart) > CellSide.MOST_ENTRIES && cellCount(shift) > 1) {
             // the sample missed objects that cover much of the image: larger cells, counted again
             shift++;
             perPart = new int[parts.parts][cellCount(shift)];
@@ -72,7 +64,7 @@ final class ViewGridBuilder {
         Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
         float[] nearestByPlace = new float[fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
-        sortNearestFirst(cellStart, places, nearestByPlace);
+        NearestFirst.sort(cellStart, places, nearestByPlace, pool);
         return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
     }
 
@@ -86,8 +78,8 @@ final class ViewGridBuilder {
         parts.run((start, end, part) -> {
             float[] box = new float[6];
             for (int f = start; f < end; f++) {
-                nearest[f] = footprintOf(objects.get(f), footprint, box, footprints, 4 * f);
-                state[f] = nearest[f] == nearest[f] ? SEEN : isFinite(box) ? UNSEEN : UNBOUNDED;
+                nearest[f] = footprint.putObject(objects.get(f), box, footprints, 4 * f);
+                state[f] = nearest[f] == nearest[f] ? SEEN : ImageFootprint.isFinite(box) ? UNSEEN : UNBOUNDED;
                 countCells(f, shift, columns, perPart[part]);
             }
         });
@@ -127,35 +119,8 @@ final class ViewGridBuilder {
         return sum;
     }
 
-    /** How many cells of side {@code 1 << shift} cover the image. */
     private int cellCount(int shift) {
-        return ViewGrid.cellsAlong(width, shift) * ViewGrid.cellsAlong(height, shift);
-    }
-
-    /**
-     * {@code object}'s footprint into {@code into[at ..]} (x0 > x1 if no ray sees it), and its
-     * nearest distance, NaN if no ray sees it (or it has no box); {@code box} is room for its
-     * bounds, which it holds afterwards.
-     */
-    private static float footprintOf(IGeometry object, ImageFootprint footprint, float[] box, int[] into, int at) {
-        object.putBounds(box, 0);
-        Rounding rounding = object.rounding();
-        float nearest = isFinite(box) ? footprint.put(box, 0, rounding.linear(), rounding.quadratic(), into, at)
-                : Float.NaN;
-        if (nearest != nearest) {
-            into[at] = 1; // x0 > x1: no pixel
-            into[at + 2] = 0;
-        }
-        return nearest;
-    }
-
-    private static boolean isFinite(float[] box) {
-        for (float value : box) {
-            if (!Float.isFinite(value)) {
-                return false;
-            }
-        }
-        return true;
+        return CellSide.cellCount(width, height, shift);
     }
 
     /**
@@ -215,53 +180,6 @@ final class ViewGridBuilder {
     }
 
     /**
-     * The cell side's power of two for which building and tracing together cost least: each
-     * entry of an object in a cell costs a write, and a test by each ray of the cell
-     * ({@code 4^shift · samples²} rays). The entries are estimated on a sample of the objects, whose footprints are measured for it. A side whose grid
-     * would hold more than {@link #MOST_ENTRIES} entries is passed over when a larger one does not;
-     * {@link #build} makes the cells larger still if the sample missed objects that cover much
-     * of the image.
-     */
-    private int cellShift(ImageFootprint footprint, int samples) {
-        int count = objects.size();
-        int step = Math.max(1, count / SAMPLE);
-        int[] sample = new int[4 * ((count + step - 1) / step)];
-        float[] box = new float[6];
-        for (int f = 0, at = 0; f < count; f += step, at += 4) {
-            footprintOf(objects.get(f), footprint, box, sample, at);
-        }
-        int best = 0;
-        double bestCost = Double.POSITIVE_INFINITY;
-        for (int shift = 0; shift < 31; shift++) {
-            long entries = 0;
-            for (int at = 0; at < sample.length; at += 4) {
-                entries += cellsOf(sample, at, shift);
-            }
-            double estimate = sample.length == 0 ? 0 : (double) entries * count / (sample.length / 4.0);
-            double rays = (double) (1L << (2 * shift)) * samples * samples;
-            double cost = estimate * (1 + rays) * (estimate > MOST_ENTRIES ? 1e6 : 1);
-            if (cost <= bestCost) { // on a tie the larger cells: an empty grid is one cell
-                best = shift;
-                bestCost = cost;
-            }
-            if (1 << shift >= Math.max(width, height)) {
-                break; // one cell holds the whole image: no more entries than objects
-            }
-        }
-        return best;
-    }
-
-    /** The number of cells of side {@code 1 << shift} that the footprint at {@code at} overlaps. */
-    private static long cellsOf(int[] footprints, int at, int shift) {
-        if (footprints[at] > footprints[at + 2]) {
-            return 0;
-        }
-        long across = (footprints[at + 2] >> shift) - (footprints[at] >> shift) + 1;
-        long down = (footprints[at + 3] >> shift) - (footprints[at + 1] >> shift) + 1;
-        return across * down;
-    }
-
-    /**
      * Writes each seen object's leaf place into the cells its footprint overlaps, part by part of
      * the objects in parallel, from each part's counts per cell ({@link #measure}, in
      * {@code perPart}, which become each part's next place per cell): a cell's objects take places in the order of the parts, each part's from
@@ -298,63 +216,5 @@ final class ViewGridBuilder {
             }
         });
         return places;
-    }
-
-    /**
-     * Sorts each cell's objects by their nearest distance, in parallel by cells: by insertion, as
-     * a cell holds a dozen or so, and a crowded cell (objects that cover the whole image, say) by
-     * their distances and places. A list that runs from far to near is turned round first: a
-     * file that lists a mesh from the back to the front fills every cell that way, the worst
-     * order for an insertion sort.
-     */
-    private void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace) {
-        new Parts(cellStart.length - 1, pool).run((first, end) -> {
-            for (int c = first; c < end; c++) {
-                int from = cellStart[c];
-                int to = cellStart[c + 1];
-                if (to - from > INSERTION_SORT_MOST) {
-                    sortCrowded(places, from, to, nearestByPlace);
-                    continue;
-                }
-                if (to - from > 1 && nearestByPlace[places[from]] > nearestByPlace[places[to - 1]]) {
-                    reverse(places, from, to);
-                }
-                for (int k = from + 1; k < to; k++) {
-                    int place = places[k];
-                    float distance = nearestByPlace[place];
-                    int j = k - 1;
-                    while (j >= from && nearestByPlace[places[j]] > distance) {
-                        places[j + 1] = places[j];
-                        j--;
-                    }
-                    places[j + 1] = place;
-                }
-            }
-        });
-    }
-
-    private static void reverse(int[] places, int from, int to) {
-        for (int i = from, j = to - 1; i < j; i++, j--) {
-            int swap = places[i];
-            places[i] = places[j];
-            places[j] = swap;
-        }
-    }
-
-    /**
-     * Sorts {@code places[from .. to)} by distance, then place: each as one long, the distance's
-     * bits turned into an int that orders as the floats do (negative ones too), above the place.
-     */
-    static void sortCrowded(int[] places, int from, int to, float[] nearestByPlace) {
-        long[] keys = new long[to - from];
-        for (int k = from; k < to; k++) {
-            int bits = Float.floatToIntBits(nearestByPlace[places[k]]);
-            bits ^= (bits >> 31) & 0x7FFF_FFFF; // a negative float's bits order backwards: turn them round
-            keys[k - from] = (long) bits << 32 | places[k];
-        }
-        Arrays.sort(keys);
-        for (int k = from; k < to; k++) {
-            places[k] = (int) keys[k - from];
-        }
     }
 }
