@@ -18,7 +18,7 @@ import rtd.view.ViewShader;
 
 /**
  * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture
- * would take (the paper's loop or the BVH, all threads), and writes it as a PNG, its scale on
+ * would take (the paper's loop, the BVH or the view grid, all threads), and writes it as a PNG, its scale on
  * standard error.
  */
 final class ViewRun {
