@@ -2,6 +2,7 @@ package rtd.accel;
 
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
+import rtd.render.Tracer;
 import rtd.scene.Scene;
 
 /**
@@ -12,9 +13,9 @@ import rtd.scene.Scene;
  * image, and the search for what a ray hits is a search in two dimensions: a ray tests only the
  * objects of its cell, a few where the paper's loop tests all, and no tree is built or walked.
  *
- * <p>It serves only the camera's rays ({@link ViewGridTracer}), so it pays for scenes in flat
- * colours, where no other ray is traced; a scene with lights casts shadow rays in every
- * direction and needs the {@link Bvh}. The cells hold places in {@link #objects}, a hierarchy
+ * <p>It serves only the camera's rays ({@link ViewGridTracer}): in a picture in flat colours no
+ * other ray is traced; a scene with lights casts shadow rays in every direction, which its
+ * tracer hands to a {@link Bvh}'s. The cells hold places in {@link #objects}, a hierarchy
  * of one leaf that holds every object with its numbers packed for the test. A ray tests its
  * cell's objects nearest first, and stops at the first that lies beyond a hit it has found:
  * where objects hide each other, it tests the few in front.
@@ -125,8 +126,13 @@ public final class ViewGrid {
         return places.length;
     }
 
-    /** A new tracer for this grid's camera rays; one per thread. */
+    /** A new tracer for this grid's camera rays, and the paper's loop for any other ray; one per thread. */
     public ViewGridTracer newTracer() {
-        return new ViewGridTracer(this);
+        return new ViewGridTracer(this, null);
+    }
+
+    /** A new tracer for this grid's camera rays, and {@code others} for any other ray; one per thread. */
+    public ViewGridTracer newTracer(Tracer others) {
+        return new ViewGridTracer(this, others);
     }
 }

@@ -17,8 +17,10 @@ import rtd.render.WorkCount;
  * once that distance passes the hit found, by more than rounding can explain (as a box's entry
  * does in {@link BvhTracer}), no object after it can win or tie, and the ray stops.
  *
- * <p>A ray that is not the grid camera's, such as a ray given alone, runs the tests on every
- * object, as the paper's loop does: right for any ray, and fast only for the camera's.
+ * <p>A ray that is not the grid camera's (a shadow ray, a mirrored ray, a ray given alone) goes
+ * to the tracer for the others, a {@link BvhTracer} in a scene with lights; without one it runs
+ * the tests on every object, as the paper's loop does: right for any ray, and fast only for the
+ * camera's.
  *
  * <p>Not thread-safe: it keeps the ray's state and counters of its own. Use one per thread.
  */
@@ -27,17 +29,23 @@ public final class ViewGridTracer implements Tracer {
     private final ViewGrid grid;
     private final Bvh objects;
     private final NearestHit hit;
+    /** The tracer of the rays that are not the camera's, or null for the loop over every object. */
+    private final Tracer others;
     private long rays;
 
-    ViewGridTracer(ViewGrid grid) {
+    ViewGridTracer(ViewGrid grid, Tracer others) {
         this.grid = grid;
         this.objects = grid.objects;
         this.hit = new NearestHit(objects);
+        this.others = others;
     }
 
-    /** The loop over every object, for any ray. */
+    /** The tracer for the others' rays, else the loop over every object, for any ray. */
     @Override
     public Hit nearestHit(Ray ray) {
+        if (others != null) {
+            return others.nearestHit(ray);
+        }
         rays++;
         Vector3f origin = ray.origin();
         Vector3f direction = ray.direction();
@@ -49,11 +57,21 @@ public final class ViewGridTracer implements Tracer {
         return hit.hit(ray);
     }
 
-    /** The camera's rays test the objects of their cells; other rays are traced one by one. */
+    /** A shadow ray's question, for the tracer for the others' rays, else from the loop's hit. */
+    @Override
+    public boolean blocked(Ray ray, float distance) {
+        return others != null ? others.blocked(ray, distance) : Tracer.super.blocked(ray, distance);
+    }
+
+    /** The camera's rays test the objects of their cells; other rays go to the tracer for them, or one by one to the loop. */
     @Override
     public void traceAll(RayBundle bundle, HitBuffer hits) {
         if (!serves(bundle)) {
-            Tracer.super.traceAll(bundle, hits);
+            if (others != null) {
+                others.traceAll(bundle, hits);
+            } else {
+                Tracer.super.traceAll(bundle, hits);
+            }
             return;
         }
         bundle.make();
@@ -75,8 +93,10 @@ public final class ViewGridTracer implements Tracer {
     /** The camera's rays of empty cells hit nothing, if every object has a box. */
     @Override
     public boolean traceIfAllMiss(RayBundle bundle) {
-        if (objects.unbounded.length > 0 || !serves(bundle)
-                || !grid.emptyOver(bundle.left(), bundle.top(), bundle.right(), bundle.bottom())) {
+        if (!serves(bundle)) {
+            return others != null && others.traceIfAllMiss(bundle);
+        }
+        if (objects.unbounded.length > 0 || !grid.emptyOver(bundle.left(), bundle.top(), bundle.right(), bundle.bottom())) {
             return false;
         }
         rays += bundle.count();
@@ -97,11 +117,12 @@ public final class ViewGridTracer implements Tracer {
 
     @Override
     public long testsRun() {
-        return hit.testsRun();
+        return hit.testsRun() + (others != null ? others.testsRun() : 0);
     }
 
     @Override
     public WorkCount work() {
-        return new WorkCount(rays, BvhTracer.testsByKind(objects, hit.tests(), hit.unboundedTests()), 0);
+        WorkCount own = new WorkCount(rays, BvhTracer.testsByKind(objects, hit.tests(), hit.unboundedTests()), 0);
+        return others != null ? own.plus(others.work()) : own;
     }
 }

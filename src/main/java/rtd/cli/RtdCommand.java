@@ -82,8 +82,8 @@ public final class RtdCommand implements Callable<Integer> {
 
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
-                    + "grid: a grid on the image for the camera's rays; auto: grid for 1,000 objects or more in flat "
-                    + "colours, else bvh (default: ${DEFAULT-VALUE})")
+                    + "grid: a grid on the image for the camera's rays (with bvh for shadows and mirrors); auto: grid "
+                    + "for 1,000 objects or more, else bvh (default: ${DEFAULT-VALUE})")
     private Accel accel;
 
     @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "

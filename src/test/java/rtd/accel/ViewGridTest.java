@@ -333,6 +333,24 @@ class ViewGridTest {
         assertThat(one.entries()).isGreaterThan(objects.size());
     }
 
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {21, 22, 23})
+    void withLightsTheCamerasRaysTakeTheGridAndTheOthersTheTreeAndThePictureIsTheTrees(long seed) {
+        Scene mixed = MixedScenes.shaded(MixedScenes.generate(seed, 250), seed);
+        Scene scene = new Scene(mixed.ambient(), randomCamera(new Random(seed)), mixed.objects(), mixed.lights());
+        ViewGrid grid = ViewGrid.build(scene, WIDTH, HEIGHT, 1, 2);
+        Bvh bvh = Bvh.build(scene, 2);
+        java.util.function.Function<rtd.render.Tracer, rtd.render.Shader> shaders =
+                tracer -> new rtd.shade.WhittedShader(scene, tracer);
+        rtd.render.RenderResult both = rtd.render.ParallelRenderer.render(scene.camera(), () -> grid.newTracer(bvh.newTracer()),
+                shaders, WIDTH, HEIGHT, 2, new rtd.render.RenderProgress());
+        rtd.render.RenderResult tree = rtd.render.ParallelRenderer.render(scene.camera(), bvh::newTracer, shaders, WIDTH,
+                HEIGHT, 2, new rtd.render.RenderProgress());
+        assertThat(both.image().rgb()).isEqualTo(tree.image().rgb());
+        assertThat(both.work().secondaryRays()).isEqualTo(tree.work().secondaryRays()).isNotEmpty();
+        assertThat(both.work().rays()).isEqualTo(tree.work().rays());
+    }
+
     @Test
     void aRayThatIsNotTheCamerasFindsTheLoopsHitToo() {
         Scene mixed = MixedScenes.generate(11, 200);
