@@ -107,4 +107,25 @@ interface ImageFootprint {
         float below = Math.nextDown((float) (distance - 1e-6 * Math.abs(distance)));
         return below == below ? below : Float.NEGATIVE_INFINITY;
     }
+
+    /** How far 0 lies from the box {@code [x0, x1] × [y0, y1] × [z0, z1]}. */
+    static double distance(double x0, double y0, double z0, double x1, double y1, double z1) {
+        return Math.sqrt(outside(x0, x1) + outside(y0, y1) + outside(z0, z1));
+    }
+
+    /** The least dot product of a point of the box {@code [x0, x1] × [y0, y1] × [z0, z1]} with {@code axis}. */
+    static double leastAlong(double x0, double y0, double z0, double x1, double y1, double z1, double[] axis) {
+        return least(x0, x1, axis[0]) + least(y0, y1, axis[1]) + least(z0, z1, axis[2]);
+    }
+
+    /** The square of how far 0 lies outside {@code [low, high]}. */
+    private static double outside(double low, double high) {
+        double outside = Math.max(0, Math.max(low, -high));
+        return outside * outside;
+    }
+
+    /** The least of {@code low·factor} and {@code high·factor}. */
+    static double least(double low, double high, double factor) {
+        return Math.min(low * factor, high * factor);
+    }
 }

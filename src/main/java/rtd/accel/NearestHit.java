@@ -256,6 +256,28 @@ final class NearestHit {
         }
     }
 
+    /**
+     * The paper's intersection test and depth test on the objects at places
+     * {@code places[from .. to)} in leaf order, until one is hit: a shadow ray's question
+     * ({@link #limitTo} first), which any hit answers. The places come in the order of
+     * {@code nearest}, a distance from the light before which no hit on the object lies, growing
+     * along them; the tests stop at the first place beyond {@code farthest}, the farthest from
+     * the light that a hit of the ray can lie.
+     */
+    void testPlacesUntilHit(int[] places, int from, int to, float[] nearest, float farthest) {
+        for (int k = from; k < to && best < 0; k++) {
+            int place = places[k];
+            if (nearest[place] > farthest) {
+                return;
+            }
+            treeTests++;
+            if (severalKinds) {
+                tests[leaves.kinds[place]]++;
+            }
+            test(place);
+        }
+    }
+
     /** The paper's intersection test and depth test on the object at place {@code i} in leaf order. */
     private void test(int i) {
         float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);

@@ -78,7 +78,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         double farthest = Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
         double reach = farthest / (1 - Math.sqrt(3) * widest);
         double grow = linear * reach + Math.min(IGeometry.ROUNDING_CONE * reach, quadratic * reach * reach);
-        double nearest = Math.sqrt(outside(x0, x1) + outside(y0, y1) + outside(z0, z1)) - Math.sqrt(3) * grow;
+        double nearest = ImageFootprint.distance(x0, y0, z0, x1, y1, z1) - Math.sqrt(3) * grow;
         if (!(widest * Math.sqrt(3) < 0.5 && Double.isFinite(grow))) {
             ImageFootprint.whole(width, height, into, to);
             return Float.NEGATIVE_INFINITY;
@@ -90,7 +90,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         y1 += grow;
         z1 += grow;
         // the corners' least and largest depth along F, and sides along u and v: sums of each axis' least and largest
-        double depthLeast = least(x0, x1, forward[0]) + least(y0, y1, forward[1]) + least(z0, z1, forward[2]);
+        double depthLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, forward);
         double depthMost = most(x0, x1, forward[0]) + most(y0, y1, forward[1]) + most(z0, z1, forward[2]);
         if (depthMost < -reach * backward) {
             return Float.NaN; // wholly behind the eye: a ray's points have (P − O)·F = t·D·F ≥ 0, give or take rounding
@@ -122,9 +122,9 @@ final class PerspectiveFootprint implements ImageFootprint {
             top = Double.NEGATIVE_INFINITY;
             bottom = Double.POSITIVE_INFINITY;
         } else { // reaching behind the eye's plane: a side is bounded only where the box keeps to it
-            double acrossLeast = least(x0, x1, right[0]) + least(y0, y1, right[1]) + least(z0, z1, right[2]);
+            double acrossLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, right);
             double acrossMost = most(x0, x1, right[0]) + most(y0, y1, right[1]) + most(z0, z1, right[2]);
-            double downLeast = least(x0, x1, this.down[0]) + least(y0, y1, this.down[1]) + least(z0, z1, this.down[2]);
+            double downLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, this.down);
             double downMost = most(x0, x1, this.down[0]) + most(y0, y1, this.down[1]) + most(z0, z1, this.down[2]);
             left = acrossLeast > 0 ? focal * acrossLeast / depthMost : Double.NEGATIVE_INFINITY;
             rightmost = acrossMost < 0 ? focal * acrossMost / depthMost : Double.POSITIVE_INFINITY;
@@ -146,17 +146,6 @@ final class PerspectiveFootprint implements ImageFootprint {
     private static double farther(double low, double high) {
         double far = Math.max(Math.abs(low), Math.abs(high));
         return far * far;
-    }
-
-    /** The square of how far 0 lies outside {@code [low, high]}. */
-    private static double outside(double low, double high) {
-        double outside = Math.max(0, Math.max(low, -high));
-        return outside * outside;
-    }
-
-    /** The least of {@code low·factor} and {@code high·factor}. */
-    private static double least(double low, double high, double factor) {
-        return Math.min(low * factor, high * factor);
     }
 
     /** The largest of {@code low·factor} and {@code high·factor}. */

@@ -14,8 +14,9 @@ import rtd.scene.Scene;
  * objects of its cell, a few where the paper's loop tests all, and no tree is built or walked.
  *
  * <p>It serves only the camera's rays ({@link ViewGridTracer}): in a picture in flat colours no
- * other ray is traced; a scene with lights casts shadow rays in every direction, which its
- * tracer hands to a {@link Bvh}'s. The cells hold places in {@link #objects}, a hierarchy
+ * other ray is traced; a scene with lights casts shadow rays, which its tracer hands on: to the
+ * {@link LightGrids}, which see the objects from each light as this grid sees them from the
+ * camera, and the mirror rays and the rest to a {@link Bvh}'s. The cells hold places in {@link #objects}, a hierarchy
  * of one leaf that holds every object with its numbers packed for the test. A ray tests its
  * cell's objects nearest first, and stops at the first that lies beyond a hit it has found:
  * where objects hide each other, it tests the few in front.

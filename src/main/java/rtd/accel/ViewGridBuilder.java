@@ -47,7 +47,15 @@ final class ViewGridBuilder {
 
     /** The grid of {@code camera}'s rays through points up to {@code latestOffset} into their pixels, {@code samples²} a pixel. */
     ViewGrid build(ICamera camera, float latestOffset, int samples) {
-        ImageFootprint footprint = ImageFootprint.of(camera, width, height, latestOffset);
+        return build(ImageFootprint.of(camera, width, height, latestOffset), camera, latestOffset, samples);
+    }
+
+    /**
+     * The grid of the objects' {@code footprint}s on a {@code width × height} image, for about
+     * {@code samples²} rays a pixel; {@code camera} and {@code latestOffset} are what its rays
+     * are (a {@link LightGrid}'s has no camera).
+     */
+    ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
         int shift = CellSide.choose(objects, footprint, width, height, samples);
         Parts parts = new Parts(objects.size(), pool);
         int[][] perPart = new int[parts.parts][cellCount(shift)];

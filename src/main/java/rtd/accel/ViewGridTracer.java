@@ -18,7 +18,8 @@ import rtd.render.WorkCount;
  * does in {@link BvhTracer}), no object after it can win or tie, and the ray stops.
  *
  * <p>A ray that is not the grid camera's (a shadow ray, a mirrored ray, a ray given alone) goes
- * to the tracer for the others, a {@link BvhTracer} in a scene with lights; without one it runs
+ * to the tracer for the others in a scene with lights (its {@link LightGrids}' tracer, which
+ * hands what they do not serve to a {@link BvhTracer}); without one it runs
  * the tests on every object, as the paper's loop does: right for any ray, and fast only for the
  * camera's.
  *

@@ -1,0 +1,70 @@
+package rtd.accel;
+
+import java.util.List;
+import java.util.concurrent.ForkJoinPool;
+import rtd.geometry.IGeometry;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+
+/**
+ * Which objects a shadow ray towards one light may hit, by the direction it comes from: the
+ * objects seen from the light ({@link PointFootprint}) sorted into the cells of a square picture,
+ * as a {@link ViewGrid} sorts them for the camera. A shadow ray tests the objects of its cell
+ * and the objects without a box, and stops at the first hit before the light
+ * ({@link LightGridTracer}). A ray that the grid does not serve (one that does not end at the
+ * light, runs too far, or comes from outside the picture) goes to the tracer for the others.
+ */
+final class LightGrid {
+
+    /** The light's position. */
+    final Vector3f light;
+    final PointFootprint footprint;
+    final ViewGrid cells;
+    /** The side of the picture, in pixels. */
+    final int size;
+
+    private LightGrid(Vector3f light, PointFootprint footprint, ViewGrid cells, int size) {
+        this.light = light;
+        this.footprint = footprint;
+        this.cells = cells;
+        this.size = size;
+    }
+
+    /**
+     * The grid of {@code objects} seen from {@code light}, whose objects with a box lie in
+     * {@code box}, on a picture of {@code size × size} pixels; null if the light lies too near or
+     * among them ({@link PointFootprint#around}).
+     */
+    static LightGrid build(List<IGeometry> objects, float[] box, Vector3f light, int size, ForkJoinPool pool) {
+        PointFootprint footprint = PointFootprint.around(light, box, size);
+        if (footprint == null) {
+            return null;
+        }
+        ViewGrid cells = new ViewGridBuilder(objects, size, size, pool).build(footprint, null, 1, 1);
+        return new LightGrid(light, footprint, cells, size);
+    }
+
+    /**
+     * The farthest from the light that a hit of a served ray of length {@code distance} can lie:
+     * its origin lies at most the gap beyond that length from the light, and its hits between the origin
+     * and the end, which lies within the gap of the light ({@link PointFootprint}).
+     */
+    float farthestHit(float distance) {
+        return (float) ((distance + 2 * footprint.gap()) * (1 + 1e-6));
+    }
+
+    /**
+     * The cell of a shadow ray, whose question is whether it hits anything nearer than
+     * {@code distance}, or −1 if the grid does not serve it.
+     */
+    int cellOf(Ray ray, float distance) {
+        Vector3f origin = ray.origin();
+        Vector3f direction = ray.direction();
+        double length = Math.sqrt((double) direction.x() * direction.x() + (double) direction.y() * direction.y()
+                + (double) direction.z() * direction.z());
+        double along = distance / length;
+        int pixel = footprint.pixelOf(origin.x(), origin.y(), origin.z(), origin.x() + along * direction.x(),
+                origin.y() + along * direction.y(), origin.z() + along * direction.z(), distance);
+        return pixel < 0 ? -1 : cells.cellOf(pixel % size, pixel / size);
+    }
+}

@@ -1,0 +1,92 @@
+package rtd.accel;
+
+import java.util.List;
+import rtd.geometry.Hit;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.render.Tracer;
+import rtd.render.WorkCount;
+
+/**
+ * Answers shadow rays through {@link LightGrid}s: a ray towards a light with a grid tests the
+ * objects of its cell and those without a box, and stops at the first hit nearer than the light.
+ * Its cell holds every object the ray can hit before the light, so the answer is the paper's
+ * loop's. Every other ray, and every shadow ray no grid serves, goes to the tracer for the others.
+ *
+ * <p>Not thread-safe: it keeps the ray's state and counters of its own. Use one per thread.
+ */
+final class LightGridTracer implements Tracer {
+
+    private final LightGrid[] grids;
+    /** Per grid, the tests on its objects. */
+    private final NearestHit[] hits;
+    private final Tracer others;
+    private long rays;
+
+    LightGridTracer(List<LightGrid> grids, Tracer others) {
+        this.grids = grids.toArray(LightGrid[]::new);
+        this.hits = new NearestHit[this.grids.length];
+        for (int g = 0; g < hits.length; g++) {
+            hits[g] = new NearestHit(this.grids[g].cells.objects);
+        }
+        this.others = others;
+    }
+
+    @Override
+    public boolean blocked(Ray ray, float distance) {
+        for (int g = 0; g < grids.length; g++) {
+            int cell = grids[g].cellOf(ray, distance);
+            if (cell >= 0) {
+                rays++;
+                ViewGrid cells = grids[g].cells;
+                NearestHit hit = hits[g];
+                Vector3f origin = ray.origin();
+                Vector3f direction = ray.direction();
+                hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+                hit.limitTo(distance);
+                hit.testUnbounded();
+                hit.testPlacesUntilHit(cells.places, cells.cellStart[cell], cells.cellStart[cell + 1], cells.nearest,
+                        grids[g].farthestHit(distance));
+                return hit.best() >= 0;
+            }
+        }
+        return others.blocked(ray, distance);
+    }
+
+    @Override
+    public Hit nearestHit(Ray ray) {
+        return others.nearestHit(ray);
+    }
+
+    @Override
+    public void traceAll(RayBundle rays, HitBuffer hits) {
+        others.traceAll(rays, hits);
+    }
+
+    @Override
+    public boolean traceIfAllMiss(RayBundle rays) {
+        return others.traceIfAllMiss(rays);
+    }
+
+    @Override
+    public long testsRun() {
+        long tests = others.testsRun();
+        for (NearestHit hit : hits) {
+            tests += hit.testsRun();
+        }
+        return tests;
+    }
+
+    @Override
+    public WorkCount work() {
+        WorkCount work = others.work();
+        for (int g = 0; g < grids.length; g++) {
+            NearestHit hit = hits[g];
+            work = work.plus(new WorkCount(g == 0 ? rays : 0,
+                    BvhTracer.testsByKind(grids[g].cells.objects, hit.tests(), hit.unboundedTests()), 0));
+        }
+        return work;
+    }
+}

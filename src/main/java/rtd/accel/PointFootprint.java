@@ -1,0 +1,213 @@
+package rtd.accel;
+
+import rtd.geometry.IGeometry;
+import rtd.math.Vector3f;
+
+/**
+ * The {@link ImageFootprint} of an object seen from a point X, for rays whose line passes through
+ * X: the shadow rays towards a light (Part II, "Shadows"), which run from a surface to the light.
+ * The "image" is a square picture, {@code size × size} pixels, of the directions from X towards
+ * the scene's objects: direction w shows at {@code ((w·u)/(w·F), (w·v)/(w·F))}, scaled to pixels,
+ * for a forward direction F towards the middle of the objects' box and u, v across it. It is
+ * POV-Ray's "light buffer", made exact.
+ *
+ * <p>A ray {@code O + t·D} that reaches {@code E = O + (d/|D|)·D} at distance d is served if
+ * {@code |E − X|} is at most a small gap g and {@code d} at most a reach R. Every point Q between
+ * O and E is then {@code (1 − s)(O − X) + s(E − X)} from X, so seen from X it lies within an
+ * angle of about {@code g/|Q − X|} of O. A hit that the test reports lies in the object's box
+ * grown by its rounding at R ({@link IGeometry#bounds}); so the ray's pixel, the one of
+ * {@code O − X}, lies in the picture of that grown box widened by that angle, which is the
+ * footprint. The answer of {@link #put} is the distance from X to the grown box.
+ */
+final class PointFootprint implements ImageFootprint {
+
+    /**
+     * The gap served, relative to {@code R + |X|}: a shadow ray from the shader ends at the
+     * light within a few float roundings of its length and position (about 1e-7 of them); this
+     * leaves twenty times that.
+     */
+    static final double GAP = 2e-6;
+    /** How wide the picture may be: a tangent of at most this from F (87°) on each axis. */
+    private static final double WIDEST = 20;
+
+    private final double xx;
+    private final double xy;
+    private final double xz;
+    private final double[] forward;
+    private final double[] across;
+    private final double[] down;
+    private final int size;
+    private final double half;
+    /** Pixels per unit of tangent. */
+    private final double scale;
+    private final double reach;
+    private final double gap;
+
+    private PointFootprint(Vector3f point, double[] forward, double[] across, double[] down, int size,
+            double widest, double reach) {
+        xx = point.x();
+        xy = point.y();
+        xz = point.z();
+        this.forward = forward;
+        this.across = across;
+        this.down = down;
+        this.size = size;
+        this.half = size / 2.0;
+        this.scale = size / (2 * widest);
+        this.reach = reach;
+        this.gap = GAP * (reach + Math.sqrt(xx * xx + xy * xy + xz * xz));
+    }
+
+    /**
+     * The footprints seen from {@code point} on a picture of {@code size × size} pixels that shows
+     * the box {@code box} (min x, y, z, max x, y, z), for rays that run up to 1.25 times as far as
+     * the box's farthest corner is from the point (the shadow rays from the objects, and from
+     * the floor beneath them); null if the box is not all well in front of
+     * the point (within 87° of the direction to its middle, and a twentieth of that distance
+     * ahead), as when the point lies inside it.
+     */
+    static PointFootprint around(Vector3f point, float[] box, int size) {
+        double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
+                (box[2] + box[5]) / 2.0 - point.z()};
+        double distance = Math.sqrt(dot(toMiddle, toMiddle));
+        if (!(distance > 0 && Double.isFinite(distance))) {
+            return null;
+        }
+        double[] forward = scaled(toMiddle, 1 / distance);
+        double[] across = perpendicular(forward);
+        double[] down = cross(forward, across);
+        double widest = 0;
+        double farthest = 0;
+        for (int k = 0; k < 8; k++) {
+            double[] w = {box[(k & 1) * 3] - point.x(), box[1 + (k >> 1 & 1) * 3] - point.y(),
+                    box[2 + (k >> 2 & 1) * 3] - point.z()};
+            double depth = dot(w, forward);
+            if (!(depth > distance / 20)) {
+                return null;
+            }
+            widest = Math.max(widest, Math.max(Math.abs(dot(w, across)), Math.abs(dot(w, down))) / depth);
+            farthest = Math.max(farthest, Math.sqrt(dot(w, w)));
+        }
+        widest = Math.max(widest * 1.01, 1e-6);
+        return widest > WIDEST ? null : new PointFootprint(point, forward, across, down, size, widest, 1.25 * farthest);
+    }
+
+    /** The largest gap served, g. */
+    double gap() {
+        return gap;
+    }
+
+    /** The longest ray served: {@code d ≤ R}. */
+    double reach() {
+        return reach;
+    }
+
+    /**
+     * The pixel, as {@code y·size + x}, of the ray from {@code (ox, oy, oz)} that reaches
+     * {@code (ex, ey, ez)} at its end, if it is served: its end lies within the gap of X, it
+     * runs at most R, and it shows on the picture; else −1.
+     */
+    int pixelOf(double ox, double oy, double oz, double ex, double ey, double ez, double length) {
+        double gx = ex - xx;
+        double gy = ey - xy;
+        double gz = ez - xz;
+        if (!(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap)) {
+            return -1;
+        }
+        double wx = ox - xx;
+        double wy = oy - xy;
+        double wz = oz - xz;
+        double depth = wx * forward[0] + wy * forward[1] + wz * forward[2];
+        double x = half + scale * (wx * across[0] + wy * across[1] + wz * across[2]) / depth;
+        double y = half + scale * (wx * down[0] + wy * down[1] + wz * down[2]) / depth;
+        if (!(depth > 0 && x >= 0 && x < size && y >= 0 && y < size)) {
+            return -1;
+        }
+        return (int) y * size + (int) x;
+    }
+
+    @Override
+    public float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
+        double x0 = boxes[at] - xx;
+        double y0 = boxes[at + 1] - xy;
+        double z0 = boxes[at + 2] - xz;
+        double x1 = boxes[at + 3] - xx;
+        double y1 = boxes[at + 4] - xy;
+        double z1 = boxes[at + 5] - xz;
+        // a hit Q lies at most R − |Q − X| + g from the ray's origin: near the light, hits come from far
+        double unGrown = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
+        double run = Math.min(reach, reach - unGrown + Math.sqrt(3) * growth(linear, quadratic, reach) + gap)
+                * (1 + 1e-6);
+        double grow = growth(linear, quadratic, run);
+        x0 -= grow;
+        y0 -= grow;
+        z0 -= grow;
+        x1 += grow;
+        y1 += grow;
+        z1 += grow;
+        double nearest = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
+        double depthLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, forward);
+        // a box near X, or beside or behind it, may be hit by a ray of any pixel
+        if (!(depthLeast > 4 * gap && nearest > 4 * gap)) {
+            ImageFootprint.whole(size, size, into, to);
+            return Float.NEGATIVE_INFINITY;
+        }
+        double left = Double.POSITIVE_INFINITY;
+        double right = Double.NEGATIVE_INFINITY;
+        double top = Double.POSITIVE_INFINITY;
+        double bottom = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < 8; k++) {
+            double x = (k & 1) == 0 ? x0 : x1;
+            double y = (k & 2) == 0 ? y0 : y1;
+            double z = (k & 4) == 0 ? z0 : z1;
+            double depth = x * forward[0] + y * forward[1] + z * forward[2];
+            double sideways = (x * across[0] + y * across[1] + z * across[2]) / depth;
+            double downwards = (x * down[0] + y * down[1] + z * down[2]) / depth;
+            left = Math.min(left, sideways);
+            right = Math.max(right, sideways);
+            top = Math.min(top, downwards);
+            bottom = Math.max(bottom, downwards);
+        }
+        // an angle a moves a point of the picture by at most (1 + its tangents²)·a; sin a ≤ g/|Q − X|
+        double angle = 1.6 * gap * (1 + 1e-6) / (nearest - gap);
+        double wideX = Math.max(Math.max(-left, right), half / scale);
+        double wideY = Math.max(Math.max(-top, bottom), half / scale);
+        double margin = 2 * scale * (1 + wideX * wideX + wideY * wideY) * angle + 1e-6 * size;
+        if (!Double.isFinite(margin)) {
+            ImageFootprint.whole(size, size, into, to);
+            return Float.NEGATIVE_INFINITY;
+        }
+        boolean seen = ImageFootprint.range(half + scale * left - margin, half + scale * right + margin, size, 1,
+                into, to)
+                && ImageFootprint.range(half + scale * top - margin, half + scale * bottom + margin, size, 1,
+                        into, to + 1);
+        return seen ? ImageFootprint.below(nearest) : Float.NaN;
+    }
+
+    /**
+     * How far a hit may stray from the box of an object of rounding {@code linear},
+     * {@code quadratic}, at distance {@code run} from the ray's origin ({@link IGeometry#bounds}).
+     */
+    private static double growth(double linear, double quadratic, double run) {
+        return linear * run + Math.min(IGeometry.ROUNDING_CONE * run, quadratic * run * run);
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    private static double[] scaled(double[] a, double factor) {
+        return new double[] {a[0] * factor, a[1] * factor, a[2] * factor};
+    }
+
+    private static double[] cross(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+
+    /** A unit vector at right angles to the unit vector {@code a}, level as a camera's x axis is: up × a. */
+    private static double[] perpendicular(double[] a) {
+        double[] up = Math.abs(a[1]) < 0.9 ? new double[] {0, 1, 0} : new double[] {0, 0, 1};
+        double[] c = cross(up, a);
+        return scaled(c, 1 / Math.sqrt(dot(c, c)));
+    }
+}
