@@ -14,10 +14,12 @@ import rtd.math.Vector3f;
  * <p>A ray {@code O + t·D} that reaches {@code E = O + (d/|D|)·D} at distance d is served if
  * {@code |E − X|} is at most a small gap g and {@code d} at most a reach R. Every point Q between
  * O and E is then {@code (1 − s)(O − X) + s(E − X)} from X, so seen from X it lies within an
- * angle of about {@code g/|Q − X|} of O. A hit that the test reports lies in the object's box
- * grown by its rounding at R ({@link IGeometry#bounds}); so the ray's pixel, the one of
+ * angle of about {@code g/|Q − X|} of O. A hit at Q that the test reports lies in the object's
+ * box grown by its rounding at the distance the ray has run, {@code |Q − O|}, at most
+ * {@code R − |Q − X| + g} ({@link IGeometry#bounds}); so the ray's pixel, the one of
  * {@code O − X}, lies in the picture of that grown box widened by that angle, which is the
- * footprint. The answer of {@link #put} is the distance from X to the grown box.
+ * footprint. The answer of {@link #put} is the distance from X to the grown box: a ray whose
+ * origin lies nearer X than that, by more than the gap, cannot hit the object.
  */
 final class PointFootprint implements ImageFootprint {
 
