@@ -11,8 +11,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Box;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
 import rtd.geometry.Sphere;
 import rtd.image.Color;
 import rtd.image.Rgb;
@@ -171,6 +173,93 @@ class LightGridTest {
             served += grid.cellOf(ray, distance) >= 0 ? 1 : 0;
         }
         assertThat(served).isBetween(5_000, 10_000);
+    }
+
+    @Test
+    void raysThatEndWithinTheGapBesideTheLightAndGrazeABoxsOutlineGetTheLoopsAnswer() {
+        // far from 0 the gap (here 0.23) is wide beside the boxes' rounding: a ray that ends beside
+        // the light, on the inner side of a box's outline seen from it, comes from a direction just
+        // outside that outline, a few pixels off; only the footprint's widening by the angle keeps
+        // the box in the ray's cell (8 pixels here, 2,000 small boxes)
+        Random random = new Random(11);
+        double[] middle = {-53_000, 89_000, 47_000};
+        List<IGeometry> boxes = new ArrayList<>();
+        for (int i = 0; i < 2_000; i++) {
+            Vector3f corner = point(middle[0] + (random.nextDouble() * 2 - 1) * 10,
+                    middle[1] + (random.nextDouble() * 2 - 1) * 10, middle[2] + (random.nextDouble() * 2 - 1) * 10);
+            boxes.add(Box.between(corner, corner.add(new Vector3f(0.01f + random.nextFloat() * 0.5f,
+                    0.01f + random.nextFloat() * 0.5f, 0.01f + random.nextFloat() * 0.5f)), new Color(200, 100, 50),
+                    Material.DEFAULT));
+        }
+        double[] x = {middle[0] + 3, middle[1] + 30, middle[2] - 2};
+        Vector3f light = point(x[0], x[1], x[2]);
+        Scene scene = new Scene(new Color(0, 0, 0),
+                new PerspectiveCamera(point(middle[0], middle[1], middle[2] + 60), new Vector3f(0, 0, -1), 60), boxes,
+                List.of(new Light(light, new Rgb(1, 1, 1))));
+        LightGrids grids = LightGrids.build(scene, 2048, 2048, 1, 1);
+        LightGrid grid = grids.grids().get(0);
+        Tracer tracer = grids.newTracer(new LinearTracer(scene));
+        int served = 0;
+        int blocked = 0;
+        for (int i = 0; i < 20_000; i++) {
+            float[] box = new float[6];
+            boxes.get(random.nextInt(boxes.size())).putBounds(box, 0);
+            double[] boxMiddle = {(box[0] + box[3]) / 2 - x[0], (box[1] + box[4]) / 2 - x[1],
+                    (box[2] + box[5]) / 2 - x[2]};
+            double[] toMiddle = unit(boxMiddle);
+            double[] side = unit(across(
+                    new double[] {random.nextGaussian(), random.nextGaussian(), random.nextGaussian()}, toMiddle));
+            // Q: just inside the corner that shows farthest towards the side, seen from the light
+            double[] q = null;
+            for (int k = 0; k < 8; k++) {
+                double[] w = {box[(k & 1) * 3] - x[0], box[1 + (k >> 1 & 1) * 3] - x[1],
+                        box[2 + (k >> 2 & 1) * 3] - x[2]};
+                if (q == null || dot(w, side) / dot(w, toMiddle) > dot(q, side) / dot(q, toMiddle)) {
+                    q = w;
+                }
+            }
+            double inside = Math.pow(10, -6 + 4 * random.nextDouble());
+            for (int k = 0; k < 3; k++) {
+                q[k] += inside * Math.signum(boxMiddle[k] - q[k]);
+            }
+            // the end, up to the gap off the light towards the inside; the origin beyond Q on the line
+            double[] end = unit(across(new double[] {-side[0], -side[1], -side[2]}, unit(q)));
+            double off = grid.footprint.gap() * (0.3 + 0.69 * random.nextDouble());
+            double beyond = Math.pow(10, -1 + 2 * random.nextDouble());
+            Vector3f origin = point(x[0] + q[0] + beyond * (q[0] - off * end[0]),
+                    x[1] + q[1] + beyond * (q[1] - off * end[1]), x[2] + q[2] + beyond * (q[2] - off * end[2]));
+            Vector3f toEnd = point(x[0] + off * end[0], x[1] + off * end[1], x[2] + off * end[2]).subtract(origin);
+            Ray ray = new Ray(origin, toEnd);
+            float distance = toEnd.magnitude();
+
+            boolean loop = loopBlocked(scene, ray, distance);
+            assertThat(tracer.blocked(ray, distance)).as("ray " + i + " " + ray).isEqualTo(loop);
+            if (grid.cellOf(ray, distance) >= 0) {
+                served++;
+                blocked += loop ? 1 : 0;
+            }
+        }
+        assertThat(served).isGreaterThan(5_000);
+        assertThat(blocked).as("served rays that hit a box").isGreaterThan(1_000);
+    }
+
+    private static Vector3f point(double x, double y, double z) {
+        return new Vector3f((float) x, (float) y, (float) z);
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    private static double[] unit(double[] a) {
+        double length = Math.sqrt(dot(a, a));
+        return new double[] {a[0] / length, a[1] / length, a[2] / length};
+    }
+
+    /** The part of {@code a} at right angles to the unit vector {@code axis}. */
+    private static double[] across(double[] a, double[] axis) {
+        double along = dot(a, axis);
+        return new double[] {a[0] - along * axis[0], a[1] - along * axis[1], a[2] - along * axis[2]};
     }
 
     /** Whether the exact line of the ray passes the sphere by. */
