@@ -27,7 +27,7 @@ interface ImageFootprint {
      * The pixels {@code [x0, x1] × [y0, y1]} (inclusive, within the image) whose rays may hit
      * the object of box {@code boxes[at .. at+5]} and rounding {@code linear}, {@code quadratic},
      * into {@code into[to .. to+3]} as x0, y0, x1, y1; and the answer: a distance from the ray's
-     * origin before which none of them hits it. NaN if no ray of the picture can hit it (what it
+     * origin before which none of them hits it (for a {@link PointFootprint}, from the light). NaN if no ray of the picture can hit it (what it
      * wrote into {@code into} then means nothing); −∞ where the numbers cannot bound it (then all
      * pixels).
      */
@@ -106,6 +106,15 @@ interface ImageFootprint {
     static float below(double distance) {
         float below = Math.nextDown((float) (distance - 1e-6 * Math.abs(distance)));
         return below == below ? below : Float.NEGATIVE_INFINITY;
+    }
+
+    /**
+     * How far a hit may stray from the box of an object of rounding {@code linear},
+     * {@code quadratic}, at distance {@code run} from the ray's origin: {@link IGeometry#bounds}'
+     * {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)}, in double.
+     */
+    static double growth(double linear, double quadratic, double run) {
+        return linear * run + Math.min(IGeometry.ROUNDING_CONE * run, quadratic * run * run);
     }
 
     /** How far 0 lies from the box {@code [x0, x1] × [y0, y1] × [z0, z1]}. */

@@ -16,18 +16,13 @@ import rtd.math.Vector3f;
  */
 final class LightGrid {
 
-    /** The light's position. */
-    final Vector3f light;
     final PointFootprint footprint;
+    /** The cells of the picture, {@code cells.width} pixels square. */
     final ViewGrid cells;
-    /** The side of the picture, in pixels. */
-    final int size;
 
-    private LightGrid(Vector3f light, PointFootprint footprint, ViewGrid cells, int size) {
-        this.light = light;
+    private LightGrid(PointFootprint footprint, ViewGrid cells) {
         this.footprint = footprint;
         this.cells = cells;
-        this.size = size;
     }
 
     /**
@@ -40,14 +35,16 @@ final class LightGrid {
         if (footprint == null) {
             return null;
         }
+        // no camera: the grid's "pixels" are directions from the light; a ray shows anywhere in its pixel (1)
         ViewGrid cells = new ViewGridBuilder(objects, size, size, pool).build(footprint, null, 1, 1);
-        return new LightGrid(light, footprint, cells, size);
+        return new LightGrid(footprint, cells);
     }
 
     /**
-     * The farthest from the light that a hit of a served ray of length {@code distance} can lie:
-     * its origin lies at most the gap beyond that length from the light, and its hits between the origin
-     * and the end, which lies within the gap of the light ({@link PointFootprint}).
+     * How far from the light a hit of a served ray of length {@code distance} can lie, at most:
+     * {@code distance + g}, as its origin lies at most that far and its hits lie between the
+     * origin and the end, within the gap g of the light ({@link PointFootprint}); a second g and
+     * a millionth are room for rounding past the end.
      */
     float farthestHit(float distance) {
         return (float) ((distance + 2 * footprint.gap()) * (1 + 1e-6));
@@ -65,6 +62,6 @@ final class LightGrid {
         double along = distance / length;
         int pixel = footprint.pixelOf(origin.x(), origin.y(), origin.z(), origin.x() + along * direction.x(),
                 origin.y() + along * direction.y(), origin.z() + along * direction.z(), distance);
-        return pixel < 0 ? -1 : cells.cellOf(pixel % size, pixel / size);
+        return pixel < 0 ? -1 : cells.cellOf(pixel % cells.width, pixel / cells.width);
     }
 }

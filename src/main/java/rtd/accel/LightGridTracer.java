@@ -81,11 +81,11 @@ final class LightGridTracer implements Tracer {
 
     @Override
     public WorkCount work() {
-        WorkCount work = others.work();
+        WorkCount work = others.work().plus(new WorkCount(rays, java.util.Map.of(), 0));
         for (int g = 0; g < grids.length; g++) {
             NearestHit hit = hits[g];
-            work = work.plus(new WorkCount(g == 0 ? rays : 0,
-                    BvhTracer.testsByKind(grids[g].cells.objects, hit.tests(), hit.unboundedTests()), 0));
+            work = work.plus(new WorkCount(0, BvhTracer.testsByKind(grids[g].cells.objects, hit.tests(),
+                    hit.unboundedTests()), 0));
         }
         return work;
     }

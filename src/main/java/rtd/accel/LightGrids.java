@@ -15,6 +15,16 @@ import rtd.scene.Scene;
  */
 public final class LightGrids {
 
+    /**
+     * How many objects all the grids may hold copies of together: each packs every object's
+     * numbers for the test, some 100 MB a light for a million triangles. The lights after that
+     * many (the first in the file get grids) leave their shadow rays to the tree.
+     */
+    static final long MOST_PACKED = 2_000_000;
+    /** The side of a light's picture at least and at most, in pixels: 4,096² cells would take 64 MB. */
+    private static final int SMALLEST = 16;
+    private static final int LARGEST = 4096;
+
     private final List<LightGrid> grids;
 
     private LightGrids(List<LightGrid> grids) {
@@ -24,19 +34,30 @@ public final class LightGrids {
     /**
      * The grids of {@code scene}'s lights, for a {@code width × height} picture with
      * {@code samples²} rays a pixel (about as many shadow rays go to each light), built with
-     * {@code threads} threads. A light among the objects gets none: its shadow rays go to the
-     * tracer for the others.
+     * {@code threads} threads. The picture's side is about the image's, √(width · height) ·
+     * samples. A light among the objects or beside them gets none ({@link PointFootprint#around}),
+     * nor do the lights beyond {@link #MOST_PACKED} objects: their shadow rays go to the tracer for
+     * the others.
      */
     public static LightGrids build(Scene scene, int width, int height, int samples, int threads) {
+        return build(scene, width, height, samples, threads, MOST_PACKED);
+    }
+
+    /** As {@link #build(Scene, int, int, int, int)}, with grids for lights up to {@code mostPacked} objects. */
+    static LightGrids build(Scene scene, int width, int height, int samples, int threads, long mostPacked) {
         List<IGeometry> objects = scene.objects();
         float[] box = boxOf(objects);
-        int size = (int) Math.max(16, Math.min(4096, Math.sqrt((double) width * height) * samples));
+        int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples));
+        long most = Math.max(1, mostPacked / Math.max(1, objects.size()));
         boolean parallel = threads > 1 && objects.size() >= BvhBuilder.PARALLEL_THRESHOLD;
         ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
         try {
             List<LightGrid> grids = new ArrayList<>();
             for (Light light : scene.lights()) {
-                LightGrid grid = box == null ? null : LightGrid.build(objects, box, light.position(), size, pool);
+                if (box == null || grids.size() >= most) {
+                    break;
+                }
+                LightGrid grid = LightGrid.build(objects, box, light.position(), size, pool);
                 if (grid != null) {
                     grids.add(grid);
                 }

@@ -98,7 +98,7 @@ final class OrthographicFootprint implements ImageFootprint {
         }
         // a hit runs L ≤ farSide + √3·growth(L) ≤ farSide + √3·widest·L from the plane
         double reach = (middle + depth + originError) / (1 - Math.sqrt(3) * widest);
-        double grow = linear * reach + Math.min(IGeometry.ROUNDING_CONE * reach, quadratic * reach * reach);
+        double grow = ImageFootprint.growth(linear, quadratic, reach);
         double a = cx * ux + cy * uy + cz * uz;
         double b = cx * vx + cy * vy + cz * vz;
         double halfA = Math.abs(ux) * (hx + grow) + Math.abs(uy) * (hy + grow) + Math.abs(uz) * (hz + grow)

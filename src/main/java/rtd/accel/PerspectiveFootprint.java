@@ -77,7 +77,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         // a hit runs L ≤ farthest corner + √3·growth(L) ≤ farthest + √3·widest·L from the eye
         double farthest = Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
         double reach = farthest / (1 - Math.sqrt(3) * widest);
-        double grow = linear * reach + Math.min(IGeometry.ROUNDING_CONE * reach, quadratic * reach * reach);
+        double grow = ImageFootprint.growth(linear, quadratic, reach);
         double nearest = ImageFootprint.distance(x0, y0, z0, x1, y1, z1) - Math.sqrt(3) * grow;
         if (!(widest * Math.sqrt(3) < 0.5 && Double.isFinite(grow))) {
             ImageFootprint.whole(width, height, into, to);

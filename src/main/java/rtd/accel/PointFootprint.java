@@ -32,9 +32,10 @@ final class PointFootprint implements ImageFootprint {
     /** How wide the picture may be: a tangent of at most this from F (87°) on each axis. */
     private static final double WIDEST = 20;
 
-    private final double xx;
-    private final double xy;
-    private final double xz;
+    /** The point X, the light. */
+    private final double lightX;
+    private final double lightY;
+    private final double lightZ;
     private final double[] forward;
     private final double[] across;
     private final double[] down;
@@ -47,9 +48,9 @@ final class PointFootprint implements ImageFootprint {
 
     private PointFootprint(Vector3f point, double[] forward, double[] across, double[] down, int size,
             double widest, double reach) {
-        xx = point.x();
-        xy = point.y();
-        xz = point.z();
+        lightX = point.x();
+        lightY = point.y();
+        lightZ = point.z();
         this.forward = forward;
         this.across = across;
         this.down = down;
@@ -57,16 +58,18 @@ final class PointFootprint implements ImageFootprint {
         this.half = size / 2.0;
         this.scale = size / (2 * widest);
         this.reach = reach;
-        this.gap = GAP * (reach + Math.sqrt(xx * xx + xy * xy + xz * xz));
+        // the float rounding of a ray's end grows with its length and with the size of the coordinates
+        this.gap = GAP * (reach + Math.sqrt(lightX * lightX + lightY * lightY + lightZ * lightZ));
     }
 
     /**
      * The footprints seen from {@code point} on a picture of {@code size × size} pixels that shows
      * the box {@code box} (min x, y, z, max x, y, z), for rays that run up to 1.25 times as far as
-     * the box's farthest corner is from the point (the shadow rays from the objects, and from
-     * the floor beneath them); null if the box is not all well in front of
-     * the point (within 87° of the direction to its middle, and a twentieth of that distance
-     * ahead), as when the point lies inside it.
+     * the box's farthest corner is from the point, and at most a diagonal of the box farther (the
+     * shadow rays from the objects, and from the floor beneath them); null if the box is not all
+     * well in front of the point (within 87° of the direction to its middle, and a twentieth of
+     * that distance ahead), as when the point lies inside it or beside it, or if the point lies so
+     * far that the gap is more than a few hundredths of the box's picture.
      */
     static PointFootprint around(Vector3f point, float[] box, int size) {
         double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
@@ -90,8 +93,17 @@ final class PointFootprint implements ImageFootprint {
             widest = Math.max(widest, Math.max(Math.abs(dot(w, across)), Math.abs(dot(w, down))) / depth);
             farthest = Math.max(farthest, Math.sqrt(dot(w, w)));
         }
-        widest = Math.max(widest * 1.01, 1e-6);
-        return widest > WIDEST ? null : new PointFootprint(point, forward, across, down, size, widest, 1.25 * farthest);
+        widest = Math.max(widest * 1.01, 1e-6); // a hundredth of room at the picture's edges; never 0
+        // rays from beyond the box, but not from much farther: every object grows by its rounding at the
+        // reach less its distance, which for a far light would grow with the light's distance
+        double diagonal = Math.sqrt(Math.pow(box[3] - box[0], 2) + Math.pow(box[4] - box[1], 2)
+                + Math.pow(box[5] - box[2], 2));
+        double reach = Math.min(1.25 * farthest, farthest + diagonal);
+        double gap = GAP * (reach + Math.sqrt((double) point.x() * point.x() + (double) point.y() * point.y()
+                + (double) point.z() * point.z()));
+        // a light so far that the gap is no longer small beside the box as it sees it: the tree does better
+        boolean tooFar = gap > 0.08 * distance * widest;
+        return widest > WIDEST || tooFar ? null : new PointFootprint(point, forward, across, down, size, widest, reach);
     }
 
     /** The largest gap served, g. */
@@ -110,15 +122,15 @@ final class PointFootprint implements ImageFootprint {
      * runs at most R, and it shows on the picture; else −1.
      */
     int pixelOf(double ox, double oy, double oz, double ex, double ey, double ez, double length) {
-        double gx = ex - xx;
-        double gy = ey - xy;
-        double gz = ez - xz;
+        double gx = ex - lightX;
+        double gy = ey - lightY;
+        double gz = ez - lightZ;
         if (!(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap)) {
             return -1;
         }
-        double wx = ox - xx;
-        double wy = oy - xy;
-        double wz = oz - xz;
+        double wx = ox - lightX;
+        double wy = oy - lightY;
+        double wz = oz - lightZ;
         double depth = wx * forward[0] + wy * forward[1] + wz * forward[2];
         double x = half + scale * (wx * across[0] + wy * across[1] + wz * across[2]) / depth;
         double y = half + scale * (wx * down[0] + wy * down[1] + wz * down[2]) / depth;
@@ -130,17 +142,18 @@ final class PointFootprint implements ImageFootprint {
 
     @Override
     public float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
-        double x0 = boxes[at] - xx;
-        double y0 = boxes[at + 1] - xy;
-        double z0 = boxes[at + 2] - xz;
-        double x1 = boxes[at + 3] - xx;
-        double y1 = boxes[at + 4] - xy;
-        double z1 = boxes[at + 5] - xz;
-        // a hit Q lies at most R − |Q − X| + g from the ray's origin: near the light, hits come from far
+        double x0 = boxes[at] - lightX;
+        double y0 = boxes[at + 1] - lightY;
+        double z0 = boxes[at + 2] - lightZ;
+        double x1 = boxes[at + 3] - lightX;
+        double y1 = boxes[at + 4] - lightY;
+        double z1 = boxes[at + 5] - lightZ;
+        // a hit Q lies at most R − |Q − X| + g from the ray's origin: near the light, hits come from far;
+        // |Q − X| is at least the box's distance less √3 growths, at most growth(R) each
         double unGrown = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
-        double run = Math.min(reach, reach - unGrown + Math.sqrt(3) * growth(linear, quadratic, reach) + gap)
+        double run = Math.min(reach, reach - unGrown + Math.sqrt(3) * ImageFootprint.growth(linear, quadratic, reach) + gap)
                 * (1 + 1e-6);
-        double grow = growth(linear, quadratic, run);
+        double grow = ImageFootprint.growth(linear, quadratic, run);
         x0 -= grow;
         y0 -= grow;
         z0 -= grow;
@@ -149,7 +162,8 @@ final class PointFootprint implements ImageFootprint {
         z1 += grow;
         double nearest = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
         double depthLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, forward);
-        // a box near X, or beside or behind it, may be hit by a ray of any pixel
+        // a box near X, or beside or behind it, may be hit by a ray of any pixel: a guard, as around()
+        // admits only boxes well in front
         if (!(depthLeast > 4 * gap && nearest > 4 * gap)) {
             ImageFootprint.whole(size, size, into, to);
             return Float.NEGATIVE_INFINITY;
@@ -170,7 +184,9 @@ final class PointFootprint implements ImageFootprint {
             top = Math.min(top, downwards);
             bottom = Math.max(bottom, downwards);
         }
-        // an angle a moves a point of the picture by at most (1 + its tangents²)·a; sin a ≤ g/|Q − X|
+        // an angle a moves a point of the picture by at most (1 + its tangents²)·a; sin a ≤ g/|Q − X|,
+        // and a ≤ 1.02·sin a for the angles here, taken as 1.6 with room; the tangents are the larger of
+        // the box's and the picture's, as the ray's origin may show anywhere on it; twice that, for room
         double angle = 1.6 * gap * (1 + 1e-6) / (nearest - gap);
         double wideX = Math.max(Math.max(-left, right), half / scale);
         double wideY = Math.max(Math.max(-top, bottom), half / scale);
@@ -179,19 +195,12 @@ final class PointFootprint implements ImageFootprint {
             ImageFootprint.whole(size, size, into, to);
             return Float.NEGATIVE_INFINITY;
         }
+        // a ray shows at a point c of the picture, in pixel floor(c): a pixel covers [p, p + 1), hence the 1
         boolean seen = ImageFootprint.range(half + scale * left - margin, half + scale * right + margin, size, 1,
                 into, to)
                 && ImageFootprint.range(half + scale * top - margin, half + scale * bottom + margin, size, 1,
                         into, to + 1);
         return seen ? ImageFootprint.below(nearest) : Float.NaN;
-    }
-
-    /**
-     * How far a hit may stray from the box of an object of rounding {@code linear},
-     * {@code quadratic}, at distance {@code run} from the ray's origin ({@link IGeometry#bounds}).
-     */
-    private static double growth(double linear, double quadratic, double run) {
-        return linear * run + Math.min(IGeometry.ROUNDING_CONE * run, quadratic * run * run);
     }
 
     private static double dot(double[] a, double[] b) {

@@ -308,6 +308,33 @@ class LightGridTest {
     }
 
     @Test
+    void aFarLightServesRaysFromAtMostADiagonalBeyondTheBoxAndAFarFarLightGetsNoGrid() {
+        float[] box = {-1, -1, 9, 1, 1, 11};
+        // 1,000 units away the farthest corner is 1,011.00 away, and 1.25 times that would grow
+        // every object by its rounding over 250 units; a diagonal of the box, √12, is the room
+        PointFootprint far = PointFootprint.around(new Vector3f(0, 0, -990), box, 100);
+        double farthest = Math.sqrt(1 + 1 + 1001.0 * 1001.0);
+
+        assertThat(far.reach()).isCloseTo(farthest + Math.sqrt(12), within(1e-9));
+        // 1e7 away the gap, 2e-6 of 2e7, is 40 units: more than the box's picture is wide
+        assertThat(PointFootprint.around(new Vector3f(0, 0, -1e7f), box, 100)).isNull();
+    }
+
+    @Test
+    void theLightsBeyondWhatTheGridsMayHoldLeaveTheirShadowRaysToTheTree() {
+        Scene mixed = MixedScenes.generate(4, 100);
+        List<Light> lights = new ArrayList<>();
+        for (int i = 0; i < 5; i++) {
+            lights.add(new Light(new Vector3f(10 * i, 200, 0), new Rgb(1, 1, 1)));
+        }
+        Scene scene = new Scene(mixed.ambient(), mixed.camera(), mixed.objects(), lights);
+
+        assertThat(LightGrids.build(scene, 40, 30, 1, 1, 350).count()).as("350 copies of about 100 objects").isEqualTo(3);
+        assertThat(LightGrids.build(scene, 40, 30, 1, 1, 10).count()).as("always one").isEqualTo(1);
+        assertThat(LightGrids.build(scene, 40, 30, 1, 1).count()).isEqualTo(5);
+    }
+
+    @Test
     void aLightAmongTheObjectsOrWithNothingToShadowGetsNoGrid() {
         Scene mixed = MixedScenes.generate(3, 100);
         Light among = new Light(new Vector3f(0, 0, 0), new Rgb(1, 1, 1));
