@@ -65,6 +65,8 @@ final class NearestHit {
     private float exit;
     /** The tests of the tree's objects by kind; counted one by one only if the tree has more than one kind. */
     private final long[] tests;
+    /** Per node, how many rays tested a leaf's objects, where there are several kinds: counted by kind in {@link #tests()}. */
+    private final long[] leafVisits;
     private final boolean severalKinds;
     /** The intersection tests of the tree's objects so far. */
     private long treeTests;
@@ -76,6 +78,7 @@ final class NearestHit {
         this.bvh = bvh;
         this.leaves = bvh.leaves;
         this.tests = new long[leaves.kindNames.length];
+        this.leafVisits = new long[tests.length > 1 ? bvh.nodes.length / 2 : 0];
         this.severalKinds = tests.length > 1;
         this.planes = planeNumbers(bvh.unbounded);
     }
@@ -212,7 +215,7 @@ final class NearestHit {
         int end = first + bvh.nodes[2 * leaf + 1];
         treeTests += end - first;
         if (severalKinds) {
-            countKinds(first, end);
+            leafVisits[leaf]++;
         }
         for (int i = first; i < end; i++) {
             test(i);
@@ -283,12 +286,6 @@ final class NearestHit {
         float t = leaves.t(i, ox, oy, oz, dx, dy, dz, dd);
         if (t >= 0) { // false for NaN: no hit
             consider(leaves.fileOrder[i], i, t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
-        }
-    }
-
-    private void countKinds(int first, int end) {
-        for (int i = first; i < end; i++) {
-            tests[leaves.kinds[i]]++;
         }
     }
 
@@ -377,7 +374,19 @@ final class NearestHit {
 
     /** Intersection tests run for this object's rays so far, by kind of the tree's objects. */
     long[] tests() {
-        return tests.length == 1 ? new long[] {treeTests} : tests; // one kind: counted per leaf only
+        if (tests.length == 1) {
+            return new long[] {treeTests}; // one kind: counted per leaf only
+        }
+        long[] byKind = tests.clone();
+        for (int leaf = 0; leaf < leafVisits.length; leaf++) {
+            if (leafVisits[leaf] > 0) {
+                int first = bvh.nodes[2 * leaf];
+                for (int i = first; i < first + bvh.nodes[2 * leaf + 1]; i++) {
+                    byKind[leaves.kinds[i]] += leafVisits[leaf];
+                }
+            }
+        }
+        return byKind;
     }
 
     /** All intersection tests run for this object's rays so far: a running count, read before and after a ray. */

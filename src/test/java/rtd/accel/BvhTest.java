@@ -87,6 +87,23 @@ class BvhTest {
     }
 
     @Test
+    void countsEveryTestOfAMixedTreeUnderItsKindOfObject() {
+        Scene scene = rtd.testing.MixedScenes.generate(12, 400);
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        Random random = new Random(12);
+        for (int r = 0; r < 500; r++) {
+            tracer.nearestHit(rtd.testing.MixedScenes.ray(random, scene));
+        }
+        java.util.Map<String, Long> counted = tracer.work().testsByKind();
+        long sum = counted.values().stream().mapToLong(Long::longValue).sum();
+
+        assertThat(sum).isEqualTo(tracer.testsRun());
+        assertThat(counted).containsKeys("box", "sphere", "triangle");
+        assertThat(counted.get("box")).isPositive();
+        assertThat(counted.get("triangle")).isPositive();
+    }
+
+    @Test
     void aSceneWithoutObjectsShowsOnlyTheAmbientColour() {
         Scene empty = new Scene(Color.fromRGB(0x123456), Scenes.frontCamera(20, 10), List.of());
         RenderResult result = Renders.parallel(empty, 40, 30, 2, true);
