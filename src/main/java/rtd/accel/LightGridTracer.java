@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import java.util.List;
+import java.util.Map;
 import rtd.geometry.Hit;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -81,7 +82,7 @@ final class LightGridTracer implements Tracer {
 
     @Override
     public WorkCount work() {
-        WorkCount work = others.work().plus(new WorkCount(rays, java.util.Map.of(), 0));
+        WorkCount work = others.work().plus(new WorkCount(rays, Map.of(), 0));
         for (int g = 0; g < grids.length; g++) {
             NearestHit hit = hits[g];
             work = work.plus(new WorkCount(0, BvhTracer.testsByKind(grids[g].cells.objects, hit.tests(),

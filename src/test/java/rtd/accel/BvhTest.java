@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import java.util.Set;
 import org.junit.jupiter.api.DisplayName;
@@ -13,6 +14,7 @@ import rtd.render.RenderResult;
 import rtd.geometry.IGeometry;
 import rtd.image.Color;
 import rtd.scene.Scene;
+import rtd.testing.MixedScenes;
 import rtd.testing.RandomScenes;
 import rtd.testing.Renders;
 import rtd.testing.Scenes;
@@ -88,13 +90,13 @@ class BvhTest {
 
     @Test
     void countsEveryTestOfAMixedTreeUnderItsKindOfObject() {
-        Scene scene = rtd.testing.MixedScenes.generate(12, 400);
+        Scene scene = MixedScenes.generate(12, 400);
         BvhTracer tracer = Bvh.build(scene).newTracer();
         Random random = new Random(12);
         for (int r = 0; r < 500; r++) {
-            tracer.nearestHit(rtd.testing.MixedScenes.ray(random, scene));
+            tracer.nearestHit(MixedScenes.ray(random, scene));
         }
-        java.util.Map<String, Long> counted = tracer.work().testsByKind();
+        Map<String, Long> counted = tracer.work().testsByKind();
         long sum = counted.values().stream().mapToLong(Long::longValue).sum();
 
         assertThat(sum).isEqualTo(tracer.testsRun());

@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.within;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.function.Function;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -355,7 +356,7 @@ class LightGridTest {
         Scene scene = new Scene(mixed.ambient(), mixed.camera(), mixed.objects(), lights);
         Bvh bvh = Bvh.build(scene, 2);
         LightGrids grids = LightGrids.build(scene, 80, 60, 1, 2);
-        java.util.function.Function<Tracer, Shader> shaders = tracer -> new WhittedShader(scene, tracer);
+        Function<Tracer, Shader> shaders = tracer -> new WhittedShader(scene, tracer);
 
         RenderResult withGrids = ParallelRenderer.render(scene.camera(), () -> grids.newTracer(bvh.newTracer()),
                 shaders, 80, 60, 2, new RenderProgress());
