@@ -63,7 +63,10 @@ final class NearestHit {
     private float skipBeyond;
     /** The exit of the box of the last {@link #entry}. */
     private float exit;
-    /** The tests of the tree's objects by kind; counted one by one only if the tree has more than one kind. */
+    /**
+     * The tests of the objects by kind, where there is more than one: of objects tested at their
+     * places (a grid's cells) one by one; of a leaf's objects, through {@link #leafVisits}.
+     */
     private final long[] tests;
     /** Per node, how many rays tested a leaf's objects, where there are several kinds: counted by kind in {@link #tests()}. */
     private final long[] leafVisits;
