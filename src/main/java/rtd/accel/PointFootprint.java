@@ -151,8 +151,8 @@ final class PointFootprint implements ImageFootprint {
         // a hit Q lies at most R − |Q − X| + g from the ray's origin: near the light, hits come from far;
         // |Q − X| is at least the box's distance less √3 growths, at most growth(R) each
         double unGrown = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
-        double run = Math.min(reach, reach - unGrown + Math.sqrt(3) * ImageFootprint.growth(linear, quadratic, reach) + gap)
-                * (1 + 1e-6);
+        double mostGrowth = ImageFootprint.growth(linear, quadratic, reach);
+        double run = Math.min(reach, reach - unGrown + Math.sqrt(3) * mostGrowth + gap) * (1 + 1e-6);
         double grow = ImageFootprint.growth(linear, quadratic, run);
         x0 -= grow;
         y0 -= grow;
