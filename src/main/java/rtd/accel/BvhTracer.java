@@ -117,7 +117,8 @@ public final class BvhTracer implements Tracer {
     @Override
     public WorkCount work() {
         WorkCount beams = beam.work();
-        return new WorkCount(rays, testsByKind(bvh, hit.tests(), hit.unboundedTests()), nodesVisited).plus(beams);
+        return new WorkCount(rays, testsByKind(bvh, hit.tests(), hit.unboundedTests()), nodesVisited).plus(beams)
+                .answeredBy("BVH");
     }
 
     /** Tests per kind of object, from the counts per kind of the tree's objects and the rays that met every unbounded one. */

@@ -82,7 +82,7 @@ final class LightGridTracer implements Tracer {
 
     @Override
     public WorkCount work() {
-        WorkCount work = others.work().plus(new WorkCount(rays, Map.of(), 0));
+        WorkCount work = others.work().plus(new WorkCount(rays, Map.of(), 0).answeredBy("light grids"));
         for (int g = 0; g < grids.length; g++) {
             NearestHit hit = hits[g];
             work = work.plus(new WorkCount(0, BvhTracer.testsByKind(grids[g].cells.objects, hit.tests(),

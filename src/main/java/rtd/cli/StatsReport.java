@@ -22,6 +22,9 @@ final class StatsReport {
                 ? "no BVH: the paper's loop tests every object" : accelerator.built().get());
         line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
                 work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
+        if (work.answeredBy().size() > 1) {
+            text.append(String.format(Locale.ROOT, "           %s%n", answeredBy(work)));
+        }
         line(text, "write", seconds.get("write"), output.toString());
         double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
         line(text, "total", total, "from reading the scene to the written picture; the JVM's start is not counted");
@@ -41,6 +44,19 @@ final class StatsReport {
             kinds.append(String.format(Locale.ROOT, ", %,d %s", kind.getValue(), kind.getKey()));
         }
         return kinds.append(')').toString();
+    }
+
+    /** "2,073,600 answered by the view grid, 2,718,977 by the light grids, 2,322,493 by the BVH", in that order. */
+    private static String answeredBy(WorkCount work) {
+        StringBuilder text = new StringBuilder();
+        for (String structure : new String[] {"view grid", "light grids", "BVH"}) {
+            Long rays = work.answeredBy().get(structure);
+            if (rays != null) {
+                text.append(String.format(Locale.ROOT, text.length() == 0 ? "%,d answered by the %s" : ", %,d by the %s",
+                        rays, structure));
+            }
+        }
+        return text.toString();
     }
 
     /** "1 object", "2,000 objects". */

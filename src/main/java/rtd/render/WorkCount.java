@@ -14,8 +14,11 @@ import rtd.geometry.IGeometry;
  * @param rays         the rays traced
  * @param testsByKind  intersection tests per kind of object ("sphere", "triangle", ...)
  * @param nodesVisited bounding-volume nodes visited
+ * @param secondaryRays the shader's rays by kind ("shadow", "reflected", ...), which {@code rays} counts too
+ * @param answeredBy   the rays by what found their hits ("view grid", "BVH", ...), where a tracer says
  */
-public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited, Map<String, Long> secondaryRays) {
+public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited, Map<String, Long> secondaryRays,
+        Map<String, Long> answeredBy) {
 
     /** No work at all. */
     public static final WorkCount NONE = new WorkCount(0, Map.of(), 0);
@@ -24,16 +27,22 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
     public WorkCount {
         testsByKind = Collections.unmodifiableMap(new TreeMap<>(testsByKind));
         secondaryRays = Collections.unmodifiableMap(new TreeMap<>(secondaryRays));
+        answeredBy = Collections.unmodifiableMap(new TreeMap<>(answeredBy));
     }
 
     /** Work without secondary rays counted apart. */
     public WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited) {
-        this(rays, testsByKind, nodesVisited, Map.of());
+        this(rays, testsByKind, nodesVisited, Map.of(), Map.of());
     }
 
     /** This work, and {@code secondary} rays more by kind (which {@link #rays} already counts: the tracer traced them). */
     public WorkCount plusSecondary(Map<String, Long> secondary) {
-        return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary));
+        return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary), answeredBy);
+    }
+
+    /** This work, with all its rays answered by {@code structure} ("view grid", "BVH", ...). */
+    public WorkCount answeredBy(String structure) {
+        return new WorkCount(rays, testsByKind, nodesVisited, secondaryRays, Map.of(structure, rays));
     }
 
     /** The rays the camera made: all rays traced but the secondary ones. */
@@ -68,13 +77,13 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
         for (Map.Entry<String, Long> kind : testsByKind.entrySet()) {
             tests.put(kind.getKey(), kind.getValue() * factor);
         }
-        return new WorkCount(rays * factor, tests, nodesVisited * factor, secondaryRays);
+        return new WorkCount(rays * factor, tests, nodesVisited * factor, secondaryRays, answeredBy);
     }
 
     /** The sum of this and {@code other}. */
     public WorkCount plus(WorkCount other) {
         return new WorkCount(rays + other.rays, sum(testsByKind, other.testsByKind), nodesVisited + other.nodesVisited,
-                sum(secondaryRays, other.secondaryRays));
+                sum(secondaryRays, other.secondaryRays), sum(answeredBy, other.answeredBy));
     }
 
     /** Intersection tests of every kind. */
