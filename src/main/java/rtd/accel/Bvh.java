@@ -53,6 +53,14 @@ public final class Bvh {
     final int[] unboundedOrder;
     final int maxDepth;
     final List<IGeometry> objects;
+    /**
+     * For --stats, where the tree holds several kinds of object ({@link NearestHit#tests()}): per
+     * node, a leaf's kind if its objects are all of one, else −1 − its number among
+     * {@link #mixedLeaves}; empty if the tree holds one kind.
+     */
+    final int[] leafKinds;
+    /** The leaves whose objects are of several kinds, by number: their nodes. */
+    final int[] mixedLeaves;
 
     private Bvh(BvhBuilder builder, List<IGeometry> objects) {
         builder.build();
@@ -72,6 +80,8 @@ public final class Bvh {
         }
         this.maxDepth = builder.maxDepth();
         this.objects = objects;
+        this.leafKinds = leafKinds(nodes, leaves);
+        this.mixedLeaves = mixedLeaves(leafKinds);
     }
 
     /**
@@ -150,6 +160,48 @@ public final class Bvh {
         }
         this.maxDepth = 0;
         this.objects = objects;
+        this.leafKinds = leafKinds(nodes, leaves);
+        this.mixedLeaves = mixedLeaves(leafKinds);
+    }
+
+    /** {@link #leafKinds}: per leaf, its objects' one kind, or −1 − its number among the leaves of several. */
+    private static int[] leafKinds(int[] nodes, LeafObjects leaves) {
+        if (leaves.kindNames.length <= 1) {
+            return new int[0];
+        }
+        int[] kinds = new int[nodes.length / 2];
+        int mixed = 0;
+        for (int node = 0; node < kinds.length; node++) {
+            if (nodes[2 * node + 1] == INNER) {
+                continue;
+            }
+            int first = nodes[2 * node];
+            int end = first + nodes[2 * node + 1];
+            int kind = first < end ? leaves.kinds[first] : 0;
+            for (int i = first; i < end; i++) {
+                if (leaves.kinds[i] != kind) {
+                    kind = -1 - mixed++;
+                    break;
+                }
+            }
+            kinds[node] = kind;
+        }
+        return kinds;
+    }
+
+    /** {@link #mixedLeaves}: the nodes of the leaves of several kinds, in the order of their numbers. */
+    private static int[] mixedLeaves(int[] leafKinds) {
+        int count = 0;
+        for (int kind : leafKinds) {
+            count += kind < 0 ? 1 : 0;
+        }
+        int[] nodes = new int[count];
+        for (int node = 0; node < leafKinds.length; node++) {
+            if (leafKinds[node] < 0) {
+                nodes[-1 - leafKinds[node]] = node;
+            }
+        }
+        return nodes;
     }
 
     /** A new tracer that follows rays through this hierarchy; one per thread. */

@@ -65,10 +65,14 @@ final class NearestHit {
     private float exit;
     /**
      * The tests of the objects by kind, where there is more than one: of objects tested at their
-     * places (a grid's cells) one by one; of a leaf's objects, through {@link #leafVisits}.
+     * places (a grid's cells) one by one; of a leaf of one kind, its objects at once; of a leaf of
+     * several, through {@link #leafVisits}.
      */
     private final long[] tests;
-    /** Per node, how many rays tested a leaf's objects, where there are several kinds: counted by kind in {@link #tests()}. */
+    /**
+     * Per leaf of several kinds ({@link Bvh#mixedLeaves}), how many rays tested its objects: counted
+     * by kind in {@link #tests()}. Not one a node: a thread's beams keep 64 of these objects.
+     */
     private final long[] leafVisits;
     private final boolean severalKinds;
     /** The intersection tests of the tree's objects so far. */
@@ -81,7 +85,7 @@ final class NearestHit {
         this.bvh = bvh;
         this.leaves = bvh.leaves;
         this.tests = new long[leaves.kindNames.length];
-        this.leafVisits = new long[tests.length > 1 ? bvh.nodes.length / 2 : 0];
+        this.leafVisits = new long[bvh.mixedLeaves.length];
         this.severalKinds = tests.length > 1;
         this.planes = planeNumbers(bvh.unbounded);
     }
@@ -218,7 +222,12 @@ final class NearestHit {
         int end = first + bvh.nodes[2 * leaf + 1];
         treeTests += end - first;
         if (severalKinds) {
-            leafVisits[leaf]++;
+            int kind = bvh.leafKinds[leaf];
+            if (kind >= 0) {
+                tests[kind] += end - first;
+            } else {
+                leafVisits[-1 - kind]++;
+            }
         }
         for (int i = first; i < end; i++) {
             test(i);
@@ -381,15 +390,21 @@ final class NearestHit {
             return new long[] {treeTests}; // one kind: counted per leaf only
         }
         long[] byKind = tests.clone();
-        for (int leaf = 0; leaf < leafVisits.length; leaf++) {
-            if (leafVisits[leaf] > 0) {
+        for (int m = 0; m < leafVisits.length; m++) {
+            if (leafVisits[m] > 0) {
+                int leaf = bvh.mixedLeaves[m];
                 int first = bvh.nodes[2 * leaf];
                 for (int i = first; i < first + bvh.nodes[2 * leaf + 1]; i++) {
-                    byKind[leaves.kinds[i]] += leafVisits[leaf];
+                    byKind[leaves.kinds[i]] += leafVisits[m];
                 }
             }
         }
         return byKind;
+    }
+
+    /** How many counters of leaf visits this object keeps, for {@link #tests()}. */
+    int leafCounters() {
+        return leafVisits.length;
     }
 
     /** All intersection tests run for this object's rays so far: a running count, read before and after a ray. */
