@@ -47,7 +47,7 @@ final class PointFootprint implements ImageFootprint {
     private final double gap;
 
     private PointFootprint(Vector3f point, double[] forward, double[] across, double[] down, int size,
-            double widest, double reach) {
+            double widest, double reach, double gap) {
         lightX = point.x();
         lightY = point.y();
         lightZ = point.z();
@@ -58,8 +58,7 @@ final class PointFootprint implements ImageFootprint {
         this.half = size / 2.0;
         this.scale = size / (2 * widest);
         this.reach = reach;
-        // the float rounding of a ray's end grows with its length and with the size of the coordinates
-        this.gap = GAP * (reach + Math.sqrt(lightX * lightX + lightY * lightY + lightZ * lightZ));
+        this.gap = gap;
     }
 
     /**
@@ -99,11 +98,12 @@ final class PointFootprint implements ImageFootprint {
         double diagonal = Math.sqrt(Math.pow(box[3] - box[0], 2) + Math.pow(box[4] - box[1], 2)
                 + Math.pow(box[5] - box[2], 2));
         double reach = Math.min(1.25 * farthest, farthest + diagonal);
+        // the float rounding of a ray's end grows with its length and with the size of the coordinates
         double gap = GAP * (reach + Math.sqrt((double) point.x() * point.x() + (double) point.y() * point.y()
                 + (double) point.z() * point.z()));
         // a light so far that the gap is no longer small beside the box as it sees it: the tree does better
         boolean tooFar = gap > 0.08 * distance * widest;
-        return widest > WIDEST || tooFar ? null : new PointFootprint(point, forward, across, down, size, widest, reach);
+        return widest > WIDEST || tooFar ? null : new PointFootprint(point, forward, across, down, size, widest, reach, gap);
     }
 
     /** The largest gap served, g. */

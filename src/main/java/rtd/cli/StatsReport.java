@@ -22,7 +22,7 @@ final class StatsReport {
                 ? "no BVH: the paper's loop tests every object" : accelerator.built().get());
         line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
                 work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
-        if (work.answeredBy().size() > 1) {
+        if (work.answeredBy().values().stream().filter(rays -> rays > 0).count() > 1) {
             text.append(String.format(Locale.ROOT, "           %s%n", answeredBy(work)));
         }
         line(text, "write", seconds.get("write"), output.toString());
@@ -51,7 +51,7 @@ final class StatsReport {
         StringBuilder text = new StringBuilder();
         for (String structure : new String[] {"view grid", "light grids", "BVH"}) {
             Long rays = work.answeredBy().get(structure);
-            if (rays != null) {
+            if (rays != null && rays > 0) {
                 text.append(String.format(Locale.ROOT, text.length() == 0 ? "%,d answered by the %s" : ", %,d by the %s",
                         rays, structure));
             }

@@ -40,7 +40,10 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
         return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary), answeredBy);
     }
 
-    /** This work, with all its rays answered by {@code structure} ("view grid", "BVH", ...). */
+    /**
+     * This work, with all its rays answered by {@code structure} ("view grid", "BVH", ...): a
+     * tracer labels its own work so, before it adds another's.
+     */
     public WorkCount answeredBy(String structure) {
         return new WorkCount(rays, testsByKind, nodesVisited, secondaryRays, Map.of(structure, rays));
     }
@@ -73,11 +76,14 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
 
     /** This work done {@code factor} times. */
     public WorkCount times(long factor) {
-        Map<String, Long> tests = new TreeMap<>();
-        for (Map.Entry<String, Long> kind : testsByKind.entrySet()) {
-            tests.put(kind.getKey(), kind.getValue() * factor);
-        }
-        return new WorkCount(rays * factor, tests, nodesVisited * factor, secondaryRays, answeredBy);
+        return new WorkCount(rays * factor, scaled(testsByKind, factor), nodesVisited * factor,
+                scaled(secondaryRays, factor), scaled(answeredBy, factor));
+    }
+
+    private static Map<String, Long> scaled(Map<String, Long> counts, long factor) {
+        Map<String, Long> scaled = new TreeMap<>();
+        counts.forEach((key, count) -> scaled.put(key, count * factor));
+        return scaled;
     }
 
     /** The sum of this and {@code other}. */
