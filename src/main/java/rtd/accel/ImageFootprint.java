@@ -49,20 +49,6 @@ interface ImageFootprint {
         return nearest;
     }
 
-    /**
-     * Writes a tighter bound than the rectangle for {@code object}, whose box {@link #putObject}
-     * put into {@code box}: its {@link TriangleOutline} into {@code into[at .. at+8]}; false if
-     * this footprint has none for it (the default), and then the rectangle alone bounds it.
-     */
-    default boolean putOutline(IGeometry object, float[] box, float[] into, int at) {
-        return false;
-    }
-
-    /** Whether {@link #putOutline} ever writes one. */
-    default boolean outlines() {
-        return false;
-    }
-
     /** Whether all six numbers of a box are finite. */
     static boolean isFinite(float[] box) {
         for (float value : box) {

@@ -2,7 +2,6 @@ package rtd.accel;
 
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Triangle;
 import rtd.math.Vector3f;
 
 /**
@@ -42,7 +41,6 @@ final class PerspectiveFootprint implements ImageFootprint {
      * rounding can take it below 0 where f is tiny beside the picture (a field of view near 180°).
      */
     private final double backward;
-    private final TriangleOutline outline;
 
     PerspectiveFootprint(PerspectiveCamera camera, int width, int height, double latestOffset) {
         Vector3f eye = camera.position();
@@ -61,7 +59,6 @@ final class PerspectiveFootprint implements ImageFootprint {
         double size = Math.abs(focal) + width + height;
         margin = DIRECTION_ERROR * size * (1 + (width + height) / Math.abs(focal));
         backward = Math.max(1e-9, DIRECTION_ERROR * (width + height) / Math.abs(focal));
-        outline = new TriangleOutline(eye, forward, right, down, focal, halfWidth, halfHeight, margin);
     }
 
     private static double[] numbers(Vector3f vector) {
@@ -77,7 +74,9 @@ final class PerspectiveFootprint implements ImageFootprint {
         double y1 = boxes[at + 4] - oy;
         double z1 = boxes[at + 5] - oz;
         double widest = linear + IGeometry.ROUNDING_CONE;
-        double reach = reach(x0, y0, z0, x1, y1, z1, widest);
+        // a hit runs L ≤ farthest corner + √3·growth(L) ≤ farthest + √3·widest·L from the eye
+        double farthest = Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
+        double reach = farthest / (1 - Math.sqrt(3) * widest);
         double grow = ImageFootprint.growth(linear, quadratic, reach);
         double nearest = ImageFootprint.distance(x0, y0, z0, x1, y1, z1) - Math.sqrt(3) * grow;
         if (!(widest * Math.sqrt(3) < 0.5 && Double.isFinite(grow))) {
@@ -141,31 +140,6 @@ final class PerspectiveFootprint implements ImageFootprint {
                 && ImageFootprint.range(halfHeight + top - margin, halfHeight + bottom + margin, height,
                         latestOffset, into, to + 1);
         return seen ? ImageFootprint.below(nearest) : Float.NaN;
-    }
-
-    /**
-     * The longest run from the eye to a hit on an object of box {@code [x0, x1] × [y0, y1] ×
-     * [z0, z1]} (relative to the eye) whose test may stray {@code widest} of the run: a hit runs
-     * L ≤ farthest corner + √3·growth(L) ≤ farthest + √3·widest·L.
-     */
-    private static double reach(double x0, double y0, double z0, double x1, double y1, double z1, double widest) {
-        double farthest = Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
-        return farthest / (1 - Math.sqrt(3) * widest);
-    }
-
-    @Override
-    public boolean putOutline(IGeometry object, float[] box, float[] into, int at) {
-        if (!(object instanceof Triangle triangle)) {
-            return false;
-        }
-        double widest = object.rounding().linear() + IGeometry.ROUNDING_CONE;
-        double reach = reach(box[0] - ox, box[1] - oy, box[2] - oz, box[3] - ox, box[4] - oy, box[5] - oz, widest);
-        return widest * Math.sqrt(3) < 0.5 && outline.put(triangle, reach, into, at);
-    }
-
-    @Override
-    public boolean outlines() {
-        return true;
     }
 
     /** The larger square of two ends of a side. */

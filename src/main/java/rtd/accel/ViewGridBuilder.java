@@ -4,7 +4,6 @@ import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Triangle;
 
 /**
  * Builds a {@link ViewGrid}, in passes over arrays, each on all threads where it can be: every
@@ -35,13 +34,6 @@ final class ViewGridBuilder {
     private final byte[] state;
     /** Per object in file order: its place in the leaf, −1 for one without a box. */
     private int[] leafOf;
-    /**
-     * Per object in file order, {@link TriangleOutline#NUMBERS} each: its outline, or NaN first
-     * for none; null if the footprint outlines nothing or there is no triangle.
-     */
-    private float[] outlines;
-    /** How far into its pixel a ray may lie: the cells' ray positions run to their last pixel plus this. */
-    private double latestOffset;
 
     ViewGridBuilder(List<IGeometry> objects, int width, int height, ForkJoinPool pool) {
         this.objects = objects;
@@ -64,8 +56,6 @@ final class ViewGridBuilder {
      * are (a {@link LightGrid}'s has no camera).
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
-        this.latestOffset = latestOffset;
-        outlines = footprint.outlines() && hasTriangles() ? new float[TriangleOutline.NUMBERS * objects.size()] : null;
         int shift = CellSide.choose(objects, footprint, width, height, samples);
         Parts parts = new Parts(objects.size(), pool);
         int[][] perPart = new int[parts.parts][cellCount(shift)];
@@ -96,13 +86,8 @@ final class ViewGridBuilder {
         parts.run((start, end, part) -> {
             float[] box = new float[6];
             for (int f = start; f < end; f++) {
-                IGeometry object = objects.get(f);
-                nearest[f] = footprint.putObject(object, box, footprints, 4 * f);
+                nearest[f] = footprint.putObject(objects.get(f), box, footprints, 4 * f);
                 state[f] = nearest[f] == nearest[f] ? SEEN : ImageFootprint.isFinite(box) ? UNSEEN : UNBOUNDED;
-                if (outlines != null && (state[f] != SEEN || !footprint.putOutline(object, box, outlines,
-                        TriangleOutline.NUMBERS * f))) {
-                    outlines[TriangleOutline.NUMBERS * f] = Float.NaN;
-                }
                 countCells(f, shift, columns, perPart[part]);
             }
         });
@@ -124,48 +109,11 @@ final class ViewGridBuilder {
             return;
         }
         int at = 4 * f;
-        boolean outlined = isOutlined(f);
         for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
             for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
-                if (!outlined || overlaps(f, x, y, shift)) {
-                    counts[y * columns + x]++;
-                }
+                counts[y * columns + x]++;
             }
         }
-    }
-
-    /** Whether any object is a triangle, which a footprint may outline. */
-    private boolean hasTriangles() {
-        for (IGeometry object : objects) {
-            if (object instanceof Triangle) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether object {@code f} has a {@link TriangleOutline} as well as its rectangle. */
-    private boolean isOutlined(int f) {
-        if (outlines == null) {
-            return false;
-        }
-        float first = outlines[TriangleOutline.NUMBERS * f];
-        return first == first;
-    }
-
-    /**
-     * Whether the outline of object {@code f} overlaps the rays of cell (x, y) of side
-     * {@code 1 << shift} within its rectangle: the cell's pixels there, each with rays up to
-     * {@link #latestOffset} into it.
-     */
-    private boolean overlaps(int f, int x, int y, int shift) {
-        int at = 4 * f;
-        int left = Math.max(x << shift, footprints[at]);
-        int top = Math.max(y << shift, footprints[at + 1]);
-        int right = Math.min(((x + 1) << shift) - 1, footprints[at + 2]);
-        int bottom = Math.min(((y + 1) << shift) - 1, footprints[at + 3]);
-        return TriangleOutline.overlaps(outlines, TriangleOutline.NUMBERS * f, left, top, right + latestOffset,
-                bottom + latestOffset);
     }
 
     /** All the counts together: the entries the cells would hold. */
@@ -267,12 +215,9 @@ final class ViewGridBuilder {
                     int at = 4 * f;
                     int place = leafOf[f];
                     nearestByPlace[place] = nearest[f];
-                    boolean outlined = isOutlined(f);
                     for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
                         for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
-                            if (!outlined || overlaps(f, x, y, shift)) {
-                                places[cursor[y * columns + x]++] = place;
-                            }
+                            places[cursor[y * columns + x]++] = place;
                         }
                     }
                 }

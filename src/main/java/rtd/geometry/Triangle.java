@@ -37,7 +37,7 @@ public final class Triangle implements IGeometry {
      * The largest share of the distance run by which a hit may stray along the ray (see
      * {@link #hit}); the part of {@link #rounding} that grows with the distance.
      */
-    public static final float ALONG_THE_RAY = 1e-4f;
+    private static final float ALONG_THE_RAY = 1e-4f;
 
     /**
      * p1, p2, p3; n = (p2 − p1) × (p3 − p1); n × edge for the three edges; their lengths; the
@@ -124,19 +124,6 @@ public final class Triangle implements IGeometry {
     /** Corner {@code i} (0, 1 or 2). */
     public Vector3f corner(int i) {
         return vector(CORNERS + 3 * i);
-    }
-
-    /**
-     * The side tests' allowance per unit of distance from a corner ({@link #hit}): 0 for a
-     * needle. For a footprint that must bound where the test can report a hit.
-     */
-    public float sideTolerance() {
-        return v[at + TOLERANCE];
-    }
-
-    /** The edges' lengths summed over the axes, as {@link #hit} bounds its allowances with it. */
-    public float edgeSum() {
-        return v[at + SIZE];
     }
 
     /** The unnormalised normal {@code (p2 − p1) × (p3 − p1)}. */
