@@ -42,6 +42,24 @@ class RenderPathsTest {
         assertThat(pixels(scene, 480, 270, threads, true)).isEqualTo(reference);
     }
 
+    @Test
+    void theBandsAreTakenInAScatteredOrderEachOnce() {
+        for (int bands = 1; bands <= 600; bands++) {
+            int step = ParallelRenderer.scatteringStep(bands);
+            boolean[] taken = new boolean[bands];
+            for (int k = 0; k < bands; k++) {
+                int band = (int) ((long) k * step % bands);
+                assertThat(taken[band]).as("band %d of %d taken twice", band, bands).isFalse();
+                taken[band] = true;
+            }
+        }
+        // 1080 rows are 135 bands of 8: the step is 52 (135 · 0.382 = 51.6, and 52 is coprime to
+        // 135), so the bands come 0, 52, 104, 21, 73, 125, ...: the second one a third of the way
+        // down the picture, the third one beyond three quarters.
+        assertThat(ParallelRenderer.scatteringStep(135)).isEqualTo(52);
+        assertThat(ParallelRenderer.scatteringStep(1)).isEqualTo(1);
+    }
+
     @ParameterizedTest(name = "view direction {0}")
     @ValueSource(strings = {"0.0001 0 -1", "0 0 -1", "0 -0.5 2", "0.3 -0.7 -1.1"})
     @DisplayName("the BVH gives the paper's pixels where rounding noise is larger than the spheres")
