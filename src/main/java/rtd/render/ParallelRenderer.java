@@ -21,10 +21,10 @@ import rtd.image.Picture;
  *
  * <p>Every pixel depends only on its own ray, so the picture is the same for any number of
  * threads: the threads only change which pixel is done when. A thread takes the next band of
- * {@value #TILE} rows not yet taken, so a slow band does not hold the others back (in an order
- * that scatters them over the picture: {@link #scatteringStep}), and hands
+ * {@value #TILE} rows not yet taken, so a slow band does not hold the others back, and hands
  * its tracer the rays of one {@value #TILE} × {@value #TILE} square of pixels at a time:
- * neighbouring rays take similar paths, which a tracer may use.
+ * neighbouring rays take similar paths, which a tracer may use. The bands are taken not from
+ * the top down but scattered over the picture ({@link #bandTaken}), for the JIT's sake.
  */
 public final class ParallelRenderer {
 
@@ -32,6 +32,11 @@ public final class ParallelRenderer {
     static final int TILE = 8;
     /** How many squares side by side the renderer asks about at once first ({@link Tracer#traceIfAllMiss}). */
     static final int RUN = 64;
+    /**
+     * The golden section's smaller part, {@code (3 − √5) / 2}: steps of this share of a circle
+     * put each next point in the largest gap left, so any first few bands lie far apart.
+     */
+    private static final double GOLDEN_SECTION = (3 - Math.sqrt(5)) / 2;
 
     private ParallelRenderer() {
     }
@@ -66,7 +71,7 @@ public final class ParallelRenderer {
             used.add(tracer);
             Square square = new Square(camera, tracer, shader, width, height, samples);
             squares.add(square);
-            workers.add(() -> renderBands(square, pixels, nextBand, progress));
+            workers.add(() -> renderBands(square, pixels, bands, nextBand, progress));
         }
         runAll(workers);
         WorkCount work = WorkCount.NONE;
@@ -79,17 +84,15 @@ public final class ParallelRenderer {
         return new RenderResult(new Picture(width, height, pixels), work);
     }
 
-    private static void renderBands(Square square, int[] pixels, AtomicInteger nextBand, RenderProgress progress) {
+    private static void renderBands(Square square, int[] pixels, int bands, AtomicInteger nextBand,
+            RenderProgress progress) {
         int width = square.width;
         int height = square.height;
-        int bands = (height + TILE - 1) / TILE;
-        int step = scatteringStep(bands);
         for (int taken = nextBand.getAndIncrement(); taken < bands; taken = nextBand.getAndIncrement()) {
             if (Thread.currentThread().isInterrupted()) {
                 return; // another thread failed, and the picture will not be used
             }
-            int band = (int) ((long) taken * step % bands);
-            int top = band * TILE;
+            int top = bandTaken(taken, bands) * TILE;
             int bottom = Math.min(height, top + TILE);
             for (int left = 0; left < width; left += RUN * TILE) {
                 square.renderRun(left, Math.min(width, left + RUN * TILE), top, bottom, pixels);
@@ -99,18 +102,25 @@ public final class ParallelRenderer {
     }
 
     /**
-     * The step by which the bands are taken: the k-th band taken is {@code k · step mod bands}.
-     * It is coprime to {@code bands}, so each band is taken once, and near the golden section of
-     * them, so that the first bands come from all over the picture. Why not top to bottom: the
-     * JIT compiles the hot methods for what the first few thousand rays did. After a top band of
-     * sky or of spheres alone, the floor's mirror rays or the glass would each throw a compiled
-     * method away later and have it compiled again, while it runs slower meanwhile. Scattered,
-     * the glass and mirror example renders in 2.2 s instead of 3.6 s, the shaded benchmark in
-     * 1.8 instead of 2.1 s (medians of 5 and 7 pairs); the picture is the same, as every pixel
-     * depends only on its own rays.
+     * The band taken {@code taken}-th of {@code bands}: {@code taken · step mod bands}, each band
+     * once, as the step is coprime to their number ({@link #scatteringStep}). Why not from the top
+     * down: the JIT compiles the hot methods for what the first few thousand rays did. After a top
+     * band of sky or of far spheres alone, the floor's mirror rays or the glass further down would
+     * make it throw compiled methods away and compile them again, and the render runs slower
+     * meanwhile. Scattered, the first bands show the JIT the whole picture (measured in
+     * docs/performance.md). The picture is the same, as every pixel depends only on its own rays.
+     */
+    static int bandTaken(int taken, int bands) {
+        return (int) ((long) taken * scatteringStep(bands) % bands);
+    }
+
+    /**
+     * The step between bands taken one after the other: the whole number nearest to the golden
+     * section of {@code bands}, or the next one above it that has no common factor with
+     * {@code bands}; 52 of 135 bands (1080 rows), so they come 0, 52, 104, 21, 73, 125, ...
      */
     static int scatteringStep(int bands) {
-        int step = Math.max(1, (int) Math.round(bands * 0.381966));
+        int step = Math.max(1, (int) Math.round(bands * GOLDEN_SECTION));
         while (gcd(step, bands) != 1) {
             step++;
         }

@@ -44,20 +44,32 @@ class RenderPathsTest {
 
     @Test
     void theBandsAreTakenInAScatteredOrderEachOnce() {
-        for (int bands = 1; bands <= 600; bands++) {
-            int step = ParallelRenderer.scatteringStep(bands);
+        for (int bands = 1; bands <= 2_500; bands++) { // up to 20,000 rows
             boolean[] taken = new boolean[bands];
             for (int k = 0; k < bands; k++) {
-                int band = (int) ((long) k * step % bands);
+                int band = ParallelRenderer.bandTaken(k, bands);
                 assertThat(taken[band]).as("band %d of %d taken twice", band, bands).isFalse();
                 taken[band] = true;
             }
         }
-        // 1080 rows are 135 bands of 8: the step is 52 (135 · 0.382 = 51.6, and 52 is coprime to
-        // 135), so the bands come 0, 52, 104, 21, 73, 125, ...: the second one a third of the way
-        // down the picture, the third one beyond three quarters.
+        // 1080 rows are 135 bands of 8: the step is 52 (135 · 0.382 = 51.6, and 52 has no factor
+        // in common with 135 = 3³ · 5), so the bands come 0, 52, 104, 21, 73, 125, ...: the second
+        // two fifths of the way down the picture, the third beyond three quarters.
         assertThat(ParallelRenderer.scatteringStep(135)).isEqualTo(52);
+        assertThat(List.of(0, 1, 2, 3, 4, 5).stream().map(k -> ParallelRenderer.bandTaken(k, 135)))
+                .containsExactly(0, 52, 104, 21, 73, 125);
         assertThat(ParallelRenderer.scatteringStep(1)).isEqualTo(1);
+    }
+
+    @ParameterizedTest(name = "height {0}")
+    @ValueSource(ints = {1, 7, 9, 1081})
+    void everyRowIsRenderedOnceAtAnyHeightAsThePapersLoopDrawsIt(int height) {
+        Scene scene = Scenes.example("input_rtd");
+        RenderProgress progress = new RenderProgress();
+        int[] pixels = ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene),
+                tracer -> new rtd.shade.FlatShader(scene), 13, height, 3, progress).image().rgb();
+        assertThat(pixels).isEqualTo(Renders.paper(scene, 13, height));
+        assertThat(progress.rowsDone()).isEqualTo(height);
     }
 
     @ParameterizedTest(name = "view direction {0}")
