@@ -1,62 +1,76 @@
 package rtd.accel;
 
+import java.util.Arrays;
+import java.util.concurrent.ForkJoinPool;
+
 /**
- * The objects a {@link ViewGrid}'s cells list, nearest first: by a distance before which no hit
- * on each object lies, so that a ray can stop at the first object beyond its hit
- * ({@link NearestHit#testPlacesNearestFirst}). The builder writes the objects into their cells in
- * this order, so every cell's list comes out sorted, with no sort per cell.
+ * Sorts a {@link ViewGrid}'s cell lists nearest first, by a distance before which no hit on each
+ * object lies, so that a ray can stop at the first object beyond its hit
+ * ({@link NearestHit#testPlacesNearestFirst}).
  */
 final class NearestFirst {
 
-    /** The bits of a sort key taken at once: two passes over a float's 32. */
-    private static final int DIGIT = 16;
+    /** A cell of more objects than this is sorted by {@link Arrays#sort}, not by insertion. */
+    private static final int INSERTION_SORT_MOST = 32;
 
     private NearestFirst() {
     }
 
     /**
-     * The objects {@code f} with {@code seen[f]}, ordered by {@code nearest[f]} (negative
-     * distances and −∞ too), and on a tie by {@code f}: a radix sort of the distances' bits, in
-     * two stable passes of {@value #DIGIT} bits, which costs two passes over the objects however
-     * they lie.
+     * Sorts each cell's objects by their nearest distance, in parallel by cells: by insertion, as
+     * a cell holds a dozen or so, and a crowded cell (objects that cover the whole image, say) by
+     * their distances and places. A list that runs from far to near is turned round first: a
+     * file that lists a mesh from the back to the front fills every cell that way, the worst
+     * order for an insertion sort.
      */
-    static int[] order(float[] nearest, boolean[] seen) {
-        int count = 0;
-        for (boolean s : seen) {
-            count += s ? 1 : 0;
-        }
-        int[] objects = new int[count];
-        for (int f = 0, k = 0; f < seen.length; f++) {
-            if (seen[f]) {
-                objects[k++] = f;
+    static void sort(int[] cellStart, int[] places, float[] nearestByPlace, ForkJoinPool pool) {
+        new Parts(cellStart.length - 1, pool).run((first, end) -> {
+            for (int c = first; c < end; c++) {
+                int from = cellStart[c];
+                int to = cellStart[c + 1];
+                if (to - from > INSERTION_SORT_MOST) {
+                    sortCrowded(places, from, to, nearestByPlace);
+                    continue;
+                }
+                if (to - from > 1 && nearestByPlace[places[from]] > nearestByPlace[places[to - 1]]) {
+                    reverse(places, from, to);
+                }
+                for (int k = from + 1; k < to; k++) {
+                    int place = places[k];
+                    float distance = nearestByPlace[place];
+                    int j = k - 1;
+                    while (j >= from && nearestByPlace[places[j]] > distance) {
+                        places[j + 1] = places[j];
+                        j--;
+                    }
+                    places[j + 1] = place;
+                }
             }
+        });
+    }
+
+    private static void reverse(int[] places, int from, int to) {
+        for (int i = from, j = to - 1; i < j; i++, j--) {
+            int swap = places[i];
+            places[i] = places[j];
+            places[j] = swap;
         }
-        int[] other = new int[count]; // the keys are looked up, not kept: a million objects' keys are 4 MB twice
-        pass(objects, other, nearest, 0);
-        pass(other, objects, nearest, DIGIT);
-        return objects;
     }
 
     /**
-     * The float's bits as an int whose unsigned order is the floats' order: a negative float's
-     * bits order backwards, so they are turned round, and the sign bit flipped.
+     * Sorts {@code places[from .. to)} by distance, then place: each as one long, the distance's
+     * bits turned into an int that orders as the floats do (negative ones too), above the place.
      */
-    static int key(float distance) {
-        int bits = Float.floatToIntBits(distance);
-        return (bits ^ ((bits >> 31) & 0x7FFF_FFFF)) ^ 0x8000_0000;
-    }
-
-    /** One stable counting pass over {@code objects} into {@code into}, by the {@value #DIGIT} bits of their keys from bit {@code shift}. */
-    private static void pass(int[] objects, int[] into, float[] nearest, int shift) {
-        int[] next = new int[(1 << DIGIT) + 1];
-        for (int f : objects) {
-            next[((key(nearest[f]) >>> shift) & 0xFFFF) + 1]++;
+    static void sortCrowded(int[] places, int from, int to, float[] nearestByPlace) {
+        long[] keys = new long[to - from];
+        for (int k = from; k < to; k++) {
+            int bits = Float.floatToIntBits(nearestByPlace[places[k]]);
+            bits ^= (bits >> 31) & 0x7FFF_FFFF; // a negative float's bits order backwards: turn them round
+            keys[k - from] = (long) bits << 32 | places[k];
         }
-        for (int d = 1; d < next.length; d++) {
-            next[d] += next[d - 1]; // now where each digit's objects start
-        }
-        for (int f : objects) {
-            into[next[(key(nearest[f]) >>> shift) & 0xFFFF]++] = f;
+        Arrays.sort(keys);
+        for (int k = from; k < to; k++) {
+            places[k] = (int) keys[k - from];
         }
     }
 }

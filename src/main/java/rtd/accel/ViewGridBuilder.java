@@ -10,8 +10,7 @@ import rtd.geometry.IGeometry;
  * object's footprint on the image and nearest distance ({@link ImageFootprint}); a place for it in the
  * leaf, by the square of the image it lies in, so that neighbours on the image lie side by side
  * in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists, with cells
- * of the side {@link CellSide} chooses, each list nearest first: the objects are written into
- * the cells in that order ({@link NearestFirst}).
+ * of the side {@link CellSide} chooses; and each list sorted nearest first ({@link NearestFirst}).
  * The grid is the same for any number of threads.
  */
 final class ViewGridBuilder {
@@ -28,12 +27,8 @@ final class ViewGridBuilder {
     private final int width;
     private final int height;
 
-    /**
-     * Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not
-     * {@link #SEEN}; let go once {@link #recordsIn} has them in the order of the cells' lists, for
-     * the memory of a million objects.
-     */
-    private int[] footprints;
+    /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
+    private final int[] footprints;
     /** Per object in file order: a distance from the ray's origin before which no ray hits it, if it is {@link #SEEN}. */
     private final float[] nearest;
     private final byte[] state;
@@ -62,88 +57,63 @@ final class ViewGridBuilder {
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
         int shift = CellSide.choose(objects, footprint, width, height, samples);
-        measure(footprint, new Parts(objects.size(), pool));
-        int[] fileOrder = leafOrder();
-        float[] nearestByPlace = new float[fileOrder.length];
-        int[] order = NearestFirst.order(nearest, seen());
-        Parts parts = new Parts(order.length, pool);
-        int[] records = recordsIn(order, parts, nearestByPlace);
-        footprints = null;
+        Parts parts = new Parts(objects.size(), pool);
         int[][] perPart = new int[parts.parts][cellCount(shift)];
-        count(records, parts, shift, perPart);
+        measure(footprint, parts, shift, perPart);
         while (entries(perPart) > CellSide.MOST_ENTRIES && cellCount(shift) > 1) {
             // the sample missed objects that cover much of the image: larger cells, counted again
             shift++;
             perPart = new int[parts.parts][cellCount(shift)];
-            count(records, parts, shift, perPart);
+            count(parts, shift, perPart);
         }
         int columns = ViewGrid.cellsAlong(width, shift);
         int[] cellStart = new int[cellCount(shift) + 1];
+        int[] fileOrder = leafOrder();
         Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
-        int[] places = fill(records, parts, perPart, shift, columns, cellStart);
+        float[] nearestByPlace = new float[fileOrder.length];
+        int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
+        NearestFirst.sort(cellStart, places, nearestByPlace, pool);
         return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
     }
 
-    /** Each object's box, footprint and nearest distance, and whether a ray can see it. */
-    private void measure(ImageFootprint footprint, Parts parts) {
+    /**
+     * Each object's box, footprint and nearest distance, and whether a ray can see it; and, part by part
+     * of {@code parts}, how many objects each cell of side {@code 1 << shift} gets, into
+     * {@code perPart}.
+     */
+    private void measure(ImageFootprint footprint, Parts parts, int shift, int[][] perPart) {
+        int columns = ViewGrid.cellsAlong(width, shift);
         parts.run((start, end, part) -> {
             float[] box = new float[6];
             for (int f = start; f < end; f++) {
                 nearest[f] = footprint.putObject(objects.get(f), box, footprints, 4 * f);
                 state[f] = nearest[f] == nearest[f] ? SEEN : ImageFootprint.isFinite(box) ? UNSEEN : UNBOUNDED;
+                countCells(f, shift, columns, perPart[part]);
             }
         });
     }
 
-    /** Per object in file order, whether a ray of the picture can see it. */
-    private boolean[] seen() {
-        boolean[] seen = new boolean[state.length];
-        for (int f = 0; f < seen.length; f++) {
-            seen[f] = state[f] == SEEN;
-        }
-        return seen;
-    }
-
-    /** The numbers of an object that {@link #recordsIn} keeps: its footprint's four and its leaf place. */
-    private static final int RECORD = 5;
-
-    /**
-     * What the passes that follow read of the objects of {@code order}, in that order,
-     * {@value #RECORD} numbers each: its footprint and its place in the leaf. So they read one
-     * record after the other, not all over memory (a million random spheres lie, in the order of
-     * their distances, nowhere near their order in the file). Writes each one's nearest distance
-     * by place into {@code nearestByPlace} on the way.
-     */
-    private int[] recordsIn(int[] order, Parts parts, float[] nearestByPlace) {
-        int[] records = new int[RECORD * order.length];
-        parts.run((start, end, part) -> {
-            for (int k = start; k < end; k++) {
-                int f = order[k];
-                int at = RECORD * k;
-                System.arraycopy(footprints, 4 * f, records, at, 4);
-                records[at + 4] = leafOf[f];
-                nearestByPlace[leafOf[f]] = nearest[f]; // each place once: the parts write apart
-            }
-        });
-        return records;
-    }
-
-    /**
-     * How many objects each cell of side {@code 1 << shift} gets, part by part of the seen
-     * objects, whose {@link #recordsIn} {@code records} holds in order, into {@code perPart}.
-     */
-    private void count(int[] records, Parts parts, int shift, int[][] perPart) {
+    /** How many objects each cell of side {@code 1 << shift} gets, part by part, into {@code perPart}. */
+    private void count(Parts parts, int shift, int[][] perPart) {
         int columns = ViewGrid.cellsAlong(width, shift);
         parts.run((start, end, part) -> {
-            int[] counts = perPart[part];
-            for (int at = RECORD * start; at < RECORD * end; at += RECORD) {
-                for (int y = records[at + 1] >> shift; y <= records[at + 3] >> shift; y++) {
-                    for (int x = records[at] >> shift; x <= records[at + 2] >> shift; x++) {
-                        counts[y * columns + x]++;
-                    }
-                }
+            for (int f = start; f < end; f++) {
+                countCells(f, shift, columns, perPart[part]);
             }
         });
+    }
+
+    /** Counts object {@code f} in the cells its footprint overlaps, if it is {@link #SEEN}. */
+    private void countCells(int f, int shift, int columns, int[] counts) {
+        if (state[f] != SEEN) {
+            return;
+        }
+        int at = 4 * f;
+        for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
+            for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
+                counts[y * columns + x]++;
+            }
+        }
     }
 
     /** All the counts together: the entries the cells would hold. */
@@ -218,15 +188,14 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Writes each seen object's leaf place into the cells its footprint overlaps, in parallel by
-     * parts of the seen objects nearest first (their {@link #recordsIn} {@code records}), from each
-     * part's counts per cell ({@link #count}, in {@code perPart}, which become each part's next
-     * place per cell): a cell's objects take places in the order of the parts, each part's from
-     * where the earlier parts' end, and {@code cellStart} becomes the running sum; then each part
-     * writes its objects' places into theirs. So a cell's objects come nearest first, however many
-     * parts there are.
+     * Writes each seen object's leaf place into the cells its footprint overlaps, part by part of
+     * the objects in parallel, from each part's counts per cell ({@link #measure}, in
+     * {@code perPart}, which become each part's next place per cell): a cell's objects take places in the order of the parts, each part's from
+     * where the earlier parts' end, and {@code cellStart} becomes the running sum; then each
+     * part writes its objects' places into theirs, and their nearest distance by place into
+     * {@code nearestByPlace}. So a cell's objects come in file order, however many parts there are.
      */
-    private int[] fill(int[] records, Parts parts, int[][] perPart, int shift, int columns, int[] cellStart) {
+    private int[] fill(Parts parts, int[][] perPart, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
         int cells = cellStart.length - 1;
         int total = 0;
         for (int c = 0; c < cells; c++) {
@@ -241,11 +210,15 @@ final class ViewGridBuilder {
         int[] places = new int[total];
         parts.run((start, end, part) -> {
             int[] cursor = perPart[part];
-            for (int at = RECORD * start; at < RECORD * end; at += RECORD) {
-                int place = records[at + 4];
-                for (int y = records[at + 1] >> shift; y <= records[at + 3] >> shift; y++) {
-                    for (int x = records[at] >> shift; x <= records[at + 2] >> shift; x++) {
-                        places[cursor[y * columns + x]++] = place;
+            for (int f = start; f < end; f++) {
+                if (state[f] == SEEN) {
+                    int at = 4 * f;
+                    int place = leafOf[f];
+                    nearestByPlace[place] = nearest[f];
+                    for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
+                        for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
+                            places[cursor[y * columns + x]++] = place;
+                        }
                     }
                 }
             }

@@ -308,38 +308,11 @@ class ViewGridTest {
     }
 
     @Test
-    void theObjectsAreOrderedByDistanceNegativeOnesTooThenByPlaceInTheFile() {
-        // −∞ first, then −7, −2, −0.5, then 0, then the two at 3 in file order; object 7 is unseen.
-        float[] nearest = {3, -2, Float.NEGATIVE_INFINITY, -0.5f, 3, 0, -7, 1};
-        boolean[] seen = {true, true, true, true, true, true, true, false};
-        assertThat(NearestFirst.order(nearest, seen)).containsExactly(2, 6, 1, 3, 5, 0, 4);
-        // the keys order as the floats do, across the sign and in both halves of the bits
-        float[] rising = {Float.NEGATIVE_INFINITY, -1e30f, -65536.5f, -1, -Float.MIN_VALUE, 0, Float.MIN_VALUE, 1e-30f,
-            1, 1.0000001f, 65536.5f, 1e30f, Float.POSITIVE_INFINITY};
-        for (int k = 1; k < rising.length; k++) {
-            assertThat(Integer.compareUnsigned(NearestFirst.key(rising[k - 1]), NearestFirst.key(rising[k])))
-                    .as("%s before %s", rising[k - 1], rising[k]).isNegative();
-        }
-    }
-
-    @Test
-    void manyObjectsAreOrderedAsASortOfTheirDistancesAndPlacesWould() {
-        Random random = new Random(17);
-        int count = 100_000;
-        float[] nearest = new float[count];
-        boolean[] seen = new boolean[count];
-        for (int f = 0; f < count; f++) {
-            nearest[f] = random.nextInt(10) == 0 ? random.nextInt(5) : (float) (random.nextGaussian() * 1e3);
-            seen[f] = random.nextInt(7) != 0;
-        }
-        java.util.List<Integer> expected = new java.util.ArrayList<>();
-        for (int f = 0; f < count; f++) {
-            if (seen[f]) {
-                expected.add(f);
-            }
-        }
-        expected.sort(java.util.Comparator.<Integer>comparingDouble(f -> nearest[f]).thenComparing(f -> f));
-        assertThat(NearestFirst.order(nearest, seen)).containsExactly(expected.stream().mapToInt(f -> f).toArray());
+    void aCrowdedCellIsSortedByDistanceNegativeOnesTooThenByPlace() {
+        float[] nearestByPlace = {3, -2, Float.NEGATIVE_INFINITY, -0.5f, 3, 0, -7};
+        int[] places = {9, 0, 1, 2, 3, 4, 5, 6, 9}; // the cell is places[1 .. 8)
+        NearestFirst.sortCrowded(places, 1, 8, nearestByPlace);
+        assertThat(places).containsExactly(9, 2, 6, 1, 3, 5, 0, 4, 9);
     }
 
     @Test
