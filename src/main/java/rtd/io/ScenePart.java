@@ -14,7 +14,7 @@ import rtd.scene.Light;
  * What one stretch of lines of a scene file holds: its objects, its {@code ambient}, camera and
  * {@code material} statements (a scene may have only one of each, or one per name, which only
  * the whole file can tell), the objects that wait for a material defined anywhere in the file,
- * and the mistakes found. {@link StatementReader} fills it; {@link SceneParser} joins the parts.
+ * and the mistakes found. {@link StatementReader} fills it; {@link PartJoin} joins the parts.
  */
 final class ScenePart {
 
