@@ -1,13 +1,6 @@
 package rtd.io;
 
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
-import rtd.camera.ICamera;
-import rtd.geometry.IGeometry;
-import rtd.geometry.Material;
-import rtd.image.Color;
-import rtd.scene.Light;
 
 /**
  * Reads the statements of a stretch of whole lines of a scene file into a {@link ScenePart}:
@@ -18,25 +11,20 @@ import rtd.scene.Light;
  * the next line. It works on bytes, not on a String, and makes no object per number. An object
  * that names a material waits in the part until the whole file is read (the material may be
  * defined further down); every other statement is built at once.
+ *
+ * <p>This class reads a line's keyword and what may follow its groups (comments, mistakes);
+ * the groups themselves are read by {@link GroupReader}, which it extends, and the position on
+ * the line is its {@link LineCursor}. What a statement makes goes to the part through a
+ * {@link PartOutput}.
  */
-final class StatementReader {
+final class StatementReader extends GroupReader {
 
-    private final SourceText source;
-    /** The source's bytes, until {@link #readAll} is done (see {@link SourceText#close}). */
-    private byte[] bytes;
-    private final int end;
     private final ScenePart part;
-    private final GroupValues values;
-    private final Statement.Output output = new PartOutput();
-    private int pos;
-    private int line;
-    private int lineStart;
+    private final Statement.Output output;
     /** Where the statement being read starts, for a later message about it. */
     private int statementStart;
     /** The statement being read, once its keyword is known; null before. */
     private Statement current;
-    /** Where the number that {@link #readNumber} read last starts. */
-    private int tokenStart;
     /**
      * Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once,
      * at its start: the lines up to its end are skipped.
@@ -48,14 +36,9 @@ final class StatementReader {
      * {@code firstLine}) and ends after a line break or at the end of the file.
      */
     StatementReader(SourceText source, int start, int end, int firstLine, ScenePart part) {
-        this.source = source;
-        this.bytes = source.bytes();
-        this.end = end;
+        super(source, start, end, firstLine);
         this.part = part;
-        this.pos = start;
-        this.lineStart = start;
-        this.line = firstLine;
-        this.values = new GroupValues(source);
+        this.output = new PartOutput(this, part, values);
     }
 
     /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}. */
@@ -246,315 +229,8 @@ final class StatementReader {
         return -1;
     }
 
-    /** Reads {@code :(…)} into {@link #values}. */
-    private void readGroup(Statement statement, Group group) throws StatementError {
-        skipBlanks();
-        if (!at(':')) {
-            throw groupError(pos, "expected ':' before %s, found " + source.describe(pos, lineStart), statement, group);
-        }
-        pos++;
-        skipBlanks();
-        if (!at('(')) {
-            throw groupError(pos, "expected '(' to start %s, found " + source.describe(pos, lineStart), statement, group);
-        }
-        int groupStart = pos++;
-        values.openGroup(groupStart);
-        skipBlanks();
-        if (at(')') && group.kind() != Group.Kind.PROPERTIES) {
-            throw groupError(groupStart, "empty group: %s needs " + contents(group), statement, group);
-        }
-        switch (group.kind()) {
-            case NUMBERS -> readNumbers(statement, group, groupStart);
-            case NAME -> readName(statement, group);
-            case PATH -> readPath(statement, group);
-            case PROPERTIES -> readProperties(statement, group);
-        }
-    }
-
-    /** The numbers of a group, after its '(' and any blanks, up to and with its ')'. */
-    private void readNumbers(Statement statement, Group group, int groupStart) throws StatementError {
-        int found = 0;
-        while (true) {
-            skipBlanks();
-            float value = readNumber();
-            if (found == group.size()) {
-                throw groupError(tokenStart, "too many numbers in %s: it takes " + contents(group), statement, group);
-            }
-            values.add(value, tokenStart, pos);
-            found++;
-            if (groupEndsAfterNumber(statement, group)) {
-                break;
-            }
-        }
-        if (found < group.size()) {
-            throw groupError(groupStart, "too few numbers in %s: it takes " + contents(group) + ", found " + found,
-                    statement, group);
-        }
-    }
-
-    /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
-    private void readName(Statement statement, Group group) throws StatementError {
-        int start = pos;
-        while (pos < bytes.length && (ByteClasses.isWordByte(bytes[pos]) || bytes[pos] == '-')) {
-            pos++;
-        }
-        if (pos == start) {
-            throw groupError(pos, "expected a name in %s, found " + source.describe(pos, lineStart), statement, group);
-        }
-        values.addName(start, pos);
-        int nameEnd = pos;
-        skipBlanks();
-        if (!at(')')) {
-            throw error(pos, "expected ')' after '" + source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
-                    + source.describe(pos, lineStart), "a name holds only letters, digits, '_' and '-'");
-        }
-        pos++;
-    }
-
-    /**
-     * A path: everything up to the group's ')' on this line, blanks around it trimmed. A ':' with
-     * a '(' after it ends it too: that is the next group, after a forgotten ')'.
-     */
-    private void readPath(Statement statement, Group group) throws StatementError {
-        int start = pos;
-        while (pos < bytes.length && bytes[pos] != ')' && !ByteClasses.isLineBreak(bytes[pos]) && !atNextGroup()) {
-            pos++;
-        }
-        if (!at(')')) {
-            throw groupError(pos, "expected ')' after the path in %s, found " + source.describe(pos, lineStart),
-                    statement, group);
-        }
-        int nameEnd = pos;
-        while (ByteClasses.isBlank(bytes[nameEnd - 1])) {
-            nameEnd--; // the group is not empty, so a byte that is no blank stands before
-        }
-        values.addName(start, nameEnd);
-        pos++;
-    }
-
-    /** {@code key=number} pairs separated by '|', up to and with the group's ')'; none is fine. */
-    private void readProperties(Statement statement, Group group) throws StatementError {
-        if (at(')')) {
-            pos++;
-            return;
-        }
-        while (true) {
-            skipBlanks();
-            int key = readKey(statement, group);
-            skipBlanks();
-            if (!at('=')) {
-                throw groupError(pos, "expected '=' after the key '" + group.keys().get(key) + "' in %s, found "
-                        + source.describe(pos, lineStart), statement, group);
-            }
-            pos++;
-            skipBlanks();
-            float value = readNumber();
-            values.addProperty(key, value, tokenStart, pos);
-            if (groupEndsAfterNumber(statement, group)) {
-                return;
-            }
-        }
-    }
-
-    /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
-    private boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
-        skipBlanks();
-        if (at('|') || at(')')) {
-            return bytes[pos++] == ')';
-        }
-        throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart),
-                statement, group);
-    }
-
-    /** A key of a properties group: its index among the group's keys; known and not given before. */
-    private int readKey(Statement statement, Group group) throws StatementError {
-        int start = pos;
-        while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
-            pos++;
-        }
-        if (pos == start) {
-            throw groupError(pos, "expected a key such as '" + group.keys().get(0) + "' in %s, found "
-                    + source.describe(pos, lineStart), statement, group);
-        }
-        String word = source.text(start, pos);
-        int key = group.keys().indexOf(word);
-        if (key < 0) {
-            String nearest = Suggestions.nearest(word, group.keys());
-            throw error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
-                    ? "did you mean '" + nearest + "'?"
-                    : "the keys are " + quotedList(group.keys()));
-        }
-        if (values.lastHasKey(key)) {
-            throw error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
-        }
-        return key;
-    }
-
-    /** "'a', 'b' and 'c'". */
-    private static String quotedList(List<String> words) {
-        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
-        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
-    }
-
-    /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
-    private StatementError groupError(int offset, String message, Statement statement, Group group) {
-        String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
-        return error(offset, text, "write it as " + statement.usage());
-    }
-
-    /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
-    private float readNumber() throws StatementError {
-        tokenStart = pos;
-        while (pos < bytes.length && !ByteClasses.isDelimiter(bytes[pos])) {
-            pos++;
-        }
-        if (pos == tokenStart) {
-            throw error(pos, "expected a number, found " + source.describe(pos, lineStart), null);
-        }
-        try {
-            return FloatParser.parse(bytes, tokenStart, pos);
-        } catch (NumberFormatException e) {
-            throw notANumber();
-        }
-    }
-
-    /**
-     * The error for the token just read, which is no number: at an invisible character that
-     * starts it or follows a number (which {@link #error} names), else at the token, with a hint.
-     */
-    private StatementError notANumber() {
-        int invisible = firstInvisible(tokenStart, pos);
-        if (invisible == tokenStart) {
-            return error(invisible, "expected a number, found " + source.describe(invisible, lineStart), null);
-        }
-        if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
-            return error(invisible, "expected '|' or ')' after a number, found " + source.describe(invisible, lineStart), null);
-        }
-        String token = source.text(tokenStart, pos);
-        return error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
-    }
-
-    private boolean isNumber(int from, int to) {
-        try {
-            FloatParser.parse(bytes, from, to);
-            return true;
-        } catch (NumberFormatException e) {
-            return false;
-        }
-    }
-
-    /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */
-    private int firstInvisible(int from, int to) {
-        for (int i = from; i < to; i++) {
-            if (bytes[i] < 0 && (bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(source.codePointAt(i))) {
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    /** What a group holds, for messages: "3 numbers (x|y|z)", "a name". */
-    private static String contents(Group group) {
-        return switch (group.kind()) {
-            case NUMBERS -> group.size() == 1 ? "1 number (" + group.shape() + ")"
-                    : group.size() + " numbers (" + group.shape() + ")";
-            case NAME -> "a name";
-            case PATH -> "a file path";
-            case PROPERTIES -> "key=value pairs";
-        };
-    }
-
-    // ---- bytes ---------------------------------------------------------------------------
-
     /** Where the statement being read stands, for a later message about it. */
-    private SceneError located() {
+    SceneError located() {
         return new SceneError(source.name(), line, source.column(lineStart, statementStart), "", source.lineText(lineStart), null);
-    }
-
-    /** Whether {@link #pos} is at ':', blanks and '(': the start of a group. */
-    private boolean atNextGroup() {
-        if (bytes[pos] != ':') {
-            return false;
-        }
-        int after = pos + 1;
-        while (after < bytes.length && ByteClasses.isSpace(bytes[after])) {
-            after++;
-        }
-        return after < bytes.length && bytes[after] == '(';
-    }
-
-    private boolean at(char c) {
-        return pos < bytes.length && bytes[pos] == c;
-    }
-
-    /** Skips spaces and tabs, not a carriage return: it ends a line ({@link #skipToNextLine}). */
-    private void skipBlanks() {
-        while (pos < bytes.length && ByteClasses.isSpace(bytes[pos])) {
-            pos++;
-        }
-    }
-
-    private boolean atEndOfStatement() {
-        return pos >= bytes.length || ByteClasses.isLineBreak(bytes[pos]) || atComment();
-    }
-
-    private boolean atComment() {
-        return pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
-    }
-
-    /** Goes past the next line break: LF, CR LF, or a CR alone, as old Mac files end lines. */
-    private void skipToNextLine() {
-        while (pos < end && !ByteClasses.isLineBreak(bytes[pos])) {
-            pos++;
-        }
-        if (pos < end) {
-            if (bytes[pos] == '\r' && pos + 1 < end && bytes[pos + 1] == '\n') {
-                pos++;
-            }
-            pos++;
-            line++;
-            lineStart = pos;
-        }
-    }
-
-    /** An error at {@code offset}; at an invisible character, the help says what it is and what to do. */
-    private StatementError error(int offset, String message, String help) {
-        int codePoint = offset < bytes.length && bytes[offset] < 0 ? source.codePointAt(offset) : -1;
-        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));
-    }
-
-    /** Hands what a statement makes to the part, with the statement's place where a later check needs it. */
-    private final class PartOutput implements Statement.Output {
-
-        @Override
-        public void ambient(Color colour) {
-            part.ambients.add(new ScenePart.Located<>(colour, located()));
-        }
-
-        @Override
-        public void camera(ICamera camera) {
-            part.cameras.add(new ScenePart.Located<>(camera, located()));
-        }
-
-        @Override
-        public void light(Light light) {
-            part.lights.add(light);
-        }
-
-        @Override
-        public void object(IGeometry object) {
-            part.objects.add(object);
-        }
-
-        @Override
-        public void objects(List<IGeometry> objects) {
-            part.objects.addAll(objects);
-        }
-
-        @Override
-        public void material(String name, Material material) {
-            part.materials.add(new ScenePart.Located<>(new ScenePart.Named(name, material), values.placeOfValue(0, 0)));
-        }
     }
 }
