@@ -1,7 +1,6 @@
 package rtd.io;
 
 import java.util.Arrays;
-import rtd.geometry.Material;
 import rtd.image.Color;
 import rtd.math.Vector3f;
 
@@ -13,100 +12,12 @@ import rtd.math.Vector3f;
  * groups here by their index; a broken rule becomes an error at the value that breaks it, worded
  * with the group's meaning ("the x of the centre must be a finite number").
  *
- * <p>A reader reuses one for every line, so a line of numbers makes no object per number. An
- * object that names a material is built only when the whole file is read, from a {@link #copy}.
+ * <p>What the reader found, and where, is kept by {@link WrittenValues}, which this extends.
  */
-final class GroupValues {
-
-    private final SourceText source;
-    private Statement statement;
-    private int line;
-    private int lineStart;
-
-    /** The numbers (or, for a name, nothing) of all groups, where each stands, and a property's key. */
-    private float[] values = new float[16];
-    private int[] starts = new int[16];
-    private int[] ends = new int[16];
-    private int[] keys = new int[16];
-    private int count;
-
-    /** Per group: the index of its first value, and the offset of its '('. */
-    private int[] firsts = new int[8];
-    private int[] opens = new int[8];
-    private int groupCount;
-
-    private Material material = Material.DEFAULT;
+final class GroupValues extends WrittenValues {
 
     GroupValues(SourceText source) {
-        this.source = source;
-    }
-
-    // ---- filled by the reader -----------------------------------------------------------
-
-    /** Starts a statement on the line that starts at byte {@code lineStart}. */
-    void begin(Statement statement, int line, int lineStart) {
-        this.statement = statement;
-        this.line = line;
-        this.lineStart = lineStart;
-        this.count = 0;
-        this.groupCount = 0;
-        this.material = Material.DEFAULT;
-    }
-
-    /** Starts the next group, whose '(' stands at {@code offset}. */
-    void openGroup(int offset) {
-        if (groupCount == firsts.length) {
-            firsts = Arrays.copyOf(firsts, 2 * groupCount);
-            opens = Arrays.copyOf(opens, 2 * groupCount);
-        }
-        firsts[groupCount] = count;
-        opens[groupCount] = offset;
-        groupCount++;
-    }
-
-    /** Keeps a number of the current group, written at {@code bytes[start, end)}. */
-    void add(float value, int start, int end) {
-        if (count == values.length) {
-            grow();
-        }
-        values[count] = value;
-        starts[count] = start;
-        ends[count] = end;
-        keys[count] = -1;
-        count++;
-    }
-
-    /** Keeps the name or path of the current group, written at {@code bytes[start, end)}. */
-    void addName(int start, int end) {
-        add(Float.NaN, start, end);
-    }
-
-    /** Keeps {@code key=value} of the current group: the key's index among the group's keys. */
-    void addProperty(int key, float value, int start, int end) {
-        add(value, start, end);
-        keys[count - 1] = key;
-    }
-
-    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
-    boolean hasValue(int g) {
-        return g < groupCount && (g + 1 < groupCount ? firsts[g + 1] : count) > firsts[g];
-    }
-
-    /** Whether the current group already holds the key with index {@code key}. */
-    boolean lastHasKey(int key) {
-        for (int i = firsts[groupCount - 1]; i < count; i++) {
-            if (keys[i] == key) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private void grow() {
-        values = Arrays.copyOf(values, 2 * count);
-        starts = Arrays.copyOf(starts, 2 * count);
-        ends = Arrays.copyOf(ends, 2 * count);
-        keys = Arrays.copyOf(keys, 2 * count);
+        super(source);
     }
 
     /** An independent copy, for an object that is built when the whole file is read. */
@@ -126,32 +37,7 @@ final class GroupValues {
         return copy;
     }
 
-    /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
-    void useMaterial(Material material) {
-        this.material = material;
-    }
-
     // ---- asked for by the builders ------------------------------------------------------
-
-    /** The statement these values belong to. */
-    Statement statement() {
-        return statement;
-    }
-
-    /** The number of the line the statement stands on. */
-    int line() {
-        return line;
-    }
-
-    /** The source the statement was read from. */
-    SourceText source() {
-        return source;
-    }
-
-    /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
-    Material material() {
-        return material;
-    }
 
     /** The one number of group {@code g}, which must be finite. */
     float finite(int g) throws StatementError {
@@ -215,12 +101,6 @@ final class GroupValues {
         return new Color(channel(i, "red"), channel(i + 1, "green"), channel(i + 2, "blue"));
     }
 
-    /** The name or path that group {@code g} holds, as written. */
-    String name(int g) {
-        int i = firsts[g];
-        return source.text(starts[i], ends[i]);
-    }
-
     /**
      * The value of {@code key} in the properties of group {@code g}, or {@code fallback} if the
      * group does not give it; a given value must be finite and at least {@code minimum}.
@@ -241,32 +121,6 @@ final class GroupValues {
             }
         }
         return fallback;
-    }
-
-    /** The number {@code k} of group {@code g} as written, for messages. */
-    String written(int g, int k) {
-        return written(firsts[g] + k);
-    }
-
-    /** An error at the '(' of group {@code g}. */
-    StatementError errorAtGroup(int g, String message, String help) {
-        return errorAt(opens[g], message, help);
-    }
-
-    /** An error at number {@code k} of group {@code g}, or at the name of a name group ({@code k = 0}). */
-    StatementError errorAtValue(int g, int k, String message, String help) {
-        return errorAt(starts[firsts[g] + k], message, help);
-    }
-
-    /** Where value {@code k} of group {@code g} stands, as an error with no message yet. */
-    SceneError placeOfValue(int g, int k) {
-        return errorAtValue(g, k, "", null).place();
-    }
-
-    /** An error at byte {@code offset} of the statement's line. */
-    StatementError errorAt(int offset, String message, String help) {
-        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), help));
     }
 
     // ---- the rules --------------------------------------------------------------------------
@@ -295,10 +149,6 @@ final class GroupValues {
 
     private String meaning(int g) {
         return g < statement.groups().size() ? statement.groups().get(g).meaning() : Statement.MATERIAL.meaning();
-    }
-
-    private String written(int i) {
-        return source.text(starts[i], ends[i]);
     }
 
     private String groupText(int g) {
