@@ -1,6 +1,6 @@
 package rtd.io;
 
-/** Which bytes of a scene file are blanks, letters of a keyword, end a number, or end a line. */
+/** Which bytes of a scene or OBJ file are blanks, letters of a keyword, end a number, or end a line. */
 final class ByteClasses {
 
     private ByteClasses() {
@@ -17,6 +17,14 @@ final class ByteClasses {
      */
     static boolean isSpace(byte b) {
         return b == ' ' || b == '\t' || b == '\f' || b == 0x0B;
+    }
+
+    /**
+     * Whether the bytes begin with UTF-8's byte order mark (EF BB BF), which some Windows editors
+     * write: the scene and OBJ readers start after it.
+     */
+    static boolean startsWithByteOrderMark(byte[] bytes) {
+        return bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF;
     }
 
     static boolean isLineBreak(byte b) {

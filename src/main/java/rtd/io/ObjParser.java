@@ -41,7 +41,7 @@ final class ObjParser {
     /** As {@link #parse(SourceText)}, cutting the file into parts of about {@code partSize} bytes. */
     static ObjMesh parse(SourceText source, int partSize) throws SceneException {
         byte[] bytes = source.bytes();
-        int[] cuts = cuts(bytes, hasByteOrderMark(bytes) ? 3 : 0, partSize);
+        int[] cuts = cuts(bytes, ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0, partSize);
         int parts = cuts.length - 1;
         ObjScan[] scans = inParallel(parts, k -> ObjScan.of(bytes, cuts[k], cuts[k + 1])).toArray(ObjScan[]::new);
         for (ObjScan scan : scans) {
@@ -144,9 +144,5 @@ final class ObjParser {
         }
         return new SceneError(source.name(), lineOfNul, source.column(startOfLine, nul),
                 "this is not a text file: found a NUL byte", null, "a mesh is a Wavefront OBJ file, which is text");
-    }
-
-    private static boolean hasByteOrderMark(byte[] bytes) {
-        return bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF;
     }
 }

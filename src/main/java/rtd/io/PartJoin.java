@@ -168,7 +168,7 @@ final class PartJoin {
     }
 
     private static SceneError atStart(SourceText source, String message, String help) {
-        int start = SceneParser.hasByteOrderMark(source.bytes()) ? 3 : 0;
+        int start = ByteClasses.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
         return new SceneError(source.name(), 1, 1, message, source.lineText(start), help);
     }
 }

@@ -43,7 +43,7 @@ final class SceneParser {
     /** As {@link #parse(SourceText)}, cutting the file into parts of about {@code partSize} bytes. */
     static Scene parse(SourceText source, int partSize) throws SceneException {
         byte[] bytes = source.bytes();
-        int start = hasByteOrderMark(bytes) ? 3 : 0;
+        int start = ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0;
         int[] cuts = FileCuts.cuts(bytes, start, partSize);
         TextScan[] scans = FileCuts.scan(bytes, cuts);
         for (TextScan scan : scans) {
@@ -86,11 +86,5 @@ final class SceneParser {
         ScenePart part = new ScenePart(Math.min(lines, (cuts[k + 1] - cuts[k]) / SHORTEST_OBJECT + 1));
         new StatementReader(source, cuts[k], cuts[k + 1], firstLines[k], part).readAll();
         return part;
-    }
-
-    // ---- the byte-order mark ------------------------------------------------------------------
-
-    static boolean hasByteOrderMark(byte[] bytes) {
-        return bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF;
     }
 }
