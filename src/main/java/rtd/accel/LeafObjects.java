@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.function.IntConsumer;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
+import rtd.geometry.RayTriangle;
 import rtd.geometry.Rounding;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
@@ -18,7 +19,7 @@ import rtd.math.Vector3f;
  * its box, and, for spheres and triangles, the numbers of its intersection test packed into one
  * array.
  *
- * <p>{@link #t} runs {@link Sphere#intersect} (equations 3.6 to 3.8) and {@link Triangle#hit}
+ * <p>{@link #t} runs {@link Sphere#intersect} (equations 3.6 to 3.8) and {@link RayTriangle#hit}
  * on these numbers, with the same float operations in the same order, so it finds the same
  * {@code t} to the last bit; it only skips following references. With a million objects this
  * matters: a reference to each object and its corners is a wait for memory per test, while the
@@ -243,7 +244,7 @@ final class LeafObjects {
             return sphere(offsets[i], ox, oy, oz, dx, dy, dz, dd);
         }
         if (test == PACKED_TRIANGLE) {
-            return Triangle.hit(numbers, offsets[i], ox, oy, oz, dx, dy, dz);
+            return RayTriangle.hit(numbers, offsets[i], ox, oy, oz, dx, dy, dz);
         }
         Intersection hit = scene.get(fileOrder[i]).intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
         return hit.t();

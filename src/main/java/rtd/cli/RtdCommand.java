@@ -1,14 +1,11 @@
 package rtd.cli;
 
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
-import java.util.stream.Collectors;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -17,14 +14,14 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 
 /**
  * The command line: {@code java -jar rtd.jar SCENE... [-o OUT] [--width N] [--height N] [--scale F]}.
  * It reads each scene, renders it and writes the picture ({@link SceneRun}), after checking the
- * whole command line: a mistake there (exit code 2) stops everything before any work, while a
- * scene that fails (exit code 1) does not keep the others from being rendered.
+ * whole command line, where each picture goes included ({@link JobPlanner}): a mistake there
+ * (exit code 2) stops everything before any work, while a scene that fails (exit code 1) does
+ * not keep the others from being rendered.
  */
 @Command(name = RtdCommand.NAME, mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         sortOptions = false, usageHelpAutoWidth = true,
@@ -141,7 +138,7 @@ public final class RtdCommand implements Callable<Integer> {
             if (taught != null) {
                 return taught;
             }
-            List<Job> jobs = jobs(scenes());
+            List<Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
             Settings settings = settings();
             CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
             int exitCode = 0;
@@ -223,89 +220,8 @@ public final class RtdCommand implements Callable<Integer> {
         return new Settings((int) scaledWidth, (int) scaledHeight, scale, threads, accel, paper, samples, stats, progress);
     }
 
-    /** A scene with where its picture goes, or why it cannot go there (a file error, reported in its turn). */
-    private record Job(SceneSource source, OutputTarget target, ImageFormat format, FileError refusal) {
-    }
-
-    /**
-     * Where each picture goes and in which format, all checked before any rendering, so that a
-     * mistake on the command line stops the run before any work, and a long render does not end
-     * in a failed write.
-     */
-    private List<Job> jobs(List<SceneSource> sources) {
-        List<Job> jobs = new ArrayList<>();
-        for (SceneSource source : sources) {
-            try {
-                OutputTarget target = outputTarget(source);
-                jobs.add(new Job(source, target, format(target), null));
-            } catch (FileError e) {
-                jobs.add(new Job(source, null, ImageFormat.PNG, e));
-            }
-        }
-        return jobs;
-    }
-
-    /** The format of {@code target}'s extension; an extension that no writer knows is a mistake on the command line. */
-    private ImageFormat format(OutputTarget target) {
-        return ImageFormat.forOutput(target.spelt()).orElseThrow(() -> misuse("the output '" + target.spelt()
-                + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; "
-                + "give it one of " + ImageFormat.writableExtensions().stream().map(e -> "." + e)
-                        .collect(Collectors.joining(", "))));
-    }
-
-    /**
-     * Where the picture goes: {@code -o}, or the scene's name with {@code .png}; checked before
-     * rendering, on the real files behind any symbolic link, so that nothing but a regular file
-     * is ever replaced.
-     */
-    private OutputTarget outputTarget(SceneSource source) throws FileError {
-        if (!source.stdin() && Files.isDirectory(source.path())) {
-            // before the default output, which a folder such as / has no name for
-            throw new FileError("cannot read the scene file '" + source.name() + "': it is a folder, not a file", null);
-        }
-        if (OutputTarget.DASH.equals(output)) {
-            if (streams.outIsTerminal()) {
-                throw misuse("-o - writes the picture to standard output, which is a terminal here; send it to a file "
-                        + "or a program instead, such as: " + NAME + " scene.txt -o - > out.png");
-            }
-            return OutputTarget.standardOutput();
-        }
-        Path spelt = output != null ? output : defaultOutput(source.path());
-        OutputTarget target;
-        try {
-            target = OutputTarget.of(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path());
-        } catch (OutputTarget.Refusal refusal) {
-            if (refusal.misuse()) {
-                throw misuse(refusal.getMessage());
-            }
-            throw new FileError(refusal.getMessage(), null);
-        }
-        if (target.folder().isPresent()) {
-            checkFolder(spelt, target.folder().get());
-        }
-        return target;
-    }
-
     private ParameterException misuse(String message) {
         return new ParameterException(spec.commandLine(), message);
-    }
-
-    private static void checkFolder(Path spelt, Path folder) throws FileError {
-        if (!Files.isDirectory(folder)) {
-            throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' "
-                    + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"), null);
-        }
-        if (!Files.isWritable(folder)) {
-            throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' is not writable", null);
-        }
-    }
-
-    /** {@code scenes/a.txt} gives {@code scenes/a.png}; a name without extension gets {@code .png}. */
-    static Path defaultOutput(Path scene) {
-        String name = scene.getFileName().toString();
-        int dot = name.lastIndexOf('.');
-        String base = dot > 0 ? name.substring(0, dot) : name;
-        return scene.resolveSibling(base + ".png");
     }
 
     private void printDebug(PrintWriter err, Exception e) {

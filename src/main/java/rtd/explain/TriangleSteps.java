@@ -1,12 +1,13 @@
 package rtd.explain;
 
+import rtd.geometry.RayTriangle;
 import rtd.geometry.Triangle;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
  * The intersection test of a triangle explained: where the ray meets the triangle's plane, then
- * on which side of each edge that point lies; the float operations of {@link Triangle#hit}.
+ * on which side of each edge that point lies; the float operations of {@link RayTriangle#hit}.
  */
 final class TriangleSteps {
 
@@ -33,17 +34,17 @@ final class TriangleSteps {
         Vector3f point = ray.pointAt(t);
         text.line("P = O + t·R = " + Numbers.of(point));
         Vector3f d = ray.direction();
-        float loose = Triangle.looseness(v, 0, point.x(), point.y(), point.z(), d.x(), d.y(), d.z(), t, facing);
+        float loose = RayTriangle.looseness(v, 0, point.x(), point.y(), point.z(), d.x(), d.y(), d.z(), t, facing);
         text.line("rounding allowed for P and t: " + Numbers.of(loose) + " (so that a ray through an edge two"
                 + " triangles share hits one of them)");
-        if (!Triangle.nearTheCorners(v, 0, point.x(), point.y(), point.z(), loose)) {
+        if (!RayTriangle.nearTheCorners(v, 0, point.x(), point.y(), point.z(), loose)) {
             text.line("P lies beyond the corners' box: no hit");
             return Float.NaN;
         }
         boolean inside = true;
         for (int edge = 0; edge < 3; edge++) {
-            float side = Triangle.side(v, 0, edge, point.x(), point.y(), point.z());
-            float allowance = Triangle.allowance(v, 0, edge, point.x(), point.y(), point.z(), loose);
+            float side = RayTriangle.side(v, 0, edge, point.x(), point.y(), point.z());
+            float allowance = RayTriangle.allowance(v, 0, edge, point.x(), point.y(), point.z(), loose);
             boolean in = side >= -allowance;
             inside &= in;
             text.line("side of edge " + EDGES[edge] + ": (P − p" + (edge + 1) + ")·(n × edge) = " + Numbers.of(side)

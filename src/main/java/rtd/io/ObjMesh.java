@@ -6,6 +6,7 @@ import java.util.stream.IntStream;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
+import rtd.geometry.TriangleNumbers;
 import rtd.image.Color;
 import rtd.math.Vector3f;
 
@@ -70,7 +71,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
     /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */
     private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
             Vector3f[] normalVectors) {
-        Triangle.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
+        TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
                 corner(corners[3 * t + 2], shift, scale), numbers, at);
         if (cornerNormals[3 * t] < 0) {
             return new Triangle(numbers, at, null, colour, material);

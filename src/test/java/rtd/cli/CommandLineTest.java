@@ -46,9 +46,9 @@ class CommandLineTest {
 
     @Test
     void theDefaultOutputNameReplacesOnlyTheLastExtension() {
-        assertThat(RtdCommand.defaultOutput(Path.of("a/b.c.txt"))).isEqualTo(Path.of("a/b.c.png"));
-        assertThat(RtdCommand.defaultOutput(Path.of("scene"))).isEqualTo(Path.of("scene.png"));
-        assertThat(RtdCommand.defaultOutput(Path.of(".hidden"))).isEqualTo(Path.of(".hidden.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of("a/b.c.txt"))).isEqualTo(Path.of("a/b.c.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of("scene"))).isEqualTo(Path.of("scene.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of(".hidden"))).isEqualTo(Path.of(".hidden.png"));
     }
 
     @Test

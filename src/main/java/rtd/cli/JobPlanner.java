@@ -1,0 +1,108 @@
+package rtd.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+import picocli.CommandLine;
+import picocli.CommandLine.ParameterException;
+import rtd.io.ImageFormat;
+
+/**
+ * Where each picture goes and in which format ({@link Job}), all checked before any rendering,
+ * so that a mistake on the command line stops the run before any work, and a long render does
+ * not end in a failed write. {@link RtdCommand} plans its scenes' jobs with it, from {@code -o}
+ * and the standard streams.
+ */
+final class JobPlanner {
+
+    /** The picture that {@code -o} names, or null for each scene's default. */
+    private final Path output;
+    private final StandardStreams streams;
+    /** The command line, for the misuses (exit code 2) a plan can find. */
+    private final CommandLine commandLine;
+
+    JobPlanner(Path output, StandardStreams streams, CommandLine commandLine) {
+        this.output = output;
+        this.streams = streams;
+        this.commandLine = commandLine;
+    }
+
+    /** Each scene's job, in order: a target and format, or the file error that refuses it. */
+    List<Job> jobs(List<SceneSource> sources) {
+        List<Job> jobs = new ArrayList<>();
+        for (SceneSource source : sources) {
+            try {
+                OutputTarget target = outputTarget(source);
+                jobs.add(new Job(source, target, format(target), null));
+            } catch (FileError e) {
+                jobs.add(new Job(source, null, ImageFormat.PNG, e));
+            }
+        }
+        return jobs;
+    }
+
+    /** The format of {@code target}'s extension; an extension that no writer knows is a mistake on the command line. */
+    private ImageFormat format(OutputTarget target) {
+        return ImageFormat.forOutput(target.spelt()).orElseThrow(() -> misuse("the output '" + target.spelt()
+                + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; "
+                + "give it one of " + ImageFormat.writableExtensions().stream().map(e -> "." + e)
+                        .collect(Collectors.joining(", "))));
+    }
+
+    /**
+     * Where the picture goes: {@code -o}, or the scene's name with {@code .png}; checked before
+     * rendering, on the real files behind any symbolic link, so that nothing but a regular file
+     * is ever replaced.
+     */
+    private OutputTarget outputTarget(SceneSource source) throws FileError {
+        if (!source.stdin() && Files.isDirectory(source.path())) {
+            // before the default output, which a folder such as / has no name for
+            throw new FileError("cannot read the scene file '" + source.name() + "': it is a folder, not a file", null);
+        }
+        if (OutputTarget.DASH.equals(output)) {
+            if (streams.outIsTerminal()) {
+                throw misuse("-o - writes the picture to standard output, which is a terminal here; send it to a file "
+                        + "or a program instead, such as: " + RtdCommand.NAME + " scene.txt -o - > out.png");
+            }
+            return OutputTarget.standardOutput();
+        }
+        Path spelt = output != null ? output : defaultOutput(source.path());
+        OutputTarget target;
+        try {
+            target = OutputTarget.of(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path());
+        } catch (OutputTarget.Refusal refusal) {
+            if (refusal.misuse()) {
+                throw misuse(refusal.getMessage());
+            }
+            throw new FileError(refusal.getMessage(), null);
+        }
+        if (target.folder().isPresent()) {
+            checkFolder(spelt, target.folder().get());
+        }
+        return target;
+    }
+
+    private ParameterException misuse(String message) {
+        return new ParameterException(commandLine, message);
+    }
+
+    private static void checkFolder(Path spelt, Path folder) throws FileError {
+        if (!Files.isDirectory(folder)) {
+            throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' "
+                    + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"), null);
+        }
+        if (!Files.isWritable(folder)) {
+            throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' is not writable", null);
+        }
+    }
+
+    /** {@code scenes/a.txt} gives {@code scenes/a.png}; a name without extension gets {@code .png}. */
+    static Path defaultOutput(Path scene) {
+        String name = scene.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String base = dot > 0 ? name.substring(0, dot) : name;
+        return scene.resolveSibling(base + ".png");
+    }
+}

@@ -1,0 +1,97 @@
+package rtd.geometry;
+
+import rtd.math.Vector3f;
+
+/**
+ * The {@value Triangle#NUMBERS} numbers a triangle's intersection test reads, worked out once
+ * from its corners: where each one stands in the array, and how {@link #putNumbers} computes
+ * them. {@link Triangle} keeps them (alone, or in its mesh's one array), {@link RayTriangle} tests
+ * a ray against them, and the BVH packs copies of them side by side ({@code LeafObjects}).
+ *
+ * <p>The corners and the per-edge vectors are kept as plain floats: a mesh can have millions.
+ */
+public final class TriangleNumbers {
+
+    // Where each of the test's numbers stands in its array (testNumbers, and the BVH's packed copy).
+    static final int CORNERS = 0;        // p1, p2, p3: x, y, z each
+    static final int NORMAL = 9;         // n = (p2 − p1) × (p3 − p1)
+    static final int INWARD = 12;        // n × edge, for the edges from p1, p2, p3
+    static final int INWARD_LENGTH = 21; // |n × edge|, for the three edges
+    static final int TOLERANCE = 24;     // the side tests' allowance per unit of distance from a corner
+    static final int NORMAL_SUM = 25;    // |nx| + |ny| + |nz|
+    static final int SIZE = 26;          // the edges' lengths, summed over the axes
+    static final float U = 0x1p-24f; // the unit roundoff of float
+
+    private TriangleNumbers() {
+    }
+
+    /**
+     * Writes the {@value Triangle#NUMBERS} numbers of the triangle with corners p1, p2, p3 into
+     * {@code into} from {@code at}: the corners, the normal n, the per-edge vectors and their
+     * lengths, the tolerance, and the sums (in the order of the constants above).
+     */
+    public static void putNumbers(Vector3f p1, Vector3f p2, Vector3f p3, float[] into, int at) {
+        Vector3f edge1 = p2.subtract(p1); // each difference once: a mesh makes a million triangles
+        Vector3f edge2 = p3.subtract(p2);
+        Vector3f edge3 = p1.subtract(p3);
+        Vector3f n = edge1.cross(p3.subtract(p1));
+        Vector3f in1 = n.cross(edge1);
+        Vector3f in2 = n.cross(edge2);
+        Vector3f in3 = n.cross(edge3);
+        float tolerance = tolerance(thinness(edge1, edge2, edge3, n));
+        float nSum = Math.abs(n.x()) + Math.abs(n.y()) + Math.abs(n.z());
+        float size = sum(edge1) + sum(edge2) + sum(edge3);
+        put(p1, into, at + CORNERS);
+        put(p2, into, at + CORNERS + 3);
+        put(p3, into, at + CORNERS + 6);
+        put(n, into, at + NORMAL);
+        put(in1, into, at + INWARD);
+        put(in2, into, at + INWARD + 3);
+        put(in3, into, at + INWARD + 6);
+        into[at + INWARD_LENGTH] = in1.magnitude();
+        into[at + INWARD_LENGTH + 1] = in2.magnitude();
+        into[at + INWARD_LENGTH + 2] = in3.magnitude();
+        into[at + TOLERANCE] = tolerance;
+        into[at + NORMAL_SUM] = nSum;
+        into[at + SIZE] = size;
+    }
+
+    private static void put(Vector3f p, float[] into, int at) {
+        into[at] = p.x();
+        into[at + 1] = p.y();
+        into[at + 2] = p.z();
+    }
+
+    private static float sum(Vector3f v) {
+        return Math.abs(v.x()) + Math.abs(v.y()) + Math.abs(v.z());
+    }
+
+    /**
+     * How much less certain the normal's direction is than its length suggests, and how thin
+     * the triangle is: one over the sine of its smallest angle, {@code |ei||ej| / |n|} at most;
+     * about 1 for a well-shaped triangle, large for a needle.
+     */
+    static double thinness(Vector3f p1, Vector3f p2, Vector3f p3) {
+        return thinness(p2.subtract(p1), p3.subtract(p2), p1.subtract(p3), p2.subtract(p1).cross(p3.subtract(p1)));
+    }
+
+    /** {@link #thinness(Vector3f, Vector3f, Vector3f)} from the edges p1 → p2 → p3 → p1 and the normal. */
+    private static double thinness(Vector3f edge1, Vector3f edge2, Vector3f edge3, Vector3f normal) {
+        double e1 = edge1.magnitude();
+        double e2 = edge2.magnitude();
+        double e3 = edge3.magnitude();
+        double n = normal.magnitude();
+        double longest = Math.max(e1 * e2, Math.max(e2 * e3, e3 * e1));
+        return n > 0 ? Math.max(1, longest / n) : 1; // never hit if n = 0
+    }
+
+    /**
+     * The side tests' allowance per unit of distance from the corner: the rounding of the
+     * normal's direction, {@code 16u · thinness}; none for a needle (thinness over 128), whose
+     * own rounding is too coarse to hold its edges together anyway, and which an allowance
+     * would lengthen.
+     */
+    private static float tolerance(double thinness) {
+        return thinness <= 128 ? 16 * U * (float) thinness : 0;
+    }
+}
