@@ -263,7 +263,7 @@ final class BeamTracer {
     /** Walks down the tree, nearer child first, skipping boxes entered beyond every ray's nearest hit. */
     private void walk() {
         int[] nodes = bvh.nodes;
-        float reach = NearestHit.reach(bvh, centre[0], centre[1], centre[2], half[0], half[1], half[2], shortest);
+        float reach = BoxGrowth.reach(bvh, centre[0], centre[1], centre[2], half[0], half[1], half[2], shortest);
         int stackSize = 0;
         int node = 0;
         nodesVisited++;
@@ -325,7 +325,7 @@ final class BeamTracer {
 
     /** The rounding margin of {@code node}'s objects for rays not beyond {@code reach}: the same for every ray of the beam. */
     private float growth(int node, float reach) {
-        return NearestHit.growth(bvh.boxes, node, reach * longest);
+        return BoxGrowth.growth(bvh.boxes, node, reach * longest);
     }
 
     /**
