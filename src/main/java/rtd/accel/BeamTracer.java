@@ -13,16 +13,9 @@ import rtd.render.WorkCount;
  * direction, the perspective camera's all start at the eye and differ in direction by a few
  * thousandths ({@link Beam}).
  *
- * <p>Rays from origins within C ± h, with directions within D ± s, form a beam: at any t, every
- * ray's point lies within the middle ray's point C + t·D grown by h + t·s. So a ray passes
- * through a box at some t only if the middle ray passes through the box grown by h + t·s, and
- * t·s may be taken at any t the rays cannot be in the box beyond: the exit of the middle ray from
- * the parent's grown box, which holds the child. One walk down the tree with the middle ray
- * and grown boxes visits every box that any ray of the square enters, and the middle ray's entry
- * into a grown box is a t before which no ray of the square enters that box. The boxes grow a
- * little more (a millionth of the numbers involved, a hundred-thousandth of t·s) than that, so
- * that rounding can never make the beam miss a box that one of its rays enters, and by the
- * rounding margin of the objects' tests, as for one ray ({@link NearestHit}).
+ * <p>Rays from origins within C ± h, with directions within D ± s, form a beam, whose middle
+ * ray's tests of grown boxes ({@link MiddleRay}) answer for every ray of the square: one walk
+ * down the tree visits every box that any ray of the square enters.
  *
  * <p>The walk is {@link BvhTracer}'s walk for one ray, with the beam's grown boxes in place
  * of the ray's boxes, and the farthest of the rays' nearest hits in place of the ray's own: it
@@ -40,9 +33,6 @@ import rtd.render.WorkCount;
  */
 final class BeamTracer {
 
-    private static final float ROUNDING = 1e-6f;
-    /** The share by which the rays' spread grows a box beyond {@code t·spread}, against rounding in the t it is taken at. */
-    private static final float FAN_ROUNDING = 1e-5f;
     private static final float MISS = NearestHit.MISS;
 
     private final Bvh bvh;
@@ -50,33 +40,8 @@ final class BeamTracer {
     private final float[] stackEntries;
     private final float[] stackExits;
     private final Beam beam = new Beam();
-    // The beam: the centre and half size of the box around the rays' origins, and 1 / direction.
-    private final float[] centre = new float[3];
-    private final float[] half = new float[3];
-    private final float[] inverse = new float[3];
-    /**
-     * Per axis, how much to grow every box for this beam, before the objects' rounding: the
-     * half size and the allowance for rounding, taken for the largest numbers of the tree (its
-     * root's box holds every box), so that a box's own numbers need not be looked at.
-     */
-    private final float[] pad = new float[3];
-    /** Per axis, whether the rays do not move along it (1 / direction is infinite). */
-    private final boolean[] still = new boolean[3];
-    /** Per axis, how far any ray's direction is from the middle ray's ({@link Beam#spread}), with a margin for rounding. */
-    private final float[] fan = new float[3];
-    /** The shortest and longest |D| of the rays: the first bounds how far (in t) they reach, the second how far they run. */
-    private float shortest;
-    private float longest;
-    /** Whether the rays are parallel (their spread is 0): the checks against a sphere's outline assume it. */
-    private boolean parallel;
-    /**
-     * The squared radius from which a sphere's box leaves room for squares outside its outline
-     * worth telling ({@link #objectEntry}): eight times the beam's half diagonal. Smaller
-     * spheres, such as a million random ones, are not worth the check.
-     */
-    private float cornerWorthy;
-    /** The exit of the grown box of the last {@link #grownEntry}. */
-    private float exit;
+    /** The beam's middle ray, which tests the boxes for all its rays. */
+    private final MiddleRay middle;
     /** The rays of the square and their nearest hits; reused from square to square. */
     private NearestHit[] hits = new NearestHit[0];
     /** Each ray's count of tests before this square, so that each ray's own tests can be told ({@code --view cost}). */
@@ -114,6 +79,7 @@ final class BeamTracer {
 
     BeamTracer(Bvh bvh) {
         this.bvh = bvh;
+        this.middle = new MiddleRay(bvh, beam);
         this.largestSphereSquared = bvh.leaves.largestSphereSquared();
         this.stackNodes = new int[bvh.maxDepth + 2];
         this.stackEntries = new float[bvh.maxDepth + 2];
@@ -125,7 +91,7 @@ final class BeamTracer {
      * nothing, if they are too unlike, or too far out for float to hold the beam's size.
      */
     boolean trace(RayBundle bundle, HitBuffer out) {
-        if (!aim(bundle)) {
+        if (!middle.aim(bundle)) {
             return false;
         }
         count = bundle.count();
@@ -142,8 +108,8 @@ final class BeamTracer {
         this.bundle = bundle;
         started = false;
         hitPointsRead = out.hitPointsRead();
-        coverable = !hitPointsRead && parallel
-                && largestSphereSquared > half[0] * half[0] + half[1] * half[1] + half[2] * half[2];
+        coverable = !hitPointsRead && middle.parallel && largestSphereSquared
+                > middle.half[0] * middle.half[0] + middle.half[1] * middle.half[1] + middle.half[2] * middle.half[2];
         covering = -1;
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.unbounded.length > 0) {
@@ -178,7 +144,7 @@ final class BeamTracer {
      * ({@link Beam#aimAt}).
      */
     boolean reachesNothing(RayBundle bundle) {
-        if (bvh.unbounded.length > 0 || !(bundle.camera() instanceof OrthographicCamera) || !aim(bundle)) {
+        if (bvh.unbounded.length > 0 || !(bundle.camera() instanceof OrthographicCamera) || !middle.aim(bundle)) {
             return false; // other bundles are parallel seldom, and telling would make all their rays
         }
         started = false;
@@ -224,53 +190,19 @@ final class BeamTracer {
         return new WorkCount(rays, BvhTracer.testsByKind(bvh, tests, unbounded), nodesVisited);
     }
 
-    /** Aims at the beam of the bundle's rays; false if they are too unlike for a beam ({@link Beam#aimAt}), or it is too large for float. */
-    private boolean aim(RayBundle bundle) {
-        if (!beam.aimAt(bundle)) {
-            return false;
-        }
-        float[] lowest = beam.lowest;
-        float[] highest = beam.highest;
-        for (int k = 0; k < 3; k++) {
-            centre[k] = (lowest[k] + highest[k]) / 2;
-            half[k] = (highest[k] - lowest[k]) / 2 + ROUNDING * (Math.abs(lowest[k]) + Math.abs(highest[k]));
-            if (!Float.isFinite(centre[k]) || !Float.isFinite(half[k])) {
-                return false;
-            }
-        }
-        inverse[0] = 1f / beam.dx;
-        inverse[1] = 1f / beam.dy;
-        inverse[2] = 1f / beam.dz;
-        float[] root = bvh.boxes; // node 0
-        for (int k = 0; k < 3; k++) {
-            float largest = bvh.hasTree() ? Math.max(Math.abs(root[k]), Math.abs(root[k + 3])) : 0;
-            pad[k] = half[k] + ROUNDING * (2 * largest + Math.abs(centre[k]));
-            still[k] = Float.isInfinite(inverse[k]);
-            if (!Float.isFinite(pad[k])) {
-                return false;
-            }
-        }
-        for (int k = 0; k < 3; k++) {
-            fan[k] = beam.spread[k] * (1 + FAN_ROUNDING);
-        }
-        shortest = beam.shortest;
-        longest = beam.longest;
-        parallel = fan[0] == 0 && fan[1] == 0 && fan[2] == 0;
-        cornerWorthy = 64 * (half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
-        return true;
-    }
 
     /** Walks down the tree, nearer child first, skipping boxes entered beyond every ray's nearest hit. */
     private void walk() {
         int[] nodes = bvh.nodes;
-        float reach = NearestHit.reach(bvh, centre[0], centre[1], centre[2], half[0], half[1], half[2], shortest);
+        float reach = BoxGrowth.reach(bvh, middle.centre[0], middle.centre[1], middle.centre[2],
+                middle.half[0], middle.half[1], middle.half[2], middle.shortest);
         int stackSize = 0;
         int node = 0;
         nodesVisited++;
-        if (!worthVisiting(grownEntry(bvh.boxes, Bvh.BOX * node, growth(node, reach), reach))) {
+        if (!worthVisiting(middle.grownEntry(bvh.boxes, Bvh.BOX * node, growth(node, reach), reach))) {
             return;
         }
-        float nodeExit = FastMath.min(exit, reach);
+        float nodeExit = FastMath.min(middle.exit, reach);
         while (true) {
             int first = nodes[2 * node];
             if (nodes[2 * node + 1] != Bvh.INNER) {
@@ -280,10 +212,10 @@ final class BeamTracer {
                 float grow = growth(node, nodeExit);
                 int near = first;
                 int far = first + 1;
-                float nearEntry = grownEntry(bvh.boxes, Bvh.BOX * near, grow, nodeExit);
-                float nearExit = FastMath.min(exit, nodeExit);
-                float farEntry = grownEntry(bvh.boxes, Bvh.BOX * far, grow, nodeExit);
-                float farExit = FastMath.min(exit, nodeExit);
+                float nearEntry = middle.grownEntry(bvh.boxes, Bvh.BOX * near, grow, nodeExit);
+                float nearExit = FastMath.min(middle.exit, nodeExit);
+                float farEntry = middle.grownEntry(bvh.boxes, Bvh.BOX * far, grow, nodeExit);
+                float farExit = FastMath.min(middle.exit, nodeExit);
                 if (farEntry < nearEntry) {
                     int swapNode = near;
                     near = far;
@@ -325,7 +257,7 @@ final class BeamTracer {
 
     /** The rounding margin of {@code node}'s objects for rays not beyond {@code reach}: the same for every ray of the beam. */
     private float growth(int node, float reach) {
-        return NearestHit.growth(bvh.boxes, node, reach * longest);
+        return BoxGrowth.growth(bvh.boxes, node, reach * middle.longest);
     }
 
     /**
@@ -373,14 +305,14 @@ final class BeamTracer {
         if (!(before >= 0)) {
             return false;
         }
-        double origins = Math.sqrt(square(Math.abs(centre[0]) + half[0]) + square(Math.abs(centre[1]) + half[1])
-                + square(Math.abs(centre[2]) + half[2]));
+        double origins = Math.sqrt(square(Math.abs(middle.centre[0]) + middle.half[0])
+                + square(Math.abs(middle.centre[1]) + middle.half[1]) + square(Math.abs(middle.centre[2]) + middle.half[2]));
         covering = only;
         coveringLeaf = leaf;
         coveringGrow = grow;
         coveringWithin = within;
         // a ray's skip distance for a hit there (NearestHit.skipFor), generously: boxes beyond cannot hold a nearer hit
-        farthestSkip = (float) (before * (1 + 1e-4) + 1e-4 * origins / shortest);
+        farthestSkip = (float) (before * (1 + 1e-4) + 1e-4 * origins / middle.shortest);
         return true;
     }
 
@@ -440,37 +372,10 @@ final class BeamTracer {
      * the corner of a sphere's box, outside its outline).
      */
     private float objectEntry(int i, float grow, float within) {
-        float entry = grownEntry(bvh.leaves.boxes, 6 * i, grow, within);
-        return entry < MISS && parallel
-                && bvh.leaves.missedByEvery(i, cornerWorthy, beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz)
+        float entry = middle.grownEntry(bvh.leaves.boxes, 6 * i, grow, within);
+        return entry < MISS && middle.parallel
+                && bvh.leaves.missedByEvery(i, middle.cornerWorthy, beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz)
                 ? MISS : entry;
     }
 
-    /**
-     * The slab test of the middle ray against the box at {@code boxes[at .. at+5]}, grown by the
-     * beam's {@link #pad}, by {@code grow}, and by how far the rays fan out up to {@code within}, a t
-     * beyond which none of them is in the box; {@link #exit} is left where it leaves.
-     */
-    private float grownEntry(float[] boxes, int at, float grow, float within) {
-        float enter = Float.NEGATIVE_INFINITY;
-        float leave = Float.POSITIVE_INFINITY;
-        for (int k = 0; k < 3; k++) {
-            float widen = pad[k] + grow + (fan[k] > 0 ? fan[k] * within : 0); // 0 · ∞ would be NaN
-            float low = boxes[at + k] - widen;
-            float high = boxes[at + 3 + k] + widen;
-            if (still[k]) { // the rays do not move along axis k
-                if (low > centre[k] || high < centre[k]) {
-                    exit = MISS;
-                    return MISS;
-                }
-                continue;
-            }
-            float t0 = (low - centre[k]) * inverse[k];
-            float t1 = (high - centre[k]) * inverse[k];
-            enter = FastMath.max(enter, FastMath.min(t0, t1));
-            leave = FastMath.min(leave, FastMath.max(t0, t1));
-        }
-        exit = leave;
-        return FastMath.max(enter, 0) <= leave ? enter : MISS; // as NearestHit#entry
-    }
 }

@@ -2,9 +2,7 @@ package rtd.accel;
 
 import java.util.ArrayDeque;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
 import java.util.function.IntConsumer;
@@ -14,10 +12,9 @@ import rtd.geometry.IGeometry;
 /**
  * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH).
  *
- * <p>At each node the objects' centres are sorted into {@value #BINS} bins along the axis where
- * they spread most; of the splits between bins, the one with the lowest expected cost wins,
- * where a child's cost is its box's surface area (how likely a ray passes through it) times
- * its object count. A node becomes a leaf when no split is cheaper than testing its objects.
+ * <p>Each node's objects are divided where the SAH expects rays to test the fewest objects, or
+ * the node becomes a leaf when no split is cheaper than testing its objects: how the cost is
+ * counted and the objects divided is the {@link SahSplitter}'s part; this class makes the nodes.
  *
  * <p>A node's objects are partitioned by copying them, in order, from one {@link ObjectArrays}
  * into the other; the children partition them back. Large subtrees are built in parallel, and
@@ -29,24 +26,15 @@ import rtd.geometry.IGeometry;
  */
 final class BvhBuilder {
 
-    private static final int BINS = SahBins.COUNT;
-    private static final int MAX_LEAF_SIZE = 16;
     /** Past this depth the builder halves by count, which bounds the depth for any input. */
     private static final int MAX_SAH_DEPTH = 48;
-    /**
-     * The cost of visiting a node, counted in intersection tests. Measured on the million-sphere
-     * benchmark: 4 (with leaves of up to 16) rendered in 1.8 s where 1 took 3.2 s.
-     */
-    private static final float TRAVERSAL_COST = 4f;
     /**
      * Subtrees with fewer objects are built on the thread that reached them, and scenes with
      * fewer objects on the calling thread alone ({@link Bvh#build}).
      */
     static final int PARALLEL_THRESHOLD = 20_000;
     /** Nodes with at least this many objects measure, bin and partition them in chunks ({@link ChunkedPasses}). */
-    private static final int CHUNKED_THRESHOLD = 8 * ChunkedPasses.CHUNK;
-    /** What {@link #cheapestBin} answers when a leaf is cheaper than any split. */
-    private static final int LEAF = Integer.MIN_VALUE;
+    static final int CHUNKED_THRESHOLD = 8 * ChunkedPasses.CHUNK;
 
     private final List<IGeometry> objects;
     /** The objects with a finite box, which the tree holds: places {@code [0, count)} of {@link #primary}. */
@@ -67,6 +55,8 @@ final class BvhBuilder {
     private final ForkJoinPool pool;
     /** The passes over nodes of at least {@link #CHUNKED_THRESHOLD} objects. */
     private final ChunkedPasses chunked;
+    /** How each node's objects divide, and the dividing. */
+    private final SahSplitter splitter;
     private int maxDepth;
     /** Whether {@link #measureObject} met an object without a finite box; set by any thread, seldom. */
     private volatile boolean anyUnbounded;
@@ -96,6 +86,7 @@ final class BvhBuilder {
         }
         this.tree = new NodeBlocks(count);
         this.chunked = new ChunkedPasses(pool);
+        this.splitter = new SahSplitter(objects, primary, spare, chunked);
     }
 
     /** Whether this builder works on a pool of threads. */
@@ -255,10 +246,11 @@ final class BvhBuilder {
         Extent known = extent != null ? extent
                 : end - start >= CHUNKED_THRESHOLD ? chunked.measure(data, start, end) : measure(data, start, end);
         tree.setBox(node, known.box());
-        if (widestAxis(known.centres()) < 0) {
-            end = withoutTwins(data, start, end);
+        if (SahSplitter.widestAxis(known.centres()) < 0) {
+            end = splitter.withoutTwins(data, start, end);
         }
-        Split split = depth < MAX_SAH_DEPTH ? splitBySah(known, data, start, end, bins) : splitByCount(data, start, end);
+        Split split = depth < MAX_SAH_DEPTH ? splitter.splitBySah(known, data, start, end, bins)
+                : SahSplitter.splitByCount(data, start, end);
         if (split == null) {
             return leaf(node, start, end, depth, data);
         }
@@ -315,12 +307,13 @@ final class BvhBuilder {
         ObjectArrays data = waiting.data();
         Extent known = waiting.extent() != null ? waiting.extent() : measure(data, start, end);
         tree.setBox(waiting.node(), known.box());
-        if (end - start > 1 && widestAxis(known.centres()) < 0) {
-            end = withoutTwins(data, start, end);
+        if (end - start > 1 && SahSplitter.widestAxis(known.centres()) < 0) {
+            end = splitter.withoutTwins(data, start, end);
         }
         int n = end - start;
         Split split = n <= 1 ? null
-                : waiting.depth() < MAX_SAH_DEPTH ? splitBySah(known, data, start, end, bins) : splitByCount(data, start, end);
+                : waiting.depth() < MAX_SAH_DEPTH ? splitter.splitBySah(known, data, start, end, bins)
+                : SahSplitter.splitByCount(data, start, end);
         if (split == null) {
             leaf(waiting.node(), start, end, waiting.depth(), data);
         } else {
@@ -357,138 +350,5 @@ final class BvhBuilder {
         }
         return extent;
     }
-
-    /**
-     * Finds the cheapest split by the SAH and partitions places {@code [start, end)} of
-     * {@code data} by it, into the other arrays. Returns {@code null} when a leaf is cheaper.
-     * Each child's extent is the union of its bins', exactly what a pass over its objects would
-     * measure. A node of {@value #CHUNKED_THRESHOLD} objects or more bins and partitions in
-     * chunks on all threads ({@link ChunkedPasses}), with the same result.
-     */
-    private Split splitBySah(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
-        int n = end - start;
-        float[] centreBox = extent.centres();
-        int axis = widestAxis(centreBox);
-        if (axis < 0) {
-            return n > MAX_LEAF_SIZE ? splitByCount(data, start, end) : null; // all centres coincide
-        }
-        if (alwaysLeaf(n, extent)) {
-            return null;
-        }
-        float lo = centreBox[axis];
-        float scale = BINS / (centreBox[axis + 3] - lo);
-        bins.clear();
-        SahBins[] chunks = null;
-        if (n >= CHUNKED_THRESHOLD) {
-            chunks = chunked.bin(data, start, end, axis, lo, scale, bins);
-        } else {
-            bins.add(data.boxes(), start, end, axis, lo, scale);
-        }
-        int bestBin = cheapestBin(bins, extent, n);
-        if (bestBin == LEAF) {
-            return null;
-        }
-        int middle = start + bins.count(bestBin + 1);
-        if (middle == start || middle == end) {
-            return splitByCount(data, start, end);
-        }
-        ObjectArrays to = data == primary ? spare : primary;
-        if (chunks != null) {
-            chunked.partition(data, start, end, axis, lo, scale, bestBin, chunks, to, middle);
-        } else {
-            data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
-        }
-        return new Split(middle, end, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
-    }
-
-    /**
-     * The last bin of the left side of the cheapest split of filled {@code bins} (−1 if none
-     * has two sides), or {@link #LEAF} if {@code n} objects cost less as a leaf.
-     */
-    private static int cheapestBin(SahBins bins, Extent extent, int n) {
-        float[] costs = bins.splitCosts();
-        float bestCost = Float.POSITIVE_INFINITY;
-        int bestBin = -1;
-        for (int split = 0; split < BINS - 1; split++) {
-            if (costs[split] < bestCost) {
-                bestCost = costs[split];
-                bestBin = split;
-            }
-        }
-        float leafCost = n;
-        float splitCost = TRAVERSAL_COST + bestCost / SahBins.area(extent.box(), 0);
-        return splitCost >= leafCost && n <= MAX_LEAF_SIZE ? LEAF : bestBin;
-    }
-
-    /**
-     * Whether a node of {@code n} objects is a leaf whatever its bins: with no more objects than
-     * a visit costs and a box of finite, nonzero area, a split costs at least
-     * {@link #TRAVERSAL_COST} ≥ n, so {@link #splitBySah} would choose the leaf. Half the nodes
-     * are this small, and need not be binned.
-     */
-    private static boolean alwaysLeaf(int n, Extent extent) {
-        float area = SahBins.area(extent.box(), 0);
-        return n <= TRAVERSAL_COST && area > 0 && area < Float.POSITIVE_INFINITY;
-    }
-
-    /**
-     * Moves the objects of places {@code [start, end)} of {@code data} that are the twin of one before them in
-     * the file ({@link IGeometry#sameTest}) to the back, and returns where they start: the tree
-     * leaves them out. A twin reports the same hit as the first of its kind for every ray, and
-     * on that tie the first in the file wins, so the twin never does. Only where all centres
-     * coincide, the one place where many twins can gather and defeat the tree (a hundred
-     * thousand copies of one sphere would all be tested by every ray that reaches them).
-     */
-    private int withoutTwins(ObjectArrays data, int start, int end) {
-        int[] order = data.order();
-        Arrays.sort(order, start, end); // file order, so that the first of each kind is kept
-        Map<Object, Boolean> seen = new HashMap<>();
-        int kept = start;
-        for (int i = start; i < end; i++) {
-            if (seen.putIfAbsent(objects.get(order[i]).sameTest(), Boolean.TRUE) == null) {
-                int object = order[i];
-                order[i] = order[kept];
-                order[kept++] = object;
-            }
-        }
-        for (int i = start; i < end; i++) { // each object's box back at its place
-            objects.get(order[i]).putBounds(data.boxes(), 6 * i);
-        }
-        if (data != primary) { // the twins stay in no leaf, but in the list of objects
-            data.copy(kept, end, primary);
-        }
-        return kept;
-    }
-
-    /** The axis along which the centres spread most, or −1 if they all coincide. */
-    private static int widestAxis(float[] centreBox) {
-        int axis = -1;
-        float widest = 0;
-        for (int k = 0; k < 3; k++) {
-            float spread = centreBox[k + 3] - centreBox[k];
-            if (spread > widest) {
-                widest = spread;
-                axis = k;
-            }
-        }
-        return axis;
-    }
-
-    /**
-     * Splits in half by count, keeping the present order: a fallback for objects that the SAH
-     * cannot separate (equal centres) and for very deep trees. The children measure their
-     * extents themselves.
-     */
-    private static Split splitByCount(ObjectArrays data, int start, int end) {
-        return end - start <= 1 ? null : new Split(start + (end - start) / 2, end, null, null, data);
-    }
-
-    /**
-     * Where a node's objects divide (place {@code middle} is the right child's first) and end
-     * (before any twins left out), the children's extents, if known, and the arrays that hold
-     * the children's objects.
-     */
-    private record Split(int middle, int end, Extent left, Extent right, ObjectArrays data) {
-    }
-
 }
+

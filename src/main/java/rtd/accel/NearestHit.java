@@ -20,7 +20,8 @@ import rtd.math.Vector3f;
  * <p>Boxes are grown as the ray runs: an object's test may report a hit outside its box by
  * a margin that grows with the distance the ray has run ({@link IGeometry#bounds}). A walk
  * knows a t beyond which the ray cannot be in a node (its {@link #reach}, then each parent's
- * exit), and grows the node's children by their margin there ({@link #growth}).
+ * exit), and grows the node's children by their margin there ({@link #growth}); how both are
+ * counted is {@link BoxGrowth}'s.
  *
  * <p>Kept as numbers, and reused from ray to ray, because a {@link Ray} kept in a field
  * would be allocated for every ray.
@@ -145,21 +146,7 @@ final class NearestHit {
      * the origin (summing over the axes), and {@code t·|R|} from it.
      */
     float reach() {
-        return reach(bvh, ox, oy, oz, 0, 0, 0, length);
-    }
-
-    /** {@link #reach} for origins within {@code (x, y, z) ± half} and direction length {@code length}. */
-    static float reach(Bvh bvh, float x, float y, float z, float halfX, float halfY, float halfZ, float length) {
-        float[] root = bvh.boxes; // node 0
-        double far = farthest(x, root[0], root[3]) + halfX + farthest(y, root[1], root[4]) + halfY
-                + farthest(z, root[2], root[5]) + halfZ;
-        double widest = IGeometry.ROUNDING_CONE + root[Bvh.ROUNDING]; // the root's rounding is the largest
-        float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
-        return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
-    }
-
-    private static double farthest(double origin, double min, double max) {
-        return Math.max(Math.abs(origin - min), Math.abs(origin - max));
+        return BoxGrowth.reach(bvh, ox, oy, oz, 0, 0, 0, length);
     }
 
     /**
@@ -167,15 +154,7 @@ final class NearestHit {
      * beyond {@code reach}: their {@link rtd.geometry.Rounding} at the distance the ray runs.
      */
     float growth(int node, float reach) {
-        return growth(bvh.boxes, node, reach * length);
-    }
-
-    /** {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)} of {@code node}, infinite if that is not a number. */
-    static float growth(float[] boxes, int node, float distance) {
-        int at = Bvh.BOX * node + Bvh.ROUNDING;
-        float grow = boxes[at] * distance
-                + Math.min(IGeometry.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
-        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
+        return BoxGrowth.growth(bvh.boxes, node, reach * length);
     }
 
     /**
