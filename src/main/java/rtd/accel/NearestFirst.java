@@ -21,7 +21,9 @@ final class NearestFirst {
      * a cell holds a dozen or so, and a crowded cell (objects that cover the whole image, say) by
      * their distances and places. A list that runs from far to near is turned round first: a
      * file that lists a mesh from the back to the front fills every cell that way, the worst
-     * order for an insertion sort.
+     * order for an insertion sort. Objects at the same distance may end in any order (file order,
+     * its reverse, or by place): a ray's depth test breaks such ties by file order itself
+     * ({@link NearestHit}), so the pictures do not depend on it.
      */
     static void sort(int[] cellStart, int[] places, float[] nearestByPlace, ForkJoinPool pool) {
         new Parts(cellStart.length - 1, pool).run((first, end) -> {
