@@ -17,7 +17,7 @@ import rtd.render.RayBundle;
  * into a grown box is a t before which no ray of the square enters that box. The boxes grow a
  * little more (a millionth of the numbers involved, a hundred-thousandth of t·s) than that, so
  * that rounding can never make the beam miss a box that one of its rays enters, and by the
- * rounding margin of the objects' tests, as for one ray ({@link NearestHit}).
+ * rounding margin of the objects' tests, as for one ray ({@link BoxGrowth}).
  */
 final class MiddleRay {
 
@@ -29,9 +29,11 @@ final class MiddleRay {
     private final Bvh bvh;
     /** The rays' bounds, which {@link #aim} finds first. */
     private final Beam beam;
-    // The beam: the centre and half size of the box around the rays' origins, and 1 / direction.
+    /** The centre of the box around the rays' origins (C), which {@link BeamTracer} reads too. */
     final float[] centre = new float[3];
+    /** The half size of the box around the rays' origins (h), which {@link BeamTracer} reads too. */
     final float[] half = new float[3];
+    /** 1 / D, per axis. */
     private final float[] inverse = new float[3];
     /**
      * Per axis, how much to grow every box for this beam, before the objects' rounding: the
@@ -54,7 +56,10 @@ final class MiddleRay {
      * spheres, such as a million random ones, are not worth the check.
      */
     float cornerWorthy;
-    /** The exit of the grown box of the last {@link #grownEntry}. */
+    /**
+     * The exit of the grown box of the last {@link #grownEntry}: a second answer of that call,
+     * which {@link BeamTracer}'s walk reads right after it as the t its children grow at.
+     */
     float exit;
 
     /** The middle ray of {@code beam}'s rays, for boxes of {@code bvh}. */

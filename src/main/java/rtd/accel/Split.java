@@ -8,8 +8,8 @@ package rtd.accel;
  *
  * @param middle the right child's first place
  * @param end the end of the node's places in the tree, before any twins left out
- * @param left the left child's extent, or {@code null} if it is to measure it
- * @param right the right child's extent, or {@code null} if it is to measure it
+ * @param left the left child's extent, or {@code null} if the builder is to measure it
+ * @param right the right child's extent, or {@code null} if the builder is to measure it
  * @param data the arrays that hold the children's objects
  */
 record Split(int middle, int end, Extent left, Extent right, ObjectArrays data) {

@@ -1,6 +1,9 @@
 package rtd.io;
 
-/** Which bytes of a scene or OBJ file are blanks, letters of a keyword, end a number, or end a line. */
+/**
+ * Which bytes of a scene or OBJ file are blanks, letters of a keyword, end a number, or end a line;
+ * and whether a file starts with UTF-8's byte order mark.
+ */
 final class ByteClasses {
 
     private ByteClasses() {

@@ -12,7 +12,9 @@ import rtd.math.Vector3f;
  * groups here by their index; a broken rule becomes an error at the value that breaks it, worded
  * with the group's meaning ("the x of the centre must be a finite number").
  *
- * <p>What the reader found, and where, is kept by {@link WrittenValues}, which this extends.
+ * <p>What the reader found, and where, is kept by {@link WrittenValues}, which this extends
+ * rather than holds: so the rules read the numbers as their own fields, and a reader fills one
+ * such object for every line of the file, without an object per number.
  */
 final class GroupValues extends WrittenValues {
 
