@@ -17,11 +17,12 @@ import rtd.math.Vector3f;
 import rtd.testing.ImageComparison;
 
 /**
- * Random scenes with oblique cameras render as SPEC.md's rules say: this test carries its own
- * small implementation of those rules, in double precision and without any of rtd's classes
- * in the loop, and compares with the edge tolerance of SPEC.md.
+ * Random scenes with oblique cameras render as the paper's rules say (docs/walkthrough.md, steps
+ * 1 to 3): this test carries its own small implementation of those rules, in double precision and
+ * without any of rtd's classes in the loop, and compares with the edge tolerance of
+ * {@link ImageComparison#EDGE_TOLERANT}.
  */
-@DisplayName("Random oblique scenes against an independent reading of SPEC.md")
+@DisplayName("Random oblique scenes against an independent reading of the paper's rules")
 class SpecReferenceTest {
 
     private static final int W = 200;
@@ -51,7 +52,7 @@ class SpecReferenceTest {
         assertThat(result.matches()).as(result.summary()).isTrue();
     }
 
-    /** SPEC.md, "Rendering", steps 1–3, in double precision. */
+    /** The paper's steps 1 to 3 (camera ray, intersection, depth test), in double precision. */
     private static BufferedImage reference(Scene scene, double[] pos, double[] dir, double zoom) {
         double[] u = cross(dir, new double[] {0, 1, 0});
         u = length(u) > 0 ? normalize(u) : new double[] {1, 0, 0};

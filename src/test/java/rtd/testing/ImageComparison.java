@@ -3,7 +3,8 @@ package rtd.testing;
 import java.awt.image.BufferedImage;
 
 /**
- * Compares two images pixel by pixel, either exactly or with the edge tolerance of SPEC.md:
+ * Compares two images pixel by pixel, either exactly or with the edge tolerance of the paper's
+ * picture (README, "Tests"):
  * a pixel of the expected image is an edge pixel when one of its 8 neighbours has another
  * colour; a differing pixel must be an edge pixel and take the colour of one of its
  * neighbours in the expected image; and at most 2 % of the edge pixels may differ.
