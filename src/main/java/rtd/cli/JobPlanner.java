@@ -43,12 +43,19 @@ final class JobPlanner {
         return jobs;
     }
 
-    /** The format of {@code target}'s extension; an extension that no writer knows is a mistake on the command line. */
     private ImageFormat format(OutputTarget target) {
-        return ImageFormat.forOutput(target.spelt()).orElseThrow(() -> misuse("the output '" + target.spelt()
-                + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; "
-                + "give it one of " + ImageFormat.writableExtensions().stream().map(e -> "." + e)
-                        .collect(Collectors.joining(", "))));
+        return format(target, commandLine);
+    }
+
+    /**
+     * The format of {@code target}'s extension (also for {@code --view}); an extension that no
+     * writer knows is a mistake on the command line.
+     */
+    static ImageFormat format(OutputTarget target, CommandLine commandLine) {
+        return ImageFormat.forOutput(target.spelt()).orElseThrow(() -> new ParameterException(commandLine,
+                "the output '" + target.spelt() + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("")
+                        + "', a format rtd cannot write; give it one of " + ImageFormat.writableExtensions().stream()
+                                .map(e -> "." + e).collect(Collectors.joining(", "))));
     }
 
     /**

@@ -73,13 +73,14 @@ public final class RtdCommand implements Callable<Integer> {
     private Scale scale;
 
     @Option(names = "--threads", paramLabel = "N", converter = ThreadCount.class,
-            description = "threads to render and build the BVH with (default: all cores, here "
+            description = "threads to render and build with (default: all cores, here "
                     + "${DEFAULT-VALUE}; a larger N uses at most 4 threads per core)")
     private int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
-                    + "grid: a grid on the image for the camera's rays (with bvh for shadows and mirrors); auto: grid "
+                    + "grid: a grid on the image for the camera's rays (with lights: a grid seen from each light for "
+                    + "its shadow rays, and bvh for mirror rays and the rest); auto: grid "
                     + "for 1,000 objects or more, else bvh (default: ${DEFAULT-VALUE})")
     private Accel accel;
 

@@ -9,6 +9,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import rtd.explain.PixelExplanation;
+import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.scene.Scene;
@@ -97,12 +98,13 @@ public final class TeachingOptions {
         if (target == null) {
             return 1;
         }
+        ImageFormat format = JobPlanner.format(target, commandLine); // before the render, as for a picture
         if (settings.samples() > 1) {
             err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
         }
         ViewRun.Result result = ViewRun.render(scene, view, settings);
         try {
-            ViewRun.write(result, target, settings.threads(), err);
+            ViewRun.write(result, target, format, err);
         } catch (IOException e) {
             err.println("rtd: cannot write '" + target.spelt() + "': " + FileProblems.reason(e));
             return 1;
@@ -123,7 +125,6 @@ public final class TeachingOptions {
         }
     }
 
-    /** The scene, or null after saying why it cannot be read; mistakes in it are thrown, for the command's report. */
     /**
      * The teaching options work on one scene file: several would need several explanations, views
      * or exports under one name, and standard input can be neither watched nor read twice.
@@ -139,6 +140,7 @@ public final class TeachingOptions {
         }
     }
 
+    /** The scene, or null after saying why it cannot be read; mistakes in it are thrown, for the command's report. */
     private static Scene readScene(RenderSettings settings, PrintWriter err) throws SceneException {
         Path path = settings.scene();
         try {

@@ -18,8 +18,8 @@ import rtd.view.ViewShader;
 
 /**
  * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture
- * would take (the paper's loop, the BVH or the view grid, all threads), and writes it as a PNG, its scale on
- * standard error.
+ * would take (the paper's loop, the BVH or the view grid, all threads), and writes it in the format
+ * of its name's extension (PNG by default), its scale on standard error.
  */
 final class ViewRun {
 
@@ -41,12 +41,12 @@ final class ViewRun {
         return new Result(ViewPicture.of(view, raw.image(), scene), raw);
     }
 
-    /** Writes the view to {@code target}; the scale goes to {@code err}. */
-    static void write(Result result, OutputTarget target, int threads, PrintWriter err) throws IOException {
+    /** Writes the view to {@code target} in {@code format}; the scale goes to {@code err}. */
+    static void write(Result result, OutputTarget target, ImageFormat format, PrintWriter err) throws IOException {
         if (target.kind() == OutputTarget.Kind.STREAM) {
-            SceneIO.writeImageInto(result.view().picture(), ImageFormat.PNG, target.file(), done -> { });
+            SceneIO.writeImageInto(result.view().picture(), format, target.file(), done -> { });
         } else {
-            SceneIO.writeImage(result.view().picture(), ImageFormat.PNG, target.file(), done -> { });
+            SceneIO.writeImage(result.view().picture(), format, target.file(), done -> { });
         }
         err.print("rtd: " + result.view().report().replace("\n", "\n     ").stripTrailing() + "\n");
     }

@@ -76,6 +76,22 @@ class TeachingOptionsTest {
     }
 
     @Test
+    void aViewIsWrittenInTheFormatOfItsOutputsExtensionAsAPictureIs() throws IOException {
+        Path jpeg = dir.resolve("depth.jpg");
+        Run run = Cli.run(EXAMPLE, "-o", jpeg.toString(), "--width", "48", "--height", "27", "--view", "depth");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        byte[] bytes = Files.readAllBytes(jpeg);
+        assertThat(new int[] {bytes[0] & 0xFF, bytes[1] & 0xFF}).containsExactly(0xFF, 0xD8); // a JPEG's start
+        assertThat(ImageIO.read(jpeg.toFile()).getWidth()).isEqualTo(48);
+
+        Path unknown = dir.resolve("depth.xyz");
+        Run refused = Cli.run(EXAMPLE, "-o", unknown.toString(), "--view", "depth");
+        assertThat(refused.exitCode()).isEqualTo(2);
+        assertThat(refused.err()).contains("'.xyz', a format rtd cannot write", ".png");
+        assertThat(unknown).doesNotExist();
+    }
+
+    @Test
     void anUnknownViewIsMisuse() {
         Run run = Cli.run(EXAMPLE, "--view", "heat");
         assertThat(run.exitCode()).isEqualTo(2);
