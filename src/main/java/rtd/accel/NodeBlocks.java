@@ -3,8 +3,9 @@ package rtd.accel;
 import java.util.Arrays;
 
 /**
- * The nodes of a tree that a {@link BvhBuilder} is building, in the layout of {@link Bvh}
- * (box at {@code 6i}, contents at {@code 2i}), kept in blocks that are made as the tree grows.
+ * The nodes of a tree that a {@link BvhBuilder} is building, in the builder's own layout (box at
+ * {@code 6i}, contents at {@code 2i}; {@link Compaction} copies them into {@link Bvh}'s, 8 floats a
+ * node), kept in blocks that are made as the tree grows.
  *
  * <p>How many nodes a tree has is known only once it is built: up to 2n − 1 for n objects, but
  * fewer than n / 2 where leaves hold four objects or more, as the SAH makes them for spheres and

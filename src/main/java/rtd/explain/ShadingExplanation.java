@@ -46,7 +46,7 @@ final class ShadingExplanation implements ShadingObserver {
 
     /** Writes the shading of {@code ray} in {@code scene} into {@code text}, ending with the pixel's colour. */
     static void explain(Text text, Scene scene, Ray ray) {
-        text.line("4. Result, shaded (Part II \"Light\": WhittedShader.shade; the paper stops at flat colours)").in();
+        text.line("4. Result, shaded (beyond the paper, which stops at flat colours: WhittedShader.shade)").in();
         text.line(scene.lights().size() + " light" + (scene.lights().size() == 1 ? "" : "s") + ", at most "
                 + WhittedShader.BOUNCES + " bounces; the camera's ray:");
         ShadingExplanation tree = new ShadingExplanation(text);

@@ -9,7 +9,7 @@ import rtd.math.Vector3f;
  *
  * <p>Each kind of object knows how to test itself against a ray, because that test differs
  * from shape to shape; the depth test that compares objects lives above, in {@code rtd.scene.Scene.nearestHit} (the
- * paper's loop) and {@code rtd.accel.NearestHit} (the hierarchy's).
+ * paper's loop) and {@code rtd.accel.NearestHit} (the hierarchy's and the view grid's).
  * A new shape implements this interface: its test, its normal, its box, its colour and finish.
  * The paper has spheres; Part II adds planes, triangles, boxes and (as triangles) meshes.
  */

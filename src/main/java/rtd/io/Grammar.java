@@ -23,13 +23,14 @@ import rtd.scene.Light;
 
 /**
  * The scene grammar: every statement of the scene file, each declared once, with its keyword,
- * its groups and how it builds its value (Part I of the spec: {@code ambient},
- * {@code orthographic_camera}, {@code sphere}; Part II: the perspective camera, planes,
- * triangles, boxes, OBJ meshes and materials).
+ * its groups and how it builds its value (the paper's, section 4.1: {@code ambient},
+ * {@code orthographic_camera}, {@code sphere}; Part II's, "The scene file": {@code perspective_camera},
+ * {@code plane}, {@code triangle}, {@code box}, {@code mesh}, {@code light}, {@code material}).
  *
  * <p>To add a statement, add one entry to {@link #STATEMENTS}: the reader, the messages (the
  * usage in "write it as …", the keyword list, "did you mean …?") and the parts of a large file
- * all follow from it. Its groups are read and checked for form by {@link StatementReader}; its
+ * all follow from it. Its groups are read and checked for form by {@link GroupReader} (which
+ * {@link StatementReader} extends); its
  * builder asks {@link GroupValues} for values by group index, which checks the rules for them.
  */
 final class Grammar {

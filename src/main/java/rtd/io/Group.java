@@ -4,8 +4,8 @@ import java.util.List;
 
 /**
  * One group {@code :(…)} of a statement in the scene grammar ({@link Grammar}): what it means
- * in messages ("the centre of 'sphere'") and what it holds. Part I of the spec has groups of
- * numbers only; Part II adds a group that holds one name (a material's or a file's) and the
+ * in messages ("the centre of 'sphere'") and what it holds. The paper's scene file has groups
+ * of numbers only; Part II adds a group that holds one name (a material's or a file's) and the
  * {@code key=value} pairs of a material.
  *
  * @param meaning what the group is, for messages: "centre", "view direction"

@@ -6,7 +6,7 @@ import rtd.math.Vector3f;
 
 /**
  * The values of the statement being read, group by group, where each was written, and the
- * rules they must follow (the scene file of Part I and its extension in Part II of the spec):
+ * rules they must follow (the paper's scene file, section 4.1, and Part II's, "The scene file"):
  * every number finite, a radius, zoom or scale above 0, a direction not zero, a colour channel a
  * whole number from 0 to 255, and so on. A statement's {@link Statement.Builder} asks for its
  * groups here by their index; a broken rule becomes an error at the value that breaks it, worded

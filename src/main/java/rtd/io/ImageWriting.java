@@ -19,7 +19,7 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 import rtd.image.Picture;
 
 /**
- * Encodes a {@link Picture} through {@code javax.imageio}, as the design card says, in the
+ * Encodes a {@link Picture} through {@code javax.imageio}, the JDK's own image writers, in the
  * {@link ImageFormat} of the output.
  *
  * <p>The picture's array is handed to {@code javax.imageio} as it is, without a copy, as an

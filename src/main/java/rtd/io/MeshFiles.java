@@ -11,7 +11,7 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Finds and reads the OBJ file that a {@code mesh} statement names (Part II of the spec): its
+ * Finds and reads the OBJ file that a {@code mesh} statement names (Part II, "Geometry"): its
  * path is relative to the scene file's folder. A file that cannot be read is an error at the
  * path in the scene; mistakes inside the file are located in the file, and each says which line
  * of the scene uses it.

@@ -13,7 +13,7 @@ import rtd.math.Vector3f;
 /**
  * The triangles of a Wavefront OBJ file as {@link ObjParser} read them: the vertices and normals,
  * and for each triangle, in face order, the index of each corner's vertex and normal. A
- * {@code mesh} statement (Part II of the spec) places them in the scene with
+ * {@code mesh} statement (Part II, "Geometry") places them in the scene with
  * {@link #triangles}. The arrays are the reader's own and are never changed; those of the
  * triangles may be longer than {@code 3 * count}.
  *

@@ -5,8 +5,8 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * Reads the part of the Wavefront OBJ format that a {@code mesh} statement uses (Part II of the
- * spec): {@code v x y z [w]} vertices, {@code vn x y z} normals and {@code f} faces whose corners
+ * Reads the part of the Wavefront OBJ format that a {@code mesh} statement uses (Part II,
+ * "Geometry"): {@code v x y z [w]} vertices, {@code vn x y z} normals and {@code f} faces whose corners
  * are written {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, with indices counted from 1
  * or, when negative, back from the last vertex or normal read so far. A face of more than three
  * corners becomes a fan of triangles around its first corner. {@code #} starts a comment; every

@@ -6,8 +6,8 @@ import java.util.stream.IntStream;
 import rtd.scene.Scene;
 
 /**
- * Reads the scene format of the paper (section 4.1, Listing A.1), as Part II of the spec extends
- * it, from a file's bytes.
+ * Reads the scene format of the paper (section 4.1, Listing A.1), as Part II ("The scene
+ * file") extends it, from a file's bytes.
  *
  * <p>One statement a line: {@code keyword:(group):(group)…}, the statements being those of the
  * {@link Grammar}. {@code //} starts a comment; blank lines, spaces and tabs around any token,

@@ -10,7 +10,7 @@ import rtd.scene.Light;
 
 /**
  * One statement of the scene grammar, declared once in {@link Grammar}: its keyword, its groups,
- * whether it takes a last, optional material group (Part II of the spec), and how it builds its
+ * whether it takes a last, optional material group (Part II, "Light"), and how it builds its
  * value from what was read. {@link StatementReader} reads any statement from this alone.
  *
  * @param keyword       the word the line starts with, such as {@code sphere}

@@ -4,8 +4,8 @@ import java.util.List;
 
 /**
  * Reads the statements of a stretch of whole lines of a scene file into a {@link ScenePart}:
- * the syntax {@code keyword:(group):(group)…} of the scene file (paper, section 4.1, and Part II
- * of the spec), for any statement of the {@link Grammar}.
+ * the syntax {@code keyword:(group):(group)…} of the scene file (paper, section 4.1, and Part II,
+ * "The scene file"), for any statement of the {@link Grammar}.
  *
  * <p>Each mistake becomes a {@link SceneError} with line and column, and reading goes on with
  * the next line. It works on bytes, not on a String, and makes no object per number. An object

@@ -11,7 +11,7 @@ import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
- * The hidden temporary files that a PNG is written to before it is moved into place, named
+ * The hidden temporary files that a picture is written to before it is moved into place, named
  * {@code .NAME.<16 hex digits>.tmp} beside the output, and removed whatever happens: after a
  * failed write by {@link SceneIO}, and on the way out of a JVM stopped by a signal (SIGINT,
  * SIGTERM, SIGHUP) by a shutdown hook. Only {@code kill -9}, which runs no Java code, can leave one.

@@ -53,7 +53,7 @@ public final class ParallelRenderer {
 
     /**
      * As {@link #render(ICamera, Supplier, Function, int, int, int, RenderProgress)}, with
-     * {@code samples × samples} rays per pixel (anti-aliasing, Part II): ray (i, j) passes through
+     * {@code samples × samples} rays per pixel (Part II, "Anti-aliasing"): ray (i, j) passes through
      * the point {@code (x + (i + ½)/samples, y + (j + ½)/samples)}, and the pixel is the mean of
      * their colours, each clamped to [0, 1] first. One sample is the ray through the corner.
      */

@@ -5,11 +5,13 @@ import rtd.math.Ray;
 
 /**
  * Answers "what does this ray hit?": the intersection and depth tests of Listing 3.1, lines
- * 3–6, for any ray, a camera's or not. It finds hits, not colours; a {@link Shader} decides the
- * colour.
+ * 3–5, for any ray, a camera's or not. It finds hits, not colours; a {@link Shader} decides the
+ * colour (line 6).
  *
  * <p>{@link LinearTracer} is the paper's loop over all objects; {@code rtd.accel.BvhTracer}
- * gets the same hits from a bounding volume hierarchy. A tracer counts its work and so is not
+ * gets the same hits from a bounding volume hierarchy, {@code rtd.accel.ViewGridTracer} for the
+ * camera's rays from a grid on the image, and {@code rtd.accel.LightGridTracer} for shadow rays
+ * from a grid seen from each light. A tracer counts its work and so is not
  * thread-safe: {@link ParallelRenderer} gives each thread its own.
  */
 public interface Tracer {

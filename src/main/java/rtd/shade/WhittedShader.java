@@ -24,6 +24,16 @@ import rtd.scene.Scene;
  * light ({@link Lighting}), then what a mirror shows ({@link #reflected}), then what shows
  * through ({@link #refracted}), mixed by Fresnel's law where a surface does both. Every ray,
  * secondary or not, asks the same question of the same {@link Tracer}: what does it hit?
+ *
+ * <p>The steps that the other classes of this package and {@link ShadingObserver} name by number:
+ * <ol>
+ * <li>a ray that hits nothing shows the background ({@link #shade});
+ * <li>what shading needs of the hit point: P, N, E and the points lifted off the surface ({@link Surface});
+ * <li>each light's ambient, diffuse and specular terms, after a shadow ray ({@link Lighting});
+ * <li>what a mirror shows ({@link #reflected});
+ * <li>what shows through, by Snell's law ({@link Snell});
+ * <li>reflection and refraction mixed by Schlick's approximation ({@link Fresnel}).
+ * </ol>
  */
 public final class WhittedShader implements Shader {
 

@@ -12,7 +12,7 @@ import rtd.render.Shader;
 /**
  * The "shader" of a debug view: for each camera ray a number, not a colour, in the picture's
  * int. The renderer moves ints without looking at them, so a view renders on every path the
- * picture does (all threads, the paper's loop or the BVH); {@link ViewPicture} turns the numbers
+ * picture does (all threads, the paper's loop, the BVH or the view grid); {@link ViewPicture} turns the numbers
  * into colours once the scale of the whole picture is known.
  *
  * <ul>
