@@ -316,7 +316,7 @@ class ViewGridTest {
     }
 
     @Test
-    void isTheSameForOneThreadAndForTwo() {
+    void isTheSameForOneThreadTwoAndThree() {
         Random random = new Random(3);
         List<IGeometry> objects = new ArrayList<>();
         for (int i = 0; i < 30_000; i++) { // above the count built in parallel
@@ -326,10 +326,15 @@ class ViewGridTest {
         Scene scene = new Scene(new Color(0, 0, 0),
                 new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50), objects);
         ViewGrid one = ViewGrid.build(scene, 1920, 1080, 1, 1);
-        ViewGrid two = ViewGrid.build(scene, 1920, 1080, 1, 2);
-        assertThat(two.shift).isEqualTo(one.shift);
-        assertThat(two.cellStart).isEqualTo(one.cellStart);
-        assertThat(two.places).isEqualTo(one.places);
+        for (int threads : new int[] {2, 3}) {
+            ViewGrid more = ViewGrid.build(scene, 1920, 1080, 1, threads);
+            assertThat(more.shift).isEqualTo(one.shift);
+            assertThat(more.cellStart).isEqualTo(one.cellStart);
+            assertThat(more.places).isEqualTo(one.places);
+            assertThat(more.nearest).isEqualTo(one.nearest);
+            assertThat(more.objects.leaves.fileOrder).isEqualTo(one.objects.leaves.fileOrder);
+            assertThat(more.objects.leaves.numbers).isEqualTo(one.objects.leaves.numbers);
+        }
         assertThat(one.entries()).isGreaterThan(objects.size());
     }
 
