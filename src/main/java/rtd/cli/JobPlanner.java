@@ -1,9 +1,14 @@
 package rtd.cli;
 
+import java.io.IOException;
+import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.stream.Collectors;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
@@ -32,15 +37,33 @@ final class JobPlanner {
     /** Each scene's job, in order: a target and format, or the file error that refuses it. */
     List<Job> jobs(List<SceneSource> sources) {
         List<Job> jobs = new ArrayList<>();
+        Map<Path, SceneSource> writers = new HashMap<>();
         for (SceneSource source : sources) {
             try {
                 OutputTarget target = outputTarget(source);
+                checkNotWrittenTwice(source, target, writers);
                 jobs.add(new Job(source, target, format(target), null));
             } catch (FileError e) {
                 jobs.add(new Job(source, null, ImageFormat.PNG, e));
             }
         }
         return jobs;
+    }
+
+    /**
+     * Two scenes of one run whose pictures would go to one file ({@code ball.txt} and an editor's
+     * {@code ball.txt~} both give {@code ball.png}): the second would silently replace the first's.
+     */
+    private void checkNotWrittenTwice(SceneSource source, OutputTarget target, Map<Path, SceneSource> writers) {
+        if (target.kind() != OutputTarget.Kind.REPLACE) {
+            return; // a device or standard output takes what it is given
+        }
+        SceneSource earlier = writers.putIfAbsent(target.file().toAbsolutePath().normalize(), source);
+        if (earlier != null) {
+            throw misuse("the scenes '" + earlier.name() + "' and '" + source.name() + "' would both write their picture to '"
+                    + target.spelt() + "', the second replacing the first; render them in separate runs with -o, or "
+                    + "rename one");
+        }
     }
 
     private ImageFormat format(OutputTarget target) {
@@ -75,6 +98,11 @@ final class JobPlanner {
             }
             return OutputTarget.standardOutput();
         }
+        if (output == null && !source.stdin() && isPngPicture(source.path())) {
+            // else its picture would be named as itself, and refused as the scene file
+            throw new FileError("cannot read the scene file '" + source.name() + "': it is a PNG picture, not a scene; "
+                    + "give rtd the scene's text file, such as examples/input_rtd.txt", null);
+        }
         Path spelt = output != null ? output : defaultOutput(source.path());
         OutputTarget target;
         try {
@@ -95,13 +123,24 @@ final class JobPlanner {
         return new ParameterException(commandLine, message);
     }
 
-    private static void checkFolder(Path spelt, Path folder) throws FileError {
+    /** That {@code folder}, where the file {@code spelt} goes, exists and may be written to (also for {@code --export-pov}). */
+    static void checkFolder(Path spelt, Path folder) throws FileError {
         if (!Files.isDirectory(folder)) {
             throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' "
                     + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"), null);
         }
         if (!Files.isWritable(folder)) {
             throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' is not writable", null);
+        }
+    }
+
+    /** Whether {@code file} starts as a PNG file does; false if it cannot be read (reading it will say why). */
+    private static boolean isPngPicture(Path file) {
+        byte[] signature = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+        try (InputStream in = Files.newInputStream(file)) {
+            return Arrays.equals(in.readNBytes(signature.length), signature);
+        } catch (IOException | RuntimeException e) {
+            return false;
         }
     }
 

@@ -65,6 +65,11 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
      * line turns into a message. The scene file is {@code scene}.
      */
     static OutputTarget of(Path output, Path scene) throws Refusal {
+        return of(output, scene, "-o");
+    }
+
+    /** As {@link #of(Path, Path)}, for the file that {@code option} names ({@code -o}, {@code --export-pov}). */
+    static OutputTarget of(Path output, Path scene, String option) throws Refusal {
         if (Files.isDirectory(output)) {
             throw Refusal.misuse("the output '" + output + "' is a folder; give a file name such as " + output.resolve("out.png"));
         }
@@ -76,7 +81,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             return new OutputTarget(output, output, Kind.REPLACE);
         }
         if (isSameFile(output, scene)) {
-            throw Refusal.misuse("the output '" + output + "' is the scene file itself; choose another with -o");
+            throw Refusal.misuse("the output '" + output + "' is the scene file itself; choose another with " + option);
         }
         return switch (FileType.of(output)) {
             case REGULAR -> new OutputTarget(output, realPath(output), Kind.REPLACE);

@@ -52,7 +52,7 @@ public final class RtdCommand implements Callable<Integer> {
             description = "the scene files to render; '-' is standard input")
     private List<Path> scenePaths;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT", converter = FileName.class,
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT", converter = OutputFileName.class,
             description = "where to write the picture, with one SCENE: its extension chooses the format (.png, .jpg, "
                     + ".bmp, ...; PNG if it has none); '-' is standard output, as PNG "
                     + "(default: SCENE with .png in place of its extension)")
@@ -88,8 +88,8 @@ public final class RtdCommand implements Callable<Integer> {
             + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
     private boolean paper;
 
-    @Option(names = "--samples", paramLabel = "N", defaultValue = "1", converter = PositiveInt.class,
-            description = "anti-aliasing: N x N rays per pixel, their colours averaged (default: ${DEFAULT-VALUE}, "
+    @Option(names = "--samples", paramLabel = "N", defaultValue = "1", converter = SampleCount.class,
+            description = "anti-aliasing: N x N rays per pixel, N from 1 to 16, their colours averaged (default: ${DEFAULT-VALUE}, "
                     + "one ray through the pixel's corner, as the paper)")
     private int samples;
 
@@ -141,6 +141,16 @@ public final class RtdCommand implements Callable<Integer> {
             }
             List<Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
             Settings settings = settings();
+            if (paper && (given("--accel") || given("--threads"))) {
+                err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
+                        + "not used");
+            }
+            if (jobs.get(0).refusal() == null) { // an export goes with a picture that can be written
+                Integer failed = exportPov(err);
+                if (failed != null) {
+                    return failed;
+                }
+            }
             CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
             int exitCode = 0;
             for (Job job : jobs) {
@@ -156,6 +166,17 @@ public final class RtdCommand implements Callable<Integer> {
     private Integer teach(PrintWriter err) {
         try {
             return teaching.run(err);
+        } catch (SceneException e) {
+            err.print(e.report());
+            printDebug(err, e);
+            return 1;
+        }
+    }
+
+    /** {@code --export-pov} beside the picture (see {@link TeachingOptions#exportBeforeRender}): null, or the exit code of its failure. */
+    private Integer exportPov(PrintWriter err) {
+        try {
+            return teaching.exportBeforeRender(err);
         } catch (SceneException e) {
             err.print(e.report());
             printDebug(err, e);
@@ -219,6 +240,11 @@ public final class RtdCommand implements Callable<Integer> {
         }
         boolean progress = !noProgress && Terminal.stderrIsTerminal();
         return new Settings((int) scaledWidth, (int) scaledHeight, scale, threads, accel, paper, samples, stats, progress);
+    }
+
+    /** Whether the command line gave {@code option} (not its default). */
+    private boolean given(String option) {
+        return spec.commandLine().getParseResult().hasMatchedOption(option);
     }
 
     private ParameterException misuse(String message) {

@@ -82,7 +82,8 @@ final class SceneRun {
             write(result.image(), target, format, fraction -> written.set(Double.doubleToLongBits(fraction)));
             timer.endPhase("write");
             report = settings.stats()
-                    ? StatsReport.format(timer, scene, accelerator, result.work(), settings.threads(), target.spelt()) : "";
+                    ? StatsReport.format(timer, scene, accelerator, result.work(),
+                            settings.paper() ? 1 : settings.threads(), target.spelt()) : "";
         }
         err.print(report); // once the progress line is gone
     }

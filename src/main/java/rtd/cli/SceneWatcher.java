@@ -82,6 +82,9 @@ final class SceneWatcher {
         return this;
     }
 
+    /** Whether some render of this watch has written its picture. */
+    private boolean anyGood;
+
     /** Ends {@link #run} at its next look at the files. */
     void stop() {
         stopped = true;
@@ -135,9 +138,11 @@ final class SceneWatcher {
     private int renderOnce() {
         int code = render.getAsInt();
         if (code != 0) {
-            err.println("rtd: the last good picture stays; fix the scene and save it again");
+            err.println(anyGood ? "rtd: the last good picture stays; fix the scene and save it again"
+                    : "rtd: no picture yet; fix the scene and save it again");
             err.flush();
         }
+        anyGood |= code == 0;
         rendered.accept(code);
         return code;
     }

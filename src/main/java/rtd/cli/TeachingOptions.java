@@ -37,7 +37,7 @@ public final class TeachingOptions {
             + "normal (the normal as colour), id (a colour per object); default output SCENE-KIND.png")
     private View view;
 
-    @Option(names = "--export-pov", paramLabel = "FILE.pov", converter = FileName.class, description = "also write the "
+    @Option(names = "--export-pov", paramLabel = "FILE.pov", converter = OutputFileName.class, description = "also write the "
             + "scene as a POV-Ray 3.7 scene that draws the same picture; its first lines give the povray command")
     private Path exportPov;
 
@@ -46,8 +46,9 @@ public final class TeachingOptions {
     private boolean watch;
 
     /**
-     * Runs what the teaching options ask for, or returns {@code null} if rtd is to render as
-     * usual (after an export, if one was asked for).
+     * Runs what the teaching options ask for instead of the picture ({@code --explain},
+     * {@code --view}, {@code --watch}), with the export first if one was asked for too; or returns
+     * {@code null} if rtd is to render as usual ({@link #exportBeforeRender} then writes any export).
      */
     Integer run(PrintWriter err) throws SceneException {
         RenderSettings settings = RenderSettings.of(command);
@@ -58,24 +59,57 @@ public final class TeachingOptions {
         if (watch) {
             return SceneWatcher.forCommandLine(commandLine, settings.scene(), err).run();
         }
+        if (explain != null && view != null) {
+            throw new ParameterException(commandLine, "--explain and --view each take the place of the picture; give one "
+                    + "of them");
+        }
         PixelArgument pixel = explain == null ? null : PixelArgument.parse(explain, settings.width(), settings.height(), commandLine);
-        if (pixel == null && view == null && exportPov == null) {
+        if (pixel == null && view == null) {
             return null;
         }
-        Scene scene = readScene(settings, err);
-        if (scene == null) {
-            return 1;
-        }
-        if (exportPov != null && !PovExportRun.write(scene, exportPov, settings, err)) {
-            return 1;
-        }
-        if (pixel != null) {
-            return explain(scene, pixel, settings, commandLine.getOut());
+        if (pixel != null && settings.output() != null) {
+            err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
         }
         if (view != null) {
-            return view(scene, settings, commandLine, err);
+            ImageSize.check(commandLine, settings.width(), settings.height());
         }
-        return null;
+        try {
+            // every file is planned before the scene is read, and before anything is written
+            OutputTarget viewTarget = pixel == null ? viewTarget(settings, commandLine) : null;
+            ImageFormat viewFormat = viewTarget == null ? null : JobPlanner.format(viewTarget, commandLine);
+            OutputTarget povTarget = exportPov == null ? null : PovExportRun.plan(exportPov, settings.scene(), commandLine);
+            Scene scene = readScene(settings, err);
+            if (scene == null) {
+                return 1;
+            }
+            if (povTarget != null && !PovExportRun.write(scene, povTarget, settings, err)) {
+                return 1;
+            }
+            return pixel != null ? explain(scene, pixel, settings, commandLine.getOut())
+                    : view(scene, viewTarget, viewFormat, settings, commandLine, err);
+        } catch (FileError e) {
+            err.println("rtd: " + e.getMessage());
+            return 1;
+        }
+    }
+
+    /**
+     * {@code --export-pov} beside the picture: writes the export, once the picture's own file has
+     * been planned; null when done (or not asked for), else the exit code of its failure.
+     */
+    Integer exportBeforeRender(PrintWriter err) throws SceneException {
+        if (exportPov == null) {
+            return null;
+        }
+        RenderSettings settings = RenderSettings.of(command);
+        try {
+            OutputTarget target = PovExportRun.plan(exportPov, settings.scene(), command.commandLine());
+            Scene scene = readScene(settings, err);
+            return scene != null && PovExportRun.write(scene, target, settings, err) ? null : 1;
+        } catch (FileError e) {
+            err.println("rtd: " + e.getMessage());
+            return 1;
+        }
     }
 
     private static int explain(Scene scene, PixelArgument pixel, RenderSettings settings, PrintWriter out) {
@@ -92,13 +126,8 @@ public final class TeachingOptions {
         return 0;
     }
 
-    private int view(Scene scene, RenderSettings settings, CommandLine commandLine, PrintWriter err) {
-        ImageSize.check(commandLine, settings.width(), settings.height());
-        OutputTarget target = outputTarget(settings, commandLine, err);
-        if (target == null) {
-            return 1;
-        }
-        ImageFormat format = JobPlanner.format(target, commandLine); // before the render, as for a picture
+    private int view(Scene scene, OutputTarget target, ImageFormat format, RenderSettings settings,
+            CommandLine commandLine, PrintWriter err) {
         if (settings.samples() > 1) {
             err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
         }
@@ -112,17 +141,22 @@ public final class TeachingOptions {
         return 0;
     }
 
-    private OutputTarget outputTarget(RenderSettings settings, CommandLine commandLine, PrintWriter err) {
+    /** Where the view goes: {@code -o}, or beside the scene under the view's name; checked as a picture's is. */
+    private OutputTarget viewTarget(RenderSettings settings, CommandLine commandLine) throws FileError {
         Path spelt = settings.output() != null ? settings.output() : ViewRun.defaultOutput(settings.scene(), view);
+        OutputTarget target;
         try {
-            return OutputTarget.of(spelt, settings.scene());
+            target = OutputTarget.of(spelt, settings.scene());
         } catch (OutputTarget.Refusal refusal) {
             if (refusal.misuse()) {
                 throw new ParameterException(commandLine, refusal.getMessage());
             }
-            err.println("rtd: " + refusal.getMessage());
-            return null;
+            throw new FileError(refusal.getMessage(), null);
         }
+        if (target.folder().isPresent()) {
+            JobPlanner.checkFolder(spelt, target.folder().get());
+        }
+        return target;
     }
 
     /**

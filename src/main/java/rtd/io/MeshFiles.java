@@ -44,9 +44,10 @@ final class MeshFiles {
             throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
                     "a mesh's path is relative to the folder of the scene file");
         }
+        ObjMesh mesh;
         try {
             try (SourceText obj = new SourceText(shown, bytes)) {
-                return ObjParser.parse(obj);
+                mesh = ObjParser.parse(obj);
             }
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();
@@ -55,6 +56,13 @@ final class MeshFiles {
                     error.help() == null ? usedBy : error.help() + "; " + usedBy)).toList();
             throw new StatementError(values.placeOfValue(g, 0), errors);
         }
+        if (mesh.count() == 0) {
+            // else the scene would lose the mesh without a word, and the warning of an empty picture would blame the camera
+            throw values.errorAtValue(g, 0, "the mesh file '" + shown + "' has no faces: rtd found no 'f' line in it",
+                    "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
+                            + "skipped too; a mesh needs at least one face");
+        }
+        return mesh;
     }
 
     /** The OBJ file's name as the user knows it: the scene's name, with the path in place of its file name. */

@@ -312,4 +312,44 @@ class CommandLineTest {
     private static long number(String digits) {
         return Long.parseLong(digits.replace(",", ""));
     }
+
+    @Test
+    void aPictureGivenAsTheSceneIsNamedAsAPictureNotAsTheOutput() throws IOException {
+        Path picture = dir.resolve("out.png");
+        assertThat(Cli.run(EXAMPLE.toString(), "-o", picture.toString(), "--width", "16", "--height", "9").exitCode()).isZero();
+        byte[] before = Files.readAllBytes(picture);
+        Run run = Cli.run(picture.toString());
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.err()).contains("cannot read the scene file", "it is a PNG picture, not a scene");
+        assertThat(Files.readAllBytes(picture)).isEqualTo(before);
+    }
+
+    @Test
+    void moreThanSixteenSamplesAreRefusedBeforeAnyWork() {
+        Run run = Cli.run(EXAMPLE.toString(), "--samples", "1000", "--width", "2", "--height", "1", "-o",
+                dir.resolve("s.png").toString()); // small, so that a missing check fails here rather than runs for hours
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("'1000' is more than 16", "256 rays a pixel");
+        assertThat(dir.resolve("s.png")).doesNotExist();
+        assertThat(Cli.run(EXAMPLE.toString(), "--samples", "16", "--width", "8", "--height", "4", "-o", dir.resolve("s.png").toString())
+                .exitCode()).isZero();
+    }
+
+    @Test
+    void explainAndViewTogetherAreMisuse() {
+        Run run = Cli.run(EXAMPLE.toString(), "--explain", "1,1", "--view", "cost");
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("--explain and --view each take the place of the picture");
+    }
+
+    @Test
+    void thePapersRunSaysItUsesOneThreadAndNotesTheOptionsItLeavesOut() {
+        Run run = Cli.run(EXAMPLE.toString(), "--paper", "--threads", "2", "--accel", "bvh", "--stats", "--width", "32", "--height", "18",
+                "-o", dir.resolve("p.png").toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("note: --paper renders with the paper's loop on one thread; --accel and --threads are not used",
+                "rays on 1 thread");
+        Run plain = Cli.run(EXAMPLE.toString(), "--paper", "--width", "32", "--height", "18", "-o", dir.resolve("q.png").toString());
+        assertThat(plain.err()).doesNotContain("note:");
+    }
 }

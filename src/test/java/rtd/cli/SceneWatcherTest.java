@@ -47,6 +47,18 @@ class SceneWatcherTest {
     }
 
     @Test
+    void aBrokenFirstSaveSaysThereIsNoPictureYetAndTheFixedOneRenders() throws Exception {
+        try (Watching watching = new Watching(dir, CAMERA + "sphere:(0|0|0):(3)(0|255|0)\n")) { // a ':' missing
+            assertThat(next(watching.renders)).isEqualTo(1);
+            assertThat(watching.err.toString()).contains("no picture yet").doesNotContain("the last good picture stays");
+
+            save(watching.scene, CAMERA + "sphere:(0|0|0):(3):(0|255|0)\n");
+            assertThat(next(watching.renders)).isZero();
+            assertThat(centre(watching.out)).isEqualTo(0x00FF00);
+        }
+    }
+
+    @Test
     void rendersASaveMadeInStepsOnlyOnceItIsWhole() throws Exception {
         try (Watching watching = new Watching(dir, CAMERA + "sphere:(0|0|0):(3):(255|0|0)\n")) {
             assertThat(next(watching.renders)).isZero();

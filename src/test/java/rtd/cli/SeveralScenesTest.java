@@ -63,4 +63,14 @@ class SeveralScenesTest {
         assertThat(run.err()).contains("is the scene file itself");
         assertThat(dir.resolve("a.png")).doesNotExist();
     }
+
+    @Test
+    void twoScenesWhosePicturesWouldHaveOneNameAreRefusedBeforeEither() throws IOException {
+        Path scene = Files.copy(EXAMPLE, dir.resolve("ball.txt"));
+        Path backup = Files.copy(EXAMPLE, dir.resolve("ball.txt~")); // an editor's backup: also ball.png
+        Run run = Cli.run(scene.toString(), backup.toString(), "--width", "64", "--height", "36");
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("would both write their picture to", "ball.png");
+        assertThat(dir.resolve("ball.png")).doesNotExist();
+    }
 }
