@@ -100,7 +100,7 @@ final class GroupValues extends WrittenValues {
     /** The three numbers of group {@code g}: a colour, each channel a whole number from 0 to 255. */
     Color colour(int g) throws StatementError {
         int i = firsts[g];
-        return new Color(channel(i, "red"), channel(i + 1, "green"), channel(i + 2, "blue"));
+        return new Color(channel(i, "red", i), channel(i + 1, "green", i), channel(i + 2, "blue", i));
     }
 
     /**
@@ -140,13 +140,29 @@ final class GroupValues extends WrittenValues {
                 overflow ? "a float holds numbers up to about 3.4e38" : null);
     }
 
-    private int channel(int i, String name) throws StatementError {
+    /** Number {@code i}, the {@code name} channel of the colour whose numbers start at {@code first}. */
+    private int channel(int i, String name, int first) throws StatementError {
         float value = values[i];
         if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
             throw errorAt(starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
-                    + written(i), null);
+                    + written(i), fractionsHint(first));
         }
         return (int) value;
+    }
+
+    /**
+     * For a colour written as fractions from 0 to 1, as other programs write colours, the same
+     * colour from 0 to 255; otherwise no hint.
+     */
+    private String fractionsHint(int first) {
+        StringBuilder scaled = new StringBuilder("(");
+        for (int i = first; i < first + 3; i++) {
+            if (!(values[i] >= 0 && values[i] <= 1)) {
+                return null;
+            }
+            scaled.append(i > first ? "|" : "").append(Math.round(values[i] * 255));
+        }
+        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is " + scaled + ")";
     }
 
     private String meaning(int g) {

@@ -131,8 +131,12 @@ class MeshTest {
     }
 
     @Test
-    void anEmptyFileIsAMeshOfNoTriangles() throws Exception {
-        assertThat(mesh("")).isEmpty();
+    void aFileWithoutFacesIsAnErrorAtTheMeshsPathNotAMeshOfNoTriangles() {
+        for (String obj : new String[] {"", "v 0 0 0\nv 1 0 0\nv 0 1 0\nF 1 2 3\n"}) {
+            SceneException error = catchThrowableOfType(() -> mesh(obj), SceneException.class);
+            assertThat(error).as(obj).isNotNull();
+            assertThat(error.report()).contains("scene.txt:2:7: error: the mesh file 'model.obj' has no faces", "'F'");
+        }
     }
 
     @Test
