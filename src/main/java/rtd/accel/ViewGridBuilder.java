@@ -2,7 +2,6 @@ package rtd.accel;
 
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.ForkJoinTask;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 
@@ -69,20 +68,12 @@ final class ViewGridBuilder {
         }
         int columns = ViewGrid.cellsAlong(width, shift);
         int[] cellStart = new int[cellCount(shift) + 1];
-        int[] fileOrder = leafOrder(parts);
-        // The packing reads the objects, the cells' lists the footprints: neither needs the other,
-        // and the packing has passes that run on one thread, so it runs beside the lists.
-        ForkJoinTask<Bvh> leaf = pool == null ? null : pool.submit(() -> oneLeaf(fileOrder));
+        int[] fileOrder = leafOrder();
+        Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
         float[] nearestByPlace = new float[fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
         NearestFirst.sort(cellStart, places, nearestByPlace, pool);
-        return new ViewGrid(leaf == null ? oneLeaf(fileOrder) : Parts.join(leaf), camera, width, height, latestOffset,
-                shift, cellStart, places, nearestByPlace);
-    }
-
-    /** The leaf of every object with a box, packed in {@code fileOrder}, and those without one beside it. */
-    private Bvh oneLeaf(int[] fileOrder) {
-        return Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
+        return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
     }
 
     /**
@@ -143,58 +134,37 @@ final class ViewGridBuilder {
     /**
      * Gives each object with a box its place in the leaf, {@link #leafOf}: the objects seen by
      * the square of 8 × 8 pixels their footprint's middle lies in, square after square, row by
-     * row; then those no ray sees. Answers the places' objects ({@code fileOrder}). Counted and
-     * placed part by part of {@code parts} in parallel, as {@link #fill} does, so that a square's
-     * objects come in file order however many parts there are.
+     * row; then those no ray sees. Answers the places' objects ({@code fileOrder}).
      */
-    private int[] leafOrder(Parts parts) {
+    private int[] leafOrder() {
         int across = ViewGrid.cellsAlong(width, TILE_SHIFT);
         int tiles = across * ViewGrid.cellsAlong(height, TILE_SHIFT);
         leafOf = new int[objects.size()];
-        int[][] perPart = new int[parts.parts][tiles + 1]; // the objects no ray sees: a last square of their own
-        parts.run((start, end, part) -> {
-            int[] counts = perPart[part];
-            for (int f = start; f < end; f++) {
-                int tile = squareOf(f, across, tiles);
-                leafOf[f] = tile;
-                if (tile >= 0) {
-                    counts[tile]++;
-                }
+        int[] next = new int[tiles + 2];
+        for (int f = 0; f < leafOf.length; f++) {
+            int at = 4 * f;
+            if (state[f] == UNBOUNDED) {
+                leafOf[f] = -1;
+                continue;
             }
-        });
-        int total = 0;
-        for (int t = 0; t <= tiles; t++) {
-            for (int[] counts : perPart) { // now where each part's objects of the square start
-                int count = counts[t];
-                counts[t] = total;
-                total += count;
+            int tile = state[f] == UNSEEN ? tiles
+                    : ((footprints[at + 1] + footprints[at + 3]) / 2 >> TILE_SHIFT) * across
+                            + ((footprints[at] + footprints[at + 2]) / 2 >> TILE_SHIFT);
+            leafOf[f] = tile;
+            next[tile + 1]++;
+        }
+        for (int t = 1; t < next.length; t++) {
+            next[t] += next[t - 1]; // now where each square's objects start
+        }
+        int[] fileOrder = new int[next[tiles + 1]];
+        for (int f = 0; f < leafOf.length; f++) {
+            if (leafOf[f] >= 0) {
+                int place = next[leafOf[f]]++;
+                leafOf[f] = place;
+                fileOrder[place] = f;
             }
         }
-        int[] fileOrder = new int[total];
-        parts.run((start, end, part) -> {
-            int[] next = perPart[part];
-            for (int f = start; f < end; f++) {
-                if (leafOf[f] >= 0) {
-                    int place = next[leafOf[f]]++;
-                    leafOf[f] = place;
-                    fileOrder[place] = f;
-                }
-            }
-        });
         return fileOrder;
-    }
-
-    /** The square of 8 × 8 pixels object {@code f}'s footprint's middle lies in; {@code tiles} for one no ray sees, −1 for none. */
-    private int squareOf(int f, int across, int tiles) {
-        if (state[f] == UNBOUNDED) {
-            return -1;
-        }
-        if (state[f] == UNSEEN) {
-            return tiles;
-        }
-        int at = 4 * f;
-        return ((footprints[at + 1] + footprints[at + 3]) / 2 >> TILE_SHIFT) * across
-                + ((footprints[at] + footprints[at + 2]) / 2 >> TILE_SHIFT);
     }
 
     /** The numbers of the objects' tests, packed in leaf order. */
