@@ -54,7 +54,7 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
             skipBlanks();
             float value = readNumber();
             if (found == group.size()) {
-                throw groupError(tokenStart, "too many numbers in %s: it takes " + contents(group), statement, group);
+                throw tooManyNumbers(statement, group, groupStart);
             }
             values.add(value, tokenStart, pos);
             found++;
@@ -173,6 +173,34 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
     }
 
     /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
+    /**
+     * Too many numbers in a group. Where the line has fewer groups than the statement takes from
+     * this one on, the likelier mistake is this group left out (its numbers are the next group's),
+     * and the hint says so: {@code sphere:(3|8|-1):(0|127|255)} lacks its radius.
+     */
+    private StatementError tooManyNumbers(Statement statement, Group group, int groupStart) {
+        String message = "too many numbers in %s: it takes " + contents(group);
+        int g = statement.groups().indexOf(group);
+        if (g < 0 || groupsOnTheLineFrom(groupStart) >= statement.groups().size() - g) {
+            return groupError(tokenStart, message, statement, group);
+        }
+        String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement)));
+        return error(tokenStart, text, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
+                + group.meaning() + " left out before this group? Write it as " + statement.usage());
+    }
+
+    /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
+    private int groupsOnTheLineFrom(int offset) {
+        int groups = 0;
+        for (int i = offset; i < bytes.length && bytes[i] != '\n' && bytes[i] != '\r'; i++) {
+            if (bytes[i] == '/' && i + 1 < bytes.length && bytes[i + 1] == '/') {
+                break;
+            }
+            groups += bytes[i] == '(' ? 1 : 0;
+        }
+        return groups;
+    }
+
     private StatementError groupError(int offset, String message, Statement statement, Group group) {
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
         return error(offset, text, "write it as " + statement.usage());
