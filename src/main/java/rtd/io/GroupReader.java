@@ -213,7 +213,9 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
             pos++;
         }
         if (pos == tokenStart) {
-            throw error(pos, "expected a number, found " + source.describe(pos, lineStart), null);
+            boolean emptyPlace = pos < bytes.length && (bytes[pos] == '|' || bytes[pos] == ')');
+            throw error(pos, "expected a number, found " + source.describe(pos, lineStart),
+                    emptyPlace ? "a number is missing here: each place between '(', '|' and ')' holds one" : null);
         }
         try {
             return FloatParser.parse(bytes, tokenStart, pos);

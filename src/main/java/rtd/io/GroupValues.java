@@ -53,7 +53,9 @@ final class GroupValues extends WrittenValues {
         if (value > 0) {
             return value;
         }
-        throw errorAt(starts[i], "the " + meaning(g) + " must be greater than 0, found " + written(i), null);
+        throw errorAt(starts[i], "the " + meaning(g) + " must be greater than 0, found " + written(i),
+                value < 0 ? "without its minus sign: " + number(-value)
+                        : "a " + meaning(g) + " of 0 leaves nothing to see; give a number greater than 0, such as 1");
     }
 
     /** The one number of group {@code g}, finite and strictly between {@code low} and {@code high}. */
@@ -137,7 +139,8 @@ final class GroupValues extends WrittenValues {
         boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
         throw errorAt(starts[i], "the " + name + " must be a finite number, found " + written
                 + (overflow ? ", which is too large for a float" : ""),
-                overflow ? "a float holds numbers up to about 3.4e38" : null);
+                overflow ? "a float holds numbers up to about 3.4e38"
+                        : "NaN (not a number) and Infinity are not numbers a scene can use; give a finite number");
     }
 
     /** Number {@code i}, the {@code name} channel of the colour whose numbers start at {@code first}. */
@@ -145,7 +148,8 @@ final class GroupValues extends WrittenValues {
         float value = values[i];
         if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
             throw errorAt(starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
-                    + written(i), fractionsHint(first));
+                    + written(i), fractionsHint(first) != null ? fractionsHint(first)
+                            : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
         }
         return (int) value;
     }

@@ -157,6 +157,8 @@ final class StatementReader extends GroupReader {
         if (at('#') || atBlockComment()) {
             help = Hints.COMMENTS;
             openBlockComment();
+        } else if (at('/')) {
+            help = Hints.COMMENTS + ", two slashes"; // one slash alone: the second was forgotten
         }
         return error(pos, "expected a statement (" + Grammar.keywordList() + "), found " + source.describe(pos, lineStart), help);
     }

@@ -147,6 +147,7 @@ class SceneErrorsTest {
                 scene.txt:2:19: error: the radius must be greater than 0, found 0
                  2 | \tsphere:(3|8|-1):(0):(0|127|255)
                    | \t                 ^
+                   = help: a radius of 0 leaves nothing to see; give a number greater than 0, such as 1
 
                 1 error
                 """);
