@@ -19,6 +19,9 @@ import rtd.scene.Scene;
  */
 public final class PixelExplanation {
 
+    /** The objects whose tests are spelt out even if the ray misses them: the first ones of the file. */
+    static final int LISTED = 20;
+
     private PixelExplanation() {
     }
 
@@ -42,15 +45,26 @@ public final class PixelExplanation {
             text.line("the scene has no objects");
         }
         float[] t = new float[objects.size()];
+        int unlisted = 0;
         for (int i = 0; i < objects.size(); i++) {
+            Intersection own = objects.get(i).intersect(ray);
+            if (i >= LISTED && !own.happened()) {
+                t[i] = own.t(); // a miss among thousands: counted below, not spelt out
+                unlisted++;
+                continue;
+            }
             text.in();
             t[i] = IntersectionSteps.explain(text, "#" + (i + 1) + " ", objects.get(i), ray);
-            float own = objects.get(i).intersect(ray).t();
-            if (Float.floatToIntBits(own) != Float.floatToIntBits(t[i]) && (own >= 0 || t[i] >= 0)) {
-                text.line("(the object's own test gives t = " + Numbers.of(own) + ": this explanation is wrong here; please report it)");
-                t[i] = own;
+            if (Float.floatToIntBits(own.t()) != Float.floatToIntBits(t[i]) && (own.t() >= 0 || t[i] >= 0)) {
+                text.line("(the object's own test gives t = " + Numbers.of(own.t())
+                        + ": this explanation is wrong here; please report it)");
+                t[i] = own.t();
             }
             text.out();
+        }
+        if (unlisted > 0) {
+            text.in().line("… and " + unlisted + " more objects after #" + LISTED + " that the ray misses, each tested "
+                    + "the same way (not listed; every object the ray hits is)").out();
         }
         text.out();
         return t;

@@ -64,6 +64,18 @@ class PixelExplanationTest {
         assertThat(text).contains("no object is hit", "the scene's ambient colour (127|255|255)", "pixel colour: 127 255 255");
     }
 
+    @Test
+    void inAThousandSpheresItSpellsOutTheFirstTwentyAndEveryHitAndCountsTheOtherMisses() {
+        Scene scene = Scenes.example("thousand_spheres");
+        String text = PixelExplanation.of(scene, 240, 135, 480, 270);
+        assertThat(text).contains("… and 977 more objects after #20 that the ray misses", "nearest: #496 sphere");
+        for (int i = 1; i <= PixelExplanation.LISTED; i++) {
+            assertThat(text).contains("\n   #" + i + " ");
+        }
+        assertThat(text).contains("#496 sphere").doesNotContain("#21 ");
+        assertThat(text.lines().count()).isLessThan(200); // every test spelt out: some 6,000 lines
+    }
+
     @ParameterizedTest(name = "random flat scene {0}")
     @ValueSource(longs = {1, 2, 3, 4, 5})
     void randomPixelsOfRandomFlatScenesAgreeWithThePictureAndTheLoopsHit(long seed) {
