@@ -42,7 +42,7 @@ final class JobPlanner {
             try {
                 OutputTarget target = outputTarget(source);
                 checkNotWrittenTwice(source, target, writers);
-                jobs.add(new Job(source, target, format(target), null));
+                jobs.add(new Job(source, target, format(target, commandLine), null));
             } catch (FileError e) {
                 jobs.add(new Job(source, null, ImageFormat.PNG, e));
             }
@@ -58,16 +58,15 @@ final class JobPlanner {
         if (target.kind() != OutputTarget.Kind.REPLACE) {
             return; // a device or standard output takes what it is given
         }
-        SceneSource earlier = writers.putIfAbsent(target.file().toAbsolutePath().normalize(), source);
+        SceneSource earlier = writers.putIfAbsent(realPlace(target.file()), source);
+        if (earlier != null && !source.stdin() && !earlier.stdin() && sameFile(earlier.path(), source.path())) {
+            throw misuse("the scene '" + source.name() + "' is given twice; give it once");
+        }
         if (earlier != null) {
             throw misuse("the scenes '" + earlier.name() + "' and '" + source.name() + "' would both write their picture to '"
                     + target.spelt() + "', the second replacing the first; render them in separate runs with -o, or "
                     + "rename one");
         }
-    }
-
-    private ImageFormat format(OutputTarget target) {
-        return format(target, commandLine);
     }
 
     /**
@@ -104,12 +103,21 @@ final class JobPlanner {
                     + "give rtd the scene's text file, such as examples/input_rtd.txt", null);
         }
         Path spelt = output != null ? output : defaultOutput(source.path());
+        return target(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path(), "-o", commandLine);
+    }
+
+    /**
+     * The file that {@code option} names ({@code -o}, a view's {@code -o}, {@code --export-pov}),
+     * by the rules of {@link OutputTarget}, with its folder there and writable: a mistake on the
+     * command line is thrown as such, a file that may not be written as a {@link FileError}.
+     */
+    static OutputTarget target(Path spelt, Path scene, String option, CommandLine commandLine) throws FileError {
         OutputTarget target;
         try {
-            target = OutputTarget.of(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path());
+            target = OutputTarget.of(spelt, scene, option);
         } catch (OutputTarget.Refusal refusal) {
             if (refusal.misuse()) {
-                throw misuse(refusal.getMessage());
+                throw new ParameterException(commandLine, refusal.getMessage());
             }
             throw new FileError(refusal.getMessage(), null);
         }
@@ -123,8 +131,8 @@ final class JobPlanner {
         return new ParameterException(commandLine, message);
     }
 
-    /** That {@code folder}, where the file {@code spelt} goes, exists and may be written to (also for {@code --export-pov}). */
-    static void checkFolder(Path spelt, Path folder) throws FileError {
+    /** That {@code folder}, where the file {@code spelt} goes, exists and may be written to. */
+    private static void checkFolder(Path spelt, Path folder) throws FileError {
         if (!Files.isDirectory(folder)) {
             throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' "
                     + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"), null);
@@ -134,9 +142,30 @@ final class JobPlanner {
         }
     }
 
-    /** Whether {@code file} starts as a PNG file does; false if it cannot be read (reading it will say why). */
+    /** Where {@code file} is, after the links on the way to its folder (it need not exist yet). */
+    private static Path realPlace(Path file) {
+        Path absolute = file.toAbsolutePath().normalize();
+        try {
+            return Files.exists(absolute) ? absolute.toRealPath() : absolute.getParent().toRealPath().resolve(absolute.getFileName());
+        } catch (IOException | RuntimeException e) {
+            return absolute; // a folder that cannot be reached: the write will say so
+        }
+    }
+
+    private static boolean sameFile(Path a, Path b) {
+        try {
+            return Files.isSameFile(a, b);
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    /** Whether {@code file} is a regular file that starts as a PNG file does; false if it cannot be read (reading it will say why). */
     private static boolean isPngPicture(Path file) {
         byte[] signature = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+        if (!Files.isRegularFile(file)) {
+            return false; // a FIFO or a device: reading ahead would take bytes the scene's reader needs
+        }
         try (InputStream in = Files.newInputStream(file)) {
             return Arrays.equals(in.readNBytes(signature.length), signature);
         } catch (IOException | RuntimeException e) {

@@ -18,8 +18,9 @@ import rtd.scene.Scene;
 /**
  * {@code --export-pov FILE.pov}: writes the scene for POV-Ray ({@link PovScene}) and says how to
  * render it. Where it goes is decided before the scene is read, by the rules of {@code -o}
- * ({@link OutputTarget}): never a folder, the scene file, or a link's own file; and only a name
- * that ends in {@code .pov}, so that a slip cannot replace a mesh, a scene or a picture.
+ * ({@link JobPlanner#target}): never a folder, the scene file, or a link's own file; and only a
+ * file whose name ends in {@code .pov}, also behind a link, so that a slip cannot replace a mesh,
+ * a scene or a picture.
  */
 final class PovExportRun {
 
@@ -31,37 +32,40 @@ final class PovExportRun {
      * mistake on the command line (thrown) or a {@link FileError}.
      */
     static OutputTarget plan(Path file, Path scene, CommandLine commandLine) throws FileError {
-        String name = file.getFileName() == null ? "" : file.getFileName().toString();
-        if (!name.toLowerCase(Locale.ROOT).endsWith(".pov")) {
+        if (file.toString().equals("-")) {
+            throw new ParameterException(commandLine, "--export-pov writes a file, not standard output ('-'); give a "
+                    + "name that ends in .pov, such as scene.pov");
+        }
+        if (!endsInPov(file)) {
+            String name = file.getFileName() == null ? "" : file.getFileName().toString();
             String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
             throw new ParameterException(commandLine, "--export-pov writes a POV-Ray scene, and its name must end in "
                     + ".pov; '" + file + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
         }
-        OutputTarget target;
-        try {
-            target = OutputTarget.of(file, scene, "--export-pov");
-        } catch (OutputTarget.Refusal refusal) {
-            if (refusal.misuse()) {
-                throw new ParameterException(commandLine, refusal.getMessage());
-            }
-            throw new FileError(refusal.getMessage(), null);
-        }
-        if (target.folder().isPresent()) {
-            JobPlanner.checkFolder(file, target.folder().get());
+        OutputTarget target = JobPlanner.target(file, scene, "--export-pov", commandLine);
+        if (target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file())) {
+            throw new ParameterException(commandLine, "'" + file + "' leads to '" + target.file() + "', whose name does "
+                    + "not end in .pov; --export-pov replaces only a POV-Ray scene");
         }
         return target;
     }
 
-    /** Writes the export to {@code target}; false after saying on {@code err} why it could not be written. */
-    static boolean write(Scene scene, OutputTarget target, RenderSettings settings, PrintWriter err) {
+    private static boolean endsInPov(Path file) {
+        return file.getFileName() != null && file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pov");
+    }
+
+    /**
+     * Writes the export of {@code scene} at {@code width × height} to {@code target}, and says on
+     * {@code err} how to render it; a failure is a {@link FileError} that says why.
+     */
+    static void write(Scene scene, OutputTarget target, int width, int height, PrintWriter err) throws FileError {
         Path file = target.spelt();
         String name = file.getFileName().toString();
         String text;
         try {
-            text = PovScene.of(scene, settings.width(), settings.height(), name);
+            text = PovScene.of(scene, width, height, name);
         } catch (IllegalArgumentException e) {
-            err.println("rtd: cannot export to POV-Ray: " + e.getMessage());
-            return false;
+            throw new FileError("cannot export to POV-Ray: " + e.getMessage(), null);
         }
         try {
             if (target.kind() == OutputTarget.Kind.STREAM) {
@@ -72,15 +76,13 @@ final class PovExportRun {
                 replace(target.file(), text);
             }
         } catch (IOException e) {
-            err.println("rtd: cannot write '" + file + "': " + FileProblems.reason(e));
-            return false;
+            throw new FileError("cannot write '" + file + "': " + FileProblems.reason(e), e);
         }
         String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
         err.println("rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):");
-        err.println("  cd " + (file.toAbsolutePath().getParent()) + " && " + PovScene.command(name, png, settings.width(),
-                settings.height()));
+        err.println("  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
+                + PovScene.command(name, png, width, height));
         err.flush();
-        return true;
     }
 
     /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */

@@ -141,20 +141,22 @@ public final class RtdCommand implements Callable<Integer> {
             }
             List<Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
             Settings settings = settings();
+            ImageSize.check(spec.commandLine(), settings.width(), settings.height()); // before any file is written
             if (paper && (given("--accel") || given("--threads"))) {
                 err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
                         + "not used");
             }
-            if (jobs.get(0).refusal() == null) { // an export goes with a picture that can be written
-                Integer failed = exportPov(err);
-                if (failed != null) {
-                    return failed;
-                }
+            OutputTarget export;
+            try {
+                export = teaching.planExport(); // --export-pov beside the picture (then there is one scene)
+            } catch (FileError e) {
+                err.println("rtd: " + e.getMessage());
+                return 1;
             }
             CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
             int exitCode = 0;
             for (Job job : jobs) {
-                exitCode = Math.max(exitCode, run(job, settings, writerReady, err));
+                exitCode = Math.max(exitCode, run(job, settings, writerReady, export, err));
             }
             return exitCode;
         } finally {
@@ -173,19 +175,11 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    /** {@code --export-pov} beside the picture (see {@link TeachingOptions#exportBeforeRender}): null, or the exit code of its failure. */
-    private Integer exportPov(PrintWriter err) {
-        try {
-            return teaching.exportBeforeRender(err);
-        } catch (SceneException e) {
-            err.print(e.report());
-            printDebug(err, e);
-            return 1;
-        }
-    }
-
-    /** One scene's run; its exit code, 0 or 1. */
-    private int run(Job job, Settings settings, CompletableFuture<Void> writerReady, PrintWriter err) {
+    /**
+     * One scene's run, with {@code export} (or null) written once the scene is read and before
+     * it is rendered; its exit code, 0 or 1.
+     */
+    private int run(Job job, Settings settings, CompletableFuture<Void> writerReady, OutputTarget export, PrintWriter err) {
         try {
             if (job.refusal() != null) {
                 throw job.refusal();
@@ -194,7 +188,10 @@ public final class RtdCommand implements Callable<Integer> {
                 err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
                 err.flush();
             }
-            new SceneRun(settings, spec.commandLine(), streams).run(job.source(), job.target(), job.format(), writerReady);
+            SceneRun.AfterRead exportIt = export == null ? scene -> { }
+                    : scene -> PovExportRun.write(scene, export, settings.width(), settings.height(), err);
+            new SceneRun(settings, spec.commandLine(), streams).run(job.source(), job.target(), job.format(), writerReady,
+                    exportIt);
             return 0;
         } catch (SceneException e) {
             err.print(e.report());

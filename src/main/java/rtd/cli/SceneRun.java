@@ -48,16 +48,18 @@ final class SceneRun {
 
     /**
      * Renders {@code source} to {@code target} in {@code format}, once {@code writerReady} (the
-     * warm-up of {@code javax.imageio}, which runs meanwhile) is done.
+     * warm-up of {@code javax.imageio}, which runs meanwhile) is done; {@code afterRead} gets the
+     * scene before it is rendered.
      */
-    void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady)
-            throws SceneException, FileError {
+    void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
+            AfterRead afterRead) throws SceneException, FileError {
         String report;
         try (ProgressDisplay display = ProgressDisplay.start(settings.progress(), err)) {
             PhaseTimer timer = new PhaseTimer();
             display.show(ProgressDisplay.Phase.of("reading " + source.name()));
             Scene scene = settings.scale().of(read(source));
             timer.endPhase("parse");
+            afterRead.accept(scene);
             ImageSize.check(commandLine, settings.width(), settings.height());
 
             Accelerator.Kind kind = settings.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, settings.accel());
@@ -86,6 +88,11 @@ final class SceneRun {
                             settings.paper() ? 1 : settings.threads(), target.spelt()) : "";
         }
         err.print(report); // once the progress line is gone
+    }
+
+    /** What is done with the scene once it is read, before it is rendered ({@code --export-pov}). */
+    interface AfterRead {
+        void accept(Scene scene) throws FileError;
     }
 
     private Scene read(SceneSource source) throws SceneException, FileError {

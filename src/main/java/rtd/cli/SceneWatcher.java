@@ -49,6 +49,8 @@ final class SceneWatcher {
     private final long pollMillis;
     private IntConsumer rendered = code -> { };
     private volatile boolean stopped;
+    /** Whether some render of this watch has written its picture. */
+    private boolean anyGood;
 
     SceneWatcher(Path scene, IntSupplier render, PrintWriter err, long pollMillis) {
         this.scene = scene;
@@ -82,9 +84,6 @@ final class SceneWatcher {
         return this;
     }
 
-    /** Whether some render of this watch has written its picture. */
-    private boolean anyGood;
-
     /** Ends {@link #run} at its next look at the files. */
     void stop() {
         stopped = true;
@@ -94,6 +93,9 @@ final class SceneWatcher {
     int run() {
         Map<Path, String> seen = fingerprints();
         int code = renderOnce();
+        if (code == 2) {
+            return code; // a mistake on the command line: no edit of the scene can mend it
+        }
         err.println("rtd: watching " + describe(seen.keySet()) + " for changes; Ctrl-C stops");
         err.flush();
         while (!stopped && !Thread.currentThread().isInterrupted()) {
@@ -137,7 +139,7 @@ final class SceneWatcher {
 
     private int renderOnce() {
         int code = render.getAsInt();
-        if (code != 0) {
+        if (code == 1) {
             err.println(anyGood ? "rtd: the last good picture stays; fix the scene and save it again"
                     : "rtd: no picture yet; fix the scene and save it again");
             err.flush();

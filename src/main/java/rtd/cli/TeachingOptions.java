@@ -48,7 +48,7 @@ public final class TeachingOptions {
     /**
      * Runs what the teaching options ask for instead of the picture ({@code --explain},
      * {@code --view}, {@code --watch}), with the export first if one was asked for too; or returns
-     * {@code null} if rtd is to render as usual ({@link #exportBeforeRender} then writes any export).
+     * {@code null} if rtd is to render as usual (with the export that {@link #planExport} plans).
      */
     Integer run(PrintWriter err) throws SceneException {
         RenderSettings settings = RenderSettings.of(command);
@@ -73,43 +73,48 @@ public final class TeachingOptions {
         if (view != null) {
             ImageSize.check(commandLine, settings.width(), settings.height());
         }
+        // Every file is planned before the scene is read and before anything is written, every
+        // mistake on the command line before a file's problem.
+        FileError refused = null;
+        OutputTarget povTarget = null;
+        OutputTarget viewTarget = null;
         try {
-            // every file is planned before the scene is read, and before anything is written
-            OutputTarget viewTarget = pixel == null ? viewTarget(settings, commandLine) : null;
-            ImageFormat viewFormat = viewTarget == null ? null : JobPlanner.format(viewTarget, commandLine);
-            OutputTarget povTarget = exportPov == null ? null : PovExportRun.plan(exportPov, settings.scene(), commandLine);
-            Scene scene = readScene(settings, err);
-            if (scene == null) {
-                return 1;
-            }
-            if (povTarget != null && !PovExportRun.write(scene, povTarget, settings, err)) {
-                return 1;
-            }
-            return pixel != null ? explain(scene, pixel, settings, commandLine.getOut())
-                    : view(scene, viewTarget, viewFormat, settings, commandLine, err);
+            povTarget = planExport();
         } catch (FileError e) {
-            err.println("rtd: " + e.getMessage());
+            refused = e;
+        }
+        try {
+            viewTarget = pixel == null ? viewTarget(settings, commandLine) : null;
+        } catch (FileError e) {
+            refused = refused == null ? e : refused;
+        }
+        ImageFormat viewFormat = viewTarget == null ? null : JobPlanner.format(viewTarget, commandLine);
+        if (refused != null) {
+            err.println("rtd: " + refused.getMessage());
             return 1;
         }
+        Scene scene = readScene(settings, err);
+        if (scene == null) {
+            return 1;
+        }
+        if (povTarget != null) {
+            try {
+                PovExportRun.write(scene, povTarget, settings.width(), settings.height(), err);
+            } catch (FileError e) {
+                err.println("rtd: " + e.getMessage());
+                return 1;
+            }
+        }
+        return pixel != null ? explain(scene, pixel, settings, commandLine.getOut())
+                : view(scene, viewTarget, viewFormat, settings, err);
     }
 
     /**
-     * {@code --export-pov} beside the picture: writes the export, once the picture's own file has
-     * been planned; null when done (or not asked for), else the exit code of its failure.
+     * Where {@code --export-pov} goes, planned before anything is read or written; null without
+     * it. A mistake in its name is thrown as misuse; a file that may not be written is a {@link FileError}.
      */
-    Integer exportBeforeRender(PrintWriter err) throws SceneException {
-        if (exportPov == null) {
-            return null;
-        }
-        RenderSettings settings = RenderSettings.of(command);
-        try {
-            OutputTarget target = PovExportRun.plan(exportPov, settings.scene(), command.commandLine());
-            Scene scene = readScene(settings, err);
-            return scene != null && PovExportRun.write(scene, target, settings, err) ? null : 1;
-        } catch (FileError e) {
-            err.println("rtd: " + e.getMessage());
-            return 1;
-        }
+    OutputTarget planExport() throws FileError {
+        return exportPov == null ? null : PovExportRun.plan(exportPov, RenderSettings.of(command).scene(), command.commandLine());
     }
 
     private static int explain(Scene scene, PixelArgument pixel, RenderSettings settings, PrintWriter out) {
@@ -126,8 +131,7 @@ public final class TeachingOptions {
         return 0;
     }
 
-    private int view(Scene scene, OutputTarget target, ImageFormat format, RenderSettings settings,
-            CommandLine commandLine, PrintWriter err) {
+    private int view(Scene scene, OutputTarget target, ImageFormat format, RenderSettings settings, PrintWriter err) {
         if (settings.samples() > 1) {
             err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
         }
@@ -143,20 +147,13 @@ public final class TeachingOptions {
 
     /** Where the view goes: {@code -o}, or beside the scene under the view's name; checked as a picture's is. */
     private OutputTarget viewTarget(RenderSettings settings, CommandLine commandLine) throws FileError {
+        if (OutputTarget.DASH.equals(settings.output())) {
+            throw new ParameterException(commandLine, "--view writes its picture to a file; -o - (standard output) "
+                    + "is for the rendered picture only: give a file name, such as "
+                    + ViewRun.defaultOutput(settings.scene(), view).getFileName());
+        }
         Path spelt = settings.output() != null ? settings.output() : ViewRun.defaultOutput(settings.scene(), view);
-        OutputTarget target;
-        try {
-            target = OutputTarget.of(spelt, settings.scene());
-        } catch (OutputTarget.Refusal refusal) {
-            if (refusal.misuse()) {
-                throw new ParameterException(commandLine, refusal.getMessage());
-            }
-            throw new FileError(refusal.getMessage(), null);
-        }
-        if (target.folder().isPresent()) {
-            JobPlanner.checkFolder(spelt, target.folder().get());
-        }
-        return target;
+        return JobPlanner.target(spelt, settings.scene(), "-o", commandLine);
     }
 
     /**

@@ -45,7 +45,18 @@ public final class PovScene {
 
     /** The POV-Ray command that renders {@code povFile} at {@code w × h} into {@code png}, as rtd would. */
     public static String command(String povFile, String png, int w, int h) {
-        return "povray +I" + povFile + " +O" + png + " +W" + w + " +H" + h + " +FN -A -D File_Gamma=1.0";
+        return "povray " + shellWord("+I" + povName(povFile)) + " " + shellWord("+O" + povName(png)) + " +W" + w + " +H"
+                + h + " +FN -A -D File_Gamma=1.0";
+    }
+
+    /** A file name as POV-Ray's options take it: in double quotes if it has a space, else as it is. */
+    private static String povName(String name) {
+        return name.contains(" ") ? '"' + name + '"' : name;
+    }
+
+    /** {@code word} as a shell reads it back: as it is if it is plain, else in single quotes (a name with spaces). */
+    public static String shellWord(String word) {
+        return word.matches("[A-Za-z0-9_./+=:,@%-]+") ? word : "'" + word.replace("'", "'\\''") + "'";
     }
 
     /** The POV-Ray text of {@code scene} as rtd draws it at {@code w × h}; {@code povFile} names the file, for the comment. */

@@ -2,6 +2,7 @@ package rtd.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assumptions.assumeThat;
+import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -12,6 +13,7 @@ import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.attribute.BasicFileAttributes;
+import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.DisplayName;
@@ -99,6 +101,26 @@ class OutputTargetTest {
         assertThat(isOther(fifo)).as("still a FIFO").isTrue();
         assertThat(run.exitCode()).as(run.err()).isZero();
         assertThat(reader.get(30, TimeUnit.SECONDS)).startsWith(PNG_SIGNATURE);
+    }
+
+    @Test
+    void aFifoAsTheSceneIsReadOnceAndNotRobbedOfItsFirstBytes() throws Exception {
+        Path fifo = dir.resolve("scene.txt");
+        Process mkfifo = new ProcessBuilder("mkfifo", fifo.toString()).start();
+        assumeThat(mkfifo.waitFor(10, TimeUnit.SECONDS) && mkfifo.exitValue() == 0).as("mkfifo works here").isTrue();
+        byte[] scene = Files.readAllBytes(Path.of("examples", "input_rtd.txt"));
+        CompletableFuture<Void> writer = CompletableFuture.runAsync(() -> {
+            try {
+                Files.write(fifo, scene);
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        Run run = assertTimeoutPreemptively(Duration.ofSeconds(60),
+                () -> Cli.run(fifo.toString(), "--width", "64", "--height", "36")); // a second open would wait for ever
+        writer.get(10, TimeUnit.SECONDS);
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(dir.resolve("scene.png")).isRegularFile();
     }
 
     @Test

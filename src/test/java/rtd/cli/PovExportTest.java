@@ -111,4 +111,37 @@ class PovExportTest {
         assertThat(Files.readString(keep)).isEqualTo("keep");
         assertThat(dir.resolve("new")).doesNotExist();
     }
+
+    @Test
+    void aLinkNamedPovToAnotherKindOfFileIsRefusedAndTheFileStays() throws IOException {
+        Path mesh = Files.writeString(dir.resolve("keep.obj"), "v 0 0 0\n");
+        Path link = Files.createSymbolicLink(dir.resolve("link.pov"), mesh.getFileName());
+        Run run = export("--export-pov", link.toString());
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("whose name does not end in .pov");
+        assertThat(Files.readString(mesh)).isEqualTo("v 0 0 0\n");
+    }
+
+    @Test
+    void aMistakeInTheExportsNameIsNamedBeforeAProblemWithThePicturesFile() {
+        Run run = export("--export-pov", dir.resolve("x.obj").toString(), "-o", dir.resolve("nope").resolve("p.png").toString());
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("its name must end in .pov");
+    }
+
+    @Test
+    void anImageTooLargeIsMisuseBeforeTheExportIsWritten() {
+        Path pov = dir.resolve("big.pov");
+        Run run = Cli.run(EXAMPLE.toString(), "--width", "60000", "--height", "60000", "--export-pov", pov.toString());
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(pov).doesNotExist();
+    }
+
+    @Test
+    void thePrintedCommandQuotesANameWithSpacesForTheShellAndForPovRay() throws IOException {
+        Path folder = Files.createDirectory(dir.resolve("my renders"));
+        Run run = export("--export-pov", folder.resolve("a b.pov").toString(), "-o", dir.resolve("p.png").toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("cd '" + folder.toAbsolutePath() + "' && povray '+I\"a b.pov\"' '+O\"a b-pov.png\"'");
+    }
 }

@@ -59,6 +59,16 @@ class SceneWatcherTest {
     }
 
     @Test
+    void aMistakeOnTheCommandLineEndsTheWatchAtOnceWithItsExitCode() throws Exception {
+        Path scene = Files.writeString(dir.resolve("lesson.txt"), CAMERA);
+        java.io.StringWriter err = new java.io.StringWriter();
+        int code = org.junit.jupiter.api.Assertions.assertTimeoutPreemptively(java.time.Duration.ofSeconds(20),
+                () -> new SceneWatcher(scene, () -> 2, new java.io.PrintWriter(err, true), 10).run());
+        assertThat(code).isEqualTo(2); // no edit of the scene could mend it: no watching
+        assertThat(err.toString()).doesNotContain("watching", "picture");
+    }
+
+    @Test
     void rendersASaveMadeInStepsOnlyOnceItIsWhole() throws Exception {
         try (Watching watching = new Watching(dir, CAMERA + "sphere:(0|0|0):(3):(255|0|0)\n")) {
             assertThat(next(watching.renders)).isZero();

@@ -92,6 +92,14 @@ class TeachingOptionsTest {
     }
 
     @Test
+    void aViewToStandardOutputIsMisuseAndWritesNoFileNamedDash() {
+        Run run = Cli.run(EXAMPLE, "--view", "depth", "-o", "-");
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("--view writes its picture to a file", "input_rtd-depth.png");
+        assertThat(Path.of("-")).doesNotExist();
+    }
+
+    @Test
     void anUnknownViewIsMisuse() {
         Run run = Cli.run(EXAMPLE, "--view", "heat");
         assertThat(run.exitCode()).isEqualTo(2);
