@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -38,7 +39,11 @@ final class JobPlanner {
     List<Job> jobs(List<SceneSource> sources) {
         List<Job> jobs = new ArrayList<>();
         Map<Path, SceneSource> writers = new HashMap<>();
+        Map<Object, SceneSource> scenes = new HashMap<>();
         for (SceneSource source : sources) {
+            if (!source.stdin() && scenes.putIfAbsent(fileKey(source.path()), source) != null) {
+                throw misuse("the scene '" + source.name() + "' is given twice (or a link to it is); give it once");
+            }
             try {
                 OutputTarget target = outputTarget(source);
                 checkNotWrittenTwice(source, target, writers);
@@ -59,9 +64,6 @@ final class JobPlanner {
             return; // a device or standard output takes what it is given
         }
         SceneSource earlier = writers.putIfAbsent(realPlace(target.file()), source);
-        if (earlier != null && !source.stdin() && !earlier.stdin() && sameFile(earlier.path(), source.path())) {
-            throw misuse("the scene '" + source.name() + "' is given twice; give it once");
-        }
         if (earlier != null) {
             throw misuse("the scenes '" + earlier.name() + "' and '" + source.name() + "' would both write their picture to '"
                     + target.spelt() + "', the second replacing the first; render them in separate runs with -o, or "
@@ -124,6 +126,13 @@ final class JobPlanner {
         if (target.folder().isPresent()) {
             checkFolder(spelt, target.folder().get());
         }
+        Path real = target.file().getFileName();
+        if (target.kind() == OutputTarget.Kind.REPLACE && "-o".equals(option) && real != null
+                && !real.equals(spelt.getFileName()) && ImageFormat.forOutput(target.file()).isEmpty()) {
+            // a link to a file of another kind, such as a mesh: a slip, and replacing it would destroy it
+            throw new ParameterException(commandLine, "'" + spelt + "' leads to '" + target.file() + "', which is not "
+                    + "a picture's name; -o replaces only a picture");
+        }
         return target;
     }
 
@@ -152,11 +161,13 @@ final class JobPlanner {
         }
     }
 
-    private static boolean sameFile(Path a, Path b) {
+    /** What tells one file from another, however it is named (its inode, where the system says); else its path. */
+    private static Object fileKey(Path file) {
         try {
-            return Files.isSameFile(a, b);
-        } catch (IOException e) {
-            return false;
+            Object key = Files.readAttributes(file, BasicFileAttributes.class).fileKey();
+            return key != null ? key : file.toRealPath();
+        } catch (IOException | RuntimeException e) {
+            return file.toAbsolutePath().normalize(); // missing or unreadable: reading it will say so
         }
     }
 

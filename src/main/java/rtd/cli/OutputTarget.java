@@ -62,13 +62,9 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
 
     /**
      * What {@code output} is, or why rtd may not write it: a {@link Refusal} that the command
-     * line turns into a message. The scene file is {@code scene}.
+     * line turns into a message. The scene file is {@code scene}; {@code option} names the output
+     * in messages ({@code -o}, {@code --export-pov}).
      */
-    static OutputTarget of(Path output, Path scene) throws Refusal {
-        return of(output, scene, "-o");
-    }
-
-    /** As {@link #of(Path, Path)}, for the file that {@code option} names ({@code -o}, {@code --export-pov}). */
     static OutputTarget of(Path output, Path scene, String option) throws Refusal {
         if (Files.isDirectory(output)) {
             throw Refusal.misuse("the output '" + output + "' is a folder; give a file name such as " + output.resolve("out.png"));

@@ -2,7 +2,6 @@ package rtd.cli;
 
 import java.io.IOException;
 import java.io.OutputStream;
-import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -36,6 +35,10 @@ final class PovExportRun {
             throw new ParameterException(commandLine, "--export-pov writes a file, not standard output ('-'); give a "
                     + "name that ends in .pov, such as scene.pov");
         }
+        if (file.toString().indexOf('"') >= 0) {
+            throw new ParameterException(commandLine, "--export-pov '" + file + "': a name with a double quote cannot "
+                    + "be given to POV-Ray; choose one without");
+        }
         if (!endsInPov(file)) {
             String name = file.getFileName() == null ? "" : file.getFileName().toString();
             String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
@@ -55,10 +58,10 @@ final class PovExportRun {
     }
 
     /**
-     * Writes the export of {@code scene} at {@code width × height} to {@code target}, and says on
-     * {@code err} how to render it; a failure is a {@link FileError} that says why.
+     * Writes the export of {@code scene} at {@code width × height} to {@code target}, and answers
+     * the two lines that say so and how to render it; a failure is a {@link FileError} that says why.
      */
-    static void write(Scene scene, OutputTarget target, int width, int height, PrintWriter err) throws FileError {
+    static String write(Scene scene, OutputTarget target, int width, int height) throws FileError {
         Path file = target.spelt();
         String name = file.getFileName().toString();
         String text;
@@ -79,10 +82,9 @@ final class PovExportRun {
             throw new FileError("cannot write '" + file + "': " + FileProblems.reason(e), e);
         }
         String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
-        err.println("rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):");
-        err.println("  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
-                + PovScene.command(name, png, width, height));
-        err.flush();
+        return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"
+                + "  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
+                + PovScene.command(name, png, width, height);
     }
 
     /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */

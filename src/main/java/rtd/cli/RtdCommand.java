@@ -142,16 +142,16 @@ public final class RtdCommand implements Callable<Integer> {
             List<Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
             Settings settings = settings();
             ImageSize.check(spec.commandLine(), settings.width(), settings.height()); // before any file is written
-            if (paper && (given("--accel") || given("--threads"))) {
-                err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
-                        + "not used");
-            }
             OutputTarget export;
             try {
                 export = teaching.planExport(); // --export-pov beside the picture (then there is one scene)
             } catch (FileError e) {
                 err.println("rtd: " + e.getMessage());
                 return 1;
+            }
+            if (paper && (given("--accel") || given("--threads"))) { // once every misuse has had its say
+                err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
+                        + "not used");
             }
             CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
             int exitCode = 0;
@@ -188,10 +188,8 @@ public final class RtdCommand implements Callable<Integer> {
                 err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
                 err.flush();
             }
-            SceneRun.AfterRead exportIt = export == null ? scene -> { }
-                    : scene -> PovExportRun.write(scene, export, settings.width(), settings.height(), err);
             new SceneRun(settings, spec.commandLine(), streams).run(job.source(), job.target(), job.format(), writerReady,
-                    exportIt);
+                    export);
             return 0;
         } catch (SceneException e) {
             err.print(e.report());

@@ -48,19 +48,22 @@ final class SceneRun {
 
     /**
      * Renders {@code source} to {@code target} in {@code format}, once {@code writerReady} (the
-     * warm-up of {@code javax.imageio}, which runs meanwhile) is done; {@code afterRead} gets the
-     * scene before it is rendered.
+     * warm-up of {@code javax.imageio}, which runs meanwhile) is done; with the scene written for
+     * POV-Ray to {@code export} (or null) before it is rendered.
      */
     void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
-            AfterRead afterRead) throws SceneException, FileError {
+            OutputTarget export) throws SceneException, FileError {
         String report;
         try (ProgressDisplay display = ProgressDisplay.start(settings.progress(), err)) {
             PhaseTimer timer = new PhaseTimer();
             display.show(ProgressDisplay.Phase.of("reading " + source.name()));
             Scene scene = settings.scale().of(read(source));
             timer.endPhase("parse");
-            afterRead.accept(scene);
-            ImageSize.check(commandLine, settings.width(), settings.height());
+            if (export != null) { // --export-pov, planned with the picture's file, from this one read of the scene
+                display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
+                display.message(PovExportRun.write(scene, export, settings.width(), settings.height()));
+                timer.endPhase("export");
+            }
 
             Accelerator.Kind kind = settings.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, settings.accel());
             display.show(ProgressDisplay.Phase.of(kind.building));
@@ -88,11 +91,6 @@ final class SceneRun {
                             settings.paper() ? 1 : settings.threads(), target.spelt()) : "";
         }
         err.print(report); // once the progress line is gone
-    }
-
-    /** What is done with the scene once it is read, before it is rendered ({@code --export-pov}). */
-    interface AfterRead {
-        void accept(Scene scene) throws FileError;
     }
 
     private Scene read(SceneSource source) throws SceneException, FileError {

@@ -18,6 +18,9 @@ final class StatsReport {
         double renderSeconds = seconds.getOrDefault("render", 0.0);
         StringBuilder text = new StringBuilder();
         line(text, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));
+        if (seconds.containsKey("export")) {
+            line(text, "export", seconds.get("export"), "the scene for POV-Ray (--export-pov)");
+        }
         line(text, "build", seconds.get("build"), accelerator == null
                 ? "no BVH: the paper's loop tests every object" : accelerator.built().get());
         line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",

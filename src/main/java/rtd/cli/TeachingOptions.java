@@ -67,9 +67,6 @@ public final class TeachingOptions {
         if (pixel == null && view == null) {
             return null;
         }
-        if (pixel != null && settings.output() != null) {
-            err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
-        }
         if (view != null) {
             ImageSize.check(commandLine, settings.width(), settings.height());
         }
@@ -93,13 +90,17 @@ public final class TeachingOptions {
             err.println("rtd: " + refused.getMessage());
             return 1;
         }
+        if (pixel != null && settings.output() != null) { // once every misuse has had its say
+            err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
+        }
         Scene scene = readScene(settings, err);
         if (scene == null) {
             return 1;
         }
         if (povTarget != null) {
             try {
-                PovExportRun.write(scene, povTarget, settings.width(), settings.height(), err);
+                err.println(PovExportRun.write(scene, povTarget, settings.width(), settings.height()));
+                err.flush();
             } catch (FileError e) {
                 err.println("rtd: " + e.getMessage());
                 return 1;

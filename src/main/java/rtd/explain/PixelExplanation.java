@@ -10,7 +10,8 @@ import rtd.scene.Scene;
 /**
  * What rtd does for one pixel, in the paper's terms and order ({@code --explain X,Y}): ray
  * generation (section 3.2.1, Listing 4.1), the intersection test with every object in file
- * order (section 3.2.2), the depth test (section 3.2.3, Listing 4.3) and the pixel's colour.
+ * order (section 3.2.2; spelt out for the first {@value #LISTED} objects and every object the ray
+ * hits, the other misses counted), the depth test (section 3.2.3, Listing 4.3) and the pixel's colour.
  *
  * <p>Every number is computed with the renderer's own float operations, and the verdicts are
  * those of the objects' own tests and of {@link Scene#nearestHit}: the explanation of a pixel

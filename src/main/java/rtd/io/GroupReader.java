@@ -172,7 +172,6 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
         return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
     }
 
-    /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
     /**
      * Too many numbers in a group. Where the line has fewer groups than the statement takes from
      * this one on, the likelier mistake is this group left out (its numbers are the next group's),
@@ -186,7 +185,7 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
         }
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement)));
         return error(tokenStart, text, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
-                + group.meaning() + " left out before this group? Write it as " + statement.usage());
+                + group.meaning() + " left out before this group? write it as " + statement.usage());
     }
 
     /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
@@ -201,6 +200,7 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
         return groups;
     }
 
+    /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
     private StatementError groupError(int offset, String message, Statement statement, Group group) {
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
         return error(offset, text, "write it as " + statement.usage());

@@ -147,8 +147,9 @@ final class GroupValues extends WrittenValues {
     private int channel(int i, String name, int first) throws StatementError {
         float value = values[i];
         if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
+            String fractions = fractionsHint(first);
             throw errorAt(starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
-                    + written(i), fractionsHint(first) != null ? fractionsHint(first)
+                    + written(i), fractions != null ? fractions
                             : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
         }
         return (int) value;

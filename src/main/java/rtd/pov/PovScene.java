@@ -49,9 +49,14 @@ public final class PovScene {
                 + h + " +FN -A -D File_Gamma=1.0";
     }
 
-    /** A file name as POV-Ray's options take it: in double quotes if it has a space, else as it is. */
+    /**
+     * A file name as POV-Ray's options take it: in double quotes if it has anything but letters,
+     * digits and {@code _./+:,@%-} (POV-Ray ends an option's name at a space, {@code ;},
+     * {@code #}, a quote, a bracket or {@code =}), else as it is. A name with a double quote in
+     * it cannot be given; {@code --export-pov} refuses one.
+     */
     private static String povName(String name) {
-        return name.contains(" ") ? '"' + name + '"' : name;
+        return name.matches("[A-Za-z0-9_./+:,@%-]+") ? name : '"' + name + '"';
     }
 
     /** {@code word} as a shell reads it back: as it is if it is plain, else in single quotes (a name with spaces). */
@@ -116,7 +121,7 @@ public final class PovScene {
                     + vector(direction) + "\n  right " + vector(times(d(perspective.widthVector()), w))
                     + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
         }
-        throw new IllegalArgumentException("no POV-Ray camera for " + camera.getClass().getSimpleName());
+        throw new IllegalArgumentException("the export knows the orthographic and the perspective camera only");
     }
 
     private static String object(IGeometry object, boolean shaded) {

@@ -104,6 +104,16 @@ class OutputTargetTest {
     }
 
     @Test
+    void aLinkNamedAsAPictureToAFileOfAnotherKindIsRefusedAndTheFileStays() throws IOException {
+        Path mesh = Files.writeString(dir.resolve("model.obj"), "v 0 0 0\n");
+        Path link = Files.createSymbolicLink(dir.resolve("p.png"), mesh.getFileName());
+        Run run = render(scene(), link);
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("which is not a picture's name; -o replaces only a picture");
+        assertThat(Files.readString(mesh)).isEqualTo("v 0 0 0\n");
+    }
+
+    @Test
     void aFifoAsTheSceneIsReadOnceAndNotRobbedOfItsFirstBytes() throws Exception {
         Path fifo = dir.resolve("scene.txt");
         Process mkfifo = new ProcessBuilder("mkfifo", fifo.toString()).start();

@@ -144,4 +144,21 @@ class PovExportTest {
         assertThat(run.exitCode()).as(run.err()).isZero();
         assertThat(run.err()).contains("cd '" + folder.toAbsolutePath() + "' && povray '+I\"a b.pov\"' '+O\"a b-pov.png\"'");
     }
+
+    @Test
+    void standardOutputAndANameWithADoubleQuoteAreMisuse() {
+        Run dash = export("--export-pov", "-");
+        assertThat(dash.exitCode()).isEqualTo(2);
+        assertThat(dash.err()).contains("--export-pov writes a file, not standard output ('-')");
+        Run quote = export("--export-pov", dir.resolve("a\"b.pov").toString());
+        assertThat(quote.exitCode()).isEqualTo(2);
+        assertThat(quote.err()).contains("a name with a double quote cannot be given to POV-Ray");
+    }
+
+    @Test
+    void theExportIsAPhaseOfItsOwnInTheStatistics() {
+        Run run = export("--export-pov", dir.resolve("s.pov").toString(), "-o", dir.resolve("s.png").toString(), "--stats");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).containsPattern("export +[0-9.]+ s  the scene for POV-Ray");
+    }
 }

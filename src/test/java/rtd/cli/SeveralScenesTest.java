@@ -73,4 +73,17 @@ class SeveralScenesTest {
         assertThat(run.err()).contains("would both write their picture to", "ball.png");
         assertThat(dir.resolve("ball.png")).doesNotExist();
     }
+
+    @Test
+    void oneSceneGivenTwiceOrThroughALinkIsMisuse() throws IOException {
+        Path scene = Files.copy(EXAMPLE, dir.resolve("ball.txt"));
+        Path link = Files.createSymbolicLink(dir.resolve("link.txt"), scene.getFileName());
+        for (Path second : new Path[] {scene, link}) {
+            Run run = Cli.run(scene.toString(), second.toString(), "--width", "64", "--height", "36");
+            assertThat(run.exitCode()).isEqualTo(2);
+            assertThat(run.err()).contains("is given twice (or a link to it is); give it once");
+        }
+        assertThat(dir.resolve("ball.png")).doesNotExist();
+        assertThat(dir.resolve("link.png")).doesNotExist();
+    }
 }
