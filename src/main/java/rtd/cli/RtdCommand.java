@@ -1,5 +1,6 @@
 package rtd.cli;
 
+import java.io.File;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
@@ -152,6 +153,11 @@ public final class RtdCommand implements Callable<Integer> {
             if (paper && (given("--accel") || given("--threads"))) { // once every misuse has had its say
                 err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
                         + "not used");
+            }
+            if (output != null && output.toString().indexOf('\\') >= 0 && File.separatorChar == '/') {
+                // a Windows habit: here the picture gets one file whose name holds the backslashes
+                err.println("rtd: note: '" + output + "' has backslashes, which this system keeps in the file's name; "
+                        + "it separates folders with '/'");
             }
             CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
             int exitCode = 0;

@@ -352,4 +352,12 @@ class CommandLineTest {
         Run plain = Cli.run(EXAMPLE.toString(), "--paper", "--width", "32", "--height", "18", "-o", dir.resolve("q.png").toString());
         assertThat(plain.err()).doesNotContain("note:");
     }
+
+    @Test
+    void anOutputWithBackslashesGetsANoteThatFoldersAreSeparatedBySlashesHere() {
+        Run run = Cli.run(EXAMPLE.toString(), "--width", "8", "--height", "4", "-o", dir.resolve("out\\pic.png").toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("has backslashes, which this system keeps in the file's name");
+        assertThat(dir.resolve("out\\pic.png")).isRegularFile();
+    }
 }
