@@ -128,10 +128,11 @@ final class JobPlanner {
         }
         Path real = target.file().getFileName();
         if (target.kind() == OutputTarget.Kind.REPLACE && "-o".equals(option) && real != null
-                && !real.equals(spelt.getFileName()) && ImageFormat.forOutput(target.file()).isEmpty()) {
-            // a link to a file of another kind, such as a mesh: a slip, and replacing it would destroy it
-            throw new ParameterException(commandLine, "'" + spelt + "' leads to '" + target.file() + "', which is not "
-                    + "a picture's name; -o replaces only a picture");
+                && !real.equals(spelt.getFileName()) && !samePictureKind(spelt, target.file())) {
+            // a link to a file of another kind, such as a mesh or notes: a slip, and replacing it would destroy it
+            throw new ParameterException(commandLine, "'" + spelt + "' leads to '" + target.file() + "', whose name "
+                    + "is not that of a ." + ImageFormat.forOutput(spelt).map(ImageFormat::extension).orElse("png")
+                    + " picture; rtd writes through a link only into a picture of the kind asked for");
         }
         return target;
     }
@@ -149,6 +150,12 @@ final class JobPlanner {
         if (!Files.isWritable(folder)) {
             throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' is not writable", null);
         }
+    }
+
+    /** Whether the real file behind a link has an extension, and one of the same format as the name given. */
+    private static boolean samePictureKind(Path spelt, Path real) {
+        return ImageFormat.extensionOf(real).isPresent()
+                && ImageFormat.forOutput(real).equals(ImageFormat.forOutput(spelt));
     }
 
     /** Where {@code file} is, after the links on the way to its folder (it need not exist yet). */

@@ -35,7 +35,7 @@ final class PovExportRun {
             throw new ParameterException(commandLine, "--export-pov writes a file, not standard output ('-'); give a "
                     + "name that ends in .pov, such as scene.pov");
         }
-        if (file.toString().indexOf('"') >= 0) {
+        if (file.getFileName() != null && file.getFileName().toString().indexOf('"') >= 0) { // the folder is cd's
             throw new ParameterException(commandLine, "--export-pov '" + file + "': a name with a double quote cannot "
                     + "be given to POV-Ray; choose one without");
         }

@@ -69,7 +69,7 @@ public final class PovScene {
         boolean shaded = !scene.lights().isEmpty();
         StringBuilder pov = new StringBuilder();
         pov.append("// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n");
-        pov.append("//   ").append(command(povFile, povFile.replaceAll("\\.pov$", "") + "-pov.png", w, h)).append('\n');
+        pov.append("//   ").append(command(povFile, povFile.replaceAll("(?i)\\.pov$", "") + "-pov.png", w, h)).append('\n');
         pov.append(shaded
                 ? "// and compare decoded pixels: shaded scenes agree but for shadow and silhouette edges and a level here\n"
                         + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also reflects differs.\n"

@@ -105,12 +105,15 @@ class OutputTargetTest {
 
     @Test
     void aLinkNamedAsAPictureToAFileOfAnotherKindIsRefusedAndTheFileStays() throws IOException {
-        Path mesh = Files.writeString(dir.resolve("model.obj"), "v 0 0 0\n");
-        Path link = Files.createSymbolicLink(dir.resolve("p.png"), mesh.getFileName());
-        Run run = render(scene(), link);
-        assertThat(run.exitCode()).isEqualTo(2);
-        assertThat(run.err()).contains("which is not a picture's name; -o replaces only a picture");
-        assertThat(Files.readString(mesh)).isEqualTo("v 0 0 0\n");
+        Path scene = scene();
+        for (String other : new String[] {"model.obj", "notes", ".hidden", "photo.jpg"}) {
+            Path file = Files.writeString(dir.resolve(other), "keep\n");
+            Path link = Files.createSymbolicLink(dir.resolve("to-" + other + ".png"), file.getFileName());
+            Run run = render(scene, link);
+            assertThat(run.exitCode()).as(other).isEqualTo(2);
+            assertThat(run.err()).as(other).contains("whose name is not that of a .png picture");
+            assertThat(Files.readString(file)).as(other).isEqualTo("keep\n");
+        }
     }
 
     @Test
