@@ -19,9 +19,10 @@ import picocli.CommandLine.Model.CommandSpec;
  * @param accel   {@code --accel}
  * @param samples {@code --samples}
  * @param paper   {@code --paper}: the paper's loop
+ * @param stats   {@code --stats}: the time of each phase and the work per ray
  */
 record RenderSettings(List<Path> scenes, Path scene, Path output, int width, int height, Scale scale, int threads,
-        Accel accel, int samples, boolean paper) {
+        Accel accel, int samples, boolean paper, boolean stats) {
 
     /** The values the command line gave {@code command} (or their defaults), with {@code --scale} applied to the size. */
     static RenderSettings of(CommandSpec command) {
@@ -32,6 +33,7 @@ record RenderSettings(List<Path> scenes, Path scene, Path output, int width, int
         return new RenderSettings(scenes, scenes.get(0), command.findOption("--output").getValue(),
                 (int) Math.max(1, scale.times(width)), (int) Math.max(1, scale.times(height)), scale,
                 command.findOption("--threads").getValue(), command.findOption("--accel").getValue(),
-                command.findOption("--samples").getValue(), command.findOption("--paper").getValue());
+                command.findOption("--samples").getValue(), command.findOption("--paper").getValue(),
+                command.findOption("--stats").getValue());
     }
 }

@@ -93,10 +93,15 @@ public final class TeachingOptions {
         if (pixel != null && settings.output() != null) { // once every misuse has had its say
             err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
         }
+        if (pixel != null && settings.stats()) {
+            err.println("rtd: note: --explain follows one ray and times nothing; --stats is not used");
+        }
+        PhaseTimer timer = new PhaseTimer();
         Scene scene = readScene(settings, err);
         if (scene == null) {
             return 1;
         }
+        timer.endPhase("parse");
         if (povTarget != null) {
             try {
                 err.println(PovExportRun.write(scene, povTarget, settings.width(), settings.height()));
@@ -105,9 +110,10 @@ public final class TeachingOptions {
                 err.println("rtd: " + e.getMessage());
                 return 1;
             }
+            timer.endPhase("export");
         }
         return pixel != null ? explain(scene, pixel, settings, commandLine.getOut())
-                : view(scene, viewTarget, viewFormat, settings, err);
+                : view(scene, viewTarget, viewFormat, settings, timer, err);
     }
 
     /**
@@ -132,16 +138,23 @@ public final class TeachingOptions {
         return 0;
     }
 
-    private int view(Scene scene, OutputTarget target, ImageFormat format, RenderSettings settings, PrintWriter err) {
+    private int view(Scene scene, OutputTarget target, ImageFormat format, RenderSettings settings, PhaseTimer timer,
+            PrintWriter err) {
         if (settings.samples() > 1) {
             err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
         }
-        ViewRun.Result result = ViewRun.render(scene, view, settings);
+        ViewRun.Result result = ViewRun.render(scene, view, settings, timer);
         try {
             ViewRun.write(result, target, format, err);
         } catch (IOException e) {
             err.println("rtd: cannot write '" + target.spelt() + "': " + FileProblems.reason(e));
             return 1;
+        }
+        timer.endPhase("write");
+        if (settings.stats()) {
+            err.print(StatsReport.format(timer, scene, result.accelerator(), result.render().work(),
+                    settings.threads(), target.spelt())); // a view runs on every thread, also the paper's loop
+            err.flush();
         }
         return 0;
     }

@@ -26,19 +26,28 @@ final class ViewRun {
     private ViewRun() {
     }
 
-    /** The view's picture and the work its rays took. */
-    record Result(ViewPicture view, RenderResult render) {
+    /**
+     * The view's picture, the work its rays took, and the accelerator they took it on (null for
+     * {@code --paper}, the paper's loop).
+     */
+    record Result(ViewPicture view, RenderResult render, Accelerator accelerator) {
     }
 
-    /** Renders {@code view} of {@code scene} with the settings' size, threads and accelerator. */
-    static Result render(Scene scene, View view, RenderSettings settings) {
-        Supplier<Tracer> tracers = settings.paper() ? () -> new LinearTracer(scene)
-                : Accelerator.of(scene, settings.accel(), settings.width(), settings.height(), 1, settings.threads())
-                        .tracers();
+    /**
+     * Renders {@code view} of {@code scene} with the settings' size, threads and accelerator; the
+     * build and the render are timed as phases of {@code timer} ({@code --stats}).
+     */
+    static Result render(Scene scene, View view, RenderSettings settings, PhaseTimer timer) {
+        Accelerator accelerator = settings.paper() ? null
+                : Accelerator.of(scene, settings.accel(), settings.width(), settings.height(), 1, settings.threads());
+        timer.endPhase("build");
+        Supplier<Tracer> tracers = accelerator == null ? () -> new LinearTracer(scene) : accelerator.tracers();
         ViewShader shader = new ViewShader(view, scene.objects());
         RenderResult raw = ParallelRenderer.render(scene.camera(), tracers, tracer -> shader, settings.width(),
                 settings.height(), 1, settings.threads(), new RenderProgress());
-        return new Result(ViewPicture.of(view, raw.image(), scene), raw);
+        ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
+        timer.endPhase("render");
+        return new Result(picture, raw, accelerator);
     }
 
     /** Writes the view to {@code target} in {@code format}; the scale goes to {@code err}. */

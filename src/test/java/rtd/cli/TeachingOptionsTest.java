@@ -65,6 +65,26 @@ class TeachingOptionsTest {
     }
 
     @Test
+    void statsWithAViewReportTheViewsPhasesAndItsWorkPerRay() {
+        Path out = dir.resolve("cost.png");
+        Run run = Cli.run(EXAMPLE, "-o", out.toString(), "--width", "96", "--height", "54", "--view", "cost",
+                "--accel", "none", "--threads", "2", "--stats");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("parse ", "build ", "no BVH: the paper's loop tests every object",
+                "5,184 rays on 2 threads", "write ", out.toString(), "per ray: 2.00 intersection tests");
+        Run without = Cli.run(EXAMPLE, "-o", out.toString(), "--width", "96", "--height", "54", "--view", "cost");
+        assertThat(without.err()).doesNotContain("per ray:");
+    }
+
+    @Test
+    void statsWithExplainAreNotUsedAndSaySo() {
+        Run run = Cli.run(EXAMPLE, "--explain", "460,490", "--stats");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("--explain follows one ray and times nothing; --stats is not used");
+        assertThat(run.out()).contains("pixel colour: 255 0 0");
+    }
+
+    @Test
     void aViewWithoutOutputGoesBesideTheSceneUnderTheViewsName() throws IOException {
         Path scene = Files.copy(Path.of(EXAMPLE), dir.resolve("paper.txt"));
         for (String view : List.of("cost", "depth", "normal", "id")) {
