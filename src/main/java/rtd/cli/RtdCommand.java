@@ -113,7 +113,10 @@ public final class RtdCommand implements Callable<Integer> {
 
     /** The command line of rtd, with its error handlers, ready to {@code execute}. */
     public static CommandLine commandLine() {
-        return commandLine(StandardStreams.system());
+        CommandLine commandLine = commandLine(StandardStreams.system());
+        commandLine.setOut(PlainLetters.printWriter(System.out, PlainLetters.encodingOf("stdout")));
+        commandLine.setErr(PlainLetters.printWriter(System.err, PlainLetters.encodingOf("stderr")));
+        return commandLine;
     }
 
     /** The command line with {@code streams} for {@code -} and {@code -o -}. */

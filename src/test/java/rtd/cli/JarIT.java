@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.DisplayName;
@@ -25,11 +26,17 @@ class JarIT {
     }
 
     private static Result java(String... args) throws IOException, InterruptedException {
+        return java(Map.of(), args);
+    }
+
+    private static Result java(Map<String, String> environment, String... args) throws IOException, InterruptedException {
         String jar = System.getProperty("rtd.jar", "target/rtd.jar");
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-jar", jar));
         command.addAll(List.of(args));
-        Process process = new ProcessBuilder(command).start();
+        ProcessBuilder builder = new ProcessBuilder(command);
+        builder.environment().putAll(environment);
+        Process process = builder.start();
         process.getOutputStream().close();
         byte[] out = process.getInputStream().readAllBytes();
         byte[] err = process.getErrorStream().readAllBytes();
@@ -50,6 +57,16 @@ class JarIT {
         Result result = java("--version");
         assertThat(result.exitCode()).isZero();
         assertThat(result.out()).matches("(?s)rtd \\d+\\.\\d+\\.\\d+.*");
+    }
+
+    @Test
+    void underAnAsciiLocaleTheExplanationsSignsAreWrittenAsPlainLetters() throws Exception {
+        Result ascii = java(Map.of("LC_ALL", "C", "LANG", "C"), "examples/input_rtd.txt", "--explain", "460,490");
+        assertThat(ascii.exitCode()).as(ascii.err()).isZero();
+        assertThat(ascii.out()).contains("of the 1920 x 1080 picture", "x' = x - w/2 = 460 - 960 = -500", "a = R*R = 1",
+                "c = (O - M)*(O - M) - r^2").doesNotContain("?");
+        Result unicode = java(Map.of("LC_ALL", "C.UTF-8", "LANG", "C.UTF-8"), "examples/input_rtd.txt", "--explain", "460,490");
+        assertThat(unicode.out()).contains("of the 1920 × 1080 picture", "x' = x − w/2 = 460 − 960 = -500", "a = R·R = 1");
     }
 
     @Test

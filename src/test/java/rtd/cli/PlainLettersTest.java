@@ -1,0 +1,58 @@
+package rtd.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintWriter;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+
+@DisplayName("rtd's text in an encoding that lacks its signs")
+class PlainLettersTest {
+
+    private static final String TEXT = "1920 × 1080: x' = x − w/2, a = R·R, t ≥ 0, floor(255·c + ½), 45°, Grüße 😀";
+
+    private static String written(Charset charset) {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintWriter writer = PlainLetters.printWriter(bytes, charset);
+        writer.print(TEXT);
+        writer.print('≤');
+        writer.print(new char[] {'→', '∞'});
+        writer.flush();
+        return bytes.toString(charset);
+    }
+
+    @Test
+    void asciiGetsEachSignAsAKeyboardWritesItAndAQuestionMarkForAnyOtherLetter() {
+        assertThat(written(StandardCharsets.US_ASCII)).isEqualTo(
+                "1920 x 1080: x' = x - w/2, a = R*R, t >= 0, floor(255*c + 1/2), 45 degrees, Gr??e ?<=->inf");
+    }
+
+    @Test
+    void latin1KeepsTheSignsItHasAndSpellsOutTheOthers() {
+        assertThat(written(StandardCharsets.ISO_8859_1)).isEqualTo(
+                "1920 × 1080: x' = x - w/2, a = R·R, t >= 0, floor(255·c + ½), 45°, Grüße ?<=->inf");
+    }
+
+    @Test
+    void utf8IsWrittenAsItIs() {
+        assertThat(written(StandardCharsets.UTF_8)).isEqualTo(TEXT + "≤→∞");
+    }
+
+    @Test
+    void theEncodingIsTheStreamsOwnPropertyOrTheDefault() {
+        assertThat(PlainLetters.encodingOf("rtd-no-such-stream")).isEqualTo(Charset.defaultCharset());
+        System.setProperty("rtd-test-stream.encoding", "ISO-8859-1");
+        System.setProperty("sun.rtd-test-stream.encoding", "UTF-16");
+        try {
+            assertThat(PlainLetters.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.ISO_8859_1);
+            System.setProperty("rtd-test-stream.encoding", "no-such-charset");
+            assertThat(PlainLetters.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.UTF_16);
+        } finally {
+            System.clearProperty("rtd-test-stream.encoding");
+            System.clearProperty("sun.rtd-test-stream.encoding");
+        }
+    }
+}
