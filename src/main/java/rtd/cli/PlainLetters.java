@@ -46,8 +46,12 @@ final class PlainLetters extends FilterWriter {
     static PrintWriter printWriter(OutputStream stream, Charset charset) {
         Writer bytes = new OutputStreamWriter(stream, charset);
         CharsetEncoder encoder = charset.newEncoder();
-        boolean hasEverySign = PLAIN.keySet().stream().allMatch(encoder::canEncode);
-        return new PrintWriter(hasEverySign ? bytes : new PlainLetters(bytes, encoder), true);
+        for (char sign : PLAIN.keySet()) { // a loop, not a stream: no lambda to set up on every run's way
+            if (!encoder.canEncode(sign)) {
+                return new PrintWriter(new PlainLetters(bytes, encoder), true);
+            }
+        }
+        return new PrintWriter(bytes, true);
     }
 
     /**
