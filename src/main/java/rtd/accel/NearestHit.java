@@ -1,11 +1,8 @@
 package rtd.accel;
 
-import java.util.Arrays;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Plane;
 import rtd.math.Ray;
-import rtd.math.Vector3f;
 
 /**
  * One ray, kept as numbers, and the nearest hit found for it so far: the state of the paper's
@@ -64,47 +61,15 @@ final class NearestHit {
     private float skipBeyond;
     /** The exit of the box of the last {@link #entry}. */
     private float exit;
-    /**
-     * The tests of the objects by kind, where there is more than one: of objects tested at their
-     * places (a grid's cells) one by one; of a leaf of one kind, its objects at once; of a leaf of
-     * several, through {@link #leafVisits}.
-     */
-    private final long[] tests;
-    /**
-     * Per leaf of several kinds ({@link Bvh#mixedLeaves}), how many rays tested its objects: counted
-     * by kind in {@link #tests()}. Not one a node: a thread's beams keep 64 of these objects.
-     */
-    private final long[] leafVisits;
-    private final boolean severalKinds;
-    /** The intersection tests of the tree's objects so far. */
-    private long treeTests;
-    private long unboundedTests;
-    /** The numbers of the planes among {@link Bvh#unbounded}: Q and n, six floats each; NaN for other shapes. */
-    private final float[] planes;
+    /** The intersection tests run for this object's rays, for {@code --stats} and {@code --view cost}. */
+    private final TestCounts counts;
+    private final UnboundedObjects unbounded;
 
     NearestHit(Bvh bvh) {
         this.bvh = bvh;
         this.leaves = bvh.leaves;
-        this.tests = new long[leaves.kindNames.length];
-        this.leafVisits = new long[bvh.mixedLeaves.length];
-        this.severalKinds = tests.length > 1;
-        this.planes = planeNumbers(bvh.unbounded);
-    }
-
-    /** Each plane's Q and n, in a row, so that every ray's plane tests read numbers side by side. */
-    private static float[] planeNumbers(IGeometry[] objects) {
-        float[] numbers = new float[6 * objects.length];
-        for (int i = 0; i < objects.length; i++) {
-            if (objects[i] instanceof Plane plane) {
-                Vector3f q = plane.point();
-                Vector3f n = plane.normal();
-                float[] values = {q.x(), q.y(), q.z(), n.x(), n.y(), n.z()};
-                System.arraycopy(values, 0, numbers, 6 * i, 6);
-            } else {
-                Arrays.fill(numbers, 6 * i, 6 * i + 6, Float.NaN);
-            }
-        }
-        return numbers;
+        this.counts = new TestCounts(bvh);
+        this.unbounded = new UnboundedObjects(bvh.unbounded);
     }
 
     /** Starts on a new ray {@code O + t·D}, with no hit yet. */
@@ -199,15 +164,7 @@ final class NearestHit {
     void testLeaf(int leaf) {
         int first = bvh.nodes[2 * leaf];
         int end = first + bvh.nodes[2 * leaf + 1];
-        treeTests += end - first;
-        if (severalKinds) {
-            int kind = bvh.leafKinds[leaf];
-            if (kind >= 0) {
-                tests[kind] += end - first;
-            } else {
-                leafVisits[-1 - kind]++;
-            }
-        }
+        counts.leaf(leaf, end - first);
         for (int i = first; i < end; i++) {
             test(i);
         }
@@ -220,10 +177,7 @@ final class NearestHit {
     void testPlaces(int[] places) {
         for (int place : places) {
             if (place >= 0) {
-                treeTests++;
-                if (severalKinds) {
-                    tests[leaves.kinds[place]]++;
-                }
+                counts.place(place);
                 test(place);
             }
         }
@@ -242,10 +196,7 @@ final class NearestHit {
             if (nearest[place] > skipBeyond * length) {
                 return;
             }
-            treeTests++;
-            if (severalKinds) {
-                tests[leaves.kinds[place]]++;
-            }
+            counts.place(place);
             test(place);
         }
     }
@@ -264,10 +215,7 @@ final class NearestHit {
             if (nearest[place] > farthest) {
                 return;
             }
-            treeTests++;
-            if (severalKinds) {
-                tests[leaves.kinds[place]]++;
-            }
+            counts.place(place);
             test(place);
         }
     }
@@ -282,23 +230,14 @@ final class NearestHit {
 
     /** The paper's tests on the objects without a box, which every ray meets. */
     void testUnbounded() {
-        IGeometry[] objects = bvh.unbounded;
-        if (objects.length == 0) {
+        int count = unbounded.count();
+        if (count == 0) {
             return;
         }
-        unboundedTests++;
-        Ray ray = null; // made only for a shape without a test on numbers
-        for (int i = 0; i < objects.length; i++) {
-            float t;
-            int at = 6 * i;
-            if (planes[at] == planes[at]) { // a plane: its numbers are not NaN
-                t = Plane.hit(planes[at], planes[at + 1], planes[at + 2], planes[at + 3], planes[at + 4], planes[at + 5],
-                        ox, oy, oz, dx, dy, dz);
-            } else {
-                ray = ray != null ? ray : new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
-                t = objects[i].intersect(ray).t();
-            }
-            if (t >= 0) {
+        counts.unbounded();
+        for (int i = 0; i < count; i++) {
+            float t = unbounded.t(i, ox, oy, oz, dx, dy, dz);
+            if (t >= 0) { // false for NaN: no hit
                 consider(bvh.unboundedOrder[i], -1, t, LeafObjects.distance(t, ox, oy, oz, dx, dy, dz));
             }
         }
@@ -365,34 +304,21 @@ final class NearestHit {
 
     /** Intersection tests run for this object's rays so far, by kind of the tree's objects. */
     long[] tests() {
-        if (tests.length == 1) {
-            return new long[] {treeTests}; // one kind: counted per leaf only
-        }
-        long[] byKind = tests.clone();
-        for (int m = 0; m < leafVisits.length; m++) {
-            if (leafVisits[m] > 0) {
-                int leaf = bvh.mixedLeaves[m];
-                int first = bvh.nodes[2 * leaf];
-                for (int i = first; i < first + bvh.nodes[2 * leaf + 1]; i++) {
-                    byKind[leaves.kinds[i]] += leafVisits[m];
-                }
-            }
-        }
-        return byKind;
+        return counts.byKind();
     }
 
     /** How many counters of leaf visits this object keeps, for {@link #tests()}. */
     int leafCounters() {
-        return leafVisits.length;
+        return counts.leafCounters();
     }
 
     /** All intersection tests run for this object's rays so far: a running count, read before and after a ray. */
     long testsRun() {
-        return treeTests + unboundedTests * bvh.unbounded.length;
+        return counts.all();
     }
 
     /** How many rays tested every object without a box. */
     long unboundedTests() {
-        return unboundedTests;
+        return counts.unboundedRays();
     }
 }
