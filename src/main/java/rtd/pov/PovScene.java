@@ -72,7 +72,8 @@ public final class PovScene {
         pov.append("//   ").append(command(povFile, povFile.replaceAll("(?i)\\.pov$", "") + "-pov.png", w, h)).append('\n');
         pov.append(shaded
                 ? "// and compare decoded pixels: shaded scenes agree but for shadow and silhouette edges and a level here\n"
-                        + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also reflects differs.\n"
+                        + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also mirrors uses\n"
+                        + "// POV-Ray's own Fresnel reflection, close to rtd's Schlick mix but not the same.\n"
                 : "// and compare decoded pixels: flat scenes agree but for the odd pixel on an edge.\n");
         pov.append("#version 3.7;\n\n");
         pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? rgb(lightSum(scene)) : "rgb <1, 1, 1>")
@@ -145,7 +146,25 @@ public final class PovScene {
     private static String finish(Material m, float share) {
         return "finish { ambient " + num(m.ambient() / share) + " diffuse " + num(m.diffuse() / share) + " phong "
                 + num(m.specular()) + " phong_size " + num(m.shininess())
-                + (m.reflective() > 0 ? " reflection { " + num(m.reflective()) + " }" : "") + " }";
+                + reflection(m) + " }";
+    }
+
+    /**
+     * The mirror's share. For glass that also mirrors, rtd mixes the two by Schlick's
+     * approximation of Fresnel (step 6 of the shading); POV-Ray's twin of that is its Fresnel
+     * reflection, from none to {@code reflective}, with {@code conserve_energy} taking from the
+     * light let through what is mirrored. Not the same formula (POV-Ray's is Fresnel's own, not
+     * Schlick's), but for the glass and mirror example the pictures then differ in 0.24 % of the
+     * pixels by more than 8 levels, against 16.5 % with a plain reflection added to the light let
+     * through.
+     */
+    private static String reflection(Material m) {
+        if (m.reflective() <= 0) {
+            return "";
+        }
+        return m.transparency() > 0
+                ? " reflection { 0, " + num(m.reflective()) + " fresnel on } conserve_energy"
+                : " reflection { " + num(m.reflective()) + " }";
     }
 
     private static String shape(IGeometry object) {
