@@ -5,6 +5,7 @@ import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.scene.Light;
 
 /**
  * Which objects a shadow ray towards one light may hit, by the direction it comes from: the
@@ -19,10 +20,17 @@ final class LightGrid {
     final PointFootprint footprint;
     /** The cells of the picture, {@code cells.width} pixels square. */
     final ViewGrid cells;
+    /**
+     * How far short of the light the shader's shadow rays end ({@link Light#clearance}): a ray is
+     * served as if it ran on to the light, where the grid's geometry is exact, and its hits are
+     * still only those nearer than its own end.
+     */
+    private final float clearance;
 
-    private LightGrid(PointFootprint footprint, ViewGrid cells) {
+    private LightGrid(PointFootprint footprint, ViewGrid cells, float clearance) {
         this.footprint = footprint;
         this.cells = cells;
+        this.clearance = clearance;
     }
 
     /**
@@ -30,38 +38,40 @@ final class LightGrid {
      * {@code box}, on a picture of {@code size × size} pixels; null if the light lies too near or
      * among them ({@link PointFootprint#around}).
      */
-    static LightGrid build(List<IGeometry> objects, float[] box, Vector3f light, int size, ForkJoinPool pool) {
-        PointFootprint footprint = PointFootprint.around(light, box, size);
+    static LightGrid build(List<IGeometry> objects, float[] box, Light light, int size, ForkJoinPool pool) {
+        PointFootprint footprint = PointFootprint.around(light.position(), box, size);
         if (footprint == null) {
             return null;
         }
         // no camera: the grid's "pixels" are directions from the light; a ray shows anywhere in its pixel (1)
         ViewGrid cells = new ViewGridBuilder(objects, size, size, pool).build(footprint, null, 1, 1);
-        return new LightGrid(footprint, cells);
+        return new LightGrid(footprint, cells, light.clearance());
     }
 
     /**
      * How far from the light a hit of a served ray of length {@code distance} can lie, at most:
-     * {@code distance + g}, as its origin lies at most that far and its hits lie between the
-     * origin and the end, within the gap g of the light ({@link PointFootprint}); a second g and
-     * a millionth are room for rounding past the end.
+     * {@code distance + c + g}, as its origin lies at most that far (c the clearance) and its hits
+     * lie between the origin and the end, within the gap g of the light ({@link PointFootprint});
+     * a second g and a millionth are room for rounding past the end.
      */
     float farthestHit(float distance) {
-        return (float) ((distance + 2 * footprint.gap()) * (1 + 1e-6));
+        return (float) (((double) distance + clearance + 2 * footprint.gap()) * (1 + 1e-6));
     }
 
     /**
      * The cell of a shadow ray, whose question is whether it hits anything nearer than
-     * {@code distance}, or −1 if the grid does not serve it.
+     * {@code distance}, or −1 if the grid does not serve it: served if, run on by the clearance,
+     * it ends at the light.
      */
     int cellOf(Ray ray, float distance) {
         Vector3f origin = ray.origin();
         Vector3f direction = ray.direction();
         double length = Math.sqrt((double) direction.x() * direction.x() + (double) direction.y() * direction.y()
                 + (double) direction.z() * direction.z());
-        double along = distance / length;
+        double toLight = (double) distance + clearance;
+        double along = toLight / length;
         int pixel = footprint.pixelOf(origin.x(), origin.y(), origin.z(), origin.x() + along * direction.x(),
-                origin.y() + along * direction.y(), origin.z() + along * direction.z(), distance);
+                origin.y() + along * direction.y(), origin.z() + along * direction.z(), toLight);
         return pixel < 0 ? -1 : cells.cellOf(pixel % cells.width, pixel / cells.width);
     }
 }

@@ -58,7 +58,7 @@ public final class LightGrids {
                 if (box == null || grids.size() >= most) {
                     break;
                 }
-                LightGrid grid = LightGrid.build(objects, box, light.position(), size, pool);
+                LightGrid grid = LightGrid.build(objects, box, light, size, pool);
                 if (grid != null) {
                     grids.add(grid);
                 }

@@ -98,7 +98,8 @@ final class ShadingExplanation implements ShadingObserver {
         String verdict = blocker == null ? "hits nothing: lit"
                 : "hits #" + (blocker.index() + 1) + " " + blocker.object().kind() + " at |P − O| = "
                         + Numbers.of(blocker.distance()) + (shadowed ? " < " : " ≥ ") + Numbers.of(lightDistance)
-                        + " to the light: " + (shadowed ? "in shadow" : "lit (it lies beyond the light)");
+                        + " (the light's distance less ε = " + Numbers.of(light.clearance()) + "): "
+                        + (shadowed ? "in shadow" : "lit (it lies beyond the light)");
         text.line("shadow ray from over along " + Numbers.of(shadowRay.direction()) + " " + verdict);
         text.line("N·L = " + Numbers.of(terms.lightFacing()) + (terms.lightFacing() <= 0 ? " ≤ 0: the light is behind the surface" : "")
                 + (Float.isNaN(terms.reflectionToEye()) ? "" : ", Rl·E = " + Numbers.of(terms.reflectionToEye())));

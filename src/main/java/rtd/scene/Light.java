@@ -11,4 +11,15 @@ import rtd.math.Vector3f;
  * @param intensity its colour and brightness; 1 a channel is full white (255 in the scene file)
  */
 public record Light(Vector3f position, Rgb intensity) {
+
+    /**
+     * How far short of the light a shadow ray ends: {@code ε = 1e-4·(1 + max(|x|, |y|, |z|))} of
+     * the light's position, the lift off a surface at the ray's other end ({@code rtd.shade.Surface})
+     * measured at the light. Without it, a light placed on a surface (a lamp on a ball, on a
+     * wall) would shadow what it lights by a rounding error at random: the shadow ray ends on
+     * that surface, and its hit there lies a hair nearer or farther than the light.
+     */
+    public float clearance() {
+        return 1e-4f * (1 + Math.max(Math.abs(position.x()), Math.max(Math.abs(position.y()), Math.abs(position.z()))));
+    }
 }

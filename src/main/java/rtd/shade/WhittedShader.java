@@ -118,12 +118,16 @@ public final class WhittedShader implements Shader {
                 || light.position().subtract(surface.over()).normalize().dot(surface.normal()) > 0;
     }
 
-    /** Whether a ray from {@code point} towards the light hits any object nearer than the light. */
+    /**
+     * Whether a ray from {@code point} towards the light hits any object nearer than the light,
+     * by more than the light's {@link Light#clearance}: the ray ends ε short of the light, as it
+     * starts ε above the surface, so that a light placed on a surface lights what it faces.
+     */
     boolean isShadowed(Vector3f point, Light light) {
         shadowRays++;
         Vector3f toLight = light.position().subtract(point);
         Ray shadowRay = new Ray(point, toLight);
-        float distance = toLight.magnitude();
+        float distance = toLight.magnitude() - light.clearance();
         if (observer == ShadingObserver.NONE) {
             return tracer.blocked(shadowRay, distance); // any object before the light will do
         }

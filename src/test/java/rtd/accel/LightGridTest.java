@@ -55,9 +55,12 @@ class LightGridTest {
             for (Vector3f origin : origins) {
                 Vector3f toLight = light.position().subtract(origin); // as the shader makes it
                 Ray ray = new Ray(origin, toLight);
-                float distance = toLight.magnitude();
+                float distance = toLight.magnitude() - light.clearance();
                 assertThat(tracer.blocked(ray, distance)).as("from " + origin + " to " + light.position())
                         .isEqualTo(loopBlocked(scene, ray, distance));
+                float whole = toLight.magnitude(); // a ray that ends at the light itself is answered too
+                assertThat(tracer.blocked(ray, whole)).as("from " + origin + " to " + light.position() + ", whole")
+                        .isEqualTo(loopBlocked(scene, ray, whole));
                 if (grids.grids().stream().anyMatch(grid -> grid.cellOf(ray, distance) >= 0)) {
                     byGrid++;
                 }
@@ -168,7 +171,7 @@ class LightGridTest {
             Vector3f origin = new Vector3f((random.nextFloat() * 2 - 1) * 0.03f, (random.nextFloat() * 2 - 1) * 0.03f,
                     0.06f);
             Ray ray = new Ray(origin, end.subtract(origin));
-            float distance = end.subtract(origin).magnitude();
+            float distance = end.subtract(origin).magnitude() - scene.lights().get(0).clearance(); // as the shader's
             assertThat(tracer.blocked(ray, distance)).as("ray " + i + " " + ray)
                     .isEqualTo(loopBlocked(scene, ray, distance));
             served += grid.cellOf(ray, distance) >= 0 ? 1 : 0;
@@ -231,7 +234,7 @@ class LightGridTest {
                     x[1] + q[1] + beyond * (q[1] - off * end[1]), x[2] + q[2] + beyond * (q[2] - off * end[2]));
             Vector3f toEnd = point(x[0] + off * end[0], x[1] + off * end[1], x[2] + off * end[2]).subtract(origin);
             Ray ray = new Ray(origin, toEnd);
-            float distance = toEnd.magnitude();
+            float distance = toEnd.magnitude() - scene.lights().get(0).clearance(); // as the shader's
 
             boolean loop = loopBlocked(scene, ray, distance);
             assertThat(tracer.blocked(ray, distance)).as("ray " + i + " " + ray).isEqualTo(loop);

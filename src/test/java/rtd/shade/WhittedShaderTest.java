@@ -82,6 +82,29 @@ class WhittedShaderTest {
         assertThat(shader.isShadowed(new Vector3f(-2, 2, -2), light)).as("between light and object").isFalse();
     }
 
+    /**
+     * A lamp on a ball: a light on top of a sphere of radius 1.5 lights a ceiling above it. Each
+     * point's shadow ray ends at the light, where it meets the sphere; without the light's
+     * clearance (1e-4 · (1 + 1.5) = 2.5e-4) the rounding of that hit shadowed 73 of these 400
+     * points at random. A point straight below the ball stays in its shadow.
+     */
+    @Test
+    void aLightOnASurfaceLightsWhatItFacesAndShadowsWhatTheSurfaceHides() {
+        List<IGeometry> objects = List.of(new Sphere(Vector3f.ZERO, 1.5f, new Color(220, 60, 60), Material.DEFAULT));
+        Light lamp = new Light(new Vector3f(0, 1.5f, 0), new Rgb(1, 1, 1));
+        assertThat(lamp.clearance()).isEqualTo(1e-4f * 2.5f);
+        Scene scene = new Scene(Color.BLACK, world(objects).camera(), objects, List.of(lamp));
+        for (WhittedShader shader : List.of(shader(scene), new WhittedShader(scene, Bvh.build(scene).newTracer()))) {
+            int shadowed = 0;
+            for (int i = 0; i < 400; i++) {
+                Vector3f ceiling = new Vector3f(-2 + (i % 20) * 0.2113f, 4, -2 + (i / 20) * 0.1979f);
+                shadowed += shader.isShadowed(ceiling, lamp) ? 1 : 0;
+            }
+            assertThat(shadowed).as("ceiling points in shadow").isZero();
+            assertThat(shader.isShadowed(new Vector3f(0.1f, -4, 0.2f), lamp)).as("below the ball").isTrue();
+        }
+    }
+
     @Test
     void aMirrorFloorReflectsTheSpheresAtHalfStrength() {
         List<IGeometry> objects = defaultObjects();
