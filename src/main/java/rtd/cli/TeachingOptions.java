@@ -3,6 +3,7 @@ package rtd.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -111,6 +112,11 @@ public final class TeachingOptions {
                 return 1;
             }
             timer.endPhase("export");
+        }
+        if (pixel != null && settings.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
+            err.println("rtd: note: --paper draws as the paper does, in flat colours: the scene's lights are not used, "
+                    + "and the explanation follows the flat picture");
+            scene = new Scene(scene.ambient(), scene.camera(), scene.objects(), List.of());
         }
         return pixel != null ? explain(scene, pixel, settings, commandLine.getOut())
                 : view(scene, viewTarget, viewFormat, settings, timer, err);

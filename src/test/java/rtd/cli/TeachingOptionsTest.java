@@ -77,6 +77,21 @@ class TeachingOptionsTest {
     }
 
     @Test
+    void explainWithPaperExplainsTheFlatPictureThatPaperDraws() throws IOException {
+        String lit = Path.of("examples", "lit_paper.txt").toString();
+        Path out = dir.resolve("paper.png");
+        assertThat(Cli.run(lit, "--paper", "--scale", "0.25", "-o", out.toString()).exitCode()).isZero();
+        int rgb = ImageIO.read(out.toFile()).getRGB(60, 130) & 0xFFFFFF;
+        Run run = Cli.run(lit, "--paper", "--scale", "0.25", "--explain", "60,130");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(rgb).isEqualTo(0xFF0000);
+        assertThat(run.out()).contains("the paper's flat colours", "pixel colour: 255 0 0").doesNotContain("WhittedShader");
+        assertThat(run.err()).contains("--paper draws as the paper does, in flat colours");
+        Run shaded = Cli.run(lit, "--scale", "0.25", "--explain", "60,130");
+        assertThat(shaded.out()).contains("WhittedShader.shade").doesNotContain("pixel colour: 255 0 0");
+    }
+
+    @Test
     void statsWithExplainAreNotUsedAndSaySo() {
         Run run = Cli.run(EXAMPLE, "--explain", "460,490", "--stats");
         assertThat(run.exitCode()).as(run.err()).isZero();
