@@ -21,7 +21,9 @@ record Snell(float from, float to, float cosIncidence, float sin2Transmitted) {
         float to = surface.inside() ? 1 : ior;
         float ratio = from / to;
         float cos = surface.eye().dot(surface.normal());
-        return new Snell(from, to, cos, ratio * ratio * (1 - cos * cos));
+        // 1 − cos² is never negative; rounding can make cos a hair above 1 face on, and a large ior's
+        // n² would blow that hair up into a cos θt far above 1 (and a reflectance far below 0)
+        return new Snell(from, to, cos, ratio * ratio * Math.max(0, 1 - cos * cos));
     }
 
     /** {@code n1 / n2}. */

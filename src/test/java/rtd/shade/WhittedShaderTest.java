@@ -154,6 +154,29 @@ class WhittedShaderTest {
         assertThat(Fresnel.schlick(Surface.at(grazing, scene.nearestHit(grazing)))).isCloseTo(0.48873f, within(1e-4f));
     }
 
+    /**
+     * Rays from the centre of a sphere of ior 100,000 leave it face on: cos θi = E·N is 1, or by
+     * rounding a hair above it, which n² = 10¹⁰ would blow up into sin²θt ≪ 0, cos θt ≫ 1 and a
+     * reflectance far below 0 (it was −58,495 in one such pixel).
+     */
+    @Test
+    void aHugeIorLeavingFaceOnKeepsTheAnglesRealAndTheReflectanceBetween0And1() {
+        Material diamondAndMore = new Material(0.1f, 0.9f, 0.9f, 200, 0.5f, 1, 1e5f);
+        Scene scene = world(List.of(new Sphere(new Vector3f(0.3f, -0.7f, 0.2f), 1.3f, Color.fromRGB(0xFFFFFF), diamondAndMore)));
+        java.util.Random random = new java.util.Random(3);
+        for (int i = 0; i < 500; i++) {
+            Ray out = new Ray(new Vector3f(0.3f, -0.7f, 0.2f),
+                    new Vector3f((float) random.nextGaussian(), (float) random.nextGaussian(), (float) random.nextGaussian()));
+            Surface surface = Surface.at(out, scene.nearestHit(out));
+            Snell snell = Snell.at(surface);
+            assertThat(snell.sin2Transmitted()).as("sin²θt of ray " + i).isGreaterThanOrEqualTo(0f);
+            if (!snell.totalInternalReflection()) { // n² · 2.4e-7 is past the critical angle already: most are
+                assertThat(snell.cosTransmitted()).as("cos θt of ray " + i).isBetween(0f, 1f);
+            }
+            assertThat(Fresnel.schlick(surface)).as("reflectance of ray " + i).isBetween(0f, 1f);
+        }
+    }
+
     @Test
     void theOverPointLiesAboveTheSurfaceAndTheUnderPointBelowIt() {
         Scene scene = world(defaultObjects());
