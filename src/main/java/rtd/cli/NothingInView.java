@@ -150,7 +150,7 @@ final class NothingInView {
     }
 
     /** A point as the scene file writes it: (0|0|20). */
-    private static String point(Vector3f p) {
+    static String point(Vector3f p) {
         return "(" + number(p.x()) + "|" + number(p.y()) + "|" + number(p.z()) + ")";
     }
 

@@ -4,6 +4,7 @@ import java.awt.image.BufferedImage;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.DoubleConsumer;
@@ -72,6 +73,10 @@ final class SceneRun {
                     settings.height(), settings.samples(), settings.threads());
             timer.endPhase("build");
 
+            Optional<String> cameraInPlane = CameraInPlane.warning(source.name(), scene, settings.width(), settings.height());
+            if (cameraInPlane.isPresent()) {
+                display.message(cameraInPlane.get());
+            }
             RenderProgress progress = new RenderProgress();
             display.show(ProgressDisplay.Phase.rendering(() -> progress.rowsDone() / (double) settings.height(),
                     (double) settings.width() * settings.height() / 1e6));

@@ -11,7 +11,7 @@ import org.junit.jupiter.api.io.TempDir;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
-/** A picture of background alone gets a one-line warning that names the likely cause; the exit code stays 0. */
+/** A picture of background alone, or of one plane the camera stands in, gets a one-line warning that names the likely cause; the exit code stays 0. */
 @DisplayName("The warning when nothing is in view")
 class NothingInViewTest {
 
@@ -35,6 +35,21 @@ class NothingInViewTest {
         assertThat(run.err().lines()).hasSize(1);
         assertThat(Docs.errors()).contains(line);
         return line;
+    }
+
+    @Test
+    void aCameraThatStandsInAPlaneIsNamedWithThePlane() throws IOException {
+        String scene = "perspective_camera:(0|0|20):(0|0|-1):(88)\nsphere:(3|8|-1):(2):(0|127|255)\n"
+                + "sphere:(-10|1|5):(5):(255|0|0)\nplane:(0|0|0):(0|1|0):(200|200|200)\n";
+        assertThat(warning(render(scene, "--width", "64", "--height", "36"))).isEqualTo("rtd: warning: scene.txt: the "
+                + "camera stands in plane #3 (through (0|0|0), normal (0|1|0)): every ray that leaves it hits that plane at "
+                + "distance 0, so the picture shows that plane alone; move the camera or the plane a little");
+        assertThat(render(scene.replace("plane:(0|0|0)", "plane:(0|-0.001|0)"), "--width", "64", "--height", "36").err())
+                .isEmpty();
+        // the orthographic camera's rays start in the plane of its image: a plane there catches them all
+        assertThat(render("orthographic_camera:(0|0|20):(0|0|-1):(50)\nplane:(0|0|20):(0|0|1):(9|9|9)\n"
+                + "sphere:(0|0|0):(1):(255|0|0)\n", "--width", "64", "--height", "36").err())
+                .contains("the camera stands in plane #1 (through (0|0|20), normal (0|0|1))");
     }
 
     @Test
