@@ -37,8 +37,14 @@ final class NothingInView {
         return false;
     }
 
-    /** Whether some object is painted in the background colour, so that its hits do not show. */
+    /**
+     * Whether some object may be drawn in the background colour, so that its hits do not show: in
+     * a shaded scene any may (under a black light, or in shadow); in a flat one, one painted in it.
+     */
     static boolean someObjectLooksLikeBackground(Scene scene) {
+        if (!scene.lights().isEmpty()) {
+            return true;
+        }
         int background = scene.ambient().getRGB();
         return scene.objects().stream().anyMatch(object -> object.color().getRGB() == background);
     }

@@ -77,6 +77,9 @@ final class SceneRun {
             if (cameraInPlane.isPresent()) {
                 display.message(cameraInPlane.get());
             }
+            for (String note : LightNotes.of(source.name(), scene)) {
+                display.message(note);
+            }
             RenderProgress progress = new RenderProgress();
             display.show(ProgressDisplay.Phase.rendering(() -> progress.rowsDone() / (double) settings.height(),
                     (double) settings.width() * settings.height() / 1e6));

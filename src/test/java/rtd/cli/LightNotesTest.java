@@ -1,0 +1,60 @@
+package rtd.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import rtd.testing.Cli;
+import rtd.testing.Cli.Run;
+
+/** A light that is almost black, and materials without a light, get a line that says so; the picture is still written. */
+@DisplayName("The notes about a scene's light")
+class LightNotesTest {
+
+    private static final String CAMERA_AND_BALL = "orthographic_camera:(0|0|20):(0|0|-1):(50)\n";
+
+    @TempDir
+    Path dir;
+
+    private Run render(String scene) throws IOException {
+        Path file = Files.writeString(dir.resolve("scene.txt"), scene);
+        Run run = Cli.run(file.toString(), "-o", dir.resolve("out.png").toString(), "--width", "64", "--height", "36");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(dir.resolve("out.png")).isRegularFile();
+        return run;
+    }
+
+    /** The line as the catalogue shows it: for scene.txt, and present there word for word. */
+    private String line(Run run) {
+        String line = Docs.firstLine(run.err(), dir);
+        assertThat(run.err().lines()).hasSize(1);
+        assertThat(Docs.errors()).contains(line);
+        return line;
+    }
+
+    @Test
+    void aLightOfOneLevelInEachChannelIsAlmostBlackAndSaysHowFullWhiteIsWritten() throws IOException {
+        Run run = render(CAMERA_AND_BALL + "sphere:(0|0|0):(3):(255|0|0)\nlight:(0|0|10):(255|255|255)\nlight:(0|0|10):(1|1|0)\n");
+        assertThat(line(run)).isEqualTo("rtd: warning: scene.txt: light #2 has the intensity (1|1|0), almost black: rtd's "
+                + "colours run from 0 to 255, so a full white light is (255|255|255)");
+        assertThat(render(CAMERA_AND_BALL + "sphere:(0|0|0):(3):(255|0|0)\nlight:(0|0|10):(2|1|1)\n").err())
+                .as("two levels are dim, not a slip").isEmpty();
+        assertThat(render(CAMERA_AND_BALL + "sphere:(0|0|0):(3):(255|0|0)\nlight:(0|0|10):(0|0|0)\n").err())
+                .as("a light turned off").isEmpty();
+    }
+
+    @Test
+    void materialsWithoutALightSayThatTheyDoNothing() throws IOException {
+        Run run = render(CAMERA_AND_BALL + "material:(m):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0):(m)\n");
+        assertThat(line(run)).isEqualTo("rtd: note: scene.txt: objects have materials, but the scene has no light, so it "
+                + "is drawn in flat colours, as in the paper; add a light: statement to see the materials");
+        assertThat(render(CAMERA_AND_BALL + "material:(m):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0)\n").err())
+                .as("a material no object uses").isEmpty();
+        assertThat(render(CAMERA_AND_BALL + "material:(m):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0):(m)\n"
+                + "light:(0|0|10):(255|255|255)\n").err()).isEmpty();
+    }
+}
