@@ -11,6 +11,7 @@ import rtd.scene.Light;
 import rtd.scene.Scene;
 import rtd.shade.LightTerms;
 import rtd.shade.ShadingObserver;
+import rtd.shade.Snell;
 import rtd.shade.Surface;
 import rtd.shade.WhittedShader;
 
@@ -25,12 +26,26 @@ import rtd.shade.WhittedShader;
  */
 final class ShadingExplanation implements ShadingObserver {
 
-    /** What the tree knows of one open ray: its finish (null: it hit nothing), bounces left, and what was said. */
+    /**
+     * What the tree knows of one open ray: its finish (null: it hit nothing), bounces left, what
+     * was said, and the parts of its colour (step 6's sum) as they come.
+     */
     private static final class Frame {
         Material material;
+        /** Whether the surface hit is open (a plane, a triangle): it has a back, not an inside. */
+        boolean open;
         int remaining;
         boolean reflectionSaid;
         boolean refractionSaid;
+        /** The lights' terms summed: the surface's own colour (step 3). */
+        Rgb surface = Rgb.BLACK;
+        /** What the reflected and the refracted ray see, before they are scaled; null if there is none. */
+        Rgb reflection;
+        Rgb refraction;
+        /** Which of the two the next closed ray is: true for the reflection. */
+        boolean childIsReflection;
+        /** Schlick's reflectance, where it mixes the two; NaN otherwise. */
+        float reflectance = Float.NaN;
     }
 
     private final Text text;
@@ -68,6 +83,7 @@ final class ShadingExplanation implements ShadingObserver {
             return;
         }
         frame.material = hit.object().material();
+        frame.open = hit.object().kind().equals("plane") || hit.object().kind().equals("triangle");
         text.line("hits #" + (hit.index() + 1) + " " + hit.object().kind() + " at t = " + Numbers.of(hit.t()) + ", P = "
                 + Numbers.of(hit.point()) + ", |P − O| = " + Numbers.of(hit.distance()) + ", colour " + hit.object().color());
     }
@@ -75,7 +91,8 @@ final class ShadingExplanation implements ShadingObserver {
     @Override
     public void surface(Surface surface) {
         Material m = surface.material();
-        text.line("N = " + Numbers.of(surface.normal()) + (surface.inside() ? " (the ray is inside: N turned round)" : "")
+        String turned = open.peek().open ? " (the ray meets its back: N turned round)" : " (the ray is inside: N turned round)";
+        text.line("N = " + Numbers.of(surface.normal()) + (surface.inside() ? turned : "")
                 + ", E = −R/|R| = " + Numbers.of(surface.eye()) + ", over = P + ε·N = " + Numbers.of(surface.over()));
         text.line("finish: ambient " + Numbers.of(m.ambient()) + ", diffuse " + Numbers.of(m.diffuse()) + ", specular "
                 + Numbers.of(m.specular()) + ", shininess " + Numbers.of(m.shininess()) + ", reflective "
@@ -93,6 +110,8 @@ final class ShadingExplanation implements ShadingObserver {
     @Override
     public void light(Light light, boolean shadowed, LightTerms terms) {
         lightNumber++;
+        Frame frame = open.peek();
+        frame.surface = frame.surface.plus(terms.sum());
         text.line("light " + lightNumber + " at " + Numbers.of(light.position()) + ", intensity " + Numbers.of(light.intensity())
                 + ":").in();
         String verdict = blocker == null ? "hits nothing: lit"
@@ -113,32 +132,44 @@ final class ShadingExplanation implements ShadingObserver {
     public void reflected(Ray ray) {
         Frame frame = open.peek();
         frame.reflectionSaid = true;
-        text.line("reflection (× reflective " + Numbers.of(frame.material.reflective()) + "):");
+        frame.childIsReflection = true;
+        text.line("reflection along R − 2(R·N)N, from over (× reflective " + Numbers.of(frame.material.reflective()) + "):");
     }
 
     @Override
-    public void refracted(Ray ray) {
+    public void refracted(Ray ray, Snell snell) {
         Frame frame = open.peek();
         sayNoReflection(frame);
         frame.refractionSaid = true;
+        frame.childIsReflection = false;
         text.line("refraction (× transparency " + Numbers.of(frame.material.transparency()) + ", ior "
                 + Numbers.of(frame.material.ior()) + "):");
+        text.in();
+        text.line(snellNumbers(snell) + ", cos θt = √(1 − sin²θt) = " + Numbers.of(snell.cosTransmitted()));
+        text.line("from under = P − ε·N = " + Numbers.of(ray.origin()) + ", along (n·cos θi − cos θt)·N − n·E:");
+        text.out();
     }
 
     @Override
-    public void totalInternalReflection() {
+    public void totalInternalReflection(Snell snell) {
         Frame frame = open.peek();
         sayNoReflection(frame);
         frame.refractionSaid = true;
-        text.line("refraction: none, total internal reflection (black)");
+        text.line("refraction: none, total internal reflection (black): " + snellNumbers(snell) + " > 1");
+    }
+
+    /** Snell's numbers: n1/n2, cos θi and sin²θt. */
+    private static String snellNumbers(Snell snell) {
+        return "n = n1/n2 = " + Numbers.of(snell.from()) + "/" + Numbers.of(snell.to()) + ", cos θi = E·N = "
+                + Numbers.of(snell.cosIncidence()) + ", sin²θt = n²(1 − cos²θi) = " + Numbers.of(snell.sin2Transmitted());
     }
 
     @Override
     public void fresnel(float reflectance) {
         Frame frame = open.peek();
         sayMissing(frame);
-        text.line("Fresnel (Schlick): reflectance " + Numbers.of(reflectance) + "; colour = surface + reflection·"
-                + Numbers.of(reflectance) + " + refraction·(1 − " + Numbers.of(reflectance) + ")");
+        frame.reflectance = reflectance;
+        text.line("Fresnel (Schlick): reflectance R = " + Numbers.of(reflectance));
     }
 
     @Override
@@ -146,9 +177,44 @@ final class ShadingExplanation implements ShadingObserver {
         Frame frame = open.pop();
         if (frame.material != null) {
             sayMissing(frame);
+            text.line("colour = " + sum(frame) + " = " + Numbers.of(colour));
+        } else {
+            text.line("colour = " + Numbers.of(colour));
         }
-        text.line("colour = " + Numbers.of(colour));
         text.out();
+        Frame parent = open.peek();
+        if (parent != null) {
+            if (parent.childIsReflection) {
+                parent.reflection = colour;
+            } else {
+                parent.refraction = colour;
+            }
+        }
+    }
+
+    /**
+     * Step 6's sum, as the shader adds it: the surface, the reflection times reflective, the
+     * refraction times transparency, these two times R and 1 − R where Schlick mixes them; first
+     * in words, then in numbers.
+     */
+    private static String sum(Frame frame) {
+        boolean mixed = !Float.isNaN(frame.reflectance);
+        StringBuilder words = new StringBuilder("surface");
+        StringBuilder numbers = new StringBuilder(Numbers.of(frame.surface));
+        if (frame.reflection != null) {
+            String factor = Numbers.of(frame.material.reflective());
+            words.append(" + reflective·reflection").append(mixed ? "·R" : "");
+            numbers.append(" + ").append(factor).append("·").append(Numbers.of(frame.reflection))
+                    .append(mixed ? "·" + Numbers.of(frame.reflectance) : "");
+        }
+        if (frame.refraction != null) {
+            String factor = Numbers.of(frame.material.transparency());
+            words.append(" + transparency·refraction").append(mixed ? "·(1 − R)" : "");
+            numbers.append(" + ").append(factor).append("·").append(Numbers.of(frame.refraction))
+                    .append(mixed ? "·" + Numbers.of(1 - frame.reflectance) : "");
+        }
+        return frame.reflection == null && frame.refraction == null ? "surface (the lights' terms summed)"
+                : words + " = " + numbers;
     }
 
     private void sayMissing(Frame frame) {

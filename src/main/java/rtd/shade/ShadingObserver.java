@@ -41,12 +41,12 @@ public interface ShadingObserver {
     default void reflected(Ray ray) {
     }
 
-    /** A refracted ray leaves (step 5); its shading follows. */
-    default void refracted(Ray ray) {
+    /** A refracted ray leaves (step 5), bent as {@code snell} says; its shading follows. */
+    default void refracted(Ray ray, Snell snell) {
     }
 
-    /** No refracted ray: the light is totally reflected inside (step 5). */
-    default void totalInternalReflection() {
+    /** No refracted ray: the light is totally reflected inside (step 5), as {@code snell} says. */
+    default void totalInternalReflection(Snell snell) {
     }
 
     /** Schlick's reflectance mixes reflection and refraction (step 6). */

@@ -12,7 +12,7 @@ package rtd.shade;
  * @param cosIncidence   {@code cos θi = E·N}
  * @param sin2Transmitted {@code sin²θt}
  */
-record Snell(float from, float to, float cosIncidence, float sin2Transmitted) {
+public record Snell(float from, float to, float cosIncidence, float sin2Transmitted) {
 
     /** The law at {@code surface}: entering the object from air, or leaving it into air. */
     static Snell at(Surface surface) {
@@ -27,17 +27,17 @@ record Snell(float from, float to, float cosIncidence, float sin2Transmitted) {
     }
 
     /** {@code n1 / n2}. */
-    float ratio() {
+    public float ratio() {
         return from / to;
     }
 
     /** Past the critical angle: no light passes, all is reflected inside. */
-    boolean totalInternalReflection() {
+    public boolean totalInternalReflection() {
         return sin2Transmitted > 1;
     }
 
     /** {@code cos θt = √(1 − sin²θt)}. */
-    float cosTransmitted() {
+    public float cosTransmitted() {
         return (float) Math.sqrt(1 - sin2Transmitted);
     }
 }

@@ -163,14 +163,14 @@ public final class WhittedShader implements Shader {
         }
         Snell snell = Snell.at(surface);
         if (snell.totalInternalReflection()) {
-            observer.totalInternalReflection();
+            observer.totalInternalReflection(snell);
             return Rgb.BLACK;
         }
         refractedRays++;
         Vector3f direction = surface.normal().multiply(snell.ratio() * snell.cosIncidence() - snell.cosTransmitted())
                 .subtract(surface.eye().multiply(snell.ratio()));
         Ray ray = new Ray(surface.under(), direction);
-        observer.refracted(ray);
+        observer.refracted(ray, snell);
         return colourAt(ray, remaining - 1).times(transparency);
     }
 

@@ -14,11 +14,15 @@ import rtd.accel.Bvh;
 import rtd.camera.OrthographicCamera;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.image.Color;
+import rtd.image.Rgb;
 import rtd.math.Vector3f;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
+import rtd.scene.Light;
 import rtd.scene.Scene;
 import rtd.shade.FlatShader;
 import rtd.shade.WhittedShader;
@@ -122,10 +126,10 @@ class PixelExplanationTest {
     void withLightsItShowsEachLightsTermsTheShadowRayAndTheBouncesAsATree() {
         Scene scene = MixedScenes.shaded(MixedScenes.generate(3, 40), 3);
         String text = null;
-        for (int y = 0; y < 60 && (text == null || !text.contains("reflection (×")); y++) {
+        for (int y = 0; y < 60 && text == null; y++) {
             for (int x = 0; x < 80; x++) {
                 String candidate = PixelExplanation.of(scene, x, y, 80, 60);
-                if (candidate.contains("reflection (×")) {
+                if (candidate.contains("from over (× reflective")) {
                     text = candidate;
                     break;
                 }
@@ -133,9 +137,30 @@ class PixelExplanationTest {
         }
         assertThat(text).isNotNull().contains("4. Result, shaded", "light 1 at", "shadow ray from over along",
                 "ambient  = ambient·c⊙I = ", "diffuse  = diffuse·c⊙I·(N·L) = ", "specular = specular·I·(Rl·E)^shininess = ",
-                "5 bounces left", "4 bounces left");
+                "5 bounces left", "4 bounces left", "colour = surface + reflective·reflection");
         int camera = indentOf(text, "5 bounces left");
         assertThat(indentOf(text, "4 bounces left")).isGreaterThan(camera);
+    }
+
+    /**
+     * A ray along the axis of a glass ball that also mirrors, onto a plane seen from its back:
+     * Snell's numbers face on (n = 1/1.5, cos θi = 1, sin²θt = 0, cos θt = 1), the plane's normal
+     * turned round as a back's is, and Schlick's sum in words and numbers, as the shader adds it.
+     */
+    @Test
+    void glassThatMirrorsShowsSnellsNumbersAndSchlicksSumAndAPlanesBack() {
+        List<IGeometry> objects = List.of(
+                new Sphere(Vector3f.ZERO, 1, new Color(255, 255, 255), new Material(0.1f, 0.5f, 0.5f, 100, 0.5f, 0.9f, 1.5f)),
+                new Plane(new Vector3f(0, 0, 5), new Vector3f(0, 0, 1), new Color(200, 0, 0), Material.DEFAULT));
+        Scene scene = new Scene(Color.BLACK, new OrthographicCamera(new Vector3f(0, 0, -5), new Vector3f(0, 0, 1), 1),
+                objects, List.of(new Light(new Vector3f(0, 0, -10), new Rgb(1, 1, 1))));
+        String text = PixelExplanation.of(scene, 1, 1, 2, 2); // x' = y' = 0: the ray along the axis, P = (0|0|-1) exactly
+        assertThat(text).contains(
+                "n = n1/n2 = 1/1.5, cos θi = E·N = 1, sin²θt = n²(1 − cos²θi) = 0, cos θt = √(1 − sin²θt) = 1",
+                "from under = P − ε·N = (0|0|-0.9998)",
+                "(the ray meets its back: N turned round)",
+                "Fresnel (Schlick): reflectance R = 0.04",
+                "colour = surface + reflective·reflection·R + transparency·refraction·(1 − R) = ");
     }
 
     private static int indentOf(String text, String part) {
