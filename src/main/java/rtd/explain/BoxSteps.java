@@ -46,6 +46,10 @@ final class BoxSteps {
             return Float.NaN;
         }
         float t = enter >= 0 ? enter : exit;
+        if (!Float.isFinite(t)) { // as Box.intersect: a direction so short that t overflows
+            text.line("t = " + Numbers.of(t) + " is not finite: the ray's direction is too short to reach the box, no hit");
+            return Float.NaN;
+        }
         text.line(enter >= 0 ? "t = enter = " + Numbers.of(t) + ": a hit" : "enter < 0: O is inside, t = exit = " + Numbers.of(t) + ": a hit");
         return t;
     }

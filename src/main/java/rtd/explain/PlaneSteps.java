@@ -20,8 +20,9 @@ final class PlaneSteps {
             text.line("R·n = 0: the ray runs parallel to the plane, no hit");
             return Float.NaN;
         }
-        text.line("t = ((Q − O)·n) / (R·n) = " + Numbers.of(along) + " / " + Numbers.of(facing) + " = " + Numbers.of(t)
-                + (t >= 0 ? " ≥ 0: a hit" : ": the plane lies behind O, no hit"));
-        return t >= 0 ? t : Float.NaN;
+        String verdict = t == Float.POSITIVE_INFINITY ? ": the ray runs so nearly parallel that it never meets it, no hit"
+                : t >= 0 ? " ≥ 0: a hit" : ": the plane lies behind O, no hit";
+        text.line("t = ((Q − O)·n) / (R·n) = " + Numbers.of(along) + " / " + Numbers.of(facing) + " = " + Numbers.of(t) + verdict);
+        return t >= 0 && t < Float.POSITIVE_INFINITY ? t : Float.NaN; // Plane.hit's verdict
     }
 }
