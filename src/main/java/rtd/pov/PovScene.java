@@ -126,23 +126,23 @@ public final class PovScene {
     }
 
     private static String object(IGeometry object, boolean shaded) {
-        String shape = shape(object);
+        String shape = shape(object); // "sphere { <x, y, z>, r": the pigment and finish follow
         if (!shaded) {
-            return shape + " { " + body(object) + " pigment { " + rgb(object.color()) + " } finish { ambient 1 diffuse 0 } }\n";
+            return shape + " pigment { " + rgb(object.color()) + " } finish { ambient 1 diffuse 0 } }\n";
         }
         Material m = object.material();
         if (m.transparency() <= 0) {
-            return shape + " { " + body(object) + " pigment { " + rgb(object.color()) + " } " + finish(m, 1) + " }\n";
+            return shape + " pigment { " + rgb(object.color()) + " } " + finish(m, 1) + " }\n";
         }
         float t = Math.min(m.transparency(), 0.999f); // POV-Ray's rgbt of 1 would leave no share to scale by
         Rgb c = Rgb.of(object.color());
-        return shape + " { " + body(object) + " pigment { rgbt <" + num(c.red()) + ", " + num(c.green()) + ", "
+        return shape + " pigment { rgbt <" + num(c.red()) + ", " + num(c.green()) + ", "
                 + num(c.blue()) + ", " + num(t) + "> } " + finish(m, 1 - t) + " interior { ior " + num(m.ior())
                 + " } no_shadow }\n"
-                + shape + " { " + body(object) + " pigment { rgb 0 } no_image no_reflection } // its shadow\n";
+                + shape + " pigment { rgb 0 } no_image no_reflection } // its shadow\n";
     }
 
-    /** RTC's finish in POV-Ray's words; ambient and diffuse scaled by {@code 1/share} where rgbt's filter takes a share. */
+    /** rtd's finish (The Ray Tracer Challenge's) in POV-Ray's words; ambient and diffuse scaled by {@code 1/share} where rgbt's filter takes a share. */
     private static String finish(Material m, float share) {
         return "finish { ambient " + num(m.ambient() / share) + " diffuse " + num(m.diffuse() / share) + " phong "
                 + num(m.specular()) + " phong_size " + num(m.shininess())
@@ -167,42 +167,29 @@ public final class PovScene {
                 : " reflection { " + num(m.reflective()) + " }";
     }
 
+    /** The object in POV-Ray's words, up to its pigment: {@code sphere { <x, y, z>, r}. One method for all shapes, so a new shape cannot be half added. */
     private static String shape(IGeometry object) {
-        if (object instanceof Sphere) {
-            return "sphere";
-        }
-        if (object instanceof Plane) {
-            return "plane";
-        }
-        if (object instanceof Triangle triangle) {
-            return triangle.isSmooth() ? "smooth_triangle" : "triangle";
-        }
-        if (object instanceof Box) {
-            return "box";
-        }
-        throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
-    }
-
-    private static String body(IGeometry object) {
         if (object instanceof Sphere s) {
-            return vector(s.center()) + ", " + num(s.radius());
+            return "sphere { " + vector(s.center()) + ", " + num(s.radius());
         }
         if (object instanceof Plane p) {
             double[] n = d(p.normal());
             double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             double[] unit = times(n, 1 / length);
             double[] q = d(p.point());
-            return vector(unit) + ", " + num(q[0] * unit[0] + q[1] * unit[1] + q[2] * unit[2]);
+            return "plane { " + vector(unit) + ", " + num(q[0] * unit[0] + q[1] * unit[1] + q[2] * unit[2]);
+        }
+        if (object instanceof Triangle t && t.isSmooth()) {
+            return "smooth_triangle { " + vector(t.corner(0)) + ", " + vector(t.cornerNormal(0)) + ", " + vector(t.corner(1))
+                    + ", " + vector(t.cornerNormal(1)) + ", " + vector(t.corner(2)) + ", " + vector(t.cornerNormal(2));
         }
         if (object instanceof Triangle t) {
-            if (t.isSmooth()) {
-                return vector(t.corner(0)) + ", " + vector(t.cornerNormal(0)) + ", " + vector(t.corner(1)) + ", "
-                        + vector(t.cornerNormal(1)) + ", " + vector(t.corner(2)) + ", " + vector(t.cornerNormal(2));
-            }
-            return vector(t.corner(0)) + ", " + vector(t.corner(1)) + ", " + vector(t.corner(2));
+            return "triangle { " + vector(t.corner(0)) + ", " + vector(t.corner(1)) + ", " + vector(t.corner(2));
         }
-        Box b = (Box) object;
-        return vector(b.min()) + ", " + vector(b.max());
+        if (object instanceof Box b) {
+            return "box { " + vector(b.min()) + ", " + vector(b.max());
+        }
+        throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
     }
 
     private static String rgb(Color c) {

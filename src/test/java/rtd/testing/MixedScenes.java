@@ -79,8 +79,10 @@ public final class MixedScenes {
         if (object instanceof Plane p) {
             return new Plane(p.point(), p.normal(), colour, material);
         }
-        Box box = (Box) object;
-        return new Box(box.min(), box.max(), colour, material);
+        if (object instanceof Box box) {
+            return new Box(box.min(), box.max(), colour, material);
+        }
+        throw new IllegalArgumentException("no twin for a " + object.kind() + ": add it here and to randomObject");
     }
 
     /**

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -29,9 +30,10 @@ import rtd.testing.Describe;
 /**
  * Random scenes of every kind of object, with materials defined before and after their use and
  * meshes, written as text and read back: they come back the same, and the same in any parts.
+ * (The scenes as objects for the render paths' tests are {@link rtd.testing.MixedScenes}'s.)
  */
-@DisplayName("Scenes of every kind of object")
-class MixedScenesTest {
+@DisplayName("Scenes of every kind of object, written as text")
+class WrittenScenesTest {
 
     private static final String MESH = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 1\nf 1 2 3 4\nf -1 -2 -4\n";
     private static final String[] MISTAKES = {"sphere:(1|2|3):(1):(0|0|0):(nosuch)", "material:(m1):()",
@@ -73,6 +75,17 @@ class MixedScenesTest {
         for (int partSize : new int[] {1, 64, 700, 5000}) {
             assertThat(catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, partSize)).report())
                     .isEqualTo(whole);
+        }
+    }
+
+    /** A new statement that makes an object is written here too, or this test says so. */
+    @Test
+    void writeEveryStatementThatMakesAnObject() {
+        String text = write(new Random(1), 150).text();
+        for (Statement statement : Grammar.STATEMENTS) {
+            if (statement.takesMaterial()) {
+                assertThat(text).as("a '%s' statement", statement.keyword()).contains("\n" + statement.keyword() + ":(");
+            }
         }
     }
 
