@@ -78,6 +78,10 @@ public interface IGeometry {
         return this;
     }
 
-    /** The kind of object, as the scene file names it ("sphere", "plane", ...), for statistics. */
+    /**
+     * The kind of object, as the scene file names it ("sphere", "plane", ...): its name in
+     * {@code --stats}, {@code --explain}, the {@code --view id} legend and the messages; the
+     * accelerators also group objects of one kind for their packed tests.
+     */
     String kind();
 }
