@@ -46,6 +46,11 @@ final class Suggestions {
         return nearest != null ? "did you mean '" + nearest + "'?" : "a statement starts with " + Grammar.keywordList();
     }
 
+    /** Every word of the table, with the keywords it suggests: for the test that holds docs/errors.md to it. */
+    static Map<String, List<String>> synonyms() {
+        return Map.copyOf(SYNONYMS);
+    }
+
     /** Makes each of {@code words} (separated by blanks) mean {@code keywords}. */
     private static void synonyms(String words, String... keywords) {
         for (String word : words.split(" ")) {
