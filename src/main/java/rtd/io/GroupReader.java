@@ -82,9 +82,23 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
         skipBlanks();
         if (!at(')')) {
             throw error(pos, "expected ')' after '" + source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
-                    + source.describe(pos, lineStart), "a name holds only letters, digits, '_' and '-'");
+                    + source.describe(pos, lineStart), at('=') && group == Statement.MATERIAL
+                            ? materialHint(start) : "a name holds only letters, digits, '_' and '-'");
         }
         pos++;
+    }
+
+    /**
+     * For properties written where an object names its material ({@code sphere:…:(reflective=0.5)}):
+     * a material is defined on a line of its own, and named here.
+     */
+    private String materialHint(int start) {
+        int end = start;
+        while (end < bytes.length && bytes[end] != ')' && !ByteClasses.isLineBreak(bytes[end])) {
+            end++;
+        }
+        return "an object names its material here; define the material on a line of its own, such as "
+                + "material:(shiny):(" + source.text(start, end).strip() + "), then write (shiny) here";
     }
 
     /**

@@ -42,6 +42,9 @@ final class Hints {
         if (token.indexOf(',') >= 0) {
             return "separate the numbers of a group with '|', not ','";
         }
+        if (token.indexOf(';') >= 0) {
+            return "separate the numbers of a group, or its properties, with '|', not ';'";
+        }
         return NUMBER_FORMS;
     }
 
