@@ -27,7 +27,8 @@ import rtd.scene.Light;
  * {@code orthographic_camera}, {@code sphere}; Part II's, "The scene file": {@code perspective_camera},
  * {@code plane}, {@code triangle}, {@code box}, {@code mesh}, {@code light}, {@code material}).
  *
- * <p>To add a statement, add one entry to {@link #STATEMENTS}: the reader, the messages (the
+ * <p>To add a statement, add one entry to {@link #STATEMENTS} ({@link Statement#shape} for one that
+ * makes an object, {@link Statement#setting} for the others): the reader, the messages (the
  * usage in "write it as …", the keyword list, "did you mean …?") and the parts of a large file
  * all follow from it. Its groups are read and checked for form by {@link GroupReader} (which
  * {@link StatementReader} extends); its
@@ -40,46 +41,54 @@ final class Grammar {
 
     /** Every statement, in the order the messages list them. */
     static final List<Statement> STATEMENTS = List.of(
-            new Statement("ambient", List.of(numbers("colour", "R|G|B")), false,
+            Statement.setting("ambient", List.of(numbers("colour", "R|G|B")),
                     (v, out) -> out.ambient(v.colour(0))),
-            new Statement("orthographic_camera",
-                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"), numbers("zoom", "zoom")), false,
+            Statement.setting("orthographic_camera",
+                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"), numbers("zoom", "zoom")),
                     (v, out) -> out.camera(new OrthographicCamera(v.vector(0), v.direction(1, VIEW_HELP), v.positive(2)))),
-            new Statement("perspective_camera",
-                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"), numbers("field of view", "fov")),
-                    false,
+            Statement.setting("perspective_camera",
+                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"),
+                            numbers("field of view", "fov")),
                     (v, out) -> out.camera(new PerspectiveCamera(v.vector(0), v.direction(1, VIEW_HELP),
                             v.between(2, 0, 180, "degrees", "it is the angle the picture's width spans, such as 60")))),
-            new Statement("sphere", List.of(numbers("centre", "x|y|z"), numbers("radius", "r"), numbers("colour", "R|G|B")),
-                    true,
+            Statement.shape("sphere",
+                    List.of(numbers("centre", "x|y|z"), numbers("radius", "r"), numbers("colour", "R|G|B")),
                     (v, out) -> out.object(new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material()))),
-            new Statement("plane", List.of(numbers("point", "x|y|z"), numbers("normal", "nx|ny|nz"), numbers("colour", "R|G|B")),
-                    true,
+            Statement.shape("plane",
+                    List.of(numbers("point", "x|y|z"), numbers("normal", "nx|ny|nz"), numbers("colour", "R|G|B")),
                     (v, out) -> out.object(new Plane(v.vector(0),
-                            v.direction(1, "the plane is at right angles to it; (0|1|0) makes a floor"), v.colour(2), v.material()))),
-            new Statement("triangle", List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
-                    numbers("third corner", "x3|y3|z3"), numbers("colour", "R|G|B")), true,
+                            v.direction(1, "the plane is at right angles to it; (0|1|0) makes a floor"), v.colour(2),
+                            v.material()))),
+            Statement.shape("triangle",
+                    List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
+                            numbers("third corner", "x3|y3|z3"), numbers("colour", "R|G|B")),
                     (v, out) -> out.object(triangle(v))),
-            new Statement("box", List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
-                    numbers("colour", "R|G|B")), true,
+            Statement.shape("box",
+                    List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
+                            numbers("colour", "R|G|B")),
                     (v, out) -> out.object(box(v))),
-            new Statement("mesh", List.of(path("file"), numbers("shift", "x|y|z"), numbers("scale", "s"),
-                    numbers("colour", "R|G|B")), true,
+            Statement.shape("mesh",
+                    List.of(path("file"), numbers("shift", "x|y|z"), numbers("scale", "s"), numbers("colour", "R|G|B")),
                     (v, out) -> {
                         Vector3f shift = v.vector(1);
                         float scale = v.positive(2);
                         Color colour = v.colour(3);
                         out.objects(MeshFiles.read(v, 0).triangles(shift, scale, colour, v.material()));
                     }),
-            new Statement("light", List.of(numbers("position", "x|y|z"), numbers("intensity", "R|G|B")), false,
+            Statement.setting("light", List.of(numbers("position", "x|y|z"), numbers("intensity", "R|G|B")),
                     (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
-            new Statement("material", List.of(name("name", "name"), properties("properties",
-                    "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")), false,
-                    (v, out) -> out.material(v.name(0), new Material(v.property(1, "ambient", DEFAULT.ambient(), 0),
-                            v.property(1, "diffuse", DEFAULT.diffuse(), 0), v.property(1, "specular", DEFAULT.specular(), 0),
-                            v.property(1, "shininess", DEFAULT.shininess(), 0),
-                            v.property(1, "reflective", DEFAULT.reflective(), 0),
-                            v.property(1, "transparency", DEFAULT.transparency(), 0), v.property(1, "ior", DEFAULT.ior(), 1)))));
+            Statement.setting("material",
+                    List.of(name("name", "name"), properties("properties",
+                            "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
+                    (v, out) -> out.material(v.name(0), material(v))));
+
+    /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
+    private static Material material(GroupValues v) throws StatementError {
+        return new Material(v.property(1, "ambient", DEFAULT.ambient(), 0), v.property(1, "diffuse", DEFAULT.diffuse(), 0),
+                v.property(1, "specular", DEFAULT.specular(), 0), v.property(1, "shininess", DEFAULT.shininess(), 0),
+                v.property(1, "reflective", DEFAULT.reflective(), 0),
+                v.property(1, "transparency", DEFAULT.transparency(), 0), v.property(1, "ior", DEFAULT.ior(), 1));
+    }
 
     /** The keywords as bytes, beside {@link #STATEMENTS}, to find a line's statement without a String. */
     private static final byte[][] KEYWORDS = STATEMENTS.stream()

@@ -27,6 +27,16 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
         groups = List.copyOf(groups);
     }
 
+    /** A statement that makes an object, a shape: it may name a material in a last group. */
+    static Statement shape(String keyword, List<Group> groups, Builder builder) {
+        return new Statement(keyword, groups, true, builder);
+    }
+
+    /** A statement that sets something of the scene (its background, camera, a light, a material): no material group. */
+    static Statement setting(String keyword, List<Group> groups, Builder builder) {
+        return new Statement(keyword, groups, false, builder);
+    }
+
     /** Builds a statement's value from its groups and gives it to {@code out}. */
     @FunctionalInterface
     interface Builder {
