@@ -1,7 +1,6 @@
 package rtd.accel;
 
 import java.util.ArrayDeque;
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
@@ -36,11 +35,10 @@ final class BvhBuilder {
     /** Nodes with at least this many objects measure, bin and partition them in chunks ({@link ChunkedPasses}). */
     static final int CHUNKED_THRESHOLD = 8 * ChunkedPasses.CHUNK;
 
-    private final List<IGeometry> objects;
     /** The objects with a finite box, which the tree holds: places {@code [0, count)} of {@link #primary}. */
-    private int count;
+    private final int count;
     /** The objects without one (planes), in file order: places {@code [count, objects.size())} of its order. */
-    private int[] unbounded;
+    private final int[] unbounded;
     /**
      * The objects, where the leaves' objects end, in leaf order. Their boxes travel with them,
      * so that every pass over a node's objects reads memory front to back (random reads into
@@ -58,32 +56,19 @@ final class BvhBuilder {
     /** How each node's objects divide, and the dividing. */
     private final SahSplitter splitter;
     private int maxDepth;
-    /** Whether {@link #measureObject} met an object without a finite box; set by any thread, seldom. */
-    private volatile boolean anyUnbounded;
 
     /**
      * A builder for the scene's {@code objects}, that works on {@code pool}, or on the calling
-     * thread alone if it is {@code null}. Each object's box is measured once; the objects
+     * thread alone if it is {@code null}. Each object's box is measured once ({@link ObjectBoxes}); the objects
      * without a finite one are kept apart ({@link #unbounded}).
      */
     BvhBuilder(List<IGeometry> objects, ForkJoinPool pool) {
-        this.objects = objects;
-        this.count = objects.size();
         this.pool = pool;
-        this.primary = ObjectArrays.of(count);
-        this.spare = ObjectArrays.of(count);
-        if (pool == null) { // no lambda either: its first use costs more than a small scene's whole build
-            for (int i = 0; i < count; i++) {
-                measureObject(i);
-            }
-        } else {
-            forEach(this::measureObject);
-        }
-        if (anyUnbounded) {
-            setUnboundedApart();
-        } else {
-            unbounded = new int[0];
-        }
+        this.primary = ObjectArrays.of(objects.size());
+        this.spare = ObjectArrays.of(objects.size());
+        // the lambda is made only for a pool: a small scene's build, on this thread alone, makes none
+        this.unbounded = ObjectBoxes.measure(objects, primary, pool == null ? null : action -> forEach(objects.size(), action));
+        this.count = objects.size() - unbounded.length;
         this.tree = new NodeBlocks(count);
         this.chunked = new ChunkedPasses(pool);
         this.splitter = new SahSplitter(objects, primary, spare, chunked);
@@ -110,39 +95,6 @@ final class BvhBuilder {
         }
     }
 
-    /**
-     * Moves the objects whose box is not finite behind the others, each group in file order,
-     * and leaves {@link #count} at the number of the others.
-     */
-    private void setUnboundedApart() {
-        int kept = 0;
-        int[] apart = new int[0];
-        for (int i = 0; i < count; i++) {
-            if (isFinite(i)) {
-                if (kept != i) {
-                    primary.order()[kept] = primary.order()[i];
-                    System.arraycopy(primary.boxes(), 6 * i, primary.boxes(), 6 * kept, 6);
-                }
-                kept++;
-            } else {
-                apart = Arrays.copyOf(apart, apart.length + 1);
-                apart[apart.length - 1] = primary.order()[i];
-            }
-        }
-        System.arraycopy(apart, 0, primary.order(), kept, apart.length);
-        unbounded = apart;
-        count = kept;
-    }
-
-    private boolean isFinite(int i) {
-        for (int k = 0; k < 6; k++) {
-            if (!Float.isFinite(primary.boxes()[6 * i + k])) {
-                return false;
-            }
-        }
-        return true;
-    }
-
     /** The places in the file of the objects without a finite box, in file order. */
     int[] unbounded() {
         return unbounded;
@@ -151,16 +103,6 @@ final class BvhBuilder {
     /** The number of objects in the tree. */
     int count() {
         return count;
-    }
-
-    /** Puts object {@code i}'s box in place {@code i}. */
-    private void measureObject(int i) {
-        IGeometry object = objects.get(i);
-        object.putBounds(primary.boxes(), 6 * i);
-        primary.order()[i] = i;
-        if (!isFinite(i)) {
-            anyUnbounded = true;
-        }
     }
 
     /** Builds the tree; afterwards {@link #order()} and {@link #boxes()} are in leaf order. */
