@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.Deque;
 import rtd.geometry.Hit;
 import rtd.geometry.Material;
+import rtd.geometry.Triangle;
 import rtd.image.Rgb;
 import rtd.math.Ray;
 import rtd.render.LinearTracer;
@@ -92,6 +93,13 @@ final class ShadingExplanation implements ShadingObserver {
     public void surface(Surface surface) {
         Material m = surface.material();
         String turned = open.peek().open ? " (the ray meets its back: N turned round)" : " (the ray is inside: N turned round)";
+        if (surface.hit().object() instanceof Triangle triangle && triangle.isSmooth()) {
+            float[] w = triangle.cornerWeights(surface.hit().point());
+            text.line("smooth: N = normalize(w1·n1 + w2·n2 + w3·n3), the corners' normals n1 = "
+                    + Numbers.of(triangle.cornerNormal(0)) + ", n2 = " + Numbers.of(triangle.cornerNormal(1)) + ", n3 = "
+                    + Numbers.of(triangle.cornerNormal(2)) + " by P's weights (the area across from each corner) w = ("
+                    + Numbers.of(w[0]) + "|" + Numbers.of(w[1]) + "|" + Numbers.of(w[2]) + ")");
+        }
         text.line("N = " + Numbers.of(surface.normal()) + (surface.inside() ? turned : "")
                 + ", E = −R/|R| = " + Numbers.of(surface.eye()) + ", over = P + ε·N = " + Numbers.of(surface.over()));
         text.line("finish: ambient " + Numbers.of(m.ambient()) + ", diffuse " + Numbers.of(m.diffuse()) + ", specular "

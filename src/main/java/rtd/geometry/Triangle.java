@@ -128,13 +128,23 @@ public final class Triangle implements IGeometry {
         if (cornerNormals == null) {
             return planeNormal().normalize();
         }
+        float[] w = cornerWeights(point);
+        Vector3f blend = cornerNormals[0].multiply(w[0]).add(cornerNormals[1].multiply(w[1]))
+                .add(cornerNormals[2].multiply(w[2]));
+        return blend.normalize();
+    }
+
+    /**
+     * The barycentric weights of {@code point} in this triangle, one per corner, summing to 1: each
+     * the area on the far side of its corner (the edge opposite it, to the point), over the whole.
+     * A smooth triangle's normal blends its corners' normals by them; {@code --explain} shows them.
+     */
+    public float[] cornerWeights(Vector3f point) {
         float w1 = RayTriangle.side(v, at, 1, point.x(), point.y(), point.z()); // the edge p2 → p3, opposite p1
         float w2 = RayTriangle.side(v, at, 2, point.x(), point.y(), point.z());
         float w3 = RayTriangle.side(v, at, 0, point.x(), point.y(), point.z());
         float sum = w1 + w2 + w3;
-        Vector3f blend = cornerNormals[0].multiply(w1 / sum).add(cornerNormals[1].multiply(w2 / sum))
-                .add(cornerNormals[2].multiply(w3 / sum));
-        return blend.normalize();
+        return new float[] {w1 / sum, w2 / sum, w3 / sum};
     }
 
     /**

@@ -17,6 +17,7 @@ import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Vector3f;
@@ -161,6 +162,21 @@ class PixelExplanationTest {
                 "(the ray meets its back: N turned round)",
                 "Fresnel (Schlick): reflectance R = 0.04",
                 "colour = surface + reflective·reflection·R + transparency·refraction·(1 − R) = ");
+    }
+
+    /** A smooth triangle's normal, checkable by hand: its corners' normals and P's weights, here (½, ¼, ¼). */
+    @Test
+    void aSmoothTrianglesNormalShowsTheCornerNormalsAndTheWeightsItBlends() {
+        Triangle smooth = new Triangle(new Vector3f(0, 0, 0), new Vector3f(1, 0, 0), new Vector3f(0, 1, 0),
+                new Vector3f[] {new Vector3f(0, 0, 1), new Vector3f(1, 0, 1), new Vector3f(0, 1, 1)}, new Color(50, 90, 190),
+                Material.DEFAULT);
+        Scene scene = new Scene(Color.BLACK, new OrthographicCamera(new Vector3f(0.25f, 0.25f, 5), new Vector3f(0, 0, -1), 1),
+                List.of(smooth), List.of(new Light(new Vector3f(0, 0, 10), new Rgb(1, 1, 1))));
+        String text = PixelExplanation.of(scene, 1, 1, 2, 2); // the ray from (0.25|0.25|5) straight down onto P = (0.25|0.25|0)
+        assertThat(text).contains("smooth: N = normalize(w1·n1 + w2·n2 + w3·n3), the corners' normals n1 = (0|0|1), "
+                + "n2 = (1|0|1), n3 = (0|1|1) by P's weights (the area across from each corner) w = (0.5|0.25|0.25)");
+        float length = (float) Math.sqrt(0.25 * 0.25 * 2 + 1); // normalize((0.25|0.25|1))
+        assertThat(text).contains("N = " + Numbers.of(new Vector3f(0.25f / length, 0.25f / length, 1 / length)));
     }
 
     private static int indentOf(String text, String part) {
