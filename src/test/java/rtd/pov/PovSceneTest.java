@@ -99,16 +99,8 @@ class PovSceneTest {
         Scene scene = shadedScene();
         int w = 160;
         int h = 120;
-        BufferedImage rtd = ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene),
-                tracer -> new WhittedShader(scene, tracer), w, h, 2, new RenderProgress()).image().toBufferedImage();
-        BufferedImage pov = povRay(scene, w, h);
-        int far = 0;
-        for (int y = 0; y < h; y++) {
-            for (int x = 0; x < w; x++) {
-                far += differ(rtd.getRGB(x, y), pov.getRGB(x, y)) > 2 ? 1 : 0;
-            }
-        }
-        assertThat(far).as("pixels more than 2 levels apart").isLessThanOrEqualTo(w * h / 50);
+        assertThat(pixelsApart(shaded(scene, w, h), povRay(scene, w, h), 2)).as("pixels more than 2 levels apart")
+                .isLessThanOrEqualTo(w * h / 50);
     }
 
     /**
@@ -124,16 +116,25 @@ class PovSceneTest {
         assertThat(PovScene.of(scene, w, h, "g.pov")).contains("reflection { 0, 0.9 fresnel on } conserve_energy",
                 "phong_size 300 reflection { 0.9 } }", "reflection { 0.15 }");
         PovRay.assumeInstalled();
-        BufferedImage rtd = ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene),
+        assertThat(pixelsApart(shaded(scene, w, h), povRay(scene, w, h), 8)).as("pixels more than 8 levels apart")
+                .isLessThanOrEqualTo(w * h / 100);
+    }
+
+    /** rtd's shaded picture of {@code scene}, through the paper's loop. */
+    private static BufferedImage shaded(Scene scene, int w, int h) {
+        return ParallelRenderer.render(scene.camera(), () -> new LinearTracer(scene),
                 tracer -> new WhittedShader(scene, tracer), w, h, 2, new RenderProgress()).image().toBufferedImage();
-        BufferedImage pov = povRay(scene, w, h);
+    }
+
+    /** How many pixels differ by more than {@code levels} in some channel. */
+    private static int pixelsApart(BufferedImage a, BufferedImage b, int levels) {
         int far = 0;
-        for (int y = 0; y < h; y++) {
-            for (int x = 0; x < w; x++) {
-                far += differ(rtd.getRGB(x, y), pov.getRGB(x, y)) > 8 ? 1 : 0;
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                far += differ(a.getRGB(x, y), b.getRGB(x, y)) > levels ? 1 : 0;
             }
         }
-        assertThat(far).as("pixels more than 8 levels apart").isLessThanOrEqualTo(w * h / 100);
+        return far;
     }
 
     private static int differ(int a, int b) {
