@@ -2,25 +2,18 @@ package rtd.cli;
 
 import java.util.ArrayList;
 import java.util.List;
-import rtd.geometry.IGeometry;
-import rtd.geometry.Material;
 import rtd.image.Rgb;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
- * Two slips with light that draw a picture without a word of why it looks wrong: a light so dim
+ * A slip with light that draws a picture without a word of why it looks wrong: a light so dim
  * it is nearly black, as a light of {@code (1|1|1)} is when written as <i>The Ray Tracer
- * Challenge</i> writes full white (rtd's colours run to 255); and materials in a scene without
- * any light, which is drawn in the paper's flat colours, so that the materials do nothing.
+ * Challenge</i> writes full white (rtd's colours run to 255). (Materials in a scene without a
+ * light are told by the reader, at the material's line: {@code rtd.io.MaterialWarnings}.)
  */
 final class LightNotes {
 
-    /**
-     * The most objects looked at for a material: a student's scene, in a millisecond or two. A
-     * million objects, scattered in memory, take 15 ms to visit (measured), more than a note is worth.
-     */
-    private static final int MOST_LOOKED_AT = 100_000;
     /** One level of 255: a light no brighter than this in every channel is all but black. */
     private static final float ONE_LEVEL = 1 / 255f;
 
@@ -40,22 +33,7 @@ final class LightNotes {
                         + "rtd's colours run from 0 to 255, so a full white light is (255|255|255)");
             }
         }
-        if (lights.isEmpty() && scene.objects().size() <= MOST_LOOKED_AT && anyMaterial(scene.objects())) {
-            notes.add("rtd: note: " + name + ": objects have materials, but the scene has no light, so it is drawn in "
-                    + "flat colours, as in the paper; add a light: statement to see the materials");
-        }
         return notes;
-    }
-
-    private static boolean anyMaterial(List<IGeometry> objects) {
-        // a loop over a million objects, comparing references: an object that names no material has
-        // Material.DEFAULT itself, and a record's equals would cost its first call's setting up on every run
-        for (int i = 0, n = objects.size(); i < n; i++) {
-            if (objects.get(i).material() != Material.DEFAULT) {
-                return true;
-            }
-        }
-        return false;
     }
 
     private static long level(float channel) {

@@ -4,6 +4,8 @@ import java.awt.image.BufferedImage;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicLong;
@@ -14,6 +16,7 @@ import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
 import rtd.io.ImageWriting;
+import rtd.io.SceneError;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.image.Rgb;
@@ -59,7 +62,7 @@ final class SceneRun {
         try (ProgressDisplay display = ProgressDisplay.start(settings.progress(), err)) {
             PhaseTimer timer = new PhaseTimer();
             display.show(ProgressDisplay.Phase.of("reading " + source.name()));
-            Scene scene = settings.scale().of(read(source));
+            Scene scene = settings.scale().of(read(source, display));
             timer.endPhase("parse");
             if (export != null) { // --export-pov, planned with the picture's file, from this one read of the scene
                 display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
@@ -103,9 +106,15 @@ final class SceneRun {
         err.print(report); // once the progress line is gone
     }
 
-    private Scene read(SceneSource source) throws SceneException, FileError {
+    /** Reads the scene; its warnings are shown as they come, each located as a mistake is. */
+    private Scene read(SceneSource source, ProgressDisplay display) throws SceneException, FileError {
         try {
-            return source.read(streams);
+            List<SceneError> warnings = new ArrayList<>();
+            Scene scene = source.read(streams, warnings);
+            for (SceneError warning : warnings) {
+                display.message(warning.formatAsWarning().stripTrailing());
+            }
+            return scene;
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + source.name() + "': " + FileProblems.reason(e), e);
         }

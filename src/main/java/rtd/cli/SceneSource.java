@@ -2,6 +2,8 @@ package rtd.cli;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
+import rtd.io.SceneError;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.scene.Scene;
@@ -27,14 +29,14 @@ record SceneSource(Path path, boolean stdin) {
         return stdin ? STDIN_NAME : path.toString();
     }
 
-    /** Reads and parses the scene. */
-    Scene read(StandardStreams streams) throws SceneException, IOException {
+    /** Reads and parses the scene; its warnings (slips that are no mistakes) go to {@code warnings}. */
+    Scene read(StandardStreams streams, List<SceneError> warnings) throws SceneException, IOException {
         if (!stdin) {
-            return SceneIO.readScene(path);
+            return SceneIO.readScene(path, warnings);
         }
         if (streams.inPath().isPresent()) {
-            return SceneIO.readScene(streams.inPath().get(), STDIN_NAME);
+            return SceneIO.readScene(streams.inPath().get(), STDIN_NAME, warnings);
         }
-        return SceneIO.readScene(streams.in(), STDIN_NAME);
+        return SceneIO.readScene(streams.in(), STDIN_NAME, warnings);
     }
 }

@@ -3,6 +3,7 @@ package rtd.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.Model.CommandSpec;
@@ -11,6 +12,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import rtd.explain.PixelExplanation;
 import rtd.io.ImageFormat;
+import rtd.io.SceneError;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.scene.Scene;
@@ -195,7 +197,13 @@ public final class TeachingOptions {
     private static Scene readScene(RenderSettings settings, PrintWriter err) throws SceneException {
         Path path = settings.scene();
         try {
-            return settings.scale().of(SceneIO.readScene(path));
+            List<SceneError> warnings = new ArrayList<>();
+            Scene scene = settings.scale().of(SceneIO.readScene(path, warnings));
+            for (SceneError warning : warnings) {
+                err.print(warning.formatAsWarning());
+            }
+            err.flush();
+            return scene;
         } catch (IOException e) {
             err.println("rtd: cannot read the scene file '" + path + "': " + FileProblems.reason(e));
             return null;

@@ -19,7 +19,9 @@ import rtd.scene.Scene;
  * the scene and the messages are the same as from reading the file in one go. Joining is also
  * where what only the whole file can tell is checked: one camera, one {@code ambient}, one
  * material per name; and where the objects that name a material, which may be defined further
- * down, are built.
+ * down, are built. Three slips that are no mistakes are told as warnings, located as mistakes
+ * are: a material no object names, an {@code ior} without {@code transparency}, and materials in
+ * a scene without a light.
  */
 final class PartJoin {
 
@@ -28,8 +30,11 @@ final class PartJoin {
     private PartJoin() {
     }
 
-    /** The scene the parts hold together, or every mistake in them, ordered by place. */
-    static Scene join(SourceText source, List<ScenePart> parts) throws SceneException {
+    /**
+     * The scene the parts hold together, or every mistake in them, ordered by place; its warnings
+     * go to {@code warnings} (null: dropped), in file order.
+     */
+    static Scene join(SourceText source, List<ScenePart> parts, List<SceneError> warnings) throws SceneException {
         List<ScenePart.Found> errors = new ArrayList<>();
         List<ScenePart.Located<Color>> ambients = new ArrayList<>();
         List<ScenePart.Located<ICamera>> cameras = new ArrayList<>();
@@ -56,7 +61,8 @@ final class PartJoin {
                     "the first camera is at line " + cameras.get(0).place().line())));
         }
         Map<String, Material> materials = materials(definitions, errors);
-        List<IGeometry> objects = objects(parts, materials, broken, errors);
+        Set<String> named = new HashSet<>();
+        List<IGeometry> objects = objects(parts, materials, broken, named, errors);
         if (errors.isEmpty() && statements == 0) {
             errors.add(found(atStart(source, "the scene is empty: it has no statements, only blanks and comments",
                     "a scene needs at least a camera, such as " + CAMERA_EXAMPLE)));
@@ -68,6 +74,9 @@ final class PartJoin {
             List<SceneError> shown = errors.subList(0, Math.min(SceneParser.MAX_ERRORS, errors.size())).stream()
                     .map(ScenePart.Found::error).toList();
             throw new SceneException(shown, errors.size() > SceneParser.MAX_ERRORS);
+        }
+        if (warnings != null) {
+            warnings.addAll(MaterialWarnings.of(definitions, named, !lights.isEmpty()));
         }
         Color ambient = ambients.isEmpty() ? Color.BLACK : ambients.get(0).value();
         return new Scene(ambient, cameras.get(0).value(), objects, lights);
@@ -110,7 +119,7 @@ final class PartJoin {
      * material, built now that every material is known.
      */
     private static List<IGeometry> objects(List<ScenePart> parts, Map<String, Material> materials, Set<String> broken,
-            List<ScenePart.Found> errors) {
+            Set<String> named, List<ScenePart.Found> errors) {
         int count = 0;
         for (ScenePart part : parts) {
             count += part.objects.size() + part.pending.size(); // a pending mesh may make more
@@ -122,7 +131,7 @@ final class PartJoin {
             for (ScenePart.Pending pending : part.pending) {
                 objects.addAll(part.objects.subList(next, pending.index()));
                 next = pending.index();
-                build(pending.values(), materials, broken, out, errors);
+                named.add(build(pending.values(), materials, broken, out, errors));
             }
             objects.addAll(part.objects.subList(next, part.objects.size())); // copied in bulk: early in a run, faster than one by one
         }
@@ -130,11 +139,11 @@ final class PartJoin {
     }
 
     /**
-     * Builds an object that names a material. An unknown name is an error at the name, unless its
-     * definition has a mistake, which is reported already; the rest of the statement is still
-     * checked, so that one run shows all its mistakes.
+     * Builds an object that names a material, and answers the name. An unknown name is an error at
+     * the name, unless its definition has a mistake, which is reported already; the rest of the
+     * statement is still checked, so that one run shows all its mistakes.
      */
-    private static void build(GroupValues values, Map<String, Material> materials, Set<String> broken,
+    private static String build(GroupValues values, Map<String, Material> materials, Set<String> broken,
             Statement.Output out, List<ScenePart.Found> errors) {
         Statement statement = values.statement();
         int group = statement.groups().size(); // the last, optional group: the material's name
@@ -157,6 +166,7 @@ final class PartJoin {
         } catch (StatementError e) {
             ScenePart.addErrors(errors, e);
         }
+        return name;
     }
 
     private static ScenePart.Found found(SceneError error) {

@@ -23,9 +23,18 @@ public record SceneError(String file, int line, int column, String message, Stri
      * </pre>
      */
     public String format() {
+        return format("error");
+    }
+
+    /** As {@link #format()}, for a warning: the same place, excerpt and help, as {@code warning:}. */
+    public String formatAsWarning() {
+        return format("warning");
+    }
+
+    private String format(String kind) {
         StringBuilder text = new StringBuilder();
         text.append(file).append(':').append(line).append(':').append(column)
-                .append(": error: ").append(message).append('\n');
+                .append(": ").append(kind).append(": ").append(message).append('\n');
         String number = String.valueOf(line);
         String gutter = " ".repeat(number.length() + 2);
         if (sourceLine != null) {

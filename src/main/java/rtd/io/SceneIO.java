@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.util.List;
 import java.util.function.DoubleConsumer;
 import rtd.image.Picture;
 import rtd.scene.Scene;
@@ -40,33 +41,41 @@ public final class SceneIO {
      * @throws IOException    if the file cannot be read
      */
     public static Scene readScene(Path path) throws SceneException, IOException {
+        return readScene(path, (List<SceneError>) null);
+    }
+
+    /**
+     * As {@link #readScene(Path)}, adding to {@code warnings} what is no mistake but likely a slip
+     * (a material no object names, say), located as a mistake is.
+     */
+    public static Scene readScene(Path path, List<SceneError> warnings) throws SceneException, IOException {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
         Path folder = path.getParent() == null ? Path.of("") : path.getParent();
-        return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder));
+        return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder), warnings);
     }
 
     /**
-     * Reads the scene at {@code path} as {@link #readScene(Path)} does, under the name
+     * Reads the scene at {@code path} as {@link #readScene(Path, List)} does, under the name
      * {@code name} in error messages: {@code <stdin>} for the standard input, read through
      * {@code /dev/stdin}.
      */
-    public static Scene readScene(Path path, String name) throws SceneException, IOException {
-        return parse(new SourceText(name, SceneFileReader.read(path), Path.of("")));
+    public static Scene readScene(Path path, String name, List<SceneError> warnings) throws SceneException, IOException {
+        return parse(new SourceText(name, SceneFileReader.read(path), Path.of("")), warnings);
     }
 
     /**
      * Reads a scene from the stream {@code in} where the system has no {@code /dev/stdin}: all
      * of it, up to {@link #MAX_SCENE_BYTES}; {@code name} stands for it in error messages.
      */
-    public static Scene readScene(InputStream in, String name) throws SceneException, IOException {
+    public static Scene readScene(InputStream in, String name, List<SceneError> warnings) throws SceneException, IOException {
         byte[] bytes = in.readNBytes((int) MAX_SCENE_BYTES + 1);
         if (bytes.length > MAX_SCENE_BYTES) {
             throw new FileSystemException(name, null, "it is larger than " + SceneFileReader.bytes(MAX_SCENE_BYTES)
                     + "; rtd reads scene files of at most " + SceneFileReader.bytes(MAX_SCENE_BYTES));
         }
-        return parse(new SourceText(name, bytes, Path.of("")));
+        return parse(new SourceText(name, bytes, Path.of("")), warnings);
     }
 
     /**
@@ -89,13 +98,18 @@ public final class SceneIO {
 
     /** As {@link #parseScene(String, byte[])}, with the OBJ files of meshes found relative to {@code meshFolder}. */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder) throws SceneException {
-        return parse(new SourceText(name, bytes, meshFolder));
+        return parse(new SourceText(name, bytes, meshFolder), null);
+    }
+
+    /** As {@link #parseScene(String, String)}, adding the scene's warnings to {@code warnings}. */
+    public static Scene parseScene(String name, String text, List<SceneError> warnings) throws SceneException {
+        return parse(new SourceText(name, text.getBytes(StandardCharsets.UTF_8), Path.of("")), warnings);
     }
 
     /** Parses {@code source}, and then closes it: the scene needs its bytes no more. */
-    private static Scene parse(SourceText source) throws SceneException {
+    private static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
         try (source) {
-            return SceneParser.parse(source);
+            return SceneParser.parse(source, warnings);
         }
     }
 

@@ -35,13 +35,21 @@ final class SceneParser {
     private SceneParser() {
     }
 
-    /** Reads a scene, or throws every mistake found in it. */
-    static Scene parse(SourceText source) throws SceneException {
-        return parse(source, PART_SIZE);
+    /**
+     * Reads a scene, or throws every mistake found in it; what is no mistake but likely a slip
+     * goes to {@code warnings} (null: dropped), in file order.
+     */
+    static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
+        return parse(source, PART_SIZE, warnings);
     }
 
-    /** As {@link #parse(SourceText)}, cutting the file into parts of about {@code partSize} bytes. */
+    /** As {@link #parse(SourceText, List)} without the warnings, cutting the file into parts of about {@code partSize} bytes. */
     static Scene parse(SourceText source, int partSize) throws SceneException {
+        return parse(source, partSize, null);
+    }
+
+    /** As {@link #parse(SourceText, List)}, cutting the file into parts of about {@code partSize} bytes. */
+    static Scene parse(SourceText source, int partSize, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
         int start = ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0;
         int[] cuts = FileCuts.cuts(bytes, start, partSize);
@@ -66,7 +74,7 @@ final class SceneParser {
             // of one part: it is read again in one go.
             parts = List.of(readPart(source, new int[] {start, bytes.length}, new int[] {1, firstLines[cuts.length - 1]}, 0));
         }
-        return PartJoin.join(source, parts);
+        return PartJoin.join(source, parts, warnings);
     }
 
     private static boolean aCommentSpansACut(List<ScenePart> parts) {

@@ -11,7 +11,7 @@ import org.junit.jupiter.api.io.TempDir;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
-/** A light that is almost black, and materials without a light, get a line that says so; the picture is still written. */
+/** A light that is almost black, and the slips with materials, get a line that says so; the picture is still written. */
 @DisplayName("The notes about a scene's light")
 class LightNotesTest {
 
@@ -48,13 +48,17 @@ class LightNotesTest {
     }
 
     @Test
-    void materialsWithoutALightSayThatTheyDoNothing() throws IOException {
-        Run run = render(CAMERA_AND_BALL + "material:(m):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0):(m)\n");
-        assertThat(line(run)).isEqualTo("rtd: note: scene.txt: objects have materials, but the scene has no light, so it "
-                + "is drawn in flat colours, as in the paper; add a light: statement to see the materials");
-        assertThat(render(CAMERA_AND_BALL + "material:(m):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0)\n").err())
-                .as("a material no object uses").isEmpty();
+    void materialSlipsAreToldAtTheMaterialsLineAndThePictureIsStillDrawn() throws IOException {
+        Run run = render(CAMERA_AND_BALL + "material:(shiny):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0):(shiny)\n");
+        assertThat(Docs.firstLine(run.err(), dir)).startsWith("scene.txt:2:11: warning: materials change nothing here: "
+                + "the scene has no light");
+        assertThat(Docs.errors()).contains(Docs.firstLine(run.err(), dir));
+        Run unused = render(CAMERA_AND_BALL + "light:(0|10|10):(255|255|255)\nmaterial:(glass):(transparency=0.9|ior=1.5)\n"
+                + "sphere:(0|0|0):(3):(255|0|0)\n");
+        assertThat(Docs.firstLine(unused.err(), dir)).isEqualTo("scene.txt:3:11: warning: material 'glass' is defined, "
+                + "but no object names it");
+        assertThat(unused.err()).doesNotContain("bends nothing");
         assertThat(render(CAMERA_AND_BALL + "material:(m):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0):(m)\n"
-                + "light:(0|0|10):(255|255|255)\n").err()).isEmpty();
+                + "light:(0|0|10):(255|255|255)\n").err()).as("a lit scene whose material is named").isEmpty();
     }
 }

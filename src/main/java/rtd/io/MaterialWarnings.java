@@ -1,0 +1,49 @@
+package rtd.io;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import rtd.geometry.Material;
+
+/**
+ * Three slips with materials that are no mistakes, so the scene is drawn, but that change nothing
+ * in the picture, so that a student would wonder why: a material no object names; an {@code ior}
+ * with no {@code transparency}, which bends no light as none goes through; and materials in a
+ * scene without a light, which is drawn in the paper's flat colours. Each is told at the
+ * material's line, as a mistake is.
+ */
+final class MaterialWarnings {
+
+    private MaterialWarnings() {
+    }
+
+    /**
+     * The warnings for the material {@code definitions} (in file order), of which the objects
+     * {@code named} some, in a scene with or without a light.
+     */
+    static List<SceneError> of(List<ScenePart.Located<ScenePart.Named>> definitions, Set<String> named, boolean lit) {
+        List<SceneError> warnings = new ArrayList<>();
+        if (!lit && !definitions.isEmpty()) {
+            warnings.add(at(definitions.get(0).place(), "materials change nothing here: the scene has no light, so it is "
+                    + "drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
+        }
+        for (ScenePart.Located<ScenePart.Named> definition : definitions) {
+            String name = definition.value().name();
+            Material material = definition.value().material();
+            if (!named.contains(name)) {
+                warnings.add(at(definition.place(), "material '" + name + "' is defined, but no object names it",
+                        "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):(" + name
+                                + ")"));
+            }
+            if (material.ior() != 1 && material.transparency() <= 0) {
+                warnings.add(at(definition.place(), "the ior of material '" + name + "' bends nothing: its transparency "
+                        + "is 0, so no light goes through it", "let light through, such as transparency=0.9"));
+            }
+        }
+        return warnings;
+    }
+
+    private static SceneError at(SceneError place, String message, String help) {
+        return new SceneError(place.file(), place.line(), place.column(), message, place.sourceLine(), help);
+    }
+}

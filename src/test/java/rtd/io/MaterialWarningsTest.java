@@ -1,0 +1,47 @@
+package rtd.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.catchThrowableOfType;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+
+/** The slips with materials that are no mistakes: told as warnings at the material's line, in file order. */
+@DisplayName("The warnings about materials")
+class MaterialWarningsTest {
+
+    private static final String CAMERA = "orthographic_camera:(0|0|20):(0|0|-1):(50)\n";
+
+    private static List<String> warnings(String scene) throws SceneException {
+        List<SceneError> warnings = new ArrayList<>();
+        SceneIO.parseScene("scene.txt", scene, warnings);
+        return warnings.stream().map(w -> w.line() + ":" + w.column() + " " + w.message()).toList();
+    }
+
+    @Test
+    void aLitSceneWhoseMaterialsAreAllNamedAndLetLightThroughWhereTheyBendItHasNone() throws SceneException {
+        assertThat(warnings(CAMERA + "sphere:(0|0|0):(1):(255|0|0):(glass)\nlight:(0|9|9):(255|255|255)\n"
+                + "material:(glass):(transparency=0.9|ior=1.5)\nmaterial:(mirror):(reflective=1)\n"
+                + "plane:(0|-1|0):(0|1|0):(9|9|9):(mirror)\n")).isEmpty();
+    }
+
+    @Test
+    void eachSlipIsToldAtItsMaterialInFileOrderTheMissingLightFirst() throws SceneException {
+        assertThat(warnings(CAMERA + "material:(a):(ior=2)\nsphere:(0|0|0):(1):(255|0|0):(a)\nmaterial:(b):(diffuse=0.5)\n"))
+                .containsExactly("2:11 materials change nothing here: the scene has no light, so it is drawn in flat colours, "
+                        + "as in the paper", "2:11 the ior of material 'a' bends nothing: its transparency is 0, so no light goes "
+                        + "through it", "4:11 material 'b' is defined, but no object names it");
+    }
+
+    @Test
+    void aSceneWithAMistakeTellsTheMistakeAlone() {
+        List<SceneError> warnings = new ArrayList<>();
+        SceneException e = catchThrowableOfType(SceneException.class,
+                () -> SceneIO.parseScene("scene.txt", CAMERA + "material:(b):(diffuse=0.5)\nspere:(0|0|0):(1):(255|0|0)\n",
+                        warnings));
+        assertThat(e.errors()).hasSize(1);
+        assertThat(warnings).isEmpty();
+    }
+}
