@@ -30,7 +30,7 @@ final class PlainLetters extends FilterWriter {
             Map.entry('²', "^2"), Map.entry('⊙', "*"), Map.entry('∞', "inf"), Map.entry('°', " degrees"),
             Map.entry('ε', "eps"), Map.entry('½', "1/2"), Map.entry('ö', "oe"), Map.entry('‖', "|"),
             Map.entry('—', "--"), Map.entry('–', "-"), Map.entry('‘', "'"), Map.entry('’', "'"),
-            Map.entry('“', "\""), Map.entry('”', "\""));
+            Map.entry('“', "\""), Map.entry('”', "\""), Map.entry('θ', "theta_"));
 
     private final CharsetEncoder encoder;
 
@@ -57,10 +57,11 @@ final class PlainLetters extends FilterWriter {
     /**
      * The encoding that {@code System.out} (or {@code System.err}) writes in: the JDK's
      * {@code stdout.encoding} where it has one (Java 19 on), its older {@code sun.stdout.encoding}
-     * (a Windows console), else the default.
+     * (a Windows console), the system's own {@code native.encoding} (Java 17 on; on Java 18 the
+     * default is UTF-8 whatever the terminal's), else the default.
      */
     static Charset encodingOf(String stream) {
-        for (String property : new String[] {stream + ".encoding", "sun." + stream + ".encoding"}) {
+        for (String property : new String[] {stream + ".encoding", "sun." + stream + ".encoding", "native.encoding"}) {
             String name = System.getProperty(property);
             if (name != null) {
                 try {

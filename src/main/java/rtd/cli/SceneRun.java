@@ -81,8 +81,10 @@ final class SceneRun {
             if (cameraInPlane.isPresent()) {
                 display.message(cameraInPlane.get());
             }
-            for (String note : LightNotes.of(source.name(), scene)) {
-                display.message(note);
+            if (!settings.paper()) { // --paper draws no light, and says so
+                for (String note : LightNotes.of(source.name(), scene)) {
+                    display.message(note);
+                }
             }
             RenderProgress progress = new RenderProgress();
             display.show(ProgressDisplay.Phase.rendering(() -> progress.rowsDone() / (double) settings.height(),

@@ -35,7 +35,8 @@ final class ViewRun {
 
     /**
      * Renders {@code view} of {@code scene} with the settings' size, threads and accelerator; the
-     * build and the render are timed as phases of {@code timer} ({@code --stats}).
+     * build and the render (the rays alone, not the legend) are timed as phases of {@code timer}
+     * ({@code --stats}).
      */
     static Result render(Scene scene, View view, RenderSettings settings, PhaseTimer timer) {
         Accelerator accelerator = settings.paper() ? null
@@ -45,9 +46,8 @@ final class ViewRun {
         ViewShader shader = new ViewShader(view, scene.objects());
         RenderResult raw = ParallelRenderer.render(scene.camera(), tracers, tracer -> shader, settings.width(),
                 settings.height(), 1, settings.threads(), new RenderProgress());
-        ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
-        timer.endPhase("render");
-        return new Result(picture, raw, accelerator);
+        timer.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
+        return new Result(ViewPicture.of(view, raw.image(), scene), raw, accelerator);
     }
 
     /** Writes the view to {@code target} in {@code format}; the scale goes to {@code err}. */

@@ -84,7 +84,7 @@ final class ShadingExplanation implements ShadingObserver {
             return;
         }
         frame.material = hit.object().material();
-        frame.open = hit.object().kind().equals("plane") || hit.object().kind().equals("triangle");
+        frame.open = !hit.object().isSolid();
         text.line("hits #" + (hit.index() + 1) + " " + hit.object().kind() + " at t = " + Numbers.of(hit.t()) + ", P = "
                 + Numbers.of(hit.point()) + ", |P − O| = " + Numbers.of(hit.distance()) + ", colour " + hit.object().color());
     }

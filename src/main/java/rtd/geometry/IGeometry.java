@@ -79,6 +79,16 @@ public interface IGeometry {
     }
 
     /**
+     * Whether the shape encloses a volume (a sphere, a box), so that a ray can be inside it; a
+     * plane or a triangle is a surface, and a ray that meets it from behind meets its back. The
+     * shading treats both alike (the back of a surface counts as its inside, for refraction too);
+     * {@code --explain} says which.
+     */
+    default boolean isSolid() {
+        return true;
+    }
+
+    /**
      * The kind of object, as the scene file names it ("sphere", "plane", ...): its name in
      * {@code --stats}, {@code --explain}, the {@code --view id} legend and the messages; the
      * accelerators also group objects of one kind for their packed tests.

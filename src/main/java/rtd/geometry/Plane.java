@@ -55,6 +55,12 @@ public record Plane(Vector3f point, Vector3f normal, Color color, Material mater
         return List.of(point, normal);
     }
 
+    /** A surface, not a solid: a ray that meets it from behind meets its back. */
+    @Override
+    public boolean isSolid() {
+        return false;
+    }
+
     @Override
     public String kind() {
         return "plane";

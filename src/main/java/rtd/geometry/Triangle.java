@@ -208,6 +208,12 @@ public final class Triangle implements IGeometry {
         return material;
     }
 
+    /** A surface, not a solid: a ray that meets it from behind meets its back. */
+    @Override
+    public boolean isSolid() {
+        return false;
+    }
+
     @Override
     public String kind() {
         return "triangle";

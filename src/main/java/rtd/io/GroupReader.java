@@ -82,23 +82,30 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
         skipBlanks();
         if (!at(')')) {
             throw error(pos, "expected ')' after '" + source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
-                    + source.describe(pos, lineStart), at('=') && group == Statement.MATERIAL
-                            ? materialHint(start) : "a name holds only letters, digits, '_' and '-'");
+                    + source.describe(pos, lineStart), nameHint(statement, group, start));
         }
         pos++;
     }
 
     /**
-     * For properties written where an object names its material ({@code sphere:…:(reflective=0.5)}):
-     * a material is defined on a line of its own, and named here.
+     * The help for a name followed by something else. Properties where a name belongs get their
+     * own: written where an object names its material ({@code sphere:…:(reflective=0.5)}), a
+     * material is defined on a line of its own and named there; written first in a
+     * {@code material} ({@code material:(reflective=0.5)}), its name comes first.
      */
-    private String materialHint(int start) {
+    private String nameHint(Statement statement, Group group, int start) {
+        if (!at('=')) {
+            return "a name holds only letters, digits, '_' and '-'";
+        }
         int end = start;
         while (end < bytes.length && bytes[end] != ')' && !ByteClasses.isLineBreak(bytes[end])) {
             end++;
         }
-        return "an object names its material here; define the material on a line of its own, such as "
-                + "material:(shiny):(" + source.text(start, end).strip() + "), then write (shiny) here";
+        String properties = source.text(start, end).strip();
+        return group == Statement.MATERIAL
+                ? "an object names its material here; define the material on a line of its own, such as "
+                        + "material:(shiny):(" + properties + "), then write (shiny) here"
+                : "a material's name comes first, then its properties: material:(shiny):(" + properties + ")";
     }
 
     /**

@@ -48,6 +48,15 @@ class LightNotesTest {
     }
 
     @Test
+    void withPaperTheLightIsNotUsedAndItsDimnessNotTold() throws IOException {
+        Path file = Files.writeString(dir.resolve("scene.txt"), CAMERA_AND_BALL + "sphere:(0|0|0):(3):(255|0|0)\n"
+                + "light:(0|0|10):(1|1|1)\n");
+        Run run = Cli.run(file.toString(), "-o", dir.resolve("out.png").toString(), "--width", "64", "--height", "36", "--paper");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("--paper draws as the paper does").doesNotContain("almost black");
+    }
+
+    @Test
     void materialSlipsAreToldAtTheMaterialsLineAndThePictureIsStillDrawn() throws IOException {
         Run run = render(CAMERA_AND_BALL + "material:(shiny):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0):(shiny)\n");
         assertThat(Docs.firstLine(run.err(), dir)).startsWith("scene.txt:2:11: warning: materials change nothing here: "

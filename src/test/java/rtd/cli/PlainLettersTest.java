@@ -3,9 +3,17 @@ package rtd.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.ByteArrayOutputStream;
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 
@@ -41,9 +49,34 @@ class PlainLettersTest {
         assertThat(written(StandardCharsets.UTF_8)).isEqualTo(TEXT + "≤→∞");
     }
 
+    /** Every sign that rtd's own text holds (the string literals of its sources) has a plain spelling. */
+    @Test
+    void everySignInRtdsOwnTextHasAPlainSpelling() throws IOException {
+        Pattern literal = Pattern.compile("\"(?:[^\"\\\\\n]|\\\\.)*\"");
+        Set<Character> signs = new TreeSet<>();
+        try (Stream<Path> files = Files.walk(Path.of("src", "main", "java"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
+                Matcher matcher = literal.matcher(Files.readString(file));
+                while (matcher.find()) {
+                    matcher.group().chars().filter(c -> c > 127).forEach(c -> signs.add((char) c));
+                }
+            }
+        }
+        assertThat(signs).contains('×', '−', '·', 'θ');
+        for (char sign : signs) {
+            ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+            PrintWriter writer = PlainLetters.printWriter(bytes, StandardCharsets.US_ASCII);
+            writer.print(sign);
+            writer.flush();
+            assertThat(bytes.toString(StandardCharsets.US_ASCII)).as("'%s' (U+%04X)", sign, (int) sign).doesNotContain("?");
+        }
+    }
+
     @Test
     void theEncodingIsTheStreamsOwnPropertyOrTheDefault() {
-        assertThat(PlainLetters.encodingOf("rtd-no-such-stream")).isEqualTo(Charset.defaultCharset());
+        String system = System.getProperty("native.encoding");
+        assertThat(PlainLetters.encodingOf("rtd-no-such-stream"))
+                .isEqualTo(system != null ? Charset.forName(system) : Charset.defaultCharset());
         System.setProperty("rtd-test-stream.encoding", "ISO-8859-1");
         System.setProperty("sun.rtd-test-stream.encoding", "UTF-16");
         try {

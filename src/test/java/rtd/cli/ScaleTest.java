@@ -41,6 +41,15 @@ class ScaleTest {
         return output;
     }
 
+    /** The goldens of the shaded examples are drawn as half size; this holds them to what --scale 0.5 draws. */
+    @Test
+    void halfSizeDrawsTheGoldensOfTheShadedExamples() throws IOException {
+        for (String name : List.of("lit_paper", "smooth_mesh", "glass_and_mirror")) {
+            Path half = render(Path.of("examples", name + ".txt").toString(), name + ".png", "--scale", "0.5");
+            assertThat(pixels(half)).as(name).isEqualTo(pixels(Path.of("src", "test", "resources", "golden", name + ".png")));
+        }
+    }
+
     @Test
     void aQuarterIsExactlyThePictureOf480x270WithTheZoomDividedBy4InTheFile() throws IOException {
         Path zoom12 = Files.writeString(dir.resolve("zoom12.5.txt"),

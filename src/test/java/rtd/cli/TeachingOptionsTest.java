@@ -87,6 +87,7 @@ class TeachingOptionsTest {
         assertThat(rgb).isEqualTo(0xFF0000);
         assertThat(run.out()).contains("the paper's flat colours", "pixel colour: 255 0 0").doesNotContain("WhittedShader");
         assertThat(run.err()).contains("--paper draws as the paper does, in flat colours");
+        assertThat(Docs.errors()).contains(run.err().strip());
         Run shaded = Cli.run(lit, "--scale", "0.25", "--explain", "60,130");
         assertThat(shaded.out()).contains("WhittedShader.shade").doesNotContain("pixel colour: 255 0 0");
     }
@@ -96,6 +97,7 @@ class TeachingOptionsTest {
         Run run = Cli.run(EXAMPLE, "--explain", "460,490", "--stats");
         assertThat(run.exitCode()).as(run.err()).isZero();
         assertThat(run.err()).contains("--explain follows one ray and times nothing; --stats is not used");
+        assertThat(Docs.errors()).contains(run.err().strip());
         assertThat(run.out()).contains("pixel colour: 255 0 0");
     }
 

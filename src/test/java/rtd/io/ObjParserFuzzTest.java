@@ -61,6 +61,9 @@ class ObjParserFuzzTest {
         ObjMesh inParts = ObjParser.parse(source, SMALL_PARTS);
         assertThat(inParts.count()).isEqualTo(mesh.count());
         assertThat(inParts.vertices()).isEqualTo(mesh.vertices());
+        assertThat(inParts.normals()).isEqualTo(mesh.normals());
+        assertThat(Arrays.copyOf(inParts.cornerNormals(), 3 * mesh.count()))
+                .isEqualTo(Arrays.copyOf(mesh.cornerNormals(), 3 * mesh.count()));
         assertThat(Arrays.copyOf(inParts.corners(), 3 * mesh.count())).isEqualTo(Arrays.copyOf(mesh.corners(), 3 * mesh.count()));
     }
 }
