@@ -31,7 +31,7 @@ import rtd.io.SceneException;
                 + "picture. SCENE '-' reads the scene from standard input (it needs -o)."},
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {
-            "0:every picture was written (a warning says when nothing was in view)",
+            "0:every picture was written (perhaps with warnings: nothing in view, a slip in the scene)",
             "1:a scene file has mistakes, a file could not be read or written, or rendering failed",
             "2:the command line is wrong"},
         footer = {"%nExamples:",

@@ -82,7 +82,7 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
         skipBlanks();
         if (!at(')')) {
             throw error(pos, "expected ')' after '" + source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
-                    + source.describe(pos, lineStart), nameHint(statement, group, start));
+                    + source.describe(pos, lineStart), nameHint(group, start));
         }
         pos++;
     }
@@ -93,7 +93,7 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
      * material is defined on a line of its own and named there; written first in a
      * {@code material} ({@code material:(reflective=0.5)}), its name comes first.
      */
-    private String nameHint(Statement statement, Group group, int start) {
+    private String nameHint(Group group, int start) {
         if (!at('=')) {
             return "a name holds only letters, digits, '_' and '-'";
         }

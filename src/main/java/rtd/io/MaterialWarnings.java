@@ -35,12 +35,28 @@ final class MaterialWarnings {
                         "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):(" + name
                                 + ")"));
             }
-            if (material.ior() != 1 && material.transparency() <= 0) {
+            if (lit && material.ior() != 1 && material.transparency() <= 0) { // without a light, nothing is bent anyway
                 warnings.add(at(definition.place(), "the ior of material '" + name + "' bends nothing: its transparency "
-                        + "is 0, so no light goes through it", "let light through, such as transparency=0.9"));
+                        + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
-        return warnings;
+        return atMost(warnings);
+    }
+
+    /**
+     * The first {@link SceneParser#MAX_ERRORS} warnings, as many as a run shows of mistakes, and a
+     * last line for the rest, at the first of them: a library of materials could print thousands.
+     */
+    private static List<SceneError> atMost(List<SceneError> warnings) {
+        int most = SceneParser.MAX_ERRORS;
+        if (warnings.size() <= most) {
+            return warnings;
+        }
+        SceneError next = warnings.get(most);
+        List<SceneError> shown = new ArrayList<>(warnings.subList(0, most));
+        shown.add(new SceneError(next.file(), next.line(), next.column(), "and " + (warnings.size() - most)
+                + " more warnings like these, the first of them here", null, null));
+        return shown;
     }
 
     private static SceneError at(SceneError place, String message, String help) {

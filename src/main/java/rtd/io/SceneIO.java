@@ -103,7 +103,13 @@ public final class SceneIO {
 
     /** As {@link #parseScene(String, String)}, adding the scene's warnings to {@code warnings}. */
     public static Scene parseScene(String name, String text, List<SceneError> warnings) throws SceneException {
-        return parse(new SourceText(name, text.getBytes(StandardCharsets.UTF_8), Path.of("")), warnings);
+        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
+    }
+
+    /** As {@link #parseScene(String, byte[], Path)}, adding the scene's warnings to {@code warnings}. */
+    public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
+            throws SceneException {
+        return parse(new SourceText(name, bytes, meshFolder), warnings);
     }
 
     /** Parses {@code source}, and then closes it: the scene needs its bytes no more. */

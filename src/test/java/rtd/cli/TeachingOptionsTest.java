@@ -93,6 +93,20 @@ class TeachingOptionsTest {
     }
 
     @Test
+    void theScenesWarningsAreShownOnceWithExplainAndWithAView() throws IOException {
+        Path scene = Files.writeString(dir.resolve("scene.txt"), "orthographic_camera:(0|0|20):(0|0|-1):(50)\n"
+                + "light:(0|9|9):(255|255|255)\nmaterial:(unused):(diffuse=0.5)\nsphere:(0|0|0):(3):(255|0|0)\n");
+        String warning = "scene.txt:3:11: warning: material 'unused' is defined, but no object names it";
+        Run explain = Cli.run(scene.toString(), "--width", "64", "--height", "36", "--explain", "32,18");
+        Run view = Cli.run(scene.toString(), "--width", "64", "--height", "36", "--view", "depth", "-o",
+                dir.resolve("v.png").toString());
+        for (Run run : List.of(explain, view)) {
+            assertThat(run.exitCode()).as(run.err()).isZero();
+            assertThat(run.err().split(java.util.regex.Pattern.quote(warning), -1)).hasSize(2);
+        }
+    }
+
+    @Test
     void statsWithExplainAreNotUsedAndSaySo() {
         Run run = Cli.run(EXAMPLE, "--explain", "460,490", "--stats");
         assertThat(run.exitCode()).as(run.err()).isZero();

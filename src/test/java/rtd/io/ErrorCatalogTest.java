@@ -81,7 +81,7 @@ class ErrorCatalogTest {
         byte[] bytes = bytes(scene, form);
         if (firstLine.contains(": warning: ")) { // a slip that is no mistake: the scene reads, and warns
             List<SceneError> warnings = new ArrayList<>();
-            SceneIO.parseScene("scene.txt", new String(bytes, StandardCharsets.UTF_8), warnings);
+            SceneIO.parseScene("scene.txt", bytes, folder, warnings);
             assertThat(warnings.stream().map(SceneError::formatAsWarning).collect(Collectors.joining()).strip())
                     .isEqualTo(message.strip());
             return;

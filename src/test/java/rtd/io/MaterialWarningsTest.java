@@ -28,11 +28,33 @@ class MaterialWarningsTest {
     }
 
     @Test
-    void eachSlipIsToldAtItsMaterialInFileOrderTheMissingLightFirst() throws SceneException {
+    void eachSlipIsToldAtItsMaterialInFileOrder() throws SceneException {
+        assertThat(warnings(CAMERA + "material:(a):(ior=2)\nsphere:(0|0|0):(1):(255|0|0):(a)\nmaterial:(b):(diffuse=0.5)\n"
+                + "light:(0|9|9):(255|255|255)\n")).containsExactly(
+                        "2:11 the ior of material 'a' bends nothing: its transparency is 0, so no light goes through it",
+                        "4:11 material 'b' is defined, but no object names it");
         assertThat(warnings(CAMERA + "material:(a):(ior=2)\nsphere:(0|0|0):(1):(255|0|0):(a)\nmaterial:(b):(diffuse=0.5)\n"))
                 .containsExactly("2:11 materials change nothing here: the scene has no light, so it is drawn in flat colours, "
-                        + "as in the paper", "2:11 the ior of material 'a' bends nothing: its transparency is 0, so no light goes "
-                        + "through it", "4:11 material 'b' is defined, but no object names it");
+                        + "as in the paper", "4:11 material 'b' is defined, but no object names it");
+    }
+
+    @Test
+    void atMost20AreShownAndALastLineCountsTheRest() throws SceneException {
+        StringBuilder scene = new StringBuilder(CAMERA + "light:(0|9|9):(255|255|255)\nsphere:(0|0|0):(1):(255|0|0):(m0)\n");
+        for (int m = 0; m < 300; m++) {
+            scene.append("material:(m").append(m).append("):(ior=1.2)\n");
+        }
+        List<String> shown = warnings(scene.toString());
+        assertThat(shown).hasSize(21);
+        assertThat(shown.get(0)).isEqualTo("4:11 the ior of material 'm0' bends nothing: its transparency is 0, so no light goes "
+                + "through it");
+        assertThat(shown.get(20)).isEqualTo("14:11 and 579 more warnings like these, the first of them here");
+    }
+
+    @Test
+    void withoutALightTheIorIsNotToldAsIfItCouldBend() throws SceneException {
+        assertThat(warnings(CAMERA + "material:(a):(ior=2)\nsphere:(0|0|0):(1):(255|0|0):(a)\n")).hasSize(1)
+                .allMatch(w -> w.contains("the scene has no light"));
     }
 
     @Test
