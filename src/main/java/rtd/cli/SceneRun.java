@@ -76,8 +76,7 @@ final class SceneRun {
                     settings.height(), settings.samples(), settings.threads());
             timer.endPhase("build");
 
-            Optional<String> cameraInPlane = CameraInPlane.warning(source.name(), scene, tracers(scene, accelerator).get(),
-                    settings.width(), settings.height());
+            Optional<String> cameraInPlane = CameraInPlane.warning(source.name(), scene, settings.width(), settings.height());
             if (cameraInPlane.isPresent()) {
                 display.message(cameraInPlane.get());
             }
