@@ -3,6 +3,8 @@ package rtd.io;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import rtd.geometry.Material;
 
 /**
@@ -13,6 +15,9 @@ import rtd.geometry.Material;
  * material's line, as a mistake is.
  */
 final class MaterialWarnings {
+
+    /** The key {@code ior} in a material's properties: after a '(' or '|' and blanks, before blanks and '='. */
+    private static final Pattern IOR = Pattern.compile("(?<=[(|][ \\t]{0,1000})ior(?=[ \\t]*=)");
 
     private MaterialWarnings() {
     }
@@ -36,7 +41,7 @@ final class MaterialWarnings {
                                 + ")"));
             }
             if (lit && material.ior() != 1 && material.transparency() <= 0) { // without a light, nothing is bent anyway
-                warnings.add(at(definition.place(), "the ior of material '" + name + "' bends nothing: its transparency "
+                warnings.add(at(atTheIor(definition.place()), "the ior of material '" + name + "' bends nothing: its transparency "
                         + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
@@ -57,6 +62,16 @@ final class MaterialWarnings {
         shown.add(new SceneError(next.file(), next.line(), next.column(), "and " + (warnings.size() - most)
                 + " more warnings like these, the first of them here", null, null));
         return shown;
+    }
+
+    /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */
+    private static SceneError atTheIor(SceneError name) {
+        Matcher key = IOR.matcher(name.sourceLine() == null ? "" : name.sourceLine());
+        return key.find(Math.max(0, name.column() - 1)) ? at(name, key.start() + 1) : name;
+    }
+
+    private static SceneError at(SceneError place, int column) {
+        return new SceneError(place.file(), place.line(), column, place.message(), place.sourceLine(), place.help());
     }
 
     private static SceneError at(SceneError place, String message, String help) {

@@ -31,11 +31,19 @@ class MaterialWarningsTest {
     void eachSlipIsToldAtItsMaterialInFileOrder() throws SceneException {
         assertThat(warnings(CAMERA + "material:(a):(ior=2)\nsphere:(0|0|0):(1):(255|0|0):(a)\nmaterial:(b):(diffuse=0.5)\n"
                 + "light:(0|9|9):(255|255|255)\n")).containsExactly(
-                        "2:11 the ior of material 'a' bends nothing: its transparency is 0, so no light goes through it",
+                        "2:15 the ior of material 'a' bends nothing: its transparency is 0, so no light goes through it",
                         "4:11 material 'b' is defined, but no object names it");
         assertThat(warnings(CAMERA + "material:(a):(ior=2)\nsphere:(0|0|0):(1):(255|0|0):(a)\nmaterial:(b):(diffuse=0.5)\n"))
                 .containsExactly("2:11 materials change nothing here: the scene has no light, so it is drawn in flat colours, "
                         + "as in the paper", "4:11 material 'b' is defined, but no object names it");
+    }
+
+    @Test
+    void theIorIsPointedAtWhereverItStandsAmongTheProperties() throws SceneException {
+        // a material may be named ior too: the key is the word before '=', not the name
+        assertThat(warnings(CAMERA + "light:(0|9|9):(255|255|255)\nmaterial:(ior):( diffuse=0.5 |  ior = 1.5)\n"
+                + "sphere:(0|0|0):(1):(255|0|0):(ior)\n"))
+                .containsExactly("3:33 the ior of material 'ior' bends nothing: its transparency is 0, so no light goes through it");
     }
 
     @Test
@@ -46,9 +54,9 @@ class MaterialWarningsTest {
         }
         List<String> shown = warnings(scene.toString());
         assertThat(shown).hasSize(21);
-        assertThat(shown.get(0)).isEqualTo("4:11 the ior of material 'm0' bends nothing: its transparency is 0, so no light goes "
+        assertThat(shown.get(0)).isEqualTo("4:16 the ior of material 'm0' bends nothing: its transparency is 0, so no light goes "
                 + "through it");
-        assertThat(shown.get(20)).isEqualTo("14:11 and 579 more warnings like these, the first of them here");
+        assertThat(shown.get(20)).isEqualTo("14:17 and 579 more warnings like these, the first of them here");
     }
 
     @Test
