@@ -34,7 +34,7 @@ final class ShadingExplanation implements ShadingObserver {
     private static final class Frame {
         Material material;
         /** Whether the surface hit is open (a plane, a triangle): it has a back, not an inside. */
-        boolean open;
+        boolean hasBack;
         int remaining;
         boolean reflectionSaid;
         boolean refractionSaid;
@@ -84,7 +84,7 @@ final class ShadingExplanation implements ShadingObserver {
             return;
         }
         frame.material = hit.object().material();
-        frame.open = !hit.object().isSolid();
+        frame.hasBack = !hit.object().isSolid();
         text.line("hits #" + (hit.index() + 1) + " " + hit.object().kind() + " at t = " + Numbers.of(hit.t()) + ", P = "
                 + Numbers.of(hit.point()) + ", |P − O| = " + Numbers.of(hit.distance()) + ", colour " + hit.object().color());
     }
@@ -92,7 +92,7 @@ final class ShadingExplanation implements ShadingObserver {
     @Override
     public void surface(Surface surface) {
         Material m = surface.material();
-        String turned = open.peek().open ? " (the ray meets its back: N turned round)" : " (the ray is inside: N turned round)";
+        String turned = open.peek().hasBack ? " (the ray meets its back: N turned round)" : " (the ray is inside: N turned round)";
         if (surface.hit().object() instanceof Triangle triangle && triangle.isSmooth()) {
             float[] w = triangle.cornerWeights(surface.hit().point());
             text.line("smooth: N = normalize(w1·n1 + w2·n2 + w3·n3), the corners' normals n1 = "
