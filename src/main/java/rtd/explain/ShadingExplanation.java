@@ -33,7 +33,7 @@ final class ShadingExplanation implements ShadingObserver {
      */
     private static final class Frame {
         Material material;
-        /** Whether the surface hit is open (a plane, a triangle): it has a back, not an inside. */
+        /** Whether the surface hit is no solid (a plane, a triangle): it has a back, not an inside. */
         boolean hasBack;
         int remaining;
         boolean reflectionSaid;
