@@ -101,12 +101,12 @@ public final class ImageWriting {
         return parameters;
     }
 
-    /** The picture as an RGB image that shares its array. */
+    /** The picture as an RGB image that shares its array, laid out so that the writer reads it fast ({@link PackedRgbSamples}). */
     static BufferedImage asImage(Picture picture) {
         DirectColorModel rgb = new DirectColorModel(24, RGB_MASKS[0], RGB_MASKS[1], RGB_MASKS[2]);
         DataBufferInt data = new DataBufferInt(picture.rgb(), picture.rgb().length);
-        WritableRaster raster = Raster.createPackedRaster(data, picture.width(), picture.height(), picture.width(),
-                RGB_MASKS, null);
+        WritableRaster raster = Raster.createWritableRaster(new PackedRgbSamples(picture.width(), picture.height()),
+                data, null);
         return new BufferedImage(rgb, raster, false, null);
     }
 
