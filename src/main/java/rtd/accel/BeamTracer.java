@@ -27,9 +27,10 @@ import rtd.render.WorkCount;
  * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}).
  *
  * <p>Two answers need no ray at all. A beam that reaches no object's box misses everywhere: a
- * square, or a whole run of squares ({@link #reachesNothing}), is background. And when the
- * shader reads only which object a ray hits (the paper's flat colours), a square inside the
- * outline of the one sphere in its reach is that sphere throughout ({@link #coveredBySphere}).
+ * square, or a whole run of squares ({@link #traceAtOnce}), is background. And when the
+ * shader reads only which object a ray hits (the paper's flat colours), a square, or a run,
+ * inside the outline of the one sphere in its reach is that sphere throughout
+ * ({@link #coveredBySphere}).
  */
 final class BeamTracer {
 
@@ -49,10 +50,11 @@ final class BeamTracer {
     private int count;
     /** Whether the rays' hits are started; not before a leaf's objects are in reach, unless the scene has planes. */
     private boolean started;
-    /** Whether the walk only asks if the beam reaches any object ({@link #reachesNothing}), and makes no rays. */
+    /**
+     * Whether the walk only asks if the beam reaches no object, or only a sphere that covers it
+     * ({@link #traceAtOnce}), and makes no rays.
+     */
     private boolean probing;
-    /** Whether where each ray hits is asked for, not only the object ({@link HitBuffer#hitPointsRead}). */
-    private boolean hitPointsRead;
     /**
      * Whether a sphere could cover this square ({@link #coveredBySphere}): not unless the rays
      * are parallel, only the object is asked for, and the tree's largest sphere is wider than
@@ -107,9 +109,7 @@ final class BeamTracer {
         }
         this.bundle = bundle;
         started = false;
-        hitPointsRead = out.hitPointsRead();
-        coverable = !hitPointsRead && middle.parallel && largestSphereSquared
-                > middle.half[0] * middle.half[0] + middle.half[1] * middle.half[1] + middle.half[2] * middle.half[2];
+        coverable = isCoverable(out);
         covering = -1;
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.unbounded.length > 0) {
@@ -136,29 +136,50 @@ final class BeamTracer {
     }
 
     /**
-     * Whether the beam of the bundle's parallel rays reaches no object, so that none of its rays
-     * can hit anything: found by the walk alone, without making a ray, and then the rays count
-     * as traced. False if some object is in reach, if the scene has objects without a box
-     * (which every ray meets), or if the rays are not the orthographic camera's. The bundle may
-     * be any rectangle of pixels, as the corners of any rectangle hold its origins
-     * ({@link Beam#aimAt}).
+     * Whether every ray of the bundle's parallel rays has the same answer, found by the walk
+     * alone, without making a ray: the beam reaches no object (every ray misses), or, when only
+     * the object is asked for ({@link HitBuffer#hitPointsRead}), it lies inside the outline of
+     * the one sphere in its reach (every ray hits that sphere first). Then the answer is in
+     * {@code out}, the rays count as traced, and the answer is true. False if the rays' answers
+     * may differ, if the scene has objects without a box (which every ray meets), or if the
+     * rays are not the orthographic camera's. The bundle may be any rectangle of pixels, as the
+     * corners of any rectangle hold its origins ({@link Beam#aimAt}).
      */
-    boolean reachesNothing(RayBundle bundle) {
+    boolean traceAtOnce(RayBundle bundle, HitBuffer out) {
         if (bvh.unbounded.length > 0 || !(bundle.camera() instanceof OrthographicCamera) || !middle.aim(bundle)) {
             return false; // other bundles are parallel seldom, and telling would make all their rays
         }
         started = false;
+        covering = -1;
+        coverable = isCoverable(out);
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.hasTree()) {
             probing = true;
             walk();
             probing = false;
         }
+        int covered = covering;
+        covering = -1;
         if (started) {
             return false;
         }
         rays += bundle.count();
+        if (covered >= 0) {
+            out.setHits(bvh.leaves.fileOrder[covered], bundle.count());
+        } else {
+            out.setMisses(bundle.count());
+        }
         return true;
+    }
+
+    /**
+     * Whether a sphere could cover the beam ({@link #coveredBySphere}): not unless the rays are
+     * parallel, only the object is asked for, and the tree's largest sphere is wider than the
+     * beam.
+     */
+    private boolean isCoverable(HitBuffer out) {
+        return !out.hitPointsRead() && middle.parallel && largestSphereSquared
+                > middle.half[0] * middle.half[0] + middle.half[1] * middle.half[1] + middle.half[2] * middle.half[2];
     }
 
     /** Starts each ray's nearest hit, with the objects that have no box, which every ray meets. */
@@ -270,7 +291,10 @@ final class BeamTracer {
         if (!worthVisiting(reach)) {
             return;
         }
-        if (probing) { // an object in reach: that is the answer, and the walk ends here
+        if (probing) { // an object in reach: the rays' answers differ unless it is a sphere that covers the beam
+            if (covering < 0 && coverable && coveredBySphere(leaf, grow, within)) {
+                return; // the walk goes on, for any other object in reach before the sphere's hits
+            }
             started = true;
             farthestSkip = Float.NEGATIVE_INFINITY;
             return;

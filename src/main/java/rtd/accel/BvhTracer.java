@@ -108,10 +108,13 @@ public final class BvhTracer implements Tracer {
         }
     }
 
-    /** A beam that reaches no object ({@link BeamTracer#reachesNothing}); rays that are not parallel cannot tell. */
+    /**
+     * A beam that reaches no object, or only a sphere that covers it ({@link BeamTracer#traceAtOnce});
+     * rays that are not parallel cannot tell.
+     */
     @Override
-    public boolean traceIfAllMiss(RayBundle bundle) {
-        return beam.reachesNothing(bundle);
+    public boolean traceAtOnce(RayBundle bundle, HitBuffer hits) {
+        return beam.traceAtOnce(bundle, hits);
     }
 
     @Override

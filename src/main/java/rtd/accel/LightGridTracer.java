@@ -67,8 +67,8 @@ final class LightGridTracer implements Tracer {
     }
 
     @Override
-    public boolean traceIfAllMiss(RayBundle rays) {
-        return others.traceIfAllMiss(rays);
+    public boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
+        return others.traceAtOnce(rays, hits);
     }
 
     @Override

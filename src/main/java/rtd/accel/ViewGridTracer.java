@@ -93,14 +93,15 @@ public final class ViewGridTracer implements Tracer {
 
     /** The camera's rays of empty cells hit nothing, if every object has a box. */
     @Override
-    public boolean traceIfAllMiss(RayBundle bundle) {
+    public boolean traceAtOnce(RayBundle bundle, HitBuffer hits) {
         if (!serves(bundle)) {
-            return others != null && others.traceIfAllMiss(bundle);
+            return others != null && others.traceAtOnce(bundle, hits);
         }
         if (objects.unbounded.length > 0 || !grid.emptyOver(bundle.left(), bundle.top(), bundle.right(), bundle.bottom())) {
             return false;
         }
         rays += bundle.count();
+        hits.setMisses(bundle.count());
         return true;
     }
 

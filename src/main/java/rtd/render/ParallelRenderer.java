@@ -30,7 +30,7 @@ public final class ParallelRenderer {
 
     /** The side of the squares of pixels handed to {@link Tracer#traceAll} together. */
     static final int TILE = 8;
-    /** How many squares side by side the renderer asks about at once first ({@link Tracer#traceIfAllMiss}). */
+    /** How many squares side by side the renderer asks about at once first ({@link Tracer#traceAtOnce}). */
     static final int RUN = 64;
     /**
      * The golden section's smaller part, {@code (3 − √5) / 2}: steps of this share of a circle
@@ -159,10 +159,11 @@ public final class ParallelRenderer {
 
         /**
          * The pixels {@code [left, right) × [top, bottom)} of a band into {@code pixels}: all at
-         * once if the tracer can tell that none of their rays hits anything, else each half in
-         * the same way, down to the squares. Most of the paper's picture is sky, which a few
-         * questions about long runs settle, instead of one for each square. A run's rays would
-         * each miss in their squares too, so the picture is the same.
+         * once if the tracer can tell that none of their rays hits anything, or (flat colours)
+         * that all of them hit one object, else each half in the same way, down to the squares.
+         * Most of the paper's picture is sky or the inside of a disc, which a few questions
+         * about long runs settle, instead of one for each square. The tracer answers so only
+         * what each ray would find alone, so the picture is the same.
          */
         void renderRun(int left, int right, int top, int bottom, int[] pixels) {
             if (right - left <= TILE || samples > 1) {
@@ -173,8 +174,7 @@ public final class ParallelRenderer {
                 return;
             }
             rays.fill(camera, left, top, right, bottom, width, height);
-            if (tracer.traceIfAllMiss(rays)) {
-                hits.setMisses(rays.count());
+            if (tracer.traceAtOnce(rays, hits)) {
                 shader.rgbAll(rays, hits, rays.count(), rgb);
                 copy(rgb, left, top, right, bottom, pixels);
                 return;

@@ -34,12 +34,14 @@ public interface Tracer {
 
     /**
      * Whether the tracer can tell at once, without following them one by one, that none of the
-     * bundle's rays hits anything: then they count as traced, with no intersection test, and
-     * the answer is true. False, with nothing traced, if some ray may hit or if the tracer
-     * cannot tell; by default it cannot. The bundle may be larger than a square:
+     * bundle's rays hits anything ({@link HitBuffer#setMisses}), or, where {@code hits} says
+     * that the hit points are not read, that every ray hits one object ({@link HitBuffer#setHits}):
+     * then they count as traced, with no intersection test, their answer is in {@code hits}, and
+     * the answer is true. False, with nothing traced, if the rays' answers may differ or if the
+     * tracer cannot tell; by default it cannot. The bundle may be larger than a square:
      * {@link ParallelRenderer} asks this of a run of squares before it traces them.
      */
-    default boolean traceIfAllMiss(RayBundle rays) {
+    default boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
         return false;
     }
 

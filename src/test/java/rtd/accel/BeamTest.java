@@ -98,7 +98,7 @@ class BeamTest {
 
     @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {31, 32, 33, 34})
-    void aRunOfSquaresIsTracedAtOnceOnlyIfEveryOneOfItsRaysMisses(long seed) {
+    void aRunOfSquaresWhoseHitPointsAreReadIsTracedAtOnceOnlyIfEveryOneOfItsRaysMisses(long seed) {
         Scene scene = RandomScenes.generate(seed, 12);
         BvhTracer tracer = Bvh.build(scene).newTracer();
         int width = 320;
@@ -110,7 +110,8 @@ class BeamTest {
                 RayBundle run = new RayBundle(64 * 8);
                 run.fill(scene.camera(), left, top, left + 64, top + 8, width, height);
                 long raysBefore = tracer.work().rays();
-                if (!tracer.traceIfAllMiss(run)) {
+                HitBuffer hits = new HitBuffer(64 * 8);
+                if (!tracer.traceAtOnce(run, hits)) {
                     notAtOnce++;
                     assertThat(tracer.work().rays()).as("rays traced").isEqualTo(raysBefore);
                     continue;
@@ -118,6 +119,7 @@ class BeamTest {
                 atOnce++;
                 assertThat(run.isMade()).as("the run's rays were made").isFalse();
                 assertThat(tracer.work().rays()).as("rays traced").isEqualTo(raysBefore + run.count());
+                assertThat(hits.missedAll()).as("every ray missed").isTrue();
                 for (int i = 0; i < run.count(); i++) {
                     assertThat(scene.nearestHit(run.ray(i)))
                             .as("ray " + i + " of the run at (" + left + ", " + top + ")").isNull();
@@ -151,6 +153,48 @@ class BeamTest {
             }
         }
         assertThat(atOnce).as("squares taken at once").isPositive();
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {41, 42, 43, 44, 45, 46})
+    void aRunOfAnyWidthInsideASpheresOutlineTakesTheSphereForEveryRayAsThePapersLoopDoes(long seed) {
+        Scene scene = RandomScenes.generate(seed, 25);
+        BvhTracer tracer = Bvh.build(scene).newTracer();
+        int width = 320;
+        int height = 240;
+        int covered = 0;
+        int missed = 0;
+        for (int runWidth : new int[] {16, 32, 64, 128, 320}) {
+            for (int top = 0; top < height; top += 8) {
+                for (int left = 0; left < width; left += runWidth) {
+                    int right = Math.min(width, left + runWidth);
+                    RayBundle run = new RayBundle(runWidth * 8);
+                    run.fill(scene.camera(), left, top, right, top + 8, width, height);
+                    HitBuffer withPoints = new HitBuffer(runWidth * 8);
+                    if (tracer.traceAtOnce(run, withPoints)) {
+                        assertThat(withPoints.missedAll()).as("a run whose hit points are read, at once").isTrue();
+                    }
+                    HitBuffer hits = new HitBuffer(runWidth * 8);
+                    hits.readHitPoints(false);
+                    if (!tracer.traceAtOnce(run, hits)) {
+                        continue;
+                    }
+                    assertThat(run.isMade()).as("the run's rays were made").isFalse();
+                    if (hits.everyRayHits() >= 0) {
+                        covered++;
+                    } else {
+                        missed++;
+                    }
+                    for (int i = 0; i < run.count(); i++) {
+                        Hit expected = scene.nearestHit(run.ray(i));
+                        assertThat(hits.index(i)).as("ray %d of the run of %d at (%d, %d)", i, runWidth, left, top)
+                                .isEqualTo(expected == null ? -1 : expected.index());
+                    }
+                }
+            }
+        }
+        assertThat(covered).as("runs inside an outline").isPositive();
+        assertThat(missed).as("runs of sky").isPositive();
     }
 
     @ParameterizedTest(name = "random scene {0}")

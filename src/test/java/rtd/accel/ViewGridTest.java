@@ -51,7 +51,7 @@ class ViewGridTest {
                 int right = Math.min(WIDTH, left + 8);
                 int bottom = Math.min(HEIGHT, top + 8);
                 bundle.fill(scene.camera(), left, top, right, bottom, WIDTH, HEIGHT, offset, offset);
-                boolean allMiss = tracer.traceIfAllMiss(bundle);
+                boolean allMiss = tracer.traceAtOnce(bundle, hits);
                 if (!allMiss) {
                     tracer.traceAll(bundle, hits);
                 }
