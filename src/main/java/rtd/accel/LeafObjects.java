@@ -241,7 +241,7 @@ final class LeafObjects {
     float t(int i, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
         byte test = testOf[i];
         if (test == PACKED_SPHERE) {
-            return sphere(offsets[i], ox, oy, oz, dx, dy, dz, dd);
+            return sphere(numbers, offsets[i], ox, oy, oz, dx, dy, dz, dd);
         }
         if (test == PACKED_TRIANGLE) {
             return RayTriangle.hit(numbers, offsets[i], ox, oy, oz, dx, dy, dz);
@@ -250,8 +250,12 @@ final class LeafObjects {
         return hit.t();
     }
 
-    /** {@link Sphere#intersect} on packed numbers: equations 3.6 to 3.8. */
-    private float sphere(int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
+    /**
+     * {@link Sphere#intersect} on the numbers {@link Sphere#putTestNumbers} wrote at {@code at}
+     * (M, then r²): equations 3.6 to 3.8, with the same float operations in the same order;
+     * {@code dd} is D·D.
+     */
+    static float sphere(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
         float mx = ox - numbers[at];                                         // O − M
         float my = oy - numbers[at + 1];
         float mz = oz - numbers[at + 2];

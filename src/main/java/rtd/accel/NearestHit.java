@@ -34,7 +34,7 @@ final class NearestHit {
     /** The entry of a box the ray misses. */
     static final float MISS = Float.POSITIVE_INFINITY;
     /** The {@link #depthKey} that no hit beats: an infinite distance ties with it at best, and loses. */
-    private static final long NO_HIT = depthKey(Float.POSITIVE_INFINITY, 0);
+    static final long NO_HIT = depthKey(Float.POSITIVE_INFINITY, 0);
 
     private final Bvh bvh;
     private final LeafObjects leaves;
@@ -265,7 +265,7 @@ final class NearestHit {
      * lets it in the paper's loop. One comparison instead of two also keeps the JIT from compiling
      * the hot loop anew the first time two objects tie.
      */
-    private static long depthKey(float distance, int index) {
+    static long depthKey(float distance, int index) {
         return ((long) (Float.floatToRawIntBits(distance) & 0x7FFF_FFFF) << 32) | index;
     }
 

@@ -3,10 +3,10 @@ package rtd.cli;
 /** How rtd finds the object a ray sees: {@code --accel}. */
 enum Accel {
     /**
-     * The view grid for a scene of {@link Accelerator#GRID_THRESHOLD} objects or more (with the
-     * bounding volume hierarchy for its shadow and mirror rays if it has lights); else the
-     * hierarchy whenever the scene has objects: it tests whole squares of rays at once, which
-     * pays even for the paper's two spheres.
+     * For a scene of {@link Accelerator#GRID_THRESHOLD} objects or more, the image of hits where
+     * one ray a pixel is drawn, else the view grid (with the bounding volume hierarchy for its
+     * shadow and mirror rays if it has lights); else the hierarchy whenever the scene has objects:
+     * it tests whole squares of rays at once, which pays even for the paper's two spheres.
      */
     auto,
     /** The paper's loop over every object (Listing 4.3). */
@@ -17,5 +17,11 @@ enum Accel {
      * The view grid ({@link rtd.accel.ViewGrid}) for the camera's rays, and in a scene with lights
      * the hierarchy for the shadow and mirror rays.
      */
-    grid
+    grid,
+    /**
+     * The image of hits ({@link rtd.accel.HitImage}) for the camera's rays, found object by object
+     * before the render, where one ray a pixel is drawn; else the view grid; and in a scene with
+     * lights the light grids and the hierarchy for the shadow and mirror rays.
+     */
+    image
 }

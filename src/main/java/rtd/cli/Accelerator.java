@@ -5,6 +5,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.function.Supplier;
 import rtd.accel.Bvh;
+import rtd.accel.HitImage;
 import rtd.accel.LightGrids;
 import rtd.accel.ViewGrid;
 import rtd.render.LinearTracer;
@@ -34,7 +35,9 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         LOOP("the paper's loop: nothing to build"),
         BVH("building the BVH"),
         GRID("building the view grid"),
-        GRID_AND_BVH("building the view grid, the lights' grids and the BVH");
+        GRID_AND_BVH("building the view grid, the lights' grids and the BVH"),
+        IMAGE("finding each pixel's hit, object by object"),
+        IMAGE_AND_BVH("finding each pixel's hit, and building the lights' grids and the BVH");
 
         final String building;
 
@@ -44,24 +47,33 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
     }
 
     /**
-     * What {@code accel} asks for {@code scene}: {@code auto} takes the view grid for a scene of
-     * {@link #GRID_THRESHOLD} objects or more, and for a scene with lights a grid seen from each
-     * light for its shadow rays and the BVH for the rest; else the BVH if it has objects. Measured
-     * on the shaded benchmark: the grid and the BVH took 4.52–4.71 s where the BVH alone took
-     * 4.87–4.88 s; with the light grids, 3.96 against 4.75 s (5 pairs).
+     * What {@code accel} asks for {@code scene}, drawn with {@code samples²} rays a pixel:
+     * {@code auto} takes, for a scene of {@link #GRID_THRESHOLD} objects or more, the image of
+     * hits if it is drawn in flat colours with one ray a pixel, else the view grid, and for a
+     * scene with lights a grid seen from each light for its shadow rays and the BVH for the
+     * rest; else the BVH if it has objects. {@code image} takes the view grid where the image of
+     * hits cannot serve (more rays a pixel). Measured: on the shaded benchmark the grid and the
+     * BVH took 4.52–4.71 s where the BVH alone took 4.87–4.88 s, and with the light grids 3.96
+     * against 4.75 s (5 pairs); the image of hits against the view grid in docs/performance.md,
+     * the tenth round (faster for the flat benchmarks, slower for the shaded one).
      */
-    static Kind choose(Scene scene, Accel accel) {
+    static Kind choose(Scene scene, Accel accel, int samples) {
         int objects = scene.objects().size();
         boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
-        if (accel == Accel.grid && gridFits || accel == Accel.auto && gridFits && objects >= GRID_THRESHOLD) {
-            return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
+        boolean large = objects >= GRID_THRESHOLD;
+        boolean lit = !scene.lights().isEmpty();
+        if ((accel == Accel.image || accel == Accel.auto && large && !lit) && HitImage.fits(scene, samples)) {
+            return lit ? Kind.IMAGE_AND_BVH : Kind.IMAGE;
+        }
+        if ((accel == Accel.grid || accel == Accel.image || accel == Accel.auto && large) && gridFits) {
+            return lit ? Kind.GRID_AND_BVH : Kind.GRID;
         }
         return accel != Accel.none && objects > 0 ? Kind.BVH : Kind.LOOP;
     }
 
     /** {@link #build} of what {@code accel} asks ({@link #choose}). */
     static Accelerator of(Scene scene, Accel accel, int width, int height, int samples, int threads) {
-        return build(choose(scene, accel), scene, width, height, samples, threads);
+        return build(choose(scene, accel, samples), scene, width, height, samples, threads);
     }
 
     /**
@@ -84,11 +96,20 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                 return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())), () -> String.format(
                         Locale.ROOT, "view grid of %s of %d × %d pixels, %s, %s, and BVH of %s",
                         StatsReport.count(grid.cellCount(), "cell"), grid.cellSide(), grid.cellSide(),
-                        StatsReport.count(grid.entries(), "entry", "entries"),
-                        lights.count() == 0 ? "no light grid"
-                                : StatsReport.count(lights.count(), "light grid") + " of "
-                                        + StatsReport.count(lights.entries(), "entry", "entries"),
+                        StatsReport.count(grid.entries(), "entry", "entries"), describe(lights),
                         StatsReport.count(bvh.nodeCount(), "node")), true);
+            }
+            case IMAGE -> {
+                HitImage image = HitImage.build(scene, width, height, threads);
+                return new Accelerator(image::newTracer, () -> describe(image), false);
+            }
+            case IMAGE_AND_BVH -> {
+                CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene, threads));
+                HitImage image = HitImage.build(scene, width, height, threads);
+                LightGrids lights = LightGrids.build(scene, width, height, samples, threads);
+                Bvh bvh = join(tree);
+                return new Accelerator(() -> image.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(image)
+                        + ", " + describe(lights) + ", and BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
             }
             case BVH -> {
                 Bvh bvh = Bvh.build(scene, threads);
@@ -99,6 +120,20 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                         false);
             }
         }
+    }
+
+    /** The image of hits, for {@code --stats}. */
+    private static String describe(HitImage image) {
+        return String.format(Locale.ROOT, "image of hits in %s of %d × %d pixels, %s",
+                StatsReport.count(image.tileCount(), "tile"), image.tileSide(), image.tileSide(),
+                StatsReport.count(image.entries(), "entry", "entries"));
+    }
+
+    /** The lights' grids, for {@code --stats}. */
+    private static String describe(LightGrids lights) {
+        return lights.count() == 0 ? "no light grid"
+                : StatsReport.count(lights.count(), "light grid") + " of "
+                        + StatsReport.count(lights.entries(), "entry", "entries");
     }
 
     /**

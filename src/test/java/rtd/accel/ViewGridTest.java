@@ -70,7 +70,7 @@ class ViewGridTest {
         return found;
     }
 
-    private static ICamera randomCamera(Random random) {
+    static ICamera randomCamera(Random random) {
         Vector3f direction = switch (random.nextInt(4)) {
             case 0 -> new Vector3f(0, 0, -1); // the paper's
             case 1 -> new Vector3f(0, -1, 0); // straight down: the image axes' special case

@@ -186,9 +186,10 @@ class CommandLineTest {
         assertThat(Cli.run(EXAMPLE.toString(), "--threads", "0").exitCode()).isEqualTo(2);
         Run accel = Cli.run(EXAMPLE.toString(), "--accel", "fast");
         assertThat(accel.exitCode()).isEqualTo(2);
-        assertThat(accel.err()).contains("expected one of [auto, none, bvh, grid]");
+        assertThat(accel.err()).contains("expected one of [auto, none, bvh, grid, image]");
         byte[] reference = null;
-        for (String[] choice : new String[][] {{"1", "none"}, {"64", "none"}, {"3", "bvh"}, {"2", "auto"}, {"2", "grid"}}) {
+        for (String[] choice : new String[][] {{"1", "none"}, {"64", "none"}, {"3", "bvh"}, {"2", "auto"}, {"2", "grid"},
+                {"1", "image"}, {"2", "image"}}) {
             Path out = dir.resolve("t" + choice[0] + choice[1] + ".png");
             Run run = Cli.run(EXAMPLE.toString(), "-o", out.toString(), "--width", "96", "--height", "54",
                     "--threads", choice[0], "--accel", choice[1]);
@@ -218,7 +219,7 @@ class CommandLineTest {
     }
 
     @Test
-    void autoTakesTheViewGridForALargeSceneInFlatColoursAndDrawsWhatTheBvhDraws() throws IOException {
+    void autoTakesTheImageOfHitsForALargeSceneInFlatColoursAndDrawsWhatTheBvhDraws() throws IOException {
         StringBuilder text = new StringBuilder("orthographic_camera:(0|0|20):(0|0|-1):(50)\n");
         java.util.Random random = new java.util.Random(5);
         for (int i = 0; i < Accelerator.GRID_THRESHOLD; i++) {
@@ -230,7 +231,7 @@ class CommandLineTest {
         Run auto = Cli.run(many.toString(), "-o", dir.resolve("auto.png").toString(), "--stats", "--width", "200",
                 "--height", "100");
         assertThat(auto.exitCode()).as(auto.err()).isZero();
-        assertThat(auto.err()).containsPattern("build .* view grid of [0-9,]+ cells of [0-9]+ × [0-9]+ pixels, [0-9,]+ "
+        assertThat(auto.err()).containsPattern("build .* image of hits in [0-9,]+ tiles of 64 × 64 pixels, [0-9,]+ "
                 + "entries\n").doesNotContain("BVH");
         Run bvh = Cli.run(many.toString(), "-o", dir.resolve("bvh.png").toString(), "--stats", "--width", "200",
                 "--height", "100", "--accel", "bvh");

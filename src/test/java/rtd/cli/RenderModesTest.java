@@ -40,6 +40,27 @@ class RenderModesTest {
         assertThat(render("loop", "--accel", "none")).isEqualTo(paper);
         assertThat(render("bvh", "--accel", "bvh")).isEqualTo(paper);
         assertThat(render("auto")).isEqualTo(paper);
+        assertThat(render("grid", "--accel", "grid")).isEqualTo(paper);
+        assertThat(render("image", "--accel", "image")).isEqualTo(paper);
+    }
+
+    @Test
+    void statsOfTheImageOfHitsCountTheTestsOfEachKindOfObject() throws IOException {
+        // 200 × 100 pixels, 10 a unit: each sphere's footprint is 21 × 21 pixels (the box ±1.002),
+        // the box's 11 × 21 (x from −3 to −2, y from −1 to 1), the triangle's 21 × 11; the plane
+        // is tested on every pixel: 2 · 441 + 231 + 231 + 20,000 = 21,344 tests for 20,000 rays.
+        Path scene = Files.writeString(dir.resolve("mixed.txt"), String.join("\n",
+                "orthographic_camera:(0|0|20):(0|0|-1):(10)",
+                "sphere:(0|0|0):(1):(255|0|0)",
+                "sphere:(3|0|0):(1):(0|255|0)",
+                "plane:(0|-2|0):(0|1|0):(0|0|255)",
+                "box:(-3|-1|-1):(-2|1|1):(9|9|9)",
+                "triangle:(0|2|0):(1|3|0):(-1|3|0):(1|2|3)", ""));
+        Run run = Cli.run(scene.toString(), "-o", dir.resolve("m.png").toString(), "--width", "200", "--height", "100",
+                "--accel", "image", "--stats");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err()).contains("image of hits in 8 tiles of 64 × 64 pixels, 5 entries");
+        assertThat(run.err()).contains("per ray: 1.07 intersection tests (0.01 box, 1.00 plane, 0.04 sphere, 0.01 triangle)");
     }
 
     @Test

@@ -1,0 +1,254 @@
+package rtd.accel;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+import rtd.camera.ICamera;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+import rtd.scene.Scene;
+
+/**
+ * Builds a {@link HitImage}, in three passes, each on all threads where it can be: every
+ * object's footprint on the image ({@link ImageFootprint}) and kind; each tile of
+ * {@value #TILE} × {@value #TILE} pixels' list of the objects whose footprint overlaps it, with
+ * the part of the footprint inside the tile and a copy of the numbers of the object's test (as
+ * {@link LeafObjects} packs them), so that a tile's tests read one stretch of memory; and then,
+ * tile by tile, the tests ({@link TileOfHits}). The image is the same for any number of threads:
+ * each pixel's hit is decided in its own tile, by the depth test alone.
+ */
+final class HitImageBuilder {
+
+    /** The side of a tile is 2 to this power: its rays and best hits fit in a core's nearest caches. */
+    static final int SHIFT = 6;
+    static final int TILE = 1 << SHIFT;
+    /** How an entry's object is tested: the packed sphere test, the packed triangle test, its own {@code intersect}. */
+    static final int SPHERE = 0;
+    static final int TRIANGLE = 1;
+    static final int OWN_TEST = 2;
+
+    private final List<IGeometry> objects;
+    private final ICamera camera;
+    private final int width;
+    private final int height;
+    private final ForkJoinPool pool;
+    private final int columns;
+    private final int tiles;
+    /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive); x0 > x1 if no ray sees it or it has no box. */
+    private final int[] footprints;
+    /** Per object in file order: its kind's number among {@link #kindNames}, −1 if it has no box (a plane). */
+    private final byte[] kinds;
+    /** Per object in file order: how it is tested ({@link #SPHERE}, {@link #TRIANGLE}, {@link #OWN_TEST}). */
+    private final byte[] tests;
+    /** The kinds' names ({@link IGeometry#kind}), numbered as the threads meet them. */
+    private final List<String> kindNames = new ArrayList<>();
+
+    HitImageBuilder(List<IGeometry> objects, ICamera camera, int width, int height, ForkJoinPool pool) {
+        this.objects = objects;
+        this.camera = camera;
+        this.width = width;
+        this.height = height;
+        this.pool = pool;
+        this.columns = ViewGrid.cellsAlong(width, SHIFT);
+        this.tiles = columns * ViewGrid.cellsAlong(height, SHIFT);
+        this.footprints = new int[4 * objects.size()];
+        this.kinds = new byte[objects.size()];
+        this.tests = new byte[objects.size()];
+    }
+
+    HitImage build(Scene scene) {
+        Parts parts = new Parts(objects.size(), pool);
+        measure(ImageFootprint.of(camera, width, height, 0), parts);
+        int[][] entriesPerPart = new int[parts.parts][tiles];
+        int[][] numbersPerPart = new int[parts.parts][tiles];
+        count(parts, entriesPerPart, numbersPerPart);
+        int[] tileStart = new int[tiles + 1];
+        int entryCount = runningSums(entriesPerPart, tileStart);
+        int numberCount = runningSums(numbersPerPart, new int[tiles + 1]);
+        int[] entries = new int[TileOfHits.ENTRY * entryCount];
+        float[] numbers = new float[numberCount];
+        fill(parts, entriesPerPart, numbersPerPart, entries, numbers);
+        HitImage image = new HitImage(scene, unbounded(), width, height, kindNames.toArray(String[]::new),
+                entryCount, tiles);
+        drawTiles(image, tileStart, entries, numbers);
+        return image;
+    }
+
+    /** Each object's footprint, and its kind. */
+    private void measure(ImageFootprint footprint, Parts parts) {
+        parts.run((start, end) -> {
+            float[] box = new float[6];
+            String lastName = null;
+            byte lastKind = -1;
+            for (int f = start; f < end; f++) {
+                IGeometry object = objects.get(f);
+                footprint.putObject(object, box, footprints, 4 * f);
+                if (!ImageFootprint.isFinite(box)) {
+                    kinds[f] = -1;
+                    continue;
+                }
+                String name = object.kind();
+                if (!name.equals(lastName)) {
+                    lastName = name;
+                    lastKind = kindOf(name);
+                }
+                kinds[f] = lastKind;
+                tests[f] = (byte) testOf(object);
+            }
+        });
+    }
+
+    /** The number of the kind of this name, given it anew if it is the first of its kind. */
+    private synchronized byte kindOf(String name) {
+        int kind = kindNames.indexOf(name);
+        if (kind < 0) {
+            kind = kindNames.size();
+            kindNames.add(name);
+        }
+        return (byte) kind;
+    }
+
+    private boolean listed(int f) {
+        return kinds[f] >= 0 && footprints[4 * f] <= footprints[4 * f + 2];
+    }
+
+    private static int testOf(IGeometry object) {
+        return object instanceof Sphere ? SPHERE : object instanceof Triangle ? TRIANGLE : OWN_TEST;
+    }
+
+    private static int numbersOf(int test) {
+        return test == SPHERE ? Sphere.NUMBERS : test == TRIANGLE ? Triangle.NUMBERS : 0;
+    }
+
+    /** The objects without a box, which every ray meets, in file order. */
+    private int[] unbounded() {
+        int count = 0;
+        for (byte kind : kinds) {
+            count += kind < 0 ? 1 : 0;
+        }
+        int[] order = new int[count];
+        for (int f = 0, k = 0; k < count; f++) {
+            if (kinds[f] < 0) {
+                order[k++] = f;
+            }
+        }
+        return order;
+    }
+
+    /** Part by part of the objects, how many entries and how many numbers of tests each tile gets. */
+    private void count(Parts parts, int[][] entriesPerPart, int[][] numbersPerPart) {
+        parts.run((start, end, part) -> {
+            int[] entries = entriesPerPart[part];
+            int[] numbers = numbersPerPart[part];
+            for (int f = start; f < end; f++) {
+                if (listed(f)) {
+                    int size = numbersOf(tests[f]);
+                    int at = 4 * f;
+                    for (int y = footprints[at + 1] >> SHIFT; y <= footprints[at + 3] >> SHIFT; y++) {
+                        for (int x = footprints[at] >> SHIFT; x <= footprints[at + 2] >> SHIFT; x++) {
+                            entries[y * columns + x]++;
+                            numbers[y * columns + x] += size;
+                        }
+                    }
+                }
+            }
+        });
+    }
+
+    /**
+     * Turns the counts per part and tile into where each part's share of each tile starts: a
+     * tile's share of the first part, then of the second, and so on, tile after tile; the tiles'
+     * starts go into {@code starts}, and the answer is the sum of all.
+     */
+    private int runningSums(int[][] perPart, int[] starts) {
+        int total = 0;
+        for (int tile = 0; tile < tiles; tile++) {
+            starts[tile] = total;
+            for (int[] counts : perPart) {
+                int count = counts[tile];
+                counts[tile] = total;
+                total += count;
+            }
+        }
+        starts[tiles] = total;
+        return total;
+    }
+
+    /**
+     * Writes each listed object into the tiles its footprint overlaps, part by part of the
+     * objects in parallel: an entry of {@link TileOfHits#ENTRY} ints (its place in the file, its
+     * pixels in the tile x0, y0, x1, y1, where its numbers start, its kind and test) and the
+     * numbers of its test. A tile's objects come in file order, however many parts there are.
+     */
+    private void fill(Parts parts, int[][] entriesPerPart, int[][] numbersPerPart, int[] entries, float[] numbers) {
+        parts.run((start, end, part) -> {
+            int[] entryCursor = entriesPerPart[part];
+            int[] numberCursor = numbersPerPart[part];
+            for (int f = start; f < end; f++) {
+                if (!listed(f)) {
+                    continue;
+                }
+                int test = tests[f];
+                int size = numbersOf(test);
+                int at = 4 * f;
+                for (int y = footprints[at + 1] >> SHIFT; y <= footprints[at + 3] >> SHIFT; y++) {
+                    for (int x = footprints[at] >> SHIFT; x <= footprints[at + 2] >> SHIFT; x++) {
+                        int tile = y * columns + x;
+                        int e = TileOfHits.ENTRY * entryCursor[tile]++;
+                        int n = numberCursor[tile];
+                        numberCursor[tile] += size;
+                        entries[e] = f;
+                        entries[e + 1] = Math.max(footprints[at], x << SHIFT);
+                        entries[e + 2] = Math.max(footprints[at + 1], y << SHIFT);
+                        entries[e + 3] = Math.min(footprints[at + 2], (x << SHIFT) + TILE - 1);
+                        entries[e + 4] = Math.min(footprints[at + 3], (y << SHIFT) + TILE - 1);
+                        entries[e + 5] = n;
+                        entries[e + 6] = kinds[f] << 2 | test;
+                        if (test == SPHERE) {
+                            ((Sphere) objects.get(f)).putTestNumbers(numbers, n);
+                        } else if (test == TRIANGLE) {
+                            ((Triangle) objects.get(f)).putTestNumbers(numbers, n);
+                        }
+                    }
+                }
+            }
+        });
+    }
+
+    /** Runs the tests of every tile, each thread taking the next tile not yet taken. */
+    private void drawTiles(HitImage image, int[] tileStart, int[] entries, float[] numbers) {
+        AtomicInteger next = new AtomicInteger();
+        Callable<Void> worker = () -> {
+            TileOfHits tile = new TileOfHits(image, camera, entries, numbers);
+            for (int k = next.getAndIncrement(); k < tiles; k = next.getAndIncrement()) {
+                int left = (k % columns) << SHIFT;
+                int top = (k / columns) << SHIFT;
+                tile.draw(left, top, Math.min(width, left + TILE), Math.min(height, top + TILE), tileStart[k],
+                        tileStart[k + 1]);
+            }
+            return null;
+        };
+        if (pool == null) {
+            call(worker);
+            return;
+        }
+        for (Future<Void> done : pool.invokeAll(Collections.nCopies(pool.getParallelism(), worker))) {
+            Parts.join(done);
+        }
+    }
+
+    private static void call(Callable<Void> worker) {
+        try {
+            worker.call();
+        } catch (RuntimeException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+}

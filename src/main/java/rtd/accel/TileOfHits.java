@@ -1,0 +1,164 @@
+package rtd.accel;
+
+import java.util.Arrays;
+import rtd.camera.ICamera;
+import rtd.geometry.RayTriangle;
+import rtd.geometry.Sphere;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+
+/**
+ * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera
+ * rays, as numbers, and each pixel's best hit so far. Each object listed for the tile runs the
+ * paper's intersection test on the pixels of its footprint inside the tile (a sphere's and a
+ * triangle's on the copy of their numbers, {@link LeafObjects#sphere} and {@link RayTriangle#hit},
+ * the same float operations as {@link Sphere#intersect} and {@link rtd.geometry.Triangle#intersect}), and
+ * the depth test ({@link NearestHit#depthKey}: the nearest hit wins, and on a tie the object that
+ * comes first in the file) keeps the winner; the objects without a box are tested on every
+ * pixel, as the paper's loop tests them.
+ */
+final class TileOfHits {
+
+    /** Ints per entry: the object's place in the file; x0, y0, x1, y1 of its pixels; where its numbers start; kind and test. */
+    static final int ENTRY = 7;
+    private static final int PIXELS = HitImageBuilder.TILE * HitImageBuilder.TILE;
+
+    private final HitImage image;
+    private final ICamera camera;
+    private final int[] entries;
+    private final float[] numbers;
+    private final UnboundedObjects unbounded;
+    private final float[] ox = new float[PIXELS];
+    private final float[] oy = new float[PIXELS];
+    private final float[] oz = new float[PIXELS];
+    private final float[] dx = new float[PIXELS];
+    private final float[] dy = new float[PIXELS];
+    private final float[] dz = new float[PIXELS];
+    private final float[] dd = new float[PIXELS];
+    private final long[] bestKey = new long[PIXELS];
+    private final float[] bestT = new float[PIXELS];
+    private final float[] bestDistance = new float[PIXELS];
+    /** Per kind, per pixel of the tile: the tests run. */
+    private final int[][] tests;
+    private final float[] ray = new float[6];
+
+    TileOfHits(HitImage image, ICamera camera, int[] entries, float[] numbers) {
+        this.image = image;
+        this.camera = camera;
+        this.entries = entries;
+        this.numbers = numbers;
+        this.unbounded = new UnboundedObjects(image.unbounded);
+        this.tests = new int[image.kindNames.length][PIXELS];
+    }
+
+    /** The hits of the pixels {@code [left, right) × [top, bottom)}, whose objects are entries {@code [first, end)}. */
+    void draw(int left, int top, int right, int bottom, int first, int end) {
+        makeRays(left, top, right, bottom);
+        testUnbounded(right - left, bottom - top);
+        for (int e = ENTRY * first; e < ENTRY * end; e += ENTRY) {
+            testObject(e, left, top);
+        }
+        store(left, top, right, bottom);
+    }
+
+    /** Pixel (x, y) of the tile, its top left (0, 0), row by row at the tile's full width. */
+    private static int at(int x, int y) {
+        return (y << HitImageBuilder.SHIFT) + x;
+    }
+
+    /** Each pixel's ray through its corner, as the camera makes it ({@link ICamera#putRay}), and no hit yet. */
+    private void makeRays(int left, int top, int right, int bottom) {
+        for (int y = top; y < bottom; y++) {
+            for (int x = left; x < right; x++) {
+                int p = at(x - left, y - top);
+                camera.putRay(x, y, image.width, image.height, ray, 0);
+                ox[p] = ray[0];
+                oy[p] = ray[1];
+                oz[p] = ray[2];
+                dx[p] = ray[3];
+                dy[p] = ray[4];
+                dz[p] = ray[5];
+                dd[p] = (ray[3] * ray[3]) + (ray[4] * ray[4]) + (ray[5] * ray[5]); // D·D, as NearestHit sums it
+                bestKey[p] = NearestHit.NO_HIT;
+                bestT[p] = Float.NaN;
+                bestDistance[p] = Float.POSITIVE_INFINITY;
+            }
+        }
+        for (int[] ofKind : tests) {
+            Arrays.fill(ofKind, 0);
+        }
+    }
+
+    /** The objects without a box, on every pixel of a tile {@code width × height}. */
+    private void testUnbounded(int width, int height) {
+        for (int i = 0; i < unbounded.count(); i++) {
+            for (int y = 0; y < height; y++) {
+                for (int x = 0; x < width; x++) {
+                    int p = at(x, y);
+                    float t = unbounded.t(i, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p]);
+                    if (t >= 0) { // false for NaN: no hit
+                        consider(p, image.unboundedOrder[i], t);
+                    }
+                }
+            }
+        }
+    }
+
+    /** The object of entry {@code e} on its pixels of the tile whose top left is ({@code left}, {@code top}). */
+    private void testObject(int e, int left, int top) {
+        int index = entries[e];
+        int x0 = entries[e + 1] - left;
+        int y0 = entries[e + 2] - top;
+        int x1 = entries[e + 3] - left;
+        int y1 = entries[e + 4] - top;
+        int at = entries[e + 5];
+        int test = entries[e + 6] & 3;
+        int[] ofKind = tests[entries[e + 6] >> 2];
+        for (int y = y0; y <= y1; y++) {
+            for (int x = x0; x <= x1; x++) {
+                int p = at(x, y);
+                ofKind[p]++;
+                float t = test == HitImageBuilder.SPHERE
+                        ? LeafObjects.sphere(numbers, at, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p], dd[p])
+                        : test == HitImageBuilder.TRIANGLE ? RayTriangle.hit(numbers, at, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p])
+                        : ownTest(index, p);
+                if (t >= 0) { // false for NaN: no hit
+                    consider(p, index, t);
+                }
+            }
+        }
+    }
+
+    /** Any other shape's own {@code intersect}, on pixel {@code p}'s ray. */
+    private float ownTest(int index, int p) {
+        Ray r = new Ray(new Vector3f(ox[p], oy[p], oz[p]), new Vector3f(dx[p], dy[p], dz[p]));
+        return image.scene.objects().get(index).intersect(r).t();
+    }
+
+    /** The depth test of Listing 4.3 for pixel {@code p}: as {@link NearestHit}'s. */
+    private void consider(int p, int index, float t) {
+        float distance = LeafObjects.distance(t, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p]);
+        long key = NearestHit.depthKey(distance, index);
+        if (key < bestKey[p]) {
+            bestKey[p] = key;
+            bestT[p] = t;
+            bestDistance[p] = distance;
+        }
+    }
+
+    /** The tile's hits into the image. */
+    private void store(int left, int top, int right, int bottom) {
+        for (int y = top; y < bottom; y++) {
+            for (int x = left; x < right; x++) {
+                int p = at(x - left, y - top);
+                int pixel = y * image.width + x;
+                image.index[pixel] = bestKey[p] != NearestHit.NO_HIT ? (int) bestKey[p] : -1;
+                image.t[pixel] = bestT[p];
+                image.distance[pixel] = bestDistance[p];
+                for (int k = 0; k < tests.length; k++) {
+                    image.testsOfKind[k][pixel] = tests[k][p];
+                }
+            }
+        }
+    }
+}

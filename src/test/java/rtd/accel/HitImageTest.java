@@ -1,0 +1,190 @@
+package rtd.accel;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static rtd.accel.SameHit.assertSame;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import rtd.camera.ICamera;
+import rtd.camera.OrthographicCamera;
+import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Plane;
+import rtd.geometry.Sphere;
+import rtd.image.Color;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.render.WorkCount;
+import rtd.scene.Scene;
+import rtd.testing.MixedScenes;
+import rtd.testing.RandomScenes;
+
+/**
+ * The image of hits, found object by object, gives every pixel the paper's loop's hit, bit for
+ * bit: for random scenes of every kind of object seen by random cameras of both kinds, where
+ * rounding lets the test hit far beside small spheres, and for any number of threads.
+ */
+@DisplayName("The image of hits finds the loop's hit for every pixel")
+class HitImageTest {
+
+    private static final int WIDTH = 150;
+    private static final int HEIGHT = 70; // not a whole number of tiles either way
+
+    /**
+     * Asks the image for every pixel's ray in squares of 8 × 8 as the renderer does, each square
+     * first at once, and checks each against the loop; answers the hits.
+     */
+    private static List<Hit> checkEveryPixel(Scene scene, HitImage image, boolean hitPointsRead) {
+        HitImageTracer tracer = image.newTracer();
+        RayBundle bundle = new RayBundle(64);
+        HitBuffer hits = new HitBuffer(64);
+        hits.readHitPoints(hitPointsRead);
+        List<Hit> found = new ArrayList<>();
+        for (int top = 0; top < HEIGHT; top += 8) {
+            for (int left = 0; left < WIDTH; left += 8) {
+                int right = Math.min(WIDTH, left + 8);
+                int bottom = Math.min(HEIGHT, top + 8);
+                bundle.fill(scene.camera(), left, top, right, bottom, WIDTH, HEIGHT);
+                if (!tracer.traceAtOnce(bundle, hits)) {
+                    tracer.traceAll(bundle, hits);
+                } else if (hitPointsRead) {
+                    assertThat(hits.missedAll()).as("a square whose hit points are read, at once").isTrue();
+                }
+                for (int i = 0; i < bundle.count(); i++) {
+                    Ray ray = bundle.ray(i);
+                    Hit expected = scene.nearestHit(ray);
+                    String what = "pixel (" + (left + i % (right - left)) + ", " + (top + i / (right - left)) + ") " + ray;
+                    if (hitPointsRead) {
+                        assertSame(hits.hit(i, bundle, scene.objects()), expected, what);
+                    } else {
+                        assertThat(hits.index(i)).as(what).isEqualTo(expected == null ? -1 : expected.index());
+                    }
+                    if (expected != null) {
+                        found.add(expected);
+                    }
+                }
+            }
+        }
+        return found;
+    }
+
+    @ParameterizedTest(name = "random scene {0}")
+    @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12})
+    void forEveryPixelOfRandomScenesSeenByRandomCamerasOfBothKinds(long seed) {
+        Scene mixed = MixedScenes.generate(seed, 100 + (int) (seed * 89 % 300));
+        Random random = new Random(seed);
+        int hits = 0;
+        for (int view = 0; view < 4; view++) {
+            Scene scene = new Scene(mixed.ambient(), ViewGridTest.randomCamera(random), mixed.objects());
+            HitImage image = HitImage.build(scene, WIDTH, HEIGHT, 1);
+            hits += checkEveryPixel(scene, image, true).size();
+            checkEveryPixel(scene, image, false);
+        }
+        assertThat(hits).as("rays that hit something").isGreaterThan(10_000);
+    }
+
+    @Test
+    void evenWhereRoundingLetsTheTestHitFarBesideSmallSpheresSeenFromAfar() {
+        Vector3f along = new Vector3f(0.3f, -0.2f, -1);
+        assertFindsHitsBesideSmallSpheres(new OrthographicCamera(along.normalize().multiply(-2000), along, 60), 7);
+        Vector3f direction = new Vector3f(-0.2f, 0.1f, -1);
+        assertFindsHitsBesideSmallSpheres(new PerspectiveCamera(direction.normalize().multiply(-3000), direction, 0.03f), 9);
+    }
+
+    /** Sixty small spheres seen from thousands of units away: every pixel as the loop's, and hits well beside them. */
+    private static void assertFindsHitsBesideSmallSpheres(ICamera camera, long seed) {
+        Random random = new Random(seed);
+        List<IGeometry> objects = new ArrayList<>();
+        for (int i = 0; i < 60; i++) {
+            Vector3f centre = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
+            objects.add(new Sphere(centre, 0.002f + random.nextFloat() * 0.02f, new Color(i, 2 * i, 3 * i)));
+        }
+        Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
+        List<Hit> hits = checkEveryPixel(scene, HitImage.build(scene, WIDTH, HEIGHT, 1), true);
+        long beside = hits.stream().filter(hit -> {
+            Sphere sphere = (Sphere) hit.object();
+            return hit.point().subtract(sphere.center()).magnitude() > 1.5 * sphere.radius();
+        }).count();
+        assertThat(beside).as("hits farther than 1.5 r from the centre, of %d", hits.size()).isGreaterThan(20);
+    }
+
+    @Test
+    void theImageIsTheSameForAnyNumberOfThreads() {
+        Scene scene = RandomScenes.generate(5, 30_000); // enough objects to build in parallel
+        HitImage one = HitImage.build(scene, 320, 180, 1);
+        for (int threads : new int[] {2, 3}) {
+            HitImage more = HitImage.build(scene, 320, 180, threads);
+            assertThat(more.index).as("objects, %d threads", threads).isEqualTo(one.index);
+            assertThat(more.t).as("t, %d threads", threads).isEqualTo(one.t);
+            assertThat(more.distance).as("distances, %d threads", threads).isEqualTo(one.distance);
+            assertThat(more.testsOfKind).as("tests, %d threads", threads).isDeepEqualTo(one.testsOfKind);
+            assertThat(more.entries()).isEqualTo(one.entries());
+        }
+        assertThat(java.util.Arrays.stream(one.index).filter(i -> i >= 0).count()).as("pixels that show a sphere")
+                .isGreaterThan(10_000);
+    }
+
+    @Test
+    void eachPixelCountsTheTestsOfTheObjectsWhoseFootprintHoldsItAndOfEveryPlane() {
+        // Camera at z = 20 looking down −z, 10 pixels a unit, 100 × 60: pixel x's ray runs at
+        // x = (x − 50) / 10, pixel y's at y = (30 − y) / 10. A sphere of radius 1 at the origin
+        // has the box ±1.002 (Sphere.bounds), grown by rounding by a few millionths: its
+        // footprint is the pixels whose rays pass within it, x from 40 to 60 (39 runs at −1.1)
+        // and y from 20 to 40, 21 × 21 pixels.
+        OrthographicCamera camera = new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 10);
+        Sphere sphere = new Sphere(new Vector3f(0, 0, 0), 1, new Color(1, 2, 3));
+        Plane floor = new Plane(new Vector3f(0, 0, -5), new Vector3f(0, 0, 1), new Color(4, 5, 6),
+                rtd.geometry.Material.DEFAULT);
+        Scene scene = new Scene(new Color(0, 0, 0), camera, List.of(sphere, floor));
+        HitImage image = HitImage.build(scene, 100, 60, 1);
+        HitImageTracer tracer = image.newTracer();
+        RayBundle square = new RayBundle(64);
+        HitBuffer hits = new HitBuffer(64);
+        long tests = 0;
+        for (int top = 0; top < 60; top += 8) {
+            for (int left = 0; left < 100; left += 8) {
+                square.fill(camera, left, top, Math.min(100, left + 8), Math.min(60, top + 8), 100, 60);
+                tracer.traceAll(square, hits);
+                for (int i = 0; i < square.count(); i++) {
+                    int x = left + i % (Math.min(100, left + 8) - left);
+                    int y = top + i / (Math.min(100, left + 8) - left);
+                    boolean inFootprint = x >= 40 && x <= 60 && y >= 20 && y <= 40;
+                    assertThat(hits.tests(i)).as("pixel (%d, %d)", x, y).isEqualTo(inFootprint ? 2 : 1);
+                    assertThat(hits.index(i)).as("pixel (%d, %d)", x, y).isIn(0, 1);
+                    tests += hits.tests(i);
+                }
+            }
+        }
+        WorkCount work = tracer.work();
+        assertThat(work.rays()).isEqualTo(6_000);
+        assertThat(work.testsByKind()).containsEntry("plane", 6_000L).containsEntry("sphere", 21L * 21);
+        assertThat(work.intersectionTests()).isEqualTo(tests);
+    }
+
+    @Test
+    void aRayThatIsNotOneOfTheImagesFindsTheLoopsHitToo() {
+        Scene mixed = MixedScenes.generate(11, 200);
+        Scene scene = new Scene(mixed.ambient(), ViewGridTest.randomCamera(new Random(11)), mixed.objects());
+        HitImageTracer tracer = HitImage.build(scene, WIDTH, HEIGHT, 1).newTracer();
+        Random random = new Random(11);
+        for (int r = 0; r < 500; r++) {
+            Ray ray = MixedScenes.ray(random, scene);
+            assertSame(tracer.nearestHit(ray), scene.nearestHit(ray), "ray " + r + " " + ray);
+        }
+        RayBundle samples = new RayBundle(64); // rays through the middles of their pixels: not the image's
+        HitBuffer hits = new HitBuffer(64);
+        samples.fill(scene.camera(), 40, 16, 48, 24, WIDTH, HEIGHT, 0.5f, 0.5f);
+        tracer.traceAll(samples, hits);
+        for (int i = 0; i < samples.count(); i++) {
+            assertSame(hits.hit(i, samples, scene.objects()), scene.nearestHit(samples.ray(i)), "sample " + i);
+        }
+    }
+}
