@@ -101,19 +101,8 @@ class HitImageTest {
 
     /** Sixty small spheres seen from thousands of units away: every pixel as the loop's, and hits well beside them. */
     private static void assertFindsHitsBesideSmallSpheres(ICamera camera, long seed) {
-        Random random = new Random(seed);
-        List<IGeometry> objects = new ArrayList<>();
-        for (int i = 0; i < 60; i++) {
-            Vector3f centre = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
-            objects.add(new Sphere(centre, 0.002f + random.nextFloat() * 0.02f, new Color(i, 2 * i, 3 * i)));
-        }
-        Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
-        List<Hit> hits = checkEveryPixel(scene, HitImage.build(scene, WIDTH, HEIGHT, 1), true);
-        long beside = hits.stream().filter(hit -> {
-            Sphere sphere = (Sphere) hit.object();
-            return hit.point().subtract(sphere.center()).magnitude() > 1.5 * sphere.radius();
-        }).count();
-        assertThat(beside).as("hits farther than 1.5 r from the centre, of %d", hits.size()).isGreaterThan(20);
+        Scene scene = ViewGridTest.smallSpheres(camera, seed);
+        ViewGridTest.assertSomeHitsLieBeside(checkEveryPixel(scene, HitImage.build(scene, WIDTH, HEIGHT, 1), true));
     }
 
     @Test

@@ -163,14 +163,23 @@ class ViewGridTest {
      * from their sphere's centre, so that the test does meet such hits.
      */
     private static void assertFindsHitsBesideSmallSpheres(ICamera camera, long seed) {
+        Scene scene = smallSpheres(camera, seed);
+        assertSomeHitsLieBeside(checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0));
+    }
+
+    /** Sixty small spheres around the origin, seen by {@code camera}. */
+    static Scene smallSpheres(ICamera camera, long seed) {
         Random random = new Random(seed);
         List<IGeometry> objects = new ArrayList<>();
         for (int i = 0; i < 60; i++) {
             Vector3f centre = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
             objects.add(new Sphere(centre, 0.002f + random.nextFloat() * 0.02f, new Color(i, 2 * i, 3 * i)));
         }
-        Scene scene = new Scene(new Color(0, 0, 0), camera, objects);
-        List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
+        return new Scene(new Color(0, 0, 0), camera, objects);
+    }
+
+    /** More than 20 of the {@code hits} lie farther than 1.5 r from their sphere's centre. */
+    static void assertSomeHitsLieBeside(List<Hit> hits) {
         long beside = hits.stream().filter(hit -> {
             Sphere sphere = (Sphere) hit.object();
             return hit.point().subtract(sphere.center()).magnitude() > 1.5 * sphere.radius();

@@ -49,13 +49,7 @@ class RenderModesTest {
         // 200 × 100 pixels, 10 a unit: each sphere's footprint is 21 × 21 pixels (the box ±1.002),
         // the box's 11 × 21 (x from −3 to −2, y from −1 to 1), the triangle's 21 × 11; the plane
         // is tested on every pixel: 2 · 441 + 231 + 231 + 20,000 = 21,344 tests for 20,000 rays.
-        Path scene = Files.writeString(dir.resolve("mixed.txt"), String.join("\n",
-                "orthographic_camera:(0|0|20):(0|0|-1):(10)",
-                "sphere:(0|0|0):(1):(255|0|0)",
-                "sphere:(3|0|0):(1):(0|255|0)",
-                "plane:(0|-2|0):(0|1|0):(0|0|255)",
-                "box:(-3|-1|-1):(-2|1|1):(9|9|9)",
-                "triangle:(0|2|0):(1|3|0):(-1|3|0):(1|2|3)", ""));
+        Path scene = Files.writeString(dir.resolve("mixed.txt"), MIXED);
         Run run = Cli.run(scene.toString(), "-o", dir.resolve("m.png").toString(), "--width", "200", "--height", "100",
                 "--accel", "image", "--stats");
         assertThat(run.exitCode()).as(run.err()).isZero();
@@ -70,15 +64,18 @@ class RenderModesTest {
         assertThat(run.err()).contains("2,073,600 rays").contains("per ray: 2.00 intersection tests");
     }
 
+    /** One object of each kind with a test of its own, seen from the front, 10 pixels a unit. */
+    private static final String MIXED = String.join("\n",
+            "orthographic_camera:(0|0|20):(0|0|-1):(10)",
+            "sphere:(0|0|0):(1):(255|0|0)",
+            "sphere:(3|0|0):(1):(0|255|0)",
+            "plane:(0|-2|0):(0|1|0):(0|0|255)",
+            "box:(-3|-1|-1):(-2|1|1):(9|9|9)",
+            "triangle:(0|2|0):(1|3|0):(-1|3|0):(1|2|3)", "");
+
     @Test
     void statsCountTheTestsOfEachKindOfObject() throws IOException {
-        Path scene = Files.writeString(dir.resolve("mixed.txt"), String.join("\n",
-                "orthographic_camera:(0|0|20):(0|0|-1):(10)",
-                "sphere:(0|0|0):(1):(255|0|0)",
-                "sphere:(3|0|0):(1):(0|255|0)",
-                "plane:(0|-2|0):(0|1|0):(0|0|255)",
-                "box:(-3|-1|-1):(-2|1|1):(9|9|9)",
-                "triangle:(0|2|0):(1|3|0):(-1|3|0):(1|2|3)", ""));
+        Path scene = Files.writeString(dir.resolve("mixed.txt"), MIXED);
         Run run = Cli.run(scene.toString(), "-o", dir.resolve("m.png").toString(), "--width", "200", "--height", "100",
                 "--accel", "none", "--stats");
         assertThat(run.exitCode()).as(run.err()).isZero();
