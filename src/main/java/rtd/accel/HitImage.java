@@ -69,12 +69,24 @@ public final class HitImage {
         return samples == 1 && ImageFootprint.fits(scene.camera());
     }
 
-    /** The image of {@code scene}'s nearest hits for a {@code width × height} picture, built with {@code threads} threads. */
+    /**
+     * The image of {@code scene}'s nearest hits for a {@code width × height} picture, built with
+     * {@code threads} threads; null if the objects' footprints together cover the image more
+     * than {@link HitImageBuilder#MOST_TESTS_A_PIXEL} times over (objects deep behind each other,
+     * each of which would be tested on all its pixels), or so often that the tiles' lists would
+     * pass {@link HitImageBuilder#MOST_INTS} numbers: the {@link ViewGrid}, whose rays test the
+     * front objects only and whose cells grow with the entries, serves such a scene.
+     */
     public static HitImage build(Scene scene, int width, int height, int threads) {
+        return build(scene, width, height, threads, true);
+    }
+
+    /** As {@link #build(Scene, int, int, int)}, without the limits if {@code limited} is false (for tests). */
+    static HitImage build(Scene scene, int width, int height, int threads, boolean limited) {
         boolean parallel = threads > 1 && scene.objects().size() >= BvhBuilder.PARALLEL_THRESHOLD;
         ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
         try {
-            return new HitImageBuilder(scene.objects(), scene.camera(), width, height, pool).build(scene);
+            return new HitImageBuilder(scene.objects(), scene.camera(), width, height, pool).build(scene, limited);
         } finally {
             if (pool != null) {
                 pool.shutdown();

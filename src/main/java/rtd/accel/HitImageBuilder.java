@@ -31,6 +31,18 @@ final class HitImageBuilder {
     static final int SPHERE = 0;
     static final int TRIANGLE = 1;
     static final int OWN_TEST = 2;
+    /**
+     * The most ints and floats the tiles' lists may take, 256 MiB: as much as the view grid's
+     * lists at their most ({@link CellSide#MOST_ENTRIES} places and distances). A million spheres
+     * take 12 million, the terrain of a million triangles 36 million.
+     */
+    static final long MOST_INTS = 2 * CellSide.MOST_ENTRIES;
+    /**
+     * The most tests a pixel on average: each object is tested on every pixel of its footprint,
+     * hidden or not, so where objects lie deeper behind each other (a million random spheres: 7.7
+     * a pixel, the terrain 5.5) the view grid, whose rays test the front objects only, serves.
+     */
+    static final long MOST_TESTS_A_PIXEL = 16;
 
     private final List<IGeometry> objects;
     private final ICamera camera;
@@ -61,12 +73,22 @@ final class HitImageBuilder {
         this.tests = new byte[objects.size()];
     }
 
-    HitImage build(Scene scene) {
+    /** The image of {@code scene}'s hits; null if {@code limited} and it would pass the limits. */
+    HitImage build(Scene scene, boolean limited) {
         Parts parts = new Parts(objects.size(), pool);
         measure(ImageFootprint.of(camera, width, height, 0), parts);
         int[][] entriesPerPart = new int[parts.parts][tiles];
         int[][] numbersPerPart = new int[parts.parts][tiles];
-        count(parts, entriesPerPart, numbersPerPart);
+        long[] testsPerPart = new long[parts.parts];
+        count(parts, entriesPerPart, numbersPerPart, testsPerPart);
+        long tests = 0;
+        for (long ofPart : testsPerPart) {
+            tests += ofPart;
+        }
+        if (limited && tests > MOST_TESTS_A_PIXEL * width * height
+                || limited && sum(entriesPerPart) * TileOfHits.ENTRY + sum(numbersPerPart) > MOST_INTS) {
+            return null; // objects that hide each other deeply: the view grid tests the front ones only
+        }
         int[] tileStart = new int[tiles + 1];
         int entryCount = runningSums(entriesPerPart, tileStart);
         int numberCount = runningSums(numbersPerPart, new int[tiles + 1]);
@@ -140,8 +162,11 @@ final class HitImageBuilder {
         return order;
     }
 
-    /** Part by part of the objects, how many entries and how many numbers of tests each tile gets. */
-    private void count(Parts parts, int[][] entriesPerPart, int[][] numbersPerPart) {
+    /**
+     * Part by part of the objects, how many entries and how many numbers of tests each tile
+     * gets, and how many tests the objects will run (the pixels of their footprints).
+     */
+    private void count(Parts parts, int[][] entriesPerPart, int[][] numbersPerPart, long[] testsPerPart) {
         parts.run((start, end, part) -> {
             int[] entries = entriesPerPart[part];
             int[] numbers = numbersPerPart[part];
@@ -149,6 +174,8 @@ final class HitImageBuilder {
                 if (listed(f)) {
                     int size = numbersOf(tests[f]);
                     int at = 4 * f;
+                    testsPerPart[part] += (long) (footprints[at + 2] - footprints[at] + 1)
+                            * (footprints[at + 3] - footprints[at + 1] + 1);
                     for (int y = footprints[at + 1] >> SHIFT; y <= footprints[at + 3] >> SHIFT; y++) {
                         for (int x = footprints[at] >> SHIFT; x <= footprints[at + 2] >> SHIFT; x++) {
                             entries[y * columns + x]++;
@@ -158,6 +185,17 @@ final class HitImageBuilder {
                 }
             }
         });
+    }
+
+    /** All the counts together. */
+    private static long sum(int[][] perPart) {
+        long sum = 0;
+        for (int[] counts : perPart) {
+            for (int count : counts) {
+                sum += count;
+            }
+        }
+        return sum;
     }
 
     /**

@@ -101,11 +101,17 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
             }
             case IMAGE -> {
                 HitImage image = HitImage.build(scene, width, height, threads);
+                if (image == null) { // too many entries: the view grid instead
+                    return build(Kind.GRID, scene, width, height, samples, threads);
+                }
                 return new Accelerator(image::newTracer, () -> describe(image), false);
             }
             case IMAGE_AND_BVH -> {
-                CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene, threads));
                 HitImage image = HitImage.build(scene, width, height, threads);
+                if (image == null) {
+                    return build(Kind.GRID_AND_BVH, scene, width, height, samples, threads);
+                }
+                CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene, threads));
                 LightGrids lights = LightGrids.build(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
                 return new Accelerator(() -> image.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(image)

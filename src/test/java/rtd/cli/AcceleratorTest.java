@@ -38,6 +38,23 @@ class AcceleratorTest {
     }
 
     @Test
+    void objectsDeepBehindEachOtherAreLeftToTheViewGridWhenBuilt() {
+        // 1,000 spheres of radius 0.4 on the points of a square grid, seen 20 pixels a unit: at
+        // 40 × 20 pixels (2 × 1 units) no pixel lies in more than one sphere's footprint, and the
+        // image of hits serves; 1,000 spheres of radius 30 one behind the other each fill the
+        // picture, 1,000 tests a pixel: the view grid.
+        assertThat(Accelerator.of(spheres(1_000, false), Accel.auto, 40, 20, 1, 1).built().get()).startsWith("image of hits");
+        List<IGeometry> large = new ArrayList<>();
+        for (int i = 0; i < 1_000; i++) {
+            large.add(new Sphere(new Vector3f(20, 12, -i), 30, new Color(i % 256, 0, 0)));
+        }
+        Scene deep = new Scene(new Color(0, 0, 0), new OrthographicCamera(new Vector3f(20, 12, 50),
+                new Vector3f(0, 0, -1), 20), large);
+        assertThat(Accelerator.choose(deep, Accel.auto, 1)).isEqualTo(Accelerator.Kind.IMAGE);
+        assertThat(Accelerator.of(deep, Accel.auto, 40, 20, 1, 1).built().get()).startsWith("view grid");
+    }
+
+    @Test
     void imageTakesTheViewGridWhereItCannotServeAndAnyOtherChoiceIsKept() {
         assertThat(Accelerator.choose(spheres(3, false), Accel.image, 1)).isEqualTo(Accelerator.Kind.IMAGE);
         assertThat(Accelerator.choose(spheres(3, true), Accel.image, 1)).isEqualTo(Accelerator.Kind.IMAGE_AND_BVH);
