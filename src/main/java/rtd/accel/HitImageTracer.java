@@ -75,7 +75,9 @@ public final class HitImageTracer implements Tracer {
 
     /**
      * The camera's rays of pixels that all show nothing, or all one object where only the object
-     * is read ({@link HitBuffer#hitPointsRead}), at once.
+     * is read ({@link HitBuffer#hitPointsRead}), at once. Unlike a beam's answer, each ray took
+     * tests (those of the objects whose footprint holds its pixel, run in the build), and they are
+     * written to {@code hits} one by one for {@code --view cost}.
      */
     @Override
     public boolean traceAtOnce(RayBundle bundle, HitBuffer hits) {
@@ -94,14 +96,14 @@ public final class HitImageTracer implements Tracer {
                 }
             }
         }
-        for (int i = 0; i < bundle.count(); i++) {
-            count(pixel(bundle, i, squareWidth));
-        }
         rays += bundle.count();
         if (first < 0) {
             hits.setMisses(bundle.count());
         } else {
             hits.setHits(first, bundle.count());
+        }
+        for (int i = 0; i < bundle.count(); i++) { // the tests were run, in the build: each ray has its own
+            hits.setTests(i, count(pixel(bundle, i, squareWidth)));
         }
         return true;
     }

@@ -180,6 +180,37 @@ class HitImageTest {
     }
 
     @Test
+    void onTheThousandSpheresOfTheWalkthroughEachSphereIsTestedOnEveryPixelOfItsPatch() throws Exception {
+        // docs/walkthrough.md: at 480 × 270 the image of hits takes 2.60 tests a ray (336,530),
+        // the view grid 1.17: every sphere is tested on its whole patch, hidden or not.
+        Scene scene = rtd.io.SceneIO.readScene(java.nio.file.Path.of("examples/thousand_spheres.txt"));
+        HitImage image = HitImage.build(scene, 480, 270, 2);
+        for (boolean pointsRead : new boolean[] {true, false}) { // squares of one sphere answered at once, or not
+            java.util.concurrent.atomic.AtomicLong perRay = new java.util.concurrent.atomic.AtomicLong(); // as --view cost reads them
+            rtd.render.Shader counting = new rtd.render.Shader() {
+                @Override
+                public rtd.image.Rgb colour(RayBundle rays, HitBuffer hits, int i) {
+                    perRay.addAndGet(hits.tests(i));
+                    return rtd.image.Rgb.BLACK;
+                }
+
+                @Override
+                public boolean readsHitPoints() {
+                    return pointsRead;
+                }
+            };
+            rtd.render.ParallelRenderer.render(scene.camera(), image::newTracer, tracer -> counting, 480, 270, 2,
+                    new rtd.render.RenderProgress());
+            assertThat(perRay.get()).as("the rays' own counts, hit points read: %s", pointsRead).isEqualTo(336_530);
+        }
+        rtd.render.RenderResult result = rtd.render.ParallelRenderer.render(scene.camera(), image::newTracer,
+                tracer -> (rays, hits, i) -> rtd.image.Rgb.BLACK, 480, 270, 2, new rtd.render.RenderProgress());
+        assertThat(java.util.Arrays.stream(image.testsOfKind[0]).asLongStream().sum()).isEqualTo(336_530);
+        assertThat(result.work().intersectionTests()).isEqualTo(336_530);
+        assertThat(result.work().rays()).isEqualTo(480 * 270);
+    }
+
+    @Test
     void aRayThatIsNotOneOfTheImagesFindsTheLoopsHitToo() {
         Scene mixed = MixedScenes.generate(11, 200);
         Scene scene = new Scene(mixed.ambient(), ViewGridTest.randomCamera(new Random(11)), mixed.objects());
