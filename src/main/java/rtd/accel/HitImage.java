@@ -74,7 +74,8 @@ public final class HitImage {
      * {@code threads} threads; null if the objects' footprints together cover the image more
      * than {@link HitImageBuilder#MOST_TESTS_A_PIXEL} times over (objects deep behind each other,
      * each of which would be tested on all its pixels), or so often that the tiles' lists would
-     * pass {@link HitImageBuilder#MOST_INTS} numbers: the {@link ViewGrid}, whose rays test the
+     * pass {@link HitImageBuilder#MOST_INTS} numbers, or if the picture has more than
+     * {@link HitImageBuilder#MOST_PIXELS} pixels: the {@link ViewGrid}, whose rays test the
      * front objects only and whose cells grow with the entries, serves such a scene.
      */
     public static HitImage build(Scene scene, int width, int height, int threads) {
@@ -83,8 +84,7 @@ public final class HitImage {
 
     /** As {@link #build(Scene, int, int, int)}, without the limits if {@code limited} is false (for tests). */
     static HitImage build(Scene scene, int width, int height, int threads, boolean limited) {
-        boolean parallel = threads > 1 && scene.objects().size() >= BvhBuilder.PARALLEL_THRESHOLD;
-        ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
+        ForkJoinPool pool = threads > 1 ? new ForkJoinPool(threads) : null; // the tiles' tests pay at any count
         try {
             return new HitImageBuilder(scene.objects(), scene.camera(), width, height, pool).build(scene, limited);
         } finally {

@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -43,6 +44,11 @@ final class HitImageBuilder {
      * a pixel, the terrain 5.5) the view grid, whose rays test the front objects only, serves.
      */
     static final long MOST_TESTS_A_PIXEL = 16;
+    /**
+     * The most pixels, a little over 3840 × 2160: the image takes 12 bytes a pixel and 4 more for
+     * each kind of object, more than the picture itself; a larger picture takes the view grid.
+     */
+    static final long MOST_PIXELS = 1L << 23;
 
     private final List<IGeometry> objects;
     private final ICamera camera;
@@ -57,7 +63,7 @@ final class HitImageBuilder {
     private final byte[] kinds;
     /** Per object in file order: how it is tested ({@link #SPHERE}, {@link #TRIANGLE}, {@link #OWN_TEST}). */
     private final byte[] tests;
-    /** The kinds' names ({@link IGeometry#kind}), numbered as the threads meet them. */
+    /** The kinds' names ({@link IGeometry#kind}), numbered in the order of their first objects in the file. */
     private final List<String> kindNames = new ArrayList<>();
 
     HitImageBuilder(List<IGeometry> objects, ICamera camera, int width, int height, ForkJoinPool pool) {
@@ -75,8 +81,12 @@ final class HitImageBuilder {
 
     /** The image of {@code scene}'s hits; null if {@code limited} and it would pass the limits. */
     HitImage build(Scene scene, boolean limited) {
+        if (limited && (long) width * height > MOST_PIXELS) {
+            return null;
+        }
         Parts parts = new Parts(objects.size(), pool);
         measure(ImageFootprint.of(camera, width, height, 0), parts);
+        numberKindsInFileOrder();
         int[][] entriesPerPart = new int[parts.parts][tiles];
         int[][] numbersPerPart = new int[parts.parts][tiles];
         long[] testsPerPart = new long[parts.parts];
@@ -123,6 +133,34 @@ final class HitImageBuilder {
                 tests[f] = (byte) testOf(object);
             }
         });
+    }
+
+    /**
+     * Numbers the kinds anew in the order of their first objects in the file, so that the
+     * image's counts by kind are the same on every run: the threads of {@link #measure} met them
+     * in an order of their own. A pass over the kinds' numbers, not over the objects.
+     */
+    private void numberKindsInFileOrder() {
+        int count = kindNames.size();
+        byte[] renamed = new byte[count];
+        Arrays.fill(renamed, (byte) -1);
+        List<String> names = new ArrayList<>();
+        for (byte kind : kinds) {
+            if (kind >= 0 && renamed[kind] < 0) {
+                renamed[kind] = (byte) names.size();
+                names.add(kindNames.get(kind));
+                if (names.size() == count) {
+                    break;
+                }
+            }
+        }
+        for (int f = 0; f < kinds.length; f++) {
+            if (kinds[f] >= 0) {
+                kinds[f] = renamed[kinds[f]];
+            }
+        }
+        kindNames.clear();
+        kindNames.addAll(names);
     }
 
     /** The number of the kind of this name, given it anew if it is the first of its kind. */

@@ -4,7 +4,8 @@ package rtd.cli;
 enum Accel {
     /**
      * For a scene of {@link Accelerator#GRID_THRESHOLD} objects or more, the image of hits where
-     * one ray a pixel is drawn, else the view grid (with the bounding volume hierarchy for its
+     * it is drawn in flat colours (no light) with one ray a pixel and the image's limits allow
+     * ({@link rtd.accel.HitImage#build}), else the view grid (with the bounding volume hierarchy for its
      * shadow and mirror rays if it has lights); else the hierarchy whenever the scene has objects:
      * it tests whole squares of rays at once, which pays even for the paper's two spheres.
      */

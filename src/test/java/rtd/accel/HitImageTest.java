@@ -119,6 +119,22 @@ class HitImageTest {
         }
         assertThat(java.util.Arrays.stream(one.index).filter(i -> i >= 0).count()).as("pixels that show a sphere")
                 .isGreaterThan(10_000);
+        Scene mixed = MixedScenes.generate(8, 3_000); // several kinds, met by the threads in an order of their own
+        HitImage first = HitImage.build(mixed, 160, 90, 1, false);
+        for (int run = 0; run < 4; run++) {
+            HitImage again = HitImage.build(mixed, 160, 90, 2 + run % 2, false);
+            assertThat(again.kindNames).as("kinds, run %d", run).containsExactly(first.kindNames);
+            assertThat(again.testsOfKind).as("tests by kind, run %d", run).isDeepEqualTo(first.testsOfKind);
+            assertThat(again.index).isEqualTo(first.index);
+        }
+        assertThat(first.kindNames).hasSizeGreaterThan(2);
+    }
+
+    @Test
+    void aPictureOfMoreThan3840By2160PixelsIsLeftToTheViewGrid() {
+        Scene scene = RandomScenes.generate(3, 50);
+        assertThat(HitImage.build(scene, 4096, 2048, 1)).isNotNull(); // 8,388,608 pixels, the most
+        assertThat(HitImage.build(scene, 4096, 2049, 1)).isNull();
     }
 
     @Test

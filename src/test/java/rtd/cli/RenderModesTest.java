@@ -54,6 +54,11 @@ class RenderModesTest {
                 "--accel", "image", "--stats");
         assertThat(run.exitCode()).as(run.err()).isZero();
         assertThat(run.err()).contains("image of hits in 8 tiles of 64 × 64 pixels, 5 entries");
+        Path lit = Files.writeString(dir.resolve("lit.txt"), MIXED + "light:(0|0|30):(255|255|255)\n");
+        Run shaded = Cli.run(lit.toString(), "-o", dir.resolve("l.png").toString(), "--width", "200", "--height", "100",
+                "--accel", "image", "--stats");
+        assertThat(shaded.exitCode()).as(shaded.err()).isZero();
+        assertThat(shaded.err()).contains("20,000 answered by the image of hits, ");
         assertThat(run.err()).contains("per ray: 1.07 intersection tests (0.01 box, 1.00 plane, 0.04 sphere, 0.01 triangle)");
     }
 
