@@ -1,13 +1,12 @@
 package rtd.accel;
 
-import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.IntStream;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
@@ -59,12 +58,10 @@ final class HitImageBuilder {
     private final int tiles;
     /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive); x0 > x1 if no ray sees it or it has no box. */
     private final int[] footprints;
-    /** Per object in file order: its kind's number among {@link #kindNames}, −1 if it has no box (a plane). */
-    private final byte[] kinds;
+    /** Per object in file order: its kind's number, {@link ObjectKinds#NONE} if it has no box (a plane). */
+    private final ObjectKinds kinds;
     /** Per object in file order: how it is tested ({@link #SPHERE}, {@link #TRIANGLE}, {@link #OWN_TEST}). */
     private final byte[] tests;
-    /** The kinds' names ({@link IGeometry#kind}), numbered in the order of their first objects in the file. */
-    private final List<String> kindNames = new ArrayList<>();
 
     HitImageBuilder(List<IGeometry> objects, ICamera camera, int width, int height, ForkJoinPool pool) {
         this.objects = objects;
@@ -75,7 +72,7 @@ final class HitImageBuilder {
         this.columns = ViewGrid.cellsAlong(width, SHIFT);
         this.tiles = columns * ViewGrid.cellsAlong(height, SHIFT);
         this.footprints = new int[4 * objects.size()];
-        this.kinds = new byte[objects.size()];
+        this.kinds = new ObjectKinds(objects.size());
         this.tests = new byte[objects.size()];
     }
 
@@ -86,7 +83,7 @@ final class HitImageBuilder {
         }
         Parts parts = new Parts(objects.size(), pool);
         measure(ImageFootprint.of(camera, width, height, 0), parts);
-        numberKindsInFileOrder();
+        kinds.numberInFileOrder();
         int[][] entriesPerPart = new int[parts.parts][tiles];
         int[][] numbersPerPart = new int[parts.parts][tiles];
         long[] testsPerPart = new long[parts.parts];
@@ -105,7 +102,7 @@ final class HitImageBuilder {
         int[] entries = new int[TileOfHits.ENTRY * entryCount];
         float[] numbers = new float[numberCount];
         fill(parts, entriesPerPart, numbersPerPart, entries, numbers);
-        HitImage image = new HitImage(scene, unbounded(), width, height, kindNames.toArray(String[]::new),
+        HitImage image = new HitImage(scene, unbounded(), width, height, kinds.names(),
                 entryCount, tiles);
         drawTiles(image, tileStart, entries, numbers);
         return image;
@@ -121,60 +118,22 @@ final class HitImageBuilder {
                 IGeometry object = objects.get(f);
                 footprint.putObject(object, box, footprints, 4 * f);
                 if (!ImageFootprint.isFinite(box)) {
-                    kinds[f] = -1;
+                    kinds.set(f, ObjectKinds.NONE);
                     continue;
                 }
                 String name = object.kind();
                 if (!name.equals(lastName)) {
                     lastName = name;
-                    lastKind = kindOf(name);
+                    lastKind = kinds.numberOf(name);
                 }
-                kinds[f] = lastKind;
+                kinds.set(f, lastKind);
                 tests[f] = (byte) testOf(object);
             }
         });
     }
 
-    /**
-     * Numbers the kinds anew in the order of their first objects in the file, so that the
-     * image's counts by kind are the same on every run: the threads of {@link #measure} met them
-     * in an order of their own. A pass over the kinds' numbers, not over the objects.
-     */
-    private void numberKindsInFileOrder() {
-        int count = kindNames.size();
-        byte[] renamed = new byte[count];
-        Arrays.fill(renamed, (byte) -1);
-        List<String> names = new ArrayList<>();
-        for (byte kind : kinds) {
-            if (kind >= 0 && renamed[kind] < 0) {
-                renamed[kind] = (byte) names.size();
-                names.add(kindNames.get(kind));
-                if (names.size() == count) {
-                    break;
-                }
-            }
-        }
-        for (int f = 0; f < kinds.length; f++) {
-            if (kinds[f] >= 0) {
-                kinds[f] = renamed[kinds[f]];
-            }
-        }
-        kindNames.clear();
-        kindNames.addAll(names);
-    }
-
-    /** The number of the kind of this name, given it anew if it is the first of its kind. */
-    private synchronized byte kindOf(String name) {
-        int kind = kindNames.indexOf(name);
-        if (kind < 0) {
-            kind = kindNames.size();
-            kindNames.add(name);
-        }
-        return (byte) kind;
-    }
-
     private boolean listed(int f) {
-        return kinds[f] >= 0 && footprints[4 * f] <= footprints[4 * f + 2];
+        return kinds.of(f) != ObjectKinds.NONE && footprints[4 * f] <= footprints[4 * f + 2];
     }
 
     private static int testOf(IGeometry object) {
@@ -187,17 +146,7 @@ final class HitImageBuilder {
 
     /** The objects without a box, which every ray meets, in file order. */
     private int[] unbounded() {
-        int count = 0;
-        for (byte kind : kinds) {
-            count += kind < 0 ? 1 : 0;
-        }
-        int[] order = new int[count];
-        for (int f = 0, k = 0; k < count; f++) {
-            if (kinds[f] < 0) {
-                order[k++] = f;
-            }
-        }
-        return order;
+        return IntStream.range(0, objects.size()).filter(f -> kinds.of(f) == ObjectKinds.NONE).toArray();
     }
 
     /**
@@ -284,7 +233,7 @@ final class HitImageBuilder {
                         entries[e + 3] = Math.min(footprints[at + 2], (x << SHIFT) + TILE - 1);
                         entries[e + 4] = Math.min(footprints[at + 3], (y << SHIFT) + TILE - 1);
                         entries[e + 5] = n;
-                        entries[e + 6] = kinds[f] << 2 | test;
+                        entries[e + 6] = kinds.of(f) << 2 | test;
                         if (test == SPHERE) {
                             ((Sphere) objects.get(f)).putTestNumbers(numbers, n);
                         } else if (test == TRIANGLE) {
