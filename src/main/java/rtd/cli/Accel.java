@@ -3,9 +3,10 @@ package rtd.cli;
 /** How rtd finds the object a ray sees: {@code --accel}. */
 enum Accel {
     /**
-     * For a scene of {@link Accelerator#GRID_THRESHOLD} objects or more, the image of hits where
+     * For a scene of {@link Accelerator#IMAGE_THRESHOLD} objects or more, the image of hits where
      * it is drawn in flat colours (no light) with one ray a pixel and the image's limits allow
-     * ({@link rtd.accel.HitImage#build}), else the view grid (with the bounding volume hierarchy for its
+     * ({@link rtd.accel.HitImage#build}); for one of {@link Accelerator#GRID_THRESHOLD} or more
+     * otherwise the view grid (with the bounding volume hierarchy for its
      * shadow and mirror rays if it has lights); else the hierarchy whenever the scene has objects:
      * it tests whole squares of rays at once, which pays even for the paper's two spheres.
      */

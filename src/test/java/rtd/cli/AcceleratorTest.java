@@ -29,11 +29,14 @@ class AcceleratorTest {
     }
 
     @Test
-    void autoTakesTheImageOfHitsForAThousandObjectsInFlatColoursWithOneRayAPixel() {
-        assertThat(Accelerator.choose(spheres(1_000, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.IMAGE);
+    void autoTakesTheImageOfHitsFromHalfAMillionObjectsInFlatColoursWithOneRayAPixel() {
+        assertThat(Accelerator.choose(spheres(500_000, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.IMAGE);
+        assertThat(Accelerator.choose(spheres(499_999, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(1_000, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.GRID);
         assertThat(Accelerator.choose(spheres(999, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.BVH);
-        assertThat(Accelerator.choose(spheres(1_000, false), Accel.auto, 2)).as("samples").isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(1_000, true), Accel.auto, 1)).as("lights")
+        assertThat(Accelerator.choose(spheres(500_000, false), Accel.auto, 2)).as("samples")
+                .isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(500_000, true), Accel.auto, 1)).as("lights")
                 .isEqualTo(Accelerator.Kind.GRID_AND_BVH);
     }
 
@@ -43,15 +46,15 @@ class AcceleratorTest {
         // 40 × 20 pixels (2 × 1 units) no pixel lies in more than one sphere's footprint, and the
         // image of hits serves; 1,000 spheres of radius 30 one behind the other each fill the
         // picture, 1,000 tests a pixel: the view grid.
-        assertThat(Accelerator.of(spheres(1_000, false), Accel.auto, 40, 20, 1, 1).built().get()).startsWith("image of hits");
+        assertThat(Accelerator.of(spheres(1_000, false), Accel.image, 40, 20, 1, 1).built().get()).startsWith("image of hits");
         List<IGeometry> large = new ArrayList<>();
         for (int i = 0; i < 1_000; i++) {
             large.add(new Sphere(new Vector3f(20, 12, -i), 30, new Color(i % 256, 0, 0)));
         }
         Scene deep = new Scene(new Color(0, 0, 0), new OrthographicCamera(new Vector3f(20, 12, 50),
                 new Vector3f(0, 0, -1), 20), large);
-        assertThat(Accelerator.choose(deep, Accel.auto, 1)).isEqualTo(Accelerator.Kind.IMAGE);
-        assertThat(Accelerator.of(deep, Accel.auto, 40, 20, 1, 1).built().get()).startsWith("view grid");
+        assertThat(Accelerator.choose(deep, Accel.image, 1)).isEqualTo(Accelerator.Kind.IMAGE);
+        assertThat(Accelerator.of(deep, Accel.image, 40, 20, 1, 1).built().get()).startsWith("view grid");
     }
 
     @Test

@@ -219,7 +219,7 @@ class CommandLineTest {
     }
 
     @Test
-    void autoTakesTheImageOfHitsForALargeSceneInFlatColoursAndDrawsWhatTheBvhDraws() throws IOException {
+    void autoTakesTheViewGridForALargeSceneInFlatColoursAndDrawsWhatTheBvhDraws() throws IOException {
         StringBuilder text = new StringBuilder("orthographic_camera:(0|0|20):(0|0|-1):(50)\n");
         java.util.Random random = new java.util.Random(5);
         for (int i = 0; i < Accelerator.GRID_THRESHOLD; i++) {
@@ -231,7 +231,7 @@ class CommandLineTest {
         Run auto = Cli.run(many.toString(), "-o", dir.resolve("auto.png").toString(), "--stats", "--width", "200",
                 "--height", "100");
         assertThat(auto.exitCode()).as(auto.err()).isZero();
-        assertThat(auto.err()).containsPattern("build .* image of hits in [0-9,]+ tiles of 64 × 64 pixels, [0-9,]+ "
+        assertThat(auto.err()).containsPattern("build .* view grid of [0-9,]+ cells of [0-9]+ × [0-9]+ pixels, [0-9,]+ "
                 + "entries\n").doesNotContain("BVH");
         Run bvh = Cli.run(many.toString(), "-o", dir.resolve("bvh.png").toString(), "--stats", "--width", "200",
                 "--height", "100", "--accel", "bvh");
