@@ -97,8 +97,8 @@ final class HitImageBuilder {
             return null; // objects that hide each other deeply: the view grid tests the front ones only
         }
         int[] tileStart = new int[tiles + 1];
-        int entryCount = runningSums(entriesPerPart, tileStart);
-        int numberCount = runningSums(numbersPerPart, new int[tiles + 1]);
+        int entryCount = Parts.runningSums(entriesPerPart, tileStart);
+        int numberCount = Parts.runningSums(numbersPerPart, new int[tiles + 1]);
         int[] entries = new int[TileOfHits.ENTRY * entryCount];
         float[] numbers = new float[numberCount];
         fill(parts, entriesPerPart, numbersPerPart, entries, numbers);
@@ -183,25 +183,6 @@ final class HitImageBuilder {
             }
         }
         return sum;
-    }
-
-    /**
-     * Turns the counts per part and tile into where each part's share of each tile starts: a
-     * tile's share of the first part, then of the second, and so on, tile after tile; the tiles'
-     * starts go into {@code starts}, and the answer is the sum of all.
-     */
-    private int runningSums(int[][] perPart, int[] starts) {
-        int total = 0;
-        for (int tile = 0; tile < tiles; tile++) {
-            starts[tile] = total;
-            for (int[] counts : perPart) {
-                int count = counts[tile];
-                counts[tile] = total;
-                total += count;
-            }
-        }
-        starts[tiles] = total;
-        return total;
     }
 
     /**

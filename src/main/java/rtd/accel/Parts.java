@@ -71,6 +71,28 @@ final class Parts {
         }
     }
 
+    /**
+     * Turns counts per part and per cell (of a grid, or a tile of an image) into where each part's
+     * share of each cell starts: a cell's share of the first part, then of the second, and so on,
+     * cell after cell, so that a cell's objects come in file order however many parts there are.
+     * The cells' starts go into {@code starts} (one longer than the cells), and the answer is the
+     * sum of all.
+     */
+    static int runningSums(int[][] perPart, int[] starts) {
+        int cells = starts.length - 1;
+        int total = 0;
+        for (int c = 0; c < cells; c++) {
+            starts[c] = total;
+            for (int[] counts : perPart) {
+                int count = counts[c];
+                counts[c] = total;
+                total += count;
+            }
+        }
+        starts[cells] = total;
+        return total;
+    }
+
     /** As {@link #run(Pass)}, for a pass that does not need its part's number. */
     void run(Range range) {
         run((start, end, part) -> range.run(start, end));

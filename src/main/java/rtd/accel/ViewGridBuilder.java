@@ -196,18 +196,7 @@ final class ViewGridBuilder {
      * {@code nearestByPlace}. So a cell's objects come in file order, however many parts there are.
      */
     private int[] fill(Parts parts, int[][] perPart, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
-        int cells = cellStart.length - 1;
-        int total = 0;
-        for (int c = 0; c < cells; c++) {
-            cellStart[c] = total;
-            for (int[] counts : perPart) {
-                int count = counts[c];
-                counts[c] = total;
-                total += count;
-            }
-        }
-        cellStart[cells] = total;
-        int[] places = new int[total];
+        int[] places = new int[Parts.runningSums(perPart, cellStart)];
         parts.run((start, end, part) -> {
             int[] cursor = perPart[part];
             for (int f = start; f < end; f++) {
