@@ -5,7 +5,8 @@ import rtd.render.RayBundle;
 /**
  * The middle ray of a square's {@link Beam}, and the slab test of boxes grown so that the
  * middle ray's test answers for every ray of the beam ({@link #grownEntry}): what the
- * {@link BeamTracer} tests each box of its walk with. Aimed anew at each square ({@link #aim});
+ * {@link BeamTracer} tests each box of its walk with, and the entry into a leaf's objects'
+ * boxes ({@link #objectsEntry}). Aimed anew at each square ({@link #aim});
  * one per tracer, so that aiming makes no garbage. Not in the paper.
  *
  * <p>Rays from origins within C ± h, with directions within D ± s, form a beam: at any t, every
@@ -52,7 +53,7 @@ final class MiddleRay {
     boolean parallel;
     /**
      * The squared radius from which a sphere's box leaves room for squares outside its outline
-     * worth telling ({@code BeamTracer.objectEntry}): eight times the beam's half diagonal. Smaller
+     * worth telling ({@link #objectEntry}): eight times the beam's half diagonal. Smaller
      * spheres, such as a million random ones, are not worth the check.
      */
     float cornerWorthy;
@@ -130,5 +131,28 @@ final class MiddleRay {
         }
         exit = leave;
         return FastMath.max(enter, 0) <= leave ? enter : MISS; // as NearestHit#entry
+    }
+
+    /** The beam's entry into the nearest box of the objects of {@code leaf}, or {@link #MISS} if it reaches none. */
+    float objectsEntry(int leaf, float grow, float within) {
+        int first = bvh.nodes[2 * leaf];
+        int end = first + bvh.nodes[2 * leaf + 1];
+        float entry = MISS;
+        for (int i = first; i < end; i++) {
+            entry = FastMath.min(entry, objectEntry(i, grow, within));
+        }
+        return entry;
+    }
+
+    /**
+     * The beam's entry into the box of the leaves' object {@code i}, or {@link #MISS} if it
+     * reaches none, or if the object is a sphere that no ray of the square hits (a square in
+     * the corner of a sphere's box, outside its outline).
+     */
+    float objectEntry(int i, float grow, float within) {
+        float entry = grownEntry(bvh.leaves.boxes, 6 * i, grow, within);
+        return entry < MISS && parallel
+                && bvh.leaves.missedByEvery(i, cornerWorthy, beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz)
+                ? MISS : entry;
     }
 }
