@@ -2,6 +2,7 @@ package rtd.accel;
 
 import java.util.Arrays;
 import java.util.Map;
+import java.util.TreeMap;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 
@@ -93,15 +94,10 @@ final class BeamRays {
 
     /** The intersection tests of all the rays so far, by kind of object. */
     Map<String, Long> testsByKind() {
-        long[] tests = new long[bvh.leaves.kindNames.length];
-        long unbounded = 0;
+        Map<String, Long> tests = new TreeMap<>();
         for (NearestHit hit : hits) {
-            long[] counts = hit.tests();
-            for (int k = 0; k < tests.length; k++) {
-                tests[k] += counts[k];
-            }
-            unbounded += hit.unboundedTests();
+            hit.testsByKind().forEach((kind, count) -> tests.merge(kind, count, Long::sum));
         }
-        return BvhTracer.testsByKind(bvh, tests, unbounded);
+        return tests;
     }
 }

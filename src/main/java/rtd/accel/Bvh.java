@@ -54,7 +54,7 @@ public final class Bvh {
     final int maxDepth;
     final List<IGeometry> objects;
     /**
-     * For --stats, where the tree holds several kinds of object ({@link NearestHit#tests()}): per
+     * For --stats, where the tree holds several kinds of object ({@link TestCounts#byKind}): per
      * node, a leaf's kind if its objects are all of one, else −1 − its number among
      * {@link #mixedLeaves}; empty if the tree holds one kind.
      */

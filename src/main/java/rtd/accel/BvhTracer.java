@@ -1,9 +1,6 @@
 package rtd.accel;
 
-import java.util.Map;
-import java.util.TreeMap;
 import rtd.geometry.Hit;
-import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.render.HitBuffer;
@@ -120,24 +117,8 @@ public final class BvhTracer implements Tracer {
     @Override
     public WorkCount work() {
         WorkCount beams = beam.work();
-        return new WorkCount(rays, testsByKind(bvh, hit.tests(), hit.unboundedTests()), nodesVisited).plus(beams)
+        return new WorkCount(rays, hit.testsByKind(), nodesVisited).plus(beams)
                 .answeredBy("BVH");
-    }
-
-    /** Tests per kind of object, from the counts per kind of the tree's objects and the rays that met every unbounded one. */
-    static Map<String, Long> testsByKind(Bvh bvh, long[] treeTests, long unboundedTests) {
-        Map<String, Long> tests = new TreeMap<>();
-        for (int k = 0; k < treeTests.length; k++) {
-            add(tests, bvh.leaves.kindNames[k], treeTests[k]);
-        }
-        for (IGeometry object : bvh.unbounded) {
-            add(tests, object.kind(), unboundedTests);
-        }
-        return tests;
-    }
-
-    private static void add(Map<String, Long> tests, String kind, long count) {
-        tests.put(kind, tests.getOrDefault(kind, 0L) + count);
     }
 
     /**

@@ -85,8 +85,7 @@ final class LightGridTracer implements Tracer {
         WorkCount work = others.work().plus(new WorkCount(rays, Map.of(), 0).answeredBy("light grids"));
         for (int g = 0; g < grids.length; g++) {
             NearestHit hit = hits[g];
-            work = work.plus(new WorkCount(0, BvhTracer.testsByKind(grids[g].cells.objects, hit.tests(),
-                    hit.unboundedTests()), 0));
+            work = work.plus(new WorkCount(0, hit.testsByKind(), 0));
         }
         return work;
     }

@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.Map;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.math.Ray;
@@ -33,8 +34,6 @@ final class NearestHit {
     private static final float SKIP_MARGIN = 1e-5f;
     /** The entry of a box the ray misses. */
     static final float MISS = Float.POSITIVE_INFINITY;
-    /** The {@link #depthKey} that no hit beats: an infinite distance ties with it at best, and loses. */
-    static final long NO_HIT = depthKey(Float.POSITIVE_INFINITY, 0);
 
     private final Bvh bvh;
     private final LeafObjects leaves;
@@ -56,7 +55,7 @@ final class NearestHit {
     private int bestPlace;
     private float bestT;
     private float bestDistance;
-    /** The nearest hit's {@link #depthKey}: a hit with a smaller key wins the depth test. */
+    /** The nearest hit's {@link DepthKey}: a hit with a smaller key wins the depth test. */
     private long bestKey;
     private float skipBeyond;
     /** The exit of the box of the last {@link #entry}. */
@@ -90,7 +89,7 @@ final class NearestHit {
         bestPlace = -1;
         bestT = Float.NaN;
         bestDistance = Float.POSITIVE_INFINITY;
-        bestKey = NO_HIT;
+        bestKey = DepthKey.NONE;
         skipBeyond = Float.POSITIVE_INFINITY;
     }
 
@@ -101,7 +100,7 @@ final class NearestHit {
     void limitTo(float distance) {
         float t = distance / length;
         bestDistance = distance;
-        bestKey = distance >= 0 ? depthKey(distance, 0) : Long.MIN_VALUE; // a hit at the limit, or beyond, loses
+        bestKey = distance >= 0 ? DepthKey.of(distance, 0) : Long.MIN_VALUE; // a hit at the limit, or beyond, loses
         skipBeyond = skipFor(t);
     }
 
@@ -243,9 +242,9 @@ final class NearestHit {
         }
     }
 
-    /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file. */
+    /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file ({@link DepthKey}). */
     private void consider(int index, int place, float t, float distance) {
-        long key = depthKey(distance, index);
+        long key = DepthKey.of(distance, index);
         if (key < bestKey) {
             best = index;
             bestPlace = place;
@@ -254,19 +253,6 @@ final class NearestHit {
             bestKey = key;
             skipBeyond = skipFor(t);
         }
-    }
-
-    /**
-     * The depth test's order as one number, smaller wins: the distance, then the place in the
-     * file. The bits of a float {@code ≥ 0} order as its values do, so they go first; the place
-     * breaks ties. A distance is never negative, so its sign bit is cleared: a NaN distance
-     * (0 · ∞, a hit at t = ∞ on a ray with a zero component) made at run time may carry the sign,
-     * and must sort above +∞ ({@link #NO_HIT}), never winning, as {@code distance < nearest} never
-     * lets it in the paper's loop. One comparison instead of two also keeps the JIT from compiling
-     * the hot loop anew the first time two objects tie.
-     */
-    static long depthKey(float distance, int index) {
-        return ((long) (Float.floatToRawIntBits(distance) & 0x7FFF_FFFF) << 32) | index;
     }
 
     /** Boxes entered beyond a hit at {@code t}, by more than rounding can explain, cannot hold a nearer one. */
@@ -302,23 +288,13 @@ final class NearestHit {
         return bestDistance;
     }
 
-    /** Intersection tests run for this object's rays so far, by kind of the tree's objects. */
-    long[] tests() {
-        return counts.byKind();
-    }
-
-    /** How many counters of leaf visits this object keeps, for {@link #tests()}. */
-    int leafCounters() {
-        return counts.leafCounters();
+    /** Intersection tests run for this object's rays so far, by the name of each kind of object ({@code --stats}). */
+    Map<String, Long> testsByKind() {
+        return counts.byKindName();
     }
 
     /** All intersection tests run for this object's rays so far: a running count, read before and after a ray. */
     long testsRun() {
         return counts.all();
-    }
-
-    /** How many rays tested every object without a box. */
-    long unboundedTests() {
-        return counts.unboundedRays();
     }
 }

@@ -1,5 +1,9 @@
 package rtd.accel;
 
+import java.util.Map;
+import java.util.TreeMap;
+import rtd.geometry.IGeometry;
+
 /**
  * The intersection tests that one {@link NearestHit} has run, in all and by kind of object: what
  * {@code --stats} reports per ray and {@code --view cost} draws. Not the paper's: counting is all
@@ -79,6 +83,27 @@ final class TestCounts {
         return byKind;
     }
 
+    /** The tests so far by the name of each kind of object, those of the objects without a box too ({@code --stats}). */
+    Map<String, Long> byKindName() {
+        return named(bvh, byKind(), unboundedTests);
+    }
+
+    /**
+     * Tests by the name of each kind of object: {@code treeTests} by kind of the tree's objects
+     * ({@link LeafObjects#kindNames}), and {@code unboundedRays} rays that tested every object
+     * without a box.
+     */
+    static Map<String, Long> named(Bvh bvh, long[] treeTests, long unboundedRays) {
+        Map<String, Long> tests = new TreeMap<>();
+        for (int k = 0; k < treeTests.length; k++) {
+            tests.merge(bvh.leaves.kindNames[k], treeTests[k], Long::sum);
+        }
+        for (IGeometry object : bvh.unbounded) {
+            tests.merge(object.kind(), unboundedRays, Long::sum);
+        }
+        return tests;
+    }
+
     /** How many counters of leaf visits these counts keep. */
     int leafCounters() {
         return leafVisits.length;
@@ -89,8 +114,4 @@ final class TestCounts {
         return treeTests + unboundedTests * bvh.unbounded.length;
     }
 
-    /** How many rays tested every object without a box. */
-    long unboundedRays() {
-        return unboundedTests;
-    }
 }

@@ -13,7 +13,7 @@ import rtd.math.Vector3f;
  * paper's intersection test on the pixels of its footprint inside the tile (a sphere's and a
  * triangle's on the copy of their numbers, {@link LeafObjects#sphere} and {@link RayTriangle#hit},
  * the same float operations as {@link Sphere#intersect} and {@link rtd.geometry.Triangle#intersect}), and
- * the depth test ({@link NearestHit#depthKey}: the nearest hit wins, and on a tie the object that
+ * the depth test ({@link DepthKey}: the nearest hit wins, and on a tie the object that
  * comes first in the file) keeps the winner; the objects without a box are tested on every
  * pixel, as the paper's loop tests them.
  */
@@ -79,7 +79,7 @@ final class TileOfHits {
                 dy[p] = ray[4];
                 dz[p] = ray[5];
                 dd[p] = (ray[3] * ray[3]) + (ray[4] * ray[4]) + (ray[5] * ray[5]); // D·D, as NearestHit sums it
-                bestKey[p] = NearestHit.NO_HIT;
+                bestKey[p] = DepthKey.NONE;
                 bestT[p] = Float.NaN;
                 bestDistance[p] = Float.POSITIVE_INFINITY;
             }
@@ -138,7 +138,7 @@ final class TileOfHits {
     /** The depth test of Listing 4.3 for pixel {@code p}: as {@link NearestHit}'s. */
     private void consider(int p, int index, float t) {
         float distance = LeafObjects.distance(t, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p]);
-        long key = NearestHit.depthKey(distance, index);
+        long key = DepthKey.of(distance, index);
         if (key < bestKey[p]) {
             bestKey[p] = key;
             bestT[p] = t;
@@ -152,7 +152,7 @@ final class TileOfHits {
             for (int x = left; x < right; x++) {
                 int p = at(x - left, y - top);
                 int pixel = y * image.width + x;
-                image.index[pixel] = bestKey[p] != NearestHit.NO_HIT ? (int) bestKey[p] : -1;
+                image.index[pixel] = bestKey[p] != DepthKey.NONE ? (int) bestKey[p] : -1;
                 image.t[pixel] = bestT[p];
                 image.distance[pixel] = bestDistance[p];
                 for (int k = 0; k < tests.length; k++) {

@@ -124,7 +124,7 @@ public final class ViewGridTracer implements Tracer {
 
     @Override
     public WorkCount work() {
-        WorkCount own = new WorkCount(rays, BvhTracer.testsByKind(objects, hit.tests(), hit.unboundedTests()), 0)
+        WorkCount own = new WorkCount(rays, hit.testsByKind(), 0)
                 .answeredBy("view grid");
         return others != null ? own.plus(others.work()) : own;
     }

@@ -120,7 +120,7 @@ class BvhTest {
         Bvh bvh = Bvh.build(new Scene(Color.BLACK, Scenes.frontCamera(500, 1), objects), 1);
 
         assertThat(bvh.nodeCount()).isGreaterThan(1_000);
-        assertThat(new NearestHit(bvh).leafCounters()).isLessThanOrEqualTo(1);
+        assertThat(new TestCounts(bvh).leafCounters()).isLessThanOrEqualTo(1);
     }
 
     @Test
