@@ -9,8 +9,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.IntStream;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Sphere;
-import rtd.geometry.Triangle;
 import rtd.scene.Scene;
 
 /**
@@ -28,9 +26,6 @@ final class HitImageBuilder {
     static final int SHIFT = 6;
     static final int TILE = 1 << SHIFT;
     /** How an entry's object is tested: the packed sphere test, the packed triangle test, its own {@code intersect}. */
-    static final int SPHERE = 0;
-    static final int TRIANGLE = 1;
-    static final int OWN_TEST = 2;
     /**
      * The most ints and floats the tiles' lists may take, 256 MiB: as much as the view grid's
      * lists at their most ({@link CellSide#MOST_ENTRIES} places and distances). A million spheres
@@ -60,7 +55,7 @@ final class HitImageBuilder {
     private final int[] footprints;
     /** Per object in file order: its kind's number, {@link ObjectKinds#NONE} if it has no box (a plane). */
     private final ObjectKinds kinds;
-    /** Per object in file order: how it is tested ({@link #SPHERE}, {@link #TRIANGLE}, {@link #OWN_TEST}). */
+    /** Per object in file order: how it is tested ({@link PackedTests}). */
     private final byte[] tests;
 
     HitImageBuilder(List<IGeometry> objects, ICamera camera, int width, int height, ForkJoinPool pool) {
@@ -127,21 +122,13 @@ final class HitImageBuilder {
                     lastKind = kinds.numberOf(name);
                 }
                 kinds.set(f, lastKind);
-                tests[f] = (byte) testOf(object);
+                tests[f] = PackedTests.of(object);
             }
         });
     }
 
     private boolean listed(int f) {
         return kinds.of(f) != ObjectKinds.NONE && footprints[4 * f] <= footprints[4 * f + 2];
-    }
-
-    private static int testOf(IGeometry object) {
-        return object instanceof Sphere ? SPHERE : object instanceof Triangle ? TRIANGLE : OWN_TEST;
-    }
-
-    private static int numbersOf(int test) {
-        return test == SPHERE ? Sphere.NUMBERS : test == TRIANGLE ? Triangle.NUMBERS : 0;
     }
 
     /** The objects without a box, which every ray meets, in file order. */
@@ -159,7 +146,7 @@ final class HitImageBuilder {
             int[] numbers = numbersPerPart[part];
             for (int f = start; f < end; f++) {
                 if (listed(f)) {
-                    int size = numbersOf(tests[f]);
+                    int size = PackedTests.size(tests[f]);
                     int at = 4 * f;
                     testsPerPart[part] += (long) (footprints[at + 2] - footprints[at] + 1)
                             * (footprints[at + 3] - footprints[at + 1] + 1);
@@ -200,7 +187,7 @@ final class HitImageBuilder {
                     continue;
                 }
                 int test = tests[f];
-                int size = numbersOf(test);
+                int size = PackedTests.size(tests[f]);
                 int at = 4 * f;
                 for (int y = footprints[at + 1] >> SHIFT; y <= footprints[at + 3] >> SHIFT; y++) {
                     for (int x = footprints[at] >> SHIFT; x <= footprints[at + 2] >> SHIFT; x++) {
@@ -215,11 +202,7 @@ final class HitImageBuilder {
                         entries[e + 4] = Math.min(footprints[at + 3], (y << SHIFT) + TILE - 1);
                         entries[e + 5] = n;
                         entries[e + 6] = kinds.of(f) << 2 | test;
-                        if (test == SPHERE) {
-                            ((Sphere) objects.get(f)).putTestNumbers(numbers, n);
-                        } else if (test == TRIANGLE) {
-                            ((Triangle) objects.get(f)).putTestNumbers(numbers, n);
-                        }
+                        PackedTests.put(objects.get(f), numbers, n);
                     }
                 }
             }

@@ -6,34 +6,24 @@ import java.util.List;
 import java.util.function.IntConsumer;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
-import rtd.geometry.RayTriangle;
 import rtd.geometry.Rounding;
-import rtd.geometry.Sphere;
-import rtd.geometry.Triangle;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
  * The objects of a {@link Bvh}'s leaves, in leaf order, so that the objects of a leaf lie next
  * to each other in memory: each one's place in the scene file (for the depth test's tie rule),
- * its box, and, for spheres and triangles, the numbers of its intersection test packed into one
- * array.
+ * its box, and, for spheres, triangles and boxes, the numbers of its intersection test packed
+ * into one array ({@link PackedTests}).
  *
- * <p>{@link #t} runs {@link Sphere#intersect} (equations 3.6 to 3.8) and {@link RayTriangle#hit}
- * on these numbers, with the same float operations in the same order, so it finds the same
- * {@code t} to the last bit; it only skips following references. With a million objects this
- * matters: a reference to each object and its corners is a wait for memory per test, while the
- * numbers of a leaf's objects arrive together. Any other kind of object runs its own
- * {@link IGeometry#intersect}, in the same leaf, so one box among a million spheres costs only
- * its own tests.
+ * <p>{@link #t} runs the packed tests on these numbers, with the same float operations in the
+ * same order as each shape's own {@code intersect}, so it finds the same {@code t} to the last
+ * bit; it only skips following references. With a million objects this matters: a reference to
+ * each object and its corners is a wait for memory per test, while the numbers of a leaf's
+ * objects arrive together. Any other kind of object runs its own {@link IGeometry#intersect}, in
+ * the same leaf, so one such object among a million spheres costs only its own tests.
  */
 final class LeafObjects {
-
-    static final byte PACKED_SPHERE = 0;
-    static final byte PACKED_TRIANGLE = 1;
-    static final byte OWN_TEST = 2;
-    private static final int SPHERE_SIZE = Sphere.NUMBERS;
-    private static final int TRIANGLE_SIZE = Triangle.NUMBERS;
 
     /** The scene's objects, in file order: for the objects tested by their own {@code intersect}. */
     private final List<IGeometry> scene;
@@ -43,7 +33,7 @@ final class LeafObjects {
     final float[] boxes;
     /** Each object's kind, an index into {@link #kindNames}. */
     final byte[] kinds;
-    /** Each object's way to test ({@link #PACKED_SPHERE}, ...), beside it for the hot loop. */
+    /** Each object's way to test ({@link PackedTests#SPHERE}, ...), beside it for the hot loop. */
     private final byte[] testOf;
     /** The names of the kinds (a kind is a name and a way to test), in the order the leaves meet them, for statistics. */
     final String[] kindNames;
@@ -115,7 +105,7 @@ final class LeafObjects {
             kinds[i] = leafKind[kind];
             testOf[i] = test;
             offsets[i] = size;
-            size += test == PACKED_SPHERE ? SPHERE_SIZE : test == PACKED_TRIANGLE ? TRIANGLE_SIZE : 0;
+            size += PackedTests.size(test);
         }
         this.kindNames = leafNames.toArray(String[]::new);
         this.numbers = reused(spare.boxes(), size);
@@ -137,7 +127,7 @@ final class LeafObjects {
         int kind = -1;
         for (int f = 0; f < fileKinds.length; f++) {
             IGeometry object = scene.get(f);
-            byte test = testFor(object);
+            byte test = PackedTests.of(object);
             String name = object.kind();
             // a mesh's triangles come in a run of one kind: look the kind up only when it changes
             if (kind < 0 || test != tests.get(kind) || !name.equals(names.get(kind))) {
@@ -185,10 +175,6 @@ final class LeafObjects {
         return -1;
     }
 
-    private static byte testFor(IGeometry object) {
-        return object instanceof Sphere ? PACKED_SPHERE : object instanceof Triangle ? PACKED_TRIANGLE : OWN_TEST;
-    }
-
     /**
      * Packs the numbers and the rounding of the object at place {@code f} in the file, which has
      * place {@code i} in leaf order (or none, −1).
@@ -203,11 +189,7 @@ final class LeafObjects {
             roundings[2 * i] = rounding.linear();
             roundings[2 * i + 1] = rounding.quadratic();
         }
-        if (object instanceof Sphere sphere) {
-            sphere.putTestNumbers(numbers, offsets[i]);
-        } else if (object instanceof Triangle triangle) {
-            triangle.putTestNumbers(numbers, offsets[i]);
-        }
+        PackedTests.put(object, numbers, offsets[i]);
     }
 
     /**
@@ -218,7 +200,7 @@ final class LeafObjects {
      */
     boolean missedByEvery(int i, float leastSquared, float[] lowest, float[] highest, float dx, float dy, float dz) {
         int at = offsets[i];
-        return testOf[i] == PACKED_SPHERE && numbers[at + 3] >= leastSquared
+        return testOf[i] == PackedTests.SPHERE && numbers[at + 3] >= leastSquared
                 && SphereOutline.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], numbers[at + 3], lowest,
                         highest, dx, dy, dz);
     }
@@ -227,7 +209,7 @@ final class LeafObjects {
     float largestSphereSquared() {
         float largest = 0;
         for (int i = 0; i < fileOrder.length; i++) {
-            if (testOf[i] == PACKED_SPHERE) {
+            if (testOf[i] == PackedTests.SPHERE) {
                 largest = Math.max(largest, numbers[offsets[i] + 3]);
             }
         }
@@ -240,29 +222,11 @@ final class LeafObjects {
      */
     float t(int i, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
         byte test = testOf[i];
-        if (test == PACKED_SPHERE) {
-            return sphere(numbers, offsets[i], ox, oy, oz, dx, dy, dz, dd);
-        }
-        if (test == PACKED_TRIANGLE) {
-            return RayTriangle.hit(numbers, offsets[i], ox, oy, oz, dx, dy, dz);
+        if (test != PackedTests.OWN_TEST) {
+            return PackedTests.t(test, numbers, offsets[i], ox, oy, oz, dx, dy, dz, dd);
         }
         Intersection hit = scene.get(fileOrder[i]).intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
         return hit.t();
-    }
-
-    /**
-     * {@link Sphere#intersect} on the numbers {@link Sphere#putTestNumbers} wrote at {@code at}
-     * (M, then r²): equations 3.6 to 3.8, with the same float operations in the same order;
-     * {@code dd} is D·D.
-     */
-    static float sphere(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
-        float mx = ox - numbers[at];                                         // O − M
-        float my = oy - numbers[at + 1];
-        float mz = oz - numbers[at + 2];
-        float a = dd;                                                        // equation 3.6
-        float b = 2 * ((dx * mx) + (dy * my) + (dz * mz));                   // equation 3.7
-        float c = ((mx * mx) + (my * my) + (mz * mz)) - numbers[at + 3];     // equation 3.8
-        return Sphere.smallestRootNotBehind(a, b, b * b - 4 * a * c);
     }
 
     /**

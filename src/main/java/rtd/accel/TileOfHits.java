@@ -2,17 +2,15 @@ package rtd.accel;
 
 import java.util.Arrays;
 import rtd.camera.ICamera;
-import rtd.geometry.RayTriangle;
-import rtd.geometry.Sphere;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
  * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera
  * rays, as numbers, and each pixel's best hit so far. Each object listed for the tile runs the
- * paper's intersection test on the pixels of its footprint inside the tile (a sphere's and a
- * triangle's on the copy of their numbers, {@link LeafObjects#sphere} and {@link RayTriangle#hit},
- * the same float operations as {@link Sphere#intersect} and {@link rtd.geometry.Triangle#intersect}), and
+ * paper's intersection test on the pixels of its footprint inside the tile (a sphere's, a
+ * triangle's and a box's on the copy of their numbers, {@link PackedTests}, the same float
+ * operations as their own {@code intersect}), and
  * the depth test ({@link DepthKey}: the nearest hit wins, and on a tie the object that
  * comes first in the file) keeps the winner; the objects without a box are tested on every
  * pixel, as the paper's loop tests them.
@@ -112,15 +110,14 @@ final class TileOfHits {
         int x1 = entries[e + 3] - left;
         int y1 = entries[e + 4] - top;
         int at = entries[e + 5];
-        int test = entries[e + 6] & 3;
+        byte test = (byte) (entries[e + 6] & 3);
         int[] ofKind = tests[entries[e + 6] >> 2];
         for (int y = y0; y <= y1; y++) {
             for (int x = x0; x <= x1; x++) {
                 int p = at(x, y);
                 ofKind[p]++;
-                float t = test == HitImageBuilder.SPHERE
-                        ? LeafObjects.sphere(numbers, at, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p], dd[p])
-                        : test == HitImageBuilder.TRIANGLE ? RayTriangle.hit(numbers, at, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p])
+                float t = test != PackedTests.OWN_TEST
+                        ? PackedTests.t(test, numbers, at, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p], dd[p])
                         : ownTest(index, p);
                 if (t >= 0) { // false for NaN: no hit
                     consider(p, index, t);

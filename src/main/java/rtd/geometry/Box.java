@@ -19,36 +19,68 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
                 new Vector3f(Math.max(a.x(), b.x()), Math.max(a.y(), b.y()), Math.max(a.z(), b.z())), color, material);
     }
 
+    /** How many numbers {@link #putTestNumbers} writes. */
+    public static final int NUMBERS = 6;
+
     /**
-     * The slab test: along each axis the ray is between the box's two faces for an interval of
-     * t; the box is where all three intervals overlap. The ray hits where it enters that
-     * overlap, or, if it starts inside, where it leaves it.
+     * The slab test ({@link #hit}) on this box's corners: where the ray enters the box, or, if
+     * it starts inside, where it leaves it.
      */
     @Override
     public Intersection intersect(Ray ray) {
-        float[] o = {ray.origin().x(), ray.origin().y(), ray.origin().z()};
-        float[] d = {ray.direction().x(), ray.direction().y(), ray.direction().z()};
-        float[] lo = {min.x(), min.y(), min.z()};
-        float[] hi = {max.x(), max.y(), max.z()};
+        float[] corners = new float[NUMBERS];
+        putTestNumbers(corners, 0);
+        Vector3f o = ray.origin();
+        Vector3f d = ray.direction();
+        return Intersection.at(ray, hit(corners, 0, o.x(), o.y(), o.z(), d.x(), d.y(), d.z()));
+    }
+
+    /**
+     * Writes the {@value #NUMBERS} numbers {@link #hit} uses into {@code into} from {@code at}:
+     * the smallest corner's x, y, z, then the largest's, for the accelerators' packed copy of
+     * the test.
+     */
+    public void putTestNumbers(float[] into, int at) {
+        into[at] = min.x();
+        into[at + 1] = min.y();
+        into[at + 2] = min.z();
+        into[at + 3] = max.x();
+        into[at + 4] = max.y();
+        into[at + 5] = max.z();
+    }
+
+    /**
+     * The slab test of the ray O + t·D against the box whose corners {@link #putTestNumbers}
+     * wrote at {@code numbers[at]}: along each axis the ray is between the box's two faces for an
+     * interval of t; the box is where all three intervals overlap. The ray hits where it enters
+     * that overlap, or, if it starts inside, where it leaves it: that t, or NaN for no hit. One
+     * method for {@link #intersect} and the accelerators' packed copies, so both find the same t
+     * to the last bit.
+     */
+    public static float hit(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz) {
         float enter = Float.NEGATIVE_INFINITY;
         float exit = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
-            if (d[k] == 0) { // parallel to this slab: inside it everywhere or nowhere
-                if (o[k] < lo[k] || o[k] > hi[k]) {
-                    return Intersection.at(ray, Float.NaN);
+            float o = k == 0 ? ox : k == 1 ? oy : oz;
+            float d = k == 0 ? dx : k == 1 ? dy : dz;
+            float lo = numbers[at + k];
+            float hi = numbers[at + 3 + k];
+            if (d == 0) { // parallel to this slab: inside it everywhere or nowhere
+                if (o < lo || o > hi) {
+                    return Float.NaN;
                 }
                 continue;
             }
-            float t0 = (lo[k] - o[k]) / d[k];
-            float t1 = (hi[k] - o[k]) / d[k];
+            float t0 = (lo - o) / d;
+            float t1 = (hi - o) / d;
             enter = Math.max(enter, Math.min(t0, t1));
             exit = Math.min(exit, Math.max(t0, t1));
         }
         float t = enter >= 0 ? enter : exit;
         if (enter > exit || exit < 0 || !Float.isFinite(t)) { // infinite: a direction of no length
-            return Intersection.at(ray, Float.NaN);
+            return Float.NaN;
         }
-        return Intersection.at(ray, t);
+        return t;
     }
 
     /** The normal of the face the point lies on: the axis along which it is nearest a face. */

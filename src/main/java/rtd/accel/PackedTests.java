@@ -1,0 +1,83 @@
+package rtd.accel;
+
+import rtd.geometry.Box;
+import rtd.geometry.IGeometry;
+import rtd.geometry.RayTriangle;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+
+/**
+ * The shapes whose intersection test the accelerators run on a copy of their numbers, packed
+ * side by side in one array ({@link LeafObjects}, {@link HitImageBuilder}), instead of through
+ * each object's own {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test
+ * runs the same float operations in the same order as the shape's own {@code intersect}, so it
+ * finds the same t to the last bit; it only skips following references, and makes no
+ * {@code Ray} or {@code Intersection} on the way. Not in the paper.
+ *
+ * <p>Any other shape is tested by its own {@code intersect} ({@link #OWN_TEST}); a new shape
+ * works without a line here, and gets a packed test here when it is worth one.
+ */
+final class PackedTests {
+
+    static final byte SPHERE = 0;
+    static final byte TRIANGLE = 1;
+    static final byte BOX = 2;
+    /** A shape without a packed test: its own {@code intersect} runs. */
+    static final byte OWN_TEST = 3;
+
+    private PackedTests() {
+    }
+
+    /** How {@code object} is tested. */
+    static byte of(IGeometry object) {
+        return object instanceof Sphere ? SPHERE : object instanceof Triangle ? TRIANGLE
+                : object instanceof Box ? BOX : OWN_TEST;
+    }
+
+    /** How many numbers the test {@code test} reads; none for {@link #OWN_TEST}. */
+    static int size(byte test) {
+        return test == SPHERE ? Sphere.NUMBERS : test == TRIANGLE ? Triangle.NUMBERS : test == BOX ? Box.NUMBERS : 0;
+    }
+
+    /** Writes the numbers of {@code object}'s test into {@code numbers} from {@code at}; nothing for {@link #OWN_TEST}. */
+    static void put(IGeometry object, float[] numbers, int at) {
+        if (object instanceof Sphere sphere) {
+            sphere.putTestNumbers(numbers, at);
+        } else if (object instanceof Triangle triangle) {
+            triangle.putTestNumbers(numbers, at);
+        } else if (object instanceof Box box) {
+            box.putTestNumbers(numbers, at);
+        }
+    }
+
+    /**
+     * The smallest {@code t ≥ 0} where the ray O + t·D hits the object whose numbers lie at
+     * {@code numbers[at]}, by the packed test {@code test} (not {@link #OWN_TEST}), or NaN;
+     * {@code dd} is D·D.
+     */
+    static float t(byte test, float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz,
+            float dd) {
+        if (test == SPHERE) {
+            return sphere(numbers, at, ox, oy, oz, dx, dy, dz, dd);
+        }
+        if (test == TRIANGLE) {
+            return RayTriangle.hit(numbers, at, ox, oy, oz, dx, dy, dz);
+        }
+        return Box.hit(numbers, at, ox, oy, oz, dx, dy, dz);
+    }
+
+    /**
+     * {@link Sphere#intersect} on the numbers {@link Sphere#putTestNumbers} wrote at {@code at}
+     * (M, then r²): equations 3.6 to 3.8, with the same float operations in the same order;
+     * {@code dd} is D·D.
+     */
+    static float sphere(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
+        float mx = ox - numbers[at];                                         // O − M
+        float my = oy - numbers[at + 1];
+        float mz = oz - numbers[at + 2];
+        float a = dd;                                                        // equation 3.6
+        float b = 2 * ((dx * mx) + (dy * my) + (dz * mz));                   // equation 3.7
+        float c = ((mx * mx) + (my * my) + (mz * mz)) - numbers[at + 3];     // equation 3.8
+        return Sphere.smallestRootNotBehind(a, b, b * b - 4 * a * c);
+    }
+}

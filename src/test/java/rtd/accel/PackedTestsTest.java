@@ -1,0 +1,105 @@
+package rtd.accel;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import rtd.geometry.Box;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.geometry.Plane;
+import rtd.geometry.Sphere;
+import rtd.geometry.Triangle;
+import rtd.image.Color;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
+
+/**
+ * The packed copies of the shapes' tests find the t of each shape's own {@code intersect} to the
+ * last bit, for rays from outside and inside, along the axes and grazing; and a shape without a
+ * packed test is left to its own.
+ */
+@DisplayName("The packed tests")
+class PackedTestsTest {
+
+    private static final Color GREY = Color.fromRGB(0x808080);
+
+    @Test
+    void aBoxIsPackedAsItsSmallestCornerThenItsLargest() {
+        Box box = Box.between(new Vector3f(4, -1, 2), new Vector3f(1, 5, -3), GREY, Material.DEFAULT);
+        float[] numbers = new float[8];
+
+        PackedTests.put(box, numbers, 1);
+
+        assertThat(PackedTests.of(box)).isEqualTo(PackedTests.BOX);
+        assertThat(PackedTests.size(PackedTests.BOX)).isEqualTo(6);
+        assertThat(numbers).containsExactly(0, 1, -1, -3, 4, 5, 2, 0);
+    }
+
+    @Test
+    void aRayAlongTheAxisThroughABoxEntersAtItsNearFaceAndFromInsideLeavesAtItsFarOne() {
+        float[] box = {-1, -1, -1, 1, 1, 1};
+
+        // from z = 5 towards −z: the face z = 1 at t = 4 (the x and y slabs are parallel: inside them)
+        assertThat(Box.hit(box, 0, 0, 0, 5, 0, 0, -1)).isEqualTo(4f);
+        // from the centre: it leaves through z = −1 at t = 1
+        assertThat(Box.hit(box, 0, 0, 0, 0, 0, 0, -1)).isEqualTo(1f);
+        // parallel to the x slabs and beside them: no hit
+        assertThat(Box.hit(box, 0, 2, 0, 5, 0, 0, -1)).isNaN();
+        // the box behind the ray: no hit
+        assertThat(Box.hit(box, 0, 0, 0, 5, 0, 0, 1)).isNaN();
+    }
+
+    @Test
+    void everyPackedTestFindsItsShapesOwnTToTheLastBit() {
+        Random random = new Random(7);
+        List<IGeometry> shapes = List.of(
+                new Sphere(new Vector3f(0.3f, -0.2f, 0.1f), 1.7f, GREY, Material.DEFAULT),
+                new Triangle(new Vector3f(-2, -1, 0.5f), new Vector3f(2, -1.5f, 0), new Vector3f(0.2f, 2, -0.5f), GREY,
+                        Material.DEFAULT),
+                Box.between(new Vector3f(-1.5f, -0.5f, -2), new Vector3f(1, 1.25f, 0.75f), GREY, Material.DEFAULT));
+        int hits = 0;
+        for (IGeometry shape : shapes) {
+            byte test = PackedTests.of(shape);
+            float[] numbers = new float[PackedTests.size(test) + 3];
+            PackedTests.put(shape, numbers, 3);
+            for (int i = 0; i < 20_000; i++) {
+                Ray ray = randomRay(random, i);
+                Vector3f o = ray.origin();
+                Vector3f d = ray.direction();
+                float packed = PackedTests.t(test, numbers, 3, o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), d.dot(d));
+                float own = shape.intersect(ray).t();
+
+                assertThat(Float.floatToIntBits(packed)).as("%s, ray %s", shape.kind(), ray)
+                        .isEqualTo(Float.floatToIntBits(own));
+                hits += own >= 0 ? 1 : 0;
+            }
+        }
+        assertThat(hits).as("rays that hit").isGreaterThan(20_000);
+    }
+
+    @Test
+    void aShapeWithoutAPackedTestIsLeftToItsOwnIntersect() {
+        Plane plane = new Plane(new Vector3f(0, 0, 0), new Vector3f(0, 1, 0), GREY, Material.DEFAULT);
+
+        assertThat(PackedTests.of(plane)).isEqualTo(PackedTests.OWN_TEST);
+        assertThat(PackedTests.size(PackedTests.OWN_TEST)).isZero();
+    }
+
+    /** From outside (towards the middle, more or less), from inside, and every fourth along an axis. */
+    private static Ray randomRay(Random random, int i) {
+        float spread = i % 3 == 0 ? 0.5f : 6;
+        Vector3f origin = new Vector3f(spread * (random.nextFloat() * 2 - 1), spread * (random.nextFloat() * 2 - 1),
+                spread * (random.nextFloat() * 2 - 1));
+        Vector3f towards = new Vector3f(random.nextFloat() - 0.5f, random.nextFloat() - 0.5f, random.nextFloat() - 0.5f);
+        Vector3f direction = towards.subtract(origin);
+        if (i % 4 == 0) { // along one axis: the slabs of the other two are parallel to it
+            int axis = i / 4 % 3;
+            direction = new Vector3f(axis == 0 ? direction.x() : 0, axis == 1 ? direction.y() : 0,
+                    axis == 2 ? direction.z() : 0);
+        }
+        return new Ray(origin, direction);
+    }
+}
