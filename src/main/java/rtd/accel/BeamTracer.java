@@ -92,7 +92,6 @@ final class BeamTracer {
         rays += count;
         if (cover.found()) {
             out.setHits(cover.sphereInFile(), count); // inside the sphere's outline: no ray was needed
-            cover.forget();
             return true;
         }
         if (!started) {
@@ -125,15 +124,12 @@ final class BeamTracer {
             walk();
             probing = false;
         }
-        boolean covered = cover.found();
-        int sphere = covered ? cover.sphereInFile() : -1;
-        cover.forget();
         if (started) {
             return false;
         }
         rays += bundle.count();
-        if (covered) {
-            out.setHits(sphere, bundle.count());
+        if (cover.found()) {
+            out.setHits(cover.sphereInFile(), bundle.count());
         } else {
             out.setMisses(bundle.count());
         }
@@ -232,7 +228,7 @@ final class BeamTracer {
             return;
         }
         if (probing) { // an object in reach: the rays' answers differ unless it is a sphere that covers the beam
-            if (cover.worthLooking() && cover.covers(leaf, grow, within, farthestSkip)) {
+            if (cover.worthLooking() && cover.covers(leaf, grow, within, reach, farthestSkip)) {
                 farthestSkip = cover.skipBeyond(); // the walk goes on, for any other object in reach before the sphere's hits
                 return;
             }
@@ -241,14 +237,14 @@ final class BeamTracer {
             return;
         }
         if (!started) {
-            if (cover.worthLooking() && cover.covers(leaf, grow, within, farthestSkip)) {
+            if (cover.worthLooking() && cover.covers(leaf, grow, within, reach, farthestSkip)) {
                 farthestSkip = cover.skipBeyond();
                 return;
             }
             start();
             if (cover.found()) { // another object in reach after all: the rays are traced, in the sphere's leaf too
+                testRays(cover.leaf(), cover.reach(), cover.grow());
                 cover.forget();
-                testRays(cover.leaf(), middle.objectsEntry(cover.leaf(), cover.grow(), cover.within()), cover.grow());
             }
         }
         testRays(leaf, reach, grow);

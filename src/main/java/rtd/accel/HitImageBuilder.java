@@ -25,7 +25,6 @@ final class HitImageBuilder {
     /** The side of a tile is 2 to this power: its rays and best hits fit in a core's nearest caches. */
     static final int SHIFT = 6;
     static final int TILE = 1 << SHIFT;
-    /** How an entry's object is tested: the packed sphere test, the packed triangle test, its own {@code intersect}. */
     /**
      * The most ints and floats the tiles' lists may take, 256 MiB: as much as the view grid's
      * lists at their most ({@link CellSide#MOST_ENTRIES} places and distances). A million spheres
@@ -186,8 +185,8 @@ final class HitImageBuilder {
                 if (!listed(f)) {
                     continue;
                 }
-                int test = tests[f];
-                int size = PackedTests.size(tests[f]);
+                byte test = tests[f];
+                int size = PackedTests.size(test);
                 int at = 4 * f;
                 for (int y = footprints[at + 1] >> SHIFT; y <= footprints[at + 3] >> SHIFT; y++) {
                     for (int x = footprints[at] >> SHIFT; x <= footprints[at + 2] >> SHIFT; x++) {
@@ -201,7 +200,7 @@ final class HitImageBuilder {
                         entries[e + 3] = Math.min(footprints[at + 2], (x << SHIFT) + TILE - 1);
                         entries[e + 4] = Math.min(footprints[at + 3], (y << SHIFT) + TILE - 1);
                         entries[e + 5] = n;
-                        entries[e + 6] = kinds.of(f) << 2 | test;
+                        entries[e + 6] = kinds.of(f) << PackedTests.BITS | test;
                         PackedTests.put(objects.get(f), numbers, n);
                     }
                 }

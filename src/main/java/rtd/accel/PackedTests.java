@@ -24,6 +24,11 @@ final class PackedTests {
     static final byte BOX = 2;
     /** A shape without a packed test: its own {@code intersect} runs. */
     static final byte OWN_TEST = 3;
+    /**
+     * How many bits the tests' numbers take: the image of hits keeps an object's test in the low
+     * bits of an int and its kind above them. A fifth way to test needs one more.
+     */
+    static final int BITS = 2;
 
     private PackedTests() {
     }
@@ -71,7 +76,7 @@ final class PackedTests {
      * (M, then r²): equations 3.6 to 3.8, with the same float operations in the same order;
      * {@code dd} is D·D.
      */
-    static float sphere(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
+    private static float sphere(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
         float mx = ox - numbers[at];                                         // O − M
         float my = oy - numbers[at + 1];
         float mz = oz - numbers[at + 2];

@@ -27,10 +27,13 @@ final class SphereCover {
     private boolean coverable;
     /** The sphere found (its place among the leaves' objects), or −1. */
     private int sphere = -1;
-    /** The sphere's leaf, its growth and its t bound, where the rays are traced after all if another object is in reach. */
+    /**
+     * The sphere's leaf, the beam's entry into its objects' boxes and their growth: where the
+     * rays are traced after all if another object is in reach.
+     */
     private int leaf;
+    private float reach;
     private float grow;
-    private float within;
     /** A t beyond which no box can hold a hit nearer than the sphere's, for any ray of the square. */
     private float skipBeyond;
 
@@ -59,9 +62,10 @@ final class SphereCover {
     /**
      * Whether the beam reaches only one object of the leaf, within the walk's bound
      * {@code farthestSkip}, and that object is a sphere every ray of the square hits; if so, it
-     * is remembered with its leaf, and {@link #skipBeyond} says where the walk may stop looking.
+     * is remembered with its leaf and the beam's entry into the leaf's objects' boxes,
+     * {@code reach}, and {@link #skipBeyond} says where the walk may stop looking.
      */
-    boolean covers(int leaf, float grow, float within, float farthestSkip) {
+    boolean covers(int leaf, float grow, float within, float reach, float farthestSkip) {
         int only = onlyObjectInReach(leaf, grow, within, farthestSkip);
         if (only < 0 || !(bvh.objects.get(bvh.leaves.fileOrder[only]) instanceof Sphere found)) {
             return false;
@@ -74,8 +78,8 @@ final class SphereCover {
                 + square(Math.abs(middle.centre[1]) + middle.half[1]) + square(Math.abs(middle.centre[2]) + middle.half[2]));
         sphere = only;
         this.leaf = leaf;
+        this.reach = reach;
         this.grow = grow;
-        this.within = within;
         // a ray's skip distance for a hit there (NearestHit.skipFor), generously: boxes beyond cannot hold a nearer hit
         skipBeyond = (float) (before * (1 + 1e-4) + 1e-4 * origins / middle.shortest);
         return true;
@@ -91,7 +95,7 @@ final class SphereCover {
         return bvh.leaves.fileOrder[sphere];
     }
 
-    /** Forgets the sphere: the square is answered, or its rays are traced after all. */
+    /** Forgets the sphere: another object is in reach after all, and the rays are traced. */
     void forget() {
         sphere = -1;
     }
@@ -105,12 +109,13 @@ final class SphereCover {
         return leaf;
     }
 
-    float grow() {
-        return grow;
+    /** The beam's entry into the boxes of the objects of the sphere's leaf. */
+    float reach() {
+        return reach;
     }
 
-    float within() {
-        return within;
+    float grow() {
+        return grow;
     }
 
     /** The one object of the leaf whose box the beam reaches before {@code farthestSkip}, or −1 if none or several do. */
@@ -119,6 +124,7 @@ final class SphereCover {
         int end = first + bvh.nodes[2 * leaf + 1];
         int only = -1;
         for (int i = first; i < end; i++) {
+            // the walk's test of an entry (BeamTracer.worthVisiting, NearestHit.worthVisiting)
             if (middle.objectEntry(i, grow, within) <= FastMath.min(farthestSkip, Float.MAX_VALUE)) {
                 if (only >= 0) {
                     return -1;

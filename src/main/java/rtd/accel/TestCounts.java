@@ -85,21 +85,13 @@ final class TestCounts {
 
     /** The tests so far by the name of each kind of object, those of the objects without a box too ({@code --stats}). */
     Map<String, Long> byKindName() {
-        return named(bvh, byKind(), unboundedTests);
-    }
-
-    /**
-     * Tests by the name of each kind of object: {@code treeTests} by kind of the tree's objects
-     * ({@link LeafObjects#kindNames}), and {@code unboundedRays} rays that tested every object
-     * without a box.
-     */
-    static Map<String, Long> named(Bvh bvh, long[] treeTests, long unboundedRays) {
         Map<String, Long> tests = new TreeMap<>();
+        long[] treeTests = byKind();
         for (int k = 0; k < treeTests.length; k++) {
-            tests.merge(bvh.leaves.kindNames[k], treeTests[k], Long::sum);
+            tests.merge(leaves.kindNames[k], treeTests[k], Long::sum);
         }
         for (IGeometry object : bvh.unbounded) {
-            tests.merge(object.kind(), unboundedRays, Long::sum);
+            tests.merge(object.kind(), unboundedTests, Long::sum);
         }
         return tests;
     }

@@ -110,8 +110,8 @@ final class TileOfHits {
         int x1 = entries[e + 3] - left;
         int y1 = entries[e + 4] - top;
         int at = entries[e + 5];
-        byte test = (byte) (entries[e + 6] & 3);
-        int[] ofKind = tests[entries[e + 6] >> 2];
+        byte test = (byte) (entries[e + 6] & (1 << PackedTests.BITS) - 1);
+        int[] ofKind = tests[entries[e + 6] >> PackedTests.BITS];
         for (int y = y0; y <= y1; y++) {
             for (int x = x0; x <= x1; x++) {
                 int p = at(x, y);

@@ -17,8 +17,11 @@ import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
- * The packed copies of the shapes' tests find the t of each shape's own {@code intersect} to the
- * last bit, for rays from outside and inside, along the axes and grazing; and a shape without a
+ * The packed copies of the shapes' tests: the numbers each shape packs, where they go and which
+ * test reads them give the t of the shape's own {@code intersect} to the last bit (for the
+ * sphere, whose packed equations are a copy, that also checks the copy; the triangle's and the
+ * box's own {@code intersect} call the same static test); the box's slab test on numbers, on
+ * cases worked out by hand (a face, an edge, a corner, a slab it lies in); and a shape without a
  * packed test is left to its own.
  */
 @DisplayName("The packed tests")
@@ -50,6 +53,23 @@ class PackedTestsTest {
         assertThat(Box.hit(box, 0, 2, 0, 5, 0, 0, -1)).isNaN();
         // the box behind the ray: no hit
         assertThat(Box.hit(box, 0, 0, 0, 5, 0, 0, 1)).isNaN();
+    }
+
+    @Test
+    void aRayFromABoxsFaceOrAlongItsFacesEdgesAndCornersHitsWhereTheSlabsSay() {
+        float[] box = {-1, -1, -1, 1, 1, 1};
+
+        // from the face z = 1 inwards: it enters at once, t = (1 − 1)/(−1) = −0, which counts as 0
+        assertThat(Float.floatToIntBits(Box.hit(box, 0, 0, 0, 1, 0, 0, -1))).isEqualTo(Float.floatToIntBits(-0f));
+        // in the plane of the face x = 1, parallel to it: inside that slab (its edge counts), through z = 1 at t = 4
+        assertThat(Box.hit(box, 0, 1, 0, 5, 0, 0, -1)).isEqualTo(4f);
+        assertThat(Box.hit(box, 0, -1, 0, 5, 0, 0, -1)).isEqualTo(4f);
+        // towards the edge x = y = 1 from (2, 2, 0): both slabs entered at t = 1
+        assertThat(Box.hit(box, 0, 2, 2, 0, -1, -1, 0)).isEqualTo(1f);
+        // towards the corner (1, 1, 1) from (3, 3, 3): t = 2
+        assertThat(Box.hit(box, 0, 3, 3, 3, -1, -1, -1)).isEqualTo(2f);
+        // a direction of −0 along x is parallel to the x slabs, as +0 is
+        assertThat(Box.hit(box, 0, 0, 0, 5, -0f, 0, -1)).isEqualTo(4f);
     }
 
     @Test
@@ -88,7 +108,14 @@ class PackedTestsTest {
         assertThat(PackedTests.size(PackedTests.OWN_TEST)).isZero();
     }
 
-    /** From outside (towards the middle, more or less), from inside, and every fourth along an axis. */
+    @Test
+    void everyWayToTestFitsTheBitsTheImageOfHitsKeepsItIn() {
+        assertThat(List.of(PackedTests.SPHERE, PackedTests.TRIANGLE, PackedTests.BOX, PackedTests.OWN_TEST))
+                .allSatisfy(test -> assertThat((int) test).isBetween(0, (1 << PackedTests.BITS) - 1))
+                .doesNotHaveDuplicates();
+    }
+
+    /** From outside (towards the middle, more or less), from inside, and every fourth along an axis; random, so seldom grazing. */
     private static Ray randomRay(Random random, int i) {
         float spread = i % 3 == 0 ? 0.5f : 6;
         Vector3f origin = new Vector3f(spread * (random.nextFloat() * 2 - 1), spread * (random.nextFloat() * 2 - 1),
