@@ -34,10 +34,12 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      * The fewest objects for which {@code --accel auto} takes the image of hits for a flat picture:
      * it builds less than the view grid but tests more, and its new code is compiled while it
      * runs. Measured whole process against the view grid: 1,000 spheres 0.88 against 0.63 s (11
-     * pairs), 100,000 spheres 1.01 against 0.99 s (7 pairs), a million 1.87 against 2.04 s (7
-     * pairs), the terrain of a million triangles 2.18 against 2.30 s (7 pairs).
+     * pairs), 100,000 spheres 1.06 against 1.02 s (9 pairs), 150,000 spheres 1.07 against 1.07 s
+     * (9 pairs), 250,000 spheres 1.11 against 1.18 s (9 pairs) and a terrain of 250,632 triangles
+     * 1.23 against 1.22 s (7 pairs), 500,000 spheres 1.50 against 1.55 s (7 pairs), a million
+     * 1.87 against 2.04 s (7 pairs), the terrain of a million triangles 2.18 against 2.30 s (7 pairs).
      */
-    static final int IMAGE_THRESHOLD = 500_000;
+    static final int IMAGE_THRESHOLD = 250_000;
 
     /** What a run finds its hits with, and how the progress line names its building. */
     enum Kind {
