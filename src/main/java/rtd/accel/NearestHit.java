@@ -201,6 +201,23 @@ final class NearestHit {
     }
 
     /**
+     * As {@link #testPlacesNearestFirst}, with {@code nearest} measured from a point X that the
+     * origin lies {@code start} from (a {@link MirrorGrid}'s mirrored eye): a hit at least n from
+     * X lies at least {@code n − start} from the origin, as no side of a triangle is longer than
+     * the other two together, so the tests stop where that passes the nearest hit found.
+     */
+    void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest, double start) {
+        for (int k = from; k < to; k++) {
+            int place = places[k];
+            if (nearest[place] > skipBeyond * length + start) {
+                return;
+            }
+            counts.place(place);
+            test(place);
+        }
+    }
+
+    /**
      * The paper's intersection test and depth test on the objects at places
      * {@code places[from .. to)} in leaf order, until one is hit: a shadow ray's question
      * ({@link #limitTo} first), which any hit answers. The places come in the order of

@@ -5,21 +5,31 @@ import rtd.math.Vector3f;
 
 /**
  * The {@link ImageFootprint} of an object seen from a point X, for rays whose line passes through
- * X: the shadow rays towards a light (Part II, "Shadows"), which run from a surface to the light.
- * The "image" is a square picture, {@code size × size} pixels, of the directions from X towards
- * the scene's objects: direction w shows at {@code ((w·u)/(w·F), (w·v)/(w·F))}, scaled to pixels,
- * for a forward direction F towards the middle of the objects' box and u, v across it. It is
- * POV-Ray's "light buffer", made exact.
+ * X: the shadow rays towards a light (Part II, "Shadows"), which run from a surface to the light
+ * ({@link #around}), and the rays a flat mirror reflects from the camera's eye, which leave the
+ * eye's mirror image ({@link #leaving}). The "image" is a square picture, {@code size × size}
+ * pixels, of the directions from X towards the scene's objects: direction w shows at
+ * {@code ((w·u)/(w·F), (w·v)/(w·F))}, scaled to pixels, for a forward direction F towards the
+ * middle of the objects' box and u, v across it. For a light it is POV-Ray's "light buffer", made
+ * exact.
  *
- * <p>A ray {@code O + t·D} that reaches {@code E = O + (d/|D|)·D} at distance d is served if
- * {@code |E − X|} is at most a small gap g and {@code d} at most a reach R. Every point Q between
- * O and E is then {@code (1 − s)(O − X) + s(E − X)} from X, so seen from X it lies within an
- * angle of about {@code g/|Q − X|} of O. A hit at Q that the test reports lies in the object's
- * box grown by its rounding at the distance the ray has run, {@code |Q − O|}, at most
+ * <p>Towards the light: a ray {@code O + t·D} that reaches {@code E = O + (d/|D|)·D} at distance
+ * d is served if {@code |E − X|} is at most a small gap g and {@code d} at most a reach R. Every
+ * point Q between O and E is then {@code (1 − s)(O − X) + s(E − X)} from X, so seen from X it
+ * lies within an angle of about {@code g/|Q − X|} of O. A hit at Q that the test reports lies in
+ * the object's box grown by its rounding at the distance the ray has run, {@code |Q − O|}, at most
  * {@code R − |Q − X| + g} ({@link IGeometry#bounds}); so the ray's pixel, the one of
  * {@code O − X}, lies in the picture of that grown box widened by that angle, which is the
  * footprint. The answer of {@link #put} is the distance from X to the grown box: a ray whose
  * origin lies nearer X than that, by more than the gap, cannot hit the object.
+ *
+ * <p>Leaving the point: a ray is served if its line passes within the gap g of X, at a point F,
+ * and its origin lies at least a distance S beyond F along it. Each point Q of the ray is then
+ * {@code (F − X) + |Q − F|·D/|D|} from X, with {@code F − X} at right angles to D: seen from X it
+ * lies within an angle of {@code asin(g/|Q − X|)} of the ray's direction, whose pixel is the
+ * ray's. The ray has run {@code |Q − O| ≤ |Q − X| − S} to Q, which bounds the growth; and a hit
+ * at distance {@code |Q − X| ≥ n} from X lies at least {@code n − |O − X|} from the origin, which
+ * is how {@link MirrorGrid}'s rays stop early.
  */
 final class PointFootprint implements ImageFootprint {
 
@@ -45,65 +55,58 @@ final class PointFootprint implements ImageFootprint {
     private final double scale;
     private final double reach;
     private final double gap;
+    /** For rays leaving X, how far beyond X they start at least (S); NaN for rays towards X. */
+    private final double leastStart;
 
-    private PointFootprint(Vector3f point, double[] forward, double[] across, double[] down, int size,
-            double widest, double reach, double gap) {
+    private PointFootprint(Vector3f point, View view, int size, double reach, double gap, double leastStart) {
         lightX = point.x();
         lightY = point.y();
         lightZ = point.z();
-        this.forward = forward;
-        this.across = across;
-        this.down = down;
+        this.forward = view.forward;
+        this.across = view.across;
+        this.down = view.down;
         this.size = size;
         this.half = size / 2.0;
-        this.scale = size / (2 * widest);
+        this.scale = size / (2 * view.widest);
         this.reach = reach;
         this.gap = gap;
+        this.leastStart = leastStart;
     }
 
     /**
      * The footprints seen from {@code point} on a picture of {@code size × size} pixels that shows
-     * the box {@code box} (min x, y, z, max x, y, z), for rays that run up to 1.25 times as far as
-     * the box's farthest corner is from the point, and at most a diagonal of the box farther (the
-     * shadow rays from the objects, and from the floor beneath them); null if the box is not all
-     * well in front of the point (within 87° of the direction to its middle, and a twentieth of
-     * that distance ahead), as when the point lies inside it or beside it, or if the point lies so
-     * far that the gap is more than a few hundredths of the box's picture.
+     * the box {@code box} (min x, y, z, max x, y, z), for rays towards the point that run up to
+     * 1.25 times as far as the box's farthest corner is from the point, and at most a diagonal of
+     * the box farther (the shadow rays from the objects, and from the floor beneath them); null if
+     * the box is not all well in front of the point ({@link View#of}), or if the point lies so far
+     * that the gap is more than a few hundredths of the box's picture.
      */
     static PointFootprint around(Vector3f point, float[] box, int size) {
-        double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
-                (box[2] + box[5]) / 2.0 - point.z()};
-        double distance = Math.sqrt(dot(toMiddle, toMiddle));
-        if (!(distance > 0 && Double.isFinite(distance))) {
+        View view = View.of(point, box);
+        if (view == null) {
             return null;
         }
-        double[] forward = scaled(toMiddle, 1 / distance);
-        double[] across = perpendicular(forward);
-        double[] down = cross(forward, across);
-        double widest = 0;
-        double farthest = 0;
-        for (int k = 0; k < 8; k++) {
-            double[] w = {box[(k & 1) * 3] - point.x(), box[1 + (k >> 1 & 1) * 3] - point.y(),
-                    box[2 + (k >> 2 & 1) * 3] - point.z()};
-            double depth = dot(w, forward);
-            if (!(depth > distance / 20)) {
-                return null;
-            }
-            widest = Math.max(widest, Math.max(Math.abs(dot(w, across)), Math.abs(dot(w, down))) / depth);
-            farthest = Math.max(farthest, Math.sqrt(dot(w, w)));
-        }
-        widest = Math.max(widest * 1.01, 1e-6); // a hundredth of room at the picture's edges; never 0
         // rays from beyond the box, but not from much farther: every object grows by its rounding at the
         // reach less its distance, which for a far light would grow with the light's distance
-        double diagonal = Math.sqrt(Math.pow(box[3] - box[0], 2) + Math.pow(box[4] - box[1], 2)
-                + Math.pow(box[5] - box[2], 2));
-        double reach = Math.min(1.25 * farthest, farthest + diagonal);
+        double reach = Math.min(1.25 * view.farthest, view.farthest + view.diagonal);
         // the float rounding of a ray's end grows with its length and with the size of the coordinates
         double gap = GAP * (reach + Math.sqrt((double) point.x() * point.x() + (double) point.y() * point.y()
                 + (double) point.z() * point.z()));
-        // a light so far that the gap is no longer small beside the box as it sees it: the tree does better
-        boolean tooFar = gap > 0.08 * distance * widest;
-        return widest > WIDEST || tooFar ? null : new PointFootprint(point, forward, across, down, size, widest, reach, gap);
+        return view.tooNarrowFor(gap) ? null : new PointFootprint(point, view, size, reach, gap, Double.NaN);
+    }
+
+    /**
+     * The footprints seen from {@code point} on a picture of {@code size × size} pixels that shows
+     * the box {@code box}, for rays that leave the point: whose line passes within {@code gap} of
+     * it and that start at least {@code leastStart} beyond it; null as for {@link #around}.
+     */
+    static PointFootprint leaving(Vector3f point, float[] box, int size, double leastStart, double gap) {
+        View view = View.of(point, box);
+        if (view == null || !(leastStart > gap && gap > 0) || view.tooNarrowFor(gap)) {
+            return null;
+        }
+        // a hit lies in its grown box: no farther from X than the box's farthest corner, grown by far less than 1 %
+        return new PointFootprint(point, view, size, 1.01 * view.farthest + gap, gap, leastStart);
     }
 
     /** The largest gap served, g. */
@@ -128,9 +131,34 @@ final class PointFootprint implements ImageFootprint {
         if (!(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap)) {
             return -1;
         }
+        return pixelOfDirection(ox - lightX, oy - lightY, oz - lightZ);
+    }
+
+    /**
+     * The pixel, as {@code y·size + x}, of the ray from {@code (ox, oy, oz)} along
+     * {@code (dx, dy, dz)} that leaves X, if it is served: its line passes within the gap of X,
+     * it starts at least S beyond X, and its direction shows on the picture; else −1.
+     */
+    int pixelLeaving(double ox, double oy, double oz, double dx, double dy, double dz) {
+        double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double ux = dx / length;
+        double uy = dy / length;
+        double uz = dz / length;
         double wx = ox - lightX;
         double wy = oy - lightY;
         double wz = oz - lightZ;
+        double along = wx * ux + wy * uy + wz * uz; // |O − F|, as F is the foot of X on the line
+        double px = wx - along * ux;
+        double py = wy - along * uy;
+        double pz = wz - along * uz;
+        if (!(along >= leastStart && px * px + py * py + pz * pz <= gap * gap)) {
+            return -1;
+        }
+        return pixelOfDirection(ux, uy, uz);
+    }
+
+    /** The pixel, as {@code y·size + x}, in which direction w from X shows, or −1 if not on the picture. */
+    private int pixelOfDirection(double wx, double wy, double wz) {
         double depth = wx * forward[0] + wy * forward[1] + wz * forward[2];
         double x = half + scale * (wx * across[0] + wy * across[1] + wz * across[2]) / depth;
         double y = half + scale * (wx * down[0] + wy * down[1] + wz * down[2]) / depth;
@@ -138,6 +166,14 @@ final class PointFootprint implements ImageFootprint {
             return -1;
         }
         return (int) y * size + (int) x;
+    }
+
+    /** The distance from X to {@code (x, y, z)}. */
+    double distanceFrom(double x, double y, double z) {
+        double wx = x - lightX;
+        double wy = y - lightY;
+        double wz = z - lightZ;
+        return Math.sqrt(wx * wx + wy * wy + wz * wz);
     }
 
     @Override
@@ -148,11 +184,7 @@ final class PointFootprint implements ImageFootprint {
         double x1 = boxes[at + 3] - lightX;
         double y1 = boxes[at + 4] - lightY;
         double z1 = boxes[at + 5] - lightZ;
-        // a hit Q lies at most R − |Q − X| + g from the ray's origin: near the light, hits come from far;
-        // |Q − X| is at least the box's distance less √3 growths, at most growth(R) each
-        double unGrown = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
-        double mostGrowth = ImageFootprint.growth(linear, quadratic, reach);
-        double run = Math.min(reach, reach - unGrown + Math.sqrt(3) * mostGrowth + gap) * (1 + 1e-6);
+        double run = run(x0, y0, z0, x1, y1, z1, ImageFootprint.growth(linear, quadratic, reach)) * (1 + 1e-6);
         double grow = ImageFootprint.growth(linear, quadratic, run);
         x0 -= grow;
         y0 -= grow;
@@ -203,6 +235,22 @@ final class PointFootprint implements ImageFootprint {
         return seen ? ImageFootprint.below(nearest) : Float.NaN;
     }
 
+    /**
+     * How far a ray can have run to a hit in the box {@code (x0 .. z1)} (relative to X) grown by at
+     * most {@code mostGrowth}: towards X, a hit Q lies at most {@code R − |Q − X| + g} from the
+     * origin, and |Q − X| is at least the box's distance less √3 growths, so near the light hits
+     * come from far; leaving X, at most {@code |Q − X| − S}, and |Q − X| at most the box's
+     * farthest corner's distance plus √3 growths.
+     */
+    private double run(double x0, double y0, double z0, double x1, double y1, double z1, double mostGrowth) {
+        if (Double.isNaN(leastStart)) {
+            double unGrown = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
+            return Math.min(reach, reach - unGrown + Math.sqrt(3) * mostGrowth + gap);
+        }
+        double farthest = Math.sqrt(Math.max(x0 * x0, x1 * x1) + Math.max(y0 * y0, y1 * y1) + Math.max(z0 * z0, z1 * z1));
+        return Math.max(0, Math.min(reach, farthest + Math.sqrt(3) * mostGrowth) - leastStart);
+    }
+
     private static double dot(double[] a, double[] b) {
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
@@ -220,5 +268,52 @@ final class PointFootprint implements ImageFootprint {
         double[] up = Math.abs(a[1]) < 0.9 ? new double[] {0, 1, 0} : new double[] {0, 0, 1};
         double[] c = cross(up, a);
         return scaled(c, 1 / Math.sqrt(dot(c, c)));
+    }
+
+    /**
+     * How a box looks from a point: the picture's axes (F towards the box's middle, u and v across
+     * it), its widest tangent, the farthest corner's distance, the distance to the middle and the
+     * box's diagonal.
+     */
+    private record View(double[] forward, double[] across, double[] down, double widest, double farthest,
+            double distance, double diagonal) {
+
+        /**
+         * The view of {@code box} from {@code point}; null if the box is not all well in front of
+         * the point (within 87° of the direction to its middle, and a twentieth of that distance
+         * ahead), as when the point lies inside it or beside it.
+         */
+        static View of(Vector3f point, float[] box) {
+            double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
+                    (box[2] + box[5]) / 2.0 - point.z()};
+            double distance = Math.sqrt(dot(toMiddle, toMiddle));
+            if (!(distance > 0 && Double.isFinite(distance))) {
+                return null;
+            }
+            double[] forward = scaled(toMiddle, 1 / distance);
+            double[] across = perpendicular(forward);
+            double[] down = cross(forward, across);
+            double widest = 0;
+            double farthest = 0;
+            for (int k = 0; k < 8; k++) {
+                double[] w = {box[(k & 1) * 3] - point.x(), box[1 + (k >> 1 & 1) * 3] - point.y(),
+                        box[2 + (k >> 2 & 1) * 3] - point.z()};
+                double depth = dot(w, forward);
+                if (!(depth > distance / 20)) {
+                    return null;
+                }
+                widest = Math.max(widest, Math.max(Math.abs(dot(w, across)), Math.abs(dot(w, down))) / depth);
+                farthest = Math.max(farthest, Math.sqrt(dot(w, w)));
+            }
+            widest = Math.max(widest * 1.01, 1e-6); // a hundredth of room at the picture's edges; never 0
+            double diagonal = Math.sqrt(Math.pow(box[3] - box[0], 2) + Math.pow(box[4] - box[1], 2)
+                    + Math.pow(box[5] - box[2], 2));
+            return widest > WIDEST ? null : new View(forward, across, down, widest, farthest, distance, diagonal);
+        }
+
+        /** Whether a gap of {@code gap} is no longer small beside the box as the point sees it: the tree does better. */
+        boolean tooNarrowFor(double gap) {
+            return gap > 0.08 * distance * widest;
+        }
     }
 }

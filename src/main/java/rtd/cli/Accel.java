@@ -17,13 +17,14 @@ enum Accel {
     bvh,
     /**
      * The view grid ({@link rtd.accel.ViewGrid}) for the camera's rays, and in a scene with lights
-     * the hierarchy for the shadow and mirror rays.
+     * the light grids and mirror grids ({@link rtd.accel.LightGrids}, {@link rtd.accel.MirrorGrids})
+     * and the hierarchy for the shadow and mirror rays they do not serve.
      */
     grid,
     /**
      * The image of hits ({@link rtd.accel.HitImage}) for the camera's rays, found object by object
      * before the render, where one ray a pixel is drawn; else the view grid; and in a scene with
-     * lights the light grids and the hierarchy for the shadow and mirror rays.
+     * lights the light grids, the mirror grids and the hierarchy for the other rays.
      */
     image
 }

@@ -7,6 +7,7 @@ import java.util.function.Supplier;
 import rtd.accel.Bvh;
 import rtd.accel.HitImage;
 import rtd.accel.LightGrids;
+import rtd.accel.MirrorGrids;
 import rtd.accel.ViewGrid;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
@@ -105,12 +106,13 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                 CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene, threads));
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
                 LightGrids lights = LightGrids.build(scene, width, height, samples, threads);
+                MirrorGrids mirrors = MirrorGrids.build(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
-                return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())), () -> String.format(
-                        Locale.ROOT, "view grid of %s of %d × %d pixels, %s, %s, and BVH of %s",
-                        StatsReport.count(grid.cellCount(), "cell"), grid.cellSide(), grid.cellSide(),
-                        StatsReport.count(grid.entries(), "entry", "entries"), describe(lights),
-                        StatsReport.count(bvh.nodeCount(), "node")), true);
+                return new Accelerator(() -> grid.newTracer(mirrors.newTracer(lights.newTracer(bvh.newTracer()))),
+                        () -> String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s, %s%s, and BVH of %s",
+                                StatsReport.count(grid.cellCount(), "cell"), grid.cellSide(), grid.cellSide(),
+                                StatsReport.count(grid.entries(), "entry", "entries"), describe(lights),
+                                describe(mirrors), StatsReport.count(bvh.nodeCount(), "node")), true);
             }
             case IMAGE -> {
                 HitImage image = HitImage.build(scene, width, height, threads);
@@ -126,9 +128,11 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                 }
                 CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene, threads));
                 LightGrids lights = LightGrids.build(scene, width, height, samples, threads);
+                MirrorGrids mirrors = MirrorGrids.build(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
-                return new Accelerator(() -> image.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(image)
-                        + ", " + describe(lights) + ", and BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+                return new Accelerator(() -> image.newTracer(mirrors.newTracer(lights.newTracer(bvh.newTracer()))),
+                        () -> describe(image) + ", " + describe(lights) + describe(mirrors) + ", and BVH of "
+                                + StatsReport.count(bvh.nodeCount(), "node"), true);
             }
             case BVH -> {
                 Bvh bvh = Bvh.build(scene, threads);
@@ -153,6 +157,13 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         return lights.count() == 0 ? "no light grid"
                 : StatsReport.count(lights.count(), "light grid") + " of "
                         + StatsReport.count(lights.entries(), "entry", "entries");
+    }
+
+    /** The mirrors' grids, for {@code --stats}: nothing if there are none. */
+    private static String describe(MirrorGrids mirrors) {
+        return mirrors.count() == 0 ? ""
+                : ", " + StatsReport.count(mirrors.count(), "mirror grid") + " of "
+                        + StatsReport.count(mirrors.entries(), "entry", "entries");
     }
 
     /**

@@ -55,7 +55,7 @@ final class StatsReport {
      */
     private static String answeredBy(WorkCount work) {
         StringBuilder text = new StringBuilder();
-        for (String structure : new String[] {"image of hits", "view grid", "light grids", "BVH"}) {
+        for (String structure : new String[] {"image of hits", "view grid", "light grids", "mirror grids", "BVH"}) {
             Long rays = work.answeredBy().get(structure);
             if (rays != null && rays > 0) {
                 text.append(String.format(Locale.ROOT, text.length() == 0 ? "%,d answered by the %s" : ", %,d by the %s",

@@ -2,6 +2,8 @@ package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
+import static rtd.accel.Grazing.missesExactly;
+import static rtd.accel.Grazing.point;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -208,26 +210,10 @@ class LightGridTest {
         for (int i = 0; i < 20_000; i++) {
             float[] box = new float[6];
             boxes.get(random.nextInt(boxes.size())).putBounds(box, 0);
-            double[] boxMiddle = {(box[0] + box[3]) / 2 - x[0], (box[1] + box[4]) / 2 - x[1],
-                    (box[2] + box[5]) / 2 - x[2]};
-            double[] toMiddle = unit(boxMiddle);
-            double[] side = unit(across(
-                    new double[] {random.nextGaussian(), random.nextGaussian(), random.nextGaussian()}, toMiddle));
-            // Q: just inside the corner that shows farthest towards the side, seen from the light
-            double[] q = null;
-            for (int k = 0; k < 8; k++) {
-                double[] w = {box[(k & 1) * 3] - x[0], box[1 + (k >> 1 & 1) * 3] - x[1],
-                        box[2 + (k >> 2 & 1) * 3] - x[2]};
-                if (q == null || dot(w, side) / dot(w, toMiddle) > dot(q, side) / dot(q, toMiddle)) {
-                    q = w;
-                }
-            }
-            double inside = Math.pow(10, -6 + 4 * random.nextDouble());
-            for (int k = 0; k < 3; k++) {
-                q[k] += inside * Math.signum(boxMiddle[k] - q[k]);
-            }
+            Grazing grazing = Grazing.of(box, x, random); // Q just inside the box's outline seen from the light
+            double[] q = grazing.q();
             // the end, up to the gap off the light towards the inside; the origin beyond Q on the line
-            double[] end = unit(across(new double[] {-side[0], -side[1], -side[2]}, unit(q)));
+            double[] end = grazing.awayFromSide();
             double off = grid.footprint.gap() * (0.3 + 0.69 * random.nextDouble());
             double beyond = Math.pow(10, -1 + 2 * random.nextDouble());
             Vector3f origin = point(x[0] + q[0] + beyond * (q[0] - off * end[0]),
@@ -245,40 +231,6 @@ class LightGridTest {
         }
         assertThat(served).isGreaterThan(5_000);
         assertThat(blocked).as("served rays that hit a box").isGreaterThan(1_000);
-    }
-
-    private static Vector3f point(double x, double y, double z) {
-        return new Vector3f((float) x, (float) y, (float) z);
-    }
-
-    private static double dot(double[] a, double[] b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    }
-
-    private static double[] unit(double[] a) {
-        double length = Math.sqrt(dot(a, a));
-        return new double[] {a[0] / length, a[1] / length, a[2] / length};
-    }
-
-    /** The part of {@code a} at right angles to the unit vector {@code axis}. */
-    private static double[] across(double[] a, double[] axis) {
-        double along = dot(a, axis);
-        return new double[] {a[0] - along * axis[0], a[1] - along * axis[1], a[2] - along * axis[2]};
-    }
-
-    /** Whether the exact line of the ray passes the sphere by. */
-    private static boolean missesExactly(Ray ray, Sphere sphere) {
-        double[] o = {ray.origin().x(), ray.origin().y(), ray.origin().z()};
-        double[] d = {ray.direction().x(), ray.direction().y(), ray.direction().z()};
-        double[] c = {sphere.center().x(), sphere.center().y(), sphere.center().z()};
-        double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        double t = ((c[0] - o[0]) * d[0] + (c[1] - o[1]) * d[1] + (c[2] - o[2]) * d[2]) / dd;
-        double gap = 0;
-        for (int k = 0; k < 3; k++) {
-            double offset = o[k] + t * d[k] - c[k];
-            gap += offset * offset;
-        }
-        return Math.sqrt(gap) > sphere.radius();
     }
 
     @Test

@@ -1,0 +1,89 @@
+package rtd.accel;
+
+import java.util.List;
+import java.util.Map;
+import rtd.geometry.Hit;
+import rtd.math.Ray;
+import rtd.render.HitBuffer;
+import rtd.render.RayBundle;
+import rtd.render.Tracer;
+import rtd.render.WorkCount;
+
+/**
+ * Answers the rays that flat mirrors reflect from the camera's eye through {@link MirrorGrid}s:
+ * such a ray tests the objects of its cell, nearest first, and those without a box. Its cell
+ * holds every object it can hit, and the depth test does not depend on the order of the tests,
+ * so the answer is the paper's loop's. Every other ray, and every shadow ray, goes to the tracer
+ * for the others.
+ *
+ * <p>Not thread-safe: it keeps the ray's state and counters of its own. Use one per thread.
+ */
+final class MirrorGridTracer implements Tracer {
+
+    private final MirrorGrid[] grids;
+    /** Per grid, the tests on its objects. */
+    private final NearestHit[] hits;
+    private final Tracer others;
+    private long rays;
+
+    MirrorGridTracer(List<MirrorGrid> grids, Tracer others) {
+        this.grids = grids.toArray(MirrorGrid[]::new);
+        this.hits = new NearestHit[this.grids.length];
+        for (int g = 0; g < hits.length; g++) {
+            hits[g] = new NearestHit(this.grids[g].cells.objects);
+        }
+        this.others = others;
+    }
+
+    @Override
+    public Hit nearestHit(Ray ray) {
+        for (int g = 0; g < grids.length; g++) {
+            int cell = grids[g].cellOf(ray);
+            if (cell >= 0) {
+                rays++;
+                ViewGrid cells = grids[g].cells;
+                NearestHit hit = hits[g];
+                hit.start(ray.origin().x(), ray.origin().y(), ray.origin().z(), ray.direction().x(),
+                        ray.direction().y(), ray.direction().z());
+                hit.testUnbounded();
+                hit.testPlacesNearestFirst(cells.places, cells.cellStart[cell], cells.cellStart[cell + 1],
+                        cells.nearest, grids[g].start(ray));
+                return hit.hit(ray);
+            }
+        }
+        return others.nearestHit(ray);
+    }
+
+    @Override
+    public boolean blocked(Ray ray, float distance) {
+        return others.blocked(ray, distance);
+    }
+
+    @Override
+    public void traceAll(RayBundle rays, HitBuffer hits) {
+        others.traceAll(rays, hits);
+    }
+
+    @Override
+    public boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
+        return others.traceAtOnce(rays, hits);
+    }
+
+    @Override
+    public long testsRun() {
+        long tests = others.testsRun();
+        for (NearestHit hit : hits) {
+            tests += hit.testsRun();
+        }
+        return tests;
+    }
+
+    @Override
+    public WorkCount work() {
+        WorkCount work = others.work().plus(new WorkCount(rays, Map.of(), 0).answeredBy("mirror grids"));
+        for (NearestHit hit : hits) {
+            work = work.plus(new WorkCount(0, hit.testsByKind(), 0));
+        }
+        return work;
+    }
+}
