@@ -32,8 +32,7 @@ final class NearestHit {
      * size) keeps a box whose object could tie or win by a rounding error.
      */
     private static final float SKIP_MARGIN = 1e-5f;
-    /** The entry of a box the ray misses. */
-    static final float MISS = Float.POSITIVE_INFINITY;
+    static final float MISS = Float.POSITIVE_INFINITY; // the entry of a box the ray misses
 
     private final Bvh bvh;
     private final LeafObjects leaves;
@@ -58,8 +57,7 @@ final class NearestHit {
     /** The nearest hit's {@link DepthKey}: a hit with a smaller key wins the depth test. */
     private long bestKey;
     private float skipBeyond;
-    /** The exit of the box of the last {@link #entry}. */
-    private float exit;
+    private float exit; // of the box of the last entry()
     /** The intersection tests run for this object's rays, for {@code --stats} and {@code --view cost}. */
     private final TestCounts counts;
     private final UnboundedObjects unbounded;
@@ -185,26 +183,11 @@ final class NearestHit {
     /**
      * The paper's intersection test and depth test on the objects at places
      * {@code places[from .. to)} in leaf order (a {@link ViewGrid}'s cell), in the order of
-     * {@code nearest}, a distance from the origin before which no hit on the object at a place
-     * lies, growing along them: stops at the first that lies beyond the nearest hit found, by
-     * more than rounding can explain, as all after it do.
-     */
-    void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest) {
-        for (int k = from; k < to; k++) {
-            int place = places[k];
-            if (nearest[place] > skipBeyond * length) {
-                return;
-            }
-            counts.place(place);
-            test(place);
-        }
-    }
-
-    /**
-     * As {@link #testPlacesNearestFirst}, with {@code nearest} measured from a point X that the
-     * origin lies {@code start} from (a {@link MirrorGrid}'s mirrored eye): a hit at least n from
-     * X lies at least {@code n − start} from the origin, as no side of a triangle is longer than
-     * the other two together, so the tests stop where that passes the nearest hit found.
+     * {@code nearest}, growing, a distance from a point X within which no hit on the object lies;
+     * the origin lies {@code start} from X (0 for the camera's grid; a {@link MirrorGrid}'s X is
+     * the eye's mirror image). A hit n from X lies at least {@code n − start} from the origin (no
+     * side of a triangle is longer than the other two): the tests stop at the first place where
+     * that passes the nearest hit, by more than rounding can explain, as all after it do.
      */
     void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest, double start) {
         for (int k = from; k < to; k++) {

@@ -39,8 +39,6 @@ final class PointFootprint implements ImageFootprint {
      * leaves twenty times that.
      */
     static final double GAP = 2e-6;
-    /** How wide the picture may be: a tangent of at most this from F (87°) on each axis. */
-    private static final double WIDEST = 20;
 
     /** The point X, the light. */
     private final double lightX;
@@ -58,16 +56,16 @@ final class PointFootprint implements ImageFootprint {
     /** For rays leaving X, how far beyond X they start at least (S); NaN for rays towards X. */
     private final double leastStart;
 
-    private PointFootprint(Vector3f point, View view, int size, double reach, double gap, double leastStart) {
+    private PointFootprint(Vector3f point, PointView view, int size, double reach, double gap, double leastStart) {
         lightX = point.x();
         lightY = point.y();
         lightZ = point.z();
-        this.forward = view.forward;
-        this.across = view.across;
-        this.down = view.down;
+        this.forward = view.forward();
+        this.across = view.across();
+        this.down = view.down();
         this.size = size;
         this.half = size / 2.0;
-        this.scale = size / (2 * view.widest);
+        this.scale = size / (2 * view.widest());
         this.reach = reach;
         this.gap = gap;
         this.leastStart = leastStart;
@@ -78,17 +76,17 @@ final class PointFootprint implements ImageFootprint {
      * the box {@code box} (min x, y, z, max x, y, z), for rays towards the point that run up to
      * 1.25 times as far as the box's farthest corner is from the point, and at most a diagonal of
      * the box farther (the shadow rays from the objects, and from the floor beneath them); null if
-     * the box is not all well in front of the point ({@link View#of}), or if the point lies so far
+     * the box is not all well in front of the point ({@link PointView#of}), or if the point lies so far
      * that the gap is more than a few hundredths of the box's picture.
      */
     static PointFootprint around(Vector3f point, float[] box, int size) {
-        View view = View.of(point, box);
+        PointView view = PointView.of(point, box);
         if (view == null) {
             return null;
         }
         // rays from beyond the box, but not from much farther: every object grows by its rounding at the
         // reach less its distance, which for a far light would grow with the light's distance
-        double reach = Math.min(1.25 * view.farthest, view.farthest + view.diagonal);
+        double reach = Math.min(1.25 * view.farthest(), view.farthest() + view.diagonal());
         // the float rounding of a ray's end grows with its length and with the size of the coordinates
         double gap = GAP * (reach + Math.sqrt((double) point.x() * point.x() + (double) point.y() * point.y()
                 + (double) point.z() * point.z()));
@@ -101,12 +99,12 @@ final class PointFootprint implements ImageFootprint {
      * it and that start at least {@code leastStart} beyond it; null as for {@link #around}.
      */
     static PointFootprint leaving(Vector3f point, float[] box, int size, double leastStart, double gap) {
-        View view = View.of(point, box);
+        PointView view = PointView.of(point, box);
         if (view == null || !(leastStart > gap && gap > 0) || view.tooNarrowFor(gap)) {
             return null;
         }
         // a hit lies in its grown box: no farther from X than the box's farthest corner, grown by far less than 1 %
-        return new PointFootprint(point, view, size, 1.01 * view.farthest + gap, gap, leastStart);
+        return new PointFootprint(point, view, size, 1.01 * view.farthest() + gap, gap, leastStart);
     }
 
     /** The largest gap served, g. */
@@ -249,71 +247,5 @@ final class PointFootprint implements ImageFootprint {
         }
         double farthest = Math.sqrt(Math.max(x0 * x0, x1 * x1) + Math.max(y0 * y0, y1 * y1) + Math.max(z0 * z0, z1 * z1));
         return Math.max(0, Math.min(reach, farthest + Math.sqrt(3) * mostGrowth) - leastStart);
-    }
-
-    private static double dot(double[] a, double[] b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    }
-
-    private static double[] scaled(double[] a, double factor) {
-        return new double[] {a[0] * factor, a[1] * factor, a[2] * factor};
-    }
-
-    private static double[] cross(double[] a, double[] b) {
-        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    }
-
-    /** A unit vector at right angles to the unit vector {@code a}, level as a camera's x axis is: up × a. */
-    private static double[] perpendicular(double[] a) {
-        double[] up = Math.abs(a[1]) < 0.9 ? new double[] {0, 1, 0} : new double[] {0, 0, 1};
-        double[] c = cross(up, a);
-        return scaled(c, 1 / Math.sqrt(dot(c, c)));
-    }
-
-    /**
-     * How a box looks from a point: the picture's axes (F towards the box's middle, u and v across
-     * it), its widest tangent, the farthest corner's distance, the distance to the middle and the
-     * box's diagonal.
-     */
-    private record View(double[] forward, double[] across, double[] down, double widest, double farthest,
-            double distance, double diagonal) {
-
-        /**
-         * The view of {@code box} from {@code point}; null if the box is not all well in front of
-         * the point (within 87° of the direction to its middle, and a twentieth of that distance
-         * ahead), as when the point lies inside it or beside it.
-         */
-        static View of(Vector3f point, float[] box) {
-            double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
-                    (box[2] + box[5]) / 2.0 - point.z()};
-            double distance = Math.sqrt(dot(toMiddle, toMiddle));
-            if (!(distance > 0 && Double.isFinite(distance))) {
-                return null;
-            }
-            double[] forward = scaled(toMiddle, 1 / distance);
-            double[] across = perpendicular(forward);
-            double[] down = cross(forward, across);
-            double widest = 0;
-            double farthest = 0;
-            for (int k = 0; k < 8; k++) {
-                double[] w = {box[(k & 1) * 3] - point.x(), box[1 + (k >> 1 & 1) * 3] - point.y(),
-                        box[2 + (k >> 2 & 1) * 3] - point.z()};
-                double depth = dot(w, forward);
-                if (!(depth > distance / 20)) {
-                    return null;
-                }
-                widest = Math.max(widest, Math.max(Math.abs(dot(w, across)), Math.abs(dot(w, down))) / depth);
-                farthest = Math.max(farthest, Math.sqrt(dot(w, w)));
-            }
-            widest = Math.max(widest * 1.01, 1e-6); // a hundredth of room at the picture's edges; never 0
-            double diagonal = Math.sqrt(Math.pow(box[3] - box[0], 2) + Math.pow(box[4] - box[1], 2)
-                    + Math.pow(box[5] - box[2], 2));
-            return widest > WIDEST ? null : new View(forward, across, down, widest, farthest, distance, diagonal);
-        }
-
-        /** Whether a gap of {@code gap} is no longer small beside the box as the point sees it: the tree does better. */
-        boolean tooNarrowFor(double gap) {
-            return gap > 0.08 * distance * widest;
-        }
     }
 }
