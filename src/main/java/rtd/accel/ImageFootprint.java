@@ -28,7 +28,7 @@ interface ImageFootprint {
      * The pixels {@code [x0, x1] × [y0, y1]} (inclusive, within the image) whose rays may hit
      * the object of box {@code boxes[at .. at+5]} and rounding {@code linear}, {@code quadratic},
      * into {@code into[to .. to+3]} as x0, y0, x1, y1; and the answer: a distance from the ray's
-     * origin before which none of them hits it (for a {@link PointFootprint}, from the light). NaN if no ray of the picture can hit it (what it
+     * origin before which none of them hits it (for a {@link PointFootprint}, from its point X). NaN if no ray of the picture can hit it (what it
      * wrote into {@code into} then means nothing); −∞ where the numbers cannot bound it (then all
      * pixels).
      */

@@ -23,15 +23,16 @@ final class MirrorGrid {
 
     /**
      * How far the shader lifts a mirrored ray's origin off the surface, per unit of the hit
-     * point's largest coordinate: {@code ε = 1e-4·(1 + max |P|)} ({@code Surface}). The lift moves
-     * the ray's line up to ε from the mirrored eye; the grid serves rays up to that far off.
+     * point's largest coordinate: {@code ε = 1e-4·(1 + max |P|)} ({@code Surface.LIFT}; a test
+     * holds the two equal, as this package cannot see the shader's). The lift moves the ray's line
+     * up to ε from the mirrored eye; the grid serves rays up to that far off.
      */
-    static final double LIFT = 1e-4;
+    static final float LIFT = 1e-4f;
     /**
-     * The widest gap a grid serves, relative to the eye's height over the mirror: beyond it the
-     * footprints would widen by more than a few pixels, and the tree does better.
+     * The widest gap a grid serves, as a share of the eye's height over the mirror: beyond it
+     * the footprints would widen by more than a few pixels, and the tree does better.
      */
-    private static final double WIDEST_GAP = 1e-3;
+    private static final double WIDEST_GAP_PER_HEIGHT = 1e-3;
 
     final PointFootprint footprint;
     /** The cells of the picture, {@code cells.width} pixels square. */
@@ -64,7 +65,7 @@ final class MirrorGrid {
                 (float) (eye.z() - twice * nz));
         double away = Math.abs(height);
         double gap = gap(image, box);
-        if (!(gap <= WIDEST_GAP * away)) {
+        if (!(gap <= WIDEST_GAP_PER_HEIGHT * away)) {
             return null;
         }
         // a mirrored ray starts on the plane, at least the height from the image: half of it leaves room
@@ -101,7 +102,7 @@ final class MirrorGrid {
     }
 
     /** How far the origin of {@code ray} lies from the mirrored eye, rounded up. */
-    double start(Ray ray) {
+    double originFromX(Ray ray) {
         Vector3f origin = ray.origin();
         return footprint.distanceFrom(origin.x(), origin.y(), origin.z()) * (1 + 1e-9);
     }

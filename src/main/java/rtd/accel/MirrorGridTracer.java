@@ -11,10 +11,13 @@ import rtd.render.WorkCount;
 
 /**
  * Answers the rays that flat mirrors reflect from the camera's eye through {@link MirrorGrid}s:
- * such a ray tests the objects of its cell, nearest first, and those without a box. Its cell
- * holds every object it can hit, and the depth test does not depend on the order of the tests,
- * so the answer is the paper's loop's. Every other ray, and every shadow ray, goes to the tracer
- * for the others.
+ * such a ray tests the objects of its cell, nearest first by their distance from the eye's mirror
+ * image X, and those without a box. Its cell holds every object it can hit; the depth test does
+ * not depend on the order of the tests; and it stops only where the next object lies farther
+ * from X than its origin does plus its nearest hit, so that no hit on that object or any after it
+ * can be nearer. So the answer is the paper's loop's. Any ray whose line passes X as a mirrored
+ * one does is served the same way, whatever made it; every other ray, and every shadow ray, goes
+ * to the tracer for the others.
  *
  * <p>Not thread-safe: it keeps the ray's state and counters of its own. Use one per thread.
  */
@@ -47,7 +50,7 @@ final class MirrorGridTracer implements Tracer {
                         ray.direction().y(), ray.direction().z());
                 hit.testUnbounded();
                 hit.testPlacesNearestFirst(cells.places, cells.cellStart[cell], cells.cellStart[cell + 1],
-                        cells.nearest, grids[g].start(ray));
+                        cells.nearest, grids[g].originFromX(ray));
                 return hit.hit(ray);
             }
         }

@@ -16,7 +16,10 @@ import rtd.scene.Scene;
  */
 public final class MirrorGrids {
 
-    /** How many objects all the grids may hold copies of together, as for {@link LightGrids#MOST_PACKED}. */
+    /**
+     * How many objects all the grids may hold copies of together, as for
+     * {@link LightGrids#MOST_PACKED}, and beside what those hold.
+     */
     static final long MOST_PACKED = 2_000_000;
     private static final int SMALLEST = 16;
     private static final int LARGEST = 4096;
@@ -39,7 +42,8 @@ public final class MirrorGrids {
      */
     public static MirrorGrids build(Scene scene, int width, int height, int samples, int threads) {
         List<IGeometry> objects = scene.objects();
-        if (scene.lights().isEmpty() || !(scene.camera() instanceof PerspectiveCamera camera)) {
+        if (scene.lights().isEmpty() || !(scene.camera() instanceof PerspectiveCamera camera)
+                || objects.stream().noneMatch(MirrorGrids::mirrors)) {
             return new MirrorGrids(List.of());
         }
         float[] box = LightGrids.boxOf(objects);
@@ -53,8 +57,8 @@ public final class MirrorGrids {
                 if (box == null || grids.size() >= most) {
                     break;
                 }
-                if (object instanceof Plane mirror && mirror.material().reflective() > 0) {
-                    MirrorGrid grid = MirrorGrid.build(objects, box, camera.position(), mirror, size, pool);
+                if (mirrors(object)) {
+                    MirrorGrid grid = MirrorGrid.build(objects, box, camera.position(), (Plane) object, size, pool);
                     if (grid != null) {
                         grids.add(grid);
                     }
@@ -66,6 +70,11 @@ public final class MirrorGrids {
                 pool.shutdown();
             }
         }
+    }
+
+    /** Whether {@code object} is a flat mirror: a plane that reflects. */
+    private static boolean mirrors(IGeometry object) {
+        return object instanceof Plane && object.material().reflective() > 0;
     }
 
     /** The grids, one for each mirror that has one. */

@@ -40,10 +40,10 @@ final class PointFootprint implements ImageFootprint {
      */
     static final double GAP = 2e-6;
 
-    /** The point X, the light. */
-    private final double lightX;
-    private final double lightY;
-    private final double lightZ;
+    /** The point X: a light, or the eye's mirror image. */
+    private final double pointX;
+    private final double pointY;
+    private final double pointZ;
     private final double[] forward;
     private final double[] across;
     private final double[] down;
@@ -57,9 +57,9 @@ final class PointFootprint implements ImageFootprint {
     private final double leastStart;
 
     private PointFootprint(Vector3f point, PointView view, int size, double reach, double gap, double leastStart) {
-        lightX = point.x();
-        lightY = point.y();
-        lightZ = point.z();
+        pointX = point.x();
+        pointY = point.y();
+        pointZ = point.z();
         this.forward = view.forward();
         this.across = view.across();
         this.down = view.down();
@@ -112,7 +112,10 @@ final class PointFootprint implements ImageFootprint {
         return gap;
     }
 
-    /** The longest ray served: {@code d ≤ R}. */
+    /**
+     * Towards X, the longest ray served ({@code d ≤ R}); leaving X, how far from X a hit can lie
+     * at most, which bounds the run to it.
+     */
     double reach() {
         return reach;
     }
@@ -120,36 +123,38 @@ final class PointFootprint implements ImageFootprint {
     /**
      * The pixel, as {@code y·size + x}, of the ray from {@code (ox, oy, oz)} that reaches
      * {@code (ex, ey, ez)} at its end, if it is served: its end lies within the gap of X, it
-     * runs at most R, and it shows on the picture; else −1.
+     * runs at most R, and it shows on the picture; else −1, and always for a picture of rays
+     * leaving X ({@link #leaving}), whose footprints are not grown for rays towards it.
      */
     int pixelOf(double ox, double oy, double oz, double ex, double ey, double ez, double length) {
-        double gx = ex - lightX;
-        double gy = ey - lightY;
-        double gz = ez - lightZ;
-        if (!(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap)) {
+        double gx = ex - pointX;
+        double gy = ey - pointY;
+        double gz = ez - pointZ;
+        if (!(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap) || !Double.isNaN(leastStart)) {
             return -1;
         }
-        return pixelOfDirection(ox - lightX, oy - lightY, oz - lightZ);
+        return pixelOfDirection(ox - pointX, oy - pointY, oz - pointZ);
     }
 
     /**
      * The pixel, as {@code y·size + x}, of the ray from {@code (ox, oy, oz)} along
      * {@code (dx, dy, dz)} that leaves X, if it is served: its line passes within the gap of X,
-     * it starts at least S beyond X, and its direction shows on the picture; else −1.
+     * it starts at least S beyond X, and its direction shows on the picture; else −1, and
+     * always for a picture of rays towards X ({@link #around}, whose S is NaN).
      */
     int pixelLeaving(double ox, double oy, double oz, double dx, double dy, double dz) {
         double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double ux = dx / length;
         double uy = dy / length;
         double uz = dz / length;
-        double wx = ox - lightX;
-        double wy = oy - lightY;
-        double wz = oz - lightZ;
+        double wx = ox - pointX;
+        double wy = oy - pointY;
+        double wz = oz - pointZ;
         double along = wx * ux + wy * uy + wz * uz; // |O − F|, as F is the foot of X on the line
         double px = wx - along * ux;
         double py = wy - along * uy;
         double pz = wz - along * uz;
-        if (!(along >= leastStart && px * px + py * py + pz * pz <= gap * gap)) {
+        if (!(along >= leastStart && px * px + py * py + pz * pz <= gap * gap)) { // false for NaN: towards X
             return -1;
         }
         return pixelOfDirection(ux, uy, uz);
@@ -168,20 +173,20 @@ final class PointFootprint implements ImageFootprint {
 
     /** The distance from X to {@code (x, y, z)}. */
     double distanceFrom(double x, double y, double z) {
-        double wx = x - lightX;
-        double wy = y - lightY;
-        double wz = z - lightZ;
+        double wx = x - pointX;
+        double wy = y - pointY;
+        double wz = z - pointZ;
         return Math.sqrt(wx * wx + wy * wy + wz * wz);
     }
 
     @Override
     public float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
-        double x0 = boxes[at] - lightX;
-        double y0 = boxes[at + 1] - lightY;
-        double z0 = boxes[at + 2] - lightZ;
-        double x1 = boxes[at + 3] - lightX;
-        double y1 = boxes[at + 4] - lightY;
-        double z1 = boxes[at + 5] - lightZ;
+        double x0 = boxes[at] - pointX;
+        double y0 = boxes[at + 1] - pointY;
+        double z0 = boxes[at + 2] - pointZ;
+        double x1 = boxes[at + 3] - pointX;
+        double y1 = boxes[at + 4] - pointY;
+        double z1 = boxes[at + 5] - pointZ;
         double run = run(x0, y0, z0, x1, y1, z1, ImageFootprint.growth(linear, quadratic, reach)) * (1 + 1e-6);
         double grow = ImageFootprint.growth(linear, quadratic, run);
         x0 -= grow;

@@ -24,6 +24,9 @@ import rtd.math.Vector3f;
  */
 public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean inside, Vector3f over, Vector3f under) {
 
+    /** ε per unit of the hit point's largest coordinate: how far {@link #over} and {@link #under} lie off the surface. */
+    public static final float LIFT = 1e-4f;
+
     /**
      * The surface at {@code hit}, a hit of {@code ray}; {@code ε = 1e-4·(1 + max(|Px|, |Py|,
      * |Pz|))}, so that it stays above float's rounding of P however far P is from the origin.
@@ -36,7 +39,7 @@ public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean i
         if (inside) {
             normal = normal.inverse();
         }
-        float epsilon = 1e-4f * (1 + Math.max(Math.abs(point.x()), Math.max(Math.abs(point.y()), Math.abs(point.z()))));
+        float epsilon = LIFT * (1 + Math.max(Math.abs(point.x()), Math.max(Math.abs(point.y()), Math.abs(point.z()))));
         Vector3f offset = normal.multiply(epsilon);
         return new Surface(ray, hit, eye, normal, inside, point.add(offset), point.subtract(offset));
     }

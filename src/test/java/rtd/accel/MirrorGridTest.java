@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 import static rtd.accel.Grazing.dot;
 import static rtd.accel.Grazing.missesExactly;
 import static rtd.accel.Grazing.point;
@@ -231,6 +232,14 @@ class MirrorGridTest {
 
         assertThat(pixels).containsExactly(26, 26, 73, 73);
         assertThat(nearest).isLessThan(9.4990f).isGreaterThan(9.4985f);
+    }
+
+    @Test
+    void theGridServesRaysAsFarFromTheMirroredEyeAsTheShaderLiftsThemOffTheMirror() {
+        assertThat(MirrorGrid.LIFT).isEqualTo(Surface.LIFT);
+        // the image at (3, −12, 2), the box to 40.5: the lift of a point with coordinates up to 40.5, and a hundredth
+        assertThat(MirrorGrid.gap(new Vector3f(3, -12, 2), new float[] {-1, 2, -3, 4, 40.5f, 6}))
+                .isCloseTo((double) Surface.LIFT * 41.5 * 1.01, within(1e-9));
     }
 
     @Test
