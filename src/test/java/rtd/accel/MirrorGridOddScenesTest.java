@@ -1,6 +1,8 @@
 package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static rtd.accel.MirrorGridTest.check;
+import static rtd.accel.MirrorGridTest.mirrored;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -26,7 +28,6 @@ import rtd.render.LinearTracer;
 import rtd.render.Tracer;
 import rtd.scene.Light;
 import rtd.scene.Scene;
-import rtd.shade.Surface;
 
 /**
  * The mirror grids in odd scenes (after a review that tried to break them): far from the origin,
@@ -170,29 +171,6 @@ class MirrorGridOddScenesTest {
                     Grazing.point(along[0], along[1], along[2]).multiply(scale))) ? 1 : 0;
         }
         return served;
-    }
-
-    /** Checks {@code ray} against the loop, to the last bit; answers whether a grid served it. */
-    private static boolean check(Scene scene, MirrorGrids grids, Tracer tracer, Ray ray) {
-        Hit loop = scene.nearestHit(ray);
-        Hit grid = tracer.nearestHit(ray);
-        if (loop == null) {
-            assertThat(grid).as("ray " + ray).isNull();
-        } else {
-            assertThat(grid).as("ray " + ray).isNotNull();
-            assertThat(grid.index()).as("object hit by " + ray).isEqualTo(loop.index());
-            assertThat(Float.floatToIntBits(grid.t())).as("t of " + ray).isEqualTo(Float.floatToIntBits(loop.t()));
-            assertThat(grid.distance()).as("distance of " + ray).isEqualTo(loop.distance());
-        }
-        return grids.grids().stream().anyMatch(g -> g.cellOf(ray) >= 0);
-    }
-
-    /** The ray the shader reflects at {@code hit} of {@code ray}. */
-    private static Ray mirrored(Ray ray, Hit hit) {
-        Surface surface = Surface.at(ray, hit);
-        Vector3f direction = ray.direction();
-        Vector3f normal = surface.normal();
-        return new Ray(surface.over(), direction.subtract(normal.multiply(2 * direction.dot(normal))));
     }
 
     /** The mirror image of {@code eye} in {@code mirror} as the grid makes it, and the eye's height over the mirror. */

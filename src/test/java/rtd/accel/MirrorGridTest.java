@@ -52,7 +52,7 @@ class MirrorGridTest {
     private static final Light LIGHT = new Light(new Vector3f(0, 200, 0), new Rgb(1, 1, 1));
 
     /** The ray the shader reflects at {@code hit} of {@code ray} ({@link WhittedShader}'s step 4). */
-    private static Ray mirrored(Ray ray, Hit hit) {
+    static Ray mirrored(Ray ray, Hit hit) {
         Surface surface = Surface.at(ray, hit);
         Vector3f direction = ray.direction();
         Vector3f normal = surface.normal();
@@ -60,7 +60,7 @@ class MirrorGridTest {
     }
 
     /** Checks {@code ray} against the loop, to the last bit; answers whether a grid served it. */
-    private static boolean check(Scene scene, MirrorGrids grids, Tracer tracer, Ray ray) {
+    static boolean check(Scene scene, MirrorGrids grids, Tracer tracer, Ray ray) {
         Hit loop = scene.nearestHit(ray);
         Hit grid = tracer.nearestHit(ray);
         if (loop == null) {
