@@ -123,6 +123,16 @@ interface ImageFootprint {
         return Math.sqrt(outside(x0, x1) + outside(y0, y1) + outside(z0, z1));
     }
 
+    /** How far 0 lies from the farthest point of the box {@code [x0, x1] × [y0, y1] × [z0, z1]}: its farthest corner. */
+    static double farthest(double x0, double y0, double z0, double x1, double y1, double z1) {
+        return Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
+    }
+
+    private static double farther(double low, double high) {
+        double far = Math.max(Math.abs(low), Math.abs(high));
+        return far * far;
+    }
+
     /** The least dot product of a point of the box {@code [x0, x1] × [y0, y1] × [z0, z1]} with {@code axis}. */
     static double leastAlong(double x0, double y0, double z0, double x1, double y1, double z1, double[] axis) {
         return least(x0, x1, axis[0]) + least(y0, y1, axis[1]) + least(z0, z1, axis[2]);

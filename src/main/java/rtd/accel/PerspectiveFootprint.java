@@ -75,7 +75,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         double z1 = boxes[at + 5] - oz;
         double widest = linear + IGeometry.ROUNDING_CONE;
         // a hit runs L ≤ farthest corner + √3·growth(L) ≤ farthest + √3·widest·L from the eye
-        double farthest = Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
+        double farthest = ImageFootprint.farthest(x0, y0, z0, x1, y1, z1);
         double reach = farthest / (1 - Math.sqrt(3) * widest);
         double grow = ImageFootprint.growth(linear, quadratic, reach);
         double nearest = ImageFootprint.distance(x0, y0, z0, x1, y1, z1) - Math.sqrt(3) * grow;
@@ -140,12 +140,6 @@ final class PerspectiveFootprint implements ImageFootprint {
                 && ImageFootprint.range(halfHeight + top - margin, halfHeight + bottom + margin, height,
                         latestOffset, into, to + 1);
         return seen ? ImageFootprint.below(nearest) : Float.NaN;
-    }
-
-    /** The larger square of two ends of a side. */
-    private static double farther(double low, double high) {
-        double far = Math.max(Math.abs(low), Math.abs(high));
-        return far * far;
     }
 
     /** The largest of {@code low·factor} and {@code high·factor}. */

@@ -250,7 +250,7 @@ final class PointFootprint implements ImageFootprint {
             double unGrown = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
             return Math.min(reach, reach - unGrown + Math.sqrt(3) * mostGrowth + gap);
         }
-        double farthest = Math.sqrt(Math.max(x0 * x0, x1 * x1) + Math.max(y0 * y0, y1 * y1) + Math.max(z0 * z0, z1 * z1));
+        double farthest = ImageFootprint.farthest(x0, y0, z0, x1, y1, z1);
         return Math.max(0, Math.min(reach, farthest + Math.sqrt(3) * mostGrowth) - leastStart);
     }
 }
