@@ -13,7 +13,7 @@ final class CellSide {
     /** The most cell entries the grid is made with if a larger cell keeps under it (4 bytes each). */
     static final long MOST_ENTRIES = 1L << 25;
     /** How many objects at most {@link #choose} measures to estimate the entries: enough for a mean. */
-    private static final int SAMPLE = 1 << 12;
+    static final int SAMPLE = 1 << 12;
 
     private CellSide() {
     }
@@ -29,12 +29,7 @@ final class CellSide {
      */
     static int choose(List<IGeometry> objects, ImageFootprint footprint, int width, int height, int samples) {
         int count = objects.size();
-        int step = Math.max(1, count / SAMPLE);
-        int[] sample = new int[4 * ((count + step - 1) / step)];
-        float[] box = new float[6];
-        for (int f = 0, at = 0; f < count; f += step, at += 4) {
-            footprint.putObject(objects.get(f), box, sample, at);
-        }
+        int[] sample = footprint.ofSample(objects, SAMPLE);
         int best = 0;
         double bestCost = Double.POSITIVE_INFINITY;
         for (int shift = 0; shift < 31; shift++) {

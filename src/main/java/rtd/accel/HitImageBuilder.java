@@ -102,8 +102,16 @@ final class HitImageBuilder {
         return image;
     }
 
-    /** Each object's footprint, and its kind. */
+    /**
+     * Each object's footprint, and its kind. A sample spread over the whole file goes first
+     * (its footprints are not kept): the JIT compiles {@code put} for the branches its first
+     * few thousand calls took, and meets a branch it never saw there (objects out of view, which
+     * a file may hold only further on) by dropping the compiled code and starting again. With
+     * the sample first, it compiles for the whole file once (the terrain of a million triangles:
+     * this pass 0.50 → 0.26 s, medians of 7 alternating runs).
+     */
     private void measure(ImageFootprint footprint, Parts parts) {
+        footprint.ofSample(objects, CellSide.SAMPLE);
         parts.run((start, end) -> {
             float[] box = new float[6];
             String lastName = null;

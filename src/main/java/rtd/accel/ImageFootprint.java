@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.List;
 import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
@@ -48,6 +49,22 @@ interface ImageFootprint {
             into[at + 2] = 0;
         }
         return nearest;
+    }
+
+    /**
+     * The footprints of a sample of {@code objects} spread evenly over the file: every
+     * {@code step}-th from the first, {@code step} chosen so that there are at most about
+     * {@code most}, 4 ints each as {@link #putObject} writes them.
+     */
+    default int[] ofSample(List<IGeometry> objects, int most) {
+        int count = objects.size();
+        int step = Math.max(1, count / most);
+        int[] sample = new int[4 * ((count + step - 1) / step)];
+        float[] box = new float[6];
+        for (int f = 0, at = 0; f < count; f += step, at += 4) {
+            putObject(objects.get(f), box, sample, at);
+        }
+        return sample;
     }
 
     /** Whether all six numbers of a box are finite. */
