@@ -1,6 +1,5 @@
 package rtd.io;
 
-import java.util.Arrays;
 import rtd.image.Color;
 import rtd.math.Vector3f;
 
@@ -18,23 +17,31 @@ import rtd.math.Vector3f;
  */
 final class GroupValues extends WrittenValues {
 
+    /** The values a reader fills line by line: room for the longest statements, which grows if need be. */
     GroupValues(SourceText source) {
-        super(source);
+        this(source, 16, 8);
     }
 
-    /** An independent copy, for an object that is built when the whole file is read. */
+    private GroupValues(SourceText source, int numbers, int groups) {
+        super(source, numbers, groups);
+    }
+
+    /**
+     * An independent copy, for an object that is built when the whole file is read: its arrays
+     * just long enough (a hundred thousand spheres that name a material keep a copy each).
+     */
     GroupValues copy() {
-        GroupValues copy = new GroupValues(source);
+        GroupValues copy = new GroupValues(source, count, groupCount);
         copy.statement = statement;
         copy.line = line;
         copy.lineStart = lineStart;
-        copy.values = Arrays.copyOf(values, count);
-        copy.starts = Arrays.copyOf(starts, count);
-        copy.ends = Arrays.copyOf(ends, count);
-        copy.keys = Arrays.copyOf(keys, count);
+        System.arraycopy(values, 0, copy.values, 0, count);
+        System.arraycopy(starts, 0, copy.starts, 0, count);
+        System.arraycopy(ends, 0, copy.ends, 0, count);
+        System.arraycopy(keys, 0, copy.keys, 0, count);
         copy.count = count;
-        copy.firsts = Arrays.copyOf(firsts, groupCount);
-        copy.opens = Arrays.copyOf(opens, groupCount);
+        System.arraycopy(firsts, 0, copy.firsts, 0, groupCount);
+        System.arraycopy(opens, 0, copy.opens, 0, groupCount);
         copy.groupCount = groupCount;
         return copy;
     }

@@ -22,21 +22,28 @@ abstract sealed class WrittenValues permits GroupValues {
     int lineStart;
 
     /** The numbers (or, for a name, nothing) of all groups, where each stands, and a property's key. */
-    float[] values = new float[16];
-    int[] starts = new int[16];
-    int[] ends = new int[16];
-    int[] keys = new int[16];
+    float[] values;
+    int[] starts;
+    int[] ends;
+    int[] keys;
     int count;
 
     /** Per group: the index of its first value, and the offset of its '('. */
-    int[] firsts = new int[8];
-    int[] opens = new int[8];
+    int[] firsts;
+    int[] opens;
     int groupCount;
 
     Material material = Material.DEFAULT;
 
-    WrittenValues(SourceText source) {
+    /** Room for {@code numbers} values and {@code groups} groups, which grows as the reader needs. */
+    WrittenValues(SourceText source, int numbers, int groups) {
         this.source = source;
+        values = new float[numbers];
+        starts = new int[numbers];
+        ends = new int[numbers];
+        keys = new int[numbers];
+        firsts = new int[groups];
+        opens = new int[groups];
     }
 
     // ---- filled by the reader -----------------------------------------------------------
