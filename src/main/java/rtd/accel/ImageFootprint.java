@@ -42,13 +42,22 @@ interface ImageFootprint {
      */
     default float putObject(IGeometry object, float[] box, int[] into, int at) {
         object.putBounds(box, 0);
-        Rounding rounding = object.rounding();
+        Rounding rounding = roundingOf(object, box);
         float nearest = isFinite(box) ? put(box, 0, rounding.linear(), rounding.quadratic(), into, at) : Float.NaN;
         if (nearest != nearest) {
             into[at] = 1; // x0 > x1: no pixel
             into[at + 2] = 0;
         }
         return nearest;
+    }
+
+    /**
+     * The {@link Rounding} of the camera's rays for {@code object}, whose bounds are
+     * {@code box[0 .. 5]}: {@link IGeometry#rounding} unless the camera's rays have less
+     * ({@link PerspectiveFootprint}).
+     */
+    default Rounding roundingOf(IGeometry object, float[] box) {
+        return object.rounding();
     }
 
     /**

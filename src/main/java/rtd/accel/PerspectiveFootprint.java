@@ -2,6 +2,7 @@ package rtd.accel;
 
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Rounding;
 import rtd.math.Vector3f;
 
 /**
@@ -22,6 +23,7 @@ final class PerspectiveFootprint implements ImageFootprint {
     /** A pixel's share of rounding, relative to {@code f + w + h}, with ample room: see the class comment. */
     private static final double DIRECTION_ERROR = 1e-5;
 
+    private final Vector3f eye;
     private final double ox;
     private final double oy;
     private final double oz;
@@ -43,7 +45,7 @@ final class PerspectiveFootprint implements ImageFootprint {
     private final double backward;
 
     PerspectiveFootprint(PerspectiveCamera camera, int width, int height, double latestOffset) {
-        Vector3f eye = camera.position();
+        eye = camera.position();
         ox = eye.x();
         oy = eye.y();
         oz = eye.z();
@@ -63,6 +65,12 @@ final class PerspectiveFootprint implements ImageFootprint {
 
     private static double[] numbers(Vector3f vector) {
         return new double[] {vector.x(), vector.y(), vector.z()};
+    }
+
+    /** Every ray leaves the eye: a shape may round less for such rays ({@link IGeometry#roundingFrom}). */
+    @Override
+    public Rounding roundingOf(IGeometry object, float[] box) {
+        return object.roundingFrom(eye, box, 0);
     }
 
     @Override

@@ -63,6 +63,18 @@ public interface IGeometry {
         return Rounding.WIDEST;
     }
 
+    /**
+     * {@link #rounding} for the rays that leave one point, {@code origin} (a perspective camera's
+     * eye), for this object whose {@link #putBounds} are {@code box[at .. at+5]}: a hit that such
+     * a ray reports lies in that box grown by it, as {@link #bounds} says. Never more than
+     * {@link #rounding}, and by default the same; a triangle's test errs less for a ray that meets
+     * it steeply, and the rays from one point meet it within a range of angles
+     * ({@link RayTriangle#alongTheRayFrom}).
+     */
+    default Rounding roundingFrom(Vector3f origin, float[] box, int at) {
+        return rounding();
+    }
+
     /** The flat colour the object paints the pixels whose ray it is nearest on. */
     Color color();
 

@@ -77,6 +77,58 @@ public final class RayTriangle {
         return 16 * U * (Math.abs(px) + Math.abs(py) + Math.abs(pz)) + along * t * length;
     }
 
+    /**
+     * The largest share of the distance run by which {@link #looseness} lets a hit stray along
+     * the ray, for the rays that leave the point O = {@code (ox, oy, oz)} and report a hit on the
+     * triangle of numbers {@code v[at ..]}, whose box ({@link Triangle#bounds}) is
+     * {@code box[b .. b+5]}: {@link #ALONG_THE_RAY} at most, much less where every such ray meets
+     * the triangle's plane steeply. A perspective camera's rays all leave its eye.
+     *
+     * <p>Why it holds. A ray O + t·R that reports a hit at t passes Q = O + t·R (exact
+     * arithmetic) inside the box grown by what any ray's rounding allows ({@link Triangle#rounding},
+     * at the farthest such a hit can lie) and by the rounding of the hit point's own coordinates.
+     * R points from O to Q, so the ratio {@code |R|₁·|n|₁ / |R·n|} that the looseness grows with
+     * is that of Q − O. Over the grown box (Q − O)·n is linear and |Q − O|₁ convex: their extremes
+     * lie at its corners. If (Q − O)·n keeps one sign there, the ratio is at most the corners'
+     * largest |Q − O|₁ times |n|₁ over their least |(Q − O)·n|. The test works it out in float,
+     * from R and n, which changes it by less than a thousandth while it stays under a thousand;
+     * 1.01 times it is kept. Otherwise (O near the plane, or a flat view) {@link #ALONG_THE_RAY}.
+     */
+    public static double alongTheRayFrom(float[] v, int at, double ox, double oy, double oz, float[] box, int b) {
+        double anyRay = 2 * ALONG_THE_RAY; // Triangle.rounding()
+        double farthest = 0;
+        double largest = Math.max(Math.abs(ox), Math.max(Math.abs(oy), Math.abs(oz)));
+        for (int k = 0; k < 3; k++) {
+            double o = k == 0 ? ox : k == 1 ? oy : oz;
+            double far = Math.max(Math.abs(box[b + k] - o), Math.abs(box[b + 3 + k] - o));
+            farthest += far * far;
+            largest = Math.max(largest, Math.max(Math.abs(box[b + k]), Math.abs(box[b + 3 + k])));
+        }
+        // a hit runs L ≤ farthest corner + √3·anyRay·L, and strays anyRay·L; Q strays from P by a few u of their size
+        double reach = Math.sqrt(farthest) / (1 - Math.sqrt(3) * (anyRay + IGeometry.ROUNDING_CONE));
+        double grow = anyRay * reach + 8 * U * (largest + anyRay * reach);
+        double nx = v[at + NORMAL];
+        double ny = v[at + NORMAL + 1];
+        double nz = v[at + NORMAL + 2];
+        double leastFacing = Double.POSITIVE_INFINITY;
+        double mostFacing = Double.NEGATIVE_INFINITY;
+        double longest = 0;
+        for (int corner = 0; corner < 8; corner++) {
+            double qx = ((corner & 1) == 0 ? box[b] - grow : box[b + 3] + grow) - ox;
+            double qy = ((corner & 2) == 0 ? box[b + 1] - grow : box[b + 4] + grow) - oy;
+            double qz = ((corner & 4) == 0 ? box[b + 2] - grow : box[b + 5] + grow) - oz;
+            double facing = qx * nx + qy * ny + qz * nz;
+            leastFacing = Math.min(leastFacing, facing);
+            mostFacing = Math.max(mostFacing, facing);
+            longest = Math.max(longest, Math.abs(qx) + Math.abs(qy) + Math.abs(qz));
+        }
+        if (!(leastFacing > 0 || mostFacing < 0)) {
+            return ALONG_THE_RAY; // some of these rays may run along the plane
+        }
+        double ratio = longest * v[at + NORMAL_SUM] / Math.min(Math.abs(leastFacing), Math.abs(mostFacing));
+        return ratio < 1000 ? Math.min(ALONG_THE_RAY, 16 * U * (1 + 1.01 * ratio) * (1 + 1e-6)) : ALONG_THE_RAY;
+    }
+
     /** Whether P lies within the allowances of the corners' box, on every axis. */
     public static boolean nearTheCorners(float[] v, int at, float px, float py, float pz, float loose) {
         float reach = v[at + TOLERANCE] * v[at + SIZE] + loose;

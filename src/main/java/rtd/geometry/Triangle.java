@@ -192,6 +192,16 @@ public final class Triangle implements IGeometry {
         return Rounding.linear(2 * RayTriangle.ALONG_THE_RAY);
     }
 
+    /**
+     * For the rays from one point: the share of the distance by which the test lets a hit stray
+     * along such a ray ({@link RayTriangle#alongTheRayFrom}), times 2 as in {@link #rounding}.
+     */
+    @Override
+    public Rounding roundingFrom(Vector3f origin, float[] box, int boxAt) {
+        double along = RayTriangle.alongTheRayFrom(v, at, origin.x(), origin.y(), origin.z(), box, boxAt);
+        return along < RayTriangle.ALONG_THE_RAY ? Rounding.linear(Math.nextUp((float) (2 * along))) : rounding();
+    }
+
     /** The same corners in the same order, whatever its colour, finish and corner normals. */
     @Override
     public Object sameTest() {
