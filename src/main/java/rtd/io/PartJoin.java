@@ -62,6 +62,9 @@ final class PartJoin {
         }
         Map<String, Material> materials = materials(definitions, errors);
         Set<String> named = new HashSet<>();
+        for (ScenePart part : parts) {
+            named.addAll(part.namedAtOnce);
+        }
         List<IGeometry> objects = objects(parts, materials, broken, named, errors);
         if (errors.isEmpty() && statements == 0) {
             errors.add(found(atStart(source, "the scene is empty: it has no statements, only blanks and comments",

@@ -46,6 +46,8 @@ final class ScenePart {
     final List<Found> errors = new ArrayList<>();
     /** The names of definitions ({@code material:}) that have mistakes: not unknown, only broken. */
     final Set<String> brokenDefinitions = new HashSet<>();
+    /** The material names of the objects built at once, with a material defined above them ({@link #materialAbove}). */
+    final Set<String> namedAtOnce = new HashSet<>();
     int statementCount;
     /**
      * The first line that starts with a line number, as the paper's listing does, and how many
@@ -60,6 +62,23 @@ final class ScenePart {
     /** A part for about {@code expectedObjects} objects; more are fine. */
     ScenePart(int expectedObjects) {
         objects = new ArrayList<>(expectedObjects);
+    }
+
+    /**
+     * The material {@code name} if the part defines it above the line being read, else null (the
+     * object then waits for the join, as the material may be defined further down). In a scene
+     * without mistakes that is the file's one definition of the name, the one the join would
+     * give; in a scene with mistakes the objects are only checked, and no check of an object
+     * depends on its material. Most scenes define their materials at the top: their objects are
+     * built as they are read, without a copy of each statement's values kept until the end.
+     */
+    Material materialAbove(String name) {
+        for (Located<Named> definition : materials) {
+            if (definition.value().name().equals(name)) {
+                return definition.value().material();
+            }
+        }
+        return null;
     }
 
     /** Keeps an object that names a material, at its place among the part's objects. */

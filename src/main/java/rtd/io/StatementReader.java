@@ -1,6 +1,7 @@
 package rtd.io;
 
 import java.util.List;
+import rtd.geometry.Material;
 
 /**
  * Reads the statements of a stretch of whole lines of a scene file into a {@link ScenePart}:
@@ -9,8 +10,9 @@ import java.util.List;
  *
  * <p>Each mistake becomes a {@link SceneError} with line and column, and reading goes on with
  * the next line. It works on bytes, not on a String, and makes no object per number. An object
- * that names a material waits in the part until the whole file is read (the material may be
- * defined further down); every other statement is built at once.
+ * that names a material is built at once if the part defines the material above it
+ * ({@link ScenePart#materialAbove}); else it waits in the part until the whole file is read (the
+ * material may be defined further down). Every other statement is built at once.
  *
  * <p>This class reads a line's keyword and what may follow its groups (comments, mistakes);
  * the groups themselves are read by {@link GroupReader}, which it extends, and the position on
@@ -91,11 +93,19 @@ final class StatementReader extends GroupReader {
         if (!atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (namesMaterial) {
-            part.addPending(values.copy());
-        } else {
+        if (!namesMaterial) {
             statement.builder().build(values, output);
+            return;
         }
+        String name = values.name(groups.size());
+        Material above = part.materialAbove(name);
+        if (above == null) {
+            part.addPending(values.copy()); // the material may be defined further down
+            return;
+        }
+        part.namedAtOnce.add(name);
+        values.useMaterial(above);
+        statement.builder().build(values, output);
     }
 
     /**
