@@ -2,6 +2,7 @@ package rtd.accel;
 
 import java.util.Map;
 import java.util.TreeMap;
+import rtd.camera.ICamera;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.math.Ray;
@@ -106,6 +107,26 @@ public final class HitImageTracer implements Tracer {
             hits.setTests(i, count(pixel(bundle, i, squareWidth)));
         }
         return true;
+    }
+
+    /**
+     * Every camera ray of the image's own picture at once: the objects its pixels show, read
+     * as they are, and each ray's tests counted as when rays read their pixels bundle by bundle.
+     */
+    @Override
+    public int[] traceEveryPixel(ICamera camera, int width, int height) {
+        if (camera != image.camera || width != image.width || height != image.height) {
+            return null;
+        }
+        for (int k = 0; k < tests.length; k++) {
+            long sum = 0;
+            for (int ofPixel : image.testsOfKind[k]) {
+                sum += ofPixel;
+            }
+            tests[k] += sum;
+        }
+        rays += (long) width * height;
+        return image.index;
     }
 
     /** The pixel of ray {@code i} of a bundle the image serves. */

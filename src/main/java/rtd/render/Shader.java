@@ -41,6 +41,15 @@ public interface Shader {
         return true;
     }
 
+    /**
+     * Where a pixel's colour depends on nothing but the object its ray hits (the paper's flat
+     * colours): each object's colour as the picture stores it, at its place in the scene's list
+     * plus 1, and the background's at 0; a new array. Null by default: the colour depends on more.
+     */
+    default int[] coloursOfObjects() {
+        return null;
+    }
+
     /** The rays this shader followed beyond the camera's, by kind ("shadow", "reflected", ...); none by default. */
     default Map<String, Long> secondaryRays() {
         return Map.of();

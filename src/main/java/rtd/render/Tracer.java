@@ -1,5 +1,6 @@
 package rtd.render;
 
+import rtd.camera.ICamera;
 import rtd.geometry.Hit;
 import rtd.math.Ray;
 
@@ -43,6 +44,18 @@ public interface Tracer {
      */
     default boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
         return false;
+    }
+
+    /**
+     * Traces every camera ray of a {@code width × height} picture of {@code camera}, one ray a
+     * pixel through its corner, at once, if this tracer found their hits before the render (the
+     * image of hits): answers the object each ray hits, as its place in the scene's list (−1:
+     * none), row by row, and the rays count as traced. Null, with nothing traced, if it cannot;
+     * by default it cannot. {@link ParallelRenderer} asks this when the shader's colours depend on
+     * the objects alone ({@link Shader#coloursOfObjects}).
+     */
+    default int[] traceEveryPixel(ICamera camera, int width, int height) {
+        return null;
     }
 
     /**

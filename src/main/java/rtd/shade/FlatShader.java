@@ -54,6 +54,12 @@ public final class FlatShader implements Shader {
         return false;
     }
 
+    /** The colours depend on the objects alone: the table itself, a copy. */
+    @Override
+    public int[] coloursOfObjects() {
+        return colours.clone();
+    }
+
     @Override
     public int rgb(RayBundle rays, HitBuffer hits, int i) {
         return colours[hits.index(i) + 1];

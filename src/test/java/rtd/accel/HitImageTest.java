@@ -22,6 +22,7 @@ import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
+import rtd.render.Tracer;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
 import rtd.testing.MixedScenes;
@@ -224,6 +225,62 @@ class HitImageTest {
         assertThat(java.util.Arrays.stream(image.testsOfKind[0]).asLongStream().sum()).isEqualTo(336_530);
         assertThat(result.work().intersectionTests()).isEqualTo(336_530);
         assertThat(result.work().rays()).isEqualTo(480 * 270);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {1, 2, 3})
+    void withFlatColoursThePictureIsALookupOfEachPixelsObjectTheSameAsRayByRay(long seed) {
+        Scene mixed = MixedScenes.generate(seed, 300); // planes among them: every ray tests those
+        Scene scene = new Scene(mixed.ambient(), ViewGridTest.randomCamera(new Random(seed)), mixed.objects());
+        HitImage image = HitImage.build(scene, WIDTH, HEIGHT, 2, false);
+        rtd.shade.FlatShader flat = new rtd.shade.FlatShader(scene);
+        assertThat(image.newTracer().traceEveryPixel(scene.camera(), WIDTH, HEIGHT)).as("the image's own picture").isNotNull();
+        assertThat(image.newTracer().traceEveryPixel(scene.camera(), WIDTH + 1, HEIGHT)).as("another picture").isNull();
+
+        rtd.render.RenderResult lookup = rtd.render.ParallelRenderer.render(scene.camera(), image::newTracer,
+                tracer -> flat, WIDTH, HEIGHT, 2, new rtd.render.RenderProgress());
+        rtd.render.RenderResult rayByRay = rtd.render.ParallelRenderer.render(scene.camera(),
+                () -> withoutTheWholePicture(image.newTracer()), tracer -> flat, WIDTH, HEIGHT, 2,
+                new rtd.render.RenderProgress());
+
+        for (int y = 0; y < HEIGHT; y++) {
+            for (int x = 0; x < WIDTH; x++) {
+                assertThat(lookup.image().rgb(x, y)).as("pixel (%d, %d)", x, y).isEqualTo(rayByRay.image().rgb(x, y));
+            }
+        }
+        assertThat(lookup.work().rays()).isEqualTo((long) WIDTH * HEIGHT).isEqualTo(rayByRay.work().rays());
+        assertThat(lookup.work().testsByKind()).isEqualTo(rayByRay.work().testsByKind());
+        assertThat(lookup.work().intersectionTests()).isEqualTo(rayByRay.work().intersectionTests());
+    }
+
+    /** {@code tracer} as it answers bundles of rays, without its answer for the whole picture at once. */
+    private static Tracer withoutTheWholePicture(Tracer tracer) {
+        return new Tracer() {
+            @Override
+            public Hit nearestHit(Ray ray) {
+                return tracer.nearestHit(ray);
+            }
+
+            @Override
+            public void traceAll(RayBundle rays, HitBuffer hits) {
+                tracer.traceAll(rays, hits);
+            }
+
+            @Override
+            public boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
+                return tracer.traceAtOnce(rays, hits);
+            }
+
+            @Override
+            public long testsRun() {
+                return tracer.testsRun();
+            }
+
+            @Override
+            public WorkCount work() {
+                return tracer.work();
+            }
+        };
     }
 
     @Test
