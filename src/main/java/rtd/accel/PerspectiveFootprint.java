@@ -24,6 +24,8 @@ final class PerspectiveFootprint implements ImageFootprint {
     private static final double DIRECTION_ERROR = 1e-5;
 
     private final Vector3f eye;
+    /** Whether the rays' directions are in the range {@link IGeometry#roundingFrom} speaks of. */
+    private final boolean raysInRange;
     private final double ox;
     private final double oy;
     private final double oz;
@@ -61,16 +63,50 @@ final class PerspectiveFootprint implements ImageFootprint {
         double size = Math.abs(focal) + width + height;
         margin = DIRECTION_ERROR * size * (1 + (width + height) / Math.abs(focal));
         backward = Math.max(1e-9, DIRECTION_ERROR * (width + height) / Math.abs(focal));
+        raysInRange = raysInRange(forward, right, down, focal, width, height);
     }
 
     private static double[] numbers(Vector3f vector) {
         return new double[] {vector.x(), vector.y(), vector.z()};
     }
 
-    /** Every ray leaves the eye: a shape may round less for such rays ({@link IGeometry#roundingFrom}). */
+    /**
+     * Every ray leaves the eye: a shape may round less for such rays ({@link IGeometry#roundingFrom}),
+     * if their directions' lengths are in its range, as any camera's but the most extreme are.
+     */
     @Override
     public Rounding roundingOf(IGeometry object, float[] box) {
-        return object.roundingFrom(eye, box, 0);
+        return raysInRange ? object.roundingFrom(eye, box, 0) : object.rounding();
+    }
+
+    /** Whether the rays' directions are in the range {@link IGeometry#roundingFrom} speaks of. */
+    boolean raysInRange() {
+        return raysInRange;
+    }
+
+    /**
+     * Whether every ray's direction {@code R = F·f + u·x' + v·y'} has
+     * {@link IGeometry#SHORTEST_DIRECTION} ≤ |R|₁ ≤ {@link IGeometry#LONGEST_DIRECTION}: |R|₁ is at
+     * most the sum of the parts' and at least |R| ≥ |R·F|/|F|, for offsets up to half the picture
+     * and a pixel more, with room for rounding.
+     */
+    private static boolean raysInRange(double[] forward, double[] across, double[] down, double focal, int width,
+            int height) {
+        double x = width / 2.0 + 2;
+        double y = height / 2.0 + 2;
+        double longest = (Math.abs(focal) * sum(forward) + x * sum(across) + y * sum(down)) * (1 + 1e-5);
+        double forwardLength = Math.sqrt(dot(forward, forward));
+        double shortest = (Math.abs(focal) * forwardLength * forwardLength - x * Math.abs(dot(across, forward))
+                - y * Math.abs(dot(down, forward))) / forwardLength * (1 - 1e-5);
+        return shortest >= IGeometry.SHORTEST_DIRECTION && longest <= IGeometry.LONGEST_DIRECTION;
+    }
+
+    private static double sum(double[] v) {
+        return Math.abs(v[0]) + Math.abs(v[1]) + Math.abs(v[2]);
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
 
     @Override

@@ -64,9 +64,19 @@ public interface IGeometry {
     }
 
     /**
+     * The lengths {@code |R|₁} of the directions {@link #roundingFrom} speaks of: a camera's rays
+     * are about its focal length in pixels long. Far beyond these, a test's float products may
+     * overflow or fall among the subnormal numbers, and its rounding is another matter.
+     */
+    double SHORTEST_DIRECTION = 1e-10;
+    /** See {@link #SHORTEST_DIRECTION}. */
+    double LONGEST_DIRECTION = 1e20;
+
+    /**
      * {@link #rounding} for the rays that leave one point, {@code origin} (a perspective camera's
-     * eye), for this object whose {@link #putBounds} are {@code box[at .. at+5]}: a hit that such
-     * a ray reports lies in that box grown by it, as {@link #bounds} says. Never more than
+     * eye), with a direction R of {@link #SHORTEST_DIRECTION} ≤ |R|₁ ≤ {@link #LONGEST_DIRECTION},
+     * for this object whose {@link #putBounds} are {@code box[at .. at+5]}: a hit that such a ray
+     * reports lies in that box grown by it, as {@link #bounds} says. Never more than
      * {@link #rounding}, and by default the same; a triangle's test errs less for a ray that meets
      * it steeply, and the rays from one point meet it within a range of angles
      * ({@link RayTriangle#alongTheRayFrom}).

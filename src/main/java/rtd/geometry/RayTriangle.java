@@ -79,22 +79,31 @@ public final class RayTriangle {
 
     /**
      * The largest share of the distance run by which {@link #looseness} lets a hit stray along
-     * the ray, for the rays that leave the point O = {@code (ox, oy, oz)} and report a hit on the
-     * triangle of numbers {@code v[at ..]}, whose box ({@link Triangle#bounds}) is
+     * the ray, for the rays that leave the point O = {@code (ox, oy, oz)} with a direction R of
+     * {@link IGeometry#SHORTEST_DIRECTION} ≤ |R|₁ ≤ {@link IGeometry#LONGEST_DIRECTION} and report
+     * a hit on the triangle of numbers {@code v[at ..]}, whose box ({@link Triangle#bounds}) is
      * {@code box[b .. b+5]}: {@link #ALONG_THE_RAY} at most, much less where every such ray meets
      * the triangle's plane steeply. A perspective camera's rays all leave its eye.
      *
      * <p>Why it holds. A ray O + t·R that reports a hit at t passes Q = O + t·R (exact
      * arithmetic) inside the box grown by what any ray's rounding allows ({@link Triangle#rounding},
-     * at the farthest such a hit can lie) and by the rounding of the hit point's own coordinates.
-     * R points from O to Q, so the ratio {@code |R|₁·|n|₁ / |R·n|} that the looseness grows with
-     * is that of Q − O. Over the grown box (Q − O)·n is linear and |Q − O|₁ convex: their extremes
-     * lie at its corners. If (Q − O)·n keeps one sign there, the ratio is at most the corners'
-     * largest |Q − O|₁ times |n|₁ over their least |(Q − O)·n|. The test works it out in float,
-     * from R and n, which changes it by less than a thousandth while it stays under a thousand;
-     * 1.01 times it is kept. Otherwise (O near the plane, or a flat view) {@link #ALONG_THE_RAY}.
+     * at the farthest such a hit can lie) and by the rounding of the hit point's own coordinates
+     * (at t = 0, O itself lies in the box). R points from O to Q, so the ratio
+     * {@code |R|₁·|n|₁ / |R·n|} that the looseness grows with is that of Q − O. Over the grown box
+     * (Q − O)·n is linear and |Q − O|₁ convex: their extremes lie at its corners. If (Q − O)·n
+     * keeps one sign there, the ratio is at most the corners' largest |Q − O|₁ times |n|₁ over their
+     * least |(Q − O)·n|. The test works the ratio out in float, from R and n; with |n|₁ between
+     * 1e-15 and 1e15 and |R|₁ in its range, no product overflows or falls among the subnormal
+     * numbers, and while the ratio is under about 104 (beyond it the looseness is
+     * {@link #ALONG_THE_RAY} anyway) the float ratio is within a ten-thousandth of the exact one:
+     * 1.01 times it is kept. Otherwise {@link #ALONG_THE_RAY}. The hit then strays at most
+     * {@code along·t·|R|₁ ≤ √3·along·L}, which {@link Triangle#roundingFrom}'s factor 2 covers.
      */
     public static double alongTheRayFrom(float[] v, int at, double ox, double oy, double oz, float[] box, int b) {
+        double normalSum = v[at + NORMAL_SUM];
+        if (!(normalSum >= 1e-15 && normalSum <= 1e15)) {
+            return ALONG_THE_RAY; // the float ratio may overflow, or lose its digits among subnormal numbers
+        }
         double anyRay = 2 * ALONG_THE_RAY; // Triangle.rounding()
         double farthest = 0;
         double largest = Math.max(Math.abs(ox), Math.max(Math.abs(oy), Math.abs(oz)));
@@ -125,8 +134,9 @@ public final class RayTriangle {
         if (!(leastFacing > 0 || mostFacing < 0)) {
             return ALONG_THE_RAY; // some of these rays may run along the plane
         }
-        double ratio = longest * v[at + NORMAL_SUM] / Math.min(Math.abs(leastFacing), Math.abs(mostFacing));
-        return ratio < 1000 ? Math.min(ALONG_THE_RAY, 16 * U * (1 + 1.01 * ratio) * (1 + 1e-6)) : ALONG_THE_RAY;
+        double ratio = longest * normalSum / Math.min(Math.abs(leastFacing), Math.abs(mostFacing));
+        double along = 16 * U * (1 + 1.01 * ratio) * (1 + 1e-6);
+        return along < ALONG_THE_RAY ? along : ALONG_THE_RAY; // also for an infinite box, whose ratio is NaN
     }
 
     /** Whether P lies within the allowances of the corners' box, on every axis. */

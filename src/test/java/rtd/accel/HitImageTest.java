@@ -92,6 +92,35 @@ class HitImageTest {
         assertThat(hits).as("rays that hit something").isGreaterThan(10_000);
     }
 
+    /**
+     * A camera of a field of view of 1.9e-17°, whose rays are some 1e20 long: there the triangle
+     * test's float products overflow, and a triangle rounds as it may for any ray (a review found
+     * every pixel red by the loop and black by the image and the grid before the camera's rays were
+     * checked against {@link IGeometry#LONGEST_DIRECTION}).
+     */
+    @Test
+    void aCameraWhoseRaysAreTooLongForTheTrianglesNarrowerRoundingGetsTheWiderOne() {
+        Scene scene = raysTooLongForANarrowerRounding();
+        rtd.shade.FlatShader flat = new rtd.shade.FlatShader(scene);
+
+        int[] loop = rtd.render.ParallelRenderer.render(scene.camera(), () -> new rtd.render.LinearTracer(scene),
+                tracer -> flat, 100, 60, 1, new rtd.render.RenderProgress()).image().rgb();
+        int[] image = rtd.render.ParallelRenderer.render(scene.camera(), HitImage.build(scene, 100, 60, 1)::newTracer,
+                tracer -> flat, 100, 60, 1, new rtd.render.RenderProgress()).image().rgb();
+
+        assertThat(image).isEqualTo(loop);
+        assertThat(java.util.Arrays.stream(loop).filter(rgb -> rgb == 0xFF0000).count()).as("red pixels").isGreaterThan(1_500);
+    }
+
+    /** A triangle seen through a camera whose rays' directions are some 1e20 long. */
+    static Scene raysTooLongForANarrowerRounding() {
+        return new Scene(new Color(0, 0, 0),
+                new PerspectiveCamera(new Vector3f(333333344, 333333344, 1e9f), new Vector3f(666766656, -333433344, -1e9f),
+                        1.9e-17f),
+                List.of(new rtd.geometry.Triangle(new Vector3f(0, 0, 0), new Vector3f(1e9f, 0, 0), new Vector3f(0, 1e9f, 0),
+                        new Color(255, 0, 0), rtd.geometry.Material.DEFAULT)));
+    }
+
     @Test
     void evenWhereRoundingLetsTheTestHitFarBesideSmallSpheresSeenFromAfar() {
         Vector3f along = new Vector3f(0.3f, -0.2f, -1);

@@ -62,6 +62,21 @@ class ImageFootprintTest {
                 footprintOf(spheres.get(2))));
     }
 
+    @Test
+    void theNarrowerRoundingFromTheEyeIsTakenForACamerasRaysOfOrdinaryLengthsOnly() {
+        Vector3f eye = new Vector3f(0, 0, 10);
+        Vector3f down = new Vector3f(0, 0, -1);
+
+        assertThat(perspective(new PerspectiveCamera(eye, down, 60), 1920, 1080).raysInRange()).as("60°").isTrue();
+        assertThat(perspective(new PerspectiveCamera(eye, down, 179.99f), 1920, 1080).raysInRange()).as("179.99°").isTrue();
+        // f = 50 / tan(0.95e-17°) ≈ 3e20: a direction's |R|₁ beyond 1e20, where the triangle test's floats may overflow
+        assertThat(perspective(new PerspectiveCamera(eye, down, 1.9e-17f), 100, 60).raysInRange()).as("1.9e-17°").isFalse();
+    }
+
+    private static PerspectiveFootprint perspective(PerspectiveCamera camera, int width, int height) {
+        return (PerspectiveFootprint) ImageFootprint.of(camera, width, height, 0);
+    }
+
     private static int[] concat(int[]... parts) {
         return Arrays.stream(parts).flatMapToInt(Arrays::stream).toArray();
     }

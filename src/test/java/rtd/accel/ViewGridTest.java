@@ -70,6 +70,16 @@ class ViewGridTest {
         return found;
     }
 
+    /** As the image of hits: a camera whose rays are too long for a triangle's narrower rounding gets the wider one. */
+    @Test
+    void aCameraWhoseRaysAreTooLongForTheTrianglesNarrowerRoundingGetsTheWiderOne() {
+        Scene scene = HitImageTest.raysTooLongForANarrowerRounding();
+
+        List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
+
+        assertThat(hits).as("the loop's hits").hasSizeGreaterThan(WIDTH * HEIGHT / 4);
+    }
+
     static ICamera randomCamera(Random random) {
         Vector3f direction = switch (random.nextInt(4)) {
             case 0 -> new Vector3f(0, 0, -1); // the paper's

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import rtd.image.Color;
@@ -114,6 +115,28 @@ class BoundsContractTest {
         }
         assertThat(hits).as("hits").isGreaterThan(50_000);
         assertThat(tighter).as("triangles seen steeply enough to round four times less").isGreaterThan(100);
+    }
+
+    /**
+     * A triangle whose normal is a subnormal number (sides of 6.5e-23: n = 4.2e-45): its test's
+     * float ratio loses its digits, and it rounds as it may for any ray. (A review found the hit
+     * of this ray 7.8e-5 beyond the narrower rounding, before the normal's size was checked.)
+     */
+    @Test
+    void aTriangleOfASubnormalNormalRoundsFromOnePointAsFromAnywhere() {
+        float a = 6.4837456E-23f; // a² = 3 · Float.MIN_VALUE
+        Triangle tiny = new Triangle(new Vector3f(0, 0, 0), new Vector3f(a, 0, 0), new Vector3f(0, a, 0),
+                new Color(255, 255, 255), Material.DEFAULT);
+        Vector3f origin = new Vector3f(-14.7474f, -14.75f, 0.49f);
+        Vector3f direction = new Vector3f(14.75f, 14.75f, -0.49f);
+        float[] box = new float[6];
+        tiny.putBounds(box, 0);
+        Rounding rounding = tiny.roundingFrom(origin, box, 0);
+        Intersection hit = tiny.intersect(new Ray(origin, direction));
+
+        assertThat(rounding).isEqualTo(tiny.rounding());
+        assertThat(hit.happened()).isTrue();
+        assertInGrownBox(origin, direction, hit.t(), box, rounding, 0, 0);
     }
 
     private static Vector3f randomVector(Random random, float size) {
