@@ -83,7 +83,7 @@ public final class RtdCommand implements Callable<Integer> {
                     + "grid: a grid on the image for the camera's rays (with lights: a grid seen from each light for "
                     + "its shadow rays, one seen from the eye's mirror image for the rays each flat mirror reflects "
                     + "from the camera, and bvh for the rest); image: each pixel's hit found object by "
-                    + "object before the render (one ray a pixel, else grid); auto: image for 250,000 objects or more "
+                    + "object before the render (one ray a pixel, else grid); auto: image for 100,000 objects or more "
                     + "in flat colours with one ray a pixel, else grid for 1,000 or more, else bvh (default: "
                     + "${DEFAULT-VALUE})")
     private Accel accel;
