@@ -63,7 +63,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         double size = Math.abs(focal) + width + height;
         margin = DIRECTION_ERROR * size * (1 + (width + height) / Math.abs(focal));
         backward = Math.max(1e-9, DIRECTION_ERROR * (width + height) / Math.abs(focal));
-        raysInRange = raysInRange(forward, right, down, focal, width, height);
+        raysInRange = directionsInRange(forward, right, down, focal, width, height);
     }
 
     private static double[] numbers(Vector3f vector) {
@@ -90,7 +90,7 @@ final class PerspectiveFootprint implements ImageFootprint {
      * most the sum of the parts' and at least |R| ≥ |R·F|/|F|, for offsets up to half the picture
      * and a pixel more, with room for rounding.
      */
-    private static boolean raysInRange(double[] forward, double[] across, double[] down, double focal, int width,
+    private static boolean directionsInRange(double[] forward, double[] across, double[] down, double focal, int width,
             int height) {
         double x = width / 2.0 + 2;
         double y = height / 2.0 + 2;
