@@ -16,7 +16,8 @@ import rtd.scene.Scene;
  * object's footprint on the image ({@link ImageFootprint}) and kind; each tile of
  * {@value #TILE} × {@value #TILE} pixels' list of the objects whose footprint overlaps it, with
  * the part of the footprint inside the tile and a copy of the numbers of the object's test (as
- * {@link LeafObjects} packs them), so that a tile's tests read one stretch of memory; and then,
+ * {@link LeafObjects} packs them), so that a tile's tests read one stretch of memory (not for a
+ * triangle: see {@link #copied}); and then,
  * tile by tile, the tests ({@link TileOfHits}). The image is the same for any number of threads:
  * each pixel's hit is decided in its own tile, by the depth test alone.
  */
@@ -153,7 +154,7 @@ final class HitImageBuilder {
             int[] numbers = numbersPerPart[part];
             for (int f = start; f < end; f++) {
                 if (listed(f)) {
-                    int size = PackedTests.size(tests[f]);
+                    int size = copied(tests[f]);
                     int at = 4 * f;
                     testsPerPart[part] += (long) (footprints[at + 2] - footprints[at] + 1)
                             * (footprints[at + 3] - footprints[at + 1] + 1);
@@ -166,6 +167,17 @@ final class HitImageBuilder {
                 }
             }
         });
+    }
+
+    /**
+     * How many numbers of the test {@code test} an entry copies: none for a triangle, which
+     * {@link TileOfHits} tests on its own numbers. A mesh keeps its triangles' numbers side by
+     * side in a few hundred arrays already, in file order, as a tile lists them; a copy of them
+     * (27 floats a triangle) took the terrain of a million triangles 112 MB and the time to
+     * write them.
+     */
+    private static int copied(byte test) {
+        return test == PackedTests.TRIANGLE ? 0 : PackedTests.size(test);
     }
 
     /** All the counts together. */
@@ -194,7 +206,7 @@ final class HitImageBuilder {
                     continue;
                 }
                 byte test = tests[f];
-                int size = PackedTests.size(test);
+                int size = copied(test);
                 int at = 4 * f;
                 for (int y = footprints[at + 1] >> SHIFT; y <= footprints[at + 3] >> SHIFT; y++) {
                     for (int x = footprints[at] >> SHIFT; x <= footprints[at + 2] >> SHIFT; x++) {
@@ -209,7 +221,9 @@ final class HitImageBuilder {
                         entries[e + 4] = Math.min(footprints[at + 3], (y << SHIFT) + TILE - 1);
                         entries[e + 5] = n;
                         entries[e + 6] = kinds.of(f) << PackedTests.BITS | test;
-                        PackedTests.put(objects.get(f), numbers, n);
+                        if (size > 0) {
+                            PackedTests.put(objects.get(f), numbers, n);
+                        }
                     }
                 }
             }

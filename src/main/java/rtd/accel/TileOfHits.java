@@ -2,15 +2,16 @@ package rtd.accel;
 
 import java.util.Arrays;
 import rtd.camera.ICamera;
+import rtd.geometry.Triangle;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
  * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera
  * rays, as numbers, and each pixel's best hit so far. Each object listed for the tile runs the
- * paper's intersection test on the pixels of its footprint inside the tile (a sphere's, a
- * triangle's and a box's on the copy of their numbers, {@link PackedTests}, the same float
- * operations as their own {@code intersect}), and
+ * paper's intersection test on the pixels of its footprint inside the tile (a sphere's and a
+ * box's on the copy of their numbers, {@link PackedTests}, a triangle's on its own numbers,
+ * {@link Triangle#hit}: the same float operations as their own {@code intersect}), and
  * the depth test ({@link DepthKey}: the nearest hit wins, and on a tie the object that
  * comes first in the file) keeps the winner; the objects without a box are tested on every
  * pixel, as the paper's loop tests them.
@@ -112,11 +113,13 @@ final class TileOfHits {
         int at = entries[e + 5];
         byte test = (byte) (entries[e + 6] & (1 << PackedTests.BITS) - 1);
         int[] ofKind = tests[entries[e + 6] >> PackedTests.BITS];
+        Triangle triangle = test == PackedTests.TRIANGLE ? (Triangle) image.scene.objects().get(index) : null;
         for (int y = y0; y <= y1; y++) {
             for (int x = x0; x <= x1; x++) {
                 int p = at(x, y);
                 ofKind[p]++;
-                float t = test != PackedTests.OWN_TEST
+                float t = triangle != null ? triangle.hit(ox[p], oy[p], oz[p], dx[p], dy[p], dz[p])
+                        : test != PackedTests.OWN_TEST
                         ? PackedTests.t(test, numbers, at, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p], dd[p])
                         : ownTest(index, p);
                 if (t >= 0) { // false for NaN: no hit

@@ -151,4 +151,27 @@ class TriangleTest {
             assertThat(written).as(any.corner(0) + " " + any.corner(1) + " " + any.corner(2)).isEqualTo(expected);
         }
     }
+
+    @Test
+    void itsTestOnSixNumbersFindsIntersectsTToTheLastBitAlsoWhereAMeshSharesOneArray() {
+        Random random = new Random(13);
+        float[] shared = new float[3 * Triangle.NUMBERS];
+        int hits = 0;
+        for (int i = 0; i < 10_000; i++) {
+            Triangle any = randomTriangle(random);
+            int at = Triangle.NUMBERS * random.nextInt(3);
+            any.putTestNumbers(shared, at);
+            Triangle inMesh = new Triangle(shared, at, null, Color.BLACK, Material.DEFAULT);
+            Vector3f origin = new Vector3f(random.nextFloat() * 20 - 10, random.nextFloat() * 20 - 10, 10);
+            Vector3f towards = any.corner(random.nextInt(3)).add(any.corner(random.nextInt(3))).multiply(0.5f);
+            Ray ray = new Ray(origin, towards.subtract(origin));
+            float t = inMesh.hit(origin.x(), origin.y(), origin.z(), ray.direction().x(), ray.direction().y(),
+                    ray.direction().z());
+            Intersection expected = any.intersect(ray);
+            assertThat(Float.floatToRawIntBits(t)).as(ray + " on " + any.corner(0) + " " + any.corner(1) + " "
+                    + any.corner(2)).isEqualTo(Float.floatToRawIntBits(expected.t()));
+            hits += expected.happened() ? 1 : 0;
+        }
+        assertThat(hits).as("rays that hit").isGreaterThan(5_000);
+    }
 }
