@@ -8,7 +8,8 @@
 #   bench/beyond.sh            # 5 runs of each
 #   RUNS=3 bench/beyond.sh
 #
-# Prints the median, fastest and slowest wall time of each and the ratio of the medians.
+# Prints the median, fastest and slowest wall time of each, its median CPU time (user + system),
+# and the ratio of the medians.
 # Needs /usr/bin/time (Debian package "time") and POV-Ray (apt-get install povray).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,10 +33,11 @@ SCENE
   java -jar target/rtd.jar bench/scenes/shaded_100000.txt --export-pov bench/scenes/shaded_100000.pov \
     --width 192 --height 108 -o bench/out/export.png >/dev/null 2>&1
 
-# Prints "seconds" for one run of the command.
+# Prints "seconds cpu_seconds" for one run of the command (cpu: user + system time, which moves less
+# than the wall time on a busy shared machine).
 once() {
-  /usr/bin/time -f "%e" -o bench/out/.time "$@" >/dev/null 2>&1 || { echo "failed: $*" >&2; return 1; }
-  cat bench/out/.time
+  /usr/bin/time -f "%e %U %S" -o bench/out/.time "$@" >/dev/null 2>&1 || { echo "failed: $*" >&2; return 1; }
+  awk '{ printf "%s %.2f\n", $1, $2 + $3 }' bench/out/.time
 }
 
 median() { sort -n | sed -n "$(( (RUNS + 1) / 2 ))p"; }
@@ -47,10 +49,11 @@ compare() { # name rtd-scene pov-scene
     pov+="$(once povray "+I$3" +Obench/out/"$1"-pov.png +W1920 +H1080 -D -A +FN File_Gamma=1.0 -GA)"$'\n'
   done
   local a b
-  a=$(printf '%s' "$rtd" | median)
-  b=$(printf '%s' "$pov" | median)
-  printf "%-7s rtd median %.2f s (%s)   POV-Ray median %.2f s (%s)   ratio %.3f\n" "$1" "$a" \
-    "$(printf '%s' "$rtd" | sort -n | tr '\n' ' ')" "$b" "$(printf '%s' "$pov" | sort -n | tr '\n' ' ')" \
+  a=$(printf '%s' "$rtd" | cut -d' ' -f1 | median)
+  b=$(printf '%s' "$pov" | cut -d' ' -f1 | median)
+  printf "%-7s rtd median %.2f s (%s), CPU %s s   POV-Ray median %.2f s (%s), CPU %s s   ratio %.3f\n" "$1" "$a" \
+    "$(printf '%s' "$rtd" | cut -d' ' -f1 | sort -n | tr '\n' ' ')" "$(printf '%s' "$rtd" | cut -d' ' -f2 | median)" \
+    "$b" "$(printf '%s' "$pov" | cut -d' ' -f1 | sort -n | tr '\n' ' ')" "$(printf '%s' "$pov" | cut -d' ' -f2 | median)" \
     "$(awk -v a="$a" -v b="$b" 'BEGIN { print a / b }')"
 }
 

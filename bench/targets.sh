@@ -13,8 +13,9 @@
 #   bench/targets.sh              # 11 pairs each (POV-Ray: POV_RUNS=3 runs, it takes 10-20 s each)
 #   RUNS=21 POV_RUNS=1 bench/targets.sh
 #
-# Prints medians, fastest and slowest runs, and the ratios of the medians. Needs /usr/bin/time
-# (Debian package "time"); POV-Ray (apt-get install povray) for the second line.
+# Prints medians, fastest and slowest runs, the median CPU time (user + system), and the ratios of
+# the medians. Needs /usr/bin/time (Debian package "time"); POV-Ray (apt-get install povray) for
+# the second line.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -31,13 +32,14 @@ done
   java -jar target/rtd.jar bench/scenes/spheres_1000000.txt --export-pov bench/scenes/spheres_1000000.export.pov \
     -o bench/out/export.png >/dev/null 2>&1
 
-# One run: prints "seconds peak_kb render_seconds" (render_seconds from --stats, or "-").
+# One run: prints "seconds peak_kb render_seconds cpu_seconds" (render_seconds from --stats, or "-";
+# cpu_seconds is user + system time: on a busy shared machine it moves less than the wall time).
 once() {
-  /usr/bin/time -f "%e %M" -o bench/out/.time "$@" >/dev/null 2>bench/out/.stderr ||
+  /usr/bin/time -f "%e %M %U %S" -o bench/out/.time "$@" >/dev/null 2>bench/out/.stderr ||
     { cat bench/out/.stderr >&2; return 1; }
   local render
   render=$(awk '$1 == "render" { print $2 }' bench/out/.stderr)
-  echo "$(cat bench/out/.time) ${render:--}"
+  awk -v r="${render:--}" '{ printf "%s %s %s %.2f\n", $1, $2, r, $3 + $4 }' bench/out/.time
 }
 
 
@@ -57,8 +59,10 @@ pairs() { # name_a command_a name_b command_b field runs
   local ma mb
   ma=$(middle "$5" "$a")
   mb=$(middle "$5" "$b")
-  printf "  %-22s median %6.2f s  (%s s)  peak %4d MB\n" "$1" "$ma" "$(spread "$5" "$a")" $(( $(middle 2 "$a") / 1024 ))
-  printf "  %-22s median %6.2f s  (%s s)  peak %4d MB\n" "$3" "$mb" "$(spread "$5" "$b")" $(( $(middle 2 "$b") / 1024 ))
+  printf "  %-22s median %6.2f s  (%s s)  peak %4d MB  CPU %s s\n" "$1" "$ma" "$(spread "$5" "$a")" \
+    $(( $(middle 2 "$a") / 1024 )) "$(middle 4 "$a")"
+  printf "  %-22s median %6.2f s  (%s s)  peak %4d MB  CPU %s s\n" "$3" "$mb" "$(spread "$5" "$b")" \
+    $(( $(middle 2 "$b") / 1024 )) "$(middle 4 "$b")"
   printf "  ratio %s / %s: %.2f\n" "$1" "$3" "$(awk -v x="$ma" -v y="$mb" 'BEGIN { print x / y }')"
 }
 
@@ -80,8 +84,8 @@ for _ in $(seq "$RUNS"); do
   rtd_runs+="$(once java -jar target/rtd.jar bench/scenes/spheres_1000000.txt -o bench/out/million.png)"$'\n'
 done
 rtd_runs=${rtd_runs%$'\n'}
-printf "  rtd alone, %d runs: median %.2f s (%s s), peak memory %d MB\n" "$RUNS" "$(middle 1 "$rtd_runs")" \
-  "$(spread 1 "$rtd_runs")" $(( $(middle 2 "$rtd_runs") / 1024 ))
+printf "  rtd alone, %d runs: median %.2f s (%s s), peak memory %d MB, CPU %s s\n" "$RUNS" "$(middle 1 "$rtd_runs")" \
+  "$(spread 1 "$rtd_runs")" $(( $(middle 2 "$rtd_runs") / 1024 )) "$(middle 4 "$rtd_runs")"
 if command -v povray >/dev/null; then
   pairs "rtd" "java -jar target/rtd.jar bench/scenes/spheres_1000000.txt -o bench/out/million.png" \
     "POV-Ray 3.7" "povray +Ibench/scenes/spheres_1000000.export.pov +Obench/out/million-pov.png +W1920 +H1080 -D -A +FN File_Gamma=1.0 -GA" \
