@@ -29,7 +29,8 @@ final class HitImageBuilder {
     /**
      * The most ints and floats the tiles' lists may take, 256 MiB: as much as the view grid's
      * lists at their most ({@link CellSide#MOST_ENTRIES} places and distances). A million spheres
-     * take 12 million, the terrain of a million triangles 36 million.
+     * take 12 million, the terrain of a million triangles 7.3 million (36 million while its
+     * triangles' numbers were copied too: see {@link #copied}).
      */
     static final long MOST_INTS = 2 * CellSide.MOST_ENTRIES;
     /**
@@ -195,7 +196,9 @@ final class HitImageBuilder {
      * Writes each listed object into the tiles its footprint overlaps, part by part of the
      * objects in parallel: an entry of {@link TileOfHits#ENTRY} ints (its place in the file, its
      * pixels in the tile x0, y0, x1, y1, where its numbers start, its kind and test) and the
-     * numbers of its test. A tile's objects come in file order, however many parts there are.
+     * numbers of its test, if {@link #copied} copies them (a triangle's entry has no numbers,
+     * and where they would start means nothing). A tile's objects come in file order, however
+     * many parts there are.
      */
     private void fill(Parts parts, int[][] entriesPerPart, int[][] numbersPerPart, int[] entries, float[] numbers) {
         parts.run((start, end, part) -> {

@@ -8,8 +8,9 @@ import rtd.geometry.Triangle;
 
 /**
  * The shapes whose intersection test the accelerators run on a copy of their numbers, packed
- * side by side in one array ({@link LeafObjects}, {@link HitImageBuilder}), instead of through
- * each object's own {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test
+ * side by side in one array ({@link LeafObjects}; {@link HitImageBuilder} for spheres and boxes,
+ * as it tests a triangle on its own numbers), instead of through each object's own
+ * {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test
  * runs the same float operations in the same order as the shape's own {@code intersect}, so it
  * finds the same t to the last bit; it only skips following references, and makes no
  * {@code Ray} or {@code Intersection} on the way. Not in the paper.

@@ -18,7 +18,10 @@ import rtd.math.Vector3f;
  */
 final class TileOfHits {
 
-    /** Ints per entry: the object's place in the file; x0, y0, x1, y1 of its pixels; where its numbers start; kind and test. */
+    /**
+     * Ints per entry: the object's place in the file; x0, y0, x1, y1 of its pixels; where its
+     * copied numbers start (unused for a triangle); kind and test.
+     */
     static final int ENTRY = 7;
     private static final int PIXELS = HitImageBuilder.TILE * HitImageBuilder.TILE;
 

@@ -93,6 +93,78 @@ class HitImageTest {
     }
 
     /**
+     * A mesh keeps its triangles' numbers side by side in a few shared arrays, and the image of
+     * hits tests a triangle where they lie ({@code Triangle.hit}), while it copies spheres'
+     * numbers into its tiles: a hilly grid of triangles in blocks of 50 (so at offsets other than
+     * 0, in several arrays), with spheres before, among and after them in the file.
+     */
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {1, 2, 3})
+    void forEveryPixelOfAMeshWhoseTrianglesShareArraysAmongSpheres(long seed) {
+        Random random = new Random(seed);
+        List<IGeometry> objects = new ArrayList<>();
+        addSpheres(objects, random, 10);
+        int side = 12;
+        float[][] heights = new float[side + 1][side + 1];
+        for (float[] row : heights) {
+            for (int i = 0; i < row.length; i++) {
+                row[i] = random.nextFloat() * 2 - 1;
+            }
+        }
+        float[] block = null;
+        int inBlock = 50;
+        for (int z = 0; z < side; z++) {
+            for (int x = 0; x < side; x++) {
+                Vector3f[] quad = {corner(heights, x, z, side), corner(heights, x + 1, z, side),
+                    corner(heights, x + 1, z + 1, side), corner(heights, x, z + 1, side)};
+                for (int half = 0; half < 2; half++) {
+                    if (inBlock == 50) {
+                        block = new float[50 * rtd.geometry.Triangle.NUMBERS];
+                        inBlock = 0;
+                    }
+                    int at = rtd.geometry.Triangle.NUMBERS * inBlock++;
+                    rtd.geometry.TriangleNumbers.putNumbers(quad[0], quad[1 + half], quad[2 + half], block, at);
+                    objects.add(new rtd.geometry.Triangle(block, at, null, new Color(10 * x, 10 * z, half * 200),
+                            rtd.geometry.Material.DEFAULT));
+                }
+                if (random.nextInt(40) == 0) {
+                    addSpheres(objects, random, 1);
+                }
+            }
+        }
+        addSpheres(objects, random, 10);
+        int triangleHits = 0;
+        for (int view = 0; view < 4; view++) {
+            Scene scene = new Scene(new Color(0, 0, 0), cameraOnTheMesh(random), objects);
+            for (Hit hit : checkEveryPixel(scene, HitImage.build(scene, WIDTH, HEIGHT, 1 + view % 2, false), true)) {
+                triangleHits += scene.objects().get(hit.index()) instanceof rtd.geometry.Triangle ? 1 : 0;
+            }
+        }
+        assertThat(triangleHits).as("pixels that show a triangle").isGreaterThan(10_000);
+    }
+
+    /** A camera of either kind above the mesh, looking at a point of it, steeply or nearly along it. */
+    private static ICamera cameraOnTheMesh(Random random) {
+        Vector3f position = new Vector3f(random.nextFloat() * 12 - 6, 1.5f + random.nextFloat() * 8,
+                random.nextFloat() * 12 - 6);
+        Vector3f target = new Vector3f(random.nextFloat() * 4 - 2, 0, random.nextFloat() * 4 - 2);
+        Vector3f direction = target.subtract(position);
+        return random.nextBoolean() ? new PerspectiveCamera(position, direction, 40 + random.nextFloat() * 60)
+                : new OrthographicCamera(position, direction, 10 + random.nextFloat() * 15);
+    }
+
+    private static Vector3f corner(float[][] heights, int x, int z, int side) {
+        return new Vector3f(8f * x / side - 4, heights[x][z], 8f * z / side - 4);
+    }
+
+    private static void addSpheres(List<IGeometry> objects, Random random, int count) {
+        for (int i = 0; i < count; i++) {
+            objects.add(new Sphere(new Vector3f(random.nextFloat() * 8 - 4, random.nextFloat() * 3 - 1,
+                    random.nextFloat() * 8 - 4), 0.1f + random.nextFloat() * 0.5f, new Color(255, 255, 0)));
+        }
+    }
+
+    /**
      * A camera of a field of view of 1.9e-17°, whose rays are some 1e20 long: there the triangle
      * test's float products overflow, and a triangle rounds as it may for any ray (a review found
      * every pixel red by the loop and black by the image and the grid before the camera's rays were
