@@ -242,14 +242,14 @@ class HitImageTest {
     @Test
     void objectsThatHideEachOtherDeeplyAreLeftToTheViewGrid() {
         // Spheres of radius 100 around the origin, each filling the picture of 160 × 90: each is
-        // tested on all 14,400 pixels. Sixteen are sixteen tests a pixel, the most; seventeen
+        // tested on all 14,400 pixels. Thirty-two are 32 tests a pixel, the most; thirty-three
         // are more.
         OrthographicCamera camera = new OrthographicCamera(new Vector3f(0, 0, 200), new Vector3f(0, 0, -1), 20);
-        assertThat(HitImage.build(coveringSpheres(camera, 17), 160, 90, 1)).isNull();
-        HitImage fits = HitImage.build(coveringSpheres(camera, 16), 160, 90, 1);
+        assertThat(HitImage.build(coveringSpheres(camera, 33), 160, 90, 1)).isNull();
+        HitImage fits = HitImage.build(coveringSpheres(camera, 32), 160, 90, 1);
         assertThat(fits).isNotNull();
-        assertThat(fits.entries()).isEqualTo(16 * 6);
-        assertThat(fits.testsOfKind[0]).containsOnly(16);
+        assertThat(fits.entries()).isEqualTo(32 * 6);
+        assertThat(fits.testsOfKind[0]).containsOnly(32);
     }
 
     private static Scene coveringSpheres(ICamera camera, int count) {
