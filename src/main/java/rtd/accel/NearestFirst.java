@@ -37,11 +37,13 @@ final class NearestFirst {
                 if (to - from > 1 && nearestByPlace[places[from]] > nearestByPlace[places[to - 1]]) {
                     reverse(places, from, to);
                 }
+                // j > beforeFrom, not j >= from: C2 traps on the second form (see TileOfHits.testObject)
+                int beforeFrom = from - 1;
                 for (int k = from + 1; k < to; k++) {
                     int place = places[k];
                     float distance = nearestByPlace[place];
                     int j = k - 1;
-                    while (j >= from && nearestByPlace[places[j]] > distance) {
+                    while (j > beforeFrom && nearestByPlace[places[j]] > distance) {
                         places[j + 1] = places[j];
                         j--;
                     }

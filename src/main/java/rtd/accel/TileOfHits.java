@@ -117,9 +117,14 @@ final class TileOfHits {
         byte test = (byte) (entries[e + 6] & (1 << PackedTests.BITS) - 1);
         int[] ofKind = tests[entries[e + 6] >> PackedTests.BITS];
         Triangle triangle = test == PackedTests.TRIANGLE ? (Triangle) image.scene.objects().get(index) : null;
-        for (int y = y0; y <= y1; y++) {
-            for (int x = x0; x <= x1; x++) {
-                int p = at(x, y);
+        // Each loop runs to an end it stops before (y < rows), not to a last value it reaches
+        // (y <= y1): for the second form C2 guards the loop's limit with a check that failed once in
+        // every run logged, and sent this method back to the interpreter until C2 compiled it again
+        // (a "loop_limit_check" trap, -XX:+LogCompilation; docs/performance.md, the fifteenth round).
+        int rows = y1 + 1;
+        for (int y = y0; y < rows; y++) {
+            int end = at(x1, y) + 1;
+            for (int p = at(x0, y); p < end; p++) {
                 ofKind[p]++;
                 float t = triangle != null ? triangle.hit(ox[p], oy[p], oz[p], dx[p], dy[p], dz[p])
                         : test != PackedTests.OWN_TEST
