@@ -12,14 +12,18 @@ import java.util.Map;
 /**
  * Says where the CPU time of a profiled run went, from the samples async-profiler wrote in its
  * "collapsed" form with annotated frames ({@code collapsed,ann}: one line per stack, its frames
- * joined by {@code ;}, then its number of samples; a Java frame ends in {@code _[0]} interpreted,
- * {@code _[1]} C1-compiled, {@code _[j]} C2-compiled, {@code _[i]} inlined into the frame above
- * it). {@code bench/profile.sh} runs the profiler and then this.
+ * joined by {@code ;}, then its number of samples). The annotation of the deepest Java frames says
+ * how they ran: {@code _[0]} interpreted, {@code _[1]} C1-compiled, {@code _[j]} C2-compiled,
+ * {@code _[i]} inlined into the frame above; frames further up are mostly marked {@code _[j]},
+ * whatever they are, so only the deepest ones are read. {@code bench/profile.sh} runs the profiler
+ * and then this.
  *
- * <p>Each sample goes to one share: the JIT compilers' threads, the collector's, the kernel,
- * rtd's own code by how it ran (C2-compiled code is the fast one; interpreted and C1 code is
- * what a first run pays while the JIT catches up), the JDK's Java code, and the rest of the
- * JVM. Then the methods of rtd that the samples were taken in most.
+ * <p>Each sample goes to one share: the JIT compilers' threads, the collector (its threads, and
+ * allocation's slow path), the kernel, native libraries, the JVM's own code under Java (its
+ * runtime, counters, deoptimisation), rtd's own code by how it ran (C2-compiled code is the fast
+ * one; interpreted and C1 code is what a first run pays while the JIT catches up), the JDK's Java
+ * code, and the rest of the JVM. A method inlined into another runs as that one was compiled, and
+ * counts as that one's code. Then the methods of rtd that the samples were taken in most.
  *
  * <pre>
  * java -cp bench/target/benchmarks.jar rtd.bench.ProfileSummary bench/out/profile.collapsed [TOP]
@@ -32,13 +36,13 @@ public final class ProfileSummary {
         RTD_C2("rtd's code, C2-compiled"),
         RTD_C1("rtd's code, C1-compiled"),
         RTD_INTERPRETED("rtd's code, interpreted"),
-        JDK("the JDK's Java code (the PNG writer, picocli, and Math or collections called from rtd)"),
+        JDK("the JDK's Java code (the PNG writer, picocli, collections)"),
         C2("C2 compiling"),
         C1("C1 compiling"),
-        GC("garbage collection"),
+        GC("the collector (its threads, and allocation's slow path)"),
         KERNEL("the kernel (page faults, reading the file, threads)"),
         NATIVE("native libraries (zlib for the PNG, libm)"),
-        JVM("the JVM's other work (class loading, start, stubs)");
+        JVM("the JVM's other work (its runtime under Java, class loading, start)");
 
         final String label;
 
@@ -60,12 +64,18 @@ public final class ProfileSummary {
         Map<String, Long> ownSamples = new HashMap<>();
         long total = 0;
         for (String line : Files.readAllLines(Path.of(args[0]))) {
-            int space = line.lastIndexOf(' ');
+            String trimmed = line.trim();
+            int space = trimmed.lastIndexOf(' ');
             if (space < 0) {
                 continue;
             }
-            long samples = Long.parseLong(line.substring(space + 1).trim());
-            String[] frames = line.substring(0, space).split(";");
+            long samples;
+            try {
+                samples = Long.parseLong(trimmed.substring(space + 1));
+            } catch (NumberFormatException notACount) {
+                continue; // not a line of samples
+            }
+            String[] frames = trimmed.substring(0, space).split(";");
             total += samples;
             shares.merge(shareOf(frames), samples, Long::sum);
             String method = deepestRtdMethod(frames);
@@ -76,16 +86,16 @@ public final class ProfileSummary {
         print(shares, ownSamples, total, top);
     }
 
-    /** The share a stack belongs to, from its threads' frames and its deepest frame. */
+    /** The share a stack belongs to, from its threads' frames and its deepest frames. */
     static Share shareOf(String[] frames) {
         String stack = String.join(";", frames);
         if (stack.contains("C2Compiler::")) {
             return Share.C2;
         }
-        if (stack.contains("Compilation::") || stack.contains("C1_")) {
+        if (stack.contains("Compiler::compile_method") || stack.contains("Compilation::")) {
             return Share.C1;
         }
-        if (stack.contains("G1") || stack.contains("GCTaskThread") || stack.contains("WorkerThread::run")) {
+        if (isCollector(stack)) {
             return Share.GC;
         }
         String leaf = frames[frames.length - 1];
@@ -93,21 +103,39 @@ public final class ProfileSummary {
             return Share.KERNEL;
         }
         int java = deepestJavaFrame(frames);
-        if (java < 0) {
-            return leaf.startsWith("/") || leaf.startsWith("lib") ? Share.NATIVE : Share.JVM;
+        if (java < frames.length - 1 || java < 0) { // no Java frame, or native code under the deepest
+            return isLibrary(leaf) ? Share.NATIVE : Share.JVM;
         }
-        if (java < frames.length - 1 && (leaf.startsWith("/") || leaf.startsWith("lib"))) {
-            return Share.NATIVE; // a library called from Java: zlib under the PNG writer, libm's pow
-        }
-        if (!frames[java].startsWith("rtd/")) {
+        int host = hostOf(frames, java);
+        if (!frames[java].startsWith("rtd/") && !frames[host].startsWith("rtd/")) {
             return Share.JDK;
         }
-        String tier = tierOf(frames, java);
-        return switch (tier) {
+        return switch (frames[host].substring(frames[host].length() - 4)) {
             case "_[0]" -> Share.RTD_INTERPRETED;
             case "_[1]" -> Share.RTD_C1;
             default -> Share.RTD_C2;
         };
+    }
+
+    /** Whether a stack is the collector's: G1's (the default), or the serial or parallel collector's. */
+    private static boolean isCollector(String stack) {
+        return stack.contains("G1") || stack.contains("PSScavenge") || stack.contains("PSParallelCompact")
+                || stack.contains("DefNewGeneration") || stack.contains("SerialHeap") || stack.contains("GenCollectedHeap")
+                || stack.contains("GCTaskThread");
+    }
+
+    /** Whether a frame is a native library's, named by its file (zlib's, libm's). */
+    private static boolean isLibrary(String frame) {
+        return frame.startsWith("/") || frame.startsWith("lib");
+    }
+
+    /** The frame that frame {@code i} runs as part of: itself, or the compiled frame it was inlined into. */
+    private static int hostOf(String[] frames, int i) {
+        int k = i;
+        while (k > 0 && frames[k].endsWith("_[i]")) {
+            k--;
+        }
+        return k;
     }
 
     /** The index of the deepest frame that is Java code (annotated), or −1. */
@@ -124,21 +152,12 @@ public final class ProfileSummary {
         return frame.endsWith("_[0]") || frame.endsWith("_[1]") || frame.endsWith("_[j]") || frame.endsWith("_[i]");
     }
 
-    /** How frame {@code i} ran: an inlined frame runs as the compiled frame it was inlined into. */
-    private static String tierOf(String[] frames, int i) {
-        for (int k = i; k >= 0; k--) {
-            if (isJava(frames[k]) && !frames[k].endsWith("_[i]")) {
-                return frames[k].substring(frames[k].length() - 4);
-            }
-        }
-        return "_[j]";
-    }
-
     /** The deepest frame of rtd's code, without its annotation, or null if the stack has none. */
     private static String deepestRtdMethod(String[] frames) {
         for (int i = frames.length - 1; i >= 0; i--) {
             if (frames[i].startsWith("rtd/") && isJava(frames[i])) {
-                return frames[i].substring(0, frames[i].length() - 4).replace('/', '.');
+                return frames[i].substring(0, frames[i].length() - 4).replace('/', '.')
+                        .replaceAll("[./]0x[0-9a-f]+", ""); // a lambda's class carries its address in this run
             }
         }
         return null;
