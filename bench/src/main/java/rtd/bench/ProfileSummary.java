@@ -22,8 +22,9 @@ import java.util.Map;
  * allocation's slow path), the kernel, native libraries, the JVM's own code under Java (its
  * runtime, counters, deoptimisation), rtd's own code by how it ran (C2-compiled code is the fast
  * one; interpreted and C1 code is what a first run pays while the JIT catches up), the JDK's Java
- * code, and the rest of the JVM. A method inlined into another runs as that one was compiled, and
- * counts as that one's code. Then the methods of rtd that the samples were taken in most.
+ * code, and the rest of the JVM. A method inlined into another runs as that one was compiled; it
+ * counts as rtd's code if either of the two is rtd's (Math.sqrt inlined into rtd's test, or rtd's
+ * lambda inlined into a stream). Then the methods of rtd that the samples were taken in most.
  *
  * <pre>
  * java -cp bench/target/benchmarks.jar rtd.bench.ProfileSummary bench/out/profile.collapsed [TOP]
