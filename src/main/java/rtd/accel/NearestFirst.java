@@ -37,7 +37,8 @@ final class NearestFirst {
                 if (to - from > 1 && nearestByPlace[places[from]] > nearestByPlace[places[to - 1]]) {
                     reverse(places, from, to);
                 }
-                // j > beforeFrom, not j >= from: JDK 17's C2 threw away the second form (TileOfHits.testObject)
+                // j > beforeFrom, not j >= from: JDK 17's C2 threw the second form's compiled code away once a
+                // run (a loop_limit_check trap; the comment in TileOfHits.testObject says more)
                 int beforeFrom = from - 1;
                 for (int k = from + 1; k < to; k++) {
                     int place = places[k];
