@@ -28,10 +28,7 @@ public interface ICamera {
 
     /**
      * {@link #generateRay(float, float, int, int)} as numbers: the origin's x, y, z, then the
-     * direction's, into {@code into[at .. at + 5]}. The renderer makes its rays this way, so that no
-     * {@code Ray} or {@code Vector3f} is made per pixel while the JIT has not yet learnt to leave
-     * them out (a million pixels' worth of garbage in the first render). A camera that overrides
-     * it writes exactly {@code generateRay}'s numbers, by the same operations in the same order.
+     * direction's, into {@code into[at .. at + 5]}, for renderers that keep rays as numbers.
      */
     default void putRay(float x, float y, int w, int h, float[] into, int at) {
         Ray ray = generateRay(x, y, w, h);

@@ -32,24 +32,17 @@ public final class OrthographicCamera implements ICamera {
         this.heightVector = axes.v();
     }
 
-    /**
-     * Listing 4.1: the pixel's offset from the image centre (integer division, so each ray
-     * leaves the pixel's corner) moves the origin along u and v; the direction stays
-     * {@code dir}. The operations run in the paper's order, for the same rounding.
-     */
+    /** The ray from the pixel's corner: {@link #generateRay(float, float, int, int)} at whole numbers. */
     @Override
     public Ray generateRay(int x, int y, int w, int h) {
-        int offsetX = x - (w / 2);
-        int offsetY = y - (h / 2);
-        Vector3f origin = pos.add(widthVector.multiply(offsetX).divide(zoom)
-                .add(heightVector.multiply(offsetY).divide(zoom)));
-        return new Ray(origin, dir);
+        return generateRay((float) x, (float) y, w, h);
     }
 
     /**
-     * Listing 4.1 for a point inside a pixel: the same operations on a fractional offset
-     * ({@code w / 2} is still the integer division). At whole numbers the offset is the same
-     * float, so the ray is the same to the last bit.
+     * Listing 4.1: the point's offset from the image centre ({@code w / 2} is the integer
+     * division, so that a whole number gives a ray from the pixel's corner) moves the origin
+     * along u and v; the direction stays {@code dir}. The operations run in the paper's order,
+     * for the same rounding. Every renderer makes its rays here.
      */
     @Override
     public Ray generateRay(float x, float y, int w, int h) {
@@ -58,19 +51,6 @@ public final class OrthographicCamera implements ICamera {
         Vector3f origin = pos.add(widthVector.multiply(offsetX).divide(zoom)
                 .add(heightVector.multiply(offsetY).divide(zoom)));
         return new Ray(origin, dir);
-    }
-
-    /** {@link #generateRay(float, float, int, int)}'s numbers, component by component in its order. */
-    @Override
-    public void putRay(float x, float y, int w, int h, float[] into, int at) {
-        float offsetX = x - (w / 2);
-        float offsetY = y - (h / 2);
-        into[at] = pos.x() + (widthVector.x() * offsetX / zoom + heightVector.x() * offsetY / zoom);
-        into[at + 1] = pos.y() + (widthVector.y() * offsetX / zoom + heightVector.y() * offsetY / zoom);
-        into[at + 2] = pos.z() + (widthVector.z() * offsetX / zoom + heightVector.z() * offsetY / zoom);
-        into[at + 3] = dir.x();
-        into[at + 4] = dir.y();
-        into[at + 5] = dir.z();
     }
 
     @Override

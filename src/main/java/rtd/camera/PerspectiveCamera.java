@@ -46,7 +46,8 @@ public final class PerspectiveCamera implements ICamera {
 
     /**
      * Origin {@code pos}, direction {@code normalize(dir)·f + u·x' + v·y'} with
-     * {@code x' = x − w/2}, {@code y' = y − h/2} (integer division, as Listing 4.1).
+     * {@code x' = x − w/2}, {@code y' = y − h/2} (integer division, as Listing 4.1). Every
+     * renderer makes its rays here.
      */
     @Override
     public Ray generateRay(float x, float y, int w, int h) {
@@ -55,20 +56,6 @@ public final class PerspectiveCamera implements ICamera {
         float f = focalLength(w);
         Vector3f direction = forward.multiply(f).add(widthVector.multiply(offsetX)).add(heightVector.multiply(offsetY));
         return new Ray(pos, direction);
-    }
-
-    /** {@link #generateRay(float, float, int, int)}'s numbers, component by component in its order. */
-    @Override
-    public void putRay(float x, float y, int w, int h, float[] into, int at) {
-        float offsetX = x - (w / 2);
-        float offsetY = y - (h / 2);
-        float f = focalLength(w);
-        into[at] = pos.x();
-        into[at + 1] = pos.y();
-        into[at + 2] = pos.z();
-        into[at + 3] = forward.x() * f + widthVector.x() * offsetX + heightVector.x() * offsetY;
-        into[at + 4] = forward.y() * f + widthVector.y() * offsetX + heightVector.y() * offsetY;
-        into[at + 5] = forward.z() * f + widthVector.z() * offsetX + heightVector.z() * offsetY;
     }
 
     /** {@code f}, the image plane's distance from the eye in pixels, for a picture {@code w} pixels wide. */
