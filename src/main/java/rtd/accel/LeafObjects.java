@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.function.IntConsumer;
+import rtd.scene.DepthTest;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
 import rtd.geometry.Rounding;
@@ -200,8 +201,9 @@ final class LeafObjects {
      */
     boolean missedByEvery(int i, float leastSquared, float[] lowest, float[] highest, float dx, float dy, float dz) {
         int at = offsets[i];
-        return testOf[i] == PackedTests.SPHERE && numbers[at + 3] >= leastSquared
-                && SphereOutline.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], numbers[at + 3], lowest,
+        float rr = numbers[at + 3] * numbers[at + 3];
+        return testOf[i] == PackedTests.SPHERE && rr >= leastSquared
+                && SphereOutline.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], rr, lowest,
                         highest, dx, dy, dz);
     }
 
@@ -210,7 +212,7 @@ final class LeafObjects {
         float largest = 0;
         for (int i = 0; i < fileOrder.length; i++) {
             if (testOf[i] == PackedTests.SPHERE) {
-                largest = Math.max(largest, numbers[offsets[i] + 3]);
+                largest = Math.max(largest, numbers[offsets[i] + 3] * numbers[offsets[i] + 3]);
             }
         }
         return largest;
@@ -234,9 +236,6 @@ final class LeafObjects {
      * rounded as {@link rtd.geometry.Intersection#at} rounds it.
      */
     static float distance(float t, float ox, float oy, float oz, float dx, float dy, float dz) {
-        float x = (ox + dx * t) - ox;
-        float y = (oy + dy * t) - oy;
-        float z = (oz + dz * t) - oz;
-        return (float) Math.sqrt(x * x + y * y + z * z);
+        return DepthTest.distance(ox + dx * t, oy + dy * t, oz + dz * t, ox, oy, oz); // P = O + t·R as Ray.pointAt rounds it
     }
 }

@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import rtd.scene.DepthTest;
 import java.util.Map;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
@@ -54,7 +55,7 @@ final class NearestHit {
     private int bestPlace;
     private float bestT;
     private float bestDistance;
-    /** The nearest hit's {@link DepthKey}: a hit with a smaller key wins the depth test. */
+    /** The nearest hit's {@link DepthTest}: a hit with a smaller key wins the depth test. */
     private long bestKey;
     private float skipBeyond;
     private float exit; // of the box of the last entry()
@@ -87,7 +88,7 @@ final class NearestHit {
         bestPlace = -1;
         bestT = Float.NaN;
         bestDistance = Float.POSITIVE_INFINITY;
-        bestKey = DepthKey.NONE;
+        bestKey = DepthTest.NO_HIT;
         skipBeyond = Float.POSITIVE_INFINITY;
     }
 
@@ -98,7 +99,7 @@ final class NearestHit {
     void limitTo(float distance) {
         float t = distance / length;
         bestDistance = distance;
-        bestKey = distance >= 0 ? DepthKey.of(distance, 0) : Long.MIN_VALUE; // a hit at the limit, or beyond, loses
+        bestKey = distance >= 0 ? DepthTest.key(distance, 0) : Long.MIN_VALUE; // a hit at the limit, or beyond, loses
         skipBeyond = skipFor(t);
     }
 
@@ -242,9 +243,9 @@ final class NearestHit {
         }
     }
 
-    /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file ({@link DepthKey}). */
+    /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file ({@link DepthTest}). */
     private void consider(int index, int place, float t, float distance) {
-        long key = DepthKey.of(distance, index);
+        long key = DepthTest.key(distance, index);
         if (key < bestKey) {
             best = index;
             bestPlace = place;

@@ -4,6 +4,7 @@ import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
 import rtd.geometry.RayTriangle;
 import rtd.geometry.Sphere;
+import rtd.geometry.TestObserver;
 import rtd.geometry.Triangle;
 
 /**
@@ -30,6 +31,8 @@ final class PackedTests {
      * bits of an int and its kind above them. A fifth way to test needs one more.
      */
     static final int BITS = 2;
+    /** A sphere's numbers: its centre M's x, y, z and its radius r. */
+    static final int SPHERE_NUMBERS = 4;
 
     private PackedTests() {
     }
@@ -42,13 +45,16 @@ final class PackedTests {
 
     /** How many numbers the test {@code test} reads; none for {@link #OWN_TEST}. */
     static int size(byte test) {
-        return test == SPHERE ? Sphere.NUMBERS : test == TRIANGLE ? Triangle.NUMBERS : test == BOX ? Box.NUMBERS : 0;
+        return test == SPHERE ? SPHERE_NUMBERS : test == TRIANGLE ? Triangle.NUMBERS : test == BOX ? Box.NUMBERS : 0;
     }
 
     /** Writes the numbers of {@code object}'s test into {@code numbers} from {@code at}; nothing for {@link #OWN_TEST}. */
     static void put(IGeometry object, float[] numbers, int at) {
         if (object instanceof Sphere sphere) {
-            sphere.putTestNumbers(numbers, at);
+            numbers[at] = sphere.center().x();
+            numbers[at + 1] = sphere.center().y();
+            numbers[at + 2] = sphere.center().z();
+            numbers[at + 3] = sphere.radius();
         } else if (object instanceof Triangle triangle) {
             triangle.putTestNumbers(numbers, at);
         } else if (object instanceof Box box) {
@@ -64,26 +70,17 @@ final class PackedTests {
     static float t(byte test, float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz,
             float dd) {
         if (test == SPHERE) {
-            return sphere(numbers, at, ox, oy, oz, dx, dy, dz, dd);
+            return sphere(numbers, at, ox, oy, oz, dx, dy, dz);
         }
         if (test == TRIANGLE) {
-            return RayTriangle.hit(numbers, at, ox, oy, oz, dx, dy, dz);
+            return RayTriangle.hit(numbers, at, ox, oy, oz, dx, dy, dz, TestObserver.NONE);
         }
-        return Box.hit(numbers, at, ox, oy, oz, dx, dy, dz);
+        return Box.hit(numbers, at, ox, oy, oz, dx, dy, dz, TestObserver.NONE);
     }
 
-    /**
-     * {@link Sphere#intersect} on the numbers {@link Sphere#putTestNumbers} wrote at {@code at}
-     * (M, then r²): equations 3.6 to 3.8, with the same float operations in the same order;
-     * {@code dd} is D·D.
-     */
-    private static float sphere(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
-        float mx = ox - numbers[at];                                         // O − M
-        float my = oy - numbers[at + 1];
-        float mz = oz - numbers[at + 2];
-        float a = dd;                                                        // equation 3.6
-        float b = 2 * ((dx * mx) + (dy * my) + (dz * mz));                   // equation 3.7
-        float c = ((mx * mx) + (my * my) + (mz * mz)) - numbers[at + 3];     // equation 3.8
-        return Sphere.smallestRootNotBehind(a, b, b * b - 4 * a * c);
+    /** {@link Sphere#hit} on the numbers {@link #put} wrote at {@code at}: M, then r. */
+    private static float sphere(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz) {
+        return Sphere.hit(numbers[at], numbers[at + 1], numbers[at + 2], numbers[at + 3], ox, oy, oz, dx, dy, dz,
+                TestObserver.NONE);
     }
 }

@@ -64,7 +64,7 @@ final class SphereOutline {
     /**
      * Whether {@link Sphere#intersect} surely reports no hit for any ray along {@code (dx, dy, dz)}
      * from an origin in the box from {@code lowest} to {@code highest}, for the sphere of centre
-     * {@code (cx, cy, cz)} and squared radius {@code rr} (the numbers of {@link Sphere#putTestNumbers}).
+     * {@code (cx, cy, cz)} and squared radius {@code rr} (r·r as the sphere's test computes it).
      * The beam tracer leaves such a sphere out of a square's tests.
      *
      * <p>Why it is sure: a ray whose line passes the centre at a distance {@code p} with

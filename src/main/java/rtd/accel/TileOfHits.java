@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import rtd.scene.DepthTest;
 import java.util.Arrays;
 import rtd.camera.ICamera;
 import rtd.geometry.Triangle;
@@ -12,7 +13,7 @@ import rtd.math.Vector3f;
  * paper's intersection test on the pixels of its footprint inside the tile (a sphere's and a
  * box's on the copy of their numbers, {@link PackedTests}, a triangle's on its own numbers,
  * {@link Triangle#hit}: the same float operations as their own {@code intersect}), and
- * the depth test ({@link DepthKey}: the nearest hit wins, and on a tie the object that
+ * the depth test ({@link DepthTest}: the nearest hit wins, and on a tie the object that
  * comes first in the file) keeps the winner; the objects without a box are tested on every
  * pixel, as the paper's loop tests them.
  */
@@ -81,7 +82,7 @@ final class TileOfHits {
                 dy[p] = ray[4];
                 dz[p] = ray[5];
                 dd[p] = (ray[3] * ray[3]) + (ray[4] * ray[4]) + (ray[5] * ray[5]); // D·D, as NearestHit sums it
-                bestKey[p] = DepthKey.NONE;
+                bestKey[p] = DepthTest.NO_HIT;
                 bestT[p] = Float.NaN;
                 bestDistance[p] = Float.POSITIVE_INFINITY;
             }
@@ -146,7 +147,7 @@ final class TileOfHits {
     /** The depth test of Listing 4.3 for pixel {@code p}: as {@link NearestHit}'s. */
     private void consider(int p, int index, float t) {
         float distance = LeafObjects.distance(t, ox[p], oy[p], oz[p], dx[p], dy[p], dz[p]);
-        long key = DepthKey.of(distance, index);
+        long key = DepthTest.key(distance, index);
         if (key < bestKey[p]) {
             bestKey[p] = key;
             bestT[p] = t;
@@ -160,7 +161,7 @@ final class TileOfHits {
             for (int x = left; x < right; x++) {
                 int p = at(x - left, y - top);
                 int pixel = y * image.width + x;
-                image.index[pixel] = bestKey[p] != DepthKey.NONE ? (int) bestKey[p] : -1;
+                image.index[pixel] = bestKey[p] != DepthTest.NO_HIT ? (int) bestKey[p] : -1;
                 image.t[pixel] = bestT[p];
                 image.distance[pixel] = bestDistance[p];
                 for (int k = 0; k < tests.length; k++) {

@@ -3,6 +3,7 @@ package rtd.accel;
 import java.util.Arrays;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Plane;
+import rtd.geometry.TestObserver;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
@@ -44,7 +45,7 @@ final class UnboundedObjects {
         int at = 6 * i;
         if (planes[at] == planes[at]) { // a plane: its numbers are not NaN
             return Plane.hit(planes[at], planes[at + 1], planes[at + 2], planes[at + 3], planes[at + 4], planes[at + 5],
-                    ox, oy, oz, dx, dy, dz);
+                    ox, oy, oz, dx, dy, dz, TestObserver.NONE);
         }
         return objects[i].intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz))).t();
     }

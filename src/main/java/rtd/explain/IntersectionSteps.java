@@ -4,34 +4,47 @@ import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
+import rtd.geometry.TestObserver;
 import rtd.geometry.Triangle;
 import rtd.math.Ray;
 
 /**
- * Step 2 of an explanation for one object (section 3.2.2): the numbers of its own intersection
- * test. A kind of object this class does not know shows only its test's answer.
+ * Step 2 of an explanation for one object (section 3.2.2): the object's own intersection test,
+ * run with an observer that writes each of its numbers. A kind of object this class does not
+ * know shows only its test's answer.
  */
 final class IntersectionSteps {
 
     private IntersectionSteps() {
     }
 
-    /** Writes the test of {@code object} into {@code text}, its first line after {@code head}, and returns its t (NaN: no hit). */
+    /** Runs the test of {@code object}, writing it into {@code text}, its first line after {@code head}; returns its t (NaN: no hit). */
     static float explain(Text text, String head, IGeometry object, Ray ray) {
+        TestObserver steps = observerOf(text, head, object);
+        float t = object.intersect(ray, steps).t();
+        if (steps instanceof BoxSteps box) {
+            box.verdict(t);
+        } else if (steps instanceof TriangleSteps triangle) {
+            triangle.verdict(t);
+        } else if (steps == TestObserver.NONE) {
+            text.hanging(head + object.kind() + ": its test gives t = " + Numbers.of(t) + (t >= 0 ? ": a hit" : ": no hit"));
+        }
+        return t >= 0 ? t : Float.NaN;
+    }
+
+    private static TestObserver observerOf(Text text, String head, IGeometry object) {
         if (object instanceof Sphere sphere) {
-            return SphereSteps.explain(text, head, sphere, ray);
+            return new SphereSteps(text, head, sphere);
         }
         if (object instanceof Plane plane) {
-            return PlaneSteps.explain(text, head, plane, ray);
+            return new PlaneSteps(text, head, plane);
         }
         if (object instanceof Triangle triangle) {
-            return TriangleSteps.explain(text, head, triangle, ray);
+            return new TriangleSteps(text, head, triangle);
         }
         if (object instanceof Box box) {
-            return BoxSteps.explain(text, head, box, ray);
+            return new BoxSteps(text, head, box);
         }
-        float t = object.intersect(ray).t();
-        text.hanging(head + object.kind() + ": its test gives t = " + Numbers.of(t) + (t >= 0 ? ": a hit" : ": no hit"));
-        return t >= 0 ? t : Float.NaN;
+        return TestObserver.NONE;
     }
 }

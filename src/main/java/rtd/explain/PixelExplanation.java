@@ -2,9 +2,10 @@ package rtd.explain;
 
 import java.util.List;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Intersection;
 import rtd.image.Color;
 import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.scene.DepthTest;
 import rtd.scene.Scene;
 
 /**
@@ -13,8 +14,9 @@ import rtd.scene.Scene;
  * order (section 3.2.2; spelt out for the first {@value #LISTED} objects and every object the ray
  * hits, the other misses counted), the depth test (section 3.2.3, Listing 4.3) and the pixel's colour.
  *
- * <p>Every number is computed with the renderer's own float operations, and the verdicts are
- * those of the objects' own tests and of {@link Scene#nearestHit}: the explanation of a pixel
+ * <p>Every number is the renderer's own: each object's test tells its numbers as it computes
+ * them ({@link rtd.geometry.TestObserver}), and the depth test is {@link DepthTest}, as in
+ * {@link Scene#nearestHit}: the explanation of a pixel
  * agrees with its colour in the picture. A scene with lights adds the tree of its shading
  * ({@link ShadingExplanation}).
  */
@@ -48,19 +50,13 @@ public final class PixelExplanation {
         float[] t = new float[objects.size()];
         int unlisted = 0;
         for (int i = 0; i < objects.size(); i++) {
-            Intersection own = objects.get(i).intersect(ray);
-            if (i >= LISTED && !own.happened()) {
-                t[i] = own.t(); // a miss among thousands: counted below, not spelt out
+            if (i >= LISTED && !objects.get(i).intersect(ray).happened()) {
+                t[i] = Float.NaN; // a miss among thousands: counted below, not spelt out
                 unlisted++;
                 continue;
             }
             text.in();
             t[i] = IntersectionSteps.explain(text, "#" + (i + 1) + " ", objects.get(i), ray);
-            if (Float.floatToIntBits(own.t()) != Float.floatToIntBits(t[i]) && (own.t() >= 0 || t[i] >= 0)) {
-                text.line("(the object's own test gives t = " + Numbers.of(own.t())
-                        + ": this explanation is wrong here; please report it)");
-                t[i] = own.t();
-            }
             text.out();
         }
         if (unlisted > 0) {
@@ -77,13 +73,13 @@ public final class PixelExplanation {
         float distance = Float.POSITIVE_INFINITY;
         int nearest = -1;
         for (int i = 0; i < objects.size(); i++) {
-            Intersection intersection = objects.get(i).intersect(ray);
-            if (!intersection.happened()) {
+            if (!(t[i] >= 0)) {
                 continue;
             }
-            float current = intersection.contactCoord().subtract(ray.origin()).magnitude();
-            String where = "#" + (i + 1) + ": P = " + Numbers.of(intersection.contactCoord()) + ", |P − O| = " + Numbers.of(current);
-            if (current < distance) {
+            Vector3f point = ray.pointAt(t[i]);
+            float current = DepthTest.distance(point, ray.origin());
+            String where = "#" + (i + 1) + ": P = " + Numbers.of(point) + ", |P − O| = " + Numbers.of(current);
+            if (DepthTest.nearer(current, i, distance, Math.max(nearest, 0))) {
                 text.line(where + " < " + Numbers.of(distance) + ": the nearest so far");
                 distance = current;
                 nearest = i;

@@ -28,17 +28,22 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
      */
     @Override
     public Intersection intersect(Ray ray) {
+        return intersect(ray, TestObserver.NONE);
+    }
+
+    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
+    @Override
+    public Intersection intersect(Ray ray, TestObserver watch) {
         float[] corners = new float[NUMBERS];
         putTestNumbers(corners, 0);
         Vector3f o = ray.origin();
         Vector3f d = ray.direction();
-        return Intersection.at(ray, hit(corners, 0, o.x(), o.y(), o.z(), d.x(), d.y(), d.z()));
+        return Intersection.at(ray, hit(corners, 0, o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), watch));
     }
 
     /**
-     * Writes the {@value #NUMBERS} numbers {@link #hit} uses into {@code into} from {@code at}:
-     * the smallest corner's x, y, z, then the largest's, for the accelerators' packed copy of
-     * the test.
+     * Writes the {@value #NUMBERS} numbers {@link #hit} reads into {@code into} from {@code at}:
+     * the smallest corner's x, y, z, then the largest's.
      */
     public void putTestNumbers(float[] into, int at) {
         into[at] = min.x();
@@ -53,11 +58,11 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
      * The slab test of the ray O + t·D against the box whose corners {@link #putTestNumbers}
      * wrote at {@code numbers[at]}: along each axis the ray is between the box's two faces for an
      * interval of t; the box is where all three intervals overlap. The ray hits where it enters
-     * that overlap, or, if it starts inside, where it leaves it: that t, or NaN for no hit. One
-     * method for {@link #intersect} and the accelerators' packed copies, so both find the same t
-     * to the last bit.
+     * that overlap, or, if it starts inside, where it leaves it: that t, or NaN for no hit. Every
+     * renderer runs it: {@link #intersect}, and the accelerators on the numbers they keep.
      */
-    public static float hit(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz) {
+    public static float hit(float[] numbers, int at, float ox, float oy, float oz, float dx, float dy, float dz,
+            TestObserver watch) {
         float enter = Float.NEGATIVE_INFINITY;
         float exit = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
@@ -66,16 +71,20 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
             float lo = numbers[at + k];
             float hi = numbers[at + 3 + k];
             if (d == 0) { // parallel to this slab: inside it everywhere or nowhere
-                if (o < lo || o > hi) {
+                boolean outside = o < lo || o > hi;
+                watch.parallelSlab(k, outside);
+                if (outside) {
                     return Float.NaN;
                 }
                 continue;
             }
             float t0 = (lo - o) / d;
             float t1 = (hi - o) / d;
+            watch.slab(k, t0, t1);
             enter = Math.max(enter, Math.min(t0, t1));
             exit = Math.min(exit, Math.max(t0, t1));
         }
+        watch.slabs(enter, exit);
         float t = enter >= 0 ? enter : exit;
         if (enter > exit || exit < 0 || !Float.isFinite(t)) { // infinite: a direction of no length
             return Float.NaN;

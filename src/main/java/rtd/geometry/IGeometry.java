@@ -29,6 +29,14 @@ public interface IGeometry {
      */
     Intersection intersect(Ray ray);
 
+    /**
+     * {@link #intersect(Ray)}, telling {@code watch} the numbers of the test as it computes them
+     * ({@code --explain}). A shape that does not override it tells nothing.
+     */
+    default Intersection intersect(Ray ray, TestObserver watch) {
+        return intersect(ray);
+    }
+
     /** The outward unit normal at {@code point}, a point of the surface (a hit point). */
     Vector3f normalAt(Vector3f point);
 

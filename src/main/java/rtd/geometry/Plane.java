@@ -20,21 +20,28 @@ public record Plane(Vector3f point, Vector3f normal, Color color, Material mater
      */
     @Override
     public Intersection intersect(Ray ray) {
+        return intersect(ray, TestObserver.NONE);
+    }
+
+    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
+    @Override
+    public Intersection intersect(Ray ray, TestObserver watch) {
         Vector3f o = ray.origin();
         Vector3f d = ray.direction();
         return Intersection.at(ray, hit(point.x(), point.y(), point.z(), normal.x(), normal.y(), normal.z(),
-                o.x(), o.y(), o.z(), d.x(), d.y(), d.z()));
+                o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), watch));
     }
 
     /**
-     * The test on numbers: Q, n, the ray's O and R; t of the hit, or NaN. Public for the BVH,
-     * which tests the planes of every ray without making objects; the same float operations in
-     * the same order as {@code (Q − O)·n / (R·n)} with {@code Vector3f}.
+     * The test on numbers: Q, n, the ray's O and R; t of the hit, or NaN. Every renderer runs
+     * it: {@link #intersect}, and the accelerators on the numbers they keep.
      */
     public static float hit(float qx, float qy, float qz, float nx, float ny, float nz, float ox, float oy, float oz,
-            float dx, float dy, float dz) {
-        float facing = (dx * nx) + (dy * ny) + (dz * nz);
-        float t = (((qx - ox) * nx) + ((qy - oy) * ny) + ((qz - oz) * nz)) / facing; // NaN or infinite if facing is 0
+            float dx, float dy, float dz, TestObserver watch) {
+        float facing = (dx * nx) + (dy * ny) + (dz * nz);                                 // R·n
+        float along = ((qx - ox) * nx) + ((qy - oy) * ny) + ((qz - oz) * nz);             // (Q − O)·n
+        float t = along / facing; // NaN or infinite if facing is 0
+        watch.plane(facing, along, t);
         return t >= 0 && t < Float.POSITIVE_INFINITY && facing != 0 ? t : Float.NaN;
     }
 

@@ -46,10 +46,13 @@ public final class RayTriangle {
      * triangle), of P's coordinates, and of t along the ray, which grows as the ray comes in
      * flatter, up to {@value #ALONG_THE_RAY} of the distance run.
      */
-    public static float hit(float[] v, int at, float ox, float oy, float oz, float dx, float dy, float dz) {
-        float facing = (dx * v[at + NORMAL]) + (dy * v[at + NORMAL + 1]) + (dz * v[at + NORMAL + 2]);
-        float t = (((v[at] - ox) * v[at + NORMAL]) + ((v[at + 1] - oy) * v[at + NORMAL + 1]) + ((v[at + 2] - oz) * v[at + NORMAL + 2]))
-                / facing;
+    public static float hit(float[] v, int at, float ox, float oy, float oz, float dx, float dy, float dz,
+            TestObserver watch) {
+        float facing = (dx * v[at + NORMAL]) + (dy * v[at + NORMAL + 1]) + (dz * v[at + NORMAL + 2]);          // R·n
+        float along = ((v[at] - ox) * v[at + NORMAL]) + ((v[at + 1] - oy) * v[at + NORMAL + 1])
+                + ((v[at + 2] - oz) * v[at + NORMAL + 2]);                                                   // (p1 − O)·n
+        float t = along / facing;
+        watch.plane(facing, along, t);
         if (!(t >= 0) || facing == 0 || Float.isInfinite(t)) {
             return Float.NaN;
         }
@@ -57,12 +60,21 @@ public final class RayTriangle {
         float py = oy + dy * t;
         float pz = oz + dz * t;
         float loose = looseness(v, at, px, py, pz, dx, dy, dz, t, facing);
-        if (!nearTheCorners(v, at, px, py, pz, loose)) {
+        boolean near = nearTheCorners(v, at, px, py, pz, loose);
+        watch.trianglePoint(px, py, pz, loose, near);
+        if (!near) {
             return Float.NaN; // the allowances must not stretch a hit far beyond the corners
         }
-        return side(v, at, 0, px, py, pz) >= -allowance(v, at, 0, px, py, pz, loose)
-                && side(v, at, 1, px, py, pz) >= -allowance(v, at, 1, px, py, pz, loose)
-                && side(v, at, 2, px, py, pz) >= -allowance(v, at, 2, px, py, pz, loose) ? t : Float.NaN;
+        return inside(v, at, 0, px, py, pz, loose, watch) && inside(v, at, 1, px, py, pz, loose, watch)
+                && inside(v, at, 2, px, py, pz, loose, watch) ? t : Float.NaN;
+    }
+
+    /** Whether P lies on the triangle's side of edge {@code k}, up to the rounding allowed. */
+    private static boolean inside(float[] v, int at, int k, float px, float py, float pz, float loose, TestObserver watch) {
+        float side = side(v, at, k, px, py, pz);
+        float allowance = allowance(v, at, k, px, py, pz, loose);
+        watch.triangleSide(k, side, allowance);
+        return side >= -allowance;
     }
 
     /**
@@ -70,7 +82,7 @@ public final class RayTriangle {
      * P's coordinates, and of t along the ray, which grows as the ray comes in flatter
      * ({@code |R|·|n| / |R·n|}), up to {@value #ALONG_THE_RAY} of the distance run.
      */
-    public static float looseness(float[] v, int at, float px, float py, float pz, float dx, float dy, float dz, float t,
+    static float looseness(float[] v, int at, float px, float py, float pz, float dx, float dy, float dz, float t,
             float facing) {
         float length = Math.abs(dx) + Math.abs(dy) + Math.abs(dz);
         float along = Math.min(ALONG_THE_RAY, 16 * U * (1 + length * v[at + NORMAL_SUM] / Math.abs(facing)));
@@ -140,7 +152,7 @@ public final class RayTriangle {
     }
 
     /** Whether P lies within the allowances of the corners' box, on every axis. */
-    public static boolean nearTheCorners(float[] v, int at, float px, float py, float pz, float loose) {
+    static boolean nearTheCorners(float[] v, int at, float px, float py, float pz, float loose) {
         float reach = v[at + TOLERANCE] * v[at + SIZE] + loose;
         return near(v, at, 0, px, reach) && near(v, at, 1, py, reach) && near(v, at, 2, pz, reach);
     }
@@ -149,7 +161,7 @@ public final class RayTriangle {
      * How far below 0 the side test of edge {@code k} (from corner k to the next) may come and
      * still count P as inside: the side test's own rounding, and {@code loose}.
      */
-    public static float allowance(float[] v, int at, int k, float px, float py, float pz, float loose) {
+    static float allowance(float[] v, int at, int k, float px, float py, float pz, float loose) {
         int corner = at + CORNERS + 3 * k;
         float fromCorner = Math.abs(px - v[corner]) + Math.abs(py - v[corner + 1]) + Math.abs(pz - v[corner + 2]);
         return (v[at + TOLERANCE] * fromCorner + loose) * v[at + INWARD_LENGTH + k];

@@ -25,45 +25,54 @@ public record Sphere(Vector3f center, float radius, Color color, Material materi
      */
     @Override
     public Intersection intersect(Ray ray) {
-        Vector3f direction = ray.direction();
-        Vector3f centerToOrigin = ray.origin().subtract(center);            // O − M
-        float a = direction.dot(direction);                                  // equation 3.6
-        float b = 2 * direction.dot(centerToOrigin);                        // equation 3.7
-        float c = centerToOrigin.dot(centerToOrigin) - radius * radius;      // equation 3.8
-        return Intersection.at(ray, smallestRootNotBehind(a, b, b * b - 4 * a * c));
+        return intersect(ray, TestObserver.NONE);
+    }
+
+    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
+    @Override
+    public Intersection intersect(Ray ray, TestObserver watch) {
+        Vector3f o = ray.origin();
+        Vector3f d = ray.direction();
+        return Intersection.at(ray, hit(center.x(), center.y(), center.z(), radius,
+                o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), watch));
+    }
+
+    /**
+     * The intersection test of the ray {@code O + t·R} and the sphere with centre M and radius r
+     * (section 3.2.2): the quadratic of equation 3.5, its coefficients by equations 3.6 to 3.8.
+     * Returns the smallest root {@code t ≥ 0}, or NaN. Every renderer runs this test: the
+     * paper's loop through {@link #intersect}, the accelerators on the numbers they keep.
+     */
+    public static float hit(float mx, float my, float mz, float r, float ox, float oy, float oz,
+            float dx, float dy, float dz, TestObserver watch) {
+        float cx = ox - mx;                                         // O − M
+        float cy = oy - my;
+        float cz = oz - mz;
+        float a = dx * dx + dy * dy + dz * dz;                      // equation 3.6: R·R
+        float b = 2 * (dx * cx + dy * cy + dz * cz);                // equation 3.7: 2·R·(O − M)
+        float c = (cx * cx + cy * cy + cz * cz) - r * r;            // equation 3.8: (O − M)·(O − M) − r²
+        float discriminant = b * b - 4 * a * c;
+        watch.sphere(cx, cy, cz, a, b, c, discriminant);
+        return smallestRootNotBehind(a, b, discriminant, watch);
     }
 
     /**
      * The abc formula: the smaller root {@code (−b − √D) / 2a} if it is {@code ≥ 0}, else the
      * larger one (the ray starts inside the sphere), else NaN (no root, or both behind O).
-     * Public for the BVH's packed test of the same equations.
      */
-    public static float smallestRootNotBehind(float a, float b, float discriminant) {
+    private static float smallestRootNotBehind(float a, float b, float discriminant, TestObserver watch) {
         if (!(discriminant >= 0)) {
             return Float.NaN;
         }
         float root = (float) Math.sqrt(discriminant);
         float near = (-b - root) / (2 * a);
         if (near >= 0) {
+            watch.roots(root, near, Float.NaN);
             return near;
         }
         float far = (-b + root) / (2 * a);
+        watch.roots(root, near, far);
         return far >= 0 ? far : Float.NaN;
-    }
-
-    /** How many numbers {@link #putTestNumbers} writes. */
-    public static final int NUMBERS = 4;
-
-    /**
-     * Writes the {@value #NUMBERS} numbers {@link #intersect} uses into {@code into} from
-     * {@code at}: M's x, y, z and {@code r·r} (equation 3.8), for the BVH's packed copy of the
-     * test.
-     */
-    public void putTestNumbers(float[] into, int at) {
-        into[at] = center.x();
-        into[at + 1] = center.y();
-        into[at + 2] = center.z();
-        into[at + 3] = radius * radius;
     }
 
     /** {@code (P − M) / r}. */

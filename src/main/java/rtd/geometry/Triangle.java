@@ -114,9 +114,15 @@ public final class Triangle implements IGeometry {
      */
     @Override
     public Intersection intersect(Ray ray) {
+        return intersect(ray, TestObserver.NONE);
+    }
+
+    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
+    @Override
+    public Intersection intersect(Ray ray, TestObserver watch) {
         Vector3f o = ray.origin();
         Vector3f d = ray.direction();
-        return Intersection.at(ray, hit(o.x(), o.y(), o.z(), d.x(), d.y(), d.z()));
+        return Intersection.at(ray, RayTriangle.hit(v, at, o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), watch));
     }
 
     /**
@@ -125,7 +131,7 @@ public final class Triangle implements IGeometry {
      * in the mesh's arrays, instead of copying them (a million triangles' numbers are 108 MB).
      */
     public float hit(float ox, float oy, float oz, float dx, float dy, float dz) {
-        return RayTriangle.hit(v, at, ox, oy, oz, dx, dy, dz);
+        return RayTriangle.hit(v, at, ox, oy, oz, dx, dy, dz, TestObserver.NONE);
     }
 
     /**

@@ -59,10 +59,10 @@ public record Scene(Color ambient, ICamera camera, List<IGeometry> objects, List
     }
 
     /**
-     * Listing 4.3: the intersection test with every object, then the depth test. The object
-     * whose hit point P lies nearest to the ray's origin O ({@code |P − O|}) wins; the
-     * comparison is strict, so on a tie the object that comes first in the file wins. Any ray
-     * will do, not only a camera's. Returns {@code null} if the ray hits nothing.
+     * Listing 4.3: the intersection test with every object, then the depth test
+     * ({@link DepthTest}): the object whose hit point P lies nearest to the ray's origin O
+     * ({@code |P − O|}) wins, and on a tie the object that comes first in the file. Any ray will
+     * do, not only a camera's. Returns {@code null} if the ray hits nothing.
      */
     public Hit nearestHit(Ray ray) {
         float distance = Float.POSITIVE_INFINITY;
@@ -71,10 +71,8 @@ public record Scene(Color ambient, ICamera camera, List<IGeometry> objects, List
             IGeometry object = objects.get(i);
             Intersection intersection = object.intersect(ray);
             if (intersection.happened()) {
-                float currentDistance = intersection.contactCoord()
-                        .subtract(ray.origin())
-                        .magnitude();
-                if (currentDistance < distance) {
+                float currentDistance = DepthTest.distance(intersection.contactCoord(), ray.origin());
+                if (DepthTest.nearer(currentDistance, i, distance, hit == null ? 0 : hit.index())) {
                     distance = currentDistance;
                     hit = new Hit(object, i, intersection.t(), currentDistance, intersection.contactCoord());
                 }

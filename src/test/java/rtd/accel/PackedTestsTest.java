@@ -7,6 +7,7 @@ import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.geometry.Box;
+import rtd.geometry.TestObserver;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
@@ -18,9 +19,8 @@ import rtd.math.Vector3f;
 
 /**
  * The packed copies of the shapes' tests: the numbers each shape packs, where they go and which
- * test reads them give the t of the shape's own {@code intersect} to the last bit (for the
- * sphere, whose packed equations are a copy, that also checks the copy; the triangle's and the
- * box's own {@code intersect} call the same static test); the box's slab test on numbers, on
+ * test reads them give the t of the shape's own {@code intersect} to the last bit (each shape's
+ * own {@code intersect} calls the same static test); the box's slab test on numbers, on
  * cases worked out by hand (a face, an edge, a corner, a slab it lies in); and a shape without a
  * packed test is left to its own.
  */
@@ -46,13 +46,13 @@ class PackedTestsTest {
         float[] box = {-1, -1, -1, 1, 1, 1};
 
         // from z = 5 towards −z: the face z = 1 at t = 4 (the x and y slabs are parallel: inside them)
-        assertThat(Box.hit(box, 0, 0, 0, 5, 0, 0, -1)).isEqualTo(4f);
+        assertThat(Box.hit(box, 0, 0, 0, 5, 0, 0, -1, TestObserver.NONE)).isEqualTo(4f);
         // from the centre: it leaves through z = −1 at t = 1
-        assertThat(Box.hit(box, 0, 0, 0, 0, 0, 0, -1)).isEqualTo(1f);
+        assertThat(Box.hit(box, 0, 0, 0, 0, 0, 0, -1, TestObserver.NONE)).isEqualTo(1f);
         // parallel to the x slabs and beside them: no hit
-        assertThat(Box.hit(box, 0, 2, 0, 5, 0, 0, -1)).isNaN();
+        assertThat(Box.hit(box, 0, 2, 0, 5, 0, 0, -1, TestObserver.NONE)).isNaN();
         // the box behind the ray: no hit
-        assertThat(Box.hit(box, 0, 0, 0, 5, 0, 0, 1)).isNaN();
+        assertThat(Box.hit(box, 0, 0, 0, 5, 0, 0, 1, TestObserver.NONE)).isNaN();
     }
 
     @Test
@@ -60,16 +60,16 @@ class PackedTestsTest {
         float[] box = {-1, -1, -1, 1, 1, 1};
 
         // from the face z = 1 inwards: it enters at once, t = (1 − 1)/(−1) = −0, which counts as 0
-        assertThat(Float.floatToIntBits(Box.hit(box, 0, 0, 0, 1, 0, 0, -1))).isEqualTo(Float.floatToIntBits(-0f));
+        assertThat(Float.floatToIntBits(Box.hit(box, 0, 0, 0, 1, 0, 0, -1, TestObserver.NONE))).isEqualTo(Float.floatToIntBits(-0f));
         // in the plane of the face x = 1, parallel to it: inside that slab (its edge counts), through z = 1 at t = 4
-        assertThat(Box.hit(box, 0, 1, 0, 5, 0, 0, -1)).isEqualTo(4f);
-        assertThat(Box.hit(box, 0, -1, 0, 5, 0, 0, -1)).isEqualTo(4f);
+        assertThat(Box.hit(box, 0, 1, 0, 5, 0, 0, -1, TestObserver.NONE)).isEqualTo(4f);
+        assertThat(Box.hit(box, 0, -1, 0, 5, 0, 0, -1, TestObserver.NONE)).isEqualTo(4f);
         // towards the edge x = y = 1 from (2, 2, 0): both slabs entered at t = 1
-        assertThat(Box.hit(box, 0, 2, 2, 0, -1, -1, 0)).isEqualTo(1f);
+        assertThat(Box.hit(box, 0, 2, 2, 0, -1, -1, 0, TestObserver.NONE)).isEqualTo(1f);
         // towards the corner (1, 1, 1) from (3, 3, 3): t = 2
-        assertThat(Box.hit(box, 0, 3, 3, 3, -1, -1, -1)).isEqualTo(2f);
+        assertThat(Box.hit(box, 0, 3, 3, 3, -1, -1, -1, TestObserver.NONE)).isEqualTo(2f);
         // a direction of −0 along x is parallel to the x slabs, as +0 is
-        assertThat(Box.hit(box, 0, 0, 0, 5, -0f, 0, -1)).isEqualTo(4f);
+        assertThat(Box.hit(box, 0, 0, 0, 5, -0f, 0, -1, TestObserver.NONE)).isEqualTo(4f);
     }
 
     @Test

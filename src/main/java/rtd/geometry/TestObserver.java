@@ -1,0 +1,49 @@
+package rtd.geometry;
+
+/**
+ * Watches an intersection test at work, for {@code --explain}: each shape's test tells it the
+ * numbers it computes, as it computes them, so that an explanation shows the very numbers of the
+ * picture and not a second computation of them. Every renderer passes {@link #NONE}, which does
+ * nothing. A shape that tells nothing is explained by its answer alone.
+ */
+public interface TestObserver {
+
+    /** Watches nothing: the renderers' observer. */
+    TestObserver NONE = new TestObserver() {
+    };
+
+    /** A sphere's quadratic (equations 3.5 to 3.8): {@code O − M}, a, b, c and the discriminant {@code b² − 4ac}. */
+    default void sphere(float cx, float cy, float cz, float a, float b, float c, float discriminant) {
+    }
+
+    /** The roots of a quadratic as they are tried: √D, then {@code (−b − √D)/2a}, then {@code (−b + √D)/2a} (NaN: not needed). */
+    default void roots(float root, float near, float far) {
+    }
+
+    /** A plane's (or a triangle's plane's) {@code t = along / facing}: {@code along = (Q − O)·n}, {@code facing = R·n}. */
+    default void plane(float facing, float along, float t) {
+    }
+
+    /** A box's slab along {@code axis} (0, 1, 2: x, y, z): the ray is between its faces from t0 to t1. */
+    default void slab(int axis, float t0, float t1) {
+    }
+
+    /** The ray runs parallel to the box's slab along {@code axis}, {@code outside} it or inside it everywhere. */
+    default void parallelSlab(int axis, boolean outside) {
+    }
+
+    /** Where the ray is in all three slabs: from {@code enter} to {@code exit}. */
+    default void slabs(float enter, float exit) {
+    }
+
+    /**
+     * A triangle's test found the point P on its plane, allows {@code loose} for rounding, and P
+     * lies {@code nearTheCorners} (within the corners' box and that allowance) or not.
+     */
+    default void trianglePoint(float px, float py, float pz, float loose, boolean nearTheCorners) {
+    }
+
+    /** A triangle's side test of edge {@code edge} (0, 1, 2): {@code (P − corner)·(n × edge)}, and the rounding it allows. */
+    default void triangleSide(int edge, float side, float allowance) {
+    }
+}
