@@ -5,7 +5,7 @@ import rtd.geometry.IGeometry;
 /**
  * How far a box of a {@link Bvh} grows for a ray, so that no hit is lost to rounding: an
  * object's test may report a hit outside its box by a margin that grows with the distance the
- * ray has run ({@link IGeometry#bounds}, {@link rtd.geometry.Rounding}). A walk down the tree
+ * ray has run ({@link IGeometry#bounds}, {@link Rounding}). A walk down the tree
  * knows a t beyond which the ray cannot be in a node (the tree's {@link #reach}, then each
  * parent's exit), and grows the node's children by their margin there ({@link #growth}).
  * Used alike for one ray ({@link NearestHit}) and for a square's beam ({@link BeamTracer}).
@@ -25,7 +25,7 @@ final class BoxGrowth {
         float[] root = bvh.boxes; // node 0
         double far = farthest(x, root[0], root[3]) + halfX + farthest(y, root[1], root[4]) + halfY
                 + farthest(z, root[2], root[5]) + halfZ;
-        double widest = IGeometry.ROUNDING_CONE + root[Bvh.ROUNDING]; // the root's rounding is the largest
+        double widest = KnownShapes.ROUNDING_CONE + root[Bvh.ROUNDING]; // the root's rounding is the largest
         float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
         return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
     }
@@ -38,7 +38,7 @@ final class BoxGrowth {
     static float growth(float[] boxes, int node, float distance) {
         int at = Bvh.BOX * node + Bvh.ROUNDING;
         float grow = boxes[at] * distance
-                + Math.min(IGeometry.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
+                + Math.min(KnownShapes.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
         return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
     }
 }

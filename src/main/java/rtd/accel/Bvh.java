@@ -4,7 +4,6 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Rounding;
 import rtd.scene.Scene;
 
 /**

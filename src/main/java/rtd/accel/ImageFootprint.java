@@ -5,7 +5,6 @@ import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Rounding;
 
 /**
  * Where on the image a camera may see an object: the rectangle of pixels whose rays
@@ -14,7 +13,7 @@ import rtd.geometry.Rounding;
  * the image's cells by it, and each cell's objects by that distance.
  *
  * <p>A ray that the test lets hit an object meets the object's box grown by its
- * {@link IGeometry#rounding} at the distance {@code L} the ray has run ({@link IGeometry#bounds}).
+ * {@link KnownShapes#rounding} at the distance {@code L} the ray has run ({@link IGeometry#bounds}).
  * So an object's pixels are those whose rays pass through the grown box: its shadow along the
  * rays of the orthographic camera ({@link OrthographicFootprint}), its picture through the
  * perspective camera's eye ({@link PerspectiveFootprint}), widened by what the rounding of the
@@ -41,7 +40,7 @@ interface ImageFootprint {
      * {@code box} is room for its bounds, which it holds afterwards.
      */
     default float putObject(IGeometry object, float[] box, int[] into, int at) {
-        object.putBounds(box, 0);
+        KnownShapes.putBox(object, box, 0);
         Rounding rounding = roundingOf(object, box);
         float nearest = isFinite(box) ? put(box, 0, rounding.linear(), rounding.quadratic(), into, at) : Float.NaN;
         if (nearest != nearest) {
@@ -53,11 +52,11 @@ interface ImageFootprint {
 
     /**
      * The {@link Rounding} of the camera's rays for {@code object}, whose bounds are
-     * {@code box[0 .. 5]}: {@link IGeometry#rounding} unless the camera's rays have less
+     * {@code box[0 .. 5]}: {@link KnownShapes#rounding} unless the camera's rays have less
      * ({@link PerspectiveFootprint}).
      */
     default Rounding roundingOf(IGeometry object, float[] box) {
-        return object.rounding();
+        return KnownShapes.rounding(object);
     }
 
     /**
@@ -141,7 +140,7 @@ interface ImageFootprint {
      * {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)}, in double.
      */
     static double growth(double linear, double quadratic, double run) {
-        return linear * run + Math.min(IGeometry.ROUNDING_CONE * run, quadratic * run * run);
+        return linear * run + Math.min(KnownShapes.ROUNDING_CONE * run, quadratic * run * run);
     }
 
     /** How far 0 lies from the box {@code [x0, x1] × [y0, y1] × [z0, z1]}. */

@@ -7,7 +7,6 @@ import java.util.function.IntConsumer;
 import rtd.scene.DepthTest;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
-import rtd.geometry.Rounding;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
@@ -49,7 +48,7 @@ final class LeafObjects {
     /**
      * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order; {@code boxes}
      * alike) with the builder's threads, into the builder's spare arrays where they are long
-     * enough ({@link BvhBuilder#spare}); writes each one's {@link IGeometry#rounding} to
+     * enough ({@link BvhBuilder#spare}); writes each one's {@link KnownShapes#rounding} to
      * {@code roundings} in leaf order too, linear at {@code [2i]} and quadratic at
      * {@code [2i + 1]}, for the {@link Bvh} to grow its nodes by.
      *
@@ -186,7 +185,7 @@ final class LeafObjects {
         }
         IGeometry object = scene.get(f);
         if (roundings != null) {
-            Rounding rounding = object.rounding();
+            Rounding rounding = KnownShapes.rounding(object);
             roundings[2 * i] = rounding.linear();
             roundings[2 * i + 1] = rounding.quadratic();
         }

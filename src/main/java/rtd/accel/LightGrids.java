@@ -78,7 +78,7 @@ public final class LightGrids {
         float[] box = new float[6];
         boolean any = false;
         for (IGeometry object : objects) {
-            object.putBounds(box, 0);
+            KnownShapes.putBox(object, box, 0);
             if (ImageFootprint.isFinite(box)) {
                 any = true;
                 for (int k = 0; k < 3; k++) {

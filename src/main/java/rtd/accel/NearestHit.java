@@ -114,7 +114,7 @@ final class NearestHit {
 
     /**
      * How much to grow the boxes of {@code node}'s objects, for a ray that cannot be in them
-     * beyond {@code reach}: their {@link rtd.geometry.Rounding} at the distance the ray runs.
+     * beyond {@code reach}: their {@link Rounding} at the distance the ray runs.
      */
     float growth(int node, float reach) {
         return BoxGrowth.growth(bvh.boxes, node, reach * length);

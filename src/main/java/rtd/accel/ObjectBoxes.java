@@ -44,7 +44,7 @@ final class ObjectBoxes {
 
     /** Puts object {@code i}'s box in place {@code i}. */
     private void measure(int i) {
-        objects.get(i).putBounds(into.boxes(), 6 * i);
+        KnownShapes.putBox(objects.get(i), into.boxes(), 6 * i);
         into.order()[i] = i;
         if (!isFinite(i)) {
             anyUnbounded = true;

@@ -11,7 +11,7 @@ import rtd.math.Vector3f;
  * <p>The camera's rays all run along one direction R from origins on a plane through its
  * position (Listing 4.1): pixel x's ray leaves {@code (x − w/2)/zoom} along the image axis u.
  * A ray that the test lets hit an object at t meets the object's box grown by its
- * {@link IGeometry#rounding} at the distance {@code L = t·|R|}; its origin then lies where the
+ * {@link KnownShapes#rounding} at the distance {@code L = t·|R|}; its origin then lies where the
  * grown box's shadow along R falls on the plane. So the pixels are those of that shadow,
  * widened by what the rounding of the rays' own numbers can move them.
  */
@@ -92,7 +92,7 @@ final class OrthographicFootprint implements ImageFootprint {
         double cz = (boxes[at + 2] + (double) boxes[at + 5]) / 2 - pz;
         double middle = cx * rx + cy * ry + cz * rz;
         double depth = Math.abs(rx) * hx + Math.abs(ry) * hy + Math.abs(rz) * hz;
-        double widest = linear + IGeometry.ROUNDING_CONE;
+        double widest = linear + KnownShapes.ROUNDING_CONE;
         if (middle + depth + originError < 0) {
             return Float.NaN; // wholly behind the rays' origins: a hit lies no farther from the box than √3 growths
         }

@@ -2,7 +2,6 @@ package rtd.accel;
 
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Rounding;
 import rtd.math.Vector3f;
 
 /**
@@ -24,7 +23,7 @@ final class PerspectiveFootprint implements ImageFootprint {
     private static final double DIRECTION_ERROR = 1e-5;
 
     private final Vector3f eye;
-    /** Whether the rays' directions are in the range {@link IGeometry#roundingFrom} speaks of. */
+    /** Whether the rays' directions are in the range {@link KnownShapes#roundingFrom} speaks of. */
     private final boolean raysInRange;
     private final double ox;
     private final double oy;
@@ -71,22 +70,22 @@ final class PerspectiveFootprint implements ImageFootprint {
     }
 
     /**
-     * Every ray leaves the eye: a shape may round less for such rays ({@link IGeometry#roundingFrom}),
+     * Every ray leaves the eye: a shape may round less for such rays ({@link KnownShapes#roundingFrom}),
      * if their directions' lengths are in its range, as any camera's but the most extreme are.
      */
     @Override
     public Rounding roundingOf(IGeometry object, float[] box) {
-        return raysInRange ? object.roundingFrom(eye, box, 0) : object.rounding();
+        return raysInRange ? KnownShapes.roundingFrom(object, eye, box, 0) : KnownShapes.rounding(object);
     }
 
-    /** Whether the rays' directions are in the range {@link IGeometry#roundingFrom} speaks of. */
+    /** Whether the rays' directions are in the range {@link KnownShapes#roundingFrom} speaks of. */
     boolean raysInRange() {
         return raysInRange;
     }
 
     /**
      * Whether every ray's direction {@code R = F·f + u·x' + v·y'} has
-     * {@link IGeometry#SHORTEST_DIRECTION} ≤ |R|₁ ≤ {@link IGeometry#LONGEST_DIRECTION}: |R|₁ is at
+     * {@link KnownShapes#SHORTEST_DIRECTION} ≤ |R|₁ ≤ {@link KnownShapes#LONGEST_DIRECTION}: |R|₁ is at
      * most the sum of the parts' and at least |R| ≥ |R·F|/|F|, for offsets up to half the picture
      * and a pixel more, with room for rounding.
      */
@@ -98,7 +97,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         double forwardLength = Math.sqrt(dot(forward, forward));
         double shortest = (Math.abs(focal) * forwardLength * forwardLength - x * Math.abs(dot(across, forward))
                 - y * Math.abs(dot(down, forward))) / forwardLength * (1 - 1e-5);
-        return shortest >= IGeometry.SHORTEST_DIRECTION && longest <= IGeometry.LONGEST_DIRECTION;
+        return shortest >= KnownShapes.SHORTEST_DIRECTION && longest <= KnownShapes.LONGEST_DIRECTION;
     }
 
     private static double sum(double[] v) {
@@ -117,7 +116,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         double x1 = boxes[at + 3] - ox;
         double y1 = boxes[at + 4] - oy;
         double z1 = boxes[at + 5] - oz;
-        double widest = linear + IGeometry.ROUNDING_CONE;
+        double widest = linear + KnownShapes.ROUNDING_CONE;
         // a hit runs L ≤ farthest corner + √3·growth(L) ≤ farthest + √3·widest·L from the eye
         double farthest = ImageFootprint.farthest(x0, y0, z0, x1, y1, z1);
         double reach = farthest / (1 - Math.sqrt(3) * widest);

@@ -122,7 +122,7 @@ final class SahSplitter {
 
     /**
      * Moves the objects of places {@code [start, end)} of {@code data} that are the twin of one before them in
-     * the file ({@link IGeometry#sameTest}) to the back, and returns where they start: the tree
+     * the file ({@link KnownShapes#twinKey}) to the back, and returns where they start: the tree
      * leaves them out. A twin reports the same hit as the first of its kind for every ray, and
      * on that tie the first in the file wins, so the twin never does. Only where all centres
      * coincide, the one place where many twins can gather and defeat the tree (a hundred
@@ -134,14 +134,14 @@ final class SahSplitter {
         Map<Object, Boolean> seen = new HashMap<>();
         int kept = start;
         for (int i = start; i < end; i++) {
-            if (seen.putIfAbsent(objects.get(order[i]).sameTest(), Boolean.TRUE) == null) {
+            if (seen.putIfAbsent(KnownShapes.twinKey(objects.get(order[i])), Boolean.TRUE) == null) {
                 int object = order[i];
                 order[i] = order[kept];
                 order[kept++] = object;
             }
         }
         for (int i = start; i < end; i++) { // each object's box back at its place
-            objects.get(order[i]).putBounds(data.boxes(), 6 * i);
+            KnownShapes.putBox(objects.get(order[i]), data.boxes(), 6 * i);
         }
         if (data != primary) { // the twins stay in no leaf, but in the list of objects
             data.copy(kept, end, primary);

@@ -3,8 +3,8 @@ package rtd.geometry;
 import rtd.math.Vector3f;
 
 /**
- * An axis-aligned box, given by its lowest and highest corner. A bounding volume hierarchy
- * ({@code rtd.accel.Bvh}) sorts objects into a tree of such boxes. {@link #UNBOUNDED} is the box
+ * An axis-aligned box, given by its lowest and highest corner: a shape's bounds, which the
+ * engine sorts objects by. {@link #UNBOUNDED} is the box
  * of an object without limits, such as a plane.
  */
 public record BoundingBox(Vector3f min, Vector3f max) {
@@ -48,47 +48,6 @@ public record BoundingBox(Vector3f min, Vector3f max) {
         return new BoundingBox(
                 new Vector3f(down(lo[0] - grow), down(lo[1] - grow), down(lo[2] - grow)),
                 new Vector3f(up(hi[0] + grow), up(hi[1] + grow), up(hi[2] + grow)));
-    }
-
-    /**
-     * {@link #around} for one point {@code (x, y, z)}, written to {@code into[at .. at+5]} (min x,
-     * y, z, max x, y, z) instead of a new box: the same numbers, without making objects, for a
-     * hierarchy that measures a million of them.
-     */
-    static void around(double margin, float x, float y, float z, float[] into, int at) {
-        double largest = Math.max(Math.max(Math.max(0, Math.abs((double) x)), Math.abs((double) y)), Math.abs((double) z));
-        double grow = margin * (1 + 1e-6) + 8 * UNIT_ROUNDOFF * largest;
-        into[at] = down(x - grow);
-        into[at + 1] = down(y - grow);
-        into[at + 2] = down(z - grow);
-        into[at + 3] = up(x + grow);
-        into[at + 4] = up(y + grow);
-        into[at + 5] = up(z + grow);
-    }
-
-    /**
-     * {@link #around} for the {@code points} points whose coordinates are
-     * {@code coords[from ..]} (x, y, z each), written to {@code into[at .. at+5]} instead of a
-     * new box: the same numbers (a minimum or maximum is the same in any order), without making
-     * objects.
-     */
-    static void around(double margin, float[] coords, int from, int points, float[] into, int at) {
-        double largest = 0;
-        for (int i = from; i < from + 3 * points; i++) {
-            largest = Math.max(largest, Math.abs((double) coords[i]));
-        }
-        double grow = margin * (1 + 1e-6) + 8 * UNIT_ROUNDOFF * largest;
-        for (int k = 0; k < 3; k++) {
-            double lo = Double.POSITIVE_INFINITY;
-            double hi = Double.NEGATIVE_INFINITY;
-            for (int p = 0; p < points; p++) {
-                double c = coords[from + 3 * p + k];
-                lo = Math.min(lo, c);
-                hi = Math.max(hi, c);
-            }
-            into[at + k] = down(lo - grow);
-            into[at + k + 3] = up(hi + grow);
-        }
     }
 
     /** Writes this box to {@code into[at .. at+5]}: min x, y, z, max x, y, z. */

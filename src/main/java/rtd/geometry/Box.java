@@ -1,6 +1,5 @@
 package rtd.geometry;
 
-import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -122,21 +121,6 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
     @Override
     public BoundingBox bounds() {
         return BoundingBox.around(0, min, max);
-    }
-
-    /**
-     * The slab test's t has a relative error of a few units of the last place, so the hit
-     * point strays from the face by a few of those of the distance run, far less than this.
-     */
-    @Override
-    public Rounding rounding() {
-        return Rounding.linear(1e-5f);
-    }
-
-    /** The same shape in the same place, whatever its colour and finish. */
-    @Override
-    public Object sameTest() {
-        return List.of(min, max);
     }
 
     @Override

@@ -1,6 +1,5 @@
 package rtd.geometry;
 
-import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -54,12 +53,6 @@ public record Plane(Vector3f point, Vector3f normal, Color color, Material mater
     @Override
     public BoundingBox bounds() {
         return BoundingBox.UNBOUNDED;
-    }
-
-    /** The same shape in the same place, whatever its colour and finish. */
-    @Override
-    public Object sameTest() {
-        return List.of(point, normal);
     }
 
     /** A surface, not a solid: a ray that meets it from behind meets its back. */

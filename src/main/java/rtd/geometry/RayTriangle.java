@@ -19,16 +19,16 @@ import static rtd.geometry.TriangleNumbers.U;
  * <p>Each side test is a dot product with a vector fixed per edge ({@code n × edge}, in the
  * plane, pointing inwards), so its rounding error, as a distance, is a few units of the last
  * place of the distances involved: a reported hit is never far from the triangle, however thin
- * it is or however flat the ray comes in (see {@link IGeometry#bounds}). A triangle of zero area
+ * it is or however flat the ray comes in. A triangle of zero area
  * has {@code n = 0}, no ray meets its plane, and it is never hit.
  */
 public final class RayTriangle {
 
     /**
-     * The largest share of the distance run by which a hit may stray along the ray (see
-     * {@link #hit}); the part of {@link Triangle#rounding} that grows with the distance.
+     * The largest share of the distance run by which the side tests let a hit stray along the
+     * ray (see {@link #hit}).
      */
-    static final float ALONG_THE_RAY = 1e-4f;
+    public static final float ALONG_THE_RAY = 1e-4f;
 
     private RayTriangle() {
     }
@@ -87,68 +87,6 @@ public final class RayTriangle {
         float length = Math.abs(dx) + Math.abs(dy) + Math.abs(dz);
         float along = Math.min(ALONG_THE_RAY, 16 * U * (1 + length * v[at + NORMAL_SUM] / Math.abs(facing)));
         return 16 * U * (Math.abs(px) + Math.abs(py) + Math.abs(pz)) + along * t * length;
-    }
-
-    /**
-     * The largest share of the distance run by which {@link #looseness} lets a hit stray along
-     * the ray, for the rays that leave the point O = {@code (ox, oy, oz)} with a direction R of
-     * {@link IGeometry#SHORTEST_DIRECTION} ≤ |R|₁ ≤ {@link IGeometry#LONGEST_DIRECTION} and report
-     * a hit on the triangle of numbers {@code v[at ..]}, whose box ({@link Triangle#bounds}) is
-     * {@code box[b .. b+5]}: {@link #ALONG_THE_RAY} at most, much less where every such ray meets
-     * the triangle's plane steeply. A perspective camera's rays all leave its eye.
-     *
-     * <p>Why it holds. A ray O + t·R that reports a hit at t passes Q = O + t·R (exact
-     * arithmetic) inside the box grown by what any ray's rounding allows ({@link Triangle#rounding},
-     * at the farthest such a hit can lie) and by the rounding of the hit point's own coordinates
-     * (at t = 0, O itself lies in the box). R points from O to Q, so the ratio
-     * {@code |R|₁·|n|₁ / |R·n|} that the looseness grows with is that of Q − O. Over the grown box
-     * (Q − O)·n is linear and |Q − O|₁ convex: their extremes lie at its corners. If (Q − O)·n
-     * keeps one sign there, the ratio is at most the corners' largest |Q − O|₁ times |n|₁ over their
-     * least |(Q − O)·n|. The test works the ratio out in float, from R and n; with |n|₁ between
-     * 1e-15 and 1e15 and |R|₁ in its range, no product overflows or falls among the subnormal
-     * numbers, and while the ratio is under about 104 (beyond it the looseness is
-     * {@link #ALONG_THE_RAY} anyway) the float ratio is within a ten-thousandth of the exact one:
-     * 1.01 times it is kept. Otherwise {@link #ALONG_THE_RAY}. The hit then strays at most
-     * {@code along·t·|R|₁ ≤ √3·along·L}, which {@link Triangle#roundingFrom}'s factor 2 covers.
-     */
-    public static double alongTheRayFrom(float[] v, int at, double ox, double oy, double oz, float[] box, int b) {
-        double normalSum = v[at + NORMAL_SUM];
-        if (!(normalSum >= 1e-15 && normalSum <= 1e15)) {
-            return ALONG_THE_RAY; // the float ratio may overflow, or lose its digits among subnormal numbers
-        }
-        double anyRay = 2 * ALONG_THE_RAY; // Triangle.rounding()
-        double farthest = 0;
-        double largest = Math.max(Math.abs(ox), Math.max(Math.abs(oy), Math.abs(oz)));
-        for (int k = 0; k < 3; k++) {
-            double o = k == 0 ? ox : k == 1 ? oy : oz;
-            double far = Math.max(Math.abs(box[b + k] - o), Math.abs(box[b + 3 + k] - o));
-            farthest += far * far;
-            largest = Math.max(largest, Math.max(Math.abs(box[b + k]), Math.abs(box[b + 3 + k])));
-        }
-        // a hit runs L ≤ farthest corner + √3·anyRay·L, and strays anyRay·L; Q strays from P by a few u of their size
-        double reach = Math.sqrt(farthest) / (1 - Math.sqrt(3) * (anyRay + IGeometry.ROUNDING_CONE));
-        double grow = anyRay * reach + 8 * U * (largest + anyRay * reach);
-        double nx = v[at + NORMAL];
-        double ny = v[at + NORMAL + 1];
-        double nz = v[at + NORMAL + 2];
-        double leastFacing = Double.POSITIVE_INFINITY;
-        double mostFacing = Double.NEGATIVE_INFINITY;
-        double longest = 0;
-        for (int corner = 0; corner < 8; corner++) {
-            double qx = ((corner & 1) == 0 ? box[b] - grow : box[b + 3] + grow) - ox;
-            double qy = ((corner & 2) == 0 ? box[b + 1] - grow : box[b + 4] + grow) - oy;
-            double qz = ((corner & 4) == 0 ? box[b + 2] - grow : box[b + 5] + grow) - oz;
-            double facing = qx * nx + qy * ny + qz * nz;
-            leastFacing = Math.min(leastFacing, facing);
-            mostFacing = Math.max(mostFacing, facing);
-            longest = Math.max(longest, Math.abs(qx) + Math.abs(qy) + Math.abs(qz));
-        }
-        if (!(leastFacing > 0 || mostFacing < 0)) {
-            return ALONG_THE_RAY; // some of these rays may run along the plane
-        }
-        double ratio = longest * normalSum / Math.min(Math.abs(leastFacing), Math.abs(mostFacing));
-        double along = 16 * U * (1 + 1.01 * ratio) * (1 + 1e-6);
-        return along < ALONG_THE_RAY ? along : ALONG_THE_RAY; // also for an infinite box, whose ratio is NaN
     }
 
     /** Whether P lies within the allowances of the corners' box, on every axis. */

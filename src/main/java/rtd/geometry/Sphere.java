@@ -1,6 +1,5 @@
 package rtd.geometry;
 
-import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -82,39 +81,13 @@ public record Sphere(Vector3f center, float radius, Color color, Material materi
     }
 
     /**
-     * The sphere's box, widened by how far rounding can move its surface.
-     *
-     * <p>In {@link #intersect} the discriminant is a difference of two numbers as large as
-     * {@code 4|R|²|O − M|²}. Following the standard error bounds of sums and products, the float
-     * test hits where an exact test against a sphere of radius {@code r'} would, with
-     * {@code r'² ≤ r² + δ} and {@code δ = 15u·D² + 6u·r²} (u the unit roundoff, D = |O − M|;
-     * first order, we add a quarter). So the surface moves out by at most
-     * {@code min(√δ, δ/2r) + 8u·D}. A hit at t has {@code D ≤ L + r'} with {@code L = t|R|},
-     * which bounds that by {@code 1.062e-3·L + 1.74e-3·r} through the root, and by
-     * {@code (18.75u/2r)·L² + 2e-6·L + 1e-6·r} through the quotient. The parts that grow with L
-     * are the sphere's {@link #rounding}; the rest is grown here, as {@code 2e-3·r}.
+     * The sphere's box, grown by {@code 2e-3·r}: the float test hits a little outside the exact
+     * sphere, and the part of that which does not grow with the distance run is at most
+     * {@code 1.74e-3·r}.
      */
     @Override
     public BoundingBox bounds() {
         return BoundingBox.around(radius * (1 + 2e-3), center);
-    }
-
-    /** {@link #bounds}, the same numbers, written without making a box. */
-    @Override
-    public void putBounds(float[] into, int at) {
-        BoundingBox.around(radius * (1 + 2e-3), center.x(), center.y(), center.z(), into, at);
-    }
-
-    /** {@code 2e-6·L + min(ROUNDING_CONE·L, (18.75u/2r)·L²)}: see {@link #bounds}. */
-    @Override
-    public Rounding rounding() {
-        return new Rounding(2e-6f, (float) (18.75 * 0x1p-24 / (2.0 * radius) * (1 + 1e-3)));
-    }
-
-    /** The same shape in the same place, whatever its colour and finish. */
-    @Override
-    public Object sameTest() {
-        return List.of(center, radius);
     }
 
     @Override

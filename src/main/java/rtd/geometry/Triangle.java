@@ -6,7 +6,6 @@ import static rtd.geometry.TriangleNumbers.SIZE;
 import static rtd.geometry.TriangleNumbers.TOLERANCE;
 
 import java.util.Arrays;
-import java.util.List;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -176,12 +175,6 @@ public final class Triangle implements IGeometry {
         return BoundingBox.around(margin(p1, p2, p3), p1, p2, p3);
     }
 
-    /** {@link #bounds}, the same numbers, written without making a box. */
-    @Override
-    public void putBounds(float[] into, int at) {
-        BoundingBox.around(margin(corner(0), corner(1), corner(2)), v, this.at + CORNERS, 3, into, at);
-    }
-
     /** How far {@link #bounds} grows the corners' box on every side. */
     private double margin(Vector3f p1, Vector3f p2, Vector3f p3) {
         double e1 = p2.subtract(p1).magnitude();
@@ -195,32 +188,6 @@ public final class Triangle implements IGeometry {
 
     private static double maxAbs(Vector3f p) {
         return Math.max(Math.abs(p.x()), Math.max(Math.abs(p.y()), Math.abs(p.z())));
-    }
-
-    /**
-     * The plane's t and the hit point err by a few units of the last place of the distance run,
-     * and the side tests allow up to {@value RayTriangle#ALONG_THE_RAY} of the distance (summed over the
-     * axes, so up to √3 times that).
-     */
-    @Override
-    public Rounding rounding() {
-        return Rounding.linear(2 * RayTriangle.ALONG_THE_RAY);
-    }
-
-    /**
-     * For the rays from one point: the share of the distance by which the test lets a hit stray
-     * along such a ray ({@link RayTriangle#alongTheRayFrom}), times 2 as in {@link #rounding}.
-     */
-    @Override
-    public Rounding roundingFrom(Vector3f origin, float[] box, int boxAt) {
-        double along = RayTriangle.alongTheRayFrom(v, at, origin.x(), origin.y(), origin.z(), box, boxAt);
-        return along < RayTriangle.ALONG_THE_RAY ? Rounding.linear(Math.nextUp((float) (2 * along))) : rounding();
-    }
-
-    /** The same corners in the same order, whatever its colour, finish and corner normals. */
-    @Override
-    public Object sameTest() {
-        return List.of(corner(0), corner(1), corner(2));
     }
 
     @Override

@@ -209,7 +209,7 @@ class LightGridTest {
         int blocked = 0;
         for (int i = 0; i < 20_000; i++) {
             float[] box = new float[6];
-            boxes.get(random.nextInt(boxes.size())).putBounds(box, 0);
+            KnownShapes.putBox(boxes.get(random.nextInt(boxes.size())), box, 0);
             Grazing grazing = Grazing.of(box, x, random); // Q just inside the box's outline seen from the light
             double[] q = grazing.q();
             // the end, up to the gap off the light towards the inside; the origin beyond Q on the line

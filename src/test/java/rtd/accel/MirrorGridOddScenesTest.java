@@ -127,7 +127,7 @@ class MirrorGridOddScenesTest {
         List<float[]> boxes = new ArrayList<>();
         for (IGeometry object : scene.objects()) {
             float[] box = new float[6];
-            object.putBounds(box, 0);
+            KnownShapes.putBox(object, box, 0);
             if (ImageFootprint.isFinite(box)) {
                 boxes.add(box);
             }

@@ -174,7 +174,7 @@ class MirrorGridTest {
         int hits = 0;
         for (int i = 0; i < 20_000; i++) {
             float[] box = new float[6];
-            objects.get(random.nextInt(2_000)).putBounds(box, 0);
+            KnownShapes.putBox(objects.get(random.nextInt(2_000)), box, 0);
             Grazing grazing = Grazing.of(box, x, random); // Q just inside the box's outline seen from X
             double[] q = grazing.q();
             // the line through F, up to the gap off X away from the side, and Q; the origin on it,

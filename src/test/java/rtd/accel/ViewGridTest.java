@@ -135,8 +135,8 @@ class ViewGridTest {
         int[] pixels = {-7, -7, -7, -7};
         Sphere sphere = new Sphere(new Vector3f(0, 0, 0), 1, new Color(1, 2, 3));
         float[] box = new float[6];
-        sphere.putBounds(box, 0);
-        float nearest = footprint.put(box, 0, sphere.rounding().linear(), sphere.rounding().quadratic(), pixels, 0);
+        KnownShapes.putBox(sphere, box, 0);
+        float nearest = footprint.put(box, 0, KnownShapes.rounding(sphere).linear(), KnownShapes.rounding(sphere).quadratic(), pixels, 0);
         assertThat(pixels).containsExactly(95, 45, 105, 55);
         assertThat(nearest).isCloseTo(18.9975f, org.assertj.core.data.Offset.offset(0.0001f));
 
@@ -148,14 +148,14 @@ class ViewGridTest {
 
         // Beside the eye and half behind it: its points in front show at x' ≥ 100 · 1.998 / 1.002
         // = 199.4, beyond the picture's right edge (x' ≤ 100): no pixel.
-        new Sphere(new Vector3f(3, 0, 20), 1, new Color(1, 2, 3)).putBounds(box, 0);
+        KnownShapes.putBox(new Sphere(new Vector3f(3, 0, 20), 1, new Color(1, 2, 3)), box, 0);
         assertThat(footprint.put(box, 0, 0, 0, pixels, 0)).isNaN();
         // Around the eye: every pixel, from distance 0.
-        new Sphere(new Vector3f(0.5f, 0, 20), 1, new Color(1, 2, 3)).putBounds(box, 0);
+        KnownShapes.putBox(new Sphere(new Vector3f(0.5f, 0, 20), 1, new Color(1, 2, 3)), box, 0);
         assertThat(footprint.put(box, 0, 0, 0, pixels, 0)).isLessThanOrEqualTo(0);
         assertThat(pixels).containsExactly(0, 0, 199, 99);
         // Wholly behind the eye: no pixel.
-        new Sphere(new Vector3f(0, 0, 25), 1, new Color(1, 2, 3)).putBounds(box, 0);
+        KnownShapes.putBox(new Sphere(new Vector3f(0, 0, 25), 1, new Color(1, 2, 3)), box, 0);
         assertThat(footprint.put(box, 0, 0, 0, pixels, 0)).isNaN();
     }
 
@@ -207,20 +207,20 @@ class ViewGridTest {
         OrthographicCamera camera = new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50);
         Sphere sphere = new Sphere(new Vector3f(1, 0.5f, 0), 0.1f, new Color(1, 2, 3));
         float[] box = new float[6];
-        sphere.putBounds(box, 0);
+        KnownShapes.putBox(sphere, box, 0);
         int[] pixels = new int[4];
-        float nearest = new OrthographicFootprint(camera, 1920, 1080, 0).put(box, 0, sphere.rounding().linear(),
-                sphere.rounding().quadratic(), pixels, 0);
+        float nearest = new OrthographicFootprint(camera, 1920, 1080, 0).put(box, 0, KnownShapes.rounding(sphere).linear(),
+                KnownShapes.rounding(sphere).quadratic(), pixels, 0);
         assertThat(pixels).containsExactly(1005, 510, 1015, 520);
         // Its box's near side is 19.8998 from the plane, less √3 growths (0.00400), the origins'
         // error (0.00008) and a millionth for rounding (0.00002): 19.8957.
         assertThat(nearest).isCloseTo(19.8957f, org.assertj.core.data.Offset.offset(0.00002f));
         // Samples up to 5/6 into a pixel: the pixel before each range may send one in.
-        new OrthographicFootprint(camera, 1920, 1080, 5 / 6.0).put(box, 0, sphere.rounding().linear(),
-                sphere.rounding().quadratic(), pixels, 0);
+        new OrthographicFootprint(camera, 1920, 1080, 5 / 6.0).put(box, 0, KnownShapes.rounding(sphere).linear(),
+                KnownShapes.rounding(sphere).quadratic(), pixels, 0);
         assertThat(pixels).containsExactly(1005, 510, 1015, 520);
-        new OrthographicFootprint(camera, 1920, 1080, 0.99).put(box, 0, sphere.rounding().linear(),
-                sphere.rounding().quadratic(), pixels, 0);
+        new OrthographicFootprint(camera, 1920, 1080, 0.99).put(box, 0, KnownShapes.rounding(sphere).linear(),
+                KnownShapes.rounding(sphere).quadratic(), pixels, 0);
         assertThat(pixels).containsExactly(1004, 509, 1015, 520);
     }
 
@@ -229,15 +229,15 @@ class ViewGridTest {
         OrthographicCamera camera = new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50);
         int[] pixels = {-7, -7, -7, -7};
         float[] behind = new float[6];
-        new Sphere(new Vector3f(0, 0, 21), 0.5f, new Color(1, 2, 3)).putBounds(behind, 0);
+        KnownShapes.putBox(new Sphere(new Vector3f(0, 0, 21), 0.5f, new Color(1, 2, 3)), behind, 0);
         float[] beside = new float[6];
-        new Sphere(new Vector3f(30, 0, 0), 0.5f, new Color(1, 2, 3)).putBounds(beside, 0);
+        KnownShapes.putBox(new Sphere(new Vector3f(30, 0, 0), 0.5f, new Color(1, 2, 3)), beside, 0);
         ImageFootprint footprint = new OrthographicFootprint(camera, 1920, 1080, 0);
         assertThat(footprint.put(behind, 0, 0, 0, pixels, 0)).isNaN();
         assertThat(footprint.put(beside, 0, 0, 0, pixels, 0)).isNaN();
         assertThat(pixels).containsOnly(-7);
         float[] through = new float[6]; // the camera's plane cuts it: rays start inside it
-        new Sphere(new Vector3f(0, 0, 20.2f), 0.5f, new Color(1, 2, 3)).putBounds(through, 0);
+        KnownShapes.putBox(new Sphere(new Vector3f(0, 0, 20.2f), 0.5f, new Color(1, 2, 3)), through, 0);
         assertThat(footprint.put(through, 0, 0, 0, pixels, 0)).isNegative(); // the near side lies behind the plane
         assertThat(pixels).containsExactly(935, 515, 985, 565);
     }

@@ -65,19 +65,4 @@ class SphereTest {
         assertThat(box.min().x()).isLessThan(-2f).isGreaterThan(-2.1f);
         assertThat(box.max().z()).isGreaterThan(2f).isLessThan(2.1f);
     }
-
-    @Test
-    void writesTheSameBoxWithoutMakingOneAsItMakes() {
-        Random random = new Random(5);
-        for (int i = 0; i < 10_000; i++) {
-            float scale = (float) Math.pow(10, random.nextInt(9) - 4);
-            Sphere any = new Sphere(new Vector3f((random.nextFloat() - 0.5f) * scale, (random.nextFloat() - 0.5f) * scale,
-                    -random.nextFloat() * scale), random.nextFloat() * scale, Color.BLACK);
-            float[] written = new float[8];
-            any.putBounds(written, 1);
-            float[] made = new float[8];
-            any.bounds().put(made, 1);
-            assertThat(written).as(any.toString()).isEqualTo(made);
-        }
-    }
 }

@@ -124,19 +124,6 @@ class TriangleTest {
     }
 
     @Test
-    void writesTheSameBoxWithoutMakingOneAsItMakes() {
-        Random random = new Random(9);
-        for (int i = 0; i < 10_000; i++) {
-            Triangle any = randomTriangle(random);
-            float[] written = new float[8];
-            any.putBounds(written, 1);
-            float[] made = new float[8];
-            any.bounds().put(made, 1);
-            assertThat(written).as(any.corner(0) + " " + any.corner(1) + " " + any.corner(2)).isEqualTo(made);
-        }
-    }
-
-    @Test
     void writesExactlyItsTestNumbersWhereItIsToldAndNothingElse() {
         Random random = new Random(11);
         for (int i = 0; i < 10_000; i++) {

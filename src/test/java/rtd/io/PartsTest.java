@@ -69,9 +69,9 @@ class PartsTest {
                 .noneSatisfy(message -> assertThat(message).contains("'above'"));
     }
 
-    /** What an object is, by value: a triangle is equal only to itself. */
+    /** What an object is, by value: its kind, its box, its colour and finish. */
     private static String described(IGeometry object) {
-        return object.kind() + " " + object.sameTest() + " " + object.color() + " " + object.material();
+        return object.kind() + " " + object.bounds() + " " + object.color() + " " + object.material();
     }
 
     /** A material defined twice: the second is a mistake, and an object after both gets the first. */
