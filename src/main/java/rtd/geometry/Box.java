@@ -94,15 +94,31 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
     /** The normal of the face the point lies on: the axis along which it is nearest a face. */
     @Override
     public Vector3f normalAt(Vector3f point) {
+        return faceNormal(point, new Vector3f(1, 1, 1));
+    }
+
+    /**
+     * The normal of the face the ray crosses at {@code point}: of the six faces' planes, the one
+     * the ray meets nearest to the point, measured along the ray ({@code |P − face| / |R|} on
+     * each axis). At an edge the ray crosses one face and runs past the other; a ray that runs
+     * along a face's plane never crosses it, so that face is never chosen.
+     */
+    @Override
+    public Vector3f normalAt(Vector3f point, Vector3f direction) {
+        return faceNormal(point, direction);
+    }
+
+    private Vector3f faceNormal(Vector3f point, Vector3f direction) {
         float[] p = {point.x(), point.y(), point.z()};
+        float[] d = {direction.x(), direction.y(), direction.z()};
         float[] lo = {min.x(), min.y(), min.z()};
         float[] hi = {max.x(), max.y(), max.z()};
         int axis = 0;
         float sign = -1;
         float nearest = Float.POSITIVE_INFINITY;
         for (int k = 0; k < 3; k++) {
-            float toLow = Math.abs(p[k] - lo[k]);
-            float toHigh = Math.abs(hi[k] - p[k]);
+            float toLow = Math.abs(p[k] - lo[k]) / Math.abs(d[k]); // ∞ or NaN where the ray runs along the face
+            float toHigh = Math.abs(hi[k] - p[k]) / Math.abs(d[k]);
             if (toLow < nearest) {
                 nearest = toLow;
                 axis = k;

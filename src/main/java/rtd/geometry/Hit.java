@@ -18,8 +18,8 @@ import rtd.math.Vector3f;
  */
 public record Hit(IGeometry object, int index, float t, float distance, Vector3f point) {
 
-    /** The object's outward unit normal at the hit point. */
-    public Vector3f normal() {
-        return object.normalAt(point);
+    /** The object's outward unit normal at the hit point of a ray along {@code direction}. */
+    public Vector3f normal(Vector3f direction) {
+        return object.normalAt(point, direction);
     }
 }

@@ -35,6 +35,16 @@ public interface IGeometry {
     Vector3f normalAt(Vector3f point);
 
     /**
+     * The outward unit normal where a ray running along {@code direction} hits the surface at
+     * {@code point}: {@link #normalAt(Vector3f)}. A shape with edges overrides it to say which
+     * face a hit on an edge belongs to: the one the ray crosses there, never a face the ray runs
+     * along.
+     */
+    default Vector3f normalAt(Vector3f point, Vector3f direction) {
+        return normalAt(point);
+    }
+
+    /**
      * An axis-aligned box around the object, or {@link BoundingBox#UNBOUNDED} for an object
      * without limits. It must hold every hit {@link #intersect} can report (the engine grows it a
      * little for the rounding of float tests), and it does not depend on a camera: the engine

@@ -34,7 +34,7 @@ public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean i
     public static Surface at(Ray ray, Hit hit) {
         Vector3f point = hit.point();
         Vector3f eye = ray.direction().normalize().inverse();
-        Vector3f normal = hit.normal();
+        Vector3f normal = hit.normal(ray.direction());
         boolean inside = normal.dot(eye) < 0;
         if (inside) {
             normal = normal.inverse();

@@ -4,6 +4,7 @@ import java.util.List;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.image.Rgb;
+import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
@@ -37,7 +38,7 @@ public final class ViewShader implements Shader {
         return switch (view) {
             case cost -> hits.tests(i);
             case depth -> Float.floatToRawIntBits(hits.distance(i));
-            case normal -> normalColour(hits.hit(i, rays, objects));
+            case normal -> normalColour(hits.hit(i, rays, objects), rays.ray(i));
             case id -> IdColours.of(hits.index(i));
         };
     }
@@ -55,11 +56,11 @@ public final class ViewShader implements Shader {
     }
 
     /** {@code (N + 1)/2}, a channel per axis; no hit: black. */
-    static int normalColour(Hit hit) {
+    static int normalColour(Hit hit, Ray ray) {
         if (hit == null) {
             return 0;
         }
-        Vector3f n = hit.normal();
+        Vector3f n = hit.normal(ray.direction());
         return new Rgb((n.x() + 1) / 2, (n.y() + 1) / 2, (n.z() + 1) / 2).toColor().getRGB();
     }
 }

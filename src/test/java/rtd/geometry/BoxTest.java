@@ -62,4 +62,32 @@ class BoxTest {
     void aRayOfNoLengthFromInsideHitsNothing() {
         assertThat(box.intersect(ray(0, 0, 0, 0, 0, 0)).happened()).isFalse();
     }
+
+    /**
+     * A ray along the plane of the left face (x = −1) hits the front face (z = 3) on their shared
+     * edge, at (−1|0|3): it is as near the left face as the front one, but runs along it and
+     * crosses only the front. Its normal is the front's, (0|0|1), not the left's (−1|0|0), which
+     * would turn the lit face dark in a one-pixel seam.
+     */
+    @Test
+    void aHitOnAnEdgeBelongsToTheFaceTheRayCrossesNotTheOneItRunsAlong() {
+        Ray alongTheLeftFace = ray(-1, 0, 10, 0, 0, -1);
+        Vector3f point = box.intersect(alongTheLeftFace).contactCoord();
+        assertThat(point).isEqualTo(new Vector3f(-1, 0, 3));
+        assertThat(box.normalAt(point, alongTheLeftFace.direction())).isEqualTo(new Vector3f(0, 0, 1));
+        Ray alongTheTopFace = ray(0, 2, -10, 0, 0, 1); // y = 2, entering the back face z = −3
+        assertThat(box.normalAt(box.intersect(alongTheTopFace).contactCoord(), alongTheTopFace.direction()))
+                .isEqualTo(new Vector3f(0, 0, -1));
+        Ray fromInside = ray(1, 0, 0, 0, 0, 1); // inside, on the right face's plane: it leaves through the front
+        assertThat(box.normalAt(box.intersect(fromInside).contactCoord(), fromInside.direction()))
+                .isEqualTo(new Vector3f(0, 0, 1));
+    }
+
+    @Test
+    void aHitInsideAFaceTakesThatFacesNormalFromAnyDirection() {
+        Vector3f onTheRightFace = new Vector3f(1, 0.5f, -1);
+        assertThat(box.normalAt(onTheRightFace)).isEqualTo(new Vector3f(1, 0, 0));
+        assertThat(box.normalAt(onTheRightFace, new Vector3f(-1, 0.3f, 0.2f))).isEqualTo(new Vector3f(1, 0, 0));
+        assertThat(box.normalAt(onTheRightFace, new Vector3f(-0.01f, -1, 0))).isEqualTo(new Vector3f(1, 0, 0));
+    }
 }

@@ -8,7 +8,9 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.accel.Bvh;
+import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
@@ -185,5 +187,22 @@ class WhittedShaderTest {
         assertThat(surface.over().z()).isLessThan(-1f).isGreaterThan(-1.001f);
         assertThat(surface.under().z()).isGreaterThan(-1f).isLessThan(-0.999f);
         assertThat(surface.normal()).isEqualTo(new Vector3f(0, 0, -1));
+    }
+
+    /**
+     * A yellow box's front face under a white light, seen by an orthographic camera whose ray at
+     * x = 0 runs exactly along the box's left face: it hits the front face on the edge and is lit
+     * as the front face beside it (234 234 59), not darkened as if it hit the left face, which
+     * faces away from the light (55 55 14 was the seam).
+     */
+    @Test
+    void aRayAlongABoxFaceIsLitAsTheFaceItHitsOnTheEdge() {
+        Box box = Box.between(new Vector3f(0, -1, -1), new Vector3f(2, 1, 0), new Color(240, 240, 60), Material.DEFAULT);
+        Scene scene = new Scene(new Color(30, 30, 40), new OrthographicCamera(new Vector3f(0, 0, 10),
+                new Vector3f(0, 0, -1), 50), List.of(box), List.of(new Light(new Vector3f(-3, 4, 20), new Rgb(1, 1, 1))));
+        WhittedShader shader = shader(scene);
+        Rgb onTheEdge = shader.colourAt(new Ray(new Vector3f(0, 0, 10), new Vector3f(0, 0, -1)), WhittedShader.BOUNCES);
+        Rgb besideIt = shader.colourAt(new Ray(new Vector3f(0.02f, 0, 10), new Vector3f(0, 0, -1)), WhittedShader.BOUNCES);
+        assertThat(onTheEdge.toColor()).isEqualTo(new Color(234, 234, 59)).isEqualTo(besideIt.toColor());
     }
 }

@@ -134,8 +134,8 @@ class ViewTest {
         Scene scene = Scenes.example("input_rtd");
         Ray ray = scene.camera().generateRay(460, 490, 1920, 1080);
         Hit hit = scene.nearestHit(ray); // the red sphere's nearest point: normal (0, 0, 1)
-        assertThat(ViewShader.normalColour(hit)).isEqualTo(0x8080FF);
-        assertThat(ViewShader.normalColour(null)).isZero();
+        assertThat(ViewShader.normalColour(hit, ray)).isEqualTo(0x8080FF);
+        assertThat(ViewShader.normalColour(null, ray)).isZero();
     }
 
     private static int grey(Picture picture, int x, int y) {
