@@ -66,4 +66,20 @@ class ShapeStepsTest {
             }
         }
     }
+
+    /**
+     * The box from (0|−1|−1) to (2|1|0), a ray from (1|0|10) along (0|0|−1): along z it is between
+     * the faces from t = (0 − 10)/−1 = 10 (the max face, met first) to (−1 − 10)/−1 = 11, listed
+     * near to far.
+     */
+    @Test
+    void aBoxsSlabsAreListedNearToFar() {
+        Box box = Box.between(new Vector3f(0, -1, -1), new Vector3f(2, 1, 0), new Color(1, 2, 3), Material.DEFAULT);
+        Text text = new Text();
+        float t = IntersectionSteps.explain(text, "", box, new Ray(new Vector3f(1, 0, 10), new Vector3f(0, 0, -1)));
+        assertThat(t).isEqualTo(10f);
+        assertThat(text.toString()).contains("z: t from (max − O)/R = 10 to (min − O)/R = 11")
+                .contains("x: Rx = 0, the ray runs parallel to the slab and is inside it everywhere")
+                .contains("t = enter = 10: a hit");
+    }
 }
