@@ -1,6 +1,7 @@
 package rtd.view;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import rtd.geometry.IGeometry;
@@ -16,7 +17,10 @@ import rtd.scene.Scene;
  *     objects: the most the paper's loop (Listing 4.3) takes, so that pictures with and without
  *     the BVH share one scale and can be set side by side;</li>
  * <li>depth: grey from white at the nearest hit of the picture to dark grey at the farthest; no
- *     hit is black. The scale is the picture's own, so it is the same for every run;</li>
+ *     hit is black. Where the farthest hits lie more than twice as far as 90 % of them (an open
+ *     floor running to the horizon), the scale ends at that 90 %, and the hits beyond are dark
+ *     grey too, so that the scene's objects are not all white. The scale is the picture's own,
+ *     so it is the same for every run;</li>
  * <li>normal, id: the colours as the shader made them.</li>
  * </ul>
  *
@@ -26,6 +30,10 @@ import rtd.scene.Scene;
 public record ViewPicture(Picture picture, String report) {
 
     private static final int FAR_GREY = 48;
+    /** The share of the hits the depth scale spans when the farthest lie far beyond them. */
+    private static final double MOST_HITS = 0.9;
+    /** How far beyond {@link #MOST_HITS} of the hits the farthest must lie for the scale to stop there. */
+    private static final float LONG_TAIL = 2;
 
     /** The picture of {@code view} from the shader's numbers {@code raw}, a render of {@code scene}. */
     public static ViewPicture of(View view, Picture raw, Scene scene) {
@@ -66,31 +74,44 @@ public record ViewPicture(Picture picture, String report) {
     }
 
     private static ViewPicture depth(Picture raw) {
-        float near = Float.POSITIVE_INFINITY;
-        float far = Float.NEGATIVE_INFINITY;
-        for (int bits : raw.rgb()) {
-            float distance = Float.intBitsToFloat(bits);
-            if (Float.isFinite(distance)) {
-                near = Math.min(near, distance);
-                far = Math.max(far, distance);
-            }
-        }
-        if (near > far) {
+        float[] hits = hitDistances(raw.rgb());
+        if (hits.length == 0) {
             return new ViewPicture(new Picture(raw.width(), raw.height(), new int[raw.rgb().length]),
                     "depth: no ray hits anything; all black\n");
         }
+        float near = hits[0];
+        float farthest = hits[hits.length - 1];
+        float most = hits[(int) ((hits.length - 1) * MOST_HITS)];
+        boolean tail = farthest > LONG_TAIL * most; // an open floor or a far backdrop would leave the rest all white
+        float far = tail ? most : farthest;
         int[] rgb = new int[raw.rgb().length];
         for (int i = 0; i < rgb.length; i++) {
             float distance = Float.intBitsToFloat(raw.rgb()[i]);
-            rgb[i] = Float.isFinite(distance) ? grey(far > near ? (distance - near) / (double) (far - near) : 0) : 0;
+            rgb[i] = Float.isFinite(distance) ? grey(far > near ? Math.min(1, (distance - near) / (double) (far - near)) : 0) : 0;
         }
-        float nearest = near;
-        float farthest = far;
-        List<Legend.Tick> ticks = List.of(new Legend.Tick(0, label(nearest)), new Legend.Tick(1, label(farthest)));
+        List<Legend.Tick> ticks = List.of(new Legend.Tick(0, label(near)), new Legend.Tick(1, label(far) + (tail ? "+" : "")));
         Picture picture = Legend.below(new Picture(raw.width(), raw.height(), rgb), ViewPicture::grey, ticks);
+        String scale = tail ? String.format(Locale.ROOT, "dark grey at %s, which %d %% of the hits are nearer than (the "
+                + "farthest, at %s, are dark grey too)", label(far), Math.round(MOST_HITS * 100), label(farthest))
+                : String.format(Locale.ROOT, "dark grey at %s (the farthest)", label(far));
         String report = String.format(Locale.ROOT, "depth: |P − O| of each camera ray's nearest hit, white at %s (the "
-                + "nearest in the picture) to dark grey at %s (the farthest); no hit: black%n", label(nearest), label(farthest));
+                + "nearest in the picture) to %s; no hit: black%n", label(near), scale);
         return new ViewPicture(picture, report);
+    }
+
+    /** The finite distances of the picture's hits, sorted. */
+    private static float[] hitDistances(int[] raw) {
+        float[] hits = new float[raw.length];
+        int count = 0;
+        for (int bits : raw) {
+            float distance = Float.intBitsToFloat(bits);
+            if (Float.isFinite(distance)) {
+                hits[count++] = distance;
+            }
+        }
+        float[] sorted = Arrays.copyOf(hits, count);
+        Arrays.sort(sorted);
+        return sorted;
     }
 
     /** White at share 0 (near), dark grey at 1 (far). */

@@ -129,6 +129,35 @@ class ViewTest {
         assertThat(depth.report()).contains("white at 18.00", "no hit: black");
     }
 
+    /**
+     * Ten hits at 1 to 9 and 1000 units (an open floor's horizon): the farthest lies more than
+     * twice as far as 90 % of them, so the scale runs from 1 to 9 (hits[8] of the ten sorted):
+     * 5 is half way, grey 255 − 0.5·(255 − 48) = 151.5, rounded 152; 1000 is dark grey too.
+     * Without the far hit, at 1 to 10, the scale runs to the farthest.
+     */
+    @Test
+    void theDepthScaleEndsAtNinetyPercentOfTheHitsWhenTheFarthestLieFarBeyond() {
+        Scene empty = new Scene(Color.BLACK, Scenes.frontCamera(20, 10), List.of());
+        ViewPicture depth = ViewPicture.of(View.depth, distances(1, 2, 3, 4, 5, 6, 7, 8, 9, 1000), empty);
+        assertThat(grey(depth.picture(), 0, 0)).isEqualTo(255);
+        assertThat(grey(depth.picture(), 4, 0)).isEqualTo(152);
+        assertThat(grey(depth.picture(), 8, 0)).isEqualTo(48);
+        assertThat(grey(depth.picture(), 9, 0)).isEqualTo(48);
+        assertThat(depth.report()).contains("dark grey at 9.000, which 90 % of the hits are nearer than (the farthest, at 1000,");
+        ViewPicture closed = ViewPicture.of(View.depth, distances(1, 2, 3, 4, 5, 6, 7, 8, 9, 10), empty);
+        assertThat(grey(closed.picture(), 9, 0)).isEqualTo(48);
+        assertThat(grey(closed.picture(), 8, 0)).isEqualTo(71); // 255 − (8/9)·207 = 71
+        assertThat(closed.report()).contains("dark grey at 10.00 (the farthest)");
+    }
+
+    private static Picture distances(float... distances) {
+        int[] raw = new int[distances.length];
+        for (int i = 0; i < raw.length; i++) {
+            raw[i] = Float.floatToRawIntBits(distances[i]);
+        }
+        return new Picture(raw.length, 1, raw);
+    }
+
     @Test
     void theNormalViewShowsTheNormalAsColour() {
         Scene scene = Scenes.example("input_rtd");
