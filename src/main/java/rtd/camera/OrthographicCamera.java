@@ -15,6 +15,8 @@ public final class OrthographicCamera implements ICamera {
 
     private final Vector3f pos;
     private final Vector3f dir;
+    /** The point the scene file told the camera to look at, or null if it gave a direction. */
+    private final Vector3f target;
     private final float zoom;
     private final Vector3f widthVector;
     private final Vector3f heightVector;
@@ -24,8 +26,22 @@ public final class OrthographicCamera implements ICamera {
      * shows {@code zoom} pixels per world unit.
      */
     public OrthographicCamera(Vector3f pos, Vector3f dir, float zoom) {
+        this(pos, dir, null, zoom);
+    }
+
+    /**
+     * Makes a camera at {@code pos} that looks at the point {@code target} (not {@code pos}):
+     * its direction is {@code target − pos} (Part III, "A camera that looks at a point"), and it
+     * shows {@code zoom} pixels per world unit.
+     */
+    public static OrthographicCamera lookingAt(Vector3f pos, Vector3f target, float zoom) {
+        return new OrthographicCamera(pos, target.subtract(pos), target, zoom);
+    }
+
+    private OrthographicCamera(Vector3f pos, Vector3f dir, Vector3f target, float zoom) {
         this.pos = pos;
         this.dir = dir;
+        this.target = target;
         this.zoom = zoom;
         ImageAxes axes = ImageAxes.of(dir);
         this.widthVector = axes.u();
@@ -58,9 +74,14 @@ public final class OrthographicCamera implements ICamera {
         return pos;
     }
 
-    /** The view direction, exactly as the scene file gave it. */
+    /** The view direction, exactly as the scene file gave it, or {@code target − pos}. */
     public Vector3f direction() {
         return dir;
+    }
+
+    /** The point the scene file told the camera to look at, or null if it gave a direction. */
+    public Vector3f target() {
+        return target;
     }
 
     /** Pixels per world unit. */

@@ -16,6 +16,8 @@ public final class PerspectiveCamera implements ICamera {
 
     private final Vector3f pos;
     private final Vector3f dir;
+    /** The point the scene file told the camera to look at, or null if it gave a direction. */
+    private final Vector3f target;
     private final float fieldOfView;
     private final Vector3f forward;
     private final Vector3f widthVector;
@@ -28,8 +30,22 @@ public final class PerspectiveCamera implements ICamera {
      * horizontal field of view of {@code fieldOfView} degrees, {@code 0 < fov < 180}.
      */
     public PerspectiveCamera(Vector3f pos, Vector3f dir, float fieldOfView) {
+        this(pos, dir, null, fieldOfView);
+    }
+
+    /**
+     * Makes a camera at {@code pos} that looks at the point {@code target} (not {@code pos}):
+     * its direction is {@code target − pos} (Part III, "A camera that looks at a point"), and it
+     * has a horizontal field of view of {@code fieldOfView} degrees.
+     */
+    public static PerspectiveCamera lookingAt(Vector3f pos, Vector3f target, float fieldOfView) {
+        return new PerspectiveCamera(pos, target.subtract(pos), target, fieldOfView);
+    }
+
+    private PerspectiveCamera(Vector3f pos, Vector3f dir, Vector3f target, float fieldOfView) {
         this.pos = pos;
         this.dir = dir;
+        this.target = target;
         this.fieldOfView = fieldOfView;
         this.forward = dir.normalize();
         ImageAxes axes = ImageAxes.of(dir);
@@ -73,9 +89,14 @@ public final class PerspectiveCamera implements ICamera {
         return pos;
     }
 
-    /** The view direction, exactly as the scene file gave it. */
+    /** The view direction, exactly as the scene file gave it, or {@code target − pos}. */
     public Vector3f direction() {
         return dir;
+    }
+
+    /** The point the scene file told the camera to look at, or null if it gave a direction. */
+    public Vector3f target() {
+        return target;
     }
 
     /** The horizontal field of view in degrees. */

@@ -30,10 +30,14 @@ final class RayGeneration {
             text.line("O = pos + u·x'/zoom + v·y'/zoom = " + Numbers.of(orthographic.position()) + " + "
                     + Numbers.of(u.multiply(offsetX).divide(zoom)) + " + " + Numbers.of(v.multiply(offsetY).divide(zoom))
                     + " = " + Numbers.of(ray.origin()) + "   (zoom " + Numbers.of(zoom) + ")");
-            text.line("R = dir, as the scene file gives it = " + Numbers.of(ray.direction()));
+            text.line(orthographic.target() == null ? "R = dir, as the scene file gives it = " + Numbers.of(ray.direction())
+                    : "R = dir = at − pos = " + lookAt(orthographic.target(), orthographic.position(), ray.direction()));
         } else if (camera instanceof PerspectiveCamera perspective) {
             text.line("1. Ray generation (section 3.2.1; rtd's perspective camera: PerspectiveCamera.generateRay)").in();
             offsets(text, x, y, w, h, offsetX, offsetY);
+            if (perspective.target() != null) {
+                text.line("dir = at − pos = " + lookAt(perspective.target(), perspective.position(), perspective.direction()));
+            }
             axes(text, perspective.widthVector(), perspective.heightVector());
             float f = (float) (w / 2.0 * (1 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2)));
             text.line("f = (w/2) / tan(fov/2) = " + Numbers.of((float) (w / 2.0)) + " / tan(" + Numbers.of(perspective.fieldOfView())
@@ -52,6 +56,11 @@ final class RayGeneration {
     private static void offsets(Text text, int x, int y, int w, int h, int offsetX, int offsetY) {
         text.line("x' = x − w/2 = " + x + " − " + (w / 2) + " = " + offsetX + "   (whole numbers: the ray leaves the pixel's corner)");
         text.line("y' = y − h/2 = " + y + " − " + (h / 2) + " = " + offsetY);
+    }
+
+    private static String lookAt(Vector3f target, Vector3f position, Vector3f direction) {
+        return Numbers.of(target) + " − " + Numbers.of(position) + " = " + Numbers.of(direction)
+                + "   (the camera looks at the point)";
     }
 
     private static void axes(Text text, Vector3f u, Vector3f v) {

@@ -75,4 +75,25 @@ class PerspectiveCameraTest {
         assertThat(inside.direction().x() - corner.direction().x()).isCloseTo(0.5f, within(1e-4f));
         assertThat(inside.direction().y() - corner.direction().y()).isCloseTo(-0.5f, within(1e-4f));
     }
+
+    /**
+     * {@code perspective_camera:(0|3|10):(at 0|0|0):(60)}: the direction is the point minus the
+     * position, (0|−3|−10), and every ray is that of the camera given that direction.
+     */
+    @Test
+    void aCameraThatLooksAtAPointTakesThePointMinusItsPositionAsItsDirection() {
+        Vector3f position = new Vector3f(0, 3, 10);
+        PerspectiveCamera looking = PerspectiveCamera.lookingAt(position, Vector3f.ZERO, 60);
+        PerspectiveCamera given = new PerspectiveCamera(position, new Vector3f(0, -3, -10), 60);
+        assertThat(looking.direction()).isEqualTo(new Vector3f(0, -3, -10));
+        assertThat(looking.target()).isEqualTo(Vector3f.ZERO);
+        assertThat(given.target()).isNull();
+        OrthographicCamera flat = OrthographicCamera.lookingAt(position, new Vector3f(1, 0, 0), 50);
+        assertThat(flat.direction()).isEqualTo(new Vector3f(1, -3, -10));
+        for (int x = 0; x < 640; x += 71) {
+            assertThat(looking.generateRay(x, x / 2, 640, 480)).isEqualTo(given.generateRay(x, x / 2, 640, 480));
+            assertThat(flat.generateRay(x, x / 2, 640, 480))
+                    .isEqualTo(new OrthographicCamera(position, new Vector3f(1, -3, -10), 50).generateRay(x, x / 2, 640, 480));
+        }
+    }
 }
