@@ -12,9 +12,9 @@ import static rtd.geometry.TriangleNumbers.U;
 /**
  * The intersection test of a ray and a triangle, on the triangle's {@value Triangle#NUMBERS}
  * numbers ({@link TriangleNumbers}): it first finds where the ray meets the triangle's plane,
- * then asks on which side of each edge that point lies. {@link Triangle#intersect} runs it on a
- * triangle's own numbers, the BVH ({@code LeafObjects}) on its packed copy of many triangles'
- * numbers, and {@code --explain} ({@code TriangleSteps}) step by step.
+ * then asks on which side of each edge that point lies. Written once: {@link Triangle#intersect}
+ * runs it on a triangle's own numbers, the engine on the numbers of many triangles side by side,
+ * and {@code --explain} watches it through a {@link TestObserver}.
  *
  * <p>Each side test is a dot product with a vector fixed per edge ({@code n × edge}, in the
  * plane, pointing inwards), so its rounding error, as a distance, is a few units of the last

@@ -6,8 +6,8 @@ import java.awt.image.BufferedImage;
  * A rendered picture: {@code width × height} pixels, row by row from the top left, each
  * packed as {@code 0xRRGGBB} (the layout of {@link rtd.image.Color#getRGB}).
  *
- * <p>It is a plain array rather than a {@link BufferedImage} so that the command line never
- * starts Java's imaging toolkit: that alone takes longer than rendering a small scene.
+ * <p>It is a plain array rather than a {@link BufferedImage} so that rendering a picture needs
+ * none of Java's imaging toolkit ({@code java.awt}), which is slow to start.
  * The array is shared, not copied: the renderer fills it, and after that it is only read.
  *
  * @param width  pixels per row

@@ -16,8 +16,9 @@ import rtd.math.Ray;
  * <p>This is where the paper's algorithm (Listing 3.1) lives, in the paper's shape:
  * {@link #render} makes a ray for every pixel (ray generation, section 3.2.1) and
  * {@link #trace} colours it from {@link #nearestHit}, which tests it against every object
- * (intersection test, section 3.2.2) and keeps the nearest (depth test, section 3.2.3, Listing 4.3). It is the plain reference, and {@code --paper} runs
- * it; {@code rtd.render} and {@code rtd.accel} hold faster paths that draw the same pixels.
+ * (intersection test, section 3.2.2) and keeps the nearest (depth test, section 3.2.3, Listing
+ * 4.3). It is the plain reference, and {@code --paper} runs it; {@code rtd.render} and
+ * {@code rtd.accel} hold faster paths that call the same tests and draw the same pixels.
  *
  * @param ambient the colour of every pixel whose ray hits nothing
  * @param camera  makes the rays

@@ -16,8 +16,8 @@ public final class FlatShader implements Shader {
 
     /**
      * The background's colour at 0, then each object's in file order: the colour of a ray whose
-     * nearest object is at place {@code index} (−1: none) is {@code colours[index + 1]}. No branch
-     * on hit or miss, which the JIT would compile anew at the first miss of a picture.
+     * nearest object is at place {@code index} (−1: none) is {@code colours[index + 1]}, so that
+     * a hit and a miss take the same path, without a branch.
      */
     private final int[] colours;
 
@@ -33,7 +33,7 @@ public final class FlatShader implements Shader {
     /**
      * A bundle that missed everything is the background throughout, and one whose rays all hit
      * one object is its colour throughout, filled at once: most of the paper's picture is sky or
-     * the inside of a sphere, and colouring them ray by ray was most of its render.
+     * the inside of a sphere, where every ray of a bundle has the same colour.
      */
     @Override
     public void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {

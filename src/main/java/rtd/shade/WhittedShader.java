@@ -42,8 +42,8 @@ public final class WhittedShader implements Shader {
 
     private final Scene scene;
     /**
-     * The scene's lights, as an array: a loop over a list makes an iterator for every point lit,
-     * which the JIT did not remove here (docs/performance.md, the fifteenth round).
+     * The scene's lights, as an array: the loop over them runs for every point lit, and a loop
+     * over an array makes no iterator object there.
      */
     private final Light[] lights;
     private final Tracer tracer;

@@ -14,8 +14,8 @@ import rtd.scene.Scene;
  *
  * <ul>
  * <li>cost: a heat map on a logarithmic scale from 0 to N tests, N the scene's number of
- *     objects: the most the paper's loop (Listing 4.3) takes, so that pictures with and without
- *     the BVH share one scale and can be set side by side;</li>
+ *     objects: the most the paper's loop (Listing 4.3) takes, so that the pictures of one scene
+ *     with each {@code --accel} share one scale and can be set side by side;</li>
  * <li>depth: grey from white at the nearest hit of the picture to dark grey at the farthest; no
  *     hit is black. Where the farthest hits lie more than twice as far as 90 % of them (an open
  *     floor running to the horizon), the scale ends at that 90 %, and the hits beyond are dark

@@ -13,8 +13,8 @@ import rtd.render.Shader;
 /**
  * The "shader" of a debug view: for each camera ray a number, not a colour, in the picture's
  * int. The renderer moves ints without looking at them, so a view renders on every path the
- * picture does (all threads, the paper's loop, the BVH or the view grid); {@link ViewPicture} turns the numbers
- * into colours once the scale of the whole picture is known.
+ * picture does (all threads, the paper's loop, every {@code --accel}); {@link ViewPicture} turns the
+ * numbers into colours once the scale of the whole picture is known.
  *
  * <ul>
  * <li>cost: the ray's count of intersection tests;</li>
