@@ -39,7 +39,7 @@ final class RayGeneration {
                 text.line("dir = at − pos = " + lookAt(perspective.target(), perspective.position(), perspective.direction()));
             }
             axes(text, perspective.widthVector(), perspective.heightVector());
-            float f = (float) (w / 2.0 * (1 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2)));
+            float f = perspective.focalLength(w);
             text.line("f = (w/2) / tan(fov/2) = " + Numbers.of((float) (w / 2.0)) + " / tan(" + Numbers.of(perspective.fieldOfView())
                     + "°/2) = " + Numbers.of(f) + " pixels");
             text.line("O = pos = " + Numbers.of(ray.origin()));
