@@ -25,7 +25,7 @@ final class MeshFiles {
     }
 
     /** The mesh in the OBJ file that group {@code g} of the statement names. */
-    static ObjMesh read(GroupValues values, int g) throws StatementError {
+    static ObjMesh read(StatementValues values, int g) throws StatementError {
         SourceText scene = values.source();
         String written = values.name(g);
         Path file;
