@@ -42,7 +42,8 @@ final class MeshFiles {
             bytes = readFile(file);
         } catch (IOException e) {
             throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
-                    "a mesh's path is relative to the folder of the scene file");
+                    e instanceof NoSuchFileException && written.indexOf('\\') >= 0 ? Hints.forWindowsPath(written)
+                            : "a mesh's path is relative to the folder of the scene file");
         }
         ObjMesh mesh;
         try {
