@@ -38,7 +38,7 @@ final class Grammar {
 
     private static final Material DEFAULT = Material.DEFAULT;
     /** The radius from which a sphere warns of shadow acne in a shaded scene ({@link #sphere}). */
-    static final float FLOOR_RADIUS = 1000;
+    static final float FLOOR_RADIUS = 5000;
     private static final String VIEW_HELP = "the camera looks along it; (0|0|-1) looks into the screen";
 
     /** Every statement, in the order the messages list them. */
@@ -134,16 +134,18 @@ final class Grammar {
     }
 
     /**
-     * A sphere; one of {@value #FLOOR_RADIUS} or more warns in a shaded scene. Near its surface a
-     * float's spacing is about the lift that keeps a shadow ray from hitting its own start, so
-     * the rounding of its hit points shows as shadow acne, the speckles of a floor made that way.
+     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene. On a surface
+     * that large, float rounds the hit points by more than the lift that keeps a shadow ray from
+     * hitting its own start: a floor made of such a sphere, a trick of many tutorials, is speckled
+     * with shadow acne (from a radius of about 6000 in a view of a few units; a radius of 1000, as
+     * <i>Ray Tracing in One Weekend</i> uses, draws clean).
      */
     private static Sphere sphere(StatementValues v, Statement.Output out) throws StatementError {
         Sphere sphere = new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material());
         if (sphere.radius() >= FLOOR_RADIUS) {
             out.warningIfLit(v.warningAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
-                    + " will show shadow acne: float is too coarse on a surface that large",
-                    "for a floor or a wall, use a plane, such as plane:(0|0|0):(0|1|0):(200|200|200)"));
+                    + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
+                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0"));
         }
         return sphere;
     }

@@ -187,7 +187,7 @@ final class StatementValues {
         }
         if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
             throw errorAt(groups.starts[groups.firsts[g]], "the point " + groupText(g) + " is too " + (Float.isInfinite(squaredLength)
-                    ? "far from" : "near to") + " the camera's position to compute the view direction in float",
+                    ? "far from" : "near") + " the camera's position to compute the view direction in float",
                     "give a point at a distance near 1 to 1000 from the camera");
         }
         return target;
