@@ -48,7 +48,7 @@ final class MeshFiles {
         ObjMesh mesh;
         try {
             try (SourceText obj = new SourceText(shown, bytes)) {
-                mesh = ObjParser.parse(obj);
+                mesh = ObjReader.read(obj);
             }
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();

@@ -44,19 +44,30 @@ final class ObjReader {
 
     private final List<SceneError> errors = new ArrayList<>();
 
-    /** A reader of {@code source} from byte {@code start} (after a byte-order mark). */
-    ObjReader(SourceText source, int start) {
+    /**
+     * The mesh in {@code source}, or every mistake found in it (up to one more than
+     * {@link SceneParser#MAX_ERRORS}, so that the caller can tell there were more). A file with a
+     * NUL byte is no text, and is refused at it before any line is read.
+     */
+    static ObjMesh read(SourceText source) throws SceneException {
+        byte[] bytes = source.bytes();
+        for (int i = 0; i < bytes.length; i++) {
+            if (bytes[i] == 0) {
+                throw new SceneException(List.of(NotText.inObjFile(source, i)), false);
+            }
+        }
+        return new ObjReader(source, ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
+    }
+
+    private ObjReader(SourceText source, int start) {
         this.source = source;
         this.bytes = source.bytes();
         this.pos = start;
         this.lineStart = start;
     }
 
-    /**
-     * Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS} (so that
-     * the caller can tell there were more): the mesh, or its mistakes.
-     */
-    ObjMesh readAll() throws SceneException {
+    /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}: the mesh, or its mistakes. */
+    private ObjMesh readAll() throws SceneException {
         while (pos < bytes.length && errors.size() <= SceneParser.MAX_ERRORS) {
             try {
                 readLine();

@@ -21,7 +21,7 @@ class ConcaveFacesTest {
     Path folder;
 
     private static ObjMesh read(String obj) throws SceneException {
-        return ObjParser.parse(new SourceText("model.obj", obj.getBytes(StandardCharsets.UTF_8)));
+        return ObjReader.read(new SourceText("model.obj", obj.getBytes(StandardCharsets.UTF_8)));
     }
 
     private static int[] corners(ObjMesh mesh) {

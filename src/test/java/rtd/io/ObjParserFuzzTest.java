@@ -11,10 +11,10 @@ import java.util.Arrays;
 /**
  * Fuzzes the OBJ reader with Jazzer, as {@link SceneParserFuzzTest} does the scene parser. Under
  * {@code mvn verify} it runs in regression mode on the committed seeds in
- * {@code src/test/resources/rtd/io/ObjParserFuzzTestInputs}; to search for new inputs, run
- * {@code JAZZER_FUZZ=1 mvn test -Dtest=ObjParserFuzzTest}.
+ * {@code src/test/resources/rtd/io/ObjReaderFuzzTestInputs}; to search for new inputs, run
+ * {@code JAZZER_FUZZ=1 mvn test -Dtest=ObjReaderFuzzTest}.
  */
-class ObjParserFuzzTest {
+class ObjReaderFuzzTest {
 
     /** Long enough for any input of the corpus on a slow, shared machine; a hang takes forever. */
     private static final Duration TIME_LIMIT = Duration.ofSeconds(10);
@@ -37,7 +37,7 @@ class ObjParserFuzzTest {
         SourceText source = new SourceText("fuzz.obj", bytes);
         ObjMesh mesh;
         try {
-            mesh = ObjParser.parse(source);
+            mesh = ObjReader.read(source);
         } catch (SceneException e) {
             assertThat(e.errors()).isNotEmpty().hasSizeLessThanOrEqualTo(SceneParser.MAX_ERRORS + 1);
             for (SceneError error : e.errors()) {
