@@ -9,7 +9,8 @@ package rtd.io;
 final class LineCursor {
 
     final SourceText source;
-    final byte[] bytes;
+    /** The source's bytes, until {@link #release}. */
+    byte[] bytes;
     /** The byte being read. */
     int pos;
     /** The number of the line being read, from 1, and the offset of its first byte. */
@@ -22,6 +23,15 @@ final class LineCursor {
         this.bytes = source.bytes();
         this.pos = start;
         this.lineStart = start;
+    }
+
+    /**
+     * Lets the bytes go once the file is read. A parse lasts long enough for the collector to
+     * move the cursor to the old generation, where nothing finds it dead before a concurrent
+     * mark; as long as it points to the bytes, they would stay through the build and the render.
+     */
+    void release() {
+        bytes = null;
     }
 
     /** Whether the cursor is at ':', blanks and '(': the start of a group. */

@@ -23,7 +23,8 @@ final class ObjReader {
     private static final String CORNER_FORMS = "a corner is written 3, 3/1, 3//2 or 3/1/2";
 
     private final SourceText source;
-    private final byte[] bytes;
+    /** The source's bytes, until the file is read (see {@link LineCursor#release}). */
+    private byte[] bytes;
     private int pos;
     private int line = 1;
     private int lineStart;
@@ -76,6 +77,7 @@ final class ObjReader {
             }
             skipToNextLine();
         }
+        bytes = null;
         if (!errors.isEmpty()) {
             throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneParser.MAX_ERRORS + 1)), false);
         }

@@ -35,7 +35,7 @@ final class SceneContents implements Statement.Output {
     record Found(int line, int column, SceneError error) {
     }
 
-    final List<IGeometry> objects = new ArrayList<>();
+    final List<IGeometry> objects;
     final List<Pending> pending = new ArrayList<>();
     final List<Located<Color>> ambients = new ArrayList<>();
     final List<Located<ICamera>> cameras = new ArrayList<>();
@@ -57,9 +57,15 @@ final class SceneContents implements Statement.Output {
     SceneError firstLineNumber;
     int lineNumbers;
     /** Where {@link #object} puts objects: {@link #objects}, or the list a pending object is built into. */
-    private List<IGeometry> into = objects;
+    private List<IGeometry> into;
     /** The values of the statement being built, for the places of what it makes. */
     private StatementValues values;
+
+    /** Contents for about {@code expectedObjects} objects; more are fine. */
+    SceneContents(int expectedObjects) {
+        objects = new ArrayList<>(expectedObjects);
+        into = objects;
+    }
 
     /** Takes the places of what statements make from {@code values}, which the reader fills. */
     void readFrom(StatementValues values) {

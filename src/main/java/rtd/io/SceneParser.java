@@ -33,6 +33,8 @@ final class SceneParser {
 
     /** After this many errors reading stops; more would only scroll the first ones away. */
     static final int MAX_ERRORS = 20;
+    /** Fewer bytes than any line that makes an object, {@code sphere:(0|0|0):(1):(0|0|0)} and its line break. */
+    private static final int SHORTEST_OBJECT = 24;
     private static final String CAMERA_EXAMPLE = "orthographic_camera:(0|0|20):(0|0|-1):(50)";
 
     private SceneParser() {
@@ -45,11 +47,21 @@ final class SceneParser {
     static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
         int start = ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0;
-        int bad = NotText.firstBadByte(bytes, start, bytes.length);
+        int lines = 1;
+        boolean plain = true;
+        for (int i = start; i < bytes.length; i++) {
+            if (bytes[i] <= '\r') { // one test for the rare bytes: line breaks, control characters, every non-ASCII byte
+                lines += bytes[i] == '\n' || bytes[i] == '\r' && ByteClasses.endsLine(bytes, i) ? 1 : 0;
+                plain &= bytes[i] > 0;
+            }
+        }
+        int bad = plain ? -1 : NotText.firstBadByte(bytes, start, bytes.length);
         if (bad >= 0) {
             throw new SceneException(List.of(NotText.error(source, start, bad)), false);
         }
-        SceneContents contents = new SceneContents();
+        // Most lines of a large file make one object, so the list is made that long at once: grown
+        // line by line, its large arrays would go to the old generation, and stay there long.
+        SceneContents contents = new SceneContents(Math.min(lines, (bytes.length - start) / SHORTEST_OBJECT + 1));
         new StatementReader(source, start, contents).readAll();
         return join(source, contents, warnings);
     }

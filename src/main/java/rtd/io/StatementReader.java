@@ -49,6 +49,7 @@ final class StatementReader {
             }
             cursor.skipToNextLine();
         }
+        cursor.release();
     }
 
     // ---- one statement ------------------------------------------------------------------
