@@ -83,7 +83,8 @@ final class GroupReader {
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
     private void readName(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && (ByteClasses.isWordByte(cursor.bytes[cursor.pos]) || cursor.bytes[cursor.pos] == '-')) {
+        byte[] bytes = cursor.bytes;
+        while (cursor.pos < bytes.length && (ByteClasses.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
             cursor.pos++;
         }
         if (cursor.pos == start) {
@@ -93,7 +94,8 @@ final class GroupReader {
         int nameEnd = cursor.pos;
         cursor.skipBlanks();
         if (!cursor.at(')')) {
-            throw cursor.error(cursor.pos, "expected ')' after '" + cursor.source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
+            throw cursor.error(cursor.pos, "expected ')' after '" + cursor.source.text(start, nameEnd) + "' in "
+                    + group.of(statement) + ", found "
                     + cursor.describe(cursor.pos), nameHint(group, start));
         }
         cursor.pos++;
@@ -118,7 +120,9 @@ final class GroupReader {
     /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
     private void readPath(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && cursor.bytes[cursor.pos] != ')' && !ByteClasses.isLineBreak(cursor.bytes[cursor.pos]) && !cursor.atNextGroup()) {
+        byte[] bytes = cursor.bytes;
+        while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !ByteClasses.isLineBreak(bytes[cursor.pos])
+                && !cursor.atNextGroup()) {
             cursor.pos++;
         }
         if (!cursor.at(')')) {
@@ -238,7 +242,7 @@ final class GroupReader {
             cursor.pos++;
         }
         if (cursor.pos == tokenStart) {
-            boolean emptyPlace = cursor.pos < cursor.bytes.length && (cursor.bytes[cursor.pos] == '|' || cursor.bytes[cursor.pos] == ')');
+            boolean emptyPlace = cursor.at('|') || cursor.at(')');
             throw cursor.error(cursor.pos, "expected a number, found " + cursor.describe(cursor.pos),
                     emptyPlace ? "a number is missing here: each place between '(', '|' and ')' holds one" : null);
         }
@@ -256,10 +260,10 @@ final class GroupReader {
     private StatementError notANumber() {
         int invisible = firstInvisible(tokenStart, cursor.pos);
         if (invisible == tokenStart) {
-            return cursor.error(invisible, "expected a number, found " + cursor.source.describe(invisible, cursor.lineStart), null);
+            return cursor.error(invisible, "expected a number, found " + cursor.describe(invisible), null);
         }
         if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
-            return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.source.describe(invisible, cursor.lineStart), null);
+            return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
         }
         String token = cursor.source.text(tokenStart, cursor.pos);
         return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));

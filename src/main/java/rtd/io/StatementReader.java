@@ -134,7 +134,8 @@ final class StatementReader {
         if (afterLineNumber || !atLineNumber()) {
             throw unknownKeyword(statementStart);
         }
-        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + cursor.source.text(statementStart, cursor.pos)
+        String number = cursor.source.text(statementStart, cursor.pos);
+        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + number
                 + "'", Hints.LINE_NUMBERS).place());
         cursor.skipBlanks();
         return cursor.atEndOfStatement() ? null : readKeyword(true);
@@ -164,7 +165,8 @@ final class StatementReader {
         } else if (cursor.at('/')) {
             help = Hints.COMMENTS + ", two slashes"; // one slash alone: the second was forgotten
         }
-        return cursor.error(cursor.pos, "expected a statement (" + Grammar.keywordList() + "), found " + cursor.describe(cursor.pos), help);
+        return cursor.error(cursor.pos, "expected a statement (" + Grammar.keywordList() + "), found "
+                + cursor.describe(cursor.pos), help);
     }
 
     /** Text after a whole statement: a comment as other languages write it, a ';', a second statement. */
@@ -180,7 +182,8 @@ final class StatementReader {
             String second = secondStatement(cursor.pos);
             help = second != null ? second : "a comment after a statement starts with //";
         }
-        return cursor.error(cursor.pos, "expected the end of the line after the statement, found " + cursor.describe(cursor.pos), help);
+        return cursor.error(cursor.pos, "expected the end of the line after the statement, found "
+                + cursor.describe(cursor.pos), help);
     }
 
     /** The help for a second statement (a keyword, then ':') from {@code from} on, after blanks; or null. */

@@ -186,8 +186,9 @@ final class StatementValues {
                     "give a point in front of the camera, such as (at 0|0|0) for the origin");
         }
         if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
-            throw errorAt(groups.starts[groups.firsts[g]], "the point " + groupText(g) + " is too " + (Float.isInfinite(squaredLength)
-                    ? "far from" : "near") + " the camera's position to compute the view direction in float",
+            String tooWhat = Float.isInfinite(squaredLength) ? "far from" : "near";
+            throw errorAt(groups.starts[groups.firsts[g]], "the point " + groupText(g) + " is too " + tooWhat
+                    + " the camera's position to compute the view direction in float",
                     "give a point at a distance near 1 to 1000 from the camera");
         }
         return target;
@@ -199,7 +200,7 @@ final class StatementValues {
         return new Color(channel(i, "red", i), channel(i + 1, "green", i), channel(i + 2, "blue", i));
     }
 
-    /** The value of {@code key} in the properties of group {@code g}, finite and at least {@code minimum}, or {@code fallback}. */
+    /** The value of {@code key} in group {@code g}'s properties, finite and at least {@code minimum}; else {@code fallback}. */
     float property(int g, String key, float fallback, float minimum) throws StatementError {
         int index = statement.groups().get(g).keys().indexOf(key);
         for (int i = groups.firsts[g]; i < groups.end(g); i++) {
