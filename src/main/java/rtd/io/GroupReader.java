@@ -202,9 +202,8 @@ final class GroupReader {
     }
 
     /**
-     * Too many numbers in a group. Where the line has fewer groups than the statement takes from
-     * this one on, the likelier mistake is this group left out (its numbers are the next group's),
-     * and the hint says so: {@code sphere:(3|8|-1):(0|127|255)} lacks its radius.
+     * Too many numbers in a group; where the line has too few groups, the hint says this group was
+     * likely left out (its numbers are the next group's): {@code sphere:(3|8|-1):(0|127|255)}.
      */
     private StatementError tooManyNumbers(Statement statement, Group group, int groupStart) {
         String message = "too many numbers in %s: it takes " + contents(group);
