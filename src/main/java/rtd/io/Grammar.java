@@ -4,6 +4,7 @@ import static rtd.io.Group.name;
 import static rtd.io.Group.numbers;
 import static rtd.io.Group.path;
 import static rtd.io.Group.properties;
+import static rtd.io.Group.view;
 
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
@@ -29,14 +30,15 @@ import rtd.scene.Light;
  *
  * <p>To add a statement, add one entry to {@link #STATEMENTS} ({@link Statement#shape} for one that
  * makes an object, {@link Statement#setting} for the others): the reader, the messages (the
- * usage in "write it as …", the keyword list, "did you mean …?") and the parts of a large file
- * all follow from it. Its groups are read and checked for form by {@link GroupReader} (which
- * {@link StatementReader} extends); its
- * builder asks {@link GroupValues} for values by group index, which checks the rules for them.
+ * usage in "write it as …", the keyword list, "did you mean …?") follow from it. Its groups are
+ * read and checked for form by {@link GroupReader}; its builder asks {@link StatementValues} for
+ * values by group index, which checks the rules for them.
  */
 final class Grammar {
 
     private static final Material DEFAULT = Material.DEFAULT;
+    /** The radius from which a sphere warns of shadow acne in a shaded scene ({@link #sphere}). */
+    static final float FLOOR_RADIUS = 5000;
     private static final String VIEW_HELP = "the camera looks along it; (0|0|-1) looks into the screen";
 
     /** Every statement, in the order the messages list them. */
@@ -44,16 +46,14 @@ final class Grammar {
             Statement.setting("ambient", List.of(numbers("colour", "R|G|B")),
                     (v, out) -> out.ambient(v.colour(0))),
             Statement.setting("orthographic_camera",
-                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"), numbers("zoom", "zoom")),
-                    (v, out) -> out.camera(new OrthographicCamera(v.vector(0), v.direction(1, VIEW_HELP), v.positive(2)))),
+                    List.of(numbers("position", "x|y|z"), view("view direction"), numbers("zoom", "zoom")),
+                    (v, out) -> out.camera(orthographic(v))),
             Statement.setting("perspective_camera",
-                    List.of(numbers("position", "x|y|z"), numbers("view direction", "x|y|z"),
-                            numbers("field of view", "fov")),
-                    (v, out) -> out.camera(new PerspectiveCamera(v.vector(0), v.direction(1, VIEW_HELP),
-                            v.between(2, 0, 180, "degrees", "it is the angle the picture's width spans, such as 60")))),
+                    List.of(numbers("position", "x|y|z"), view("view direction"), numbers("field of view", "fov")),
+                    (v, out) -> out.camera(perspective(v))),
             Statement.shape("sphere",
                     List.of(numbers("centre", "x|y|z"), numbers("radius", "r"), numbers("colour", "R|G|B")),
-                    (v, out) -> out.object(new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material()))),
+                    (v, out) -> out.object(sphere(v, out))),
             Statement.shape("plane",
                     List.of(numbers("point", "x|y|z"), numbers("normal", "nx|ny|nz"), numbers("colour", "R|G|B")),
                     (v, out) -> out.object(new Plane(v.vector(0),
@@ -83,7 +83,7 @@ final class Grammar {
                     (v, out) -> out.material(v.name(0), material(v))));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
-    private static Material material(GroupValues v) throws StatementError {
+    private static Material material(StatementValues v) throws StatementError {
         return new Material(v.property(1, "ambient", DEFAULT.ambient(), 0), v.property(1, "diffuse", DEFAULT.diffuse(), 0),
                 v.property(1, "specular", DEFAULT.specular(), 0), v.property(1, "shininess", DEFAULT.shininess(), 0),
                 v.property(1, "reflective", DEFAULT.reflective(), 0),
@@ -115,8 +115,43 @@ final class Grammar {
                 + " or " + quoted.get(quoted.size() - 1);
     }
 
+    /** The orthographic camera, looking along its direction or at its point. */
+    private static OrthographicCamera orthographic(StatementValues v) throws StatementError {
+        Vector3f pos = v.vector(0);
+        if (v.isTarget(1)) {
+            return OrthographicCamera.lookingAt(pos, v.target(1, pos), v.positive(2));
+        }
+        return new OrthographicCamera(pos, v.direction(1, VIEW_HELP), v.positive(2));
+    }
+
+    /** The perspective camera, looking along its direction or at its point. */
+    private static PerspectiveCamera perspective(StatementValues v) throws StatementError {
+        Vector3f pos = v.vector(0);
+        boolean looksAtPoint = v.isTarget(1);
+        Vector3f view = looksAtPoint ? v.target(1, pos) : v.direction(1, VIEW_HELP);
+        float fov = v.between(2, 0, 180, "degrees", "it is the angle the picture's width spans, such as 60");
+        return looksAtPoint ? PerspectiveCamera.lookingAt(pos, view, fov) : new PerspectiveCamera(pos, view, fov);
+    }
+
+    /**
+     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene. On a surface
+     * that large, float rounds the hit points by more than the lift that keeps a shadow ray from
+     * hitting its own start: a floor made of such a sphere, a trick of many tutorials, is speckled
+     * with shadow acne (from a radius of about 6000 in a view of a few units; a radius of 1000, as
+     * <i>Ray Tracing in One Weekend</i> uses, draws clean).
+     */
+    private static Sphere sphere(StatementValues v, Statement.Output out) throws StatementError {
+        Sphere sphere = new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material());
+        if (sphere.radius() >= FLOOR_RADIUS) {
+            out.warningIfLit(v.warningAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
+                    + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
+                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0"));
+        }
+        return sphere;
+    }
+
     /** A triangle whose corners do not lie on one line (else it has no area and is never hit). */
-    private static Triangle triangle(GroupValues v) throws StatementError {
+    private static Triangle triangle(StatementValues v) throws StatementError {
         Vector3f p1 = v.vector(0);
         Vector3f p2 = v.vector(1);
         Vector3f p3 = v.vector(2);
@@ -134,7 +169,7 @@ final class Grammar {
     }
 
     /** A box whose corners differ in every coordinate (else it is flat). */
-    private static Box box(GroupValues v) throws StatementError {
+    private static Box box(StatementValues v) throws StatementError {
         Vector3f a = v.vector(0);
         Vector3f b = v.vector(1);
         Color colour = v.colour(2);

@@ -13,8 +13,10 @@ import java.util.List;
  * @param shape   how it is written, for "write it as …": {@code x|y|z}, {@code path}
  * @param size    how many numbers a {@link Kind#NUMBERS} group holds; 1 for the others
  * @param keys    the keys a {@link Kind#PROPERTIES} group may hold; empty for the others
+ * @param orAt    whether the group may be written {@code (at x|y|z)} instead, a point to look at
+ *                (Part III, "A camera that looks at a point")
  */
-record Group(String meaning, Kind kind, String shape, int size, List<String> keys) {
+record Group(String meaning, Kind kind, String shape, int size, List<String> keys, boolean orAt) {
 
     /** What a group holds. */
     enum Kind {
@@ -30,22 +32,27 @@ record Group(String meaning, Kind kind, String shape, int size, List<String> key
 
     /** A group of numbers written as {@code shape}, such as {@code x|y|z}; their count is the shape's. */
     static Group numbers(String meaning, String shape) {
-        return new Group(meaning, Kind.NUMBERS, shape, shape.split("\\|").length, List.of());
+        return new Group(meaning, Kind.NUMBERS, shape, shape.split("\\|").length, List.of(), false);
+    }
+
+    /** A camera's view direction {@code (x|y|z)}, or {@code (at x|y|z)}: the point it looks at. */
+    static Group view(String meaning) {
+        return new Group(meaning, Kind.NUMBERS, "x|y|z", 3, List.of(), true);
     }
 
     /** A group that holds one name, written as {@code shape} in the statement's usage. */
     static Group name(String meaning, String shape) {
-        return new Group(meaning, Kind.NAME, shape, 1, List.of());
+        return new Group(meaning, Kind.NAME, shape, 1, List.of(), false);
     }
 
     /** A group that holds one file path. */
     static Group path(String meaning) {
-        return new Group(meaning, Kind.PATH, "path", 1, List.of());
+        return new Group(meaning, Kind.PATH, "path", 1, List.of(), false);
     }
 
     /** A group of {@code key=number} pairs with the given keys. */
     static Group properties(String meaning, String... keys) {
-        return new Group(meaning, Kind.PROPERTIES, "key=value|key=value...", 1, List.of(keys));
+        return new Group(meaning, Kind.PROPERTIES, "key=value|key=value...", 1, List.of(keys), false);
     }
 
     /** "the centre of 'sphere'", for messages. */

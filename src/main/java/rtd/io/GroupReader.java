@@ -5,38 +5,39 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Reads the groups of a statement, {@code :(…)} each, into {@link GroupValues}: numbers separated
- * by '|', a name, a file path, or {@code key=number} properties, as the statement's
- * {@link Group}s say; and words each mistake in them at its place, with the statement's usage or
- * a hint. {@link StatementReader}, which reads the keyword and the rest of the line, is the one
- * kind of it; its position on the line is the {@link LineCursor} it extends.
+ * Reads the groups of a statement, {@code :(…)} each, into {@link WrittenGroups}: numbers separated
+ * by '|', a name, a file path, or {@code key=number} properties, as the statement's {@link Group}s
+ * say; a view direction may be written {@code (at x|y|z)}, a point to look at. Each mistake in them
+ * is worded at its place, with the statement's usage or a hint. It reads at the {@link LineCursor}
+ * it shares with the {@link StatementReader} that reads the rest of the line.
  */
-abstract sealed class GroupReader extends LineCursor permits StatementReader {
+final class GroupReader {
 
-    final GroupValues values;
+    private final LineCursor cursor;
+    private final WrittenGroups written;
     /** Where the number that {@link #readNumber} read last starts. */
     private int tokenStart;
 
-    GroupReader(SourceText source, int start, int end, int firstLine) {
-        super(source, start, end, firstLine);
-        this.values = new GroupValues(source);
+    GroupReader(LineCursor cursor, WrittenGroups written) {
+        this.cursor = cursor;
+        this.written = written;
     }
 
     /** Reads {@code :(…)} into {@link #values}. */
-    final void readGroup(Statement statement, Group group) throws StatementError {
-        skipBlanks();
-        if (!at(':')) {
-            throw groupError(pos, "expected ':' before %s, found " + source.describe(pos, lineStart), statement, group);
+    void readGroup(Statement statement, Group group) throws StatementError {
+        cursor.skipBlanks();
+        if (!cursor.at(':')) {
+            throw groupError(cursor.pos, "expected ':' before %s, found " + cursor.describe(cursor.pos), statement, group);
         }
-        pos++;
-        skipBlanks();
-        if (!at('(')) {
-            throw groupError(pos, "expected '(' to start %s, found " + source.describe(pos, lineStart), statement, group);
+        cursor.pos++;
+        cursor.skipBlanks();
+        if (!cursor.at('(')) {
+            throw groupError(cursor.pos, "expected '(' to start %s, found " + cursor.describe(cursor.pos), statement, group);
         }
-        int groupStart = pos++;
-        values.openGroup(groupStart);
-        skipBlanks();
-        if (at(')') && group.kind() != Group.Kind.PROPERTIES) {
+        int groupStart = cursor.pos++;
+        written.openGroup(groupStart);
+        cursor.skipBlanks();
+        if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
             throw groupError(groupStart, "empty group: %s needs " + contents(group), statement, group);
         }
         switch (group.kind()) {
@@ -49,14 +50,18 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
 
     /** The numbers of a group, after its '(' and any blanks, up to and with its ')'. */
     private void readNumbers(Statement statement, Group group, int groupStart) throws StatementError {
+        if (group.orAt() && atWordAt()) {
+            cursor.pos += 2;
+            written.markTarget();
+        }
         int found = 0;
         while (true) {
-            skipBlanks();
+            cursor.skipBlanks();
             float value = readNumber();
             if (found == group.size()) {
                 throw tooManyNumbers(statement, group, groupStart);
             }
-            values.add(value, tokenStart, pos);
+            written.add(value, tokenStart, cursor.pos);
             found++;
             if (groupEndsAfterNumber(statement, group)) {
                 break;
@@ -68,85 +73,88 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
         }
     }
 
-    /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
-    private void readName(Statement statement, Group group) throws StatementError {
-        int start = pos;
-        while (pos < bytes.length && (ByteClasses.isWordByte(bytes[pos]) || bytes[pos] == '-')) {
-            pos++;
-        }
-        if (pos == start) {
-            throw groupError(pos, "expected a name in %s, found " + source.describe(pos, lineStart), statement, group);
-        }
-        values.addName(start, pos);
-        int nameEnd = pos;
-        skipBlanks();
-        if (!at(')')) {
-            throw error(pos, "expected ')' after '" + source.text(start, nameEnd) + "' in " + group.of(statement) + ", found "
-                    + source.describe(pos, lineStart), nameHint(group, start));
-        }
-        pos++;
+    /** Whether the cursor is at the word {@code at} and a blank: {@code (at x|y|z)}. */
+    private boolean atWordAt() {
+        byte[] bytes = cursor.bytes;
+        int p = cursor.pos;
+        return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && ByteClasses.isSpace(bytes[p + 2]);
     }
 
-    /**
-     * The help for a name followed by something else. Properties where a name belongs get their
-     * own: written where an object names its material ({@code sphere:…:(reflective=0.5)}), a
-     * material is defined on a line of its own and named there; written first in a
-     * {@code material} ({@code material:(reflective=0.5)}), its name comes first.
-     */
+    /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
+    private void readName(Statement statement, Group group) throws StatementError {
+        int start = cursor.pos;
+        byte[] bytes = cursor.bytes;
+        while (cursor.pos < bytes.length && (ByteClasses.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
+            cursor.pos++;
+        }
+        if (cursor.pos == start) {
+            throw groupError(cursor.pos, "expected a name in %s, found " + cursor.describe(cursor.pos), statement, group);
+        }
+        written.add(Float.NaN, start, cursor.pos);
+        int nameEnd = cursor.pos;
+        cursor.skipBlanks();
+        if (!cursor.at(')')) {
+            throw cursor.error(cursor.pos, "expected ')' after '" + cursor.source.text(start, nameEnd) + "' in "
+                    + group.of(statement) + ", found "
+                    + cursor.describe(cursor.pos), nameHint(group, start));
+        }
+        cursor.pos++;
+    }
+
+    /** The help for a name followed by something else; properties where a name belongs get their own. */
     private String nameHint(Group group, int start) {
-        if (!at('=')) {
+        if (!cursor.at('=')) {
             return "a name holds only letters, digits, '_' and '-'";
         }
         int end = start;
-        while (end < bytes.length && bytes[end] != ')' && !ByteClasses.isLineBreak(bytes[end])) {
+        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !ByteClasses.isLineBreak(cursor.bytes[end])) {
             end++;
         }
-        String properties = source.text(start, end).strip();
+        String properties = cursor.source.text(start, end).strip();
         return group == Statement.MATERIAL
                 ? "an object names its material here; define the material on a line of its own, such as "
                         + "material:(shiny):(" + properties + "), then write (shiny) here"
                 : "a material's name comes first, then its properties: material:(shiny):(" + properties + ")";
     }
 
-    /**
-     * A path: everything up to the group's ')' on this line, blanks around it trimmed. A ':' with
-     * a '(' after it ends it too: that is the next group, after a forgotten ')'.
-     */
+    /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
     private void readPath(Statement statement, Group group) throws StatementError {
-        int start = pos;
-        while (pos < bytes.length && bytes[pos] != ')' && !ByteClasses.isLineBreak(bytes[pos]) && !atNextGroup()) {
-            pos++;
+        int start = cursor.pos;
+        byte[] bytes = cursor.bytes;
+        while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !ByteClasses.isLineBreak(bytes[cursor.pos])
+                && !cursor.atNextGroup()) {
+            cursor.pos++;
         }
-        if (!at(')')) {
-            throw groupError(pos, "expected ')' after the path in %s, found " + source.describe(pos, lineStart),
+        if (!cursor.at(')')) {
+            throw groupError(cursor.pos, "expected ')' after the path in %s, found " + cursor.describe(cursor.pos),
                     statement, group);
         }
-        int nameEnd = pos;
-        while (ByteClasses.isBlank(bytes[nameEnd - 1])) {
+        int nameEnd = cursor.pos;
+        while (ByteClasses.isBlank(cursor.bytes[nameEnd - 1])) {
             nameEnd--; // the group is not empty, so a byte that is no blank stands before
         }
-        values.addName(start, nameEnd);
-        pos++;
+        written.add(Float.NaN, start, nameEnd);
+        cursor.pos++;
     }
 
     /** {@code key=number} pairs separated by '|', up to and with the group's ')'; none is fine. */
     private void readProperties(Statement statement, Group group) throws StatementError {
-        if (at(')')) {
-            pos++;
+        if (cursor.at(')')) {
+            cursor.pos++;
             return;
         }
         while (true) {
-            skipBlanks();
+            cursor.skipBlanks();
             int key = readKey(statement, group);
-            skipBlanks();
-            if (!at('=')) {
-                throw groupError(pos, "expected '=' after the key '" + group.keys().get(key) + "' in %s, found "
-                        + source.describe(pos, lineStart), statement, group);
+            cursor.skipBlanks();
+            if (!cursor.at('=')) {
+                throw groupError(cursor.pos, "expected '=' after the key '" + group.keys().get(key) + "' in %s, found "
+                        + cursor.describe(cursor.pos), statement, group);
             }
-            pos++;
-            skipBlanks();
+            cursor.pos++;
+            cursor.skipBlanks();
             float value = readNumber();
-            values.addProperty(key, value, tokenStart, pos);
+            written.addProperty(key, value, tokenStart, cursor.pos);
             if (groupEndsAfterNumber(statement, group)) {
                 return;
             }
@@ -155,34 +163,34 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
 
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
     private boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
-        skipBlanks();
-        if (at('|') || at(')')) {
-            return bytes[pos++] == ')';
+        cursor.skipBlanks();
+        if (cursor.at('|') || cursor.at(')')) {
+            return cursor.bytes[cursor.pos++] == ')';
         }
-        throw groupError(pos, "expected '|' or ')' after a number in %s, found " + source.describe(pos, lineStart),
+        throw groupError(cursor.pos, "expected '|' or ')' after a number in %s, found " + cursor.describe(cursor.pos),
                 statement, group);
     }
 
     /** A key of a properties group: its index among the group's keys; known and not given before. */
     private int readKey(Statement statement, Group group) throws StatementError {
-        int start = pos;
-        while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
-            pos++;
+        int start = cursor.pos;
+        while (cursor.pos < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[cursor.pos])) {
+            cursor.pos++;
         }
-        if (pos == start) {
-            throw groupError(pos, "expected a key such as '" + group.keys().get(0) + "' in %s, found "
-                    + source.describe(pos, lineStart), statement, group);
+        if (cursor.pos == start) {
+            throw groupError(cursor.pos, "expected a key such as '" + group.keys().get(0) + "' in %s, found "
+                    + cursor.describe(cursor.pos), statement, group);
         }
-        String word = source.text(start, pos);
+        String word = cursor.source.text(start, cursor.pos);
         int key = group.keys().indexOf(word);
         if (key < 0) {
             String nearest = Suggestions.nearest(word, group.keys());
-            throw error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
+            throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
                     ? "did you mean '" + nearest + "'?"
                     : "the keys are " + quotedList(group.keys()));
         }
-        if (values.lastHasKey(key)) {
-            throw error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
+        if (written.lastHasKey(key)) {
+            throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
         return key;
     }
@@ -194,9 +202,8 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
     }
 
     /**
-     * Too many numbers in a group. Where the line has fewer groups than the statement takes from
-     * this one on, the likelier mistake is this group left out (its numbers are the next group's),
-     * and the hint says so: {@code sphere:(3|8|-1):(0|127|255)} lacks its radius.
+     * Too many numbers in a group; where the line has too few groups, the hint says this group was
+     * likely left out (its numbers are the next group's): {@code sphere:(3|8|-1):(0|127|255)}.
      */
     private StatementError tooManyNumbers(Statement statement, Group group, int groupStart) {
         String message = "too many numbers in %s: it takes " + contents(group);
@@ -205,18 +212,18 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
             return groupError(tokenStart, message, statement, group);
         }
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement)));
-        return error(tokenStart, text, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
+        return cursor.error(tokenStart, text, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
                 + group.meaning() + " left out before this group? write it as " + statement.usage());
     }
 
     /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
     private int groupsOnTheLineFrom(int offset) {
         int groups = 0;
-        for (int i = offset; i < bytes.length && bytes[i] != '\n' && bytes[i] != '\r'; i++) {
-            if (bytes[i] == '/' && i + 1 < bytes.length && bytes[i + 1] == '/') {
+        for (int i = offset; i < cursor.bytes.length && cursor.bytes[i] != '\n' && cursor.bytes[i] != '\r'; i++) {
+            if (cursor.bytes[i] == '/' && i + 1 < cursor.bytes.length && cursor.bytes[i + 1] == '/') {
                 break;
             }
-            groups += bytes[i] == '(' ? 1 : 0;
+            groups += cursor.bytes[i] == '(' ? 1 : 0;
         }
         return groups;
     }
@@ -224,22 +231,22 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
     /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
     private StatementError groupError(int offset, String message, Statement statement, Group group) {
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
-        return error(offset, text, "write it as " + statement.usage());
+        return cursor.error(offset, text, "write it as " + statement.usage());
     }
 
     /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
     private float readNumber() throws StatementError {
-        tokenStart = pos;
-        while (pos < bytes.length && !ByteClasses.isDelimiter(bytes[pos])) {
-            pos++;
+        tokenStart = cursor.pos;
+        while (cursor.pos < cursor.bytes.length && !ByteClasses.isDelimiter(cursor.bytes[cursor.pos])) {
+            cursor.pos++;
         }
-        if (pos == tokenStart) {
-            boolean emptyPlace = pos < bytes.length && (bytes[pos] == '|' || bytes[pos] == ')');
-            throw error(pos, "expected a number, found " + source.describe(pos, lineStart),
+        if (cursor.pos == tokenStart) {
+            boolean emptyPlace = cursor.at('|') || cursor.at(')');
+            throw cursor.error(cursor.pos, "expected a number, found " + cursor.describe(cursor.pos),
                     emptyPlace ? "a number is missing here: each place between '(', '|' and ')' holds one" : null);
         }
         try {
-            return FloatParser.parse(bytes, tokenStart, pos);
+            return FloatParser.parse(cursor.bytes, tokenStart, cursor.pos);
         } catch (NumberFormatException e) {
             throw notANumber();
         }
@@ -250,20 +257,20 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
      * starts it or follows a number (which {@link #error} names), else at the token, with a hint.
      */
     private StatementError notANumber() {
-        int invisible = firstInvisible(tokenStart, pos);
+        int invisible = firstInvisible(tokenStart, cursor.pos);
         if (invisible == tokenStart) {
-            return error(invisible, "expected a number, found " + source.describe(invisible, lineStart), null);
+            return cursor.error(invisible, "expected a number, found " + cursor.describe(invisible), null);
         }
         if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
-            return error(invisible, "expected '|' or ')' after a number, found " + source.describe(invisible, lineStart), null);
+            return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
         }
-        String token = source.text(tokenStart, pos);
-        return error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
+        String token = cursor.source.text(tokenStart, cursor.pos);
+        return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
     }
 
     private boolean isNumber(int from, int to) {
         try {
-            FloatParser.parse(bytes, from, to);
+            FloatParser.parse(cursor.bytes, from, to);
             return true;
         } catch (NumberFormatException e) {
             return false;
@@ -273,7 +280,7 @@ abstract sealed class GroupReader extends LineCursor permits StatementReader {
     /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */
     private int firstInvisible(int from, int to) {
         for (int i = from; i < to; i++) {
-            if (bytes[i] < 0 && (bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(source.codePointAt(i))) {
+            if (cursor.bytes[i] < 0 && (cursor.bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(cursor.source.codePointAt(i))) {
                 return i;
             }
         }

@@ -48,6 +48,12 @@ final class Hints {
         return NUMBER_FORMS;
     }
 
+    /** For a path with a '\' that names no file: Windows separates folders so, the other systems with '/' only. */
+    static String forWindowsPath(String path) {
+        return "write folders with '/', as in " + path.replace('\\', '/') + ", which works on every system; "
+                + "'\\' separates folders on Windows only";
+    }
+
     /** For a token of an OBJ file that is no number: its numbers are separated by blanks, so a comma is a decimal comma. */
     static String forObjNumber(String token) {
         return DECIMAL_COMMA.matcher(token).matches() ? "write decimals with a point: " + token.replace(',', '.') : NUMBER_FORMS;

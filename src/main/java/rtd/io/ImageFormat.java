@@ -38,9 +38,7 @@ public record ImageFormat(String extension) {
 
     /**
      * Whether this is {@link #PNG}. Compared by the extension, not by the record's
-     * {@code equals}: the first call of a record's generated {@code equals} sets up its method
-     * handles, which took 30 to 75 ms in a fresh JVM (measured), and the writer asks this first
-     * while a run is starting.
+     * {@code equals}, whose first call sets up method handles while a run is starting.
      */
     public boolean isPng() {
         return extension.equals(PNG.extension);

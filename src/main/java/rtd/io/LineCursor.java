@@ -1,41 +1,41 @@
 package rtd.io;
 
 /**
- * Where a reader of a stretch of whole lines of a scene file stands, and the moves over its
- * bytes that every level of the reader shares: look at the byte here, skip blanks, go to the next
- * line, make an error at a place on the line. It is the base of {@link GroupReader}, which reads
- * a statement's groups, and so of {@link StatementReader}, which reads whole statements; the three
- * share one position, as fields of one object, so that reading a line of numbers makes no object
- * and goes through no interface.
+ * Where a reader of a scene file stands: the byte being read, the line it is on and where that
+ * line starts, with the moves over the bytes that the statement and group readers share (look at
+ * a byte, skip blanks, go to the next line) and an error at a place on the line. One cursor is
+ * shared by the {@link StatementReader} and its {@link GroupReader}, so that both see one position.
  */
-abstract sealed class LineCursor permits GroupReader {
+final class LineCursor {
 
     final SourceText source;
-    /** The source's bytes, until {@link StatementReader#readAll} is done (see {@link SourceText#close}). */
+    /** The source's bytes, until {@link #release}. */
     byte[] bytes;
-    /** The end of the stretch of lines to read. */
-    final int end;
     /** The byte being read. */
     int pos;
-    /** The number of the line being read, and where it starts. */
-    int line;
+    /** The number of the line being read, from 1, and the offset of its first byte. */
+    int line = 1;
     int lineStart;
 
-    /**
-     * A cursor at {@code source.bytes()[start]}, which begins a line (numbered {@code firstLine});
-     * the stretch ends at {@code end}, after a line break or at the end of the file.
-     */
-    LineCursor(SourceText source, int start, int end, int firstLine) {
+    /** A cursor at byte {@code start} of {@code source}, the start of its first line. */
+    LineCursor(SourceText source, int start) {
         this.source = source;
         this.bytes = source.bytes();
-        this.end = end;
         this.pos = start;
         this.lineStart = start;
-        this.line = firstLine;
     }
 
-    /** Whether {@link #pos} is at ':', blanks and '(': the start of a group. */
-    final boolean atNextGroup() {
+    /**
+     * Lets the bytes go once the file is read. A parse lasts long enough for the collector to
+     * move the cursor to the old generation, where nothing finds it dead before a concurrent
+     * mark; as long as it points to the bytes, they would stay through the build and the render.
+     */
+    void release() {
+        bytes = null;
+    }
+
+    /** Whether the cursor is at ':', blanks and '(': the start of a group. */
+    boolean atNextGroup() {
         if (bytes[pos] != ':') {
             return false;
         }
@@ -46,32 +46,30 @@ abstract sealed class LineCursor permits GroupReader {
         return after < bytes.length && bytes[after] == '(';
     }
 
-    final boolean at(char c) {
+    boolean at(char c) {
         return pos < bytes.length && bytes[pos] == c;
     }
 
     /** Skips spaces and tabs, not a carriage return: it ends a line ({@link #skipToNextLine}). */
-    final void skipBlanks() {
+    void skipBlanks() {
         while (pos < bytes.length && ByteClasses.isSpace(bytes[pos])) {
             pos++;
         }
     }
 
-    final boolean atEndOfStatement() {
-        return pos >= bytes.length || ByteClasses.isLineBreak(bytes[pos]) || atComment();
-    }
-
-    private boolean atComment() {
-        return pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
+    /** Whether the cursor is at the end of the file, of the line, or at a {@code //} comment. */
+    boolean atEndOfStatement() {
+        return pos >= bytes.length || ByteClasses.isLineBreak(bytes[pos])
+                || pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
     }
 
     /** Goes past the next line break: LF, CR LF, or a CR alone, as old Mac files end lines. */
-    final void skipToNextLine() {
-        while (pos < end && !ByteClasses.isLineBreak(bytes[pos])) {
+    void skipToNextLine() {
+        while (pos < bytes.length && !ByteClasses.isLineBreak(bytes[pos])) {
             pos++;
         }
-        if (pos < end) {
-            if (bytes[pos] == '\r' && pos + 1 < end && bytes[pos + 1] == '\n') {
+        if (pos < bytes.length) {
+            if (bytes[pos] == '\r' && pos + 1 < bytes.length && bytes[pos + 1] == '\n') {
                 pos++;
             }
             pos++;
@@ -80,8 +78,13 @@ abstract sealed class LineCursor permits GroupReader {
         }
     }
 
+    /** What stands at {@code offset}, for "found …" in a message. */
+    String describe(int offset) {
+        return source.describe(offset, lineStart);
+    }
+
     /** An error at {@code offset}; at an invisible character, the help says what it is and what to do. */
-    final StatementError error(int offset, String message, String help) {
+    StatementError error(int offset, String message, String help) {
         int codePoint = offset < bytes.length && bytes[offset] < 0 ? source.codePointAt(offset) : -1;
         return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
                 source.lineText(lineStart), Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));

@@ -26,13 +26,13 @@ final class MaterialWarnings {
      * The warnings for the material {@code definitions} (in file order), of which the objects
      * {@code named} some, in a scene with or without a light.
      */
-    static List<SceneError> of(List<ScenePart.Located<ScenePart.Named>> definitions, Set<String> named, boolean lit) {
+    static List<SceneError> of(List<SceneContents.Located<SceneContents.Named>> definitions, Set<String> named, boolean lit) {
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !definitions.isEmpty()) {
             warnings.add(at(definitions.get(0).place(), "materials change nothing here: the scene has no light, so it is "
                     + "drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
         }
-        for (ScenePart.Located<ScenePart.Named> definition : definitions) {
+        for (SceneContents.Located<SceneContents.Named> definition : definitions) {
             String name = definition.value().name();
             Material material = definition.value().material();
             if (!named.contains(name)) {

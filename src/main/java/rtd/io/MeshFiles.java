@@ -25,7 +25,7 @@ final class MeshFiles {
     }
 
     /** The mesh in the OBJ file that group {@code g} of the statement names. */
-    static ObjMesh read(GroupValues values, int g) throws StatementError {
+    static ObjMesh read(StatementValues values, int g) throws StatementError {
         SourceText scene = values.source();
         String written = values.name(g);
         Path file;
@@ -42,12 +42,13 @@ final class MeshFiles {
             bytes = readFile(file);
         } catch (IOException e) {
             throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
-                    "a mesh's path is relative to the folder of the scene file");
+                    e instanceof NoSuchFileException && written.indexOf('\\') >= 0 ? Hints.forWindowsPath(written)
+                            : "a mesh's path is relative to the folder of the scene file");
         }
         ObjMesh mesh;
         try {
             try (SourceText obj = new SourceText(shown, bytes)) {
-                mesh = ObjParser.parse(obj);
+                mesh = ObjReader.read(obj);
             }
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();

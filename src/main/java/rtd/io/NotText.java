@@ -13,7 +13,7 @@ import java.nio.charset.StandardCharsets;
  * not UTF-8), and says what the file looks like instead: UTF-16, as some old Windows editors
  * save; Latin-1 or Windows-1252, as editors in Germany and elsewhere save an umlaut in a
  * comment; or no text at all, such as a picture. For text in another encoding the help is to
- * save the file as UTF-8.
+ * save the file as UTF-8. An OBJ file is refused for a NUL byte only ({@link #inObjFile}).
  */
 final class NotText {
 
@@ -137,5 +137,20 @@ final class NotText {
         }
         return new String(bytes, lineStart, bad - lineStart, StandardCharsets.UTF_8)
                 + new String(bytes, bad, end - bad, WINDOWS_1252);
+    }
+
+    /** The error for the NUL byte at {@code nul} of an OBJ file, whose lines end at LF. */
+    static SceneError inObjFile(SourceText source, int nul) {
+        byte[] bytes = source.bytes();
+        int line = 1;
+        int lineStart = 0;
+        for (int i = 0; i < nul; i++) {
+            if (bytes[i] == '\n') {
+                line++;
+                lineStart = i + 1;
+            }
+        }
+        return new SceneError(source.name(), line, source.column(lineStart, nul), "this is not a text file: found a NUL byte",
+                null, "a mesh is a Wavefront OBJ file, which is text");
     }
 }

@@ -11,7 +11,7 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The triangles of a Wavefront OBJ file as {@link ObjParser} read them: the vertices and normals,
+ * The triangles of a Wavefront OBJ file as {@link ObjReader} read them: the vertices and normals,
  * and for each triangle, in face order, the index of each corner's vertex and normal. A
  * {@code mesh} statement (Part II, "Geometry") places them in the scene with
  * {@link #triangles}. The arrays are the reader's own and are never changed; those of the
@@ -31,8 +31,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
      * How many triangles share one array of numbers (see {@link Triangle}): 442 KiB of them,
      * under half of G1's smallest region (1 MiB). A larger array would be "humongous": put
      * straight into the old generation, where a few of them, large against a heap that has
-     * not grown yet, start a concurrent mark of the whole heap (measured: 0.3 to 0.5 s of CPU
-     * for a million triangles).
+     * not grown yet, start a concurrent mark of the whole heap.
      */
     private static final int BLOCK = 1 << 12;
 

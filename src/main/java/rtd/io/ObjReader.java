@@ -9,7 +9,7 @@ import java.util.List;
  * "Geometry"): {@code v x y z [w]} vertices, {@code vn x y z} normals and {@code f} faces whose corners
  * are written {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, with indices counted from 1
  * or, when negative, back from the last vertex or normal read so far. A face of more than three
- * corners becomes a fan of triangles around its first corner. {@code #} starts a comment; every
+ * corners is split into triangles by {@link EarClipping}. {@code #} starts a comment; every
  * other line ({@code o}, {@code g}, {@code s}, {@code usemtl}, {@code mtllib}, {@code vt}, …) is
  * skipped whatever it holds, as are numbers after the third on a {@code v} line (a {@code w}, or
  * the vertex colours some tools write) and texture indices.
@@ -17,32 +17,26 @@ import java.util.List;
  * <p>It works on the file's bytes, like the scene reader, since a model may have millions of
  * faces. Each mistake is located in the OBJ file, as in a scene file, and reading goes on with
  * the next line.
- *
- * <p>One reader reads one stretch of whole lines ({@link ObjParser} reads the parts of a large
- * file in parallel): it knows from an {@link ObjScan} of the parts before it how many lines,
- * vertices and normals come before its first line, so that it numbers its lines and vertices as
- * reading the file in one go would. It writes its vertices and normals into the mesh's arrays,
- * at their places in the file, and keeps its faces' triangles in its own {@link ObjPart}.
  */
 final class ObjReader {
 
     private static final String CORNER_FORMS = "a corner is written 3, 3/1, 3//2 or 3/1/2";
 
     private final SourceText source;
-    /** The source's bytes, until the part is read (see {@link SourceText#close}). */
+    /** The source's bytes, until the file is read (see {@link LineCursor#release}). */
     private byte[] bytes;
-    private final int end;
     private int pos;
-    private int line;
+    private int line = 1;
     private int lineStart;
 
-    /** The whole file's vertices and normals, x, y, z each; this part writes its own. */
-    private final float[] vertices;
+    /** The vertices and normals read so far, x, y, z each; the triangles' corners, three per triangle. */
+    private float[] vertices = new float[3 * 1024];
     private int vertexCount;
-    private final float[] normals;
+    private float[] normals = new float[0];
     private int normalCount;
-    private int[] corners;
-    private int[] cornerNormals;
+    private int[] corners = new int[3 * 1024];
+    /** The normal of each corner of a triangle, or −1 for a triangle with no normals. */
+    private int[] cornerNormals = new int[corners.length];
     private int triangleCount;
 
     /** The current face's corners: vertex and normal (−1 for none) indices. */
@@ -52,33 +46,30 @@ final class ObjReader {
     private final List<SceneError> errors = new ArrayList<>();
 
     /**
-     * A reader for {@code source.bytes()[start, end)}, which begins a line (numbered
-     * {@code firstLine}, after {@code firstVertex} vertices and {@code firstNormal} normals) and
-     * ends after a line feed or at the end of the file; it writes the part's vertices and normals
-     * into {@code vertices} and {@code normals}, and expects about {@code expectedTriangles}.
+     * The mesh in {@code source}, or every mistake found in it (up to one more than
+     * {@link SceneParser#MAX_ERRORS}, so that the caller can tell there were more). A file with a
+     * NUL byte is no text, and is refused at it before any line is read.
      */
-    ObjReader(SourceText source, int start, int end, int firstLine, int firstVertex, int firstNormal, float[] vertices,
-            float[] normals, int expectedTriangles) {
-        this.source = source;
-        this.bytes = source.bytes();
-        this.end = end;
-        this.pos = start;
-        this.lineStart = start;
-        this.line = firstLine;
-        this.vertexCount = firstVertex;
-        this.normalCount = firstNormal;
-        this.vertices = vertices;
-        this.normals = normals;
-        this.corners = new int[3 * Math.max(1, expectedTriangles)];
-        this.cornerNormals = new int[corners.length];
+    static ObjMesh read(SourceText source) throws SceneException {
+        byte[] bytes = source.bytes();
+        for (int i = 0; i < bytes.length; i++) {
+            if (bytes[i] == 0) {
+                throw new SceneException(List.of(NotText.inObjFile(source, i)), false);
+            }
+        }
+        return new ObjReader(source, ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
     }
 
-    /**
-     * Reads every line of the part, until its end or one error past {@link SceneParser#MAX_ERRORS}
-     * (so that the caller can tell there were more): its triangles, or its mistakes.
-     */
-    ObjPart readAll() {
-        while (pos < end && errors.size() <= SceneParser.MAX_ERRORS) {
+    private ObjReader(SourceText source, int start) {
+        this.source = source;
+        this.bytes = source.bytes();
+        this.pos = start;
+        this.lineStart = start;
+    }
+
+    /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}: the mesh, or its mistakes. */
+    private ObjMesh readAll() throws SceneException {
+        while (pos < bytes.length && errors.size() <= SceneParser.MAX_ERRORS) {
             try {
                 readLine();
             } catch (StatementError e) {
@@ -87,7 +78,11 @@ final class ObjReader {
             skipToNextLine();
         }
         bytes = null;
-        return new ObjPart(corners, cornerNormals, triangleCount, errors);
+        if (!errors.isEmpty()) {
+            throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneParser.MAX_ERRORS + 1)), false);
+        }
+        return new ObjMesh(Arrays.copyOf(vertices, 3 * vertexCount), Arrays.copyOf(normals, 3 * normalCount), corners,
+                cornerNormals, triangleCount);
     }
 
     private void readLine() throws StatementError {
@@ -111,11 +106,17 @@ final class ObjReader {
 
     private void readVertex() throws StatementError {
         vertexCount++; // even if the line is wrong: the faces below count it, and would be wrong too
+        if (3 * vertexCount > vertices.length) {
+            vertices = Arrays.copyOf(vertices, 2 * vertices.length);
+        }
         readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
     }
 
     private void readNormal() throws StatementError {
         normalCount++;
+        if (3 * normalCount > normals.length) {
+            normals = Arrays.copyOf(normals, Math.max(3 * 1024, 2 * normals.length));
+        }
         readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
     }
 
@@ -166,8 +167,13 @@ final class ObjReader {
         if (count < 3) {
             throw error(keywordStart, "a face needs at least 3 corners, found " + count, CORNER_FORMS);
         }
-        for (int k = 1; k + 1 < count; k++) { // a fan around the first corner
-            addTriangle(0, k, k + 1);
+        if (count == 3) {
+            addTriangle(0, 1, 2);
+            return;
+        }
+        int[] triangles = EarClipping.triangles(faceVertices, count, vertices);
+        for (int t = 0; t < triangles.length; t += 3) {
+            addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
         }
     }
 

@@ -7,14 +7,12 @@ import java.awt.image.SinglePixelPackedSampleModel;
 
 /**
  * The layout of a {@link rtd.image.Picture}'s pixels for {@code javax.imageio}: one int a pixel,
- * {@code 0xRRGGBB}, row by row, as {@link SinglePixelPackedSampleModel} describes it, with a
- * faster way to hand out a row's samples.
+ * {@code 0xRRGGBB}, row by row, as {@link SinglePixelPackedSampleModel} describes it.
  *
  * <p>The PNG writer asks for the picture a row at a time, as samples (red, green, blue of each
  * pixel in turn: {@link #getPixels}). The JDK's own answer reads each sample through the data
- * buffer's methods and the layout's masks and shifts, which costs a fifth of the paper's
- * example's whole run while the JIT has not compiled it yet (measured in docs/performance.md);
- * this one reads the picture's array directly. The samples are the same.
+ * buffer's methods and the layout's masks and shifts, slow before the JIT compiles them; this
+ * one reads the picture's array directly. The samples are the same.
  */
 final class PackedRgbSamples extends SinglePixelPackedSampleModel {
 

@@ -2,12 +2,6 @@ package rtd.io;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.ByteBuffer;
-import java.nio.CharBuffer;
-import java.nio.charset.CharsetDecoder;
-import java.nio.charset.CoderResult;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -43,9 +37,8 @@ final class SceneFileReader {
             throw tooLarge(path, "is " + bytes(size), limit);
         }
         if (size >= 0) {
-            // A regular file of known size is bounded already: read it without checking each
-            // chunk (the parser checks its text in parallel parts), which is faster for a large
-            // scene than chunks of 64 KiB.
+            // A regular file of known size is bounded already: it is read whole, and the parser
+            // checks its text before reading any statement.
             byte[] bytes = readWhole(path, size);
             if (bytes.length > limit) { // it grew while we read it
                 throw tooLarge(path, "is larger than " + bytes(limit), limit);
@@ -53,7 +46,7 @@ final class SceneFileReader {
             return bytes;
         }
         try (InputStream in = Files.newInputStream(path)) {
-            return read(path, in, size, (int) limit);
+            return readStream(path, in, (int) limit);
         }
     }
 
@@ -61,8 +54,7 @@ final class SceneFileReader {
      * All bytes of the regular file {@code path}, which had {@code size} of them (more if it
      * grew meanwhile), read {@value #WHOLE_FILE_PIECE} bytes at a time: Java reads a file into
      * an array through a buffer outside the heap as large as each read, and keeps that buffer
-     * for the thread ({@code Files.readAllBytes} of a million spheres kept 50 MB for the whole
-     * run).
+     * for the thread ({@code Files.readAllBytes} would keep one as large as the file).
      */
     static byte[] readWhole(Path path) throws IOException {
         return readWhole(path, Files.size(path));
@@ -90,11 +82,15 @@ final class SceneFileReader {
         }
     }
 
-    private static byte[] read(Path path, InputStream in, long size, int limit) throws IOException {
-        // One byte more than the size, so that a file that grew while read is noticed without a copy.
-        byte[] bytes = new byte[(int) Math.min(limit + 1L, size >= 0 ? size + 1 : CHUNK)];
-        TextCheck check = new TextCheck();
+    /**
+     * A stream of unknown length, read in chunks, each checked as it arrives: reading stops at
+     * the first chunk with a byte that is not text (a character may be cut at the end of a
+     * chunk; its rest comes with the next), or past the limit.
+     */
+    private static byte[] readStream(Path path, InputStream in, int limit) throws IOException {
+        byte[] bytes = new byte[Math.min(limit + 1, CHUNK)];
         int filled = 0;
+        int checked = 0;
         while (true) {
             if (filled == bytes.length) {
                 if (filled > limit) {
@@ -107,9 +103,11 @@ final class SceneFileReader {
                 break;
             }
             filled += read;
-            if (!check.isText(bytes, filled - read, filled)) {
+            int whole = wholeCharacters(bytes, checked, filled);
+            if (NotText.firstBadByte(bytes, checked, whole) >= 0) {
                 break; // the rest cannot change the verdict: not a scene
             }
+            checked = whole;
         }
         return filled == bytes.length ? bytes : Arrays.copyOf(bytes, filled);
     }
@@ -131,38 +129,17 @@ final class SceneFileReader {
         return unit == 0 ? bytes + " bytes" : String.format(Locale.ROOT, "%.1f %s", value, units[unit]);
     }
 
-    /**
-     * Whether the bytes read so far are text: no NUL byte, and UTF-8 as far as it is complete (a
-     * character may be cut at the end of a chunk; its rest comes with the next).
-     */
-    private static final class TextCheck {
-        private final CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
-                .onMalformedInput(CodingErrorAction.REPORT).onUnmappableCharacter(CodingErrorAction.REPORT);
-        private final CharBuffer scratch = CharBuffer.allocate(CHUNK);
-        /** The bytes before this are whole, valid characters. */
-        private int checked;
-
-        /** Checks the chunk {@code bytes[from, to)}, after all bytes before it. */
-        boolean isText(byte[] bytes, int from, int to) {
-            boolean ascii = true;
-            for (int i = from; i < to; i++) {
-                if (bytes[i] == 0) {
-                    return false;
-                }
-                ascii &= bytes[i] > 0;
+    /** Where the whole characters of {@code bytes[from, to)} end: {@code to}, or the start of one cut at the end. */
+    private static int wholeCharacters(byte[] bytes, int from, int to) {
+        for (int i = to - 1; i >= Math.max(from, to - 3); i--) {
+            int b = bytes[i] & 0xFF;
+            if (b < 0x80) {
+                return to;
             }
-            if (ascii && checked == from) {
-                checked = to; // the usual scene: no need to decode
-                return true;
+            if (b >= 0xC0) { // the first byte of a character of 2, 3 or 4 bytes
+                return i + (b >= 0xF0 ? 4 : b >= 0xE0 ? 3 : 2) > to ? i : to;
             }
-            ByteBuffer in = ByteBuffer.wrap(bytes, checked, to - checked);
-            CoderResult result;
-            do {
-                scratch.clear();
-                result = decoder.decode(in, scratch, false);
-            } while (result.isOverflow());
-            checked = in.position();
-            return !result.isError();
         }
+        return to;
     }
 }

@@ -44,10 +44,7 @@ public final class SceneIO {
         return readScene(path, (List<SceneError>) null);
     }
 
-    /**
-     * As {@link #readScene(Path)}, adding to {@code warnings} what is no mistake but likely a slip
-     * (a material no object names, say), located as a mistake is.
-     */
+    /** As {@link #readScene(Path)}, adding to {@code warnings} the likely slips that are no mistakes. */
     public static Scene readScene(Path path, List<SceneError> warnings) throws SceneException, IOException {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
@@ -56,19 +53,12 @@ public final class SceneIO {
         return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder), warnings);
     }
 
-    /**
-     * Reads the scene at {@code path} as {@link #readScene(Path, List)} does, under the name
-     * {@code name} in error messages: {@code <stdin>} for the standard input, read through
-     * {@code /dev/stdin}.
-     */
+    /** As {@link #readScene(Path, List)}, named {@code name} in messages: {@code <stdin>} for {@code /dev/stdin}. */
     public static Scene readScene(Path path, String name, List<SceneError> warnings) throws SceneException, IOException {
         return parse(new SourceText(name, SceneFileReader.read(path), Path.of("")), warnings);
     }
 
-    /**
-     * Reads a scene from the stream {@code in} where the system has no {@code /dev/stdin}: all
-     * of it, up to {@link #MAX_SCENE_BYTES}; {@code name} stands for it in error messages.
-     */
+    /** Reads a scene from {@code in} (all of it, up to {@link #MAX_SCENE_BYTES}), where there is no {@code /dev/stdin}. */
     public static Scene readScene(InputStream in, String name, List<SceneError> warnings) throws SceneException, IOException {
         byte[] bytes = in.readNBytes((int) MAX_SCENE_BYTES + 1);
         if (bytes.length > MAX_SCENE_BYTES) {
@@ -78,10 +68,7 @@ public final class SceneIO {
         return parse(new SourceText(name, bytes, Path.of("")), warnings);
     }
 
-    /**
-     * Reads a scene from {@code text}; {@code name} stands for the file in error messages. The
-     * OBJ files of its meshes are found relative to the current directory.
-     */
+    /** Reads a scene from {@code text}, named {@code name} in messages; meshes are found from the current directory. */
     public static Scene parseScene(String name, String text) throws SceneException {
         return parseScene(name, text, Path.of(""));
     }

@@ -1,36 +1,41 @@
 package rtd.io;
 
 import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
-import java.util.stream.IntStream;
+import java.util.Map;
+import java.util.Set;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.image.Color;
 import rtd.scene.Scene;
 
 /**
- * Reads the scene format of the paper (section 4.1, Listing A.1), as Part II ("The scene
- * file") extends it, from a file's bytes.
+ * Reads the scene format of the paper (section 4.1, Listing A.1), as Part II ("The scene file")
+ * extends it, from a file's bytes.
  *
  * <p>One statement a line: {@code keyword:(group):(group)…}, the statements being those of the
  * {@link Grammar}. {@code //} starts a comment; blank lines, spaces and tabs around any token,
  * Windows and old Mac line ends (CR LF, a CR alone) and a UTF-8 byte-order mark are all fine.
- * Every mistake is reported with its line and column, up to {@value #MAX_ERRORS}, so that one run
- * shows them all.
+ * A file that is not UTF-8 text is refused at its first bad byte, before any statement is read.
+ * Every mistake is reported with its line and column, in file order, up to {@value #MAX_ERRORS},
+ * so that one run shows them all.
  *
- * <p>A large file is cut at line breaks into parts ({@link FileCuts}) that
- * {@link StatementReader}s read in parallel; the parts are joined in file order
- * ({@link PartJoin}), so the scene and the messages are the same as from reading the file in one
- * go. Joining is also where what only the whole file can tell is checked: one camera, one
- * {@code ambient}, one material per name; and where the objects that name a material, which may
- * be defined further down, are built.
+ * <p>After the {@link StatementReader} has read every line, what only the whole file can tell is
+ * checked here: one camera, one {@code ambient}, one material per name; and the objects that name
+ * a material defined further down are built, at their places among the objects. Slips that are no
+ * mistakes are told as warnings, located as mistakes are: those of {@link MaterialWarnings}, and
+ * a sphere so large that it will show shadow acne in a shaded scene.
  */
 final class SceneParser {
 
     /** After this many errors reading stops; more would only scroll the first ones away. */
     static final int MAX_ERRORS = 20;
-    /** The size of the parts a large file is cut into: big enough to be worth a task. */
-    private static final int PART_SIZE = 4 << 20;
-
     /** Fewer bytes than any line that makes an object, {@code sphere:(0|0|0):(1):(0|0|0)} and its line break. */
     private static final int SHORTEST_OBJECT = 24;
+    private static final String CAMERA_EXAMPLE = "orthographic_camera:(0|0|20):(0|0|-1):(50)";
 
     private SceneParser() {
     }
@@ -40,59 +45,153 @@ final class SceneParser {
      * goes to {@code warnings} (null: dropped), in file order.
      */
     static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
-        return parse(source, PART_SIZE, warnings);
-    }
-
-    /** As {@link #parse(SourceText, List)} without the warnings, cutting the file into parts of about {@code partSize} bytes. */
-    static Scene parse(SourceText source, int partSize) throws SceneException {
-        return parse(source, partSize, null);
-    }
-
-    /** As {@link #parse(SourceText, List)}, cutting the file into parts of about {@code partSize} bytes. */
-    static Scene parse(SourceText source, int partSize, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
         int start = ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0;
-        int[] cuts = FileCuts.cuts(bytes, start, partSize);
-        TextScan[] scans = FileCuts.scan(bytes, cuts);
-        for (TextScan scan : scans) {
-            if (scan.badByte() >= 0) {
-                throw new SceneException(List.of(NotText.error(source, start, scan.badByte())), false);
+        int lines = 1;
+        boolean plain = true;
+        for (int i = start; i < bytes.length; i++) {
+            if (bytes[i] <= '\r') { // one test for the rare bytes: line breaks, control characters, every non-ASCII byte
+                lines += bytes[i] == '\n' || bytes[i] == '\r' && ByteClasses.endsLine(bytes, i) ? 1 : 0;
+                plain &= bytes[i] > 0;
             }
         }
-        int[] firstLines = FileCuts.firstLines(scans);
-        // The first part, alone and first: it holds the file's first lines, most often its
-        // comments, ambient and camera. Read later, they would meet a reader that the JIT has
-        // compiled for sphere lines only, and it would throw that away and compile it again.
-        List<ScenePart> parts = new ArrayList<>();
-        parts.add(readPart(source, cuts, firstLines, 0));
-        if (!FileCuts.onePart(cuts)) {
-            parts.addAll(IntStream.range(1, cuts.length - 1).parallel().mapToObj(k -> readPart(source, cuts, firstLines, k)).toList());
+        int bad = plain ? -1 : NotText.firstBadByte(bytes, start, bytes.length);
+        if (bad >= 0) {
+            throw new SceneException(List.of(NotText.error(source, start, bad)), false);
         }
-        if (aCommentSpansACut(parts)) {
-            // A part that starts inside a /* comment took its lines for statements. Such a file
-            // has a mistake (the /*), so its speed matters less than its messages being those
-            // of one part: it is read again in one go.
-            parts = List.of(readPart(source, new int[] {start, bytes.length}, new int[] {1, firstLines[cuts.length - 1]}, 0));
-        }
-        return PartJoin.join(source, parts, warnings);
+        // Most lines of a large file make one object, so the list is made that long at once: grown
+        // line by line, its large arrays would go to the old generation, and stay there long.
+        SceneContents contents = new SceneContents(Math.min(lines, (bytes.length - start) / SHORTEST_OBJECT + 1));
+        new StatementReader(source, start, contents).readAll();
+        return join(source, contents, warnings);
     }
 
-    private static boolean aCommentSpansACut(List<ScenePart> parts) {
-        for (int k = 0; k < parts.size() - 1; k++) {
-            if (parts.get(k).endsInBlockComment) {
-                return true;
+    /** The scene the contents make, or every mistake in them, ordered by place. */
+    private static Scene join(SourceText source, SceneContents contents, List<SceneError> warnings) throws SceneException {
+        List<SceneContents.Found> errors = contents.errors;
+        addLineNumbers(contents, errors);
+        var ambients = contents.ambients;
+        var cameras = contents.cameras;
+        for (var second : ambients.subList(Math.min(1, ambients.size()), ambients.size())) {
+            errors.add(found(again(second.place(), "a second 'ambient': a scene has one background colour",
+                    "the first 'ambient' is at line " + ambients.get(0).place().line())));
+        }
+        for (var second : cameras.subList(Math.min(1, cameras.size()), cameras.size())) {
+            errors.add(found(again(second.place(), "a second camera: a scene has one",
+                    "the first camera is at line " + cameras.get(0).place().line())));
+        }
+        Map<String, Material> materials = materials(contents.materials, errors);
+        Set<String> named = new HashSet<>(contents.namedAtOnce);
+        List<IGeometry> objects = objects(contents, materials, named);
+        if (errors.isEmpty() && contents.statementCount == 0) {
+            errors.add(found(atStart(source, "the scene is empty: it has no statements, only blanks and comments",
+                    "a scene needs at least a camera, such as " + CAMERA_EXAMPLE)));
+        } else if (errors.isEmpty() && cameras.isEmpty()) {
+            errors.add(found(atStart(source, "the scene has no camera", "add a line such as " + CAMERA_EXAMPLE)));
+        }
+        if (!errors.isEmpty()) {
+            errors.sort(Comparator.comparingInt(SceneContents.Found::line).thenComparingInt(SceneContents.Found::column));
+            List<SceneError> shown = errors.subList(0, Math.min(MAX_ERRORS, errors.size())).stream()
+                    .map(SceneContents.Found::error).toList();
+            throw new SceneException(shown, errors.size() > MAX_ERRORS);
+        }
+        if (warnings != null) {
+            boolean lit = !contents.lights.isEmpty();
+            warnings.addAll(MaterialWarnings.of(contents.materials, named, lit));
+            if (lit) {
+                List<SceneError> acne = new ArrayList<>(contents.litWarnings);
+                acne.sort(Comparator.comparingInt(SceneError::line));
+                warnings.addAll(acne.subList(0, Math.min(MAX_ERRORS, acne.size())));
             }
         }
-        return false;
+        Color ambient = ambients.isEmpty() ? Color.BLACK : ambients.get(0).value();
+        return new Scene(ambient, cameras.get(0).value(), objects, contents.lights);
     }
 
-    private static ScenePart readPart(SourceText source, int[] cuts, int[] firstLines, int k) {
-        // Most lines of a large file make one object, so the part's list is made that long at
-        // once (growing it line by line would copy it a dozen times); a blank line makes none,
-        // and the shortest line that makes one is longer than SHORTEST_OBJECT bytes.
-        int lines = firstLines[k + 1] - firstLines[k] + 1;
-        ScenePart part = new ScenePart(Math.min(lines, (cuts[k + 1] - cuts[k]) / SHORTEST_OBJECT + 1));
-        new StatementReader(source, cuts[k], cuts[k + 1], firstLines[k], part).readAll();
-        return part;
+    /** The lines that start with a line number, as one mistake at the first of them. */
+    private static void addLineNumbers(SceneContents contents, List<SceneContents.Found> errors) {
+        SceneError first = contents.firstLineNumber;
+        int count = contents.lineNumbers;
+        if (first != null) {
+            String more = count == 1 ? "" : count == 2 ? ", as does 1 more line" : ", as do " + (count - 1) + " more lines";
+            errors.add(found(again(first, first.message() + more, first.help())));
+        }
+    }
+
+    /** The materials by name; a name defined again is an error at the second definition. */
+    private static Map<String, Material> materials(List<SceneContents.Located<SceneContents.Named>> definitions,
+            List<SceneContents.Found> errors) {
+        Map<String, SceneContents.Located<SceneContents.Named>> first = new HashMap<>();
+        Map<String, Material> materials = new HashMap<>();
+        for (var definition : definitions) {
+            String name = definition.value().name();
+            var earlier = first.putIfAbsent(name, definition);
+            if (earlier == null) {
+                materials.put(name, definition.value().material());
+            } else {
+                errors.add(found(again(definition.place(), "a second material '" + name + "': each name is defined once",
+                        "the first '" + name + "' is at line " + earlier.place().line())));
+            }
+        }
+        return materials;
+    }
+
+    /**
+     * Every object in file order: those built as they were read, and between them those that
+     * name a material, built now that every material is known; their names go to {@code named}.
+     */
+    private static List<IGeometry> objects(SceneContents contents, Map<String, Material> materials, Set<String> named) {
+        if (contents.pending.isEmpty()) {
+            return contents.objects;
+        }
+        List<IGeometry> objects = new ArrayList<>(contents.objects.size() + contents.pending.size());
+        int next = 0;
+        for (SceneContents.Pending pending : contents.pending) {
+            objects.addAll(contents.objects.subList(next, pending.index()));
+            next = pending.index();
+            named.add(build(contents, pending.values(), materials, objects));
+        }
+        objects.addAll(contents.objects.subList(next, contents.objects.size()));
+        return objects;
+    }
+
+    /**
+     * Builds an object that names a material into {@code objects}, and answers the name. An
+     * unknown name is an error at the name, unless its definition has a mistake, which is
+     * reported already; the rest of the statement is still checked, so that one run shows all
+     * its mistakes.
+     */
+    private static String build(SceneContents contents, StatementValues values, Map<String, Material> materials,
+            List<IGeometry> objects) {
+        int group = values.statement().groups().size(); // the last, optional group: the material's name
+        String name = values.name(group);
+        Material material = materials.get(name);
+        if (material == null && !contents.brokenDefinitions.contains(name)) {
+            String nearest = Suggestions.nearest(name, materials.keySet());
+            contents.addErrors(values.errorAtValue(group, 0, "unknown material '" + name + "'", nearest != null
+                    ? "did you mean '" + nearest + "'?"
+                    : "define it with a line such as material:(" + name + "):(diffuse=0.9)"));
+        }
+        values.useMaterial(material == null ? Material.DEFAULT : material);
+        try {
+            // with an unknown material the scene has errors: the object is only checked
+            contents.buildInto(values, material == null ? new ArrayList<>() : objects);
+        } catch (StatementError e) {
+            contents.addErrors(e);
+        }
+        return name;
+    }
+
+    private static SceneContents.Found found(SceneError error) {
+        return new SceneContents.Found(error.line(), error.column(), error);
+    }
+
+    private static SceneError again(SceneError place, String message, String help) {
+        return new SceneError(place.file(), place.line(), place.column(), message, place.sourceLine(), help);
+    }
+
+    private static SceneError atStart(SourceText source, String message, String help) {
+        int start = ByteClasses.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
+        return new SceneError(source.name(), 1, 1, message, source.lineText(start), help);
     }
 }

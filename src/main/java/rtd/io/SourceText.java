@@ -51,8 +51,8 @@ final class SourceText implements AutoCloseable {
      * Lets the bytes go. A parse lasts long enough for the collector to move this text, and
      * the readers that share its bytes, to the old generation, where nothing finds them dead
      * before a concurrent mark (which a short run may never start). As long as they still
-     * point to the bytes, the bytes stay: 50 MB for a million spheres, through the whole build
-     * and render. Without the pointers, the next young collection frees them.
+     * point to the bytes, the bytes stay (the whole file, through the build and the render).
+     * Without the pointers, the next young collection frees them.
      */
     @Override
     public void close() {

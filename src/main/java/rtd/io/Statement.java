@@ -42,10 +42,10 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
     interface Builder {
         /**
          * Checks the values (each broken rule becomes an error at its value) and gives what the
-         * statement makes to {@code out}. For an object, {@link GroupValues#material()} is the
+         * statement makes to {@code out}. For an object, {@link StatementValues#material()} is the
          * finish it names, or the default.
          */
-        void build(GroupValues values, Output out) throws StatementError;
+        void build(StatementValues values, Output out) throws StatementError;
     }
 
     /** Where the values that statements make go: the scene being read. */
@@ -67,6 +67,9 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
 
         /** A point light. */
         void light(Light light);
+
+        /** A warning about the statement that holds only if the scene has a light (a shaded scene). */
+        void warningIfLit(SceneError warning);
     }
 
     /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)[:(material)]}. */

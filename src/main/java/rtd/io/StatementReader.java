@@ -4,108 +4,102 @@ import java.util.List;
 import rtd.geometry.Material;
 
 /**
- * Reads the statements of a stretch of whole lines of a scene file into a {@link ScenePart}:
- * the syntax {@code keyword:(group):(group)…} of the scene file (paper, section 4.1, and Part II,
- * "The scene file"), for any statement of the {@link Grammar}.
+ * Reads the statements of a scene file into its {@link SceneContents}: the syntax
+ * {@code keyword:(group):(group)…} of the scene file (paper, section 4.1, and Part II, "The scene
+ * file"), for any statement of the {@link Grammar}. It reads a line's keyword and what may follow
+ * its groups (comments, mistakes); its {@link GroupReader} reads the groups.
  *
- * <p>Each mistake becomes a {@link SceneError} with line and column, and reading goes on with
- * the next line. It works on bytes, not on a String, and makes no object per number. An object
- * that names a material is built at once if the part defines the material above it
- * ({@link ScenePart#materialAbove}); else it waits in the part until the whole file is read (the
- * material may be defined further down). Every other statement is built at once.
- *
- * <p>This class reads a line's keyword and what may follow its groups (comments, mistakes);
- * the groups themselves are read by {@link GroupReader}, which it extends, and the position on
- * the line is its {@link LineCursor}. What a statement makes goes to the part through a
- * {@link PartOutput}.
+ * <p>Each mistake becomes a {@link SceneError} with line and column, and reading goes on with the
+ * next line. It works on bytes, not on a String. An object that names a material is built at once
+ * if the material is defined above it ({@link SceneContents#materialAbove}); else it waits until
+ * the whole file is read, as the material may be defined further down. Every other statement is
+ * built at once.
  */
-final class StatementReader extends GroupReader {
+final class StatementReader {
 
-    private final ScenePart part;
-    private final Statement.Output output;
+    private final LineCursor cursor;
+    private final GroupReader groupReader;
+    private final StatementValues values;
+    private final SceneContents contents;
     /** Where the statement being read starts, for a later message about it. */
     private int statementStart;
     /** The statement being read, once its keyword is known; null before. */
     private Statement current;
-    /**
-     * Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once,
-     * at its start: the lines up to its end are skipped.
-     */
+    /** Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
     private boolean inBlockComment;
 
-    /**
-     * A reader for {@code source.bytes()[start, end)}, which begins a line (numbered
-     * {@code firstLine}) and ends after a line break or at the end of the file.
-     */
-    StatementReader(SourceText source, int start, int end, int firstLine, ScenePart part) {
-        super(source, start, end, firstLine);
-        this.part = part;
-        this.output = new PartOutput(this, part, values);
+    /** A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}. */
+    StatementReader(SourceText source, int start, SceneContents contents) {
+        this.cursor = new LineCursor(source, start);
+        WrittenGroups written = new WrittenGroups(16, 8);
+        this.groupReader = new GroupReader(cursor, written);
+        this.values = new StatementValues(source, written);
+        this.contents = contents;
+        contents.readFrom(values);
     }
 
     /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}. */
     void readAll() {
-        while (pos < end && part.errors.size() <= SceneParser.MAX_ERRORS) {
+        while (cursor.pos < cursor.bytes.length && contents.errors.size() <= SceneParser.MAX_ERRORS) {
             try {
                 readStatement();
             } catch (StatementError e) {
-                part.addErrors(e);
+                contents.addErrors(e);
                 keepNameOfBrokenDefinition();
             }
-            skipToNextLine();
+            cursor.skipToNextLine();
         }
-        part.endsInBlockComment = inBlockComment;
-        bytes = null;
+        cursor.release();
     }
 
     // ---- one statement ------------------------------------------------------------------
 
     private void readStatement() throws StatementError {
         current = null;
-        skipBlanks();
+        cursor.skipBlanks();
         if (inBlockComment && !leaveBlockComment()) {
             return; // a line inside a /* */ comment, which is reported at its start
         }
-        if (atEndOfStatement()) {
+        if (cursor.atEndOfStatement()) {
             return; // a blank line or a comment
         }
         Statement statement = readKeyword(false);
         if (statement == null) {
             return; // a line number and nothing else
         }
-        part.statementCount++;
+        contents.statementCount++;
         current = statement;
-        values.begin(statement, line, lineStart);
+        values.begin(statement, cursor.line, cursor.lineStart, statementStart);
         List<Group> groups = statement.groups();
         for (int g = 0; g < groups.size(); g++) { // no Iterator for each line of a large file
-            readGroup(statement, groups.get(g));
+            groupReader.readGroup(statement, groups.get(g));
         }
-        skipBlanks();
-        boolean namesMaterial = statement.takesMaterial() && at(':');
+        cursor.skipBlanks();
+        boolean namesMaterial = statement.takesMaterial() && cursor.at(':');
         if (namesMaterial) {
-            readGroup(statement, Statement.MATERIAL);
-            skipBlanks();
+            groupReader.readGroup(statement, Statement.MATERIAL);
+            cursor.skipBlanks();
         }
-        if (at(':')) {
-            throw error(pos, "too many groups: '" + statement.keyword() + "' takes " + statement.groupCount(),
+        if (cursor.at(':')) {
+            throw cursor.error(cursor.pos, "too many groups: '" + statement.keyword() + "' takes " + statement.groupCount(),
                     "write it as " + statement.usage());
         }
-        if (!atEndOfStatement()) {
+        if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
         if (!namesMaterial) {
-            statement.builder().build(values, output);
+            statement.builder().build(values, contents);
             return;
         }
         String name = values.name(groups.size());
-        Material above = part.materialAbove(name);
+        Material above = contents.materialAbove(name);
         if (above == null) {
-            part.addPending(values.copy()); // the material may be defined further down
+            contents.addPending(values.copy()); // the material may be defined further down
             return;
         }
-        part.namedAtOnce.add(name);
+        contents.namedAtOnce.add(name);
         values.useMaterial(above);
-        statement.builder().build(values, output);
+        statement.builder().build(values, contents);
     }
 
     /**
@@ -116,133 +110,131 @@ final class StatementReader extends GroupReader {
     private void keepNameOfBrokenDefinition() {
         if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
                 && values.hasValue(0)) {
-            part.brokenDefinitions.add(values.name(0));
+            contents.brokenDefinitions.add(values.name(0));
         }
     }
 
     /**
      * Reads the keyword at {@link #pos}: the statement it names, or null if the line holds only a
-     * line number. A line number, as in the paper's listing, is noted in the part (which reports
+     * line number. A line number, as in the paper's listing, is noted in the contents (which report
      * them all as one mistake) and the statement after it is read as if it were not there.
      */
     private Statement readKeyword(boolean afterLineNumber) throws StatementError {
-        statementStart = pos;
-        while (pos < bytes.length && ByteClasses.isWordByte(bytes[pos])) {
-            pos++;
+        statementStart = cursor.pos;
+        while (cursor.pos < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[cursor.pos])) {
+            cursor.pos++;
         }
-        if (pos == statementStart) {
+        if (cursor.pos == statementStart) {
             throw noStatement();
         }
-        Statement statement = Grammar.find(bytes, statementStart, pos);
+        Statement statement = Grammar.find(cursor.bytes, statementStart, cursor.pos);
         if (statement != null) {
             return statement;
         }
         if (afterLineNumber || !atLineNumber()) {
             throw unknownKeyword(statementStart);
         }
-        part.noteLineNumber(error(statementStart, "the line starts with a line number, '" + source.text(statementStart, pos)
+        String number = cursor.source.text(statementStart, cursor.pos);
+        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + number
                 + "'", Hints.LINE_NUMBERS).place());
-        skipBlanks();
-        return atEndOfStatement() ? null : readKeyword(true);
+        cursor.skipBlanks();
+        return cursor.atEndOfStatement() ? null : readKeyword(true);
     }
 
     /** Whether the word from {@link #statementStart} to {@link #pos} is a line number: digits, then a blank or the end. */
     private boolean atLineNumber() {
-        for (int i = statementStart; i < pos; i++) {
-            if (bytes[i] < '0' || bytes[i] > '9') {
+        for (int i = statementStart; i < cursor.pos; i++) {
+            if (cursor.bytes[i] < '0' || cursor.bytes[i] > '9') {
                 return false;
             }
         }
-        return atEndOfStatement() || ByteClasses.isSpace(bytes[pos]);
+        return cursor.atEndOfStatement() || ByteClasses.isSpace(cursor.bytes[cursor.pos]);
     }
 
     private StatementError unknownKeyword(int keywordStart) {
-        String word = source.text(keywordStart, pos);
-        return error(keywordStart, "unknown statement '" + word + "'", Suggestions.keywordHelp(word));
+        String word = cursor.source.text(keywordStart, cursor.pos);
+        return cursor.error(keywordStart, "unknown statement '" + word + "'", Suggestions.keywordHelp(word));
     }
 
     /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
     private StatementError noStatement() {
         String help = null;
-        if (at('#') || atBlockComment()) {
+        if (cursor.at('#') || atBlockComment()) {
             help = Hints.COMMENTS;
             openBlockComment();
-        } else if (at('/')) {
+        } else if (cursor.at('/')) {
             help = Hints.COMMENTS + ", two slashes"; // one slash alone: the second was forgotten
         }
-        return error(pos, "expected a statement (" + Grammar.keywordList() + "), found " + source.describe(pos, lineStart), help);
+        return cursor.error(cursor.pos, "expected a statement (" + Grammar.keywordList() + "), found "
+                + cursor.describe(cursor.pos), help);
     }
 
     /** Text after a whole statement: a comment as other languages write it, a ';', a second statement. */
     private StatementError textAfterStatement() {
         String help;
-        if (at('#') || atBlockComment()) {
+        if (cursor.at('#') || atBlockComment()) {
             help = Hints.COMMENTS;
             openBlockComment();
-        } else if (at(';')) {
-            String second = secondStatement(pos + 1);
+        } else if (cursor.at(';')) {
+            String second = secondStatement(cursor.pos + 1);
             help = second != null ? second : Hints.SEMICOLON;
         } else {
-            String second = secondStatement(pos);
+            String second = secondStatement(cursor.pos);
             help = second != null ? second : "a comment after a statement starts with //";
         }
-        return error(pos, "expected the end of the line after the statement, found " + source.describe(pos, lineStart), help);
+        return cursor.error(cursor.pos, "expected the end of the line after the statement, found "
+                + cursor.describe(cursor.pos), help);
     }
 
     /** The help for a second statement (a keyword, then ':') from {@code from} on, after blanks; or null. */
     private String secondStatement(int from) {
         int start = from;
-        while (start < bytes.length && ByteClasses.isSpace(bytes[start])) {
+        while (start < cursor.bytes.length && ByteClasses.isSpace(cursor.bytes[start])) {
             start++;
         }
         int end = start;
-        while (end < bytes.length && ByteClasses.isWordByte(bytes[end])) {
+        while (end < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[end])) {
             end++;
         }
-        Statement statement = Grammar.find(bytes, start, end);
+        Statement statement = Grammar.find(cursor.bytes, start, end);
         int after = end;
-        while (after < bytes.length && ByteClasses.isSpace(bytes[after])) {
+        while (after < cursor.bytes.length && ByteClasses.isSpace(cursor.bytes[after])) {
             after++;
         }
-        return statement != null && after < bytes.length && bytes[after] == ':'
+        return statement != null && after < cursor.bytes.length && cursor.bytes[after] == ':'
                 ? Hints.oneStatementPerLine(statement.keyword()) : null;
     }
 
     // ---- comments as other languages write them ---------------------------------------------
 
     private boolean atBlockComment() {
-        return pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '*';
+        return cursor.pos + 1 < cursor.bytes.length && cursor.bytes[cursor.pos] == '/' && cursor.bytes[cursor.pos + 1] == '*';
     }
 
     /** At a {@code /*}: if the comment does not end on this line, skips the lines up to its end. */
     private void openBlockComment() {
-        inBlockComment = atBlockComment() && commentEnd(pos + 2) < 0;
+        inBlockComment = atBlockComment() && commentEnd(cursor.pos + 2) < 0;
     }
 
     /** On a line inside a block comment: whether the comment ends on it; {@link #pos} is then after the end. */
     private boolean leaveBlockComment() {
-        int after = commentEnd(pos);
+        int after = commentEnd(cursor.pos);
         if (after < 0) {
             return false;
         }
         inBlockComment = false;
-        pos = after;
-        skipBlanks();
+        cursor.pos = after;
+        cursor.skipBlanks();
         return true;
     }
 
     /** The offset after the first {@code *}{@code /} from {@code from} to the end of its line, or −1. */
     private int commentEnd(int from) {
-        for (int i = from; i + 1 < end && !ByteClasses.isLineBreak(bytes[i]); i++) {
-            if (bytes[i] == '*' && bytes[i + 1] == '/') {
+        for (int i = from; i + 1 < cursor.bytes.length && !ByteClasses.isLineBreak(cursor.bytes[i]); i++) {
+            if (cursor.bytes[i] == '*' && cursor.bytes[i + 1] == '/') {
                 return i + 2;
             }
         }
         return -1;
-    }
-
-    /** Where the statement being read stands, for a later message about it. */
-    SceneError located() {
-        return new SceneError(source.name(), line, source.column(lineStart, statementStart), "", source.lineText(lineStart), null);
     }
 }

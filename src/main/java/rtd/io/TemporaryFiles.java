@@ -52,7 +52,7 @@ final class TemporaryFiles {
             throw new IOException("rtd is stopping");
         }
         // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
-        // A random name, not a UUID: that would start a SecureRandom, slower than the whole write.
+        // A random name, not a UUID: that would start a SecureRandom, which takes long to seed.
         Path temporary = folder.resolve(name(outputName, ThreadLocalRandom.current().nextLong()));
         // CREATE_NEW: should the name be taken, fail rather than overwrite (or later delete) that file.
         OutputStream out = Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);

@@ -27,7 +27,10 @@ import rtd.scene.Scene;
  *     {@code up} against rtd's v (which points down), so no handedness rule of POV-Ray's
  *     {@code look_at} applies; POV-Ray samples pixel centres and rtd pixel corners (Listing 4.1:
  *     {@code x − w/2} in whole numbers), so the camera is shifted by that difference, half a
- *     pixel for an even size;</li>
+ *     pixel for an even size; a camera that looks at a point ({@code (at x|y|z)}) gets POV-Ray's
+ *     {@code look_at}: last for the orthographic camera, the point shifted as its location is, which
+ *     gives the same vectors again; for the perspective camera as a comment, since POV-Ray's
+ *     {@code look_at} would undo the shift, which tilts that camera's direction;</li>
  * <li>flat scenes: {@code finish { ambient 1 diffuse 0 }} and {@code ambient_light 1}, no
  *     lights, so each object shows its colour exactly;</li>
  * <li>shaded scenes: the Phong terms map one to one ({@code phong} is the specular term,
@@ -109,16 +112,19 @@ public final class PovScene {
             double zoom = ortho.zoom();
             double[] location = plus(plus(d(ortho.position()), times(d(ortho.widthVector()), shiftX / zoom)),
                     times(d(ortho.heightVector()), shiftY / zoom));
+            String lookAt = ortho.target() == null ? "" : "\n  look_at " + vector(plus(location, d(ortho.direction())));
             return "camera {\n  orthographic\n  location " + vector(location) + "\n  direction " + vector(d(ortho.direction()))
                     + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
-                    + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + "\n}\n";
+                    + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + lookAt + "\n}\n";
         }
         if (camera instanceof PerspectiveCamera perspective) {
             double f = w / 2.0 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2);
             double[] forward = d(perspective.direction().normalize());
             double[] direction = plus(plus(times(forward, f), times(d(perspective.widthVector()), shiftX)),
                     times(d(perspective.heightVector()), shiftY));
-            return "camera {\n  perspective\n  location " + vector(d(perspective.position())) + "\n  direction "
+            String lookAt = perspective.target() == null ? "" : "\n  // look_at " + vector(d(perspective.target()))
+                    + ", written out: POV-Ray's look_at would undo the half-pixel shift in direction";
+            return "camera {\n  perspective\n  location " + vector(d(perspective.position())) + lookAt + "\n  direction "
                     + vector(direction) + "\n  right " + vector(times(d(perspective.widthVector()), w))
                     + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
         }

@@ -161,15 +161,11 @@ class HintsTest {
         }
 
         @Test
-        void aBlockCommentAcrossTheCutOfTwoPartsGivesTheMessagesOfOnePart() {
+        void aBlockCommentOverManyLinesIsOneMistakeAndTheLinesInItAreSkipped() {
             String text = CAMERA + SPHERE.repeat(20) + "/* commented out:\n" + CAMERA + SPHERE.repeat(20) + "*/\nspere:(1|2|3):(1):(0|0|0)\n";
             SourceText source = new SourceText("scene.txt", text.getBytes(StandardCharsets.UTF_8));
-            String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, Integer.MAX_VALUE)).report();
+            String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, null)).report();
             assertThat(whole).contains("2 errors");
-            for (int partSize : new int[] {1, 64, 700}) {
-                assertThat(catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, partSize)).report())
-                        .isEqualTo(whole);
-            }
         }
     }
 
@@ -291,13 +287,11 @@ class HintsTest {
         }
 
         @Test
-        void aNumberedListingGivesTheMessagesOfOnePartWhenReadInParts() {
+        void aLongNumberedListingIsOneMistakeAtItsFirstLine() {
             SourceText source = new SourceText("scene.txt", listing.repeat(30).getBytes(StandardCharsets.UTF_8));
-            String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, Integer.MAX_VALUE)).report();
-            for (int partSize : new int[] {1, 64, 700}) {
-                assertThat(catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, partSize)).report())
-                        .isEqualTo(whole);
-            }
+            SceneException e = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, null));
+            assertThat(e.errors().get(0).line()).isEqualTo(1);
+            assertThat(e.errors().get(0).message()).contains("line number");
         }
     }
 
@@ -336,15 +330,11 @@ class HintsTest {
         }
 
         @Test
-        void aLargeCrFileIsCutIntoPartsThatGiveTheMessagesOfOnePart() {
+        void aLargeCrFileCountsItsLines() {
             String many = (CAMERA + (SPHERE + "spere:(1|2|3):(1):(0|0|0)\n").repeat(8)).replace('\n', '\r');
             SourceText source = new SourceText("scene.txt", many.getBytes(StandardCharsets.UTF_8));
-            String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, Integer.MAX_VALUE)).report();
+            String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, null)).report();
             assertThat(whole).contains(":17:1: error");
-            for (int partSize : new int[] {1, 64, 200}) {
-                assertThat(catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, partSize)).report())
-                        .isEqualTo(whole);
-            }
         }
 
         @Test

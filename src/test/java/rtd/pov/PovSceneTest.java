@@ -84,6 +84,21 @@ class PovSceneTest {
         }
     }
 
+    /**
+     * A camera that looks at a point, of either kind, seen from off its axes: the export says
+     * {@code look_at} and POV-Ray draws the same picture, at even and odd sizes.
+     */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"orthographic_camera:(4|3|12):(at 1|0|-1):(12)", "perspective_camera:(4|3|12):(at 1|0|-1):(50)"})
+    void aCameraThatLooksAtAPointDrawsTheSamePictureWithLookAt(String camera) throws Exception {
+        Scene scene = rtd.io.SceneIO.parseScene("at.txt", camera + "\nambient:(20|30|40)\nsphere:(1|0|-1):(2):(200|60|60)\n"
+                + "box:(-4|-1|-4):(-2|2|-2):(60|200|60)\ntriangle:(3|-1|0):(5|-1|0):(4|2|-2):(60|60|200)\n");
+        assertThat(PovScene.of(scene, 160, 120, "at.pov")).contains("look_at ");
+        PovRay.assumeInstalled();
+        assertSameFlatPicture(rtd(scene, 160, 120), povRay(scene, 160, 120));
+        assertSameFlatPicture(rtd(scene, 161, 121), povRay(scene, 161, 121));
+    }
+
     private static void assertSameFlatPicture(BufferedImage rtd, BufferedImage pov) {
         ImageComparison.Result result = ImageComparison.EDGE_TOLERANT.compare(rtd, pov);
         assertThat(result.matches()).as(result.summary()).isTrue();

@@ -1,0 +1,156 @@
+package rtd.io;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import rtd.camera.ICamera;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Material;
+import rtd.image.Color;
+import rtd.scene.Light;
+
+/**
+ * What the statements of a scene file make, as {@link StatementReader} reads them (it is their
+ * {@link Statement.Output}), before {@link SceneParser} checks what only the whole file can tell:
+ * the objects, each {@code ambient}, camera and {@code material} with the place of its statement
+ * (a scene may have only one of each, or one per name), the objects that wait for a material
+ * defined further down, and the mistakes found.
+ */
+final class SceneContents implements Statement.Output {
+
+    /** A value with the place of the statement that gave it. */
+    record Located<T>(T value, SceneError place) {
+    }
+
+    /** A material and the name it is defined under. */
+    record Named(String name, Material material) {
+    }
+
+    /** An object that names a material, built when every material is known: its values, and how many objects come before it. */
+    record Pending(int index, StatementValues values) {
+    }
+
+    /** A mistake, and where in the scene file it is ordered (an OBJ file's, at its mesh line). */
+    record Found(int line, int column, SceneError error) {
+    }
+
+    final List<IGeometry> objects;
+    final List<Pending> pending = new ArrayList<>();
+    final List<Located<Color>> ambients = new ArrayList<>();
+    final List<Located<ICamera>> cameras = new ArrayList<>();
+    final List<Located<Named>> materials = new ArrayList<>();
+    final List<Light> lights = new ArrayList<>();
+    final List<Found> errors = new ArrayList<>();
+    /** Warnings that hold only if the scene has a light, in the order their statements were built. */
+    final List<SceneError> litWarnings = new ArrayList<>();
+    /** The names of definitions ({@code material:}) that have mistakes: not unknown, only broken. */
+    final Set<String> brokenDefinitions = new HashSet<>();
+    /** The material names of the objects built at once, with a material defined above them. */
+    final Set<String> namedAtOnce = new HashSet<>();
+    int statementCount;
+    /**
+     * The first line that starts with a line number, as the paper's listing does, and how many
+     * do: they are one mistake (the listing was pasted with its numbers), reported once, and do
+     * not count towards {@link SceneParser#MAX_ERRORS} while reading.
+     */
+    SceneError firstLineNumber;
+    int lineNumbers;
+    /** Where {@link #object} puts objects: {@link #objects}, or the list a pending object is built into. */
+    private List<IGeometry> into;
+    /** The values of the statement being built, for the places of what it makes. */
+    private StatementValues values;
+
+    /** Contents for about {@code expectedObjects} objects; more are fine. */
+    SceneContents(int expectedObjects) {
+        objects = new ArrayList<>(expectedObjects);
+        into = objects;
+    }
+
+    /** Takes the places of what statements make from {@code values}, which the reader fills. */
+    void readFrom(StatementValues values) {
+        this.values = values;
+    }
+
+    /** Builds the pending statement {@code pending} into {@code list}; the objects it makes go there. */
+    void buildInto(StatementValues pending, List<IGeometry> list) throws StatementError {
+        StatementValues reading = values;
+        values = pending;
+        into = list;
+        try {
+            pending.statement().builder().build(pending, this);
+        } finally {
+            values = reading;
+            into = objects;
+        }
+    }
+
+    @Override
+    public void ambient(Color colour) {
+        ambients.add(new Located<>(colour, values.placeOfStatement()));
+    }
+
+    @Override
+    public void camera(ICamera camera) {
+        cameras.add(new Located<>(camera, values.placeOfStatement()));
+    }
+
+    @Override
+    public void light(Light light) {
+        lights.add(light);
+    }
+
+    @Override
+    public void object(IGeometry object) {
+        into.add(object);
+    }
+
+    @Override
+    public void objects(List<IGeometry> more) {
+        into.addAll(more);
+    }
+
+    @Override
+    public void material(String name, Material material) {
+        materials.add(new Located<>(new Named(name, material), values.placeOfValue(0, 0)));
+    }
+
+    @Override
+    public void warningIfLit(SceneError warning) {
+        litWarnings.add(warning);
+    }
+
+    /**
+     * The material {@code name} if it is defined above the line being read, else null. In a scene
+     * without mistakes that is the file's one definition of the name; in a scene with mistakes the
+     * objects are only checked, and no check depends on the material.
+     */
+    Material materialAbove(String name) {
+        for (Located<Named> definition : materials) {
+            if (definition.value().name().equals(name)) {
+                return definition.value().material();
+            }
+        }
+        return null;
+    }
+
+    /** Keeps an object that names a material, at its place among the objects. */
+    void addPending(StatementValues pendingValues) {
+        pending.add(new Pending(objects.size(), pendingValues));
+    }
+
+    /** Notes a line that starts with a line number; {@code error} is the mistake if it is the first. */
+    void noteLineNumber(SceneError error) {
+        if (firstLineNumber == null) {
+            firstLineNumber = error;
+        }
+        lineNumbers++;
+    }
+
+    /** Keeps the errors of a statement, ordered by its place. */
+    void addErrors(StatementError e) {
+        for (SceneError error : e.errors()) {
+            errors.add(new Found(e.place().line(), e.place().column(), error));
+        }
+    }
+}

@@ -1,0 +1,287 @@
+package rtd.io;
+
+import rtd.geometry.Material;
+import rtd.image.Color;
+import rtd.math.Vector3f;
+
+/**
+ * The values of the statement being read, group by group, where each was written, and the rules
+ * they must follow (the paper's scene file, section 4.1, and Part II's, "The scene file"): every
+ * number finite, a radius, zoom or scale above 0, a direction not zero, a colour channel a whole
+ * number from 0 to 255, and so on. The numbers are those {@link GroupReader} wrote into the
+ * {@link WrittenGroups}; a statement's {@link Statement.Builder} asks for its groups by index, and a
+ * broken rule becomes an error at the value that breaks it, worded with the group's meaning ("the x
+ * of the centre must be a finite number").
+ */
+final class StatementValues {
+
+    private final SourceText source;
+    private final WrittenGroups groups;
+    private Statement statement;
+    private int line;
+    private int lineStart;
+    private int statementStart;
+    private Material material;
+
+    /** The values of the statements read into {@code groups}, one after the other. */
+    StatementValues(SourceText source, WrittenGroups groups) {
+        this.source = source;
+        this.groups = groups;
+    }
+
+    /** Starts a statement whose keyword stands at byte {@code statementStart} of a line. */
+    void begin(Statement statement, int line, int lineStart, int statementStart) {
+        this.statement = statement;
+        this.line = line;
+        this.lineStart = lineStart;
+        this.statementStart = statementStart;
+        this.material = Material.DEFAULT;
+        groups.clear();
+    }
+
+    /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
+    void useMaterial(Material material) {
+        this.material = material;
+    }
+
+    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
+    boolean hasValue(int g) {
+        return groups.hasValue(g);
+    }
+
+    /** An independent copy, for an object built when the whole file is read. */
+    StatementValues copy() {
+        StatementValues copy = new StatementValues(source, groups.copy());
+        copy.statement = statement;
+        copy.line = line;
+        copy.lineStart = lineStart;
+        copy.statementStart = statementStart;
+        return copy;
+    }
+
+    // ---- asked for by the builders ------------------------------------------------------
+
+    /** The statement these values belong to. */
+    Statement statement() {
+        return statement;
+    }
+
+    /** The number of the line the statement stands on. */
+    int line() {
+        return line;
+    }
+
+    SourceText source() {
+        return source;
+    }
+
+    /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
+    Material material() {
+        return material;
+    }
+
+    /** The name or path that group {@code g} holds, as written. */
+    String name(int g) {
+        return written(groups.firsts[g]);
+    }
+
+    /** The number {@code k} of group {@code g} as written, for messages. */
+    String written(int g, int k) {
+        return written(groups.firsts[g] + k);
+    }
+
+    /** Whether group {@code g} was written {@code (at x|y|z)}, a point to look at. */
+    boolean isTarget(int g) {
+        return groups.target == g;
+    }
+
+    /** An error at the '(' of group {@code g}. */
+    StatementError errorAtGroup(int g, String message, String help) {
+        return errorAt(groups.opens[g], message, help);
+    }
+
+    /** An error at number {@code k} of group {@code g}, or at the name of a name group ({@code k = 0}). */
+    StatementError errorAtValue(int g, int k, String message, String help) {
+        return errorAt(groups.starts[groups.firsts[g] + k], message, help);
+    }
+
+    /** A warning at number {@code k} of group {@code g}. */
+    SceneError warningAtValue(int g, int k, String message, String help) {
+        return errorAtValue(g, k, message, help).place();
+    }
+
+    /** Where value {@code k} of group {@code g} stands, as an error with no message yet. */
+    SceneError placeOfValue(int g, int k) {
+        return errorAtValue(g, k, "", null).place();
+    }
+
+    /** Where the statement's keyword stands, as an error with no message yet. */
+    SceneError placeOfStatement() {
+        return errorAt(statementStart, "", null).place();
+    }
+
+    // ---- the rules --------------------------------------------------------------------------
+
+    /** The one number of group {@code g}, which must be finite and greater than 0 (a radius, a zoom). */
+    float positive(int g) throws StatementError {
+        int i = groups.firsts[g];
+        float value = finite(i, meaning(g));
+        if (value > 0) {
+            return value;
+        }
+        throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than 0, found " + written(i),
+                value < 0 ? "without its minus sign: " + number(-value)
+                        : "a " + meaning(g) + " of 0 leaves nothing to see; give a number greater than 0, such as 1");
+    }
+
+    /** The one number of group {@code g}, finite and strictly between {@code low} and {@code high}. */
+    float between(int g, float low, float high, String unit, String help) throws StatementError {
+        int i = groups.firsts[g];
+        float value = finite(i, meaning(g));
+        if (value > low && value < high) {
+            return value;
+        }
+        throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than " + number(low) + " and less than "
+                + number(high) + " " + unit + ", found " + written(i), help);
+    }
+
+    /** The three numbers of group {@code g} as a vector of finite numbers. */
+    Vector3f vector(int g) throws StatementError {
+        int i = groups.firsts[g];
+        for (int k = 0; k < 3; k++) {
+            if (!Float.isFinite(groups.values[i + k])) {
+                finite(i + k, "xyz".charAt(k) + " of the " + meaning(g));
+            }
+        }
+        return new Vector3f(groups.values[i], groups.values[i + 1], groups.values[i + 2]);
+    }
+
+    /** The three numbers of group {@code g} as a direction: finite, not zero, not too short or long for float. */
+    Vector3f direction(int g, String zeroHelp) throws StatementError {
+        Vector3f direction = vector(g);
+        int i = groups.firsts[g];
+        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
+            throw errorAt(groups.starts[i], "the " + meaning(g) + " must not be zero, found " + groupText(g), zeroHelp);
+        }
+        float squaredLength = direction.dot(direction);
+        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
+            throw errorAt(groups.starts[i], "the " + meaning(g) + " " + groupText(g) + " is too "
+                    + (Float.isInfinite(squaredLength) ? "long" : "short") + " to compute with in float",
+                    "only its direction matters: scale it to a length near 1");
+        }
+        return direction;
+    }
+
+    /**
+     * The point of group {@code g}, written {@code (at x|y|z)} (Part III, "A camera that looks at a
+     * point"): the direction from the position {@code from} to it, as the camera computes it, is
+     * not zero and neither too short nor too long to compute with in float.
+     */
+    Vector3f target(int g, Vector3f from) throws StatementError {
+        Vector3f target = vector(g);
+        Vector3f direction = target.subtract(from);
+        float squaredLength = direction.dot(direction);
+        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
+            throw errorAt(groups.starts[groups.firsts[g]], "the camera cannot look at its own position " + groupText(g),
+                    "give a point in front of the camera, such as (at 0|0|0) for the origin");
+        }
+        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
+            String tooWhat = Float.isInfinite(squaredLength) ? "far from" : "near";
+            throw errorAt(groups.starts[groups.firsts[g]], "the point " + groupText(g) + " is too " + tooWhat
+                    + " the camera's position to compute the view direction in float",
+                    "give a point at a distance near 1 to 1000 from the camera");
+        }
+        return target;
+    }
+
+    /** The three numbers of group {@code g}: a colour, each channel a whole number from 0 to 255. */
+    Color colour(int g) throws StatementError {
+        int i = groups.firsts[g];
+        return new Color(channel(i, "red", i), channel(i + 1, "green", i), channel(i + 2, "blue", i));
+    }
+
+    /** The value of {@code key} in group {@code g}'s properties, finite and at least {@code minimum}; else {@code fallback}. */
+    float property(int g, String key, float fallback, float minimum) throws StatementError {
+        int index = statement.groups().get(g).keys().indexOf(key);
+        for (int i = groups.firsts[g]; i < groups.end(g); i++) {
+            if (groups.keys[i] == index) {
+                String name = "value of '" + key + "'";
+                float value = finite(i, name);
+                if (value >= minimum) {
+                    return value;
+                }
+                throw errorAt(groups.starts[i], "the " + name + " must be at least " + number(minimum) + ", found " + written(i),
+                        minimum > 0 ? "an index of refraction is 1 for air, 1.33 for water, 1.5 for glass"
+                                : "0 turns this part of the finish off");
+            }
+        }
+        return fallback;
+    }
+
+    /** Number {@code i}, which must be finite (not NaN, not infinite, not beyond a float's range). */
+    private float finite(int i, String name) throws StatementError {
+        float value = groups.values[i];
+        if (Float.isFinite(value)) {
+            return value;
+        }
+        String written = written(i);
+        boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
+        throw errorAt(groups.starts[i], "the " + name + " must be a finite number, found " + written
+                + (overflow ? ", which is too large for a float" : ""),
+                overflow ? "a float holds numbers up to about 3.4e38"
+                        : "NaN (not a number) and Infinity are not numbers a scene can use; give a finite number");
+    }
+
+    /** Number {@code i}, the {@code name} channel of the colour whose numbers start at {@code first}. */
+    private int channel(int i, String name, int first) throws StatementError {
+        float value = groups.values[i];
+        if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
+            String fractions = fractionsHint(first);
+            throw errorAt(groups.starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
+                    + written(i), fractions != null ? fractions
+                            : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
+        }
+        return (int) value;
+    }
+
+    /** For a colour written as fractions from 0 to 1, as other programs write colours, the same from 0 to 255; else null. */
+    private String fractionsHint(int first) {
+        StringBuilder scaled = new StringBuilder("(");
+        for (int i = first; i < first + 3; i++) {
+            if (!(groups.values[i] >= 0 && groups.values[i] <= 1)) {
+                return null;
+            }
+            scaled.append(i > first ? "|" : "").append(Math.round(groups.values[i] * 255));
+        }
+        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is " + scaled + ")";
+    }
+
+    private String meaning(int g) {
+        return g < statement.groups().size() ? statement.groups().get(g).meaning() : Statement.MATERIAL.meaning();
+    }
+
+    /** Group {@code g} as written, "(0|0|0)"; "(at 0|0|0)" for a point to look at. */
+    private String groupText(int g) {
+        StringBuilder text = new StringBuilder(g == groups.target ? "(at " : "(");
+        for (int i = groups.firsts[g]; i < groups.end(g); i++) {
+            text.append(i > groups.firsts[g] ? "|" : "").append(written(i));
+        }
+        return text.append(')').toString();
+    }
+
+    /** 180 rather than 180.0 in a message. */
+    private static String number(float value) {
+        return value == Math.rint(value) ? String.valueOf((long) value) : String.valueOf(value);
+    }
+
+    /** An error at byte {@code offset} of the statement's line. */
+    private StatementError errorAt(int offset, String message, String help) {
+        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
+                source.lineText(lineStart), help));
+    }
+
+    /** Value {@code i} (of all groups) as written, for messages. */
+    private String written(int i) {
+        return source.text(groups.starts[i], groups.ends[i]);
+    }
+}

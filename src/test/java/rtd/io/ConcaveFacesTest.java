@@ -1,0 +1,91 @@
+package rtd.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Locale;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import rtd.scene.Scene;
+import rtd.testing.Renders;
+
+/** A face of more than three corners is split so that its triangles cover the face and nothing else. */
+@DisplayName("Faces of OBJ files that are not convex")
+class ConcaveFacesTest {
+
+    @TempDir
+    Path folder;
+
+    private static ObjMesh read(String obj) throws SceneException {
+        return ObjReader.read(new SourceText("model.obj", obj.getBytes(StandardCharsets.UTF_8)));
+    }
+
+    private static int[] corners(ObjMesh mesh) {
+        return Arrays.copyOf(mesh.corners(), 3 * mesh.count());
+    }
+
+    /**
+     * An L of area 3, its corners from the top of its upright bar: A(1|2), B(0|2), C(0|0), D(2|0),
+     * E(2|1), F(1|1), turning left, F the one corner that turns right. The fan from A would cover
+     * the square (1..2|1..2) outside the L. Ear clipping cuts off A (F A B, which holds no other
+     * corner), then B (F B C), then C (F C D), and D E F is left: areas ½ + 1 + 1 + ½ = 3.
+     */
+    @Test
+    void anLShapedHexagonIsCutIntoItsEars() throws SceneException {
+        ObjMesh mesh = read("v 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nf 1 2 3 4 5 6\n");
+        assertThat(corners(mesh)).containsExactly(5, 0, 1, 5, 1, 2, 5, 2, 3, 3, 4, 5);
+    }
+
+    @Test
+    void aConvexFaceIsStillAFanAroundItsFirstCorner() throws SceneException {
+        ObjMesh mesh = read("v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 3 0\nv -1 1 0\nf 1 2 3 4 5\n");
+        assertThat(corners(mesh)).containsExactly(0, 1, 2, 0, 2, 3, 0, 3, 4);
+    }
+
+    @Test
+    void aFaceWhoseCornersLieOnOneLineIsAFanToo() throws SceneException {
+        ObjMesh mesh = read("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3 4\n");
+        assertThat(corners(mesh)).containsExactly(0, 1, 2, 0, 2, 3);
+    }
+
+    /**
+     * A ring as one face, as assimp's concave_polygon.obj stores one: the outer circle (radius 2,
+     * 32 corners) turning left, a slit from its first corner in to the inner circle (radius 1),
+     * the inner circle turning right, and the slit back. The orthographic camera's ray through
+     * the centre pixel (the corner of pixel (10|10) of 21 × 21, at x' = y' = 0) meets the plane
+     * at the origin, in the hole: background. The ray of pixel (10|3) meets it at y = 7/5 = 1.4,
+     * on the ring, far from the slit along +x.
+     */
+    @Test
+    void aRingStoredAsOneFaceShowsTheBackgroundThroughItsHole() throws Exception {
+        StringBuilder obj = new StringBuilder();
+        for (double radius : new double[] {2, 1}) {
+            for (int k = 0; k < 32; k++) {
+                double angle = 2 * Math.PI * k / 32;
+                obj.append(String.format(Locale.ROOT, "v %.6f %.6f 0%n", radius * Math.cos(angle), radius * Math.sin(angle)));
+            }
+        }
+        obj.append("f");
+        for (int k = 1; k <= 32; k++) {
+            obj.append(' ').append(k); // the outer circle, turning left
+        }
+        obj.append(" 1 33"); // the slit in
+        for (int k = 64; k >= 33; k--) {
+            obj.append(' ').append(k); // the inner circle, turning right, back to its first corner
+        }
+        obj.append('\n');
+        Files.writeString(folder.resolve("ring.obj"), obj);
+        Scene scene = SceneIO.parseScene("scene.txt", "ambient:(0|0|255)\northographic_camera:(0|0|10):(0|0|-1):(5)\n"
+                + "mesh:(ring.obj):(0|0|0):(1):(255|0|0)\n", folder);
+
+        int[] pixels = Renders.paper(scene, 21, 21);
+
+        assertThat(pixels[10 * 21 + 10]).as("the centre").isEqualTo(0x0000FF);
+        assertThat(pixels[3 * 21 + 10]).as("the ring at y = 1.4").isEqualTo(0xFF0000);
+        assertThat(pixels[17 * 21 + 10]).as("the ring at y = -1.4").isEqualTo(0xFF0000);
+    }
+}
