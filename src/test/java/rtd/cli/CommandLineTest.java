@@ -46,9 +46,9 @@ class CommandLineTest {
 
     @Test
     void theDefaultOutputNameReplacesOnlyTheLastExtension() {
-        assertThat(JobPlanner.defaultOutput(Path.of("a/b.c.txt"))).isEqualTo(Path.of("a/b.c.png"));
-        assertThat(JobPlanner.defaultOutput(Path.of("scene"))).isEqualTo(Path.of("scene.png"));
-        assertThat(JobPlanner.defaultOutput(Path.of(".hidden"))).isEqualTo(Path.of(".hidden.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of("a/b.c.txt"), "")).isEqualTo(Path.of("a/b.c.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of("scene"), "")).isEqualTo(Path.of("scene.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of(".hidden"), "")).isEqualTo(Path.of(".hidden.png"));
     }
 
     @Test
@@ -147,9 +147,9 @@ class CommandLineTest {
     void filesThatMayNotBeReadOrWrittenAreSaidToBeSo() {
         // The tests run as root here, which may read and write anything, so the words are checked
         // on the exceptions Java throws for such files.
-        assertThat(FileProblems.reason(new java.nio.file.AccessDeniedException("secret.txt"))).isEqualTo("permission denied");
-        assertThat(FileProblems.reason(new java.nio.file.NoSuchFileException("nope.txt"))).isEqualTo("no such file");
-        assertThat(FileProblems.reason(new java.nio.file.FileSystemException("out.png", null, "No space left on device")))
+        assertThat(FileError.reason(new java.nio.file.AccessDeniedException("secret.txt"))).isEqualTo("permission denied");
+        assertThat(FileError.reason(new java.nio.file.NoSuchFileException("nope.txt"))).isEqualTo("no such file");
+        assertThat(FileError.reason(new java.nio.file.FileSystemException("out.png", null, "No space left on device")))
                 .isEqualTo("no space left on device");
     }
 

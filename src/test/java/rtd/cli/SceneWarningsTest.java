@@ -13,7 +13,7 @@ import rtd.testing.Cli.Run;
 
 /** A light that is almost black, and the slips with materials, get a line that says so; the picture is still written. */
 @DisplayName("The notes about a scene's light")
-class LightNotesTest {
+class SceneWarningsTest {
 
     private static final String CAMERA_AND_BALL = "orthographic_camera:(0|0|20):(0|0|-1):(50)\n";
 
