@@ -182,6 +182,23 @@ class CommandLineTest {
     }
 
     @Test
+    @DisplayName("An image beyond Java's limit is told the largest size of its shape that Java holds, and the --scale")
+    void anImageBeyondJavasLimitIsToldTheLargestOfItsShape() {
+        // 2,147,483,639 pixels at most: √(2,147,483,639 / 10^10) = 0.46341 of each side, 46340 × 46340 pixels
+        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("huge.png").toString(), "--width", "100000",
+                "--height", "100000");
+        String message = run.err().lines().findFirst().orElse("");
+        assertThat(message).isEqualTo("rtd: a 100000×100000 image has 10,000,000,000 pixels; Java images hold at most "
+                + "2,147,483,639: the largest of that shape is 46340×46340, or keep the view with --scale 0.463");
+        assertThat(Docs.errors()).contains(message);
+        // 60000 × 40000 at --scale 2 is 120000 × 80000: √(2,147,483,639 / 9.6·10^9) = 0.472965 of each side, and
+        // of the factor 2, so --scale 0.945 (three digits, rounded down)
+        assertThat(Cli.run(EXAMPLE.toString(), "--width", "60000", "--height", "40000", "--scale", "2").err())
+                .contains("a 120000×80000 image has 9,600,000,000 pixels").contains("the largest of that shape is "
+                        + "56755×37837, or keep the view with --scale 0.945");
+    }
+
+    @Test
     void threadsAndAccelAreCheckedAndAnyChoiceGivesTheSamePicture() throws IOException {
         assertThat(Cli.run(EXAMPLE.toString(), "--threads", "0").exitCode()).isEqualTo(2);
         Run accel = Cli.run(EXAMPLE.toString(), "--accel", "fast");

@@ -11,8 +11,12 @@ import org.junit.jupiter.api.io.TempDir;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
-/** A light that is almost black, and the slips with materials, get a line that says so; the picture is still written. */
-@DisplayName("The notes about a scene's light")
+/**
+ * A scene that draws a picture without a word of why it looks wrong gets a line that says so: a light that is
+ * almost black, a light or a camera inside a closed object, and the slips with materials; the picture is still
+ * written.
+ */
+@DisplayName("The warnings about a scene's camera and lights")
 class SceneWarningsTest {
 
     private static final String CAMERA_AND_BALL = "orthographic_camera:(0|0|20):(0|0|-1):(50)\n";
@@ -69,5 +73,49 @@ class SceneWarningsTest {
         assertThat(unused.err()).doesNotContain("bends nothing");
         assertThat(render(CAMERA_AND_BALL + "material:(m):(reflective=0.5)\nsphere:(0|0|0):(3):(255|0|0):(m)\n"
                 + "light:(0|0|10):(255|255|255)\n").err()).as("a lit scene whose material is named").isEmpty();
+    }
+
+    @Test
+    @DisplayName("A light inside a sphere is said to light nothing outside it, with the sphere named")
+    void aLightInsideASphereLightsNothingOutsideIt() throws IOException {
+        Run run = render(CAMERA_AND_BALL + "light:(0|0|0):(255|255|255)\nplane:(0|-3|0):(0|1|0):(0|255|0)\n"
+                + "sphere:(0|0|0):(2):(255|0|0)\n");
+        assertThat(line(run)).isEqualTo("rtd: warning: scene.txt: light #1 at (0|0|0) is inside sphere #2 (centre "
+                + "(0|0|0), radius 2): every point outside it is in its shadow, so the light lights nothing outside it; "
+                + "move the light out of it");
+    }
+
+    @Test
+    @DisplayName("A light inside a box is named with the box's corners; one just outside gets no warning")
+    void aLightInsideABoxLightsNothingOutsideIt() throws IOException {
+        String box = "box:(-1|-1|-1):(1|1|1):(255|0|0)\n";
+        Run run = render(CAMERA_AND_BALL + "light:(0.5|0|0):(255|255|255)\n" + box);
+        assertThat(run.err().strip()).isEqualTo("rtd: warning: " + dir.resolve("scene.txt") + ": light #1 at (0.5|0|0) is inside box #1 (from "
+                + "(-1|-1|-1) to (1|1|1)): every point outside it is in its shadow, so the light lights nothing "
+                + "outside it; move the light out of it");
+        assertThat(render(CAMERA_AND_BALL + "light:(1|0|0):(255|255|255)\n" + box).err()).isEmpty();
+    }
+
+    @Test
+    @DisplayName("A camera inside a sphere is said to show its inside in one colour, with either camera")
+    void aCameraInsideASphereShowsItsInside() throws IOException {
+        String sphere = "sphere:(0|0|20):(5):(255|0|0)\n";
+        Run run = render(CAMERA_AND_BALL + sphere);
+        assertThat(line(run)).isEqualTo("rtd: warning: scene.txt: the camera is inside sphere #1 (centre (0|0|20), "
+                + "radius 5): every ray starts inside it, so the picture shows its inside, all in one colour; move the "
+                + "camera out of it");
+        assertThat(render("perspective_camera:(0|0|20):(0|0|-1):(60)\n" + sphere).err())
+                .contains("the camera is inside sphere #1");
+        // the orthographic camera's rays leave from the whole image plane: 64/50 = 1.28 units wide, not inside 0.5
+        assertThat(render(CAMERA_AND_BALL + "sphere:(0|0|20):(0.5):(255|0|0)\n").err()).doesNotContain("inside");
+    }
+
+    @Test
+    @DisplayName("A camera inside a box is said to show its inside in one colour")
+    void aCameraInsideABoxShowsItsInside() throws IOException {
+        Run run = render(CAMERA_AND_BALL + "sphere:(0|0|0):(1):(0|0|255)\nbox:(-5|-5|15):(5|5|25):(255|0|0)\n");
+        assertThat(Docs.firstLine(run.err(), dir)).isEqualTo("rtd: warning: scene.txt: the camera is inside box #2 (from (-5|-5|15) to "
+                + "(5|5|25)): every ray starts inside it, so the picture shows its inside, all in one colour; move the "
+                + "camera out of it");
     }
 }
