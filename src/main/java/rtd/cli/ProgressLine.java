@@ -10,13 +10,14 @@ import java.util.OptionalDouble;
  * The words of the progress line for one phase, fitted to a terminal of any width: percent done, for a render
  * the rays traced per second as {@code --stats} counts them (all rays, over the render so far), and the time left.
  *
- * <p>The time left is the work left over the rate of the last {@value #WINDOW} s: rays get cheaper as the JIT
- * compiles, so the rate since the start would promise too long, and the first seconds are the slowest. It says
- * nothing until {@value #MIN_SECONDS} s or {@value #MIN_FRACTION} of the work have given it something to go on.
+ * <p>The time left is the work left over the rate of the last third of the time so far (at least the last
+ * second): rays get cheaper as the JIT compiles, so the rate since the start would promise too long, while the
+ * rate of a longer stretch does not swing with the cost of the last few rows. It says nothing until
+ * {@value #MIN_SECONDS} s or {@value #MIN_FRACTION} of the work have given it something to go on.
  */
 final class ProgressLine {
 
-    static final double WINDOW = 1.0;
+    static final double MIN_WINDOW = 1.0;
     static final double MIN_SECONDS = 1.5;
     static final double MIN_FRACTION = 0.05;
 
@@ -26,7 +27,8 @@ final class ProgressLine {
     /** The time left after {@code seconds} with {@code fraction} (0 to 1) of the work done; empty if unknown. */
     OptionalDouble timeLeft(double seconds, double fraction) {
         recent.addLast(new double[] {seconds, fraction});
-        while (recent.size() > 2 && seconds - secondOldest()[0] >= WINDOW) {
+        double window = Math.max(MIN_WINDOW, seconds / 3);
+        while (recent.size() > 2 && seconds - secondOldest()[0] >= window) {
             recent.removeFirst();
         }
         double[] then = recent.peekFirst();

@@ -39,8 +39,8 @@ class ProgressDisplayTest {
     }
 
     @Test
-    @DisplayName("The time left follows the rate of the last second, so a render that speeds up as the JIT compiles "
-            + "is not promised too long")
+    @DisplayName("The time left follows the rate of the last third of the time so far, so a render that speeds up as "
+            + "the JIT compiles is not promised too long")
     void timeLeftFollowsTheRecentRate() {
         // a fake clock: an update every 0.25 s; 5 % of the rows a second for 2 s, then 20 % a second
         ProgressLine line = new ProgressLine();
@@ -53,9 +53,10 @@ class ProgressDisplayTest {
             atThree = tick == 12 ? left : atThree;
             atFour = tick == 16 ? left : atFour;
         }
-        // at 3 s, 30 % done: the rows from 2 s to 3 s went at 20 %/s, so 70 % take 3.5 s (since the start: 7 s)
+        // at 3 s, 30 % done: the last second (a third of 3 s, at least 1 s), from 10 % to 30 %, went at 20 %/s, so
+        // the 70 % left take 3.5 s (at the rate since the start, 10 %/s, 7 s)
         assertThat(atThree).hasValueCloseTo(3.5, within(1e-9));
-        // at 4 s, 50 % done: 2.5 s
+        // at 4 s, 50 % done: the last update at least 4/3 s back is at 2.5 s, 20 %: 30 % in 1.5 s, 0.5 / 0.2 = 2.5 s
         assertThat(atFour).hasValueCloseTo(2.5, within(1e-9));
     }
 
