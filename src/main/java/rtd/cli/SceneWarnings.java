@@ -5,6 +5,7 @@ import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import rtd.geometry.BoundingBox;
 import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
@@ -35,15 +36,16 @@ final class SceneWarnings {
     /** The lines to print for {@code scene} (its camera as rendered), named {@code name}; the lights' if {@code lit}. */
     static List<String> of(String name, Scene scene, int width, int height, boolean lit) {
         List<String> warnings = new ArrayList<>();
-        if (scene.objects().size() <= MOST_LOOKED_AT) {
+        List<IGeometry> objects = scene.objects();
+        if (objects.size() <= MOST_LOOKED_AT) {
             List<Ray> corners = List.of(scene.camera().generateRay(0, 0, width, height),
                     scene.camera().generateRay(width - 1, 0, width, height),
                     scene.camera().generateRay(0, height - 1, width, height),
                     scene.camera().generateRay(width - 1, height - 1, width, height));
-            cameraInPlane(scene.objects(), corners).ifPresent(warnings::add);
-            cameraInside(scene.objects(), corners).ifPresent(warnings::add);
+            cameraInPlane(objects, corners).ifPresent(warnings::add);
+            cameraInside(objects, corners).ifPresent(warnings::add);
             for (int i = 0; lit && i < scene.lights().size(); i++) {
-                lightInside(scene.objects(), scene.lights().get(i), i + 1).ifPresent(warnings::add);
+                lightInside(objects, corners, scene.lights().get(i), i + 1).ifPresent(warnings::add);
             }
         }
         for (int i = 0; lit && i < scene.lights().size(); i++) {
@@ -75,27 +77,52 @@ final class SceneWarnings {
         return Optional.empty();
     }
 
-    /** The first sphere or box that all four corner rays start in: being convex, it holds every ray's start. */
+    /**
+     * A sphere or box that every ray starts in (being convex, it holds them all if it holds the four corners'), with
+     * nothing else in reach of its box: a room with objects inside it is no mistake.
+     */
     private static Optional<String> cameraInside(List<IGeometry> objects, List<Ray> corners) {
+        int room = enclosing(objects, corners);
+        if (room < 0) {
+            return Optional.empty();
+        }
+        BoundingBox box = objects.get(room).bounds();
         for (int i = 0; i < objects.size(); i++) {
-            IGeometry object = objects.get(i);
-            if (corners.stream().allMatch(ray -> inside(object, ray.origin()))) {
-                return Optional.of("the camera is inside " + describe(object, i) + ": every ray starts "
-                        + "inside it, so the picture shows its inside, all in one colour; move the camera out of it");
+            BoundingBox other = objects.get(i).bounds();
+            if (i != room && (!other.isBounded() || other.min().x() <= box.max().x() && box.min().x() <= other.max().x()
+                    && other.min().y() <= box.max().y() && box.min().y() <= other.max().y()
+                    && other.min().z() <= box.max().z() && box.min().z() <= other.max().z())) {
+                return Optional.empty();
             }
         }
-        return Optional.empty();
+        return Optional.of("the camera is inside " + describe(objects.get(room), room) + ": every ray starts inside it, "
+                + "so the picture shows its inside, all in one colour; move the camera out of it");
     }
 
-    private static Optional<String> lightInside(List<IGeometry> objects, Light light, int number) {
+    /** A sphere or box that holds the light but not the camera, which sees its outside only. */
+    private static Optional<String> lightInside(List<IGeometry> objects, List<Ray> corners, Light light, int number) {
         for (int i = 0; i < objects.size(); i++) {
-            if (inside(objects.get(i), light.position())) {
+            if (inside(objects.get(i), light.position()) && !holdsAll(objects.get(i), corners)) {
                 return Optional.of("light #" + number + " at " + point(light.position()) + " is inside "
                         + describe(objects.get(i), i) + ": every point outside it is in its shadow, so the light lights "
                         + "nothing outside it; move the light out of it");
             }
         }
         return Optional.empty();
+    }
+
+    /** The first object that every corner ray starts in, or −1. */
+    private static int enclosing(List<IGeometry> objects, List<Ray> corners) {
+        for (int i = 0; i < objects.size(); i++) {
+            if (holdsAll(objects.get(i), corners)) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    private static boolean holdsAll(IGeometry object, List<Ray> corners) {
+        return corners.stream().allMatch(ray -> inside(object, ray.origin()));
     }
 
     /** Whether {@code p} lies strictly inside {@code object}, a sphere or a box (the closed objects). */

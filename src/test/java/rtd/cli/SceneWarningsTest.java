@@ -118,4 +118,11 @@ class SceneWarningsTest {
                 + "(5|5|25)): every ray starts inside it, so the picture shows its inside, all in one colour; move the "
                 + "camera out of it");
     }
+
+    @Test
+    @DisplayName("A room, a box that holds the camera, the light and a ball, is no mistake: no warning")
+    void aRoomThatHoldsCameraLightAndObjectsGetsNoWarning() throws IOException {
+        assertThat(render(CAMERA_AND_BALL + "light:(0|5|10):(255|255|255)\nbox:(-50|-50|-50):(50|50|50):(200|200|200)\n"
+                + "sphere:(0|0|0):(2):(255|0|0)\n").err()).isEmpty();
+    }
 }
