@@ -1,11 +1,17 @@
 package rtd.cli;
 
+import java.io.BufferedOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.function.DoubleConsumer;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
+import rtd.image.Picture;
 import rtd.io.ImageFormat;
+import rtd.io.ImageWriting;
+import rtd.io.SceneIO;
 
 /**
  * Where a file rtd writes goes, decided before rendering: a regular file that a complete new one replaces, or a
@@ -32,6 +38,20 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
 
     static OutputTarget standardOutput() {
         return new OutputTarget(DASH, DASH, Kind.STANDARD_OUTPUT);
+    }
+
+    /** Writes {@code picture} here in {@code format}, telling {@code progress} the fraction done; a regular file only whole. */
+    void write(Picture picture, ImageFormat format, OutputStream standardOutput, DoubleConsumer progress) throws FileError {
+        try {
+            switch (kind) {
+                case STREAM -> SceneIO.writeImageInto(picture, format, file, progress);
+                case REPLACE -> SceneIO.writeImage(picture, format, file, progress);
+                case STANDARD_OUTPUT -> ImageWriting.write(picture, format,
+                        new BufferedOutputStream(standardOutput, 1 << 16), progress);
+            }
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + spelt + "'", e);
+        }
     }
 
     /**

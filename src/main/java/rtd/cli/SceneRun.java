@@ -1,24 +1,19 @@
 package rtd.cli;
 
 import java.awt.image.BufferedImage;
-import java.io.BufferedOutputStream;
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.DoubleConsumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import rtd.image.Picture;
 import rtd.image.Rgb;
 import rtd.io.ImageFormat;
-import rtd.io.ImageWriting;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
-import rtd.io.SceneIO;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
@@ -86,7 +81,7 @@ final class SceneRun {
             display.show(ProgressDisplay.Phase.counted("writing " + target.spelt(),
                     () -> Double.longBitsToDouble(written.get())));
             writerReady.exceptionally(failure -> null).join(); // a failed warm-up: the write says why
-            write(result.image(), target, format, fraction -> written.set(Double.doubleToLongBits(fraction)));
+            target.write(result.image(), format, streams.out(), f -> written.set(Double.doubleToLongBits(f)));
             stats.endPhase("write");
             report = options.stats() ? stats.format(scene, accelerator, result.work(),
                     options.paper() ? 1 : options.threads(), target.spelt()) : "";
@@ -161,19 +156,5 @@ final class SceneRun {
         Picture marks = ParallelRenderer.render(scene.camera(), tracers, tracer -> hitMarks, options.width(),
                 options.height(), options.threads(), new RenderProgress()).image();
         return NothingInView.showsSomething(marks, 0);
-    }
-
-    private void write(Picture picture, OutputTarget target, ImageFormat format, DoubleConsumer progress)
-            throws FileError {
-        try {
-            switch (target.kind()) {
-                case STREAM -> SceneIO.writeImageInto(picture, format, target.file(), progress);
-                case REPLACE -> SceneIO.writeImage(picture, format, target.file(), progress);
-                case STANDARD_OUTPUT -> ImageWriting.write(picture, format,
-                        new BufferedOutputStream(streams.out(), 1 << 16), progress);
-            }
-        } catch (IOException e) {
-            throw new FileError("cannot write '" + target.spelt() + "'", e);
-        }
     }
 }

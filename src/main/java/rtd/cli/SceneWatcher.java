@@ -89,26 +89,20 @@ final class SceneWatcher {
         }
         err.println("rtd: watching " + describe(seen.keySet()) + " for changes; Ctrl-C stops");
         err.flush();
-        while (!stopped && !Thread.currentThread().isInterrupted()) {
-            try {
+        try {
+            while (!stopped && !Thread.currentThread().isInterrupted()) {
                 Thread.sleep(pollMillis);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                break;
-            }
-            Map<Path, String> now = fingerprints();
-            if (!now.equals(seen)) {
-                try {
+                Map<Path, String> now = fingerprints();
+                if (!now.equals(seen)) {
                     now = settled(now);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    break;
+                    err.println("rtd: " + changed(seen, now) + " changed: rendering again");
+                    seen = now;
+                    err.flush();
+                    code = renderOnce();
                 }
-                err.println("rtd: " + changed(seen, now) + " changed: rendering again");
-                seen = now;
-                err.flush();
-                code = renderOnce();
             }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
         return code;
     }

@@ -1,13 +1,10 @@
 package rtd.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
-import rtd.io.ImageFormat;
-import rtd.io.SceneIO;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
@@ -55,15 +52,10 @@ final class ViewRun {
                 options.height(), 1, options.threads(), new RenderProgress());
         stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
         ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
-        ImageFormat format = JobPlanner.format(target, commandLine);
         try {
-            if (target.kind() == OutputTarget.Kind.STREAM) {
-                SceneIO.writeImageInto(picture.picture(), format, target.file(), done -> { });
-            } else {
-                SceneIO.writeImage(picture.picture(), format, target.file(), done -> { });
-            }
-        } catch (IOException e) {
-            err.println("rtd: cannot write '" + target.spelt() + "': " + FileError.reason(e));
+            target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
+        } catch (FileError e) {
+            err.println("rtd: " + e.getMessage());
             return 1;
         }
         err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
