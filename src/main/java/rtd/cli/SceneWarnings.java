@@ -19,13 +19,15 @@ import rtd.scene.Scene;
 
 /**
  * The warnings, before rendering, for a scene that draws a picture without a word of why it looks wrong: a
- * camera in a plane (every ray hits it at {@code t = 0}, which wins every depth test), a camera inside a closed
- * object (every ray meets it from within), a light inside one (every point outside is in its shadow), a light so
- * dim it is black (as {@code (1|1|1)} is, The Ray Tracer Challenge's white: rtd's colours run to 255).
+ * camera in a plane (every ray hits it at {@code t = 0}, which wins every depth test), a camera alone inside a
+ * closed object, a sphere or box (every ray meets it from within), a light inside one that the camera sees from
+ * outside (every point outside is in its shadow), a light so dim it is black (as {@code (1|1|1)} is, The Ray
+ * Tracer Challenge's white: rtd's colours run to 255). The scene keeps no places in its file, so objects and lights
+ * are named by their number, as {@code --explain} numbers them.
  */
 final class SceneWarnings {
 
-    /** The most objects looked through: a student's scene takes a millisecond, a million would take tens. */
+    /** The most objects looked through: any student's scene, while a million objects are not held up. */
     private static final int MOST_LOOKED_AT = 100_000;
     /** One level of 255: a light no brighter than this in every channel is all but black. */
     private static final float ONE_LEVEL = 1 / 255f;
@@ -88,10 +90,7 @@ final class SceneWarnings {
         }
         BoundingBox box = objects.get(room).bounds();
         for (int i = 0; i < objects.size(); i++) {
-            BoundingBox other = objects.get(i).bounds();
-            if (i != room && (!other.isBounded() || other.min().x() <= box.max().x() && box.min().x() <= other.max().x()
-                    && other.min().y() <= box.max().y() && box.min().y() <= other.max().y()
-                    && other.min().z() <= box.max().z() && box.min().z() <= other.max().z())) {
+            if (i != room && overlap(objects.get(i).bounds(), box)) {
                 return Optional.empty();
             }
         }
@@ -119,6 +118,12 @@ final class SceneWarnings {
             }
         }
         return -1;
+    }
+
+    /** Whether {@code a} (unbounded: a plane, which may cross anything) and {@code b} share a point. */
+    private static boolean overlap(BoundingBox a, BoundingBox b) {
+        return !a.isBounded() || a.min().x() <= b.max().x() && b.min().x() <= a.max().x() && a.min().y() <= b.max().y()
+                && b.min().y() <= a.max().y() && a.min().z() <= b.max().z() && b.min().z() <= a.max().z();
     }
 
     private static boolean holdsAll(IGeometry object, List<Ray> corners) {
