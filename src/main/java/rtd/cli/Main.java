@@ -10,7 +10,7 @@ public final class Main {
 
     /** Runs the command and exits with its code: 0 done, 1 scene or file error, 2 misuse. */
     public static void main(String[] args) {
-        WriterWarmUp.start(ImageFormat.PNG); // the usual format, warmed while picocli starts and the scene is read
+        WarmUp.start(ImageFormat.PNG); // the usual format, warmed while picocli starts and the scene is read
         System.exit(RtdCommand.commandLine().execute(args));
     }
 }

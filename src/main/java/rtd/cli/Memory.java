@@ -1,20 +1,61 @@
 package rtd.cli;
 
 import java.lang.management.ManagementFactory;
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.math.RoundingMode;
 import java.util.Locale;
 import java.util.Optional;
+import picocli.CommandLine;
+import picocli.CommandLine.ParameterException;
 
 /**
- * Amounts of memory in words, and advice on Java's limit ({@code -Xmx}) that this machine can
- * follow: never more than the memory it has.
+ * Whether a picture fits in memory, checked before anything is allocated; amounts of memory in words; and advice
+ * on Java's limit ({@code -Xmx}) that this machine can follow: never more than the memory it has.
  */
 final class Memory {
 
     private static final long KIB = 1L << 10;
     private static final long MIB = 1L << 20;
     private static final long GIB = 1L << 30;
+    /** The most pixels of a Java image (an array of ints). */
+    private static final long MOST_PIXELS = Integer.MAX_VALUE - 8;
+    /**
+     * Bytes per pixel: the picture's {@code int}, and 6 more for the encoders of {@code javax.imageio} that
+     * convert the whole picture first.
+     */
+    private static final long BYTES_PER_PIXEL = 4 + 3 + 3;
 
     private Memory() {
+    }
+
+    /**
+     * That a {@code width × height} picture (after {@code scale}) fits in a Java image and in the memory left; a
+     * misuse (exit 2) that says what would fit if not.
+     */
+    static void checkImageFits(CommandLine commandLine, int width, int height, Scale scale) {
+        long pixels = (long) width * height;
+        if (pixels > MOST_PIXELS) {
+            double shrink = Math.sqrt(MOST_PIXELS / (double) pixels);
+            long w = (long) (width * shrink);
+            long h = (long) (height * shrink);
+            String factor = BigDecimal.valueOf(scale.factor() * shrink).round(new MathContext(3, RoundingMode.DOWN))
+                    .stripTrailingZeros().toPlainString();
+            throw new ParameterException(commandLine, String.format(Locale.ROOT, "a %d×%d image has %,d pixels; Java "
+                    + "images hold at most %,d: the largest of that shape is %d×%d, or keep the view with --scale %s",
+                    width, height, pixels, MOST_PIXELS, w, h, factor));
+        }
+        Runtime runtime = Runtime.getRuntime();
+        long available = runtime.maxMemory() - (runtime.totalMemory() - runtime.freeMemory());
+        long needed = pixels * BYTES_PER_PIXEL;
+        if (needed > available) {
+            String advice = xmx(needed + runtime.maxMemory(), physical())
+                    .map(xmx -> "choose a smaller --width/--height, or raise the limit: java -Xmx" + xmx + " -jar rtd.jar ...")
+                    .orElse("choose a smaller --width/--height: this machine has " + size(physical()) + " in all");
+            throw new ParameterException(commandLine, String.format(Locale.ROOT,
+                    "a %d×%d image needs %s of memory, but Java may use only %s more here (limit %s); %s",
+                    width, height, size(needed), size(available), size(runtime.maxMemory()), advice));
+        }
     }
 
     /** {@code bytes} in a unit that shows the difference between small amounts: "16.0 MiB", not "0.0 GiB". */

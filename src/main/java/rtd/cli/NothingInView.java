@@ -1,7 +1,8 @@
 package rtd.cli;
 
-import java.math.BigDecimal;
-import java.math.MathContext;
+import static rtd.cli.SceneWarnings.number;
+import static rtd.cli.SceneWarnings.point;
+
 import java.util.List;
 import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
@@ -13,21 +14,16 @@ import rtd.math.Vector3f;
 import rtd.scene.Scene;
 
 /**
- * The warning for a picture in which no ray hit anything: a plain background, which a user
- * would otherwise take for a bug. It names the likely cause: no objects, objects behind the
- * camera, or (for the orthographic camera) the visible region in world units and that no object
- * is in it, or that the objects in it fall between the rays.
+ * The warning for a picture in which no ray hit anything, which a user would otherwise take for a bug. It names
+ * the likely cause: no objects, objects behind the camera, or (orthographic camera) the region it sees in world
+ * units with no object in it, or objects in it that fall between the rays.
  */
 final class NothingInView {
 
     private NothingInView() {
     }
 
-    /**
-     * Whether some pixel of {@code picture} is not the background: then some ray surely hit. A
-     * picture of background alone is not proof of the opposite when an object has the
-     * background's colour.
-     */
+    /** Whether some pixel is not the background: then some ray surely hit (the converse fails for camouflage). */
     static boolean showsSomething(Picture picture, int background) {
         for (int pixel : picture.rgb()) {
             if (pixel != background) {
@@ -37,40 +33,36 @@ final class NothingInView {
         return false;
     }
 
-    /**
-     * Whether some object may be drawn in the background colour, so that its hits do not show: in
-     * a shaded scene any may (under a black light, or in shadow); in a flat one, one painted in it.
-     */
+    /** Whether an object may be drawn in the background's colour: any, in a lit scene; else one painted in it. */
     static boolean someObjectLooksLikeBackground(Scene scene) {
-        if (!scene.lights().isEmpty()) {
-            return true;
-        }
         int background = scene.ambient().getRGB();
-        return scene.objects().stream().anyMatch(object -> object.color().getRGB() == background);
+        return !scene.lights().isEmpty() || scene.objects().stream().anyMatch(o -> o.color().getRGB() == background);
     }
 
-    /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}, at {@code width × height}. */
-    static String warning(String name, Scene scene, int width, int height) {
+    /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}, drawn as {@code options} ask. */
+    static String warning(String name, Scene scene, RenderOptions options) {
         return "rtd: warning: " + name + ": no ray hit anything, so the picture is only background: "
-                + cause(scene, width, height);
+                + cause(scene, options);
     }
 
-    private static String cause(Scene scene, int width, int height) {
+    private static String cause(Scene scene, RenderOptions options) {
         List<IGeometry> objects = scene.objects();
         ICamera camera = scene.camera();
         if (objects.isEmpty()) {
             return "the scene has no objects";
         }
-        Vector3f forward = forward(camera);
-        long behind = forward == null ? 0 : objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward)).count();
+        Vector3f forward = camera instanceof OrthographicCamera o ? o.direction()
+                : camera instanceof PerspectiveCamera p ? p.direction() : null;
+        long behind = forward == null ? 0 : objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward))
+                .count();
         if (behind == objects.size()) {
             return (objects.size() == 1 ? "the one object is" : "all " + objects.size() + " objects are")
-                    + " behind the camera, which looks along " + point(forward) + " from "
-                    + point(camera.position());
+                    + " behind the camera, which looks along " + point(forward) + " from " + point(camera.position());
         }
-        String someBehind = behind == 0 ? "" : " (" + behind + " of the " + objects.size() + " objects " + (behind == 1 ? "is" : "are") + " behind it)";
+        String someBehind = behind == 0 ? "" : " (" + behind + " of the " + objects.size() + " objects "
+                + (behind == 1 ? "is" : "are") + " behind it)";
         if (camera instanceof OrthographicCamera orthographic) {
-            return orthographicCause(orthographic, objects, width, height) + someBehind;
+            return orthographicCause(orthographic, objects, options) + someBehind;
         }
         if (camera instanceof PerspectiveCamera perspective) {
             return "no object is within the camera's " + number(perspective.fieldOfView()) + "° field of view from "
@@ -79,48 +71,62 @@ final class NothingInView {
         return "no object is in the camera's view" + someBehind;
     }
 
-    private static String orthographicCause(OrthographicCamera camera, List<IGeometry> objects, int width, int height) {
+    private static String orthographicCause(OrthographicCamera camera, List<IGeometry> objects, RenderOptions options) {
+        int width = options.width();
+        int height = options.height();
         double zoom = camera.zoom();
-        Region region = Region.of(camera, width, height);
         String seen = "the camera sees " + number(width / zoom) + " × " + number(height / zoom) + " world units around "
                 + point(camera.position()) + " (width/zoom × height/zoom)";
-        boolean someoneInRegion = objects.stream().map(IGeometry::bounds)
-                .anyMatch(box -> !box.isBounded() || region.overlaps(box));
-        if (someoneInRegion) {
+        if (objects.stream().anyMatch(o -> inRegion(o.bounds(), camera, width, height))) {
             return seen + ", and the objects there fall between its rays, which are " + number(1 / zoom)
                     + " world units apart (1/zoom); raise the zoom";
         }
-        return seen + ", and no object is in that region; move the camera, or lower its zoom to see more";
+        return seen + ", and no object is in that region; move the camera, or lower its zoom to see more"
+                + scaleHint(camera, objects, options);
     }
 
-    /** The part of the image plane that the rays leave from, in front of an orthographic camera. */
-    private record Region(OrthographicCamera camera, double left, double right, double top, double bottom) {
-
-        static Region of(OrthographicCamera camera, int width, int height) {
-            double zoom = camera.zoom();
-            // Listing 4.1: offsets from -(w/2) to w - 1 - w/2 pixels, one pixel more for the rays' spacing
-            return new Region(camera, -(width / 2) / zoom, (width - width / 2) / zoom,
-                    -(height / 2) / zoom, (height - height / 2) / zoom);
+    /**
+     * For {@code --width} and {@code --height} of the default's shape, where the default size would show an
+     * object: the {@code --scale} that shows the default view at the size asked for.
+     */
+    private static String scaleHint(OrthographicCamera camera, List<IGeometry> objects, RenderOptions options) {
+        int w = RtdCommand.DEFAULT_WIDTH;
+        int h = RtdCommand.DEFAULT_HEIGHT;
+        Scale scale = new Scale(Double.parseDouble(number(options.width() / (double) w)));
+        if (!options.given() || options.scale().factor() != 1 || (long) options.width() * h != (long) options.height() * w
+                || scale.times(w) != options.width() || scale.times(h) != options.height()
+                || objects.stream().noneMatch(o -> inRegion(o.bounds(), camera, w, h))) {
+            return "";
         }
+        return "; or, to see at " + options.width() + "×" + options.height() + " what " + w + "×" + h + " shows, give "
+                + "--scale " + scale + " in place of --width and --height";
+    }
 
-        /** Whether {@code box} lies in front of the camera and reaches into the region as seen along the view. */
-        boolean overlaps(BoundingBox box) {
-            double[] u = range(box, camera.widthVector());
-            double[] v = range(box, camera.heightVector());
-            return u[1] >= left && u[0] <= right && v[1] >= top && v[0] <= bottom
-                    && !isBehind(box, camera.position(), camera.direction());
+    /**
+     * Whether {@code box} reaches, in front of the camera, into the part of the image plane that its rays leave
+     * from: by Listing 4.1, offsets from −(w/2) to w − w/2 pixels (one more for the rays' spacing), over the zoom.
+     */
+    private static boolean inRegion(BoundingBox box, OrthographicCamera camera, int width, int height) {
+        if (!box.isBounded()) {
+            return true;
         }
+        double zoom = camera.zoom();
+        double[] u = range(box, camera.position(), camera.widthVector());
+        double[] v = range(box, camera.position(), camera.heightVector());
+        return u[1] >= -(width / 2) / zoom && u[0] <= (width - width / 2) / zoom && v[1] >= -(height / 2) / zoom
+                && v[0] <= (height - height / 2) / zoom && !isBehind(box, camera.position(), camera.direction());
+    }
 
-        private double[] range(BoundingBox box, Vector3f axis) {
-            double low = Double.POSITIVE_INFINITY;
-            double high = Double.NEGATIVE_INFINITY;
-            for (Vector3f corner : corners(box)) {
-                double along = corner.subtract(camera.position()).dot(axis);
-                low = Math.min(low, along);
-                high = Math.max(high, along);
-            }
-            return new double[] {low, high};
+    /** The least and greatest of the box's corners along {@code axis}, from {@code origin}. */
+    private static double[] range(BoundingBox box, Vector3f origin, Vector3f axis) {
+        double low = Double.POSITIVE_INFINITY;
+        double high = Double.NEGATIVE_INFINITY;
+        for (Vector3f corner : corners(box)) {
+            double along = corner.subtract(origin).dot(axis);
+            low = Math.min(low, along);
+            high = Math.max(high, along);
         }
+        return new double[] {low, high};
     }
 
     /** Whether every corner of {@code box} lies behind the plane through {@code position} facing {@code forward}. */
@@ -142,26 +148,5 @@ final class NothingInView {
         return new Vector3f[] {a, new Vector3f(b.x(), a.y(), a.z()), new Vector3f(a.x(), b.y(), a.z()),
             new Vector3f(a.x(), a.y(), b.z()), new Vector3f(b.x(), b.y(), a.z()), new Vector3f(b.x(), a.y(), b.z()),
             new Vector3f(a.x(), b.y(), b.z()), b};
-    }
-
-    /** The view direction as the scene file gave it, or null for a camera that does not tell. */
-    private static Vector3f forward(ICamera camera) {
-        if (camera instanceof OrthographicCamera orthographic) {
-            return orthographic.direction();
-        }
-        if (camera instanceof PerspectiveCamera perspective) {
-            return perspective.direction();
-        }
-        return null;
-    }
-
-    /** A point as the scene file writes it: (0|0|20). */
-    static String point(Vector3f p) {
-        return "(" + number(p.x()) + "|" + number(p.y()) + "|" + number(p.z()) + ")";
-    }
-
-    /** A number in at most 6 significant digits, without needless zeros: 38.4, 20, 0.02. */
-    static String number(double value) {
-        return new BigDecimal(value).round(new MathContext(6)).stripTrailingZeros().toPlainString();
     }
 }

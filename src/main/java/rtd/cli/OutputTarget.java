@@ -1,30 +1,33 @@
 package rtd.cli;
 
+import java.io.BufferedOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Optional;
+import java.util.function.DoubleConsumer;
+import picocli.CommandLine;
+import picocli.CommandLine.ParameterException;
+import rtd.image.Picture;
+import rtd.io.ImageFormat;
+import rtd.io.ImageWriting;
+import rtd.io.SceneIO;
 
 /**
- * Where the picture goes, decided before rendering: the file that a new picture replaces, or a
- * FIFO or character device that it is written into.
- *
- * <p>Decided on the real file, not on the path as spelt: a symbolic link (the output itself or a
- * folder on the way) is followed, so that neither the scene file nor a device nor the link
- * itself is ever replaced.
+ * Where a file rtd writes goes, decided before rendering: a regular file that a complete new one replaces, or a
+ * FIFO or character device that it is written into. Decided on the real file, links followed (the output itself
+ * or a folder on the way), so that neither the scene file nor a device nor the link itself is ever replaced.
  *
  * @param spelt the output as the user gave it, for messages
- * @param file  where to write: for {@link Kind#REPLACE} the real file (links followed), whose
- *              folder holds the temporary file; for {@link Kind#STREAM} the path as given
- * @param kind  how to write
+ * @param file  where to write: for {@link Kind#REPLACE} the real file, whose folder holds the temporary file
  */
 record OutputTarget(Path spelt, Path file, Kind kind) {
 
-    /** How the picture reaches the output. */
+    /** How the file reaches the output. */
     enum Kind {
         /** A regular file, new or old: written to a temporary file, then moved into place. */
         REPLACE,
-        /** A FIFO or character device such as /dev/null: the picture is written into it as it is. */
+        /** A FIFO or character device such as /dev/null: written into as it is. */
         STREAM,
         /** {@code -o -}: standard output, which must not be a terminal. */
         STANDARD_OUTPUT
@@ -33,69 +36,100 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
     /** The name by which {@code -o} names standard output. */
     static final Path DASH = Path.of("-");
 
-    /** Standard output, for {@code -o -}. */
     static OutputTarget standardOutput() {
         return new OutputTarget(DASH, DASH, Kind.STANDARD_OUTPUT);
     }
 
-    /** What kind of file a path names, by the file-type bits of its mode (Linux, macOS). */
-    private enum FileType {
-        REGULAR, FIFO, CHARACTER_DEVICE, BLOCK_DEVICE, SOCKET, UNKNOWN;
-
-        static FileType of(Path path) {
-            try {
-                int mode = (Integer) Files.getAttribute(path, "unix:mode");
-                return switch (mode & 0170000) {
-                    case 0100000 -> REGULAR;
-                    case 0010000 -> FIFO;
-                    case 0020000 -> CHARACTER_DEVICE;
-                    case 0060000 -> BLOCK_DEVICE;
-                    case 0140000 -> SOCKET;
-                    default -> UNKNOWN;
-                };
-            } catch (IOException | UnsupportedOperationException | IllegalArgumentException e) {
-                // No "unix" view (Windows): a regular file is still told apart; anything else is refused.
-                return Files.isRegularFile(path) ? REGULAR : UNKNOWN;
+    /** Writes {@code picture} here in {@code format}, telling {@code progress} the fraction done; a regular file only whole. */
+    void write(Picture picture, ImageFormat format, OutputStream standardOutput, DoubleConsumer progress) throws FileError {
+        try {
+            switch (kind) {
+                case STREAM -> SceneIO.writeImageInto(picture, format, file, progress);
+                case REPLACE -> SceneIO.writeImage(picture, format, file, progress);
+                case STANDARD_OUTPUT -> ImageWriting.write(picture, format,
+                        new BufferedOutputStream(standardOutput, 1 << 16), progress);
             }
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + spelt + "'", e);
         }
     }
 
     /**
-     * What {@code output} is, or why rtd may not write it: a {@link Refusal} that the command
-     * line turns into a message. The scene file is {@code scene}; {@code option} names the output
-     * in messages ({@code -o}, {@code --export-pov}).
+     * Where {@code spelt} goes, which {@code option} names ({@code -o}, {@code --export-pov}) for the scene file
+     * {@code scene}, its folder there and writable: a mistake on the command line is thrown as such (exit 2), a
+     * file that may not be written as a {@link FileError}.
      */
-    static OutputTarget of(Path output, Path scene, String option) throws Refusal {
+    static OutputTarget of(Path spelt, Path scene, String option, CommandLine commandLine) throws FileError {
+        OutputTarget target = find(spelt, scene, option, commandLine);
+        if (target.kind == Kind.REPLACE) {
+            Path folder = target.file.toAbsolutePath().getParent();
+            if (!Files.isDirectory(folder)) {
+                throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' "
+                        + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"));
+            }
+            if (!Files.isWritable(folder)) {
+                throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' is not writable");
+            }
+        }
+        Path real = target.file.getFileName();
+        if (target.kind == Kind.REPLACE && "-o".equals(option) && real != null && !real.equals(spelt.getFileName())
+                && !(ImageFormat.extensionOf(target.file).isPresent()
+                        && ImageFormat.forOutput(target.file).equals(ImageFormat.forOutput(spelt)))) {
+            // a link to a file of another kind, such as a mesh or notes: a slip, and replacing it would destroy it
+            throw new ParameterException(commandLine, "'" + spelt + "' leads to '" + target.file + "', whose name "
+                    + "is not that of a ." + ImageFormat.forOutput(spelt).map(ImageFormat::extension).orElse("png")
+                    + " picture; rtd writes through a link only into a picture of the kind asked for");
+        }
+        return target;
+    }
+
+    private static OutputTarget find(Path output, Path scene, String option, CommandLine commandLine) throws FileError {
         if (Files.isDirectory(output)) {
-            throw Refusal.misuse("the output '" + output + "' is a folder; give a file name such as " + output.resolve("out.png"));
+            throw new ParameterException(commandLine, "the output '" + output + "' is a folder; give a file name such "
+                    + "as " + output.resolve("out.png"));
         }
         if (!Files.exists(output)) {
             if (Files.isSymbolicLink(output)) {
-                throw Refusal.fileError("cannot write '" + output + "': it is a symbolic link to '" + linkTarget(output)
+                throw new FileError("cannot write '" + output + "': it is a symbolic link to '" + linkTarget(output)
                         + "', which does not exist");
             }
             return new OutputTarget(output, output, Kind.REPLACE);
         }
         if (isSameFile(output, scene)) {
-            throw Refusal.misuse("the output '" + output + "' is the scene file itself; choose another with " + option);
+            throw new ParameterException(commandLine, "the output '" + output + "' is the scene file itself; choose "
+                    + "another with " + option);
         }
-        return switch (FileType.of(output)) {
-            case REGULAR -> new OutputTarget(output, realPath(output), Kind.REPLACE);
-            case FIFO, CHARACTER_DEVICE -> new OutputTarget(output, output, Kind.STREAM);
-            case BLOCK_DEVICE -> throw notAFile(output, "a block device (a disk)");
-            case SOCKET -> throw notAFile(output, "a socket");
-            case UNKNOWN -> throw notAFile(output, "not a regular file");
+        String notAFile = switch (fileType(output)) {
+            case 0100000 -> null;
+            case 0010000, 0020000 -> "";
+            case 0060000 -> "a block device (a disk)";
+            case 0140000 -> "a socket";
+            default -> "not a regular file";
         };
+        if (notAFile == null) {
+            try {
+                return new OutputTarget(output, output.toRealPath(), Kind.REPLACE);
+            } catch (IOException e) {
+                throw new FileError("cannot write '" + output + "'", e);
+            }
+        }
+        if (notAFile.isEmpty()) {
+            return new OutputTarget(output, output, Kind.STREAM);
+        }
+        throw new ParameterException(commandLine, "the output '" + output + "' is " + notAFile + "; rtd writes the "
+                + "picture to a file, a FIFO or a character device such as /dev/null");
     }
 
-    /** The folder that must exist and be writable: the one the temporary file goes to. */
-    Optional<Path> folder() {
-        return kind == Kind.REPLACE ? Optional.of(file.toAbsolutePath().getParent()) : Optional.empty();
-    }
-
-    private static Refusal notAFile(Path output, String what) {
-        return Refusal.misuse("the output '" + output + "' is " + what
-                + "; rtd writes the picture to a file, a FIFO or a character device such as /dev/null");
+    /**
+     * The file-type bits of the mode (Linux, macOS): regular file, FIFO, character or block device, socket. Without a
+     * "unix" view (Windows) a regular file is still told apart, and anything else is refused.
+     */
+    private static int fileType(Path path) {
+        try {
+            return (Integer) Files.getAttribute(path, "unix:mode") & 0170000;
+        } catch (IOException | UnsupportedOperationException | IllegalArgumentException e) {
+            return Files.isRegularFile(path) ? 0100000 : 0;
+        }
     }
 
     /** Whether both name one file, after links; spelt paths decide only when a file is missing. */
@@ -107,42 +141,11 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         }
     }
 
-    private static Path realPath(Path output) throws Refusal {
-        try {
-            return output.toRealPath();
-        } catch (IOException e) {
-            throw Refusal.fileError("cannot write '" + output + "': " + FileProblems.reason(e));
-        }
-    }
-
     private static String linkTarget(Path link) {
         try {
             return Files.readSymbolicLink(link).toString();
         } catch (IOException e) {
             return "?";
-        }
-    }
-
-    /** Why the output may not be written; {@link #misuse} is a mistake on the command line (exit 2). */
-    static final class Refusal extends Exception {
-        private static final long serialVersionUID = 1L;
-        private final boolean misuse;
-
-        private Refusal(String message, boolean misuse) {
-            super(message, null, false, false);
-            this.misuse = misuse;
-        }
-
-        static Refusal misuse(String message) {
-            return new Refusal(message, true);
-        }
-
-        static Refusal fileError(String message) {
-            return new Refusal(message, false);
-        }
-
-        boolean misuse() {
-            return misuse;
         }
     }
 }

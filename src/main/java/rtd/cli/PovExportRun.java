@@ -15,21 +15,16 @@ import rtd.pov.PovScene;
 import rtd.scene.Scene;
 
 /**
- * {@code --export-pov FILE.pov}: writes the scene for POV-Ray ({@link PovScene}) and says how to
- * render it. Where it goes is decided before the scene is read, by the rules of {@code -o}
- * ({@link JobPlanner#target}): never a folder, the scene file, or a link's own file; and only a
- * file whose name ends in {@code .pov}, also behind a link, so that a slip cannot replace a mesh,
- * a scene or a picture.
+ * {@code --export-pov FILE.pov}: writes the scene for POV-Ray ({@link PovScene}) and says how to render it. Where
+ * it goes is decided before the scene is read, by the rules of {@code -o} ({@link OutputTarget}), and only to a
+ * name ending in {@code .pov}, also behind a link, so that a slip cannot replace a mesh, a scene or a picture.
  */
 final class PovExportRun {
 
     private PovExportRun() {
     }
 
-    /**
-     * Where the export of {@code file} goes; a name or place that may not be written is a
-     * mistake on the command line (thrown) or a {@link FileError}.
-     */
+    /** Where the export of {@code file} goes; a name or place that may not be written is a misuse or a {@link FileError}. */
     static OutputTarget plan(Path file, Path scene, CommandLine commandLine) throws FileError {
         if (file.toString().equals("-")) {
             throw new ParameterException(commandLine, "--export-pov writes a file, not standard output ('-'); give a "
@@ -45,7 +40,7 @@ final class PovExportRun {
             throw new ParameterException(commandLine, "--export-pov writes a POV-Ray scene, and its name must end in "
                     + ".pov; '" + file + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
         }
-        OutputTarget target = JobPlanner.target(file, scene, "--export-pov", commandLine);
+        OutputTarget target = OutputTarget.of(file, scene, "--export-pov", commandLine);
         if (target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file())) {
             throw new ParameterException(commandLine, "'" + file + "' leads to '" + target.file() + "', whose name does "
                     + "not end in .pov; --export-pov replaces only a POV-Ray scene");
@@ -57,10 +52,7 @@ final class PovExportRun {
         return file.getFileName() != null && file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pov");
     }
 
-    /**
-     * Writes the export of {@code scene} at {@code width × height} to {@code target}, and answers
-     * the two lines that say so and how to render it; a failure is a {@link FileError} that says why.
-     */
+    /** Writes the export of {@code scene} at {@code width × height}, and answers the lines that say how to render it. */
     static String write(Scene scene, OutputTarget target, int width, int height) throws FileError {
         Path file = target.spelt();
         String name = file.getFileName().toString();
@@ -68,7 +60,7 @@ final class PovExportRun {
         try {
             text = PovScene.of(scene, width, height, name);
         } catch (IllegalArgumentException e) {
-            throw new FileError("cannot export to POV-Ray: " + e.getMessage(), null);
+            throw new FileError("cannot export to POV-Ray: " + e.getMessage());
         }
         try {
             if (target.kind() == OutputTarget.Kind.STREAM) {
@@ -79,7 +71,7 @@ final class PovExportRun {
                 replace(target.file(), text);
             }
         } catch (IOException e) {
-            throw new FileError("cannot write '" + file + "': " + FileProblems.reason(e), e);
+            throw new FileError("cannot write '" + file + "'", e);
         }
         String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
         return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"

@@ -1,19 +1,15 @@
 package rtd.cli;
 
 import java.io.PrintWriter;
-import java.util.OptionalDouble;
 import java.util.function.DoubleSupplier;
 import java.util.function.IntSupplier;
+import java.util.function.LongSupplier;
 
 /**
- * A one-line progress display on standard error, redrawn in place a few times a second: what
- * the run is doing ("reading scene.txt", "rendering", "writing out.png"), how much of it is done
- * and how long it has left. It shows only once a run has taken more than a second, and only on
- * a terminal.
- *
- * <p>The line always ends short of the terminal's last column: a line that fills it would wrap,
- * and each redraw, which returns to the start of the line with {@code \r}, would add a line.
- * It is cleared when the run ends, and when Ctrl-C stops the JVM (a shutdown hook).
+ * A one-line progress display on standard error, redrawn in place four times a second ({@link ProgressLine}):
+ * what the run is doing ("reading scene.txt", "rendering", "writing out.png"), how much is done and how long it
+ * has left. It shows only on a terminal, once a run has taken a second; it ends short of the last column (a full
+ * line would wrap, and each {@code \r} redraw add a line); and it is cleared when the run ends, also by Ctrl-C.
  */
 final class ProgressDisplay implements AutoCloseable {
 
@@ -31,24 +27,24 @@ final class ProgressDisplay implements AutoCloseable {
     private boolean hooked;
     private int columns;
     private Phase timed;
-    private TimeLeft timeLeft;
+    private ProgressLine line;
 
-    /** What the run is doing: its name, and the fraction done (NaN if unknown); for rendering, Mrays in all. */
-    record Phase(String name, DoubleSupplier fraction, double megaRays, long startNanos) {
+    /** What the run is doing: its name, the fraction done (NaN if unknown), and the rays traced (negative: none). */
+    record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos) {
 
         /** A phase whose progress is unknown, such as reading the scene. */
         static Phase of(String name) {
-            return new Phase(name, () -> Double.NaN, 0, System.nanoTime());
+            return counted(name, () -> Double.NaN);
         }
 
         /** A phase that knows the fraction it has done. */
         static Phase counted(String name, DoubleSupplier fraction) {
-            return new Phase(name, fraction, 0, System.nanoTime());
+            return new Phase(name, fraction, () -> -1, System.nanoTime());
         }
 
-        /** Rendering {@code megaRays} million rays, with the fraction done. */
-        static Phase rendering(DoubleSupplier fraction, double megaRays) {
-            return new Phase("rendering", fraction, megaRays, System.nanoTime());
+        /** Rendering, with the fraction done and the rays traced so far. */
+        static Phase rendering(DoubleSupplier fraction, LongSupplier rays) {
+            return new Phase("rendering", fraction, rays, System.nanoTime());
         }
     }
 
@@ -62,7 +58,7 @@ final class ProgressDisplay implements AutoCloseable {
 
     /** Starts a display on {@code err}, a terminal; if not {@code enabled}, one that never shows anything. */
     static ProgressDisplay start(boolean enabled, PrintWriter err) {
-        ProgressDisplay display = new ProgressDisplay(err, Terminal::columns, 1000);
+        ProgressDisplay display = new ProgressDisplay(err, StandardStreams::columns, 1000);
         if (enabled) {
             display.thread.start();
         }
@@ -107,14 +103,10 @@ final class ProgressDisplay implements AutoCloseable {
     private String text(Phase current, long now) {
         if (current != timed) {
             timed = current;
-            timeLeft = new TimeLeft();
+            line = new ProgressLine();
         }
-        double seconds = (now - current.startNanos()) / 1e9;
-        double fraction = current.fraction().getAsDouble();
-        String rate = current.megaRays() > 0 && seconds > 0 && fraction >= 0
-                ? String.format(java.util.Locale.ROOT, "%.2f Mrays/s", fraction * current.megaRays() / seconds) : null;
-        OptionalDouble left = Double.isNaN(fraction) ? OptionalDouble.empty() : timeLeft.update(seconds, fraction);
-        return ProgressText.line(current.name(), fraction, rate, left, seconds, columns);
+        return line.update(current.name(), (now - current.startNanos()) / 1e9, current.fraction().getAsDouble(),
+                current.rays().getAsLong(), columns);
     }
 
     private boolean addHook() {

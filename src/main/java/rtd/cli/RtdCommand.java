@@ -9,22 +9,23 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.IVersionProvider;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine.UnmatchedArgumentException;
 import rtd.io.SceneException;
 
 /**
- * The command line: {@code java -jar rtd.jar SCENE... [-o OUT] [--width N] [--height N] [--scale F]}.
- * It reads each scene, renders it and writes the picture ({@link SceneRun}), after checking the
- * whole command line, where each picture goes included ({@link JobPlanner}): a mistake there
- * (exit code 2) stops everything before any work, while a scene that fails (exit code 1) does
- * not keep the others from being rendered.
+ * The command line: {@code java -jar rtd.jar SCENE... [-o OUT] [--width N] [--height N] [--scale F]}. It checks the
+ * whole command line first, where each picture goes included ({@link JobPlanner}): a mistake there (exit code 2)
+ * stops everything before any work. Then it renders each scene ({@link SceneRun}); one that fails (exit code 1)
+ * does not keep the others from being rendered.
  */
-@Command(name = RtdCommand.NAME, mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+@Command(name = RtdCommand.NAME, mixinStandardHelpOptions = true, versionProvider = RtdCommand.Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
         description = {"Renders scene files to pictures by ray tracing, as the \"3D Raytracing Demo Project\" does.",
             "Each SCENE is written beside it, as SCENE with .png in place of its extension, unless -o names the "
@@ -43,37 +44,40 @@ public final class RtdCommand implements Callable<Integer> {
 
     /** How the command is started, for the help and its messages. */
     static final String NAME = "java -jar rtd.jar";
+    /** The paper's picture size. */
+    static final int DEFAULT_WIDTH = 1920;
+    static final int DEFAULT_HEIGHT = 1080;
 
     @Spec
     private CommandSpec spec;
 
     private final StandardStreams streams;
 
-    @Parameters(index = "0..*", arity = "1..*", paramLabel = "SCENE", converter = FileName.class,
+    @Parameters(index = "0..*", arity = "1..*", paramLabel = "SCENE", converter = OptionValues.FileName.class,
             description = "the scene files to render; '-' is standard input")
     private List<Path> scenePaths;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT", converter = OutputFileName.class,
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT", converter = OptionValues.OutputFile.class,
             description = "where to write the picture, with one SCENE: its extension chooses the format (.png, .jpg, "
                     + ".bmp, ...; PNG if it has none); '-' is standard output, as PNG "
                     + "(default: SCENE with .png in place of its extension)")
     private Path output;
 
-    @Option(names = "--width", paramLabel = "N", defaultValue = "1920", converter = PositiveInt.class,
-            description = "image width in pixels (default: ${DEFAULT-VALUE})")
+    @Option(names = "--width", paramLabel = "N", defaultValue = "" + DEFAULT_WIDTH,
+            converter = OptionValues.PositiveWhole.class, description = "image width in pixels (default: ${DEFAULT-VALUE})")
     private int width;
 
-    @Option(names = "--height", paramLabel = "N", defaultValue = "1080", converter = PositiveInt.class,
-            description = "image height in pixels (default: ${DEFAULT-VALUE})")
+    @Option(names = "--height", paramLabel = "N", defaultValue = "" + DEFAULT_HEIGHT,
+            converter = OptionValues.PositiveWhole.class, description = "image height in pixels (default: ${DEFAULT-VALUE})")
     private int height;
 
-    @Option(names = "--scale", paramLabel = "F", defaultValue = "1", converter = Scale.Converter.class,
+    @Option(names = "--scale", paramLabel = "F", defaultValue = "1", converter = OptionValues.ScaleFactor.class,
             description = "the same view at another size: multiplies the width and height (given or default) and "
                     + "the orthographic camera's zoom by F, so that --scale 0.25 renders 480x270 pixels of what "
                     + "1920x1080 shows (default: ${DEFAULT-VALUE})")
     private Scale scale;
 
-    @Option(names = "--threads", paramLabel = "N", converter = ThreadCount.class,
+    @Option(names = "--threads", paramLabel = "N", converter = OptionValues.Threads.class,
             description = "threads to render and build with (default: all cores, here "
                     + "${DEFAULT-VALUE}; a larger N uses at most 4 threads per core)")
     private int threads = Runtime.getRuntime().availableProcessors();
@@ -92,9 +96,9 @@ public final class RtdCommand implements Callable<Integer> {
             + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
     private boolean paper;
 
-    @Option(names = "--samples", paramLabel = "N", defaultValue = "1", converter = SampleCount.class,
-            description = "anti-aliasing: N x N rays per pixel, N from 1 to 16, their colours averaged (default: ${DEFAULT-VALUE}, "
-                    + "one ray through the pixel's corner, as the paper)")
+    @Option(names = "--samples", paramLabel = "N", defaultValue = "1", converter = OptionValues.Samples.class,
+            description = "anti-aliasing: N x N rays per pixel, N from 1 to 16, their colours averaged (default: "
+                    + "${DEFAULT-VALUE}, one ray through the pixel's corner, as the paper)")
     private int samples;
 
     @Option(names = "--stats", description = "print the time of each phase and the work per ray to standard error")
@@ -106,7 +110,7 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--debug", description = "show the stack trace of an error")
     private boolean debug;
 
-    /** The teaching tools: --explain, --view, --export-pov and --watch, all in {@link TeachingOptions}. */
+    /** The teaching tools: --explain, --view, --export-pov and --watch. */
     @Mixin
     private TeachingOptions teaching;
 
@@ -114,18 +118,29 @@ public final class RtdCommand implements Callable<Integer> {
         this.streams = streams;
     }
 
-    /** The command line of rtd, with its error handlers, ready to {@code execute}. */
+    /** The command line of rtd, with its error handlers, writing in the terminal's encoding, ready to {@code execute}. */
     public static CommandLine commandLine() {
         CommandLine commandLine = commandLine(StandardStreams.system());
-        commandLine.setOut(PlainLetters.printWriter(System.out, PlainLetters.encodingOf("stdout")));
-        commandLine.setErr(PlainLetters.printWriter(System.err, PlainLetters.encodingOf("stderr")));
+        commandLine.setOut(AsciiFallbackWriter.printWriter(System.out, AsciiFallbackWriter.encodingOf("stdout")));
+        commandLine.setErr(AsciiFallbackWriter.printWriter(System.err, AsciiFallbackWriter.encodingOf("stderr")));
         return commandLine;
     }
 
-    /** The command line with {@code streams} for {@code -} and {@code -o -}. */
+    /**
+     * The command line with {@code streams} for {@code -} and {@code -o -}. A misuse gets one line that says what
+     * is wrong, picocli's suggestion for a misspelt option and where to find help (exit 2); a bug, no stack trace.
+     */
     static CommandLine commandLine(StandardStreams streams) {
         CommandLine commandLine = new CommandLine(new RtdCommand(streams));
-        commandLine.setParameterExceptionHandler(new UsageErrorHandler());
+        commandLine.setParameterExceptionHandler((ex, args) -> {
+            CommandLine cmd = ex.getCommandLine();
+            PrintWriter err = cmd.getErr();
+            err.println("rtd: " + ex.getMessage());
+            UnmatchedArgumentException.printSuggestions(ex, err);
+            err.println("Try '" + cmd.getCommandName() + " --help' for more information.");
+            err.flush();
+            return cmd.getCommandSpec().exitCodeOnInvalidInput();
+        });
         commandLine.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
             PrintWriter err = cmd.getErr();
             err.println("rtd: internal error: " + ex + ". This is a bug in rtd; please report it with the scene.");
@@ -138,60 +153,54 @@ public final class RtdCommand implements Callable<Integer> {
         return commandLine;
     }
 
+    /** {@code --version}: the version Maven wrote into the jar's manifest. */
+    static final class Version implements IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            String version = RtdCommand.class.getPackage().getImplementationVersion();
+            return new String[] {"rtd " + (version != null ? version : "(development build, not from the jar)"),
+                "Java " + System.getProperty("java.version")};
+        }
+    }
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            Integer taught = teach(err); // null unless a teaching option answers instead of the render
+            Integer taught = teaching.run(options(), spec.commandLine(), err); // null: no teaching option answers
             if (taught != null) {
                 return taught;
             }
-            List<Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
-            Settings settings = settings();
-            ImageSize.check(spec.commandLine(), settings.width(), settings.height()); // before any file is written
-            OutputTarget export;
-            try {
-                export = teaching.planExport(); // --export-pov beside the picture (then there is one scene)
-            } catch (FileError e) {
-                err.println("rtd: " + e.getMessage());
-                return 1;
-            }
+            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
+            RenderOptions options = checkedOptions();
+            Memory.checkImageFits(spec.commandLine(), options.width(), options.height(), scale); // before any write
+            OutputTarget export = teaching.planExport(options, spec.commandLine()); // beside the picture: one scene
             if (paper && (given("--accel") || given("--threads"))) { // once every misuse has had its say
                 err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
                         + "not used");
             }
             if (output != null && output.toString().indexOf('\\') >= 0 && File.separatorChar == '/') {
-                // a Windows habit: here the picture gets one file whose name holds the backslashes
                 err.println("rtd: note: '" + output + "' has backslashes, which this system keeps in the file's name; "
                         + "it separates folders with '/'");
             }
-            CompletableFuture<Void> writerReady = WriterWarmUp.start(jobs.get(0).format());
+            CompletableFuture<Void> writerReady = WarmUp.start(jobs.get(0).format());
             int exitCode = 0;
-            for (Job job : jobs) {
-                exitCode = Math.max(exitCode, run(job, settings, writerReady, export, err));
+            for (JobPlanner.Job job : jobs) {
+                exitCode = Math.max(exitCode, run(job, options, writerReady, export, err));
             }
             return exitCode;
+        } catch (SceneException e) {
+            return failed(err, e, e.report());
+        } catch (FileError e) {
+            return failed(err, e, "rtd: " + e.getMessage() + "\n");
         } finally {
             err.flush();
         }
     }
 
-    /** The teaching options' answer (see {@link TeachingOptions#run}), or null if none of them was given. */
-    private Integer teach(PrintWriter err) {
-        try {
-            return teaching.run(err);
-        } catch (SceneException e) {
-            err.print(e.report());
-            printDebug(err, e);
-            return 1;
-        }
-    }
-
-    /**
-     * One scene's run, with {@code export} (or null) written once the scene is read and before
-     * it is rendered; its exit code, 0 or 1.
-     */
-    private int run(Job job, Settings settings, CompletableFuture<Void> writerReady, OutputTarget export, PrintWriter err) {
+    /** One scene's run, with {@code export} (or null) written once the scene is read; its exit code, 0 or 1. */
+    private int run(JobPlanner.Job job, RenderOptions options, CompletableFuture<Void> writerReady, OutputTarget export,
+            PrintWriter err) {
         try {
             if (job.refusal() != null) {
                 throw job.refusal();
@@ -200,23 +209,27 @@ public final class RtdCommand implements Callable<Integer> {
                 err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
                 err.flush();
             }
-            new SceneRun(settings, spec.commandLine(), streams).run(job.source(), job.target(), job.format(), writerReady,
-                    export);
+            new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
             return 0;
         } catch (SceneException e) {
-            err.print(e.report());
-            printDebug(err, e);
-            return 1;
+            return failed(err, e, e.report());
         } catch (FileError e) {
-            err.println("rtd: " + e.getMessage());
-            printDebug(err, e);
-            return 1;
+            return failed(err, e, "rtd: " + e.getMessage() + "\n");
         } catch (OutOfMemoryError e) {
             err.println(Memory.outOfMemory(Runtime.getRuntime().maxMemory(), Memory.physical()));
             return 1;
         } finally {
             err.flush();
         }
+    }
+
+    /** Prints {@code report}, and with {@code --debug} the stack trace of {@code e}; exit code 1. */
+    private int failed(PrintWriter err, Exception e, String report) {
+        err.print(report);
+        if (debug) {
+            e.printStackTrace(err);
+        }
+        return 1;
     }
 
     /** The scenes, checked against {@code -o}: one picture name cannot serve several scenes. */
@@ -233,8 +246,16 @@ public final class RtdCommand implements Callable<Integer> {
         return sources;
     }
 
-    /** The sizes after {@code --scale}, checked. */
-    private Settings settings() {
+    /** The options, with the sizes after {@code --scale} at least one pixel (the teaching options check their own). */
+    private RenderOptions options() {
+        return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scale.times(width))),
+                (int) Math.max(1, Math.min(Integer.MAX_VALUE, scale.times(height))), scale,
+                given("--width") || given("--height"), threads, accel, paper, samples, stats,
+                !noProgress && StandardStreams.stderrIsTerminal());
+    }
+
+    /** The options, once the sizes after {@code --scale} are checked. */
+    private RenderOptions checkedOptions() {
         long scaledWidth = scale.times(width);
         long scaledHeight = scale.times(height);
         if (scaledWidth < 1 || scaledHeight < 1) {
@@ -245,8 +266,7 @@ public final class RtdCommand implements Callable<Integer> {
             throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; Java images hold "
                     + "at most %,d", scale, width, height, scaledWidth, scaledHeight, Integer.MAX_VALUE - 8));
         }
-        boolean progress = !noProgress && Terminal.stderrIsTerminal();
-        return new Settings((int) scaledWidth, (int) scaledHeight, scale, threads, accel, paper, samples, stats, progress);
+        return options();
     }
 
     /** Whether the command line gave {@code option} (not its default). */
@@ -256,11 +276,5 @@ public final class RtdCommand implements Callable<Integer> {
 
     private ParameterException misuse(String message) {
         return new ParameterException(spec.commandLine(), message);
-    }
-
-    private void printDebug(PrintWriter err, Exception e) {
-        if (debug) {
-            e.printStackTrace(err);
-        }
     }
 }

@@ -11,15 +11,13 @@ import rtd.scene.Scene;
 /**
  * Where a scene comes from: a file, or standard input for {@code -}.
  *
- * @param path  the file as the user spelt it, or {@code -}
- * @param stdin whether it is standard input
+ * @param path the file as the user spelt it, or {@code -}
  */
 record SceneSource(Path path, boolean stdin) {
 
     /** The name of standard input in messages, as compilers call it. */
     static final String STDIN_NAME = "<stdin>";
 
-    /** The scene named {@code path} on the command line; {@code -} is standard input. */
     static SceneSource of(Path path) {
         return new SceneSource(path, path.toString().equals("-"));
     }
@@ -29,14 +27,16 @@ record SceneSource(Path path, boolean stdin) {
         return stdin ? STDIN_NAME : path.toString();
     }
 
-    /** Reads and parses the scene; its warnings (slips that are no mistakes) go to {@code warnings}. */
-    Scene read(StandardStreams streams, List<SceneError> warnings) throws SceneException, IOException {
-        if (!stdin) {
-            return SceneIO.readScene(path, warnings);
+    /** Reads the scene; its warnings (slips that are no mistakes) go to {@code warnings}. */
+    Scene read(StandardStreams streams, List<SceneError> warnings) throws SceneException, FileError {
+        try {
+            if (!stdin) {
+                return SceneIO.readScene(path, warnings);
+            }
+            return streams.inPath().isPresent() ? SceneIO.readScene(streams.inPath().get(), STDIN_NAME, warnings)
+                    : SceneIO.readScene(streams.in(), STDIN_NAME, warnings);
+        } catch (IOException e) {
+            throw new FileError("cannot read the scene file '" + name() + "'", e);
         }
-        if (streams.inPath().isPresent()) {
-            return SceneIO.readScene(streams.inPath().get(), STDIN_NAME, warnings);
-        }
-        return SceneIO.readScene(streams.in(), STDIN_NAME, warnings);
     }
 }

@@ -17,29 +17,20 @@ import java.util.zip.CRC32;
 import picocli.CommandLine;
 
 /**
- * {@code --watch}: renders, then renders again whenever the scene file or a mesh it names
- * changes, until stopped (Ctrl-C). For a classroom where the teacher edits a scene and the
- * projector shows the picture.
+ * {@code --watch}: renders, then again whenever the scene file or a mesh it names changes, until Ctrl-C; for a
+ * teacher who edits a scene while the projector shows the picture. Each render is a whole run of rtd without
+ * {@code --watch}, so a broken edit fails as that run fails: it prints its errors and leaves the last good
+ * picture in place.
  *
- * <p>Each render is a whole run of rtd without {@code --watch}, so it does what the same command
- * does once, and a broken edit fails as such a run fails: it prints its errors and leaves the
- * last good picture in place (rtd replaces a picture only when a new one is complete).
- *
- * <p>It asks the files, every {@value #POLL_MILLIS} ms, for their size, time and (up to 16 MiB)
- * a checksum of their bytes: an editor that saves twice within the file system's clock tick is
- * still seen, and saving without a change renders nothing. A change is rendered once the files
- * have looked the same for a while ({@value #SETTLE_MILLIS} ms at least), so that a save caught
- * halfway is not.
+ * <p>Every {@value #POLL_MILLIS} ms it asks the files for their size, time and (up to 16 MiB) a checksum: a
+ * second save within the file system's clock tick is seen, a save without a change renders nothing. A change is
+ * rendered once the files have looked the same for {@value #SETTLE_MILLIS} ms at least, not caught halfway.
  */
 final class SceneWatcher {
 
     static final long POLL_MILLIS = 200;
     private static final long CHECKSUM_LIMIT = 16L << 20;
-    /**
-     * How long the files must look the same before a change is rendered, at least: longer than
-     * the steps of one save, even on a busy machine (where a thread may wait tens of ms between
-     * emptying a file and writing it).
-     */
+    /** Longer than the steps of one save (empty the file, write it), even on a busy machine. */
     static final long SETTLE_MILLIS = 100;
     private static final Pattern MESH = Pattern.compile("(?m)^[ \\t]*mesh[ \\t]*:[ \\t]*\\(([^)|\\r\\n]+)\\)");
 
@@ -98,35 +89,25 @@ final class SceneWatcher {
         }
         err.println("rtd: watching " + describe(seen.keySet()) + " for changes; Ctrl-C stops");
         err.flush();
-        while (!stopped && !Thread.currentThread().isInterrupted()) {
-            try {
+        try {
+            while (!stopped && !Thread.currentThread().isInterrupted()) {
                 Thread.sleep(pollMillis);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                break;
-            }
-            Map<Path, String> now = fingerprints();
-            if (!now.equals(seen)) {
-                try {
+                Map<Path, String> now = fingerprints();
+                if (!now.equals(seen)) {
                     now = settled(now);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    break;
+                    err.println("rtd: " + changed(seen, now) + " changed: rendering again");
+                    seen = now;
+                    err.flush();
+                    code = renderOnce();
                 }
-                err.println("rtd: " + changed(seen, now) + " changed: rendering again");
-                seen = now;
-                err.flush();
-                code = renderOnce();
             }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
         return code;
     }
 
-    /**
-     * The files' fingerprints once they look the same on two looks in a row. An editor may save
-     * in steps (empty the file, then write it), and a render of the file caught between them
-     * would report errors the teacher never wrote.
-     */
+    /** The files' fingerprints once they look the same twice in a row: a save caught halfway shows errors never written. */
     private Map<Path, String> settled(Map<Path, String> now) throws InterruptedException {
         Map<Path, String> before;
         do {

@@ -1,20 +1,27 @@
 package rtd.cli;
 
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
 
-/** The text of {@code --stats}: time per phase, and the work each ray took. */
+/** {@code --stats}: the wall time of each phase of a run, one after the other, and the report of them and of the work per ray. */
 final class StatsReport {
 
-    private StatsReport() {
+    private final Map<String, Double> seconds = new LinkedHashMap<>();
+    private long phaseStart = System.nanoTime();
+
+    /** Ends the running phase under {@code name} and starts the next. */
+    void endPhase(String name) {
+        long now = System.nanoTime();
+        seconds.put(name, (now - phaseStart) / 1e9);
+        phaseStart = now;
     }
 
-    static String format(PhaseTimer timer, Scene scene, Accelerator accelerator, WorkCount work, int threads,
-            Path output) {
-        Map<String, Double> seconds = timer.seconds();
+    /** The report of the phases so far, for {@code scene} rendered with {@code accelerator} (null: the paper's loop). */
+    String format(Scene scene, Accelerator accelerator, WorkCount work, int threads, Path output) {
         double renderSeconds = seconds.getOrDefault("render", 0.0);
         StringBuilder text = new StringBuilder();
         line(text, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));

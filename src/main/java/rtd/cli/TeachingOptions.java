@@ -1,34 +1,29 @@
 package rtd.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import picocli.CommandLine;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
-import picocli.CommandLine.Spec;
 import rtd.explain.PixelExplanation;
-import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
-import rtd.io.SceneIO;
 import rtd.scene.Scene;
 import rtd.view.View;
 
 /**
- * The teaching options (a picocli mixin of {@link RtdCommand}): {@code --explain X,Y} prints
- * what rtd does for one pixel in the paper's terms, {@code --view KIND} draws what the rays did,
- * {@code --export-pov FILE.pov} writes the scene for POV-Ray, and {@code --watch} renders again
- * whenever the scene changes. They live here, apart from the command's own code, and read its
- * other options from picocli's model ({@link RenderSettings}).
+ * The teaching options, a picocli mixin of {@link RtdCommand}: {@code --explain X,Y} prints what rtd does for one
+ * pixel in the paper's terms, {@code --view KIND} draws what the rays did, {@code --export-pov FILE.pov} writes
+ * the scene for POV-Ray, and {@code --watch} renders again whenever the scene changes.
  */
 public final class TeachingOptions {
 
-    @Spec(Spec.Target.MIXEE)
-    private CommandSpec command;
+    private static final Pattern PIXEL = Pattern.compile("\\s*(\\d{1,9})\\s*,\\s*(\\d{1,9})\\s*");
 
     @Option(names = "--explain", paramLabel = "X,Y", description = "instead of a picture, print what rtd does for "
             + "pixel (X, Y), step by step in the paper's terms: the ray, each object's intersection test, the depth "
@@ -40,8 +35,9 @@ public final class TeachingOptions {
             + "normal (the normal as colour), id (a colour per object); default output SCENE-KIND.png")
     private View view;
 
-    @Option(names = "--export-pov", paramLabel = "FILE.pov", converter = OutputFileName.class, description = "also write the "
-            + "scene as a POV-Ray 3.7 scene that draws the same picture; its first lines give the povray command")
+    @Option(names = "--export-pov", paramLabel = "FILE.pov", converter = OptionValues.OutputFile.class,
+            description = "also write the scene as a POV-Ray 3.7 scene that draws the same picture; its first lines "
+                    + "give the povray command")
     private Path exportPov;
 
     @Option(names = "--watch", description = "after the first render, render again whenever the scene file (or a mesh "
@@ -49,164 +45,136 @@ public final class TeachingOptions {
     private boolean watch;
 
     /**
-     * Runs what the teaching options ask for instead of the picture ({@code --explain},
-     * {@code --view}, {@code --watch}), with the export first if one was asked for too; or returns
-     * {@code null} if rtd is to render as usual (with the export that {@link #planExport} plans).
+     * Runs what the teaching options ask for instead of the picture ({@code --explain}, {@code --view},
+     * {@code --watch}), the export first if asked for too; or returns {@code null} for the usual render.
      */
-    Integer run(PrintWriter err) throws SceneException {
-        RenderSettings settings = RenderSettings.of(command);
-        CommandLine commandLine = command.commandLine();
+    Integer run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException {
         if (watch || explain != null || view != null || exportPov != null) {
-            checkOneSceneFile(settings, commandLine);
+            checkOneSceneFile(options, commandLine);
         }
         if (watch) {
-            return SceneWatcher.forCommandLine(commandLine, settings.scene(), err).run();
+            return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
         if (explain != null && view != null) {
-            throw new ParameterException(commandLine, "--explain and --view each take the place of the picture; give one "
-                    + "of them");
+            throw new ParameterException(commandLine, "--explain and --view each take the place of the picture; give "
+                    + "one of them");
         }
-        PixelArgument pixel = explain == null ? null : PixelArgument.parse(explain, settings.width(), settings.height(), commandLine);
+        int[] pixel = explain == null ? null : pixel(options, commandLine);
         if (pixel == null && view == null) {
             return null;
         }
         if (view != null) {
-            ImageSize.check(commandLine, settings.width(), settings.height());
+            Memory.checkImageFits(commandLine, options.width(), options.height(), options.scale());
         }
-        // Every file is planned before the scene is read and before anything is written, every
-        // mistake on the command line before a file's problem.
+        // every file is planned before the scene is read and anything is written, every misuse before a file's problem
         FileError refused = null;
         OutputTarget povTarget = null;
         OutputTarget viewTarget = null;
         try {
-            povTarget = planExport();
+            povTarget = planExport(options, commandLine);
         } catch (FileError e) {
             refused = e;
         }
         try {
-            viewTarget = pixel == null ? viewTarget(settings, commandLine) : null;
+            viewTarget = pixel == null ? ViewRun.plan(view, options, commandLine) : null;
         } catch (FileError e) {
             refused = refused == null ? e : refused;
         }
-        ImageFormat viewFormat = viewTarget == null ? null : JobPlanner.format(viewTarget, commandLine);
         if (refused != null) {
             err.println("rtd: " + refused.getMessage());
             return 1;
         }
-        if (pixel != null && settings.output() != null) { // once every misuse has had its say
+        if (pixel != null && options.output() != null) {
             err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
         }
-        if (pixel != null && settings.stats()) {
+        if (pixel != null && options.stats()) {
             err.println("rtd: note: --explain follows one ray and times nothing; --stats is not used");
         }
-        PhaseTimer timer = new PhaseTimer();
-        Scene scene = readScene(settings, err);
-        if (scene == null) {
+        StatsReport stats = new StatsReport();
+        Scene scene;
+        try {
+            List<SceneError> warnings = new ArrayList<>();
+            scene = options.scale().of(SceneSource.of(options.scene()).read(null, warnings));
+            warnings.forEach(warning -> err.print(warning.formatAsWarning()));
+            err.flush();
+            stats.endPhase("parse");
+            if (povTarget != null) {
+                err.println(PovExportRun.write(scene, povTarget, options.width(), options.height()));
+                err.flush();
+                stats.endPhase("export");
+            }
+        } catch (FileError e) {
+            err.println("rtd: " + e.getMessage());
             return 1;
         }
-        timer.endPhase("parse");
-        if (povTarget != null) {
-            try {
-                err.println(PovExportRun.write(scene, povTarget, settings.width(), settings.height()));
-                err.flush();
-            } catch (FileError e) {
-                err.println("rtd: " + e.getMessage());
-                return 1;
-            }
-            timer.endPhase("export");
+        if (pixel == null) {
+            return ViewRun.run(scene, view, viewTarget, options, stats, err, commandLine);
         }
-        if (pixel != null && settings.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
+        if (options.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
             err.println("rtd: note: --paper draws as the paper does, in flat colours: the scene's lights are not used, "
                     + "and the explanation follows the flat picture");
             scene = new Scene(scene.ambient(), scene.camera(), scene.objects(), List.of());
         }
-        return pixel != null ? explain(scene, pixel, settings, commandLine.getOut())
-                : view(scene, viewTarget, viewFormat, settings, timer, err);
+        explain(scene, pixel[0], pixel[1], options, commandLine.getOut());
+        return 0;
     }
 
-    /**
-     * Where {@code --export-pov} goes, planned before anything is read or written; null without
-     * it. A mistake in its name is thrown as misuse; a file that may not be written is a {@link FileError}.
-     */
-    OutputTarget planExport() throws FileError {
-        return exportPov == null ? null : PovExportRun.plan(exportPov, RenderSettings.of(command).scene(), command.commandLine());
+    /** Where {@code --export-pov} goes, planned before anything is read or written; null without it. */
+    OutputTarget planExport(RenderOptions options, CommandLine commandLine) throws FileError {
+        return exportPov == null ? null : PovExportRun.plan(exportPov, options.scene(), commandLine);
     }
 
-    private static int explain(Scene scene, PixelArgument pixel, RenderSettings settings, PrintWriter out) {
-        out.println("rtd --explain " + pixel.x() + "," + pixel.y() + ": pixel (" + pixel.x() + ", " + pixel.y() + ") of the "
-                + settings.width() + " × " + settings.height() + " picture of " + settings.scene());
+    /** The pixel of {@code --explain X,Y} in the picture; a misuse (exit 2) that names the image's size if none. */
+    private int[] pixel(RenderOptions options, CommandLine commandLine) {
+        int width = options.width();
+        int height = options.height();
+        String range = String.format("0 ≤ X < %d and 0 ≤ Y < %d (the image is %d × %d)", width, height, width, height);
+        Matcher matcher = PIXEL.matcher(explain);
+        if (!matcher.matches()) {
+            throw new ParameterException(commandLine, "--explain '" + explain + "': give the pixel as X,Y, two whole "
+                    + "numbers with " + range);
+        }
+        int x = Integer.parseInt(matcher.group(1));
+        int y = Integer.parseInt(matcher.group(2));
+        if (x >= width || y >= height) {
+            throw new ParameterException(commandLine, "--explain " + x + "," + y + ": the pixel lies outside the image; "
+                    + "choose " + range);
+        }
+        return new int[] {x, y};
+    }
+
+    private static void explain(Scene scene, int x, int y, RenderOptions options, PrintWriter out) {
+        out.println("rtd --explain " + x + "," + y + ": pixel (" + x + ", " + y + ") of the " + options.width() + " × "
+                + options.height() + " picture of " + options.scene());
         out.println("(every number is the renderer's own float, written as the shortest decimal that reads back as it)");
-        if (settings.samples() > 1) {
-            out.println("(with --samples " + settings.samples() + " the picture's pixel is the mean of "
-                    + settings.samples() * settings.samples() + " rays; this is the ray through its corner, --samples 1)");
+        if (options.samples() > 1) {
+            out.println("(with --samples " + options.samples() + " the picture's pixel is the mean of "
+                    + options.samples() * options.samples() + " rays; this is the ray through its corner, --samples 1)");
         }
         out.println();
-        out.print(PixelExplanation.of(scene, pixel.x(), pixel.y(), settings.width(), settings.height()));
+        out.print(PixelExplanation.of(scene, x, y, options.width(), options.height()));
         out.flush();
-        return 0;
-    }
-
-    private int view(Scene scene, OutputTarget target, ImageFormat format, RenderSettings settings, PhaseTimer timer,
-            PrintWriter err) {
-        if (settings.samples() > 1) {
-            err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
-        }
-        ViewRun.Result result = ViewRun.render(scene, view, settings, timer);
-        try {
-            ViewRun.write(result, target, format, err);
-        } catch (IOException e) {
-            err.println("rtd: cannot write '" + target.spelt() + "': " + FileProblems.reason(e));
-            return 1;
-        }
-        timer.endPhase("write");
-        if (settings.stats()) {
-            err.print(StatsReport.format(timer, scene, result.accelerator(), result.render().work(),
-                    settings.threads(), target.spelt())); // a view runs on every thread, also the paper's loop
-            err.flush();
-        }
-        return 0;
-    }
-
-    /** Where the view goes: {@code -o}, or beside the scene under the view's name; checked as a picture's is. */
-    private OutputTarget viewTarget(RenderSettings settings, CommandLine commandLine) throws FileError {
-        if (OutputTarget.DASH.equals(settings.output())) {
-            throw new ParameterException(commandLine, "--view writes its picture to a file; -o - (standard output) "
-                    + "is for the rendered picture only: give a file name, such as "
-                    + ViewRun.defaultOutput(settings.scene(), view).getFileName());
-        }
-        Path spelt = settings.output() != null ? settings.output() : ViewRun.defaultOutput(settings.scene(), view);
-        return JobPlanner.target(spelt, settings.scene(), "-o", commandLine);
     }
 
     /**
-     * The teaching options work on one scene file: several would need several explanations, views
-     * or exports under one name, and standard input can be neither watched nor read twice.
+     * The teaching options work on one scene file: several would need several answers under one name, and standard
+     * input can be neither watched nor read twice. {@code --explain 300 400} reads 400 as a scene: it says so.
      */
-    private void checkOneSceneFile(RenderSettings settings, CommandLine commandLine) {
+    private void checkOneSceneFile(RenderOptions options, CommandLine commandLine) {
         String option = watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : "--export-pov";
-        if (settings.scenes().size() > 1) {
-            throw new ParameterException(commandLine, option + " works on one scene file, but " + settings.scenes().size()
+        Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}") && !Files.exists(p))
+                .findFirst().orElse(null);
+        if (explain != null && explain.matches("\\s*\\d{1,9}\\s*") && number != null) {
+            throw new ParameterException(commandLine, "--explain takes the pixel as X,Y with a comma, and '" + number
+                    + "' was read as a scene file; did you mean --explain " + explain.strip() + "," + number + "?");
+        }
+        if (options.scenes().size() > 1) {
+            throw new ParameterException(commandLine, option + " works on one scene file, but " + options.scenes().size()
                     + " were given; run rtd once for each");
         }
-        if (settings.scene().toString().equals("-")) {
-            throw new ParameterException(commandLine, option + " needs a scene file; it cannot work on standard input ('-')");
-        }
-    }
-
-    /** The scene, or null after saying why it cannot be read; mistakes in it are thrown, for the command's report. */
-    private static Scene readScene(RenderSettings settings, PrintWriter err) throws SceneException {
-        Path path = settings.scene();
-        try {
-            List<SceneError> warnings = new ArrayList<>();
-            Scene scene = settings.scale().of(SceneIO.readScene(path, warnings));
-            for (SceneError warning : warnings) {
-                err.print(warning.formatAsWarning());
-            }
-            err.flush();
-            return scene;
-        } catch (IOException e) {
-            err.println("rtd: cannot read the scene file '" + path + "': " + FileProblems.reason(e));
-            return null;
+        if (options.scene().toString().equals("-")) {
+            throw new ParameterException(commandLine, option + " needs a scene file; it cannot work on standard input "
+                    + "('-')");
         }
     }
 }

@@ -1,11 +1,10 @@
 package rtd.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.function.Supplier;
-import rtd.io.ImageFormat;
-import rtd.io.SceneIO;
+import picocli.CommandLine;
+import picocli.CommandLine.ParameterException;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
@@ -17,54 +16,54 @@ import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
 
 /**
- * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture
- * would take (the paper's loop, the BVH or the view grid, all threads), and writes it in the format
- * of its name's extension (PNG by default), its scale on standard error.
+ * {@code --view KIND}: what the camera's rays did ({@link View}), rendered on the path the picture would take (the
+ * paper's loop or what {@code --accel} chose, all threads), written as a picture is, with its scale on standard error.
  */
 final class ViewRun {
 
     private ViewRun() {
     }
 
-    /**
-     * The view's picture, the work its rays took, and the accelerator they took it on (null for
-     * {@code --paper}, the paper's loop).
-     */
-    record Result(ViewPicture view, RenderResult render, Accelerator accelerator) {
+    /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
+    static OutputTarget plan(View view, RenderOptions options, CommandLine commandLine) throws FileError {
+        Path byDefault = JobPlanner.defaultOutput(options.scene(), "-" + view);
+        if (OutputTarget.DASH.equals(options.output())) {
+            throw new ParameterException(commandLine, "--view writes its picture to a file; -o - (standard output) "
+                    + "is for the rendered picture only: give a file name, such as " + byDefault.getFileName());
+        }
+        OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
+                "-o", commandLine);
+        JobPlanner.format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
+        return target;
     }
 
-    /**
-     * Renders {@code view} of {@code scene} with the settings' size, threads and accelerator; the
-     * build and the render (the rays alone, not the legend) are timed as phases of {@code timer}
-     * ({@code --stats}).
-     */
-    static Result render(Scene scene, View view, RenderSettings settings, PhaseTimer timer) {
-        Accelerator accelerator = settings.paper() ? null
-                : Accelerator.of(scene, settings.accel(), settings.width(), settings.height(), 1, settings.threads());
-        timer.endPhase("build");
+    /** Renders and writes {@code view} of {@code scene} to {@code target}; its exit code, 0 or 1. */
+    static int run(Scene scene, View view, OutputTarget target, RenderOptions options, StatsReport stats,
+            PrintWriter err, CommandLine commandLine) {
+        if (options.samples() > 1) {
+            err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
+        }
+        Accelerator accelerator = options.paper() ? null
+                : Accelerator.of(scene, options.accel(), options.width(), options.height(), 1, options.threads());
+        stats.endPhase("build");
         Supplier<Tracer> tracers = accelerator == null ? () -> new LinearTracer(scene) : accelerator.tracers();
         ViewShader shader = new ViewShader(view, scene.objects());
-        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers, tracer -> shader, settings.width(),
-                settings.height(), 1, settings.threads(), new RenderProgress());
-        timer.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
-        return new Result(ViewPicture.of(view, raw.image(), scene), raw, accelerator);
-    }
-
-    /** Writes the view to {@code target} in {@code format}; the scale goes to {@code err}. */
-    static void write(Result result, OutputTarget target, ImageFormat format, PrintWriter err) throws IOException {
-        if (target.kind() == OutputTarget.Kind.STREAM) {
-            SceneIO.writeImageInto(result.view().picture(), format, target.file(), done -> { });
-        } else {
-            SceneIO.writeImage(result.view().picture(), format, target.file(), done -> { });
+        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers, tracer -> shader, options.width(),
+                options.height(), 1, options.threads(), new RenderProgress());
+        stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
+        ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
+        try {
+            target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
+        } catch (FileError e) {
+            err.println("rtd: " + e.getMessage());
+            return 1;
         }
-        err.print("rtd: " + result.view().report().replace("\n", "\n     ").stripTrailing() + "\n");
-    }
-
-    /** Without {@code -o}: the scene's name with the view's, {@code scene.txt} → {@code scene-cost.png}. */
-    static Path defaultOutput(Path scene, View view) {
-        String name = scene.getFileName().toString();
-        int dot = name.lastIndexOf('.');
-        String base = dot > 0 ? name.substring(0, dot) : name;
-        return scene.resolveSibling(base + "-" + view + ".png");
+        err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
+        stats.endPhase("write");
+        if (options.stats()) { // a view runs on every thread, also the paper's loop
+            err.print(stats.format(scene, accelerator, raw.work(), options.threads(), target.spelt()));
+            err.flush();
+        }
+        return 0;
     }
 }

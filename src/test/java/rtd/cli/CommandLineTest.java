@@ -46,9 +46,9 @@ class CommandLineTest {
 
     @Test
     void theDefaultOutputNameReplacesOnlyTheLastExtension() {
-        assertThat(JobPlanner.defaultOutput(Path.of("a/b.c.txt"))).isEqualTo(Path.of("a/b.c.png"));
-        assertThat(JobPlanner.defaultOutput(Path.of("scene"))).isEqualTo(Path.of("scene.png"));
-        assertThat(JobPlanner.defaultOutput(Path.of(".hidden"))).isEqualTo(Path.of(".hidden.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of("a/b.c.txt"), "")).isEqualTo(Path.of("a/b.c.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of("scene"), "")).isEqualTo(Path.of("scene.png"));
+        assertThat(JobPlanner.defaultOutput(Path.of(".hidden"), "")).isEqualTo(Path.of(".hidden.png"));
     }
 
     @Test
@@ -147,9 +147,9 @@ class CommandLineTest {
     void filesThatMayNotBeReadOrWrittenAreSaidToBeSo() {
         // The tests run as root here, which may read and write anything, so the words are checked
         // on the exceptions Java throws for such files.
-        assertThat(FileProblems.reason(new java.nio.file.AccessDeniedException("secret.txt"))).isEqualTo("permission denied");
-        assertThat(FileProblems.reason(new java.nio.file.NoSuchFileException("nope.txt"))).isEqualTo("no such file");
-        assertThat(FileProblems.reason(new java.nio.file.FileSystemException("out.png", null, "No space left on device")))
+        assertThat(FileError.reason(new java.nio.file.AccessDeniedException("secret.txt"))).isEqualTo("permission denied");
+        assertThat(FileError.reason(new java.nio.file.NoSuchFileException("nope.txt"))).isEqualTo("no such file");
+        assertThat(FileError.reason(new java.nio.file.FileSystemException("out.png", null, "No space left on device")))
                 .isEqualTo("no space left on device");
     }
 
@@ -179,6 +179,23 @@ class CommandLineTest {
         assertThat(big.exitCode()).isEqualTo(2);
         // -Xmx advice only where the machine has that much memory
         assertThat(big.err()).contains("needs 19.7 GiB of memory").containsAnyOf("-Xmx", "this machine has");
+    }
+
+    @Test
+    @DisplayName("An image beyond Java's limit is told the largest size of its shape that Java holds, and the --scale")
+    void anImageBeyondJavasLimitIsToldTheLargestOfItsShape() {
+        // 2,147,483,639 pixels at most: √(2,147,483,639 / 10^10) = 0.46341 of each side, 46340 × 46340 pixels
+        Run run = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("huge.png").toString(), "--width", "100000",
+                "--height", "100000");
+        String message = run.err().lines().findFirst().orElse("");
+        assertThat(message).isEqualTo("rtd: a 100000×100000 image has 10,000,000,000 pixels; Java images hold at most "
+                + "2,147,483,639: the largest of that shape is 46340×46340, or keep the view with --scale 0.463");
+        assertThat(Docs.errors()).contains(message);
+        // 60000 × 40000 at --scale 2 is 120000 × 80000: √(2,147,483,639 / 9.6·10^9) = 0.472965 of each side, and
+        // of the factor 2, so --scale 0.945 (three digits, rounded down)
+        assertThat(Cli.run(EXAMPLE.toString(), "--width", "60000", "--height", "40000", "--scale", "2").err())
+                .contains("a 120000×80000 image has 9,600,000,000 pixels").contains("the largest of that shape is "
+                        + "56755×37837, or keep the view with --scale 0.945");
     }
 
     @Test

@@ -108,4 +108,23 @@ class NothingInViewTest {
         assertThat(render(camouflaged).err()).isEmpty();
         assertThat(render(camouflaged.replace("(0|0|0)", "(90|0|0)")).err()).contains("no ray hit anything");
     }
+
+    @Test
+    @DisplayName("--width and --height of the paper's shape that show nothing are offered the --scale that shows the "
+            + "paper's view at that size")
+    void aSmallerSizeOfThePapersShapeIsOfferedTheScale() throws IOException {
+        Path example = Path.of("examples", "input_rtd.txt");
+        String scene = Files.readString(example);
+        Run run = render(scene, "--width", "480", "--height", "270");
+        // 480/50 = 9.6 and 270/50 = 5.4 world units around (0|0|20); at 1920×1080 the spheres are in view
+        assertThat(warning(run)).isEqualTo("rtd: warning: scene.txt: no ray hit anything, so the picture is only "
+                + "background: the camera sees 9.6 × 5.4 world units around (0|0|20) (width/zoom × height/zoom), and no "
+                + "object is in that region; move the camera, or lower its zoom to see more; or, to see at 480×270 what "
+                + "1920×1080 shows, give --scale 0.25 in place of --width and --height");
+        assertThat(render(scene, "--scale", "0.25").err()).isEmpty();
+        // another shape, or a view that the default size would not show either: no --scale to offer
+        assertThat(render(scene, "--width", "480", "--height", "300").err()).doesNotContain("--scale");
+        assertThat(render("orthographic_camera:(0|0|20):(0|0|-1):(50)\nsphere:(30|0|0):(2):(0|127|255)\n", "--width",
+                "480", "--height", "270").err()).doesNotContain("--scale");
+    }
 }

@@ -190,4 +190,18 @@ class TeachingOptionsTest {
         assertThat(watch.exitCode()).isEqualTo(2);
         assertThat(watch.err()).contains("--watch works on one scene file");
     }
+
+    @Test
+    @DisplayName("--explain 300 400, the pixel written without its comma, is asked whether it meant --explain 300,400")
+    void aPixelWithoutItsCommaIsAskedForIt() {
+        for (String[] args : new String[][] {{"--explain", "300", "400", EXAMPLE}, {EXAMPLE, "--explain", "300", "400"},
+            {"--explain", "300", "400"}}) {
+            Run run = Cli.run(args);
+            assertThat(run.exitCode()).isEqualTo(2);
+            String message = run.err().lines().findFirst().orElse("");
+            assertThat(message).isEqualTo("rtd: --explain takes the pixel as X,Y with a comma, and '400' was read as "
+                    + "a scene file; did you mean --explain 300,400?");
+            assertThat(Docs.errors()).contains(message);
+        }
+    }
 }

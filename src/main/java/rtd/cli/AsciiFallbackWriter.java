@@ -13,15 +13,12 @@ import java.nio.charset.UnsupportedCharsetException;
 import java.util.Map;
 
 /**
- * Writes rtd's text in the terminal's encoding, with plain letters in place of the signs it lacks.
- * rtd's messages and {@code --explain} write as a student's notes would ({@code 1920 × 1080},
- * {@code x − w/2}, {@code N·L}, {@code t ≥ 0}); a terminal whose encoding has no such signs (the
- * C locale of many containers, which is ASCII, or an old Windows code page) would show each as a
- * {@code ?}, and the explanation would lose its operators. There they are written as a plain
- * keyboard writes them ({@code x}, {@code -}, {@code *}, {@code >=}), and any other sign the
- * encoding lacks as {@code ?}, as before. An encoding that has them all (UTF-8) is written to as it is.
+ * A writer of rtd's text in the terminal's encoding that spells the signs the encoding lacks in plain ASCII.
+ * Messages and {@code --explain} write as a student's notes would ({@code 1920 × 1080}, {@code x − w/2},
+ * {@code t ≥ 0}); a terminal without such signs (the C locale of many containers, an old Windows code page)
+ * gets {@code x}, {@code -}, {@code >=}, and {@code ?} for any other sign it lacks. UTF-8 is written as it is.
  */
-final class PlainLetters extends FilterWriter {
+final class AsciiFallbackWriter extends FilterWriter {
 
     /** How each sign of rtd's text is written without it. */
     private static final Map<Character, String> PLAIN = Map.ofEntries(
@@ -34,31 +31,26 @@ final class PlainLetters extends FilterWriter {
 
     private final CharsetEncoder encoder;
 
-    private PlainLetters(Writer out, CharsetEncoder encoder) {
+    private AsciiFallbackWriter(Writer out, CharsetEncoder encoder) {
         super(out);
         this.encoder = encoder;
     }
 
-    /**
-     * A writer of {@code stream} in {@code charset}, autoflushing as picocli's own is; with plain
-     * letters for the signs the charset lacks, if it lacks any of them.
-     */
+    /** A writer of {@code stream} in {@code charset}, autoflushing as picocli's own is; plain where it must be. */
     static PrintWriter printWriter(OutputStream stream, Charset charset) {
         Writer bytes = new OutputStreamWriter(stream, charset);
         CharsetEncoder encoder = charset.newEncoder();
         for (char sign : PLAIN.keySet()) { // a loop, not a stream: no lambda to set up on every run's way
             if (!encoder.canEncode(sign)) {
-                return new PrintWriter(new PlainLetters(bytes, encoder), true);
+                return new PrintWriter(new AsciiFallbackWriter(bytes, encoder), true);
             }
         }
         return new PrintWriter(bytes, true);
     }
 
     /**
-     * The encoding that {@code System.out} (or {@code System.err}) writes in: the JDK's
-     * {@code stdout.encoding} where it has one (Java 19 on), its older {@code sun.stdout.encoding}
-     * (a Windows console), the system's own {@code native.encoding} (Java 17 on; on Java 18 the
-     * default is UTF-8 whatever the terminal's), else the default.
+     * The encoding {@code System.out} (or {@code err}) writes in: {@code stdout.encoding} (Java 19 on), else
+     * {@code sun.stdout.encoding} (a Windows console), else {@code native.encoding}, else the default.
      */
     static Charset encodingOf(String stream) {
         for (String property : new String[] {stream + ".encoding", "sun." + stream + ".encoding", "native.encoding"}) {

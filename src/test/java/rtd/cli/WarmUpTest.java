@@ -11,11 +11,11 @@ import rtd.scene.Scene;
 
 /** The warm-up of the reader and the renderer, whose failures no one would see. */
 @DisplayName("The renderer's warm-up")
-class RendererWarmUpTest {
+class WarmUpTest {
 
     @Test
     void itsSceneIsReadWithoutAMistakeAndHasASphereInView() throws SceneException {
-        Scene scene = SceneIO.parseScene("warm-up", RendererWarmUp.SCENE);
+        Scene scene = SceneIO.parseScene("warm-up", WarmUp.SCENE);
 
         assertThat(scene.objects()).hasSize(1);
         assertThat(scene.camera().generateRay(12, 8, 24, 16).origin().x()).isZero(); // the sphere at the centre
@@ -23,6 +23,6 @@ class RendererWarmUpTest {
 
     @Test
     void itRendersOnTheCallingThreadWithoutThrowing() {
-        assertThatCode(RendererWarmUp::run).doesNotThrowAnyException();
+        assertThatCode(WarmUp::renderOnce).doesNotThrowAnyException();
     }
 }

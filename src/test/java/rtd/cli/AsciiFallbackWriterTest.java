@@ -18,13 +18,13 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 
 @DisplayName("rtd's text in an encoding that lacks its signs")
-class PlainLettersTest {
+class AsciiFallbackWriterTest {
 
     private static final String TEXT = "1920 × 1080: x' = x − w/2, a = R·R, t ≥ 0, floor(255·c + ½), 45°, Grüße 😀";
 
     private static String written(Charset charset) {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-        PrintWriter writer = PlainLetters.printWriter(bytes, charset);
+        PrintWriter writer = AsciiFallbackWriter.printWriter(bytes, charset);
         writer.print(TEXT);
         writer.print('≤');
         writer.print(new char[] {'→', '∞'});
@@ -66,7 +66,7 @@ class PlainLettersTest {
         assertThat(signs).contains('×', '−', '·', 'θ', '…'); // '…' is written as \u2026 in SourceText
         for (char sign : signs) {
             ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-            PrintWriter writer = PlainLetters.printWriter(bytes, StandardCharsets.US_ASCII);
+            PrintWriter writer = AsciiFallbackWriter.printWriter(bytes, StandardCharsets.US_ASCII);
             writer.print(sign);
             writer.flush();
             assertThat(bytes.toString(StandardCharsets.US_ASCII)).as("'%s' (U+%04X)", sign, (int) sign).doesNotContain("?");
@@ -84,9 +84,9 @@ class PlainLettersTest {
         String system = System.getProperty("native.encoding");
         System.setProperty("native.encoding", "UTF-16BE");
         try {
-            assertThat(PlainLetters.encodingOf("rtd-no-such-stream")).isEqualTo(StandardCharsets.UTF_16BE);
+            assertThat(AsciiFallbackWriter.encodingOf("rtd-no-such-stream")).isEqualTo(StandardCharsets.UTF_16BE);
             System.clearProperty("native.encoding");
-            assertThat(PlainLetters.encodingOf("rtd-no-such-stream")).isEqualTo(Charset.defaultCharset());
+            assertThat(AsciiFallbackWriter.encodingOf("rtd-no-such-stream")).isEqualTo(Charset.defaultCharset());
         } finally {
             if (system != null) {
                 System.setProperty("native.encoding", system);
@@ -95,9 +95,9 @@ class PlainLettersTest {
         System.setProperty("rtd-test-stream.encoding", "ISO-8859-1");
         System.setProperty("sun.rtd-test-stream.encoding", "UTF-16");
         try {
-            assertThat(PlainLetters.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.ISO_8859_1);
+            assertThat(AsciiFallbackWriter.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.ISO_8859_1);
             System.setProperty("rtd-test-stream.encoding", "no-such-charset");
-            assertThat(PlainLetters.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.UTF_16);
+            assertThat(AsciiFallbackWriter.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.UTF_16);
         } finally {
             System.clearProperty("rtd-test-stream.encoding");
             System.clearProperty("sun.rtd-test-stream.encoding");

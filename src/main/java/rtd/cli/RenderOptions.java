@@ -1,0 +1,23 @@
+package rtd.cli;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * What the command line asks of each run, sizes after {@code --scale}.
+ *
+ * @param scenes   the scene files as given; the teaching options work on the first
+ * @param output   {@code -o}, or null
+ * @param width    {@code --width} times {@code --scale}
+ * @param height   {@code --height} times {@code --scale}
+ * @param scale    {@code --scale}, for the camera
+ * @param given    whether {@code --width} or {@code --height} was given, not left at its default
+ * @param progress whether to show the progress line (on a terminal, without {@code --no-progress})
+ */
+record RenderOptions(List<Path> scenes, Path output, int width, int height, Scale scale, boolean given, int threads,
+        Accel accel, boolean paper, int samples, boolean stats, boolean progress) {
+
+    Path scene() {
+        return scenes.get(0);
+    }
+}

@@ -1,0 +1,53 @@
+package rtd.cli;
+
+import java.util.concurrent.CompletableFuture;
+import rtd.accel.Bvh;
+import rtd.io.ImageFormat;
+import rtd.io.ImageWriting;
+import rtd.io.SceneException;
+import rtd.io.SceneIO;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.scene.Scene;
+import rtd.shade.FlatShader;
+
+/**
+ * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}) and then of the reader, the BVH
+ * and the renderer on a tiny scene: {@link Main} starts it before the command line is parsed, so that classes are
+ * loaded on a spare core while picocli starts and the scene is read. Nothing it makes is kept; it is per JVM, as
+ * what it loads is, and so the one piece of state that outlives a run.
+ */
+final class WarmUp {
+
+    /** One statement of each of the paper's kinds, and a sphere in view. */
+    static final String SCENE = """
+            ambient:(127|255|255)
+            orthographic_camera:(0|0|20):(0|0|-1):(50)
+            sphere:(0|0|0):(0.1):(0|127|255)
+            """;
+
+    private static CompletableFuture<Void> started;
+
+    private WarmUp() {
+    }
+
+    /** Starts the warm-up for {@code format}, unless one has started: the writers share most of what they load. */
+    static synchronized CompletableFuture<Void> start(ImageFormat format) {
+        if (started == null) {
+            started = ImageWriting.warmUp(format, WarmUp::renderOnce);
+        }
+        return started;
+    }
+
+    /** Renders {@link #SCENE} at 24 × 16 pixels on this thread; the run itself meets and reports any failure. */
+    static void renderOnce() {
+        try {
+            Scene scene = SceneIO.parseScene("warm-up", SCENE);
+            FlatShader flat = new FlatShader(scene);
+            ParallelRenderer.render(scene.camera(), Bvh.build(scene, 1)::newTracer, tracer -> flat, 24, 16, 1,
+                    new RenderProgress());
+        } catch (SceneException | RuntimeException e) {
+            // only a warm-up: the run itself reads, builds and renders, and says what fails
+        }
+    }
+}
