@@ -19,17 +19,14 @@ import rtd.render.WorkCount;
  * <p>The walk is {@link BvhTracer}'s walk for one ray, with the beam's grown boxes in place
  * of the ray's boxes, and the farthest of the rays' nearest hits in place of the ray's own: it
  * goes nearer child first and skips every box the beam enters beyond that, where no ray can
- * find a nearer hit. It is written out again here, not shared with {@link BvhTracer}
- * through an interface: measured on 2026-12-01, one walk for both cost 7 % of the render of a
- * million spheres and 11 % of a million-triangle mesh, the price of a call the JIT cannot bind to
- * one class in the innermost loop. At a leaf, each ray that enters the leaf's box no farther than its own
- * nearest hit runs the paper's tests on the leaf's objects ({@link NearestHit}).
+ * find a nearer hit. It is written out again here rather than shared with {@link BvhTracer}
+ * through an interface, so that the innermost loop makes no call the JIT cannot bind to one
+ * class. At a leaf, each ray that enters the leaf's box no farther than its own nearest hit
+ * runs its shape's own test on the leaf's objects ({@link NearestHit}).
  *
- * <p>Two answers need no ray at all. A beam that reaches no object's box misses everywhere: a
- * square, or a whole run of squares ({@link #traceAtOnce}), is background. And when the
- * shader reads only which object a ray hits (the paper's flat colours), a square, or a run,
- * inside the outline of the one sphere in its reach is that sphere throughout
- * ({@link SphereCover}).
+ * <p>One answer needs no ray at all: a beam that reaches no object's box misses everywhere, so a
+ * square, or a whole run of squares ({@link #traceAtOnce}), is background. Every other answer
+ * comes from the shapes' own tests, so an edited or a new shape is drawn as its test says.
  *
  * <p>The rays themselves, made only once the walk reaches an object, are {@link BeamRays}.
  */
@@ -44,15 +41,10 @@ final class BeamTracer {
     private final MiddleRay middle;
     /** The rays of the square and their nearest hits; reused from square to square. */
     private final BeamRays squareRays;
-    /** The sphere that covers the square, if the walk finds one before any ray is made. */
-    private final SphereCover cover;
     private RayBundle bundle;
     /** Whether the rays are started; not before a leaf's objects are in reach, unless the scene has planes. */
     private boolean started;
-    /**
-     * Whether the walk only asks if the beam reaches no object, or only a sphere that covers it
-     * ({@link #traceAtOnce}), and makes no rays.
-     */
+    /** Whether the walk only asks if the beam reaches no object ({@link #traceAtOnce}), and makes no rays. */
     private boolean probing;
     /** The farthest of the rays' {@link NearestHit#skipBeyond}: no box beyond it can matter. */
     private float farthestSkip;
@@ -63,7 +55,6 @@ final class BeamTracer {
         this.bvh = bvh;
         this.middle = new MiddleRay(bvh, beam);
         this.squareRays = new BeamRays(bvh);
-        this.cover = new SphereCover(bvh, beam, middle);
         this.stackNodes = new int[bvh.maxDepth + 2];
         this.stackEntries = new float[bvh.maxDepth + 2];
         this.stackExits = new float[bvh.maxDepth + 2];
@@ -81,7 +72,6 @@ final class BeamTracer {
         squareRays.prepare(count);
         this.bundle = bundle;
         started = false;
-        cover.reset(out);
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.unbounded.length > 0) {
             start();
@@ -90,10 +80,6 @@ final class BeamTracer {
             walk();
         }
         rays += count;
-        if (cover.found()) {
-            out.setHits(cover.sphereInFile(), count); // inside the sphere's outline: no ray was needed
-            return true;
-        }
         if (!started) {
             out.setMisses(count); // the beam reached no object: no ray was needed
             return true;
@@ -103,21 +89,18 @@ final class BeamTracer {
     }
 
     /**
-     * Whether every ray of the bundle's parallel rays has the same answer, found by the walk
-     * alone, without making a ray: the beam reaches no object (every ray misses), or, when only
-     * the object is asked for ({@link HitBuffer#hitPointsRead}), it lies inside the outline of
-     * the one sphere in its reach (every ray hits that sphere first). Then the answer is in
-     * {@code out}, the rays count as traced, and the answer is true. False if the rays' answers
-     * may differ, if the scene has objects without a box (which every ray meets), or if the
-     * rays are not the orthographic camera's. The bundle may be any rectangle of pixels, as the
-     * corners of any rectangle hold its origins ({@link Beam#aimAt}).
+     * Whether the beam of the bundle's parallel rays reaches no object's box, found by the walk
+     * alone, without making a ray: then every ray misses, that answer is in {@code out}, the rays
+     * count as traced, and the answer is true. False if some ray may hit, if the scene has
+     * objects without a box (which every ray meets), or if the rays are not the orthographic
+     * camera's. The bundle may be any rectangle of pixels, as the corners of any rectangle hold
+     * its origins ({@link Beam#aimAt}).
      */
     boolean traceAtOnce(RayBundle bundle, HitBuffer out) {
         if (bvh.unbounded.length > 0 || !(bundle.camera() instanceof OrthographicCamera) || !middle.aim(bundle)) {
             return false; // other bundles are parallel seldom, and telling would make all their rays
         }
         started = false;
-        cover.reset(out);
         farthestSkip = Float.POSITIVE_INFINITY;
         if (bvh.hasTree()) {
             probing = true;
@@ -128,11 +111,7 @@ final class BeamTracer {
             return false;
         }
         rays += bundle.count();
-        if (cover.found()) {
-            out.setHits(cover.sphereInFile(), bundle.count());
-        } else {
-            out.setMisses(bundle.count());
-        }
+        out.setMisses(bundle.count());
         return true;
     }
 
@@ -227,25 +206,13 @@ final class BeamTracer {
         if (!worthVisiting(reach)) {
             return;
         }
-        if (probing) { // an object in reach: the rays' answers differ unless it is a sphere that covers the beam
-            if (cover.worthLooking() && cover.covers(leaf, grow, within, reach, farthestSkip)) {
-                farthestSkip = cover.skipBeyond(); // the walk goes on, for any other object in reach before the sphere's hits
-                return;
-            }
+        if (probing) { // an object in reach: some ray may hit it, so the probe ends
             started = true;
             farthestSkip = Float.NEGATIVE_INFINITY;
             return;
         }
         if (!started) {
-            if (cover.worthLooking() && cover.covers(leaf, grow, within, reach, farthestSkip)) {
-                farthestSkip = cover.skipBeyond();
-                return;
-            }
             start();
-            if (cover.found()) { // another object in reach after all: the rays are traced, in the sphere's leaf too
-                testRays(cover.leaf(), cover.reach(), cover.grow());
-                cover.forget();
-            }
         }
         testRays(leaf, reach, grow);
     }

@@ -193,31 +193,6 @@ final class LeafObjects {
     }
 
     /**
-     * Whether object {@code i} is a sphere of squared radius at least {@code leastSquared} that
-     * no ray along D from an origin in the box from {@code lowest} to {@code highest} can hit
-     * ({@link SphereOutline#everyRayMisses}); false for any other shape, and for a smaller sphere,
-     * whose box leaves little room outside its outline.
-     */
-    boolean missedByEvery(int i, float leastSquared, float[] lowest, float[] highest, float dx, float dy, float dz) {
-        int at = offsets[i];
-        float rr = numbers[at + 3] * numbers[at + 3];
-        return testOf[i] == PackedTests.SPHERE && rr >= leastSquared
-                && SphereOutline.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], rr, lowest,
-                        highest, dx, dy, dz);
-    }
-
-    /** The largest squared radius of the packed spheres, 0 if there are none. */
-    float largestSphereSquared() {
-        float largest = 0;
-        for (int i = 0; i < fileOrder.length; i++) {
-            if (testOf[i] == PackedTests.SPHERE) {
-                largest = Math.max(largest, numbers[offsets[i] + 3] * numbers[offsets[i] + 3]);
-            }
-        }
-        return largest;
-    }
-
-    /**
      * The smallest {@code t ≥ 0} where the ray O + t·D hits object {@code i}, or NaN; {@code dd}
      * is D·D, the same for every object.
      */

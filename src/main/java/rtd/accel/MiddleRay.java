@@ -49,14 +49,6 @@ final class MiddleRay {
     /** The shortest and longest |D| of the rays: the first bounds how far (in t) they reach, the second how far they run. */
     float shortest;
     float longest;
-    /** Whether the rays are parallel (their spread is 0): the checks against a sphere's outline assume it. */
-    boolean parallel;
-    /**
-     * The squared radius from which a sphere's box leaves room for squares outside its outline
-     * worth telling ({@link #objectEntry}): eight times the beam's half diagonal. Smaller
-     * spheres, such as a million random ones, are not worth the check.
-     */
-    float cornerWorthy;
     /**
      * The exit of the grown box of the last {@link #grownEntry}: a second answer of that call,
      * which {@link BeamTracer}'s walk reads right after it as the t its children grow at.
@@ -100,8 +92,6 @@ final class MiddleRay {
         }
         shortest = beam.shortest;
         longest = beam.longest;
-        parallel = fan[0] == 0 && fan[1] == 0 && fan[2] == 0;
-        cornerWorthy = 64 * (half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
         return true;
     }
 
@@ -144,15 +134,8 @@ final class MiddleRay {
         return entry;
     }
 
-    /**
-     * The beam's entry into the box of the leaves' object {@code i}, or {@link #MISS} if it
-     * reaches none, or if the object is a sphere that no ray of the square hits (a square in
-     * the corner of a sphere's box, outside its outline).
-     */
+    /** The beam's entry into the box of the leaves' object {@code i}, or {@link #MISS} if it reaches none. */
     float objectEntry(int i, float grow, float within) {
-        float entry = grownEntry(bvh.leaves.boxes, 6 * i, grow, within);
-        return entry < MISS && parallel
-                && bvh.leaves.missedByEvery(i, cornerWorthy, beam.lowest, beam.highest, beam.dx, beam.dy, beam.dz)
-                ? MISS : entry;
+        return grownEntry(bvh.leaves.boxes, 6 * i, grow, within);
     }
 }
