@@ -70,8 +70,7 @@ final class SceneRun {
                 timer.endPhase("export");
             }
 
-            Accelerator.Kind kind = settings.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, settings.accel(),
-                    settings.samples());
+            Accelerator.Kind kind = settings.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, settings.accel());
             display.show(ProgressDisplay.Phase.of(kind.building));
             Accelerator accelerator = settings.paper() ? null : Accelerator.build(kind, scene, settings.width(),
                     settings.height(), settings.samples(), settings.threads());

@@ -73,7 +73,7 @@ class ViewGridTest {
     /** As the image of hits: a camera whose rays are too long for a triangle's narrower rounding gets the wider one. */
     @Test
     void aCameraWhoseRaysAreTooLongForTheTrianglesNarrowerRoundingGetsTheWiderOne() {
-        Scene scene = HitImageTest.raysTooLongForANarrowerRounding();
+        Scene scene = raysTooLongForANarrowerRounding();
 
         List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
 
@@ -385,5 +385,14 @@ class ViewGridTest {
             Ray ray = MixedScenes.ray(random, scene);
             assertSame(tracer.nearestHit(ray), scene.nearestHit(ray), "ray " + r + " " + ray);
         }
+    }
+
+    /** A triangle seen through a camera whose rays' directions are some 1e20 long. */
+    static Scene raysTooLongForANarrowerRounding() {
+        return new Scene(new Color(0, 0, 0),
+                new PerspectiveCamera(new Vector3f(333333344, 333333344, 1e9f), new Vector3f(666766656, -333433344, -1e9f),
+                        1.9e-17f),
+                List.of(new rtd.geometry.Triangle(new Vector3f(0, 0, 0), new Vector3f(1e9f, 0, 0), new Vector3f(0, 1e9f, 0),
+                        new Color(255, 0, 0), rtd.geometry.Material.DEFAULT)));
     }
 }
