@@ -23,8 +23,7 @@ import rtd.scene.Scene;
  * <p>A node's box and growth lie side by side, and so do two children's ({@link Compaction}):
  * a walk that opens a node reads both its children's from one stretch of 64 bytes. With a
  * hundred thousand objects the tree no longer fits in the processor's nearest caches, and a
- * walk waits for memory at every node it opens; it waited three times per node when boxes and
- * growths were kept in separate arrays (docs/performance.md).
+ * walk waits for memory at every node it opens: once per node so, not once per array.
  *
  * <p>Objects without a box (planes) have no place in a tree of boxes: they stay beside it,
  * in {@link #unbounded}, and every ray tests them, as the paper's loop does.

@@ -41,8 +41,7 @@ final class BvhBuilder {
     private final int[] unbounded;
     /**
      * The objects, where the leaves' objects end, in leaf order. Their boxes travel with them,
-     * so that every pass over a node's objects reads memory front to back (random reads into
-     * these arrays made building a million objects ten times slower). An object's centre, by
+     * so that every pass over a node's objects reads memory front to back, not at random. An object's centre, by
      * which it is sorted, is computed from its box where needed: fewer numbers to move than to keep.
      */
     private final ObjectArrays primary;
@@ -119,8 +118,7 @@ final class BvhBuilder {
 
     /**
      * The second set of arrays, which the partitions no longer need once the tree is built: for
-     * {@link LeafObjects} to pack its numbers into. New arrays would take new memory (28 MB for
-     * a million spheres): the spare arrays stay alive anyway, until a concurrent mark finds them
+     * {@link LeafObjects} to pack its numbers into. New arrays would take new memory: the spare arrays stay alive anyway, until a concurrent mark finds them
      * dead, since the tasks of the build that point to them have reached the old generation.
      */
     ObjectArrays spare() {

@@ -9,11 +9,9 @@ import java.util.Arrays;
  *
  * <p>How many nodes a tree has is known only once it is built: up to 2n − 1 for n objects, but
  * fewer than n / 2 where leaves hold four objects or more, as the SAH makes them for spheres and
- * triangles (a million spheres: 455,961 nodes). Arrays reserved for 2n − 1 nodes were four times
- * too large (64 of the 280 MB alive while a million spheres were built). So a block holds
- * n / 2 nodes, and the tree mostly fits in the first; more blocks are made only if it does not.
- * (Not a power of two: for a million objects, 12 MB of boxes fill three of the heap's regions
- * of 4 MB, where 2<sup>19</sup> boxes took four.) The builder's threads take numbers in runs
+ * triangles. Arrays reserved for 2n − 1 nodes would be about four times too large. So a block
+ * holds n / 2 nodes (not rounded to a power of two, which would waste heap regions), and the tree
+ * mostly fits in the first; more blocks are made only if it does not. The builder's threads take numbers in runs
  * ({@link Run}); the numbers then depend on which thread came first, but only the tree's shape
  * reaches {@link Bvh}, whose {@link Compaction} numbers the nodes anew.
  */

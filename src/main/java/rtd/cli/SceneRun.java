@@ -33,7 +33,7 @@ import rtd.shade.WhittedShader;
 
 /**
  * One scene from file to picture: read, write the {@code --export-pov} file if one is asked for,
- * build what {@code --accel} chose (the BVH, the view grid, the light and mirror grids), render, warn if
+ * build what {@code --accel} chose (the BVH, the view grid, the light grids), render, warn if
  * nothing is in view, write;
  * timed per phase for {@code --stats}, and shown on the progress line.
  */

@@ -107,8 +107,8 @@ public final class ParallelRenderer {
      * down: the JIT compiles the hot methods for what the first few thousand rays did. After a top
      * band of sky or of far spheres alone, the floor's mirror rays or the glass further down would
      * make it throw compiled methods away and compile them again, and the render runs slower
-     * meanwhile. Scattered, the first bands show the JIT the whole picture (measured in
-     * docs/performance.md). The picture is the same, as every pixel depends only on its own rays.
+     * meanwhile. Scattered, the first bands show the JIT the whole picture. The picture is the
+     * same, as every pixel depends only on its own rays.
      */
     static int bandTaken(int taken, int bands) {
         return (int) ((long) taken * scatteringStep(bands) % bands);
