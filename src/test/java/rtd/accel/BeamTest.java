@@ -44,6 +44,16 @@ class BeamTest {
         assertThat(hits.distance(i)).as(what + ": distance").isEqualTo(expected.distance());
     }
 
+    /**
+     * Whether ray {@code i} of the square at ({@code left}, {@code top}) is also checked against
+     * the paper's loop: one ray in four, a different one in each square, so that every place in a
+     * square is checked somewhere. Every ray is checked against the hierarchy's one-ray walk,
+     * which {@link BvhEqualsLoopTest} holds to the loop for rays of every kind.
+     */
+    private static boolean sampled(int i, int left, int top) {
+        return (i + left / 8 + top / 8) % 4 == 0;
+    }
+
     @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {1, 2, 3, 4, 5, 6})
     void aSquareOfParallelRaysFindsTheHitsEachRayFindsAlone(long seed) {
@@ -59,7 +69,9 @@ class BeamTest {
                 for (int i = 0; i < rays.count(); i++) {
                     assertSameHit(hits, i, alone.nearestHit(rays.ray(i)),
                             "ray " + i + " of the square at (" + left + ", " + top + ")");
-                    assertSameHit(hits, i, scene.nearestHit(rays.ray(i)), "the paper's loop, ray " + i);
+                    if (sampled(i, left, top)) {
+                        assertSameHit(hits, i, scene.nearestHit(rays.ray(i)), "the paper's loop, ray " + i);
+                    }
                 }
             }
         }
@@ -84,11 +96,12 @@ class BeamTest {
                 RayBundle rays = square(camera, left, top, 320, 240);
                 bundled.traceAll(rays, hits);
                 for (int i = 0; i < rays.count(); i++) {
-                    Hit expected = scene.nearestHit(rays.ray(i));
                     assertSameHit(hits, i, alone.nearestHit(rays.ray(i)),
                             "ray " + i + " of the square at (" + left + ", " + top + ")");
-                    assertSameHit(hits, i, expected, "the paper's loop, ray " + i);
-                    hitCount += expected == null ? 0 : 1;
+                    if (sampled(i, left, top)) {
+                        assertSameHit(hits, i, scene.nearestHit(rays.ray(i)), "the paper's loop, ray " + i);
+                    }
+                    hitCount += hits.index(i) < 0 ? 0 : 1;
                 }
             }
         }

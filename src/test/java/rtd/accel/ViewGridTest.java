@@ -98,7 +98,7 @@ class ViewGridTest {
     }
 
     @ParameterizedTest(name = "random scene {0}")
-    @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12})
+    @ValueSource(longs = {1, 4, 7, 10, 13, 16})
     void forEveryPixelOfRandomScenesSeenByRandomCamerasOfBothKinds(long seed) {
         Scene mixed = MixedScenes.generate(seed, 100 + (int) (seed * 89 % 300));
         Random random = new Random(seed);
