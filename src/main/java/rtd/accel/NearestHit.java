@@ -109,7 +109,7 @@ final class NearestHit {
      * the origin (summing over the axes), and {@code t·|R|} from it.
      */
     float reach() {
-        return BoxGrowth.reach(bvh, ox, oy, oz, 0, 0, 0, length);
+        return BoxGrowth.reach(bvh, ox, oy, oz, length);
     }
 
     /**

@@ -116,14 +116,6 @@ final class PointFootprint implements ImageFootprint {
         return (int) y * size + (int) x;
     }
 
-    /** The distance from X to {@code (x, y, z)}. */
-    double distanceFrom(double x, double y, double z) {
-        double wx = x - pointX;
-        double wy = y - pointY;
-        double wz = z - pointZ;
-        return Math.sqrt(wx * wx + wy * wy + wz * wz);
-    }
-
     @Override
     public float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
         double x0 = boxes[at] - pointX;

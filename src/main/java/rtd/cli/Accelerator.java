@@ -22,12 +22,6 @@ import rtd.scene.Scene;
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
-    /**
-     * The fewest objects for which {@code --accel auto} takes the view grid: below, the
-     * hierarchy's squares of rays are as fast, and already compiled for the warm-up.
-     */
-    static final int GRID_THRESHOLD = 1_000;
-
     /** What a run finds its hits with, and how the progress line names its building. */
     enum Kind {
         LOOP("the paper's loop: nothing to build"),
@@ -43,19 +37,21 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
     }
 
     /**
-     * What {@code accel} asks for {@code scene}: {@code auto} takes, for a scene of
-     * {@link #GRID_THRESHOLD} objects or more, the view grid, and for a scene with lights a grid
-     * seen from each light for its shadow rays and the BVH for the rest; else the BVH if the
-     * scene has objects. The grid serves either camera at any number of samples.
+     * What {@code accel} asks for {@code scene}: {@code auto} and {@code grid} take the view grid
+     * for the camera's rays, and for a scene with lights a grid seen from each light for its
+     * shadow rays and the BVH for the rest; the BVH where the grid cannot serve the camera; and
+     * nothing to build for a scene without objects. The grid serves either camera at any number
+     * of samples.
      */
     static Kind choose(Scene scene, Accel accel) {
-        int objects = scene.objects().size();
-        boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
-        boolean lit = !scene.lights().isEmpty();
-        if ((accel == Accel.grid || accel == Accel.auto && objects >= GRID_THRESHOLD) && gridFits) {
-            return lit ? Kind.GRID_AND_BVH : Kind.GRID;
+        if (accel == Accel.none || scene.objects().isEmpty()) {
+            return Kind.LOOP;
         }
-        return accel != Accel.none && objects > 0 ? Kind.BVH : Kind.LOOP;
+        boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
+        if (accel != Accel.bvh && gridFits) {
+            return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
+        }
+        return Kind.BVH;
     }
 
     /** {@link #build} of what {@code accel} asks ({@link #choose}). */

@@ -1,6 +1,6 @@
 package rtd.cli;
 
-import rtd.accel.Bvh;
+import rtd.accel.ViewGrid;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.render.ParallelRenderer;
@@ -10,7 +10,7 @@ import rtd.shade.FlatShader;
 
 /**
  * Reads, builds and renders a tiny scene once, on the warm-up thread ({@link WriterWarmUp}),
- * so that the classes of the reader, the BVH and the renderer are loaded, and the grammar's
+ * so that the classes of the reader, the view grid and the renderer are loaded, and the grammar's
  * table is made, on a spare core while picocli starts, instead of on the way of the first
  * scene. None of its numbers are kept.
  */
@@ -31,8 +31,8 @@ final class RendererWarmUp {
         try {
             Scene scene = SceneIO.parseScene("warm-up", SCENE);
             FlatShader flat = new FlatShader(scene);
-            Bvh bvh = Bvh.build(scene, 1);
-            ParallelRenderer.render(scene.camera(), bvh::newTracer, tracer -> flat, 24, 16, 1, new RenderProgress());
+            ViewGrid grid = ViewGrid.build(scene, 24, 16, 1, 1);
+            ParallelRenderer.render(scene.camera(), grid::newTracer, tracer -> flat, 24, 16, 1, new RenderProgress());
         } catch (SceneException | RuntimeException e) {
             // only a warm-up: the run itself reads, builds and renders, and says what fails
         }

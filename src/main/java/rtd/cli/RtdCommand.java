@@ -81,8 +81,7 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
                     + "grid: a grid on the image for the camera's rays (with lights: a grid seen from each light for "
-                    + "its shadow rays, and bvh for the rest); auto: grid for 1,000 objects or more, else bvh "
-                    + "(default: ${DEFAULT-VALUE})")
+                    + "its shadow rays, and bvh for the rest); auto: grid (default: ${DEFAULT-VALUE})")
     private Accel accel;
 
     @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "

@@ -80,7 +80,7 @@ public final class HitBuffer {
 
     /**
      * Whether no ray of the bundle hit anything, as a tracer said at once for all of them
-     * ({@link #setMisses}, as a beam that reaches no box does); {@code false} does not say that
+     * ({@link #setMisses}, as for pixels where no object shows); {@code false} does not say that
      * one hit. A shader may then colour the whole bundle at once.
      */
     public boolean missedAll() {
