@@ -2,7 +2,6 @@ package rtd.accel;
 
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
 import rtd.scene.Scene;
 
@@ -116,27 +115,9 @@ public final class Bvh {
         into[at + 1] = quadratic;
     }
 
-    /** Builds the hierarchy for {@code scene} with all cores. */
+    /** Builds the hierarchy for {@code scene}, on this thread. */
     public static Bvh build(Scene scene) {
-        return build(scene, Runtime.getRuntime().availableProcessors());
-    }
-
-    /**
-     * Builds the hierarchy for {@code scene} with {@code threads} threads; the tree is the same
-     * for any number. A small scene is built on the calling thread: starting threads would take
-     * longer than building it.
-     */
-    public static Bvh build(Scene scene, int threads) {
-        List<IGeometry> objects = scene.objects();
-        if (threads == 1 || objects.size() < BvhBuilder.PARALLEL_THRESHOLD) {
-            return new Bvh(new BvhBuilder(objects, null), objects);
-        }
-        ForkJoinPool pool = new ForkJoinPool(threads);
-        try {
-            return new Bvh(new BvhBuilder(objects, pool), objects);
-        } finally {
-            pool.shutdown();
-        }
+        return new Bvh(new BvhBuilder(scene.objects()), scene.objects());
     }
 
     /**

@@ -47,7 +47,7 @@ final class LeafObjects {
 
     /**
      * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order; {@code boxes}
-     * alike) with the builder's threads, into the builder's spare arrays where they are long
+     * alike) into the builder's spare arrays where they are long
      * enough ({@link BvhBuilder#spare}); writes each one's {@link KnownShapes#rounding} to
      * {@code roundings} in leaf order too, linear at {@code [2i]} and quadratic at
      * {@code [2i + 1]}, for the {@link Bvh} to grow its nodes by.
@@ -56,8 +56,8 @@ final class LeafObjects {
      * its place in leaf order: reading the objects in leaf order waited for memory at each one
      * (and again at a sphere's centre), and was a fifth of the build of a million spheres.
      */
-    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, BvhBuilder threads, float[] roundings) {
-        this(scene, fileOrder, boxes, threads.spare(), threads.parallel() ? threads::forEach : null, roundings);
+    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, BvhBuilder builder, float[] roundings) {
+        this(scene, fileOrder, boxes, builder.spare(), null, roundings);
     }
 
     /** Runs an action for 0 to n − 1, in parallel. */

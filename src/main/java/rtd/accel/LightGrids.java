@@ -50,7 +50,7 @@ public final class LightGrids {
         float[] box = boxOf(objects);
         int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples));
         long most = Math.max(1, mostPacked / Math.max(1, objects.size()));
-        boolean parallel = threads > 1 && objects.size() >= BvhBuilder.PARALLEL_THRESHOLD;
+        boolean parallel = threads > 1 && objects.size() >= Parts.PARALLEL_THRESHOLD;
         ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
         try {
             List<LightGrid> grids = new ArrayList<>();

@@ -74,7 +74,7 @@ public final class ViewGrid {
      * picture with {@code samples × samples} rays per pixel, built with {@code threads} threads.
      */
     public static ViewGrid build(Scene scene, int width, int height, int samples, int threads) {
-        boolean parallel = threads > 1 && scene.objects().size() >= BvhBuilder.PARALLEL_THRESHOLD;
+        boolean parallel = threads > 1 && scene.objects().size() >= Parts.PARALLEL_THRESHOLD;
         ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
         try {
             float latestOffset = samples == 1 ? 0 : (samples - 0.5f) / samples;

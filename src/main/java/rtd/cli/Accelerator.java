@@ -72,7 +72,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                         grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries")), false);
             }
             case GRID_AND_BVH -> {
-                CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene, threads));
+                CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene));
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
                 LightGrids lights = LightGrids.build(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
@@ -83,7 +83,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                                 StatsReport.count(bvh.nodeCount(), "node")), true);
             }
             case BVH -> {
-                Bvh bvh = Bvh.build(scene, threads);
+                Bvh bvh = Bvh.build(scene);
                 return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
             }
             default -> {

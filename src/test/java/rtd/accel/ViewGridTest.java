@@ -363,7 +363,7 @@ class ViewGridTest {
         Scene mixed = MixedScenes.shaded(MixedScenes.generate(seed, 250), seed);
         Scene scene = new Scene(mixed.ambient(), randomCamera(new Random(seed)), mixed.objects(), mixed.lights());
         ViewGrid grid = ViewGrid.build(scene, WIDTH, HEIGHT, 1, 2);
-        Bvh bvh = Bvh.build(scene, 2);
+        Bvh bvh = Bvh.build(scene);
         java.util.function.Function<rtd.render.Tracer, rtd.render.Shader> shaders =
                 tracer -> new rtd.shade.WhittedShader(scene, tracer);
         rtd.render.RenderResult both = rtd.render.ParallelRenderer.render(scene.camera(), () -> grid.newTracer(bvh.newTracer()),
