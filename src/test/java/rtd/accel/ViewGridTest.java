@@ -70,7 +70,7 @@ class ViewGridTest {
         return found;
     }
 
-    /** As the image of hits: a camera whose rays are too long for a triangle's narrower rounding gets the wider one. */
+    /** A camera whose rays are too long for a triangle's narrower rounding gets the wider one. */
     @Test
     void aCameraWhoseRaysAreTooLongForTheTrianglesNarrowerRoundingGetsTheWiderOne() {
         Scene scene = raysTooLongForANarrowerRounding();
