@@ -68,7 +68,7 @@ public final class Bvh {
         // the builder's own array, unless objects without a box (planes) follow the tree's at its end
         int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
         float[] roundings = new float[2 * fileOrder.length];
-        this.leaves = new LeafObjects(objects, fileOrder, builder.boxes(), builder, roundings);
+        this.leaves = new LeafObjects(objects, fileOrder, builder, roundings);
         putRoundings(boxes, nodes, roundings);
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];

@@ -62,7 +62,7 @@ final class BvhBuilder {
         return count;
     }
 
-    /** Builds the tree; afterwards {@link #order()} and {@link #boxes()} are in leaf order. */
+    /** Builds the tree; afterwards {@link #order()} is in leaf order. */
     void build() {
         maxDepth = buildNode(0, 0, count, 0, null, primary, new SahBins());
     }
@@ -78,11 +78,6 @@ final class BvhBuilder {
      */
     ObjectArrays spare() {
         return spare;
-    }
-
-    /** The objects' boxes in leaf order, six floats each. */
-    float[] boxes() {
-        return primary.boxes();
     }
 
     /** The depth of the deepest leaf. */

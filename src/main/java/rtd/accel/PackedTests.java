@@ -10,10 +10,11 @@ import rtd.geometry.Triangle;
 /**
  * The shapes whose intersection test the accelerators run on a copy of their numbers, packed
  * side by side in one array ({@link LeafObjects}), instead of through each object's own
- * {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test
- * runs the same float operations in the same order as the shape's own {@code intersect}, so it
- * finds the same t to the last bit; it only skips following references, and makes no
- * {@code Ray} or {@code Intersection} on the way. Not in the paper.
+ * {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test calls the shape's
+ * own kernel ({@link Sphere#hit}, {@link RayTriangle#hit}, {@link Box#hit}), which its
+ * {@code intersect} calls too, so it finds the same t to the last bit and shows any edit of the
+ * kernel; it only skips following references, and makes no {@code Ray} or {@code Intersection}
+ * on the way. Not in the paper.
  *
  * <p>Any other shape is tested by its own {@code intersect} ({@link #OWN_TEST}); a new shape
  * works without a line here, and gets a packed test here when it is worth one.
