@@ -7,8 +7,7 @@
 #   2. 1,000,000 random spheres at 1920x1080 against POV-Ray 3.7 (its twin written by rtd's
 #      --export-pov), with rtd's peak memory;
 #   3. the second core: the render phase (--stats) of 100,000 spheres with --threads 1 against
-#      --threads 2, through the view grid (--accel grid), whose render traces the rays: auto takes
-#      the image of hits there since the thirteenth round, whose render only paints the answers.
+#      --threads 2, through the view grid (--accel grid, which auto takes there too).
 #
 #   bench/targets.sh              # 11 pairs each (POV-Ray: POV_RUNS=3 runs, it takes 10-20 s each)
 #   RUNS=21 POV_RUNS=1 bench/targets.sh

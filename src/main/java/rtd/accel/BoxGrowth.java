@@ -8,7 +8,6 @@ import rtd.geometry.IGeometry;
  * ray has run ({@link IGeometry#bounds}, {@link Rounding}). A walk down the tree
  * knows a t beyond which the ray cannot be in a node (the tree's {@link #reach}, then each
  * parent's exit), and grows the node's children by their margin there ({@link #growth}).
- * Used alike for one ray ({@link NearestHit}) and for a square's beam ({@link BeamTracer}).
  */
 final class BoxGrowth {
 
@@ -16,15 +15,14 @@ final class BoxGrowth {
     }
 
     /**
-     * A t beyond which no object of the tree can report a hit, for rays from origins within
-     * {@code (x, y, z) ± half} with direction length {@code length}: a hit at t lies in the
-     * root's box grown by {@code cone·t}, at most the box's farthest corner plus
-     * {@code 3·cone·t} from the origin (summing over the axes), and {@code t·|R|} from it.
+     * A t beyond which no object of the tree can report a hit, for a ray from {@code (x, y, z)}
+     * with direction length {@code length}: a hit at t lies in the root's box grown by
+     * {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from the origin
+     * (summing over the axes), and {@code t·|R|} from it.
      */
-    static float reach(Bvh bvh, float x, float y, float z, float halfX, float halfY, float halfZ, float length) {
+    static float reach(Bvh bvh, float x, float y, float z, float length) {
         float[] root = bvh.boxes; // node 0
-        double far = farthest(x, root[0], root[3]) + halfX + farthest(y, root[1], root[4]) + halfY
-                + farthest(z, root[2], root[5]) + halfZ;
+        double far = farthest(x, root[0], root[3]) + farthest(y, root[1], root[4]) + farthest(z, root[2], root[5]);
         double widest = KnownShapes.ROUNDING_CONE + root[Bvh.ROUNDING]; // the root's rounding is the largest
         float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
         return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst

@@ -2,7 +2,6 @@ package rtd.accel;
 
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
 import rtd.scene.Scene;
 
@@ -23,8 +22,7 @@ import rtd.scene.Scene;
  * <p>A node's box and growth lie side by side, and so do two children's ({@link Compaction}):
  * a walk that opens a node reads both its children's from one stretch of 64 bytes. With a
  * hundred thousand objects the tree no longer fits in the processor's nearest caches, and a
- * walk waits for memory at every node it opens; it waited three times per node when boxes and
- * growths were kept in separate arrays (docs/performance.md).
+ * walk waits for memory at every node it opens: once per node so, not once per array.
  *
  * <p>Objects without a box (planes) have no place in a tree of boxes: they stay beside it,
  * in {@link #unbounded}, and every ray tests them, as the paper's loop does.
@@ -70,7 +68,7 @@ public final class Bvh {
         // the builder's own array, unless objects without a box (planes) follow the tree's at its end
         int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
         float[] roundings = new float[2 * fileOrder.length];
-        this.leaves = new LeafObjects(objects, fileOrder, builder.boxes(), builder, roundings);
+        this.leaves = new LeafObjects(objects, fileOrder, builder, roundings);
         putRoundings(boxes, nodes, roundings);
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];
@@ -117,27 +115,9 @@ public final class Bvh {
         into[at + 1] = quadratic;
     }
 
-    /** Builds the hierarchy for {@code scene} with all cores. */
+    /** Builds the hierarchy for {@code scene}, on this thread. */
     public static Bvh build(Scene scene) {
-        return build(scene, Runtime.getRuntime().availableProcessors());
-    }
-
-    /**
-     * Builds the hierarchy for {@code scene} with {@code threads} threads; the tree is the same
-     * for any number. A small scene is built on the calling thread: starting threads would take
-     * longer than building it.
-     */
-    public static Bvh build(Scene scene, int threads) {
-        List<IGeometry> objects = scene.objects();
-        if (threads == 1 || objects.size() < BvhBuilder.PARALLEL_THRESHOLD) {
-            return new Bvh(new BvhBuilder(objects, null), objects);
-        }
-        ForkJoinPool pool = new ForkJoinPool(threads);
-        try {
-            return new Bvh(new BvhBuilder(objects, pool), objects);
-        } finally {
-            pool.shutdown();
-        }
+        return new Bvh(new BvhBuilder(scene.objects()), scene.objects());
     }
 
     /**

@@ -16,10 +16,8 @@ import rtd.render.WorkCount;
  * every box that it enters only beyond that hit. At the leaves it runs the paper's
  * intersection test and depth test unchanged ({@link NearestHit}).
  *
- * <p>This is the accelerator's one door: {@link #nearestHit} for one ray, {@link #traceAll}
- * for the rays of a square of pixels, {@link #blocked} for a shadow ray. The rays of a camera's
- * square walk the tree together ({@link BeamTracer}); that fast path is an affair of this
- * package alone.
+ * <p>This is the hierarchy's one door: {@link #nearestHit} for one ray, {@link #traceAll} for
+ * the rays of a square of pixels, {@link #blocked} for a shadow ray.
  *
  * <p>Not thread-safe: it keeps a stack and counters of its own. Use one per thread.
  */
@@ -27,7 +25,6 @@ public final class BvhTracer implements Tracer {
 
     private final Bvh bvh;
     private final NearestHit hit;
-    private final BeamTracer beam;
     private final RecentBlockers recentBlockers = new RecentBlockers();
     private final int[] stackNodes;
     private final float[] stackEntries;
@@ -40,7 +37,6 @@ public final class BvhTracer implements Tracer {
     BvhTracer(Bvh bvh) {
         this.bvh = bvh;
         this.hit = new NearestHit(bvh);
-        this.beam = new BeamTracer(bvh);
         this.stackNodes = new int[bvh.maxDepth + 2];
         this.stackEntries = new float[bvh.maxDepth + 2];
         this.stackExits = new float[bvh.maxDepth + 2];
@@ -86,12 +82,9 @@ public final class BvhTracer implements Tracer {
         walkTree();
     }
 
-    /** Rays alike enough walk the tree together ({@link BeamTracer}); others walk it one by one. */
+    /** The bundle's rays walk the tree one by one, from their numbers, without a {@link Ray} each. */
     @Override
     public void traceAll(RayBundle bundle, HitBuffer hits) {
-        if (beam.trace(bundle, hits)) {
-            return;
-        }
         bundle.make();
         for (int i = 0; i < bundle.count(); i++) {
             rays++;
@@ -105,20 +98,9 @@ public final class BvhTracer implements Tracer {
         }
     }
 
-    /**
-     * A beam that reaches no object, or only a sphere that covers it ({@link BeamTracer#traceAtOnce});
-     * rays that are not parallel cannot tell.
-     */
-    @Override
-    public boolean traceAtOnce(RayBundle bundle, HitBuffer hits) {
-        return beam.traceAtOnce(bundle, hits);
-    }
-
     @Override
     public WorkCount work() {
-        WorkCount beams = beam.work();
-        return new WorkCount(rays, hit.testsByKind(), nodesVisited).plus(beams)
-                .answeredBy("BVH");
+        return new WorkCount(rays, hit.testsByKind(), nodesVisited).answeredBy("BVH");
     }
 
     /**

@@ -12,13 +12,13 @@ import rtd.math.Vector3f;
 
 /**
  * The objects of a {@link Bvh}'s leaves, in leaf order, so that the objects of a leaf lie next
- * to each other in memory: each one's place in the scene file (for the depth test's tie rule),
- * its box, and, for spheres, triangles and boxes, the numbers of its intersection test packed
- * into one array ({@link PackedTests}).
+ * to each other in memory: each one's place in the scene file (for the depth test's tie rule)
+ * and, for spheres, triangles and boxes, the numbers of its intersection test packed into one
+ * array ({@link PackedTests}).
  *
- * <p>{@link #t} runs the packed tests on these numbers, with the same float operations in the
- * same order as each shape's own {@code intersect}, so it finds the same {@code t} to the last
- * bit; it only skips following references. With a million objects this matters: a reference to
+ * <p>{@link #t} runs each shape's own kernel ({@code Sphere.hit}, {@code RayTriangle.hit},
+ * {@code Box.hit}) on these numbers, so it finds the same {@code t} as the shape's
+ * {@code intersect} to the last bit; it only skips following references. With a million objects this matters: a reference to
  * each object and its corners is a wait for memory per test, while the numbers of a leaf's
  * objects arrive together. Any other kind of object runs its own {@link IGeometry#intersect}, in
  * the same leaf, so one such object among a million spheres costs only its own tests.
@@ -29,8 +29,6 @@ final class LeafObjects {
     private final List<IGeometry> scene;
     /** Each object's place in the scene file. */
     final int[] fileOrder;
-    /** Each object's box, six floats: min x, y, z, max x, y, z; empty for a {@link ViewGrid}'s leaf, which needs none. */
-    final float[] boxes;
     /** Each object's kind, an index into {@link #kindNames}. */
     final byte[] kinds;
     /** Each object's way to test ({@link PackedTests#SPHERE}, ...), beside it for the hot loop. */
@@ -46,18 +44,17 @@ final class LeafObjects {
     final float[] numbers;
 
     /**
-     * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order; {@code boxes}
-     * alike) with the builder's threads, into the builder's spare arrays where they are long
-     * enough ({@link BvhBuilder#spare}); writes each one's {@link KnownShapes#rounding} to
+     * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order) into the
+     * builder's spare arrays where they are long enough ({@link BvhBuilder#spare}); writes each one's {@link KnownShapes#rounding} to
      * {@code roundings} in leaf order too, linear at {@code [2i]} and quadratic at
      * {@code [2i + 1]}, for the {@link Bvh} to grow its nodes by.
      *
      * <p>Each object is read in file order, as it lies in memory, and its numbers are written to
-     * its place in leaf order: reading the objects in leaf order waited for memory at each one
-     * (and again at a sphere's centre), and was a fifth of the build of a million spheres.
+     * its place in leaf order: read in leaf order, each object (and a sphere's centre) would be a
+     * wait for memory.
      */
-    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, BvhBuilder threads, float[] roundings) {
-        this(scene, fileOrder, boxes, threads.spare(), threads.parallel() ? threads::forEach : null, roundings);
+    LeafObjects(List<IGeometry> scene, int[] fileOrder, BvhBuilder builder, float[] roundings) {
+        this(scene, fileOrder, builder.spare(), null, roundings);
     }
 
     /** Runs an action for 0 to n − 1, in parallel. */
@@ -66,15 +63,14 @@ final class LeafObjects {
     }
 
     /**
-     * As {@link #LeafObjects(List, int[], float[], BvhBuilder, float[])}, packing into
+     * As {@link #LeafObjects(List, int[], BvhBuilder, float[])}, packing into
      * {@code spare}'s arrays where they are long enough, with {@code loop}, or on this thread if
      * it is null; without the roundings if {@code roundings} is null.
      */
-    LeafObjects(List<IGeometry> scene, int[] fileOrder, float[] boxes, ObjectArrays spare, ParallelLoop loop,
+    LeafObjects(List<IGeometry> scene, int[] fileOrder, ObjectArrays spare, ParallelLoop loop,
             float[] roundings) {
         this.scene = scene;
         this.fileOrder = fileOrder;
-        this.boxes = boxes;
         int count = fileOrder.length;
         List<String> names = new ArrayList<>();
         List<Byte> tests = new ArrayList<>();
@@ -190,31 +186,6 @@ final class LeafObjects {
             roundings[2 * i + 1] = rounding.quadratic();
         }
         PackedTests.put(object, numbers, offsets[i]);
-    }
-
-    /**
-     * Whether object {@code i} is a sphere of squared radius at least {@code leastSquared} that
-     * no ray along D from an origin in the box from {@code lowest} to {@code highest} can hit
-     * ({@link SphereOutline#everyRayMisses}); false for any other shape, and for a smaller sphere,
-     * whose box leaves little room outside its outline.
-     */
-    boolean missedByEvery(int i, float leastSquared, float[] lowest, float[] highest, float dx, float dy, float dz) {
-        int at = offsets[i];
-        float rr = numbers[at + 3] * numbers[at + 3];
-        return testOf[i] == PackedTests.SPHERE && rr >= leastSquared
-                && SphereOutline.everyRayMisses(numbers[at], numbers[at + 1], numbers[at + 2], rr, lowest,
-                        highest, dx, dy, dz);
-    }
-
-    /** The largest squared radius of the packed spheres, 0 if there are none. */
-    float largestSphereSquared() {
-        float largest = 0;
-        for (int i = 0; i < fileOrder.length; i++) {
-            if (testOf[i] == PackedTests.SPHERE) {
-                largest = Math.max(largest, numbers[offsets[i] + 3] * numbers[offsets[i] + 3]);
-            }
-        }
-        return largest;
     }
 
     /**

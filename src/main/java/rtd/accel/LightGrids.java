@@ -17,12 +17,12 @@ public final class LightGrids {
 
     /**
      * How many objects all the grids may hold copies of together: each packs every object's
-     * numbers for the test, some 100 MB a light for a million triangles. The lights after that
+     * numbers for the test, which for a million triangles is most of the memory. The lights after that
      * many (the first in the file get grids, and the first light always) leave their shadow rays
      * to the tree.
      */
     static final long MOST_PACKED = 2_000_000;
-    /** The side of a light's picture at least and at most, in pixels: 4,096² cells would take 64 MB. */
+    /** The side of a light's picture at least and at most, in pixels: 4,096² cells are as many as memory bears. */
     private static final int SMALLEST = 16;
     private static final int LARGEST = 4096;
 
@@ -50,7 +50,7 @@ public final class LightGrids {
         float[] box = boxOf(objects);
         int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples));
         long most = Math.max(1, mostPacked / Math.max(1, objects.size()));
-        boolean parallel = threads > 1 && objects.size() >= BvhBuilder.PARALLEL_THRESHOLD;
+        boolean parallel = threads > 1 && objects.size() >= Parts.PARALLEL_THRESHOLD;
         ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
         try {
             List<LightGrid> grids = new ArrayList<>();

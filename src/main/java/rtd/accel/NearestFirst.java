@@ -37,8 +37,7 @@ final class NearestFirst {
                 if (to - from > 1 && nearestByPlace[places[from]] > nearestByPlace[places[to - 1]]) {
                     reverse(places, from, to);
                 }
-                // j > beforeFrom, not j >= from: JDK 17's C2 threw the second form's compiled code away once a
-                // run (a loop_limit_check trap; the comment in TileOfHits.testObject says more)
+                // j > beforeFrom, not j >= from: the JIT compiles the first form once, and gave up on the second
                 int beforeFrom = from - 1;
                 for (int k = from + 1; k < to; k++) {
                     int place = places[k];

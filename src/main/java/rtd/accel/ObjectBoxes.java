@@ -2,8 +2,6 @@ package rtd.accel;
 
 import java.util.Arrays;
 import java.util.List;
-import java.util.function.Consumer;
-import java.util.function.IntConsumer;
 import rtd.geometry.IGeometry;
 
 /**
@@ -15,8 +13,8 @@ final class ObjectBoxes {
 
     private final List<IGeometry> objects;
     private final ObjectArrays into;
-    /** Whether {@link #measure} met an object without a finite box; set by any thread, seldom. */
-    private volatile boolean anyUnbounded;
+    /** Whether {@link #measure} met an object without a finite box. */
+    private boolean anyUnbounded;
 
     private ObjectBoxes(List<IGeometry> objects, ObjectArrays into) {
         this.objects = objects;
@@ -24,20 +22,14 @@ final class ObjectBoxes {
     }
 
     /**
-     * Measures each of {@code objects} into {@code into} (its place {@code i}: box and order), on
-     * this thread, or by {@code inParallel} (which runs an action for each place) if it is not
-     * null; then moves the objects without a finite box behind the others, each group in file
-     * order. Answers their places in the file, in file order; the others are places
+     * Measures each of {@code objects} into {@code into} (its place {@code i}: box and order);
+     * then moves the objects without a finite box behind the others, each group in file order. Answers their places in the file, in file order; the others are places
      * {@code [0, objects.size() − answer.length)} of {@code into}.
      */
-    static int[] measure(List<IGeometry> objects, ObjectArrays into, Consumer<IntConsumer> inParallel) {
+    static int[] measure(List<IGeometry> objects, ObjectArrays into) {
         ObjectBoxes boxes = new ObjectBoxes(objects, into);
-        if (inParallel == null) { // no lambda either: its first use costs more than a small scene's whole build
-            for (int i = 0; i < objects.size(); i++) {
-                boxes.measure(i);
-            }
-        } else {
-            inParallel.accept(boxes::measure);
+        for (int i = 0; i < objects.size(); i++) {
+            boxes.measure(i);
         }
         return boxes.anyUnbounded ? boxes.setUnboundedApart() : new int[0];
     }

@@ -9,12 +9,12 @@ import rtd.geometry.Triangle;
 
 /**
  * The shapes whose intersection test the accelerators run on a copy of their numbers, packed
- * side by side in one array ({@link LeafObjects}; {@link HitImageBuilder} for spheres and boxes,
- * as it tests a triangle on its own numbers), instead of through each object's own
- * {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test
- * runs the same float operations in the same order as the shape's own {@code intersect}, so it
- * finds the same t to the last bit; it only skips following references, and makes no
- * {@code Ray} or {@code Intersection} on the way. Not in the paper.
+ * side by side in one array ({@link LeafObjects}), instead of through each object's own
+ * {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test calls the shape's
+ * own kernel ({@link Sphere#hit}, {@link RayTriangle#hit}, {@link Box#hit}), which its
+ * {@code intersect} calls too, so it finds the same t to the last bit and shows any edit of the
+ * kernel; it only skips following references, and makes no {@code Ray} or {@code Intersection}
+ * on the way. Not in the paper.
  *
  * <p>Any other shape is tested by its own {@code intersect} ({@link #OWN_TEST}); a new shape
  * works without a line here, and gets a packed test here when it is worth one.
@@ -26,11 +26,6 @@ final class PackedTests {
     static final byte BOX = 2;
     /** A shape without a packed test: its own {@code intersect} runs. */
     static final byte OWN_TEST = 3;
-    /**
-     * How many bits the tests' numbers take: the image of hits keeps an object's test in the low
-     * bits of an int and its kind above them. A fifth way to test needs one more.
-     */
-    static final int BITS = 2;
     /** A sphere's numbers: its centre M's x, y, z and its radius r. */
     static final int SPHERE_NUMBERS = 4;
 

@@ -26,6 +26,8 @@ final class Parts {
 
     /** The most parts: a part of the view grid's passes keeps a count for every cell of the image. */
     static final int MOST = 8;
+    /** The fewest objects for which the grids are built on a pool: for fewer, starting threads takes longer. */
+    static final int PARALLEL_THRESHOLD = 20_000;
 
     final int count;
     final int parts;

@@ -19,7 +19,7 @@ final class SahBins {
 
     /**
      * From this many objects on, {@link #add} grows the bins' boxes by comparisons that the
-     * processor predicts, below it without branches (measured on a million spheres).
+     * processor predicts, below it without branches.
      */
     private static final int MANY = 8192;
 

@@ -24,8 +24,8 @@ final class SahSplitter {
     private static final int BINS = SahBins.COUNT;
     private static final int MAX_LEAF_SIZE = 16;
     /**
-     * The cost of visiting a node, counted in intersection tests. Measured on the million-sphere
-     * benchmark: 4 (with leaves of up to 16) rendered in 1.8 s where 1 took 3.2 s.
+     * The cost of visiting a node, counted in intersection tests: 4, with leaves of up to 16, makes
+     * shallow trees of full leaves, which a walk that waits for memory at each node favours.
      */
     private static final float TRAVERSAL_COST = 4f;
     /** What {@link #cheapestBin} answers when a leaf is cheaper than any split. */
@@ -36,23 +36,19 @@ final class SahSplitter {
     private final ObjectArrays primary;
     /** The second set of arrays, which the partitions copy into and back out of. */
     private final ObjectArrays spare;
-    /** The passes over nodes of at least {@link BvhBuilder#CHUNKED_THRESHOLD} objects. */
-    private final ChunkedPasses chunked;
 
     /** A splitter of the scene's {@code objects}, which partitions between {@code primary} and {@code spare}. */
-    SahSplitter(List<IGeometry> objects, ObjectArrays primary, ObjectArrays spare, ChunkedPasses chunked) {
+    SahSplitter(List<IGeometry> objects, ObjectArrays primary, ObjectArrays spare) {
         this.objects = objects;
         this.primary = primary;
         this.spare = spare;
-        this.chunked = chunked;
     }
 
     /**
      * Finds the cheapest split by the SAH and partitions places {@code [start, end)} of
      * {@code data} by it, into the other arrays. Returns {@code null} when a leaf is cheaper.
      * Each child's extent is the union of its bins', exactly what a pass over its objects would
-     * measure. A node of {@value BvhBuilder#CHUNKED_THRESHOLD} objects or more bins and partitions in
-     * chunks on all threads ({@link ChunkedPasses}), with the same result.
+     * measure.
      */
     Split splitBySah(Extent extent, ObjectArrays data, int start, int end, SahBins bins) {
         int n = end - start;
@@ -67,12 +63,7 @@ final class SahSplitter {
         float lo = centreBox[axis];
         float scale = BINS / (centreBox[axis + 3] - lo);
         bins.clear();
-        SahBins[] chunks = null;
-        if (n >= BvhBuilder.CHUNKED_THRESHOLD) {
-            chunks = chunked.bin(data, start, end, axis, lo, scale, bins);
-        } else {
-            bins.add(data.boxes(), start, end, axis, lo, scale);
-        }
+        bins.add(data.boxes(), start, end, axis, lo, scale);
         int bestBin = cheapestBin(bins, extent, n);
         if (bestBin == LEAF) {
             return null;
@@ -82,11 +73,7 @@ final class SahSplitter {
             return splitByCount(data, start, end);
         }
         ObjectArrays to = data == primary ? spare : primary;
-        if (chunks != null) {
-            chunked.partition(data, start, end, axis, lo, scale, bestBin, chunks, to, middle);
-        } else {
-            data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
-        }
+        data.scatter(start, end, axis, lo, scale, bestBin, to, start, middle);
         return new Split(middle, end, bins.extent(0, bestBin + 1), bins.extent(bestBin + 1, BINS), to);
     }
 

@@ -21,8 +21,8 @@ final class TestCounts {
     /** The tests by kind, where the tree holds more than one kind; else only {@link #treeTests} counts. */
     private final long[] tests;
     /**
-     * Per leaf of several kinds ({@link Bvh#mixedLeaves}), how many rays tested its objects. Not one
-     * a node: a thread's beams keep 64 {@link NearestHit}s, each with its counts.
+     * Per leaf of several kinds ({@link Bvh#mixedLeaves}), how many rays tested its objects: not one
+     * counter a node, which for a mesh of a million triangles would be megabytes a tracer.
      */
     private final long[] leafVisits;
     private final boolean severalKinds;

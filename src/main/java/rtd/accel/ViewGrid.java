@@ -16,8 +16,7 @@ import rtd.scene.Scene;
  * <p>It serves only the camera's rays ({@link ViewGridTracer}): in a picture in flat colours no
  * other ray is traced; a scene with lights casts shadow rays, which its tracer hands on: to the
  * {@link LightGrids}, which see the objects from each light as this grid sees them from the
- * camera; to the {@link MirrorGrids}, which see them from the eye's mirror image in each flat
- * mirror; and the rest to a {@link Bvh}'s. The cells hold places in {@link #objects}, a hierarchy
+ * camera, and the rest to a {@link Bvh}'s. The cells hold places in {@link #objects}, a hierarchy
  * of one leaf that holds every object with its numbers packed for the test. A ray tests its
  * cell's objects nearest first, and stops at the first that lies beyond a hit it has found:
  * where objects hide each other, it tests the few in front.
@@ -48,8 +47,7 @@ public final class ViewGrid {
     final int[] places;
     /**
      * Per place in the leaf, a distance from the ray's origin before which no camera ray hits the
-     * object (in a {@link LightGrid}, from the light; in a {@link MirrorGrid}, from the eye's
-     * mirror image): it never decreases along a cell's objects,
+     * object (in a {@link LightGrid}, from the light): it never decreases along a cell's objects,
      * so a ray that has a hit nearer than an object's may stop there
      * ({@link NearestHit#testPlacesNearestFirst}; a shadow ray, where it is beyond its origin,
      * {@link NearestHit#testPlacesUntilHit}).
@@ -76,7 +74,7 @@ public final class ViewGrid {
      * picture with {@code samples × samples} rays per pixel, built with {@code threads} threads.
      */
     public static ViewGrid build(Scene scene, int width, int height, int samples, int threads) {
-        boolean parallel = threads > 1 && scene.objects().size() >= BvhBuilder.PARALLEL_THRESHOLD;
+        boolean parallel = threads > 1 && scene.objects().size() >= Parts.PARALLEL_THRESHOLD;
         ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
         try {
             float latestOffset = samples == 1 ? 0 : (samples - 0.5f) / samples;

@@ -17,7 +17,7 @@ import rtd.render.WorkCount;
  * once that distance passes the hit found, by more than rounding can explain (as a box's entry
  * does in {@link BvhTracer}), no object after it can win or tie, and the ray stops.
  *
- * <p>A ray that is not the grid camera's (a shadow ray, a mirrored ray, a ray given alone) goes
+ * <p>A ray that is not the grid camera's (a shadow ray, a reflected ray, a ray given alone) goes
  * to the tracer for the others in a scene with lights (its {@link LightGrids}' tracer, which
  * hands what they do not serve to a {@link BvhTracer}); without one it runs
  * the tests on every object, as the paper's loop does: right for any ray, and fast only for the
@@ -85,7 +85,7 @@ public final class ViewGridTracer implements Tracer {
             hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
                     bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
             hit.testUnbounded();
-            hit.testPlacesNearestFirst(grid.places, cellStart[cell], cellStart[cell + 1], grid.nearest, 0);
+            hit.testPlacesNearestFirst(grid.places, cellStart[cell], cellStart[cell + 1], grid.nearest);
             hits.set(i, hit.best(), hit.bestT(), hit.bestDistance());
             hits.setTests(i, hit.testsRun() - before);
         }

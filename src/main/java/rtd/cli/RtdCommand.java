@@ -85,11 +85,7 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--accel", paramLabel = "KIND", defaultValue = "auto",
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
                     + "grid: a grid on the image for the camera's rays (with lights: a grid seen from each light for "
-                    + "its shadow rays, one seen from the eye's mirror image for the rays each flat mirror reflects "
-                    + "from the camera, and bvh for the rest); image: each pixel's hit found object by "
-                    + "object before the render (one ray a pixel, else grid); auto: image for 100,000 objects or more "
-                    + "in flat colours with one ray a pixel, else grid for 1,000 or more, else bvh (default: "
-                    + "${DEFAULT-VALUE})")
+                    + "its shadow rays, and bvh for the rest); auto: grid (default: ${DEFAULT-VALUE})")
     private Accel accel;
 
     @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "

@@ -62,8 +62,7 @@ final class SceneRun {
                 stats.endPhase("export");
             }
 
-            Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP
-                    : Accelerator.choose(scene, options.accel(), options.samples());
+            Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, options.accel());
             display.show(ProgressDisplay.Phase.of(kind.building));
             Accelerator accelerator = options.paper() ? null : Accelerator.build(kind, scene, options.width(),
                     options.height(), options.samples(), options.threads());

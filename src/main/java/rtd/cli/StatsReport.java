@@ -56,13 +56,10 @@ final class StatsReport {
         return kinds.append(')').toString();
     }
 
-    /**
-     * "2,073,600 answered by the view grid, 2,718,977 by the light grids, 2,322,493 by the BVH", in
-     * that order, the image of hits first where it answers the camera's rays.
-     */
+    /** "2,073,600 answered by the view grid, 2,718,977 by the light grids, 2,322,493 by the BVH", in that order. */
     private static String answeredBy(WorkCount work) {
         StringBuilder text = new StringBuilder();
-        for (String structure : new String[] {"image of hits", "view grid", "light grids", "mirror grids", "BVH"}) {
+        for (String structure : new String[] {"view grid", "light grids", "BVH"}) {
             Long rays = work.answeredBy().get(structure);
             if (rays != null && rays > 0) {
                 text.append(String.format(Locale.ROOT, text.length() == 0 ? "%,d answered by the %s" : ", %,d by the %s",

@@ -1,7 +1,7 @@
 package rtd.cli;
 
 import java.util.concurrent.CompletableFuture;
-import rtd.accel.Bvh;
+import rtd.accel.ViewGrid;
 import rtd.io.ImageFormat;
 import rtd.io.ImageWriting;
 import rtd.io.SceneException;
@@ -12,7 +12,7 @@ import rtd.scene.Scene;
 import rtd.shade.FlatShader;
 
 /**
- * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}) and then of the reader, the BVH
+ * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}) and then of the reader, the view grid
  * and the renderer on a tiny scene: {@link Main} starts it before the command line is parsed, so that classes are
  * loaded on a spare core while picocli starts and the scene is read. Nothing it makes is kept; it is per JVM, as
  * what it loads is, and so the one piece of state that outlives a run.
@@ -44,7 +44,7 @@ final class WarmUp {
         try {
             Scene scene = SceneIO.parseScene("warm-up", SCENE);
             FlatShader flat = new FlatShader(scene);
-            ParallelRenderer.render(scene.camera(), Bvh.build(scene, 1)::newTracer, tracer -> flat, 24, 16, 1,
+            ParallelRenderer.render(scene.camera(), ViewGrid.build(scene, 24, 16, 1, 1)::newTracer, tracer -> flat, 24, 16, 1,
                     new RenderProgress());
         } catch (SceneException | RuntimeException e) {
             // only a warm-up: the run itself reads, builds and renders, and says what fails

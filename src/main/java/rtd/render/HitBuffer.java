@@ -21,18 +21,13 @@ public final class HitBuffer {
     private final int[] tests;
     /** Whether the last {@link #setMisses} has not been followed by a {@link #set}: every ray missed. */
     private boolean missedAll;
-    /** The object of the last {@link #setHits}, if no {@link #set} has followed; else −1. */
-    private int everyRayHits = -1;
     /**
-     * How many rays' entries {@link #setMisses} or {@link #setHits} answered at once and has not
-     * yet written into the arrays: they are written when first read ({@link #writePending}).
-     * Most of the paper's picture is answered so, and a shader of flat colours colours such a
-     * bundle at once without reading an entry; four passes over the arrays for every bundle
-     * cost a fifth of its render while the JIT has not compiled them yet (measured).
+     * How many rays' entries {@link #setMisses} answered at once and has not yet written into the
+     * arrays: they are written when first read ({@link #writePending}). Most of the paper's
+     * picture is answered so, and a shader of flat colours colours such a bundle at once without
+     * reading an entry, so the four passes over the arrays are saved.
      */
     private int pending;
-    /** Whether the reader reads the hits' t and distance ({@link #readHitPoints}); yes unless told otherwise. */
-    private boolean hitPointsRead = true;
 
     /** Room for {@code capacity} hits. */
     public HitBuffer(int capacity) {
@@ -54,25 +49,10 @@ public final class HitBuffer {
         return tests[i];
     }
 
-    /**
-     * Says whether whoever reads these hits (a shader) reads where each ray hits, its t and
-     * distance. If not, a tracer may answer for a whole bundle at once ({@link #setHits})
-     * without finding them: the paper's flat colours need only the object.
-     */
-    public void readHitPoints(boolean read) {
-        this.hitPointsRead = read;
-    }
-
-    /** Whether the hits' t and distance are read ({@link #readHitPoints}). */
-    public boolean hitPointsRead() {
-        return hitPointsRead;
-    }
-
     /** Ray {@code i} hits object {@code object} (its place in the scene) at {@code t}, at {@code distance} from its origin. */
     public void set(int i, int object, float t, float distance) {
         writePending();
         missedAll = false;
-        everyRayHits = -1;
         this.index[i] = object;
         this.t[i] = t;
         this.distance[i] = distance;
@@ -95,38 +75,19 @@ public final class HitBuffer {
     /** Rays 0 to {@code count − 1} hit nothing, and took no intersection test. */
     public void setMisses(int count) {
         missedAll = true;
-        everyRayHits = -1;
         pending = count;
     }
 
     /**
      * Whether no ray of the bundle hit anything, as a tracer said at once for all of them
-     * ({@link #setMisses}, as a beam that reaches no box does); {@code false} does not say that
+     * ({@link #setMisses}, as for pixels where no object shows); {@code false} does not say that
      * one hit. A shader may then colour the whole bundle at once.
      */
     public boolean missedAll() {
         return missedAll;
     }
 
-    /**
-     * Rays 0 to {@code count − 1} all hit object {@code object} (its place in the scene), as a
-     * tracer can tell at once, without tests of its own: only for a buffer whose hit points
-     * are not read ({@link #readHitPoints}). Their t and distance are not known (NaN).
-     */
-    public void setHits(int object, int count) {
-        if (hitPointsRead) {
-            throw new IllegalStateException("the hits' t and distance are read, so each ray must be traced");
-        }
-        missedAll = false;
-        everyRayHits = object;
-        pending = count;
-    }
-
-    /**
-     * Writes the entries that {@link #setMisses} or {@link #setHits} answered at once: no test,
-     * and a miss (no object, no t, an infinite distance) or the one object (t and distance not
-     * known, NaN).
-     */
+    /** Writes the entries that {@link #setMisses} answered at once: no test, no object, no t, an infinite distance. */
     private void writePending() {
         if (pending == 0) {
             return;
@@ -135,21 +96,8 @@ public final class HitBuffer {
         pending = 0;
         Arrays.fill(tests, 0, count, 0);
         Arrays.fill(t, 0, count, Float.NaN);
-        if (missedAll) {
-            Arrays.fill(index, 0, count, -1);
-            Arrays.fill(distance, 0, count, Float.POSITIVE_INFINITY);
-        } else {
-            Arrays.fill(index, 0, count, everyRayHits);
-            Arrays.fill(distance, 0, count, Float.NaN);
-        }
-    }
-
-    /**
-     * The object every ray of the bundle hits, as a tracer said at once for all of them
-     * ({@link #setHits}); −1 if it did not say so. A shader may then colour the whole bundle at once.
-     */
-    public int everyRayHits() {
-        return everyRayHits;
+        Arrays.fill(index, 0, count, -1);
+        Arrays.fill(distance, 0, count, Float.POSITIVE_INFINITY);
     }
 
     /** The place of the object ray {@code i} hits among the scene's objects, or −1. */

@@ -24,10 +24,7 @@ import rtd.image.Picture;
  * {@value #TILE} rows not yet taken, so a slow band does not hold the others back, and hands
  * its tracer the rays of one {@value #TILE} × {@value #TILE} square of pixels at a time:
  * neighbouring rays take similar paths, which a tracer may use. The bands are taken not from
- * the top down but scattered over the picture ({@link #bandTaken}), for the JIT's sake. Where
- * the tracer knows every pixel's object before the render ({@link Tracer#traceEveryPixel}) and
- * the colours depend on the objects alone ({@link Shader#coloursOfObjects}), the bands are
- * painted by a lookup instead.
+ * the top down but scattered over the picture ({@link #bandTaken}), for the JIT's sake.
  */
 public final class ParallelRenderer {
 
@@ -76,12 +73,6 @@ public final class ParallelRenderer {
             squares.add(square);
             workers.add(() -> renderBands(square, pixels, bands, nextBand, progress));
         }
-        // flat colours from the image of hits: every pixel's object is known, and its colour is the object's
-        int[] colours = samples == 1 ? squares.get(0).shader.coloursOfObjects() : null;
-        int[] objects = colours == null ? null : used.get(0).traceEveryPixel(camera, width, height);
-        if (objects != null) {
-            workers.replaceAll(worker -> () -> paintBands(objects, colours, pixels, width, height, bands, nextBand, progress));
-        }
         runAll(workers);
         WorkCount work = WorkCount.NONE;
         for (Tracer tracer : used) {
@@ -91,22 +82,6 @@ public final class ParallelRenderer {
             work = work.plusSecondary(square.shader.secondaryRays());
         }
         return new RenderResult(new Picture(width, height, pixels), work);
-    }
-
-    /**
-     * Where every pixel's object is known and its colour depends on nothing else, the picture
-     * is a lookup: each pixel the colour of its object, band by band as the render takes them.
-     */
-    private static void paintBands(int[] objects, int[] colours, int[] pixels, int width, int height, int bands,
-            AtomicInteger nextBand, RenderProgress progress) {
-        for (int taken = nextBand.getAndIncrement(); taken < bands; taken = nextBand.getAndIncrement()) {
-            int top = bandTaken(taken, bands) * TILE;
-            int bottom = Math.min(height, top + TILE);
-            for (int p = top * width; p < bottom * width; p++) {
-                pixels[p] = colours[objects[p] + 1];
-            }
-            progress.rowsDone(bottom - top);
-        }
     }
 
     private static void renderBands(Square square, int[] pixels, int bands, AtomicInteger nextBand,
@@ -132,8 +107,8 @@ public final class ParallelRenderer {
      * down: the JIT compiles the hot methods for what the first few thousand rays did. After a top
      * band of sky or of far spheres alone, the floor's mirror rays or the glass further down would
      * make it throw compiled methods away and compile them again, and the render runs slower
-     * meanwhile. Scattered, the first bands show the JIT the whole picture (measured in
-     * docs/performance.md). The picture is the same, as every pixel depends only on its own rays.
+     * meanwhile. Scattered, the first bands show the JIT the whole picture. The picture is the
+     * same, as every pixel depends only on its own rays.
      */
     static int bandTaken(int taken, int bands) {
         return (int) ((long) taken * scatteringStep(bands) % bands);
@@ -179,15 +154,13 @@ public final class ParallelRenderer {
             this.width = width;
             this.height = height;
             this.samples = samples;
-            hits.readHitPoints(shader.readsHitPoints());
         }
 
         /**
          * The pixels {@code [left, right) × [top, bottom)} of a band into {@code pixels}: all at
-         * once if the tracer can tell that none of their rays hits anything, or (flat colours)
-         * that all of them hit one object, else each half in the same way, down to the squares.
-         * Most of the paper's picture is sky or the inside of a disc, which a few questions
-         * about long runs settle, instead of one for each square. The tracer answers so only
+         * once if the tracer can tell that none of their rays hits anything, else each half in
+         * the same way, down to the squares. Much of the paper's picture is sky, which a few
+         * questions about long runs settle, instead of one for each square. The tracer answers so only
          * what each ray would find alone, so the picture is the same.
          */
         void renderRun(int left, int right, int top, int bottom, int[] pixels) {

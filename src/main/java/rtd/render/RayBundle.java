@@ -8,10 +8,10 @@ import rtd.math.Vector3f;
  * The rays of one small square of pixels, kept as numbers: the origin and direction of ray
  * {@code i} of equation 3.1 at index {@code i}, row by row. Not in the paper:
  * {@link ParallelRenderer} fills one per thread and hands it to a {@link Tracer}, which may use
- * what the rays share (the orthographic camera's are all parallel).
+ * what the rays share (a view grid: the pixels they pass through).
  *
  * <p>The rays are made only when a tracer first asks for their numbers ({@link #make}): a
- * tracer that can tell from the square's corners that no ray reaches any object never needs
+ * tracer that can tell from the square's pixels that no ray reaches any object never needs
  * them. Numbers, not {@link Ray} objects: a {@code Ray} stored in an array lives on the heap,
  * 48 bytes a pixel; here the camera writes each ray's numbers ({@link ICamera#putRay}, exactly
  * {@link ICamera#generateRay}'s), so no object is made per pixel.
@@ -103,11 +103,6 @@ public final class RayBundle {
         made = true;
     }
 
-    /** Whether the rays have been made (tests look at it: a square a tracer can skip whole should not be). */
-    public boolean isMade() {
-        return made;
-    }
-
     /** The camera whose square of pixels these rays are, or {@code null} if they were given one by one. */
     public ICamera camera() {
         return camera;
@@ -153,17 +148,6 @@ public final class RayBundle {
     /** Where down its pixel each ray passes, 0 at the corner. */
     public float sampleY() {
         return sampleY;
-    }
-
-    /**
-     * The six numbers (origin, then direction) of the ray of the square's corner {@code k}, into
-     * {@code into}: 0 top left, 1 top right, 2 bottom left, 3 bottom right; only for a square
-     * of a camera. They are the numbers {@link #make} gives that ray, and make no object.
-     */
-    public void putCorner(int k, float[] into) {
-        int x = k % 2 == 0 ? left : right - 1;
-        int y = k < 2 ? top : bottom - 1;
-        camera.putRay(x + sampleX, y + sampleY, width, height, into, 0);
     }
 
     /** The camera's ray of pixel (x, y): through its corner, as Listing 4.1, or through the sample's point. */

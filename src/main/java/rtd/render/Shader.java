@@ -23,31 +23,12 @@ public interface Shader {
 
     /**
      * {@link #rgb} of rays {@code 0} to {@code count − 1}, into {@code rgb}. A shader may colour
-     * a bundle whose rays all missed ({@link HitBuffer#missedAll}), or all hit one object
-     * ({@link HitBuffer#everyRayHits}), at once.
+     * a bundle whose rays all missed ({@link HitBuffer#missedAll}) at once.
      */
     default void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
         for (int i = 0; i < count; i++) {
             rgb[i] = rgb(rays, hits, i);
         }
-    }
-
-    /**
-     * Whether this shader reads where each ray hits, the t and distance of its hit; if not, the
-     * tracer need not find them where it can tell the object at once
-     * ({@link HitBuffer#readHitPoints}). Yes by default.
-     */
-    default boolean readsHitPoints() {
-        return true;
-    }
-
-    /**
-     * Where a pixel's colour depends on nothing but the object its ray hits (the paper's flat
-     * colours): each object's colour as the picture stores it, at its place in the scene's list
-     * plus 1, and the background's at 0; a new array. Null by default: the colour depends on more.
-     */
-    default int[] coloursOfObjects() {
-        return null;
     }
 
     /** The rays this shader followed beyond the camera's, by kind ("shadow", "reflected", ...); none by default. */

@@ -1,6 +1,5 @@
 package rtd.render;
 
-import rtd.camera.ICamera;
 import rtd.geometry.Hit;
 import rtd.math.Ray;
 
@@ -35,27 +34,13 @@ public interface Tracer {
 
     /**
      * Whether the tracer can tell at once, without following them one by one, that none of the
-     * bundle's rays hits anything ({@link HitBuffer#setMisses}), or, where {@code hits} says
-     * that the hit points are not read, that every ray hits one object ({@link HitBuffer#setHits}):
-     * then they count as traced, with no intersection test, their answer is in {@code hits}, and
-     * the answer is true. False, with nothing traced, if the rays' answers may differ or if the
-     * tracer cannot tell; by default it cannot. The bundle may be larger than a square:
+     * bundle's rays hits anything ({@link HitBuffer#setMisses}): then they count as traced, with
+     * no intersection test, their answer is in {@code hits}, and the answer is true. False, with
+     * nothing traced, if some ray may hit or if the tracer cannot tell; by default it cannot. The bundle may be larger than a square:
      * {@link ParallelRenderer} asks this of a run of squares before it traces them.
      */
     default boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
         return false;
-    }
-
-    /**
-     * Traces every camera ray of a {@code width × height} picture of {@code camera}, one ray a
-     * pixel through its corner, at once, if this tracer found their hits before the render (the
-     * image of hits): answers the object each ray hits, as its place in the scene's list (−1:
-     * none), row by row, and the rays count as traced. Null, with nothing traced, if it cannot;
-     * by default it cannot. {@link ParallelRenderer} asks this when the shader's colours depend on
-     * the objects alone ({@link Shader#coloursOfObjects}).
-     */
-    default int[] traceEveryPixel(ICamera camera, int width, int height) {
-        return null;
     }
 
     /**

@@ -31,33 +31,18 @@ public final class FlatShader implements Shader {
     }
 
     /**
-     * A bundle that missed everything is the background throughout, and one whose rays all hit
-     * one object is its colour throughout, filled at once: most of the paper's picture is sky or
-     * the inside of a sphere, where every ray of a bundle has the same colour.
+     * A bundle that missed everything is the background throughout, filled at once: much of the
+     * paper's picture is sky, and colouring it ray by ray would be much of its render.
      */
     @Override
     public void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
         if (hits.missedAll()) {
             Arrays.fill(rgb, 0, count, colours[0]);
-        } else if (hits.everyRayHits() >= 0) {
-            Arrays.fill(rgb, 0, count, colours[hits.everyRayHits() + 1]);
         } else {
             for (int i = 0; i < count; i++) {
                 rgb[i] = colours[hits.index(i) + 1];
             }
         }
-    }
-
-    /** The paper's colours depend on the object alone, not on where it is hit. */
-    @Override
-    public boolean readsHitPoints() {
-        return false;
-    }
-
-    /** The colours depend on the objects alone: the table itself, a copy. */
-    @Override
-    public int[] coloursOfObjects() {
-        return colours.clone();
     }
 
     @Override

@@ -43,12 +43,6 @@ public final class ViewShader implements Shader {
         };
     }
 
-    /** The cost and the object need no hit point, so they count the tests of the picture's own render. */
-    @Override
-    public boolean readsHitPoints() {
-        return view == View.depth || view == View.normal;
-    }
-
     /** Views are numbers, never averaged: the view renders one ray per pixel. */
     @Override
     public Rgb colour(RayBundle rays, HitBuffer hits, int i) {

@@ -13,7 +13,7 @@ import rtd.geometry.Sphere;
 import rtd.image.Color;
 import rtd.math.Vector3f;
 
-/** The footprints of a sample of the objects, which the view grid and the image of hits measure first. */
+/** The footprints of a sample of the objects, which the view grid measures first to choose its cells. */
 @DisplayName("A sample of footprints")
 class ImageFootprintTest {
 

@@ -309,7 +309,7 @@ class LightGridTest {
         List<Light> lights = new ArrayList<>(mixed.lights());
         lights.add(new Light(new Vector3f(10, 80, 30), new Rgb(0.5f, 0.5f, 0.5f))); // one with a grid, surely
         Scene scene = new Scene(mixed.ambient(), mixed.camera(), mixed.objects(), lights);
-        Bvh bvh = Bvh.build(scene, 2);
+        Bvh bvh = Bvh.build(scene);
         LightGrids grids = LightGrids.build(scene, 80, 60, 1, 2);
         Function<Tracer, Shader> shaders = tracer -> new WhittedShader(scene, tracer);
 

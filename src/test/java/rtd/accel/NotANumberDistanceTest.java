@@ -29,7 +29,7 @@ class NotANumberDistanceTest {
         Ray ray = new Ray(new Vector3f(0.5f, 0.25f, 30), new Vector3f(0, 0, -1));
         Hit loop = SCENE.nearestHit(ray);
 
-        Hit tree = Bvh.build(SCENE, 1).newTracer().nearestHit(ray);
+        Hit tree = Bvh.build(SCENE).newTracer().nearestHit(ray);
 
         assertThat(loop.index()).isEqualTo(1);
         assertThat(tree.index()).isEqualTo(loop.index());
@@ -42,6 +42,6 @@ class NotANumberDistanceTest {
         Ray ray = new Ray(new Vector3f(0.5f, 0.25f, 30), new Vector3f(0, 0, -1));
 
         assertThat(alone.nearestHit(ray)).isNull();
-        assertThat(Bvh.build(alone, 1).newTracer().nearestHit(ray)).isNull();
+        assertThat(Bvh.build(alone).newTracer().nearestHit(ray)).isNull();
     }
 }

@@ -108,13 +108,6 @@ class PackedTestsTest {
         assertThat(PackedTests.size(PackedTests.OWN_TEST)).isZero();
     }
 
-    @Test
-    void everyWayToTestFitsTheBitsTheImageOfHitsKeepsItIn() {
-        assertThat(List.of(PackedTests.SPHERE, PackedTests.TRIANGLE, PackedTests.BOX, PackedTests.OWN_TEST))
-                .allSatisfy(test -> assertThat((int) test).isBetween(0, (1 << PackedTests.BITS) - 1))
-                .doesNotHaveDuplicates();
-    }
-
     /** From outside (towards the middle, more or less), from inside, and every fourth along an axis; random, so seldom grazing. */
     private static Ray randomRay(Random random, int i) {
         float spread = i % 3 == 0 ? 0.5f : 6;

@@ -18,7 +18,7 @@ import rtd.scene.Scene;
 class RecentBlockersTest {
 
     /** A row of 1,000 small spheres along x, at y = 0, z = 0, and the tracer that is asked. */
-    private final BvhTracer tracer = Bvh.build(row(), 1).newTracer();
+    private final BvhTracer tracer = Bvh.build(row()).newTracer();
 
     private static Scene row() {
         List<IGeometry> spheres = new ArrayList<>();

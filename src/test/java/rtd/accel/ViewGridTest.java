@@ -70,10 +70,10 @@ class ViewGridTest {
         return found;
     }
 
-    /** As the image of hits: a camera whose rays are too long for a triangle's narrower rounding gets the wider one. */
+    /** A camera whose rays are too long for a triangle's narrower rounding gets the wider one. */
     @Test
     void aCameraWhoseRaysAreTooLongForTheTrianglesNarrowerRoundingGetsTheWiderOne() {
-        Scene scene = HitImageTest.raysTooLongForANarrowerRounding();
+        Scene scene = raysTooLongForANarrowerRounding();
 
         List<Hit> hits = checkEveryPixel(scene, ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1), 1, 0);
 
@@ -98,7 +98,7 @@ class ViewGridTest {
     }
 
     @ParameterizedTest(name = "random scene {0}")
-    @ValueSource(longs = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12})
+    @ValueSource(longs = {1, 4, 7, 10, 13, 16})
     void forEveryPixelOfRandomScenesSeenByRandomCamerasOfBothKinds(long seed) {
         Scene mixed = MixedScenes.generate(seed, 100 + (int) (seed * 89 % 300));
         Random random = new Random(seed);
@@ -363,7 +363,7 @@ class ViewGridTest {
         Scene mixed = MixedScenes.shaded(MixedScenes.generate(seed, 250), seed);
         Scene scene = new Scene(mixed.ambient(), randomCamera(new Random(seed)), mixed.objects(), mixed.lights());
         ViewGrid grid = ViewGrid.build(scene, WIDTH, HEIGHT, 1, 2);
-        Bvh bvh = Bvh.build(scene, 2);
+        Bvh bvh = Bvh.build(scene);
         java.util.function.Function<rtd.render.Tracer, rtd.render.Shader> shaders =
                 tracer -> new rtd.shade.WhittedShader(scene, tracer);
         rtd.render.RenderResult both = rtd.render.ParallelRenderer.render(scene.camera(), () -> grid.newTracer(bvh.newTracer()),
@@ -385,5 +385,14 @@ class ViewGridTest {
             Ray ray = MixedScenes.ray(random, scene);
             assertSame(tracer.nearestHit(ray), scene.nearestHit(ray), "ray " + r + " " + ray);
         }
+    }
+
+    /** A triangle seen through a camera whose rays' directions are some 1e20 long. */
+    static Scene raysTooLongForANarrowerRounding() {
+        return new Scene(new Color(0, 0, 0),
+                new PerspectiveCamera(new Vector3f(333333344, 333333344, 1e9f), new Vector3f(666766656, -333433344, -1e9f),
+                        1.9e-17f),
+                List.of(new rtd.geometry.Triangle(new Vector3f(0, 0, 0), new Vector3f(1e9f, 0, 0), new Vector3f(0, 1e9f, 0),
+                        new Color(255, 0, 0), rtd.geometry.Material.DEFAULT)));
     }
 }

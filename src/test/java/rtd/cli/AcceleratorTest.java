@@ -29,41 +29,27 @@ class AcceleratorTest {
     }
 
     @Test
-    void autoTakesTheImageOfHitsFromAHundredThousandObjectsInFlatColoursWithOneRayAPixel() {
-        assertThat(Accelerator.choose(spheres(100_000, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.IMAGE);
-        assertThat(Accelerator.choose(spheres(99_999, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(1_000, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(999, false), Accel.auto, 1)).isEqualTo(Accelerator.Kind.BVH);
-        assertThat(Accelerator.choose(spheres(250_000, false), Accel.auto, 2)).as("samples")
-                .isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(250_000, true), Accel.auto, 1)).as("lights")
-                .isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+    void autoTakesTheViewGridWithTheLightGridsWhereThereAreLights() {
+        assertThat(Accelerator.choose(spheres(2, false), Accel.auto)).isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(1_000, false), Accel.auto)).isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(2, true), Accel.auto)).as("lights").isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+        assertThat(Accelerator.choose(spheres(0, false), Accel.auto)).as("nothing to build for")
+                .isEqualTo(Accelerator.Kind.LOOP);
     }
 
     @Test
-    void objectsDeepBehindEachOtherAreLeftToTheViewGridWhenBuilt() {
-        // 1,000 spheres of radius 0.4 on the points of a square grid, seen 20 pixels a unit: at
-        // 40 × 20 pixels (2 × 1 units) no pixel lies in more than one sphere's footprint, and the
-        // image of hits serves; 1,000 spheres of radius 30 one behind the other each fill the
-        // picture, 1,000 tests a pixel: the view grid.
-        assertThat(Accelerator.of(spheres(1_000, false), Accel.image, 40, 20, 1, 1).built().get()).startsWith("image of hits");
-        List<IGeometry> large = new ArrayList<>();
-        for (int i = 0; i < 1_000; i++) {
-            large.add(new Sphere(new Vector3f(20, 12, -i), 30, new Color(i % 256, 0, 0)));
-        }
-        Scene deep = new Scene(new Color(0, 0, 0), new OrthographicCamera(new Vector3f(20, 12, 50),
-                new Vector3f(0, 0, -1), 20), large);
-        assertThat(Accelerator.choose(deep, Accel.image, 1)).isEqualTo(Accelerator.Kind.IMAGE);
-        assertThat(Accelerator.of(deep, Accel.image, 40, 20, 1, 1).built().get()).startsWith("view grid");
+    void anyOtherChoiceIsKept() {
+        assertThat(Accelerator.choose(spheres(3, false), Accel.grid)).isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(3, true), Accel.grid)).isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+        assertThat(Accelerator.choose(spheres(3, true), Accel.bvh)).isEqualTo(Accelerator.Kind.BVH);
+        assertThat(Accelerator.choose(spheres(3, false), Accel.none)).isEqualTo(Accelerator.Kind.LOOP);
     }
 
     @Test
-    void imageTakesTheViewGridWhereItCannotServeAndAnyOtherChoiceIsKept() {
-        assertThat(Accelerator.choose(spheres(3, false), Accel.image, 1)).isEqualTo(Accelerator.Kind.IMAGE);
-        assertThat(Accelerator.choose(spheres(3, true), Accel.image, 1)).isEqualTo(Accelerator.Kind.IMAGE_AND_BVH);
-        assertThat(Accelerator.choose(spheres(3, false), Accel.image, 3)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(1_000, false), Accel.grid, 1)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(1_000, false), Accel.bvh, 1)).isEqualTo(Accelerator.Kind.BVH);
-        assertThat(Accelerator.choose(spheres(1_000, false), Accel.none, 1)).isEqualTo(Accelerator.Kind.LOOP);
+    void statsNameWhatWasBuilt() {
+        assertThat(Accelerator.of(spheres(3, false), Accel.bvh, 40, 20, 1, 1).built().get()).startsWith("BVH of ");
+        assertThat(Accelerator.of(spheres(3, false), Accel.grid, 40, 20, 1, 1).built().get()).startsWith("view grid of ");
+        assertThat(Accelerator.of(spheres(3, true), Accel.grid, 40, 20, 1, 1).built().get())
+                .startsWith("view grid of ").contains("light grid").contains("and BVH of ");
     }
 }

@@ -203,10 +203,10 @@ class CommandLineTest {
         assertThat(Cli.run(EXAMPLE.toString(), "--threads", "0").exitCode()).isEqualTo(2);
         Run accel = Cli.run(EXAMPLE.toString(), "--accel", "fast");
         assertThat(accel.exitCode()).isEqualTo(2);
-        assertThat(accel.err()).contains("expected one of [auto, none, bvh, grid, image]");
+        assertThat(accel.err()).contains("expected one of [auto, none, bvh, grid]");
         byte[] reference = null;
         for (String[] choice : new String[][] {{"1", "none"}, {"64", "none"}, {"3", "bvh"}, {"2", "auto"}, {"2", "grid"},
-                {"1", "image"}, {"2", "image"}}) {
+                {"1", "grid"}}) {
             Path out = dir.resolve("t" + choice[0] + choice[1] + ".png");
             Run run = Cli.run(EXAMPLE.toString(), "-o", out.toString(), "--width", "96", "--height", "54",
                     "--threads", choice[0], "--accel", choice[1]);
@@ -239,7 +239,7 @@ class CommandLineTest {
     void autoTakesTheViewGridForALargeSceneInFlatColoursAndDrawsWhatTheBvhDraws() throws IOException {
         StringBuilder text = new StringBuilder("orthographic_camera:(0|0|20):(0|0|-1):(50)\n");
         java.util.Random random = new java.util.Random(5);
-        for (int i = 0; i < Accelerator.GRID_THRESHOLD; i++) {
+        for (int i = 0; i < 1_000; i++) {
             text.append(String.format(java.util.Locale.ROOT, "sphere:(%.3f|%.3f|%.3f):(%.3f):(%d|%d|%d)%n",
                     random.nextFloat() * 4 - 2, random.nextFloat() * 2 - 1, random.nextFloat() * 4 - 2,
                     0.01 + random.nextFloat() * 0.05, i % 256, i / 256 % 256, 99));
@@ -280,7 +280,7 @@ class CommandLineTest {
         Path one = Files.writeString(dir.resolve("one.txt"), "orthographic_camera:(0|0|20):(0|0|-1):(50)\n"
                 + "sphere:(0|0|0):(1):(255|0|0)\n");
         Run run = Cli.run(one.toString(), "-o", dir.resolve("one.png").toString(), "--stats", "--width", "64",
-                "--height", "36");
+                "--height", "36", "--accel", "bvh");
         assertThat(run.exitCode()).isZero();
         assertThat(run.err()).contains(" 1 object\n").contains("BVH of 1 node\n")
                 .containsPattern("total +[0-9.]+ s  from reading the scene to the written picture; the JVM's start is not "
@@ -309,12 +309,12 @@ class CommandLineTest {
     }
 
     @Test
-    void autoUsesTheBvhForAnySceneWithObjectsAndItsSquaresSkipMostTests() throws IOException {
+    void autoUsesTheViewGridForAnySceneWithObjectsAndItsCellsSkipMostTests() throws IOException {
         Run paper = Cli.run(EXAMPLE.toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--width", "480",
                 "--height", "270");
         assertThat(paper.exitCode()).isZero();
-        assertThat(paper.err()).contains("2 objects").contains("BVH of 1 node\n");
-        // Most squares of the paper's example reach neither sphere: far fewer tests than the loop's 2.
+        assertThat(paper.err()).contains("2 objects").contains("view grid of");
+        // Most cells of the paper's example hold neither sphere: far fewer tests than the loop's 2.
         double testsPerRay = Double.parseDouble(paper.err().replaceAll("(?s).*per ray: ([0-9.]+) intersection.*", "$1"));
         assertThat(testsPerRay).isLessThan(1.0);
 

@@ -41,25 +41,6 @@ class RenderModesTest {
         assertThat(render("bvh", "--accel", "bvh")).isEqualTo(paper);
         assertThat(render("auto")).isEqualTo(paper);
         assertThat(render("grid", "--accel", "grid")).isEqualTo(paper);
-        assertThat(render("image", "--accel", "image")).isEqualTo(paper);
-    }
-
-    @Test
-    void statsOfTheImageOfHitsCountTheTestsOfEachKindOfObject() throws IOException {
-        // 200 × 100 pixels, 10 a unit: each sphere's footprint is 21 × 21 pixels (the box ±1.002),
-        // the box's 11 × 21 (x from −3 to −2, y from −1 to 1), the triangle's 21 × 11; the plane
-        // is tested on every pixel: 2 · 441 + 231 + 231 + 20,000 = 21,344 tests for 20,000 rays.
-        Path scene = Files.writeString(dir.resolve("mixed.txt"), MIXED);
-        Run run = Cli.run(scene.toString(), "-o", dir.resolve("m.png").toString(), "--width", "200", "--height", "100",
-                "--accel", "image", "--stats");
-        assertThat(run.exitCode()).as(run.err()).isZero();
-        assertThat(run.err()).contains("image of hits in 8 tiles of 64 × 64 pixels, 5 entries");
-        Path lit = Files.writeString(dir.resolve("lit.txt"), MIXED + "light:(0|0|30):(255|255|255)\n");
-        Run shaded = Cli.run(lit.toString(), "-o", dir.resolve("l.png").toString(), "--width", "200", "--height", "100",
-                "--accel", "image", "--stats");
-        assertThat(shaded.exitCode()).as(shaded.err()).isZero();
-        assertThat(shaded.err()).contains("20,000 answered by the image of hits, ");
-        assertThat(run.err()).contains("per ray: 1.07 intersection tests (0.01 box, 1.00 plane, 0.04 sphere, 0.01 triangle)");
     }
 
     @Test

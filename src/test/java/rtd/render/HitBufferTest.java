@@ -35,24 +35,6 @@ class HitBufferTest {
     }
 
     @Test
-    void afterEveryRayHitOneObjectEachEntryReadsAsThatObjectWithUnknownTAndDistance() {
-        HitBuffer hits = new HitBuffer(8);
-        hits.readHitPoints(false);
-        hits.setMisses(8);
-
-        hits.setHits(4, 5);
-
-        assertThat(hits.everyRayHits()).isEqualTo(4);
-        assertThat(hits.missedAll()).isFalse();
-        for (int i = 0; i < 5; i++) {
-            assertThat(hits.index(i)).isEqualTo(4);
-            assertThat(hits.t(i)).isNaN();
-            assertThat(hits.distance(i)).isNaN();
-            assertThat(hits.tests(i)).isZero();
-        }
-    }
-
-    @Test
     void oneRaySetAfterAllMissedLeavesTheOthersMisses() {
         HitBuffer hits = new HitBuffer(4);
         for (int i = 0; i < 4; i++) {
@@ -73,14 +55,13 @@ class HitBufferTest {
     }
 
     @Test
-    void testsCountedAfterOneObjectWasHitThroughoutKeepTheOthersAtNone() {
+    void testsCountedAfterEveryRayMissedKeepTheOthersAtNone() {
         HitBuffer hits = new HitBuffer(3);
-        hits.readHitPoints(false);
-        hits.setHits(1, 3);
+        hits.setMisses(3);
 
         hits.setTests(0, 2);
 
         assertThat(new int[] {hits.tests(0), hits.tests(1), hits.tests(2)}).containsExactly(2, 0, 0);
-        assertThat(hits.index(2)).isEqualTo(1);
+        assertThat(hits.index(2)).isEqualTo(-1);
     }
 }

@@ -81,11 +81,12 @@ public class ShadowBenchmark {
         List<Float> lengths = new ArrayList<>();
         for (int y = 0; y < BenchScenes.HEIGHT; y += 4) {
             for (int x = 0; x < BenchScenes.WIDTH; x += 4) {
-                Hit hit = tracer.nearestHit(camera.generateRay(x, y, BenchScenes.WIDTH, BenchScenes.HEIGHT));
+                Ray eye = camera.generateRay(x, y, BenchScenes.WIDTH, BenchScenes.HEIGHT);
+                Hit hit = tracer.nearestHit(eye);
                 if (hit == null) {
                     continue;
                 }
-                Vector3f over = hit.point().add(hit.normal().multiply(1e-3f));
+                Vector3f over = hit.point().add(hit.normal(eye.direction()).multiply(1e-3f));
                 for (Light light : scene.lights()) {
                     Vector3f toLight = light.position().subtract(over);
                     made.add(new Ray(over, toLight));
