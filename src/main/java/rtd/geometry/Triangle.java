@@ -125,15 +125,6 @@ public final class Triangle implements IGeometry {
     }
 
     /**
-     * {@link #intersect}'s test on the ray O + t·D given as six numbers: t of the hit, or NaN.
-     * For the image of hits, which tests a mesh's triangles where their numbers lie, side by side
-     * in the mesh's arrays, instead of copying them (a million triangles' numbers are 108 MB).
-     */
-    public float hit(float ox, float oy, float oz, float dx, float dy, float dz) {
-        return RayTriangle.hit(v, at, ox, oy, oz, dx, dy, dz, TestObserver.NONE);
-    }
-
-    /**
      * {@code normalize(n)}, or for a smooth triangle the corners' normals blended by the point's
      * barycentric weights (each corner's weight is the area on the far side of it), normalised.
      */
