@@ -14,6 +14,7 @@ import java.util.stream.Collectors;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
 import rtd.io.ImageFormat;
+import rtd.view.View;
 
 /**
  * Where each scene's picture goes and in which format, all checked before any rendering: a mistake on the command
@@ -69,6 +70,19 @@ final class JobPlanner {
                 "the output '" + target.spelt() + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("")
                         + "', a format rtd cannot write; give it one of " + ImageFormat.writableExtensions().stream()
                                 .map(e -> "." + e).collect(Collectors.joining(", "))));
+    }
+
+    /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
+    static OutputTarget viewTarget(View view, RenderOptions options, CommandLine commandLine) throws FileError {
+        Path byDefault = defaultOutput(options.scene(), "-" + view);
+        if (OutputTarget.DASH.equals(options.output())) {
+            throw new ParameterException(commandLine, "--view writes its picture to a file; -o - (standard output) "
+                    + "is for the rendered picture only: give a file name, such as " + byDefault.getFileName());
+        }
+        OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
+                "-o", commandLine);
+        format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
+        return target;
     }
 
     /** Where the picture goes: {@code -o}, or the scene's name with {@code .png}. */

@@ -1,7 +1,7 @@
 package rtd.cli;
 
-import static rtd.cli.SceneWarnings.number;
-import static rtd.cli.SceneWarnings.point;
+import static rtd.scene.SceneWarnings.number;
+import static rtd.scene.SceneWarnings.point;
 
 import java.util.List;
 import rtd.camera.ICamera;

@@ -9,6 +9,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.image.Rgb;
 import rtd.io.ImageFormat;
@@ -22,13 +23,18 @@ import rtd.render.Shader;
 import rtd.render.Tracer;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
+import rtd.scene.SceneWarnings;
 import rtd.shade.FlatShader;
 import rtd.shade.WhittedShader;
+import rtd.view.View;
+import rtd.view.ViewPicture;
+import rtd.view.ViewShader;
 
 /**
  * One scene from file to picture: read, write the {@code --export-pov} file if asked, build what {@code --accel}
  * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
- * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete.
+ * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete. Also
+ * {@code --view}, which draws what the rays did instead.
  */
 final class SceneRun {
 
@@ -69,8 +75,8 @@ final class SceneRun {
                     options.height(), options.samples(), options.threads());
             stats.endPhase("build");
 
-            SceneWarnings.of(source.name(), scene, options.width(), options.height(), !options.paper())
-                    .forEach(display::message); // --paper draws no light, and says so
+            SceneWarnings.of(scene, options.width(), options.height(), !options.paper()) // --paper: no lights
+                    .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
             RenderResult result = render(scene, accelerator, display);
             stats.endPhase("render");
             if (!hitSomething(scene, accelerator, result.image())) {
@@ -87,6 +93,39 @@ final class SceneRun {
                     options.paper() ? 1 : options.threads(), target.spelt()) : "";
         }
         err.print(report); // once the progress line is gone
+    }
+
+    /**
+     * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
+     * paper's loop or what {@code --accel} chose, all threads) and writes it, with its scale on standard error; writes
+     * {@code view} of {@code scene} to {@code target}; its exit code, 0 or 1.
+     */
+    static int view(Scene scene, View view, OutputTarget target, RenderOptions options, StatsReport stats,
+            PrintWriter err, CommandLine commandLine) {
+        if (options.samples() > 1) {
+            err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
+        }
+        Accelerator accelerator = options.paper() ? null
+                : Accelerator.of(scene, options.accel(), options.width(), options.height(), 1, options.threads());
+        stats.endPhase("build");
+        ViewShader shader = new ViewShader(view, scene.objects());
+        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> shader, options.width(),
+                options.height(), 1, options.threads(), new RenderProgress());
+        stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
+        ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
+        try {
+            target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
+        } catch (FileError e) {
+            err.println("rtd: " + e.getMessage());
+            return 1;
+        }
+        err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
+        stats.endPhase("write");
+        if (options.stats()) { // a view runs on every thread, also the paper's loop
+            err.print(stats.format(scene, accelerator, raw.work(), options.threads(), target.spelt()));
+            err.flush();
+        }
+        return 0;
     }
 
     /**
@@ -152,9 +191,13 @@ final class SceneRun {
             return false;
         }
         Shader hitMarks = (rays, hits, i) -> hits.index(i) < 0 ? Rgb.BLACK : new Rgb(1, 1, 1);
-        Supplier<Tracer> tracers = accelerator != null ? accelerator.tracers() : () -> new LinearTracer(scene);
-        Picture marks = ParallelRenderer.render(scene.camera(), tracers, tracer -> hitMarks, options.width(),
+        Picture marks = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> hitMarks, options.width(),
                 options.height(), options.threads(), new RenderProgress()).image();
         return NothingInView.showsSomething(marks, 0);
+    }
+
+    /** The tracers of {@code accelerator}, or of the paper's loop where it is null. */
+    private static Supplier<Tracer> tracers(Scene scene, Accelerator accelerator) {
+        return accelerator == null ? () -> new LinearTracer(scene) : accelerator.tracers();
     }
 }

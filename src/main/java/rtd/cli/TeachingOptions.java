@@ -76,7 +76,7 @@ public final class TeachingOptions {
             refused = e;
         }
         try {
-            viewTarget = pixel == null ? ViewRun.plan(view, options, commandLine) : null;
+            viewTarget = pixel == null ? JobPlanner.viewTarget(view, options, commandLine) : null;
         } catch (FileError e) {
             refused = refused == null ? e : refused;
         }
@@ -108,7 +108,7 @@ public final class TeachingOptions {
             return 1;
         }
         if (pixel == null) {
-            return ViewRun.run(scene, view, viewTarget, options, stats, err, commandLine);
+            return SceneRun.view(scene, view, viewTarget, options, stats, err, commandLine);
         }
         if (options.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
             err.println("rtd: note: --paper draws as the paper does, in flat colours: the scene's lights are not used, "
