@@ -189,10 +189,8 @@ public final class RtdCommand implements Callable<Integer> {
                 exitCode = Math.max(exitCode, run(job, options, writerReady, export, err));
             }
             return exitCode;
-        } catch (SceneException e) {
-            return failed(err, e, e.report());
-        } catch (FileError e) {
-            return failed(err, e, "rtd: " + e.getMessage() + "\n");
+        } catch (SceneException | FileError e) {
+            return failed(err, e);
         } finally {
             err.flush();
         }
@@ -211,10 +209,8 @@ public final class RtdCommand implements Callable<Integer> {
             }
             new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
             return 0;
-        } catch (SceneException e) {
-            return failed(err, e, e.report());
-        } catch (FileError e) {
-            return failed(err, e, "rtd: " + e.getMessage() + "\n");
+        } catch (SceneException | FileError e) {
+            return failed(err, e);
         } catch (OutOfMemoryError e) {
             err.println(Memory.outOfMemory(Runtime.getRuntime().maxMemory(), Memory.physical()));
             return 1;
@@ -223,9 +219,9 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    /** Prints {@code report}, and with {@code --debug} the stack trace of {@code e}; exit code 1. */
-    private int failed(PrintWriter err, Exception e, String report) {
-        err.print(report);
+    /** Prints the report of {@code e}, and with {@code --debug} its stack trace; exit code 1. */
+    private int failed(PrintWriter err, Exception e) {
+        err.print(e instanceof SceneException scene ? scene.report() : "rtd: " + e.getMessage() + "\n");
         if (debug) {
             e.printStackTrace(err);
         }

@@ -57,16 +57,7 @@ final class SceneRun {
         String report;
         try (ProgressDisplay display = ProgressDisplay.start(options.progress(), err)) {
             StatsReport stats = new StatsReport();
-            display.show(ProgressDisplay.Phase.of("reading " + source.name()));
-            List<SceneError> warnings = new ArrayList<>();
-            Scene scene = options.scale().of(source.read(streams, warnings));
-            warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
-            stats.endPhase("parse");
-            if (export != null) { // planned with the picture's file, from this one read of the scene
-                display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
-                display.message(PovExportRun.write(scene, export, options.width(), options.height()));
-                stats.endPhase("export");
-            }
+            Scene scene = read(source, streams, options, export, display, stats);
 
             Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP
                     : Accelerator.choose(scene, options.accel(), options.samples());
@@ -96,12 +87,31 @@ final class SceneRun {
     }
 
     /**
+     * Reads {@code source} at the size {@code options} ask, its warnings shown on {@code display}, and writes it to
+     * {@code export} (or null) for POV-Ray from this one read; the phases "parse" and "export" timed in {@code stats}.
+     */
+    static Scene read(SceneSource source, StandardStreams streams, RenderOptions options, OutputTarget export,
+            ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
+        display.show(ProgressDisplay.Phase.of("reading " + source.name()));
+        List<SceneError> warnings = new ArrayList<>();
+        Scene scene = options.scale().of(source.read(streams, warnings));
+        warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
+        stats.endPhase("parse");
+        if (export != null) {
+            display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
+            display.message(PovExportRun.write(scene, export, options.width(), options.height()));
+            stats.endPhase("export");
+        }
+        return scene;
+    }
+
+    /**
      * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
      * paper's loop or what {@code --accel} chose, all threads) and writes it, with its scale on standard error; writes
      * {@code view} of {@code scene} to {@code target}; its exit code, 0 or 1.
      */
     static int view(Scene scene, View view, OutputTarget target, RenderOptions options, StatsReport stats,
-            PrintWriter err, CommandLine commandLine) {
+            PrintWriter err, CommandLine commandLine) throws FileError {
         if (options.samples() > 1) {
             err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
         }
@@ -113,12 +123,7 @@ final class SceneRun {
                 options.height(), 1, options.threads(), new RenderProgress());
         stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
         ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
-        try {
-            target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
-        } catch (FileError e) {
-            err.println("rtd: " + e.getMessage());
-            return 1;
-        }
+        target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
         err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
         stats.endPhase("write");
         if (options.stats()) { // a view runs on every thread, also the paper's loop
