@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Collectors;
 import picocli.CommandLine;
@@ -17,8 +18,9 @@ import rtd.io.ImageFormat;
 import rtd.view.View;
 
 /**
- * Where each scene's picture goes and in which format, all checked before any rendering: a mistake on the command
- * line stops the run before any work, and a long render does not end in a failed write.
+ * Where each scene's picture goes and in which format, and where {@code --view} and {@code --export-pov} write, all
+ * checked before any rendering: a mistake on the command line stops the run before any work, and a long render does
+ * not end in a failed write.
  */
 final class JobPlanner {
 
@@ -83,6 +85,37 @@ final class JobPlanner {
                 "-o", commandLine);
         format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
         return target;
+    }
+
+    /**
+     * Where {@code --export-pov FILE.pov} goes, by the rules of {@code -o}, and only to a name ending in {@code .pov},
+     * also behind a link, so that a slip cannot replace a mesh, a scene or a picture; a misuse or a {@link FileError}.
+     */
+    static OutputTarget exportTarget(Path file, Path scene, CommandLine commandLine) throws FileError {
+        if (file.toString().equals("-")) {
+            throw new ParameterException(commandLine, "--export-pov writes a file, not standard output ('-'); give a "
+                    + "name that ends in .pov, such as scene.pov");
+        }
+        if (file.getFileName() != null && file.getFileName().toString().indexOf('"') >= 0) { // the folder is cd's
+            throw new ParameterException(commandLine, "--export-pov '" + file + "': a name with a double quote cannot "
+                    + "be given to POV-Ray; choose one without");
+        }
+        if (!endsInPov(file)) {
+            String name = file.getFileName() == null ? "" : file.getFileName().toString();
+            String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
+            throw new ParameterException(commandLine, "--export-pov writes a POV-Ray scene, and its name must end in "
+                    + ".pov; '" + file + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
+        }
+        OutputTarget target = OutputTarget.of(file, scene, "--export-pov", commandLine);
+        if (target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file())) {
+            throw new ParameterException(commandLine, "'" + file + "' leads to '" + target.file() + "', whose name does "
+                    + "not end in .pov; --export-pov replaces only a POV-Ray scene");
+        }
+        return target;
+    }
+
+    private static boolean endsInPov(Path file) {
+        return file.getFileName() != null && file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pov");
     }
 
     /** Where the picture goes: {@code -o}, or the scene's name with {@code .png}. */

@@ -1,11 +1,19 @@
 package rtd.cli;
 
 import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -15,6 +23,7 @@ import rtd.image.Rgb;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
+import rtd.pov.PovScene;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
@@ -99,10 +108,54 @@ final class SceneRun {
         stats.endPhase("parse");
         if (export != null) {
             display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
-            display.message(PovExportRun.write(scene, export, options.width(), options.height()));
+            display.message(exportPov(scene, export, options.width(), options.height()));
             stats.endPhase("export");
         }
         return scene;
+    }
+
+    /**
+     * Writes {@code scene} at {@code width × height} for POV-Ray ({@link PovScene}) to {@code target}, and answers the
+     * lines that say how to render it.
+     */
+    static String exportPov(Scene scene, OutputTarget target, int width, int height) throws FileError {
+        Path file = target.spelt();
+        String name = file.getFileName().toString();
+        String text;
+        try {
+            text = PovScene.of(scene, width, height, name);
+        } catch (IllegalArgumentException e) {
+            throw new FileError("cannot export to POV-Ray: " + e.getMessage());
+        }
+        try {
+            if (target.kind() == OutputTarget.Kind.STREAM) {
+                try (OutputStream out = Files.newOutputStream(target.file(), StandardOpenOption.WRITE)) {
+                    out.write(text.getBytes(StandardCharsets.UTF_8));
+                }
+            } else {
+                replaceWithText(target.file(), text);
+            }
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + file + "'", e);
+        }
+        String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
+        return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"
+                + "  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
+                + PovScene.command(name, png, width, height);
+    }
+
+    /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */
+    private static void replaceWithText(Path file, String text) throws IOException {
+        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
+        Path temporary = file.toAbsolutePath().getParent().resolve("." + file.getFileName() + "."
+                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
+        try {
+            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
+                    StandardOpenOption.WRITE);
+            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
+        } finally {
+            Files.deleteIfExists(temporary);
+        }
     }
 
     /**

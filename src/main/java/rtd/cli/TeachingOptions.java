@@ -104,7 +104,7 @@ public final class TeachingOptions {
 
     /** Where {@code --export-pov} goes, planned before anything is read or written; null without it. */
     OutputTarget planExport(RenderOptions options, CommandLine commandLine) throws FileError {
-        return exportPov == null ? null : PovExportRun.plan(exportPov, options.scene(), commandLine);
+        return exportPov == null ? null : JobPlanner.exportTarget(exportPov, options.scene(), commandLine);
     }
 
     /** The pixel of {@code --explain X,Y} in the picture; a misuse (exit 2) that names the image's size if none. */
