@@ -33,11 +33,12 @@ final class ProgressDisplay implements AutoCloseable {
     private boolean shown;
     private boolean hooked;
     private int columns;
-    private Phase timed;
-    private Line line;
 
-    /** What the run is doing: its name, the fraction done (NaN if unknown), and the rays traced (negative: none). */
-    record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos) {
+    /**
+     * What the run is doing: its name, the fraction done (NaN if unknown), the rays traced (negative: none), and the
+     * words of its line.
+     */
+    record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos, Line line) {
 
         /** A phase whose progress is unknown, such as reading the scene. */
         static Phase of(String name) {
@@ -46,12 +47,12 @@ final class ProgressDisplay implements AutoCloseable {
 
         /** A phase that knows the fraction it has done. */
         static Phase counted(String name, DoubleSupplier fraction) {
-            return new Phase(name, fraction, () -> -1, System.nanoTime());
+            return new Phase(name, fraction, () -> -1, System.nanoTime(), new Line());
         }
 
         /** Rendering, with the fraction done and the rays traced so far. */
         static Phase rendering(DoubleSupplier fraction, LongSupplier rays) {
-            return new Phase("rendering", fraction, rays, System.nanoTime());
+            return new Phase("rendering", fraction, rays, System.nanoTime(), new Line());
         }
     }
 
@@ -101,19 +102,12 @@ final class ProgressDisplay implements AutoCloseable {
             if (!hooked) {
                 hooked = addHook();
             }
-            err.print("\r" + text(phase, System.nanoTime()) + "\033[K");
+            Phase now = phase;
+            err.print("\r" + now.line().update(now.name(), (System.nanoTime() - now.startNanos()) / 1e9,
+                    now.fraction().getAsDouble(), now.rays().getAsLong(), columns) + "\033[K");
             err.flush();
             shown = true;
         }
-    }
-
-    private String text(Phase current, long now) {
-        if (current != timed) {
-            timed = current;
-            line = new Line();
-        }
-        return line.update(current.name(), (now - current.startNanos()) / 1e9, current.fraction().getAsDouble(),
-                current.rays().getAsLong(), columns);
     }
 
     private boolean addHook() {
@@ -147,14 +141,9 @@ final class ProgressDisplay implements AutoCloseable {
     /** Stops the display and clears its line. */
     @Override
     public void close() {
-        clear();
+        clear(); // under the lock that draw adds the hook with: no hook comes after it
         thread.interrupt();
-        boolean remove;
-        synchronized (this) {
-            remove = hooked;
-            hooked = false;
-        }
-        if (remove) {
+        if (hooked) {
             try {
                 Runtime.getRuntime().removeShutdownHook(clearOnExit);
             } catch (IllegalStateException e) {
