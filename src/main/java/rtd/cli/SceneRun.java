@@ -2,7 +2,6 @@ package rtd.cli;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -129,9 +128,7 @@ final class SceneRun {
         }
         try {
             if (target.kind() == OutputTarget.Kind.STREAM) {
-                try (OutputStream out = Files.newOutputStream(target.file(), StandardOpenOption.WRITE)) {
-                    out.write(text.getBytes(StandardCharsets.UTF_8));
-                }
+                Files.writeString(target.file(), text, StandardCharsets.UTF_8, StandardOpenOption.WRITE);
             } else {
                 replaceWithText(target.file(), text);
             }
@@ -160,8 +157,8 @@ final class SceneRun {
 
     /**
      * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
-     * paper's loop or what {@code --accel} chose, all threads) and writes it, with its scale on standard error; writes
-     * {@code view} of {@code scene} to {@code target}; its exit code, 0 or 1.
+     * paper's loop or what {@code --accel} chose, all threads), written to {@code target} as a picture is, with its
+     * scale on standard error; the exit code, 0.
      */
     static int view(Scene scene, View view, OutputTarget target, RenderOptions options, StatsReport stats,
             PrintWriter err, CommandLine commandLine) throws FileError {
@@ -172,8 +169,8 @@ final class SceneRun {
                 : Accelerator.of(scene, options.accel(), options.width(), options.height(), 1, options.threads());
         stats.endPhase("build");
         ViewShader shader = new ViewShader(view, scene.objects());
-        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> shader, options.width(),
-                options.height(), 1, options.threads(), new RenderProgress());
+        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> shader,
+                options.width(), options.height(), 1, options.threads(), new RenderProgress());
         stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
         ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
         target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
