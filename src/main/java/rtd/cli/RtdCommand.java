@@ -121,8 +121,8 @@ public final class RtdCommand implements Callable<Integer> {
     /** The command line of rtd, with its error handlers, writing in the terminal's encoding, ready to {@code execute}. */
     public static CommandLine commandLine() {
         CommandLine commandLine = commandLine(StandardStreams.system());
-        commandLine.setOut(AsciiFallbackWriter.printWriter(System.out, AsciiFallbackWriter.encodingOf("stdout")));
-        commandLine.setErr(AsciiFallbackWriter.printWriter(System.err, AsciiFallbackWriter.encodingOf("stderr")));
+        commandLine.setOut(StandardStreams.printWriter(System.out, StandardStreams.encodingOf("stdout")));
+        commandLine.setErr(StandardStreams.printWriter(System.err, StandardStreams.encodingOf("stderr")));
         return commandLine;
     }
 
