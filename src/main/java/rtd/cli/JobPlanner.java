@@ -39,13 +39,22 @@ final class JobPlanner {
         this.commandLine = commandLine;
     }
 
-    /** Each scene's job, in order. */
-    List<Job> jobs(List<SceneSource> sources) {
+    /** Each scene's job, in order; one picture name cannot serve several scenes. */
+    List<Job> jobs(List<Path> scenes) {
+        List<SceneSource> sources = scenes.stream().map(SceneSource::of).toList();
+        if (output != null && sources.size() > 1) {
+            throw misuse("-o names one picture, but " + sources.size() + " scenes were given; leave -o out to write "
+                    + "each picture beside its scene");
+        }
+        if (output == null && sources.stream().anyMatch(SceneSource::stdin)) {
+            throw misuse("the scene '-' comes from standard input, which gives no name for the picture; "
+                    + "name it with -o, such as -o out.png, or -o - for standard output");
+        }
         List<Job> jobs = new ArrayList<>();
         Map<Path, SceneSource> writers = new HashMap<>();
-        Map<Object, SceneSource> scenes = new HashMap<>();
+        Map<Object, SceneSource> files = new HashMap<>();
         for (SceneSource source : sources) {
-            if (!source.stdin() && scenes.putIfAbsent(fileKey(source.path()), source) != null) {
+            if (!source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null) {
                 throw misuse("the scene '" + source.name() + "' is given twice (or a link to it is); give it once");
             }
             try {

@@ -171,7 +171,7 @@ public final class RtdCommand implements Callable<Integer> {
             if (taught != null) {
                 return taught;
             }
-            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
+            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenePaths);
             RenderOptions options = checkedOptions();
             Memory.checkImageFits(spec.commandLine(), options.width(), options.height(), scale); // before any write
             OutputTarget export = teaching.planExport(options, spec.commandLine()); // beside the picture: one scene
@@ -226,20 +226,6 @@ public final class RtdCommand implements Callable<Integer> {
             e.printStackTrace(err);
         }
         return 1;
-    }
-
-    /** The scenes, checked against {@code -o}: one picture name cannot serve several scenes. */
-    private List<SceneSource> scenes() {
-        List<SceneSource> sources = scenePaths.stream().map(SceneSource::of).toList();
-        if (output != null && sources.size() > 1) {
-            throw misuse("-o names one picture, but " + sources.size() + " scenes were given; leave -o out to write "
-                    + "each picture beside its scene");
-        }
-        if (output == null && sources.stream().anyMatch(SceneSource::stdin)) {
-            throw misuse("the scene '-' comes from standard input, which gives no name for the picture; "
-                    + "name it with -o, such as -o out.png, or -o - for standard output");
-        }
-        return sources;
     }
 
     /** The options, with the sizes after {@code --scale} at least one pixel (the teaching options check their own). */
