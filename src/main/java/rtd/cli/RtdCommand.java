@@ -240,13 +240,11 @@ public final class RtdCommand implements Callable<Integer> {
     private RenderOptions checkedOptions() {
         long scaledWidth = scale.times(width);
         long scaledHeight = scale.times(height);
-        if (scaledWidth < 1 || scaledHeight < 1) {
-            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; a picture needs "
-                    + "at least one pixel each way", scale, width, height, scaledWidth, scaledHeight));
-        }
-        if (scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE) {
-            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; Java images hold "
-                    + "at most %,d", scale, width, height, scaledWidth, scaledHeight, Integer.MAX_VALUE - 8));
+        boolean empty = scaledWidth < 1 || scaledHeight < 1;
+        if (empty || scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE) {
+            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; ", scale, width,
+                    height, scaledWidth, scaledHeight) + (empty ? "a picture needs at least one pixel each way"
+                    : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
         }
         return options();
     }
