@@ -9,15 +9,18 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Collectors;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
 import rtd.io.ImageFormat;
+import rtd.view.View;
 
 /**
- * Where each scene's picture goes and in which format, all checked before any rendering: a mistake on the command
- * line stops the run before any work, and a long render does not end in a failed write.
+ * Where each scene's picture goes and in which format, and where {@code --view} and {@code --export-pov} write, all
+ * checked before any rendering: a mistake on the command line stops the run before any work, and a long render does
+ * not end in a failed write.
  */
 final class JobPlanner {
 
@@ -36,13 +39,22 @@ final class JobPlanner {
         this.commandLine = commandLine;
     }
 
-    /** Each scene's job, in order. */
-    List<Job> jobs(List<SceneSource> sources) {
+    /** Each scene's job, in order; one picture name cannot serve several scenes. */
+    List<Job> jobs(List<Path> scenes) {
+        List<SceneSource> sources = scenes.stream().map(SceneSource::of).toList();
+        if (output != null && sources.size() > 1) {
+            throw misuse("-o names one picture, but " + sources.size() + " scenes were given; leave -o out to write "
+                    + "each picture beside its scene");
+        }
+        if (output == null && sources.stream().anyMatch(SceneSource::stdin)) {
+            throw misuse("the scene '-' comes from standard input, which gives no name for the picture; "
+                    + "name it with -o, such as -o out.png, or -o - for standard output");
+        }
         List<Job> jobs = new ArrayList<>();
         Map<Path, SceneSource> writers = new HashMap<>();
-        Map<Object, SceneSource> scenes = new HashMap<>();
+        Map<Object, SceneSource> files = new HashMap<>();
         for (SceneSource source : sources) {
-            if (!source.stdin() && scenes.putIfAbsent(fileKey(source.path()), source) != null) {
+            if (!source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null) {
                 throw misuse("the scene '" + source.name() + "' is given twice (or a link to it is); give it once");
             }
             try {
@@ -69,6 +81,50 @@ final class JobPlanner {
                 "the output '" + target.spelt() + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("")
                         + "', a format rtd cannot write; give it one of " + ImageFormat.writableExtensions().stream()
                                 .map(e -> "." + e).collect(Collectors.joining(", "))));
+    }
+
+    /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
+    static OutputTarget viewTarget(View view, RenderOptions options, CommandLine commandLine) throws FileError {
+        Path byDefault = defaultOutput(options.scene(), "-" + view);
+        if (OutputTarget.DASH.equals(options.output())) {
+            throw new ParameterException(commandLine, "--view writes its picture to a file; -o - (standard output) "
+                    + "is for the rendered picture only: give a file name, such as " + byDefault.getFileName());
+        }
+        OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
+                "-o", commandLine);
+        format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
+        return target;
+    }
+
+    /**
+     * Where {@code --export-pov FILE.pov} goes, by the rules of {@code -o}, and only to a name ending in {@code .pov},
+     * also behind a link, so that a slip cannot replace a mesh, a scene or a picture; a misuse or a {@link FileError}.
+     */
+    static OutputTarget exportTarget(Path file, Path scene, CommandLine commandLine) throws FileError {
+        if (file.toString().equals("-")) {
+            throw new ParameterException(commandLine, "--export-pov writes a file, not standard output ('-'); give a "
+                    + "name that ends in .pov, such as scene.pov");
+        }
+        if (file.getFileName() != null && file.getFileName().toString().indexOf('"') >= 0) { // the folder is cd's
+            throw new ParameterException(commandLine, "--export-pov '" + file + "': a name with a double quote cannot "
+                    + "be given to POV-Ray; choose one without");
+        }
+        if (!endsInPov(file)) {
+            String name = file.getFileName() == null ? "" : file.getFileName().toString();
+            String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
+            throw new ParameterException(commandLine, "--export-pov writes a POV-Ray scene, and its name must end in "
+                    + ".pov; '" + file + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
+        }
+        OutputTarget target = OutputTarget.of(file, scene, "--export-pov", commandLine);
+        if (target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file())) {
+            throw new ParameterException(commandLine, "'" + file + "' leads to '" + target.file() + "', whose name does "
+                    + "not end in .pov; --export-pov replaces only a POV-Ray scene");
+        }
+        return target;
+    }
+
+    private static boolean endsInPov(Path file) {
+        return file.getFileName() != null && file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pov");
     }
 
     /** Where the picture goes: {@code -o}, or the scene's name with {@code .png}. */

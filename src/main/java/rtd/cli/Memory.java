@@ -60,13 +60,8 @@ final class Memory {
 
     /** {@code bytes} in a unit that shows the difference between small amounts: "16.0 MiB", not "0.0 GiB". */
     static String size(long bytes) {
-        if (bytes >= GIB) {
-            return String.format(Locale.ROOT, "%.1f GiB", bytes / (double) GIB);
-        }
-        if (bytes >= MIB) {
-            return String.format(Locale.ROOT, "%.1f MiB", bytes / (double) MIB);
-        }
-        return String.format(Locale.ROOT, "%.1f KiB", bytes / (double) KIB);
+        long unit = bytes >= GIB ? GIB : bytes >= MIB ? MIB : KIB;
+        return String.format(Locale.ROOT, "%.1f %s", bytes / (double) unit, unit == GIB ? "GiB" : unit == MIB ? "MiB" : "KiB");
     }
 
     /** The memory of this machine (or of its container), or {@code Long.MAX_VALUE} if Java cannot tell. */

@@ -1,9 +1,11 @@
 package rtd.cli;
 
-import static rtd.cli.SceneWarnings.number;
-import static rtd.cli.SceneWarnings.point;
+import static rtd.scene.SceneWarnings.number;
+import static rtd.scene.SceneWarnings.point;
 
+import java.util.DoubleSummaryStatistics;
 import java.util.List;
+import java.util.stream.Stream;
 import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
@@ -119,27 +121,14 @@ final class NothingInView {
 
     /** The least and greatest of the box's corners along {@code axis}, from {@code origin}. */
     private static double[] range(BoundingBox box, Vector3f origin, Vector3f axis) {
-        double low = Double.POSITIVE_INFINITY;
-        double high = Double.NEGATIVE_INFINITY;
-        for (Vector3f corner : corners(box)) {
-            double along = corner.subtract(origin).dot(axis);
-            low = Math.min(low, along);
-            high = Math.max(high, along);
-        }
-        return new double[] {low, high};
+        DoubleSummaryStatistics along = Stream.of(corners(box)).mapToDouble(c -> c.subtract(origin).dot(axis))
+                .summaryStatistics();
+        return new double[] {along.getMin(), along.getMax()};
     }
 
     /** Whether every corner of {@code box} lies behind the plane through {@code position} facing {@code forward}. */
     private static boolean isBehind(BoundingBox box, Vector3f position, Vector3f forward) {
-        if (!box.isBounded()) {
-            return false;
-        }
-        for (Vector3f corner : corners(box)) {
-            if (corner.subtract(position).dot(forward) >= 0) {
-                return false;
-            }
-        }
-        return true;
+        return box.isBounded() && Stream.of(corners(box)).noneMatch(c -> c.subtract(position).dot(forward) >= 0);
     }
 
     private static Vector3f[] corners(BoundingBox box) {

@@ -117,8 +117,8 @@ public final class RtdCommand implements Callable<Integer> {
     /** The command line of rtd, with its error handlers, writing in the terminal's encoding, ready to {@code execute}. */
     public static CommandLine commandLine() {
         CommandLine commandLine = commandLine(StandardStreams.system());
-        commandLine.setOut(AsciiFallbackWriter.printWriter(System.out, AsciiFallbackWriter.encodingOf("stdout")));
-        commandLine.setErr(AsciiFallbackWriter.printWriter(System.err, AsciiFallbackWriter.encodingOf("stderr")));
+        commandLine.setOut(StandardStreams.printWriter(System.out, StandardStreams.encodingOf("stdout")));
+        commandLine.setErr(StandardStreams.printWriter(System.err, StandardStreams.encodingOf("stderr")));
         return commandLine;
     }
 
@@ -167,7 +167,7 @@ public final class RtdCommand implements Callable<Integer> {
             if (taught != null) {
                 return taught;
             }
-            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenes());
+            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenePaths);
             RenderOptions options = checkedOptions();
             Memory.checkImageFits(spec.commandLine(), options.width(), options.height(), scale); // before any write
             OutputTarget export = teaching.planExport(options, spec.commandLine()); // beside the picture: one scene
@@ -185,10 +185,8 @@ public final class RtdCommand implements Callable<Integer> {
                 exitCode = Math.max(exitCode, run(job, options, writerReady, export, err));
             }
             return exitCode;
-        } catch (SceneException e) {
-            return failed(err, e, e.report());
-        } catch (FileError e) {
-            return failed(err, e, "rtd: " + e.getMessage() + "\n");
+        } catch (SceneException | FileError e) {
+            return failed(err, e);
         } finally {
             err.flush();
         }
@@ -207,10 +205,8 @@ public final class RtdCommand implements Callable<Integer> {
             }
             new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
             return 0;
-        } catch (SceneException e) {
-            return failed(err, e, e.report());
-        } catch (FileError e) {
-            return failed(err, e, "rtd: " + e.getMessage() + "\n");
+        } catch (SceneException | FileError e) {
+            return failed(err, e);
         } catch (OutOfMemoryError e) {
             err.println(Memory.outOfMemory(Runtime.getRuntime().maxMemory(), Memory.physical()));
             return 1;
@@ -219,27 +215,13 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    /** Prints {@code report}, and with {@code --debug} the stack trace of {@code e}; exit code 1. */
-    private int failed(PrintWriter err, Exception e, String report) {
-        err.print(report);
+    /** Prints the report of {@code e}, and with {@code --debug} its stack trace; exit code 1. */
+    private int failed(PrintWriter err, Exception e) {
+        err.print(e instanceof SceneException scene ? scene.report() : "rtd: " + e.getMessage() + "\n");
         if (debug) {
             e.printStackTrace(err);
         }
         return 1;
-    }
-
-    /** The scenes, checked against {@code -o}: one picture name cannot serve several scenes. */
-    private List<SceneSource> scenes() {
-        List<SceneSource> sources = scenePaths.stream().map(SceneSource::of).toList();
-        if (output != null && sources.size() > 1) {
-            throw misuse("-o names one picture, but " + sources.size() + " scenes were given; leave -o out to write "
-                    + "each picture beside its scene");
-        }
-        if (output == null && sources.stream().anyMatch(SceneSource::stdin)) {
-            throw misuse("the scene '-' comes from standard input, which gives no name for the picture; "
-                    + "name it with -o, such as -o out.png, or -o - for standard output");
-        }
-        return sources;
     }
 
     /** The options, with the sizes after {@code --scale} at least one pixel (the teaching options check their own). */
@@ -254,13 +236,11 @@ public final class RtdCommand implements Callable<Integer> {
     private RenderOptions checkedOptions() {
         long scaledWidth = scale.times(width);
         long scaledHeight = scale.times(height);
-        if (scaledWidth < 1 || scaledHeight < 1) {
-            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; a picture needs "
-                    + "at least one pixel each way", scale, width, height, scaledWidth, scaledHeight));
-        }
-        if (scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE) {
-            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; Java images hold "
-                    + "at most %,d", scale, width, height, scaledWidth, scaledHeight, Integer.MAX_VALUE - 8));
+        boolean empty = scaledWidth < 1 || scaledHeight < 1;
+        if (empty || scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE) {
+            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; ", scale, width,
+                    height, scaledWidth, scaledHeight) + (empty ? "a picture needs at least one pixel each way"
+                    : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
         }
         return options();
     }

@@ -1,19 +1,28 @@
 package rtd.cli;
 
 import java.awt.image.BufferedImage;
+import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.image.Rgb;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
+import rtd.pov.PovScene;
 import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
@@ -22,13 +31,18 @@ import rtd.render.Shader;
 import rtd.render.Tracer;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
+import rtd.scene.SceneWarnings;
 import rtd.shade.FlatShader;
 import rtd.shade.WhittedShader;
+import rtd.view.View;
+import rtd.view.ViewPicture;
+import rtd.view.ViewShader;
 
 /**
  * One scene from file to picture: read, write the {@code --export-pov} file if asked, build what {@code --accel}
  * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
- * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete.
+ * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete. Also
+ * {@code --view}, which draws what the rays did instead.
  */
 final class SceneRun {
 
@@ -51,16 +65,7 @@ final class SceneRun {
         String report;
         try (ProgressDisplay display = ProgressDisplay.start(options.progress(), err)) {
             StatsReport stats = new StatsReport();
-            display.show(ProgressDisplay.Phase.of("reading " + source.name()));
-            List<SceneError> warnings = new ArrayList<>();
-            Scene scene = options.scale().of(source.read(streams, warnings));
-            warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
-            stats.endPhase("parse");
-            if (export != null) { // planned with the picture's file, from this one read of the scene
-                display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
-                display.message(PovExportRun.write(scene, export, options.width(), options.height()));
-                stats.endPhase("export");
-            }
+            Scene scene = read(source, streams, options, export, display, stats);
 
             Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, options.accel());
             display.show(ProgressDisplay.Phase.of(kind.building));
@@ -68,8 +73,8 @@ final class SceneRun {
                     options.height(), options.samples(), options.threads());
             stats.endPhase("build");
 
-            SceneWarnings.of(source.name(), scene, options.width(), options.height(), !options.paper())
-                    .forEach(display::message); // --paper draws no light, and says so
+            SceneWarnings.of(scene, options.width(), options.height(), !options.paper()) // --paper: no lights
+                    .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
             RenderResult result = render(scene, accelerator, display);
             stats.endPhase("render");
             if (!hitSomething(scene, accelerator, result.image())) {
@@ -86,6 +91,95 @@ final class SceneRun {
                     options.paper() ? 1 : options.threads(), target.spelt()) : "";
         }
         err.print(report); // once the progress line is gone
+    }
+
+    /**
+     * Reads {@code source} at the size {@code options} ask, its warnings shown on {@code display}, and writes it to
+     * {@code export} (or null) for POV-Ray from this one read; the phases "parse" and "export" timed in {@code stats}.
+     */
+    static Scene read(SceneSource source, StandardStreams streams, RenderOptions options, OutputTarget export,
+            ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
+        display.show(ProgressDisplay.Phase.of("reading " + source.name()));
+        List<SceneError> warnings = new ArrayList<>();
+        Scene scene = options.scale().of(source.read(streams, warnings));
+        warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
+        stats.endPhase("parse");
+        if (export != null) {
+            display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
+            display.message(exportPov(scene, export, options.width(), options.height()));
+            stats.endPhase("export");
+        }
+        return scene;
+    }
+
+    /**
+     * Writes {@code scene} at {@code width × height} for POV-Ray ({@link PovScene}) to {@code target}, and answers the
+     * lines that say how to render it.
+     */
+    static String exportPov(Scene scene, OutputTarget target, int width, int height) throws FileError {
+        Path file = target.spelt();
+        String name = file.getFileName().toString();
+        String text;
+        try {
+            text = PovScene.of(scene, width, height, name);
+        } catch (IllegalArgumentException e) {
+            throw new FileError("cannot export to POV-Ray: " + e.getMessage());
+        }
+        try {
+            if (target.kind() == OutputTarget.Kind.STREAM) {
+                Files.writeString(target.file(), text, StandardCharsets.UTF_8, StandardOpenOption.WRITE);
+            } else {
+                replaceWithText(target.file(), text);
+            }
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + file + "'", e);
+        }
+        String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
+        return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"
+                + "  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
+                + PovScene.command(name, png, width, height);
+    }
+
+    /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */
+    private static void replaceWithText(Path file, String text) throws IOException {
+        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
+        Path temporary = file.toAbsolutePath().getParent().resolve("." + file.getFileName() + "."
+                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
+        try {
+            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
+                    StandardOpenOption.WRITE);
+            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
+        } finally {
+            Files.deleteIfExists(temporary);
+        }
+    }
+
+    /**
+     * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
+     * paper's loop or what {@code --accel} chose, all threads), written to {@code target} as a picture is, with its
+     * scale on standard error; the exit code, 0.
+     */
+    static int view(Scene scene, View view, OutputTarget target, RenderOptions options, StatsReport stats,
+            PrintWriter err, CommandLine commandLine) throws FileError {
+        if (options.samples() > 1) {
+            err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
+        }
+        Accelerator accelerator = options.paper() ? null
+                : Accelerator.of(scene, options.accel(), options.width(), options.height(), 1, options.threads());
+        stats.endPhase("build");
+        ViewShader shader = new ViewShader(view, scene.objects());
+        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> shader,
+                options.width(), options.height(), 1, options.threads(), new RenderProgress());
+        stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
+        ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
+        target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
+        err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
+        stats.endPhase("write");
+        if (options.stats()) { // a view runs on every thread, also the paper's loop
+            err.print(stats.format(scene, accelerator, raw.work(), options.threads(), target.spelt()));
+            err.flush();
+        }
+        return 0;
     }
 
     /**
@@ -151,9 +245,13 @@ final class SceneRun {
             return false;
         }
         Shader hitMarks = (rays, hits, i) -> hits.index(i) < 0 ? Rgb.BLACK : new Rgb(1, 1, 1);
-        Supplier<Tracer> tracers = accelerator != null ? accelerator.tracers() : () -> new LinearTracer(scene);
-        Picture marks = ParallelRenderer.render(scene.camera(), tracers, tracer -> hitMarks, options.width(),
+        Picture marks = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> hitMarks, options.width(),
                 options.height(), options.threads(), new RenderProgress()).image();
         return NothingInView.showsSomething(marks, 0);
+    }
+
+    /** The tracers of {@code accelerator}, or of the paper's loop where it is null. */
+    private static Supplier<Tracer> tracers(Scene scene, Accelerator accelerator) {
+        return accelerator == null ? () -> new LinearTracer(scene) : accelerator.tracers();
     }
 }

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.function.IntConsumer;
 import java.util.function.IntSupplier;
 import java.util.regex.Matcher;
@@ -64,9 +65,7 @@ final class SceneWatcher {
 
     /** The arguments less {@code --watch}. */
     static String[] withoutWatch(List<String> args) {
-        List<String> rest = new ArrayList<>(args);
-        rest.removeIf(arg -> arg.equals("--watch"));
-        return rest.toArray(String[]::new);
+        return args.stream().filter(arg -> !arg.equals("--watch")).toArray(String[]::new);
     }
 
     /** Tells {@code listener} each render's exit code (tests wait on it). */
@@ -130,14 +129,10 @@ final class SceneWatcher {
         return code;
     }
 
-    /** The first file whose fingerprint differs. */
+    /** The first file whose fingerprint differs; the scene if a mesh statement went away. */
     private static Path changed(Map<Path, String> before, Map<Path, String> now) {
-        for (Map.Entry<Path, String> file : now.entrySet()) {
-            if (!file.getValue().equals(before.get(file.getKey()))) {
-                return file.getKey();
-            }
-        }
-        return now.keySet().iterator().next(); // a mesh statement went away: the scene changed
+        return now.keySet().stream().filter(file -> !now.get(file).equals(before.get(file))).findFirst()
+                .orElse(now.keySet().iterator().next());
     }
 
     /** The scene file and each mesh file it names, with what each looks like now. */
@@ -183,9 +178,9 @@ final class SceneWatcher {
         }
     }
 
-    private static String describe(java.util.Set<Path> files) {
-        List<Path> list = new ArrayList<>(files);
-        return list.size() == 1 ? list.get(0).toString()
-                : list.get(0) + " and " + (list.size() - 1) + " mesh file" + (list.size() == 2 ? "" : "s");
+    private static String describe(Set<Path> files) {
+        Path scene = files.iterator().next();
+        return files.size() == 1 ? scene.toString()
+                : scene + " and " + (files.size() - 1) + " mesh file" + (files.size() == 2 ? "" : "s");
     }
 }

@@ -4,6 +4,8 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
 
@@ -46,27 +48,17 @@ final class StatsReport {
 
     /** " (2,073,600 camera, 1,234 shadow, ...)" when secondary rays were followed. */
     private static String raysByKind(WorkCount work) {
-        if (work.secondaryRays().isEmpty()) {
-            return "";
-        }
-        StringBuilder kinds = new StringBuilder(String.format(Locale.ROOT, " (%,d camera", work.cameraRays()));
-        for (Map.Entry<String, Long> kind : work.secondaryRays().entrySet()) {
-            kinds.append(String.format(Locale.ROOT, ", %,d %s", kind.getValue(), kind.getKey()));
-        }
-        return kinds.append(')').toString();
+        return work.secondaryRays().isEmpty() ? "" : work.secondaryRays().entrySet().stream()
+                .map(kind -> String.format(Locale.ROOT, ", %,d %s", kind.getValue(), kind.getKey()))
+                .collect(Collectors.joining("", String.format(Locale.ROOT, " (%,d camera", work.cameraRays()), ")"));
     }
 
     /** "2,073,600 answered by the view grid, 2,718,977 by the light grids, 2,322,493 by the BVH", in that order. */
     private static String answeredBy(WorkCount work) {
-        StringBuilder text = new StringBuilder();
-        for (String structure : new String[] {"view grid", "light grids", "BVH"}) {
-            Long rays = work.answeredBy().get(structure);
-            if (rays != null && rays > 0) {
-                text.append(String.format(Locale.ROOT, text.length() == 0 ? "%,d answered by the %s" : ", %,d by the %s",
-                        rays, structure));
-            }
-        }
-        return text.toString();
+        return Stream.of("view grid", "light grids", "BVH")
+                .filter(structure -> work.answeredBy().getOrDefault(structure, 0L) > 0)
+                .map(structure -> String.format(Locale.ROOT, "%,d by the %s", work.answeredBy().get(structure), structure))
+                .collect(Collectors.joining(", ")).replaceFirst(" by ", " answered by ");
     }
 
     /** "1 object", "2,000 objects". */
@@ -81,13 +73,9 @@ final class StatsReport {
 
     /** " (12.50 sphere, 1.00 plane)" when the scene has more than one kind of object. */
     private static String byKind(WorkCount work) {
-        if (work.testsByKind().size() < 2) {
-            return "";
-        }
-        StringBuilder kinds = new StringBuilder();
-        work.testsByKind().keySet().forEach(kind -> kinds.append(kinds.length() == 0 ? " (" : ", ")
-                .append(String.format(Locale.ROOT, "%.2f %s", work.testsPerRay(kind), kind)));
-        return kinds.append(')').toString();
+        return work.testsByKind().size() < 2 ? "" : work.testsByKind().keySet().stream()
+                .map(kind -> String.format(Locale.ROOT, "%.2f %s", work.testsPerRay(kind), kind))
+                .collect(Collectors.joining(", ", " (", ")"));
     }
 
     private static void line(StringBuilder text, String phase, double seconds, String detail) {

@@ -3,7 +3,6 @@ package rtd.cli;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -11,7 +10,6 @@ import picocli.CommandLine;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import rtd.explain.PixelExplanation;
-import rtd.io.SceneError;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
 import rtd.view.View;
@@ -48,7 +46,7 @@ public final class TeachingOptions {
      * Runs what the teaching options ask for instead of the picture ({@code --explain}, {@code --view},
      * {@code --watch}), the export first if asked for too; or returns {@code null} for the usual render.
      */
-    Integer run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException {
+    Integer run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
         if (watch || explain != null || view != null || exportPov != null) {
             checkOneSceneFile(options, commandLine);
         }
@@ -76,13 +74,12 @@ public final class TeachingOptions {
             refused = e;
         }
         try {
-            viewTarget = pixel == null ? ViewRun.plan(view, options, commandLine) : null;
+            viewTarget = pixel == null ? JobPlanner.viewTarget(view, options, commandLine) : null;
         } catch (FileError e) {
             refused = refused == null ? e : refused;
         }
         if (refused != null) {
-            err.println("rtd: " + refused.getMessage());
-            return 1;
+            throw refused;
         }
         if (pixel != null && options.output() != null) {
             err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
@@ -91,24 +88,10 @@ public final class TeachingOptions {
             err.println("rtd: note: --explain follows one ray and times nothing; --stats is not used");
         }
         StatsReport stats = new StatsReport();
-        Scene scene;
-        try {
-            List<SceneError> warnings = new ArrayList<>();
-            scene = options.scale().of(SceneSource.of(options.scene()).read(null, warnings));
-            warnings.forEach(warning -> err.print(warning.formatAsWarning()));
-            err.flush();
-            stats.endPhase("parse");
-            if (povTarget != null) {
-                err.println(PovExportRun.write(scene, povTarget, options.width(), options.height()));
-                err.flush();
-                stats.endPhase("export");
-            }
-        } catch (FileError e) {
-            err.println("rtd: " + e.getMessage());
-            return 1;
-        }
+        Scene scene = SceneRun.read(SceneSource.of(options.scene()), null, options, povTarget,
+                ProgressDisplay.start(false, err), stats);
         if (pixel == null) {
-            return ViewRun.run(scene, view, viewTarget, options, stats, err, commandLine);
+            return SceneRun.view(scene, view, viewTarget, options, stats, err, commandLine);
         }
         if (options.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
             err.println("rtd: note: --paper draws as the paper does, in flat colours: the scene's lights are not used, "
@@ -121,7 +104,7 @@ public final class TeachingOptions {
 
     /** Where {@code --export-pov} goes, planned before anything is read or written; null without it. */
     OutputTarget planExport(RenderOptions options, CommandLine commandLine) throws FileError {
-        return exportPov == null ? null : PovExportRun.plan(exportPov, options.scene(), commandLine);
+        return exportPov == null ? null : JobPlanner.exportTarget(exportPov, options.scene(), commandLine);
     }
 
     /** The pixel of {@code --explain X,Y} in the picture; a misuse (exit 2) that names the image's size if none. */

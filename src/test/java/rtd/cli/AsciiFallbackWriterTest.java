@@ -24,7 +24,7 @@ class AsciiFallbackWriterTest {
 
     private static String written(Charset charset) {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-        PrintWriter writer = AsciiFallbackWriter.printWriter(bytes, charset);
+        PrintWriter writer = StandardStreams.printWriter(bytes, charset);
         writer.print(TEXT);
         writer.print('≤');
         writer.print(new char[] {'→', '∞'});
@@ -66,7 +66,7 @@ class AsciiFallbackWriterTest {
         assertThat(signs).contains('×', '−', '·', 'θ', '…'); // '…' is written as \u2026 in SourceText
         for (char sign : signs) {
             ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-            PrintWriter writer = AsciiFallbackWriter.printWriter(bytes, StandardCharsets.US_ASCII);
+            PrintWriter writer = StandardStreams.printWriter(bytes, StandardCharsets.US_ASCII);
             writer.print(sign);
             writer.flush();
             assertThat(bytes.toString(StandardCharsets.US_ASCII)).as("'%s' (U+%04X)", sign, (int) sign).doesNotContain("?");
@@ -84,9 +84,9 @@ class AsciiFallbackWriterTest {
         String system = System.getProperty("native.encoding");
         System.setProperty("native.encoding", "UTF-16BE");
         try {
-            assertThat(AsciiFallbackWriter.encodingOf("rtd-no-such-stream")).isEqualTo(StandardCharsets.UTF_16BE);
+            assertThat(StandardStreams.encodingOf("rtd-no-such-stream")).isEqualTo(StandardCharsets.UTF_16BE);
             System.clearProperty("native.encoding");
-            assertThat(AsciiFallbackWriter.encodingOf("rtd-no-such-stream")).isEqualTo(Charset.defaultCharset());
+            assertThat(StandardStreams.encodingOf("rtd-no-such-stream")).isEqualTo(Charset.defaultCharset());
         } finally {
             if (system != null) {
                 System.setProperty("native.encoding", system);
@@ -95,9 +95,9 @@ class AsciiFallbackWriterTest {
         System.setProperty("rtd-test-stream.encoding", "ISO-8859-1");
         System.setProperty("sun.rtd-test-stream.encoding", "UTF-16");
         try {
-            assertThat(AsciiFallbackWriter.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.ISO_8859_1);
+            assertThat(StandardStreams.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.ISO_8859_1);
             System.setProperty("rtd-test-stream.encoding", "no-such-charset");
-            assertThat(AsciiFallbackWriter.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.UTF_16);
+            assertThat(StandardStreams.encodingOf("rtd-test-stream")).isEqualTo(StandardCharsets.UTF_16);
         } finally {
             System.clearProperty("rtd-test-stream.encoding");
             System.clearProperty("sun.rtd-test-stream.encoding");

@@ -1,4 +1,4 @@
-package rtd.cli;
+package rtd.scene;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
@@ -14,8 +14,6 @@ import rtd.geometry.Sphere;
 import rtd.image.Rgb;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
-import rtd.scene.Light;
-import rtd.scene.Scene;
 
 /**
  * The warnings, before rendering, for a scene that draws a picture without a word of why it looks wrong: a
@@ -25,7 +23,7 @@ import rtd.scene.Scene;
  * Tracer Challenge's white: rtd's colours run to 255). The scene keeps no places in its file, so objects and lights
  * are named by their number, as {@code --explain} numbers them.
  */
-final class SceneWarnings {
+public final class SceneWarnings {
 
     /** The most objects looked through: any student's scene, while a million objects are not held up. */
     private static final int MOST_LOOKED_AT = 100_000;
@@ -35,8 +33,8 @@ final class SceneWarnings {
     private SceneWarnings() {
     }
 
-    /** The lines to print for {@code scene} (its camera as rendered), named {@code name}; the lights' if {@code lit}. */
-    static List<String> of(String name, Scene scene, int width, int height, boolean lit) {
+    /** The warnings for {@code scene} (its camera as rendered at {@code width × height}); the lights' if {@code lit}. */
+    public static List<String> of(Scene scene, int width, int height, boolean lit) {
         List<String> warnings = new ArrayList<>();
         List<IGeometry> objects = scene.objects();
         if (objects.size() <= MOST_LOOKED_AT) {
@@ -59,7 +57,6 @@ final class SceneWarnings {
                         + "colours run from 0 to 255, so a full white light is (255|255|255)");
             }
         }
-        warnings.replaceAll(warning -> "rtd: warning: " + name + ": " + warning);
         return warnings;
     }
 
@@ -148,12 +145,12 @@ final class SceneWarnings {
     }
 
     /** A point as the scene file writes it: (0|0|20). */
-    static String point(Vector3f p) {
+    public static String point(Vector3f p) {
         return "(" + number(p.x()) + "|" + number(p.y()) + "|" + number(p.z()) + ")";
     }
 
     /** A number in at most 6 significant digits, without needless zeros: 38.4, 20, 0.02. */
-    static String number(double value) {
+    public static String number(double value) {
         return new BigDecimal(value).round(new MathContext(6)).stripTrailingZeros().toPlainString();
     }
 }
