@@ -42,7 +42,7 @@ class BvhEqualsLoopTest {
 
     @ParameterizedTest(name = "random scene {0}")
     @ValueSource(longs = {21, 22, 23, 24})
-    void forBundlesOfUnrelatedRaysAndForBeamsOfParallelRaysOrOfRaysFromOnePoint(long seed) {
+    void forBundlesOfUnrelatedRaysOfParallelRaysAndOfRaysFromOnePoint(long seed) {
         Scene scene = MixedScenes.generate(seed, 300);
         BvhTracer tracer = Bvh.build(scene).newTracer();
         Random random = new Random(seed);
