@@ -77,14 +77,14 @@ final class GroupReader {
     private boolean atWordAt() {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
-        return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && ByteClasses.isSpace(bytes[p + 2]);
+        return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
     }
 
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
     private void readName(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && (ByteClasses.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
+        while (cursor.pos < bytes.length && (TextBytes.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
             cursor.pos++;
         }
         if (cursor.pos == start) {
@@ -107,7 +107,7 @@ final class GroupReader {
             return "a name holds only letters, digits, '_' and '-'";
         }
         int end = start;
-        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !ByteClasses.isLineBreak(cursor.bytes[end])) {
+        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !TextBytes.isLineBreak(cursor.bytes[end])) {
             end++;
         }
         String properties = cursor.source.text(start, end).strip();
@@ -121,7 +121,7 @@ final class GroupReader {
     private void readPath(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !ByteClasses.isLineBreak(bytes[cursor.pos])
+        while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !TextBytes.isLineBreak(bytes[cursor.pos])
                 && !cursor.atNextGroup()) {
             cursor.pos++;
         }
@@ -130,7 +130,7 @@ final class GroupReader {
                     statement, group);
         }
         int nameEnd = cursor.pos;
-        while (ByteClasses.isBlank(cursor.bytes[nameEnd - 1])) {
+        while (TextBytes.isBlank(cursor.bytes[nameEnd - 1])) {
             nameEnd--; // the group is not empty, so a byte that is no blank stands before
         }
         written.add(Float.NaN, start, nameEnd);
@@ -174,7 +174,7 @@ final class GroupReader {
     /** A key of a properties group: its index among the group's keys; known and not given before. */
     private int readKey(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[cursor.pos])) {
+        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
             cursor.pos++;
         }
         if (cursor.pos == start) {
@@ -184,7 +184,7 @@ final class GroupReader {
         String word = cursor.source.text(start, cursor.pos);
         int key = group.keys().indexOf(word);
         if (key < 0) {
-            String nearest = Suggestions.nearest(word, group.keys());
+            String nearest = Hints.nearest(word, group.keys());
             throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
                     ? "did you mean '" + nearest + "'?"
                     : "the keys are " + quotedList(group.keys()));
@@ -237,7 +237,7 @@ final class GroupReader {
     /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
     private float readNumber() throws StatementError {
         tokenStart = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && !ByteClasses.isDelimiter(cursor.bytes[cursor.pos])) {
+        while (cursor.pos < cursor.bytes.length && !TextBytes.isDelimiter(cursor.bytes[cursor.pos])) {
             cursor.pos++;
         }
         if (cursor.pos == tokenStart) {

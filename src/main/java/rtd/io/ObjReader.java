@@ -54,10 +54,10 @@ final class ObjReader {
         byte[] bytes = source.bytes();
         for (int i = 0; i < bytes.length; i++) {
             if (bytes[i] == 0) {
-                throw new SceneException(List.of(NotText.inObjFile(source, i)), false);
+                throw new SceneException(List.of(TextBytes.inObjFile(source, i)), false);
             }
         }
-        return new ObjReader(source, ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
+        return new ObjReader(source, TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
     }
 
     private ObjReader(SourceText source, int start) {
@@ -252,7 +252,7 @@ final class ObjReader {
 
     private StatementError cornerError(int start) {
         int after = start;
-        while (!ByteClasses.endsObjWord(bytes, after)) {
+        while (!TextBytes.endsObjWord(bytes, after)) {
             after++;
         }
         return error(start, "expected a corner of the face, found " + (after > start ? "'" + source.text(start, after) + "'"
@@ -263,7 +263,7 @@ final class ObjReader {
 
     /** Whether {@link #pos} is at a blank, a comment, the end of the line or of the file. */
     private boolean atTokenEnd() {
-        return ByteClasses.endsObjWord(bytes, pos);
+        return TextBytes.endsObjWord(bytes, pos);
     }
 
     private boolean at(char c) {
@@ -271,7 +271,7 @@ final class ObjReader {
     }
 
     private void skipBlanks() {
-        while (pos < bytes.length && ByteClasses.isBlank(bytes[pos])) {
+        while (pos < bytes.length && TextBytes.isBlank(bytes[pos])) {
             pos++;
         }
     }

@@ -104,7 +104,7 @@ final class SceneFileReader {
             }
             filled += read;
             int whole = wholeCharacters(bytes, checked, filled);
-            if (NotText.firstBadByte(bytes, checked, whole) >= 0) {
+            if (TextBytes.firstBadByte(bytes, checked, whole) >= 0) {
                 break; // the rest cannot change the verdict: not a scene
             }
             checked = whole;

@@ -46,18 +46,18 @@ final class SceneParser {
      */
     static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
-        int start = ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0;
+        int start = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;
         int lines = 1;
         boolean plain = true;
         for (int i = start; i < bytes.length; i++) {
             if (bytes[i] <= '\r') { // one test for the rare bytes: line breaks, control characters, every non-ASCII byte
-                lines += bytes[i] == '\n' || bytes[i] == '\r' && ByteClasses.endsLine(bytes, i) ? 1 : 0;
+                lines += bytes[i] == '\n' || bytes[i] == '\r' && TextBytes.endsLine(bytes, i) ? 1 : 0;
                 plain &= bytes[i] > 0;
             }
         }
-        int bad = plain ? -1 : NotText.firstBadByte(bytes, start, bytes.length);
+        int bad = plain ? -1 : TextBytes.firstBadByte(bytes, start, bytes.length);
         if (bad >= 0) {
-            throw new SceneException(List.of(NotText.error(source, start, bad)), false);
+            throw new SceneException(List.of(TextBytes.error(source, start, bad)), false);
         }
         // Most lines of a large file make one object, so the list is made that long at once: grown
         // line by line, its large arrays would go to the old generation, and stay there long.
@@ -167,7 +167,7 @@ final class SceneParser {
         String name = values.name(group);
         Material material = materials.get(name);
         if (material == null && !contents.brokenDefinitions.contains(name)) {
-            String nearest = Suggestions.nearest(name, materials.keySet());
+            String nearest = Hints.nearest(name, materials.keySet());
             contents.addErrors(values.errorAtValue(group, 0, "unknown material '" + name + "'", nearest != null
                     ? "did you mean '" + nearest + "'?"
                     : "define it with a line such as material:(" + name + "):(diffuse=0.9)"));
@@ -191,7 +191,7 @@ final class SceneParser {
     }
 
     private static SceneError atStart(SourceText source, String message, String help) {
-        int start = ByteClasses.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
+        int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
         return new SceneError(source.name(), 1, 1, message, source.lineText(start), help);
     }
 }

@@ -62,7 +62,7 @@ final class SourceText implements AutoCloseable {
     /** The text of the line that starts at byte {@code lineStart}, without its line break. */
     String lineText(int lineStart) {
         int end = lineStart;
-        while (end < bytes.length && !ByteClasses.isLineBreak(bytes[end])) {
+        while (end < bytes.length && !TextBytes.isLineBreak(bytes[end])) {
             end++; // a line ends at LF, CR LF or a CR alone (old Mac files)
         }
         return new String(bytes, lineStart, end - lineStart, StandardCharsets.UTF_8);
@@ -97,7 +97,7 @@ final class SourceText implements AutoCloseable {
         if (offset >= bytes.length) {
             return offset > lineStart ? "the end of the line" : "the end of the file";
         }
-        if (ByteClasses.isLineBreak(bytes[offset])) {
+        if (TextBytes.isLineBreak(bytes[offset])) {
             return "the end of the line";
         }
         if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '/') {
@@ -107,8 +107,8 @@ final class SourceText implements AutoCloseable {
             return "'/*'";
         }
         int after = offset + 1;
-        if (ByteClasses.isWordByte(bytes[offset])) {
-            while (after < bytes.length && ByteClasses.isWordByte(bytes[after])) {
+        if (TextBytes.isWordByte(bytes[offset])) {
+            while (after < bytes.length && TextBytes.isWordByte(bytes[after])) {
                 after++; // show a whole word, not its first letter
             }
         }

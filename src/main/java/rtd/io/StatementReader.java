@@ -121,7 +121,7 @@ final class StatementReader {
      */
     private Statement readKeyword(boolean afterLineNumber) throws StatementError {
         statementStart = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[cursor.pos])) {
+        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
             cursor.pos++;
         }
         if (cursor.pos == statementStart) {
@@ -148,12 +148,12 @@ final class StatementReader {
                 return false;
             }
         }
-        return cursor.atEndOfStatement() || ByteClasses.isSpace(cursor.bytes[cursor.pos]);
+        return cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]);
     }
 
     private StatementError unknownKeyword(int keywordStart) {
         String word = cursor.source.text(keywordStart, cursor.pos);
-        return cursor.error(keywordStart, "unknown statement '" + word + "'", Suggestions.keywordHelp(word));
+        return cursor.error(keywordStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
     }
 
     /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
@@ -189,16 +189,16 @@ final class StatementReader {
     /** The help for a second statement (a keyword, then ':') from {@code from} on, after blanks; or null. */
     private String secondStatement(int from) {
         int start = from;
-        while (start < cursor.bytes.length && ByteClasses.isSpace(cursor.bytes[start])) {
+        while (start < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[start])) {
             start++;
         }
         int end = start;
-        while (end < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[end])) {
+        while (end < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[end])) {
             end++;
         }
         Statement statement = Grammar.find(cursor.bytes, start, end);
         int after = end;
-        while (after < cursor.bytes.length && ByteClasses.isSpace(cursor.bytes[after])) {
+        while (after < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[after])) {
             after++;
         }
         return statement != null && after < cursor.bytes.length && cursor.bytes[after] == ':'
@@ -230,7 +230,7 @@ final class StatementReader {
 
     /** The offset after the first {@code *}{@code /} from {@code from} to the end of its line, or −1. */
     private int commentEnd(int from) {
-        for (int i = from; i + 1 < cursor.bytes.length && !ByteClasses.isLineBreak(cursor.bytes[i]); i++) {
+        for (int i = from; i + 1 < cursor.bytes.length && !TextBytes.isLineBreak(cursor.bytes[i]); i++) {
             if (cursor.bytes[i] == '*' && cursor.bytes[i + 1] == '/') {
                 return i + 2;
             }
