@@ -5,11 +5,9 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Reads the groups of a statement, {@code :(…)} each, into {@link WrittenGroups}: numbers separated
- * by '|', a name, a file path, or {@code key=number} properties, as the statement's {@link Group}s
- * say; a view direction may be written {@code (at x|y|z)}, a point to look at. Each mistake in them
- * is worded at its place, with the statement's usage or a hint. It reads at the {@link LineCursor}
- * it shares with the {@link StatementReader} that reads the rest of the line.
+ * Reads the groups {@code :(…)} of a statement into {@link WrittenGroups}, as its {@link Group}s say, at the
+ * {@link LineCursor} it shares with the {@link StatementReader}; each mistake is worded at its place, with
+ * the usage or a hint.
  */
 final class GroupReader {
 
@@ -202,8 +200,8 @@ final class GroupReader {
     }
 
     /**
-     * Too many numbers in a group; where the line has too few groups, the hint says this group was
-     * likely left out (its numbers are the next group's): {@code sphere:(3|8|-1):(0|127|255)}.
+     * Too many numbers in a group; on a line with too few groups the hint says this group was likely left
+     * out.
      */
     private StatementError tooManyNumbers(Statement statement, Group group, int groupStart) {
         String message = "too many numbers in %s: it takes " + contents(group);
@@ -253,8 +251,8 @@ final class GroupReader {
     }
 
     /**
-     * The error for the token just read, which is no number: at an invisible character that
-     * starts it or follows a number (which {@link #error} names), else at the token, with a hint.
+     * The error for a token that is no number: at an invisible character that starts it or follows a number,
+     * else at the token, with a hint.
      */
     private StatementError notANumber() {
         int invisible = firstInvisible(tokenStart, cursor.pos);

@@ -8,14 +8,10 @@ import java.util.Map;
 import java.util.regex.Pattern;
 
 /**
- * The {@code = help:} lines for the mistakes people really make in a scene file: a decimal
- * comma, a comment written as in another language, two statements on one line, an invisible
- * character copied from a PDF or a web page, the paper's listing pasted with its line numbers; and
- * the word a misspelt one was probably meant to be ("did you mean 'sphere'?"), or a statement meant
- * by a word that shares no spelling with it ({@code camera}, {@code kugel}).
- *
- * <p>They are only asked for once a line has a mistake, so reading a correct file costs nothing
- * more for them.
+ * The {@code = help:} lines for the mistakes people really make in a scene file (a decimal comma, another
+ * language's comment, two statements on a line, an invisible character, the paper's line numbers), and "did
+ * you mean …?" for a misspelt word or a synonym ({@code camera}, {@code kugel}). Asked for only once a line
+ * has a mistake.
  */
 final class Hints {
 

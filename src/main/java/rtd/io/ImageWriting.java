@@ -22,11 +22,8 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 import rtd.image.Picture;
 
 /**
- * Encodes a {@link Picture} through {@code javax.imageio}, the JDK's own image writers, in the
- * {@link ImageFormat} of the output.
- *
- * <p>The picture's array is handed to {@code javax.imageio} as it is, without a copy, as an
- * RGB image without alpha (a JPEG cannot hold alpha).
+ * Encodes a {@link Picture} through {@code javax.imageio} in its {@link ImageFormat}, handing over its array
+ * without a copy as RGB without alpha.
  */
 public final class ImageWriting {
 
@@ -36,18 +33,17 @@ public final class ImageWriting {
     }
 
     /**
-     * Starts {@code javax.imageio} and the writer of {@code format} on a daemon thread, by
-     * encoding a picture of one pixel into nothing: loading its classes takes longer than a small
-     * render, and can happen while the scene is read. Wait for the result before writing, so
-     * that two threads never load the same classes at once.
+     * Starts {@code javax.imageio} and the writer of {@code format} on a daemon thread (loading it takes
+     * longer than a small render) by writing one pixel into nothing. Wait for the result before writing, so
+     * that two threads never load the same classes.
      */
     public static CompletableFuture<Void> warmUp(ImageFormat format) {
         return warmUp(format, () -> { });
     }
 
     /**
-     * As {@link #warmUp(ImageFormat)}, and then runs {@code then} on the same thread, once the
-     * writer is ready: more of the caller's warming up, which the result does not wait for.
+     * As {@link #warmUp(ImageFormat)}, then runs {@code then} on that thread; the result does not wait for
+     * it.
      */
     public static CompletableFuture<Void> warmUp(ImageFormat format, Runnable then) {
         CompletableFuture<Void> done = new CompletableFuture<>();
@@ -66,8 +62,8 @@ public final class ImageWriting {
     }
 
     /**
-     * Writes {@code picture} to {@code out} in {@code format}, telling {@code progress} the
-     * fraction written (0 to 1) as it goes. {@code out} is flushed, not closed.
+     * Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction
+     * written.
      */
     public static void write(Picture picture, ImageFormat format, OutputStream out, DoubleConsumer progress)
             throws IOException {
@@ -90,9 +86,8 @@ public final class ImageWriting {
     }
 
     /**
-     * The writer's defaults, but for PNG a low deflate level (quality 0.9), still lossless: it
-     * writes in about half the time a somewhat larger file; rtd's pictures are mostly flat areas
-     * of colour, which any level compresses well.
+     * The writer's defaults, but for PNG a low deflate level (quality 0.9), still lossless: about half the
+     * time for a little larger file.
      */
     private static ImageWriteParam parameters(ImageWriter writer, ImageFormat format) {
         ImageWriteParam parameters = writer.getDefaultWriteParam();
@@ -147,13 +142,9 @@ public final class ImageWriting {
     }
 
     /**
-     * The layout of a {@link rtd.image.Picture}'s pixels for {@code javax.imageio}: one int a pixel,
-     * {@code 0xRRGGBB}, row by row, as {@link SinglePixelPackedSampleModel} describes it.
-     *
-     * <p>The PNG writer asks for the picture a row at a time, as samples (red, green, blue of each
-     * pixel in turn: {@link #getPixels}). The JDK's own answer reads each sample through the data
-     * buffer's methods and the layout's masks and shifts, slow before the JIT compiles them; this
-     * one reads the picture's array directly. The samples are the same.
+     * A {@link Picture}'s layout, one int {@code 0xRRGGBB} a pixel, row by row, whose {@link #getPixels}
+     * reads the array directly: the JDK's goes through the data buffer's methods, slow before the JIT
+     * compiles them. The samples are the same.
      */
     static final class PackedRgbSamples extends SinglePixelPackedSampleModel {
 

@@ -25,11 +25,7 @@ final class LineCursor {
         this.lineStart = start;
     }
 
-    /**
-     * Lets the bytes go once the file is read. A parse lasts long enough for the collector to
-     * move the cursor to the old generation, where nothing finds it dead before a concurrent
-     * mark; as long as it points to the bytes, they would stay through the build and the render.
-     */
+    /** Lets the bytes go once the file is read, as {@link SourceText#close} does. */
     void release() {
         bytes = null;
     }

@@ -8,11 +8,9 @@ import java.util.regex.Pattern;
 import rtd.geometry.Material;
 
 /**
- * Three slips with materials that are no mistakes, so the scene is drawn, but that change nothing
- * in the picture, so that a student would wonder why: a material no object names; an {@code ior}
- * with no {@code transparency}, which bends no light as none goes through; and materials in a
- * scene without a light, which is drawn in the paper's flat colours. Each is told at the
- * material's line, as a mistake is.
+ * Three slips with materials that change nothing in the picture, told as warnings at the material's line: a
+ * material no object names; an {@code ior} without {@code transparency}; materials in a scene without a
+ * light, drawn in the paper's flat colours.
  */
 final class MaterialWarnings {
 
@@ -22,10 +20,7 @@ final class MaterialWarnings {
     private MaterialWarnings() {
     }
 
-    /**
-     * The warnings for the material {@code definitions} (in file order), of which the objects
-     * {@code named} some, in a scene with or without a light.
-     */
+    /** The warnings for the {@code definitions}, in file order, of which objects {@code named} some. */
     static List<SceneError> of(List<SceneContents.Located<SceneContents.Named>> definitions, Set<String> named, boolean lit) {
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !definitions.isEmpty()) {
@@ -49,8 +44,8 @@ final class MaterialWarnings {
     }
 
     /**
-     * The first {@link SceneParser#MAX_ERRORS} warnings, as many as a run shows of mistakes, and a
-     * last line for the rest, at the first of them: a library of materials could print thousands.
+     * The first {@link SceneParser#MAX_ERRORS} warnings and a last line for the rest: a library of materials
+     * could print thousands.
      */
     private static List<SceneError> atMost(List<SceneError> warnings) {
         int most = SceneParser.MAX_ERRORS;

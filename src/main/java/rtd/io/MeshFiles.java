@@ -11,10 +11,9 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Finds and reads the OBJ file that a {@code mesh} statement names (Part II, "Geometry"): its
- * path is relative to the scene file's folder. A file that cannot be read is an error at the
- * path in the scene; mistakes inside the file are located in the file, and each says which line
- * of the scene uses it.
+ * Finds and reads the OBJ file a {@code mesh} names, relative to the scene's folder (Part II, "Geometry"). A
+ * file that cannot be read is an error at the path; mistakes inside it are located in it, each naming the
+ * scene's line.
  */
 final class MeshFiles {
 

@@ -11,15 +11,12 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The triangles of a Wavefront OBJ file as {@link ObjReader} read them: the vertices and normals,
- * and for each triangle, in face order, the index of each corner's vertex and normal. A
- * {@code mesh} statement (Part II, "Geometry") places them in the scene with
- * {@link #triangles}. The arrays are the reader's own and are never changed; those of the
- * triangles may be longer than {@code 3 * count}.
+ * The triangles of an OBJ file as {@link ObjReader} read them, which a {@code mesh} (Part II, "Geometry")
+ * places with {@link #triangles}. The arrays are the reader's and are never changed.
  *
  * @param vertices      x, y, z of each vertex
  * @param normals       x, y, z of each normal
- * @param corners       three vertex indices per triangle
+ * @param corners       three vertex indices per triangle (the array may be longer)
  * @param cornerNormals three normal indices per triangle, or −1 for a triangle with no normals
  * @param count         the number of triangles
  */
@@ -28,18 +25,15 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
     /** Meshes of fewer triangles are placed on the calling thread: starting tasks would take longer. */
     private static final int PARALLEL_FROM = 1 << 15;
     /**
-     * How many triangles share one array of numbers (see {@link Triangle}): 442 KiB of them,
-     * under half of G1's smallest region (1 MiB). A larger array would be "humongous": put
-     * straight into the old generation, where a few of them, large against a heap that has
-     * not grown yet, start a concurrent mark of the whole heap.
+     * How many triangles share one array of numbers: 442 KiB, under half of G1's smallest region, so that it
+     * is not "humongous" (put straight into the old generation).
      */
     private static final int BLOCK = 1 << 12;
 
     /**
-     * The triangles, in order, each corner p moved to {@code scale·p + shift}. A triangle whose
-     * every corner named a normal is smooth, with those normals as written: a scale above 0
-     * does not turn them. A large mesh is placed in blocks on all cores; each triangle is the
-     * same whichever thread makes it.
+     * The triangles, in order, each corner p moved to {@code scale·p + shift}; one whose corners all name
+     * normals is smooth. A large mesh is placed in blocks on all cores, each triangle the same whichever
+     * thread makes it.
      */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];

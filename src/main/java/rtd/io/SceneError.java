@@ -49,9 +49,8 @@ public record SceneError(String file, int line, int column, String message, Stri
     }
 
     /**
-     * The part of a long line that is shown: at most {@value #WIDTH} characters around the column,
-     * with an ellipsis for each end cut off, so that a line of 50 MB prints one short line (the
-     * column number in the message stays exact).
+     * The part of a long line shown: at most {@value #WIDTH} characters around the column, an ellipsis for
+     * each end cut off.
      *
      * @param shown        the text to print
      * @param caretPadding what goes before the caret: spaces, and the line's tabs so that it lines up

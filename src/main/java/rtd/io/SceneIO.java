@@ -22,20 +22,15 @@ import rtd.scene.Scene;
  */
 public final class SceneIO {
 
-    /**
-     * The largest scene file rtd reads, 1 GiB: about 20 million spheres, more than fit in the
-     * memory of most machines once read. Java could not hold a file of over 2 GiB in one piece.
-     */
+    /** The largest scene file rtd reads, 1 GiB: about 20 million spheres. */
     public static final long MAX_SCENE_BYTES = 1L << 30;
 
     private SceneIO() {
     }
 
     /**
-     * Reads the scene file at {@code path} (UTF-8), in bounded memory and time: a file over
-     * {@link #MAX_SCENE_BYTES} is refused, and a stream such as {@code /dev/zero} is read only
-     * up to its first byte that is not text ({@link SceneFileReader}). The OBJ files of its
-     * meshes are found relative to the folder it is in.
+     * Reads the scene file at {@code path} (UTF-8) in bounded memory and time ({@link SceneFileReader}); its
+     * meshes' OBJ files are found from its folder.
      *
      * @throws SceneException if the file has mistakes; it lists them all
      * @throws IOException    if the file cannot be read
@@ -107,11 +102,9 @@ public final class SceneIO {
     }
 
     /**
-     * Writes {@code picture} to {@code output} in {@code format} ({@link ImageWriting}), all or
-     * nothing: the picture goes to a temporary file in the same folder first and replaces
-     * {@code output} only when it is complete, so a failed write leaves any earlier file exactly
-     * as it was. The temporary file ({@code .NAME.<hex>.tmp}) is removed on failure and when a
-     * signal stops the JVM ({@link TemporaryFiles}). {@code progress} hears the fraction written.
+     * Writes {@code picture} to {@code output} all or nothing: into a temporary file beside it
+     * ({@link TemporaryFiles}), which replaces {@code output} only when complete and is removed on failure.
+     * {@code progress} hears the fraction written.
      */
     public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
             throws IOException {
@@ -131,10 +124,8 @@ public final class SceneIO {
     }
 
     /**
-     * Writes {@code picture} in {@code format} into {@code device}, a FIFO or a character device
-     * such as /dev/null, which stays what it is: it is opened for writing only, never created,
-     * replaced or truncated. A reader of a FIFO gets the picture as it is written (a failed write
-     * leaves it with part of one).
+     * Writes {@code picture} into {@code device}, a FIFO or a device such as /dev/null, opened for writing
+     * only: never created, replaced or truncated.
      */
     public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
             throws IOException {

@@ -13,21 +13,14 @@ import rtd.image.Color;
 import rtd.scene.Scene;
 
 /**
- * Reads the scene format of the paper (section 4.1, Listing A.1), as Part II ("The scene file")
- * extends it, from a file's bytes.
+ * Reads a scene file (paper, section 4.1, Listing A.1; Part II, "The scene file"): one statement of the
+ * {@link Grammar} a line, {@code //} comments, any blanks, line ends and a byte-order mark. Text that is not
+ * UTF-8 is refused at its first bad byte; every mistake is reported with line and column, in file order, up
+ * to {@value #MAX_ERRORS}.
  *
- * <p>One statement a line: {@code keyword:(group):(group)…}, the statements being those of the
- * {@link Grammar}. {@code //} starts a comment; blank lines, spaces and tabs around any token,
- * Windows and old Mac line ends (CR LF, a CR alone) and a UTF-8 byte-order mark are all fine.
- * A file that is not UTF-8 text is refused at its first bad byte, before any statement is read.
- * Every mistake is reported with its line and column, in file order, up to {@value #MAX_ERRORS},
- * so that one run shows them all.
- *
- * <p>After the {@link StatementReader} has read every line, what only the whole file can tell is
- * checked here: one camera, one {@code ambient}, one material per name; and the objects that name
- * a material defined further down are built, at their places among the objects. Slips that are no
- * mistakes are told as warnings, located as mistakes are: those of {@link MaterialWarnings}, and
- * a sphere so large that it will show shadow acne in a shaded scene.
+ * After the {@link StatementReader} has read every line, it checks what only the whole file can tell (one
+ * camera, one {@code ambient}, one material per name), builds the objects that name a material defined
+ * further down, and gives the warnings of slips that are no mistakes.
  */
 final class SceneParser {
 
@@ -41,8 +34,8 @@ final class SceneParser {
     }
 
     /**
-     * Reads a scene, or throws every mistake found in it; what is no mistake but likely a slip
-     * goes to {@code warnings} (null: dropped), in file order.
+     * Reads a scene, or throws its mistakes; likely slips go to {@code warnings} (null: dropped), in file
+     * order.
      */
     static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
@@ -136,10 +129,7 @@ final class SceneParser {
         return materials;
     }
 
-    /**
-     * Every object in file order: those built as they were read, and between them those that
-     * name a material, built now that every material is known; their names go to {@code named}.
-     */
+    /** Every object in file order, those that named a material built now; the names go to {@code named}. */
     private static List<IGeometry> objects(SceneContents contents, Map<String, Material> materials, Set<String> named) {
         if (contents.pending.isEmpty()) {
             return contents.objects;
@@ -156,10 +146,8 @@ final class SceneParser {
     }
 
     /**
-     * Builds an object that names a material into {@code objects}, and answers the name. An
-     * unknown name is an error at the name, unless its definition has a mistake, which is
-     * reported already; the rest of the statement is still checked, so that one run shows all
-     * its mistakes.
+     * Builds an object that names a material into {@code objects}, and answers the name. An unknown name is
+     * an error (unless its definition is broken, which is reported already); the statement is still checked.
      */
     private static String build(SceneContents contents, StatementValues values, Map<String, Material> materials,
             List<IGeometry> objects) {
