@@ -67,7 +67,7 @@ final class Grammar {
                         Vector3f shift = v.vector(1);
                         float scale = v.positive(2);
                         Color colour = v.colour(3);
-                        out.objects(MeshFiles.read(v, 0).triangles(shift, scale, colour, v.material()));
+                        out.objects(ObjMesh.read(v, 0).triangles(shift, scale, colour, v.material()));
                     }),
             Statement.setting("light", List.of(numbers("position", "x|y|z"), numbers("intensity", "R|G|B")),
                     (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
