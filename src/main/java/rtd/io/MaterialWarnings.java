@@ -24,19 +24,19 @@ final class MaterialWarnings {
     static List<SceneError> of(List<SceneContents.Located<SceneContents.Named>> definitions, Set<String> named, boolean lit) {
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !definitions.isEmpty()) {
-            warnings.add(at(definitions.get(0).place(), "materials change nothing here: the scene has no light, so it is "
+            warnings.add(definitions.get(0).place().saying("materials change nothing here: the scene has no light, so it is "
                     + "drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
         }
         for (SceneContents.Located<SceneContents.Named> definition : definitions) {
             String name = definition.value().name();
             Material material = definition.value().material();
             if (!named.contains(name)) {
-                warnings.add(at(definition.place(), "material '" + name + "' is defined, but no object names it",
+                warnings.add(definition.place().saying("material '" + name + "' is defined, but no object names it",
                         "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):(" + name
                                 + ")"));
             }
             if (lit && material.ior() != 1 && material.transparency() <= 0) { // without a light, nothing is bent anyway
-                warnings.add(at(atTheIor(definition.place()), "the ior of material '" + name + "' bends nothing: its transparency "
+                warnings.add(atTheIor(definition.place()).saying("the ior of material '" + name + "' bends nothing: its transparency "
                         + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
@@ -67,9 +67,5 @@ final class MaterialWarnings {
 
     private static SceneError at(SceneError place, int column) {
         return new SceneError(place.file(), place.line(), column, place.message(), place.sourceLine(), place.help());
-    }
-
-    private static SceneError at(SceneError place, String message, String help) {
-        return new SceneError(place.file(), place.line(), place.column(), message, place.sourceLine(), help);
     }
 }

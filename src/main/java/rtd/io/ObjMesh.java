@@ -132,8 +132,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
             }
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();
-            List<SceneError> errors = e.errors().stream().map(error -> new SceneError(error.file(), error.line(),
-                    error.column(), error.message(), error.sourceLine(),
+            List<SceneError> errors = e.errors().stream().map(error -> error.saying(error.message(),
                     error.help() == null ? usedBy : error.help() + "; " + usedBy)).toList();
             throw new StatementError(values.placeOfValue(g, 0), errors);
         }

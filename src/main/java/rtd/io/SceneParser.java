@@ -66,11 +66,11 @@ final class SceneParser {
         var ambients = contents.ambients;
         var cameras = contents.cameras;
         for (var second : ambients.subList(Math.min(1, ambients.size()), ambients.size())) {
-            errors.add(found(again(second.place(), "a second 'ambient': a scene has one background colour",
+            errors.add(found(second.place().saying("a second 'ambient': a scene has one background colour",
                     "the first 'ambient' is at line " + ambients.get(0).place().line())));
         }
         for (var second : cameras.subList(Math.min(1, cameras.size()), cameras.size())) {
-            errors.add(found(again(second.place(), "a second camera: a scene has one",
+            errors.add(found(second.place().saying("a second camera: a scene has one",
                     "the first camera is at line " + cameras.get(0).place().line())));
         }
         Map<String, Material> materials = materials(contents.materials, errors);
@@ -107,7 +107,7 @@ final class SceneParser {
         int count = contents.lineNumbers;
         if (first != null) {
             String more = count == 1 ? "" : count == 2 ? ", as does 1 more line" : ", as do " + (count - 1) + " more lines";
-            errors.add(found(again(first, first.message() + more, first.help())));
+            errors.add(found(first.saying(first.message() + more, first.help())));
         }
     }
 
@@ -122,7 +122,7 @@ final class SceneParser {
             if (earlier == null) {
                 materials.put(name, definition.value().material());
             } else {
-                errors.add(found(again(definition.place(), "a second material '" + name + "': each name is defined once",
+                errors.add(found(definition.place().saying("a second material '" + name + "': each name is defined once",
                         "the first '" + name + "' is at line " + earlier.place().line())));
             }
         }
@@ -172,10 +172,6 @@ final class SceneParser {
 
     private static SceneContents.Found found(SceneError error) {
         return new SceneContents.Found(error.line(), error.column(), error);
-    }
-
-    private static SceneError again(SceneError place, String message, String help) {
-        return new SceneError(place.file(), place.line(), place.column(), message, place.sourceLine(), help);
     }
 
     private static SceneError atStart(SourceText source, String message, String help) {
