@@ -70,17 +70,7 @@ public final class SceneIO {
 
     /** As {@link #parseScene(String, String)}, with the OBJ files of meshes found relative to {@code meshFolder}. */
     public static Scene parseScene(String name, String text, Path meshFolder) throws SceneException {
-        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), meshFolder);
-    }
-
-    /** Reads a scene from raw bytes; {@code name} stands for the file in error messages. */
-    public static Scene parseScene(String name, byte[] bytes) throws SceneException {
-        return parseScene(name, bytes, Path.of(""));
-    }
-
-    /** As {@link #parseScene(String, byte[])}, with the OBJ files of meshes found relative to {@code meshFolder}. */
-    public static Scene parseScene(String name, byte[] bytes, Path meshFolder) throws SceneException {
-        return parse(new SourceText(name, bytes, meshFolder), null);
+        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), meshFolder, null);
     }
 
     /** As {@link #parseScene(String, String)}, adding the scene's warnings to {@code warnings}. */
@@ -88,7 +78,7 @@ public final class SceneIO {
         return parseScene(name, text.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
     }
 
-    /** As {@link #parseScene(String, byte[], Path)}, adding the scene's warnings to {@code warnings}. */
+    /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}; warnings go to {@code warnings} (null: dropped). */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
         return parse(new SourceText(name, bytes, meshFolder), warnings);
