@@ -1,21 +1,10 @@
 package rtd.io;
 
 /**
- * Splits a face of an OBJ file into triangles (Part II, "Geometry"), as modelling tools do: a
- * convex face as a fan around its first corner, {@code (0,1,2), (0,2,3), …}; any other by ear
- * clipping, so that a concave face (an L, a ring cut open along a slit) is covered where it is
- * and nowhere else.
- *
- * <p>Both work in the face's plane: the one whose normal is Newell's (the sum over the edges of
- * the cross products of consecutive corners), which is the exact normal of a flat face and the
- * best fitting plane of one that is not quite flat. The face is projected onto the world plane
- * most nearly parallel to it, where "convex", "inside" and "an ear" are decided in two
- * dimensions. A face that is not flat is split as its projection is, and each triangle keeps its
- * corners where the file puts them: a surface through the corners, as the tools draw it. A face
- * of no area (its corners on one line) is a fan too; its triangles are never hit.
- *
- * <p>Each face of n corners gives n − 2 triangles, every corner being one of the face's, in the
- * face's turning sense, so that the triangles face where the face does.
+ * Splits a face of an OBJ file into triangles (Part II, "Geometry"), as modelling tools do: a convex face as
+ * a fan around its first corner, any other by ear clipping, so that a concave face is covered where it is
+ * and nowhere else. Both work on the face projected onto the world plane most nearly parallel to its Newell
+ * normal. Each face of n corners gives n − 2 triangles, turning as the face does.
  */
 final class EarClipping {
 
@@ -23,9 +12,8 @@ final class EarClipping {
     }
 
     /**
-     * The triangles of the face whose {@code count} corners are the vertices
-     * {@code corners[0, count)} of {@code vertices} (x, y, z each): three corner numbers (from 0,
-     * in the face) per triangle, in order.
+     * The triangles of the face {@code corners[0, count)} of {@code vertices}: three corner numbers (from 0,
+     * in the face) per triangle.
      */
     static int[] triangles(int[] corners, int count, float[] vertices) {
         double[] u = new double[count];
@@ -45,10 +33,9 @@ final class EarClipping {
     }
 
     /**
-     * Writes the corners' coordinates in the plane most nearly parallel to the face into
-     * {@code u} and {@code v}, and answers the face's turning sense there: 1, −1, or 0 for a face
-     * of no area. The two axes are taken in cyclic order (y, z for x; z, x for y; x, y for z), so
-     * that the sign of Newell's normal along the dropped axis is the sense.
+     * Writes the corners' coordinates in the plane most nearly parallel to the face into {@code u} and
+     * {@code v} (axes in cyclic order, so that Newell's normal along the dropped axis gives the sense), and
+     * answers the face's turning sense there: 1, −1, or 0 for no area.
      */
     private static double project(int[] corners, int count, float[] vertices, double[] u, double[] v) {
         double nx = 0;
@@ -81,12 +68,10 @@ final class EarClipping {
     }
 
     /**
-     * Ear clipping: cuts off, again and again, the first corner (from the face's first on) that
-     * turns with the face and whose triangle with its two neighbours holds no other corner of
-     * what is left, until one triangle is left. A corner at the same place as one of the
-     * triangle's (the two sides of a slit) does not count as inside. Where no such ear is found
-     * (a face that crosses itself), the first corner that does not turn against the face is cut
-     * off, or else the first corner left.
+     * Ear clipping: cuts off, again and again, the first corner that turns with the face and whose triangle
+     * holds no other corner left (one at a triangle corner's place, a slit's, does not count). With no such
+     * ear (a face that crosses itself), it cuts the first corner that does not turn against the face, or
+     * else the first left.
      */
     private static void clipEars(double[] u, double[] v, int count, double sense, int[] triangles) {
         int[] left = new int[count];

@@ -3,13 +3,9 @@ package rtd.io;
 import java.nio.charset.StandardCharsets;
 
 /**
- * Reads a decimal number straight from the file's bytes, correctly rounded to the nearest
- * {@code float}, as {@link Float#parseFloat} would, but without making a String for it: a
- * scene of a million spheres has seven million numbers.
- *
- * <p>Accepted: an optional sign, digits with an optional decimal point ({@code 1.}, {@code .5}
- * and {@code 1.5} all count), and an optional exponent ({@code 2e3}, {@code 1E-4}); also
- * {@code NaN} and {@code Infinity}, so that the caller can say they are not allowed.
+ * Reads a decimal number from the file's bytes, rounded as {@link Float#parseFloat} does, without a String
+ * (a million spheres have seven million numbers): a sign, digits with an optional point ({@code 1.},
+ * {@code .5}), an optional exponent; also {@code NaN} and {@code Infinity}, for the caller to refuse.
  */
 final class FloatParser {
 

@@ -23,16 +23,10 @@ import rtd.math.Vector3f;
 import rtd.scene.Light;
 
 /**
- * The scene grammar: every statement of the scene file, each declared once, with its keyword,
- * its groups and how it builds its value (the paper's, section 4.1: {@code ambient},
- * {@code orthographic_camera}, {@code sphere}; Part II's, "The scene file": {@code perspective_camera},
- * {@code plane}, {@code triangle}, {@code box}, {@code mesh}, {@code light}, {@code material}).
- *
- * <p>To add a statement, add one entry to {@link #STATEMENTS} ({@link Statement#shape} for one that
- * makes an object, {@link Statement#setting} for the others): the reader, the messages (the
- * usage in "write it as …", the keyword list, "did you mean …?") follow from it. Its groups are
- * read and checked for form by {@link GroupReader}; its builder asks {@link StatementValues} for
- * values by group index, which checks the rules for them.
+ * The scene grammar: every statement, declared once with its keyword, its groups and how it builds its value
+ * (the paper's, section 4.1; Part II's, "The scene file"). To add a statement, add one entry to
+ * {@link #STATEMENTS}: the reader and the messages (the usage, the keyword list, "did you mean …?") follow
+ * from it.
  */
 final class Grammar {
 
@@ -73,7 +67,7 @@ final class Grammar {
                         Vector3f shift = v.vector(1);
                         float scale = v.positive(2);
                         Color colour = v.colour(3);
-                        out.objects(MeshFiles.read(v, 0).triangles(shift, scale, colour, v.material()));
+                        out.objects(ObjMesh.read(v, 0).triangles(shift, scale, colour, v.material()));
                     }),
             Statement.setting("light", List.of(numbers("position", "x|y|z"), numbers("intensity", "R|G|B")),
                     (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
@@ -134,11 +128,9 @@ final class Grammar {
     }
 
     /**
-     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene. On a surface
-     * that large, float rounds the hit points by more than the lift that keeps a shadow ray from
-     * hitting its own start: a floor made of such a sphere, a trick of many tutorials, is speckled
-     * with shadow acne (from a radius of about 6000 in a view of a few units; a radius of 1000, as
-     * <i>Ray Tracing in One Weekend</i> uses, draws clean).
+     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene: on a surface that
+     * large float rounds hit points by more than a shadow ray's lift, so it shows shadow acne (a radius of
+     * 1000, as <i>Ray Tracing in One Weekend</i> uses, draws clean).
      */
     private static Sphere sphere(StatementValues v, Statement.Output out) throws StatementError {
         Sphere sphere = new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material());

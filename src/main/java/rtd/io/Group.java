@@ -3,18 +3,15 @@ package rtd.io;
 import java.util.List;
 
 /**
- * One group {@code :(…)} of a statement in the scene grammar ({@link Grammar}): what it means
- * in messages ("the centre of 'sphere'") and what it holds. The paper's scene file has groups
- * of numbers only; Part II adds a group that holds one name (a material's or a file's) and the
- * {@code key=value} pairs of a material.
+ * One group {@code :(…)} of a statement of the {@link Grammar}: what it means in messages and what it holds
+ * (numbers in the paper; a name, a path or a material's {@code key=value} pairs in Part II).
  *
  * @param meaning what the group is, for messages: "centre", "view direction"
  * @param kind    what it holds
  * @param shape   how it is written, for "write it as …": {@code x|y|z}, {@code path}
  * @param size    how many numbers a {@link Kind#NUMBERS} group holds; 1 for the others
  * @param keys    the keys a {@link Kind#PROPERTIES} group may hold; empty for the others
- * @param orAt    whether the group may be written {@code (at x|y|z)} instead, a point to look at
- *                (Part III, "A camera that looks at a point")
+ * @param orAt    whether it may be written {@code (at x|y|z)}, a point to look at (Part III)
  */
 record Group(String meaning, Kind kind, String shape, int size, List<String> keys, boolean orAt) {
 

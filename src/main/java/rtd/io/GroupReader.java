@@ -5,11 +5,9 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Reads the groups of a statement, {@code :(…)} each, into {@link WrittenGroups}: numbers separated
- * by '|', a name, a file path, or {@code key=number} properties, as the statement's {@link Group}s
- * say; a view direction may be written {@code (at x|y|z)}, a point to look at. Each mistake in them
- * is worded at its place, with the statement's usage or a hint. It reads at the {@link LineCursor}
- * it shares with the {@link StatementReader} that reads the rest of the line.
+ * Reads the groups {@code :(…)} of a statement into {@link WrittenGroups}, as its {@link Group}s say, at the
+ * {@link LineCursor} it shares with the {@link StatementReader}; each mistake is worded at its place, with
+ * the usage or a hint.
  */
 final class GroupReader {
 
@@ -77,14 +75,14 @@ final class GroupReader {
     private boolean atWordAt() {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
-        return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && ByteClasses.isSpace(bytes[p + 2]);
+        return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
     }
 
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
     private void readName(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && (ByteClasses.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
+        while (cursor.pos < bytes.length && (TextBytes.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
             cursor.pos++;
         }
         if (cursor.pos == start) {
@@ -107,7 +105,7 @@ final class GroupReader {
             return "a name holds only letters, digits, '_' and '-'";
         }
         int end = start;
-        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !ByteClasses.isLineBreak(cursor.bytes[end])) {
+        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !TextBytes.isLineBreak(cursor.bytes[end])) {
             end++;
         }
         String properties = cursor.source.text(start, end).strip();
@@ -121,7 +119,7 @@ final class GroupReader {
     private void readPath(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !ByteClasses.isLineBreak(bytes[cursor.pos])
+        while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !TextBytes.isLineBreak(bytes[cursor.pos])
                 && !cursor.atNextGroup()) {
             cursor.pos++;
         }
@@ -130,7 +128,7 @@ final class GroupReader {
                     statement, group);
         }
         int nameEnd = cursor.pos;
-        while (ByteClasses.isBlank(cursor.bytes[nameEnd - 1])) {
+        while (TextBytes.isBlank(cursor.bytes[nameEnd - 1])) {
             nameEnd--; // the group is not empty, so a byte that is no blank stands before
         }
         written.add(Float.NaN, start, nameEnd);
@@ -174,7 +172,7 @@ final class GroupReader {
     /** A key of a properties group: its index among the group's keys; known and not given before. */
     private int readKey(Statement statement, Group group) throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[cursor.pos])) {
+        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
             cursor.pos++;
         }
         if (cursor.pos == start) {
@@ -184,7 +182,7 @@ final class GroupReader {
         String word = cursor.source.text(start, cursor.pos);
         int key = group.keys().indexOf(word);
         if (key < 0) {
-            String nearest = Suggestions.nearest(word, group.keys());
+            String nearest = Hints.nearest(word, group.keys());
             throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
                     ? "did you mean '" + nearest + "'?"
                     : "the keys are " + quotedList(group.keys()));
@@ -202,8 +200,8 @@ final class GroupReader {
     }
 
     /**
-     * Too many numbers in a group; where the line has too few groups, the hint says this group was
-     * likely left out (its numbers are the next group's): {@code sphere:(3|8|-1):(0|127|255)}.
+     * Too many numbers in a group; on a line with too few groups the hint says this group was likely left
+     * out.
      */
     private StatementError tooManyNumbers(Statement statement, Group group, int groupStart) {
         String message = "too many numbers in %s: it takes " + contents(group);
@@ -237,7 +235,7 @@ final class GroupReader {
     /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
     private float readNumber() throws StatementError {
         tokenStart = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && !ByteClasses.isDelimiter(cursor.bytes[cursor.pos])) {
+        while (cursor.pos < cursor.bytes.length && !TextBytes.isDelimiter(cursor.bytes[cursor.pos])) {
             cursor.pos++;
         }
         if (cursor.pos == tokenStart) {
@@ -253,8 +251,8 @@ final class GroupReader {
     }
 
     /**
-     * The error for the token just read, which is no number: at an invisible character that
-     * starts it or follows a number (which {@link #error} names), else at the token, with a hint.
+     * The error for a token that is no number: at an invisible character that starts it or follows a number,
+     * else at the token, with a hint.
      */
     private StatementError notANumber() {
         int invisible = firstInvisible(tokenStart, cursor.pos);

@@ -12,13 +12,9 @@ import javax.imageio.ImageTypeSpecifier;
 import javax.imageio.ImageWriter;
 
 /**
- * The file format of the picture, chosen by the output's extension: {@code .png}, {@code .jpg},
- * {@code .bmp} and whatever else {@code javax.imageio} can write for an RGB picture.
- *
- * <p>PNG, the default, is known without asking {@code javax.imageio}, whose start takes longer
- * than a small render: a run that writes PNG can start it on a spare thread ({@link ImageWriting#warmUp})
- * while the scene is read. Any other extension is looked up at once, so that one it cannot
- * write is a mistake on the command line, found before any work.
+ * The picture's file format, by the output's extension: {@code .png}, {@code .jpg}, {@code .bmp}, whatever
+ * {@code javax.imageio} writes for RGB. PNG is known without starting {@code javax.imageio} (slower than a
+ * small render); any other is looked up at once, so that one it cannot write is a command-line mistake.
  *
  * @param extension the extension in lower case, without the dot ("png", "jpg")
  */
@@ -37,8 +33,8 @@ public record ImageFormat(String extension) {
     }
 
     /**
-     * Whether this is {@link #PNG}. Compared by the extension, not by the record's
-     * {@code equals}, whose first call sets up method handles while a run is starting.
+     * Whether this is {@link #PNG}, by the extension: the record's first {@code equals} sets up method
+     * handles.
      */
     public boolean isPng() {
         return extension.equals(PNG.extension);
@@ -70,10 +66,7 @@ public record ImageFormat(String extension) {
         return writerFor(extension).orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
     }
 
-    /**
-     * A writer for files with {@code extension} that can encode an RGB picture without alpha: the
-     * WBMP writer, for one, writes only black and white, and is not offered.
-     */
+    /** A writer for {@code extension} that encodes RGB without alpha (not WBMP's, black and white only). */
     private static Optional<ImageWriter> writerFor(String extension) {
         ImageTypeSpecifier rgb = ImageTypeSpecifier.createFromBufferedImageType(BufferedImage.TYPE_INT_RGB);
         Iterator<ImageWriter> writers = ImageIO.getImageWritersBySuffix(extension);

@@ -1,9 +1,12 @@
 package rtd.io;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBuffer;
 import java.awt.image.DataBufferInt;
 import java.awt.image.DirectColorModel;
 import java.awt.image.Raster;
+import java.awt.image.SampleModel;
+import java.awt.image.SinglePixelPackedSampleModel;
 import java.awt.image.WritableRaster;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -19,11 +22,8 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 import rtd.image.Picture;
 
 /**
- * Encodes a {@link Picture} through {@code javax.imageio}, the JDK's own image writers, in the
- * {@link ImageFormat} of the output.
- *
- * <p>The picture's array is handed to {@code javax.imageio} as it is, without a copy, as an
- * RGB image without alpha (a JPEG cannot hold alpha).
+ * Encodes a {@link Picture} through {@code javax.imageio} in its {@link ImageFormat}, handing over its array
+ * without a copy as RGB without alpha.
  */
 public final class ImageWriting {
 
@@ -33,18 +33,17 @@ public final class ImageWriting {
     }
 
     /**
-     * Starts {@code javax.imageio} and the writer of {@code format} on a daemon thread, by
-     * encoding a picture of one pixel into nothing: loading its classes takes longer than a small
-     * render, and can happen while the scene is read. Wait for the result before writing, so
-     * that two threads never load the same classes at once.
+     * Starts {@code javax.imageio} and the writer of {@code format} on a daemon thread (loading it takes
+     * longer than a small render) by writing one pixel into nothing. Wait for the result before writing, so
+     * that two threads never load the same classes.
      */
     public static CompletableFuture<Void> warmUp(ImageFormat format) {
         return warmUp(format, () -> { });
     }
 
     /**
-     * As {@link #warmUp(ImageFormat)}, and then runs {@code then} on the same thread, once the
-     * writer is ready: more of the caller's warming up, which the result does not wait for.
+     * As {@link #warmUp(ImageFormat)}, then runs {@code then} on that thread; the result does not wait for
+     * it.
      */
     public static CompletableFuture<Void> warmUp(ImageFormat format, Runnable then) {
         CompletableFuture<Void> done = new CompletableFuture<>();
@@ -63,8 +62,8 @@ public final class ImageWriting {
     }
 
     /**
-     * Writes {@code picture} to {@code out} in {@code format}, telling {@code progress} the
-     * fraction written (0 to 1) as it goes. {@code out} is flushed, not closed.
+     * Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction
+     * written.
      */
     public static void write(Picture picture, ImageFormat format, OutputStream out, DoubleConsumer progress)
             throws IOException {
@@ -87,9 +86,8 @@ public final class ImageWriting {
     }
 
     /**
-     * The writer's defaults, but for PNG a low deflate level (quality 0.9), still lossless: it
-     * writes in about half the time a somewhat larger file; rtd's pictures are mostly flat areas
-     * of colour, which any level compresses well.
+     * The writer's defaults, but for PNG a low deflate level (quality 0.9), still lossless: about half the
+     * time for a little larger file.
      */
     private static ImageWriteParam parameters(ImageWriter writer, ImageFormat format) {
         ImageWriteParam parameters = writer.getDefaultWriteParam();
@@ -140,6 +138,48 @@ public final class ImageWriting {
 
         @Override
         public void writeAborted(ImageWriter source) {
+        }
+    }
+
+    /**
+     * A {@link Picture}'s layout, one int {@code 0xRRGGBB} a pixel, row by row, whose {@link #getPixels}
+     * reads the array directly: the JDK's goes through the data buffer's methods, slow before the JIT
+     * compiles them. The samples are the same.
+     */
+    static final class PackedRgbSamples extends SinglePixelPackedSampleModel {
+
+        /** The layout of a {@code width × height} picture. */
+        PackedRgbSamples(int width, int height) {
+            super(DataBuffer.TYPE_INT, width, height, RGB_MASKS);
+        }
+
+        /** The same layout at another size: the PNG writer copies each row into a raster of its own first. */
+        @Override
+        public SampleModel createCompatibleSampleModel(int width, int height) {
+            return new PackedRgbSamples(width, height);
+        }
+
+        @Override
+        public int[] getPixels(int x, int y, int w, int h, int[] samples, DataBuffer data) {
+            if (!(data instanceof DataBufferInt ints) || ints.getNumBanks() != 1 || x < 0 || y < 0 || w < 0 || h < 0
+                    || x + w > getWidth() || y + h > getHeight()) {
+                return super.getPixels(x, y, w, h, samples, data); // as the JDK does it, with its checks
+            }
+            int[] into = samples != null ? samples : new int[3 * w * h];
+            int[] rgb = ints.getData();
+            int width = getScanlineStride();
+            int k = 0;
+            for (int row = y; row < y + h; row++) {
+                int from = ints.getOffset() + row * width + x;
+                for (int i = from; i < from + w; i++) {
+                    int pixel = rgb[i];
+                    into[k] = pixel >>> 16 & 0xFF;
+                    into[k + 1] = pixel >>> 8 & 0xFF;
+                    into[k + 2] = pixel & 0xFF;
+                    k += 3;
+                }
+            }
+            return into;
         }
     }
 }

@@ -25,11 +25,7 @@ final class LineCursor {
         this.lineStart = start;
     }
 
-    /**
-     * Lets the bytes go once the file is read. A parse lasts long enough for the collector to
-     * move the cursor to the old generation, where nothing finds it dead before a concurrent
-     * mark; as long as it points to the bytes, they would stay through the build and the render.
-     */
+    /** Lets the bytes go once the file is read, as {@link SourceText#close} does. */
     void release() {
         bytes = null;
     }
@@ -40,7 +36,7 @@ final class LineCursor {
             return false;
         }
         int after = pos + 1;
-        while (after < bytes.length && ByteClasses.isSpace(bytes[after])) {
+        while (after < bytes.length && TextBytes.isSpace(bytes[after])) {
             after++;
         }
         return after < bytes.length && bytes[after] == '(';
@@ -52,20 +48,20 @@ final class LineCursor {
 
     /** Skips spaces and tabs, not a carriage return: it ends a line ({@link #skipToNextLine}). */
     void skipBlanks() {
-        while (pos < bytes.length && ByteClasses.isSpace(bytes[pos])) {
+        while (pos < bytes.length && TextBytes.isSpace(bytes[pos])) {
             pos++;
         }
     }
 
     /** Whether the cursor is at the end of the file, of the line, or at a {@code //} comment. */
     boolean atEndOfStatement() {
-        return pos >= bytes.length || ByteClasses.isLineBreak(bytes[pos])
+        return pos >= bytes.length || TextBytes.isLineBreak(bytes[pos])
                 || pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
     }
 
     /** Goes past the next line break: LF, CR LF, or a CR alone, as old Mac files end lines. */
     void skipToNextLine() {
-        while (pos < bytes.length && !ByteClasses.isLineBreak(bytes[pos])) {
+        while (pos < bytes.length && !TextBytes.isLineBreak(bytes[pos])) {
             pos++;
         }
         if (pos < bytes.length) {

@@ -8,11 +8,9 @@ import java.util.regex.Pattern;
 import rtd.geometry.Material;
 
 /**
- * Three slips with materials that are no mistakes, so the scene is drawn, but that change nothing
- * in the picture, so that a student would wonder why: a material no object names; an {@code ior}
- * with no {@code transparency}, which bends no light as none goes through; and materials in a
- * scene without a light, which is drawn in the paper's flat colours. Each is told at the
- * material's line, as a mistake is.
+ * Three slips with materials that change nothing in the picture, told as warnings at the material's line: a
+ * material no object names; an {@code ior} without {@code transparency}; materials in a scene without a
+ * light, drawn in the paper's flat colours.
  */
 final class MaterialWarnings {
 
@@ -22,26 +20,23 @@ final class MaterialWarnings {
     private MaterialWarnings() {
     }
 
-    /**
-     * The warnings for the material {@code definitions} (in file order), of which the objects
-     * {@code named} some, in a scene with or without a light.
-     */
+    /** The warnings for the {@code definitions}, in file order, of which objects {@code named} some. */
     static List<SceneError> of(List<SceneContents.Located<SceneContents.Named>> definitions, Set<String> named, boolean lit) {
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !definitions.isEmpty()) {
-            warnings.add(at(definitions.get(0).place(), "materials change nothing here: the scene has no light, so it is "
+            warnings.add(definitions.get(0).place().saying("materials change nothing here: the scene has no light, so it is "
                     + "drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
         }
         for (SceneContents.Located<SceneContents.Named> definition : definitions) {
             String name = definition.value().name();
             Material material = definition.value().material();
             if (!named.contains(name)) {
-                warnings.add(at(definition.place(), "material '" + name + "' is defined, but no object names it",
+                warnings.add(definition.place().saying("material '" + name + "' is defined, but no object names it",
                         "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):(" + name
                                 + ")"));
             }
             if (lit && material.ior() != 1 && material.transparency() <= 0) { // without a light, nothing is bent anyway
-                warnings.add(at(atTheIor(definition.place()), "the ior of material '" + name + "' bends nothing: its transparency "
+                warnings.add(atTheIor(definition.place()).saying("the ior of material '" + name + "' bends nothing: its transparency "
                         + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
@@ -49,8 +44,8 @@ final class MaterialWarnings {
     }
 
     /**
-     * The first {@link SceneParser#MAX_ERRORS} warnings, as many as a run shows of mistakes, and a
-     * last line for the rest, at the first of them: a library of materials could print thousands.
+     * The first {@link SceneParser#MAX_ERRORS} warnings and a last line for the rest: a library of materials
+     * could print thousands.
      */
     private static List<SceneError> atMost(List<SceneError> warnings) {
         int most = SceneParser.MAX_ERRORS;
@@ -72,9 +67,5 @@ final class MaterialWarnings {
 
     private static SceneError at(SceneError place, int column) {
         return new SceneError(place.file(), place.line(), column, place.message(), place.sourceLine(), place.help());
-    }
-
-    private static SceneError at(SceneError place, String message, String help) {
-        return new SceneError(place.file(), place.line(), place.column(), message, place.sourceLine(), help);
     }
 }

@@ -1,7 +1,15 @@
 package rtd.io;
 
+import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.stream.IntStream;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
@@ -11,15 +19,12 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The triangles of a Wavefront OBJ file as {@link ObjReader} read them: the vertices and normals,
- * and for each triangle, in face order, the index of each corner's vertex and normal. A
- * {@code mesh} statement (Part II, "Geometry") places them in the scene with
- * {@link #triangles}. The arrays are the reader's own and are never changed; those of the
- * triangles may be longer than {@code 3 * count}.
+ * The triangles of the OBJ file a {@code mesh} names (Part II, "Geometry"): found and read by {@link #read}
+ * through {@link ObjReader}, placed in the scene by {@link #triangles}. The arrays are never changed.
  *
  * @param vertices      x, y, z of each vertex
  * @param normals       x, y, z of each normal
- * @param corners       three vertex indices per triangle
+ * @param corners       three vertex indices per triangle (the array may be longer)
  * @param cornerNormals three normal indices per triangle, or −1 for a triangle with no normals
  * @param count         the number of triangles
  */
@@ -28,18 +33,15 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
     /** Meshes of fewer triangles are placed on the calling thread: starting tasks would take longer. */
     private static final int PARALLEL_FROM = 1 << 15;
     /**
-     * How many triangles share one array of numbers (see {@link Triangle}): 442 KiB of them,
-     * under half of G1's smallest region (1 MiB). A larger array would be "humongous": put
-     * straight into the old generation, where a few of them, large against a heap that has
-     * not grown yet, start a concurrent mark of the whole heap.
+     * How many triangles share one array of numbers: 442 KiB, under half of G1's smallest region, so that it
+     * is not "humongous" (put straight into the old generation).
      */
     private static final int BLOCK = 1 << 12;
 
     /**
-     * The triangles, in order, each corner p moved to {@code scale·p + shift}. A triangle whose
-     * every corner named a normal is smooth, with those normals as written: a scale above 0
-     * does not turn them. A large mesh is placed in blocks on all cores; each triangle is the
-     * same whichever thread makes it.
+     * The triangles, in order, each corner p moved to {@code scale·p + shift}; one whose corners all name
+     * normals is smooth. A large mesh is placed in blocks on all cores, each triangle the same whichever
+     * thread makes it.
      */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];
@@ -92,5 +94,91 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
             vectors[i] = new Vector3f(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
         }
         return vectors;
+    }
+
+    // ---- finding and reading the file ------------------------------------------------------
+
+    /** Larger files do not fit in one Java array. */
+    private static final long MAX_FILE_SIZE = Integer.MAX_VALUE - 8;
+
+    /**
+     * The mesh in the OBJ file that group {@code g} names, relative to the scene's folder. A file that cannot
+     * be read is an error at the path; mistakes inside it are located in it, each naming the scene's line.
+     */
+    static ObjMesh read(StatementValues values, int g) throws StatementError {
+        SourceText scene = values.source();
+        String written = values.name(g);
+        Path file;
+        String shown;
+        try {
+            Path path = Path.of(written);
+            file = scene.folder().resolve(path);
+            shown = path.isAbsolute() ? written : shownName(scene.name(), path);
+        } catch (InvalidPathException e) {
+            throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
+        }
+        byte[] bytes;
+        try {
+            bytes = readFile(file);
+        } catch (IOException e) {
+            throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
+                    e instanceof NoSuchFileException && written.indexOf('\\') >= 0 ? Hints.forWindowsPath(written)
+                            : "a mesh's path is relative to the folder of the scene file");
+        }
+        ObjMesh mesh;
+        try {
+            try (SourceText obj = new SourceText(shown, bytes)) {
+                mesh = ObjReader.read(obj);
+            }
+        } catch (SceneException e) {
+            String usedBy = "this file is used by " + scene.name() + ":" + values.line();
+            List<SceneError> errors = e.errors().stream().map(error -> error.saying(error.message(),
+                    error.help() == null ? usedBy : error.help() + "; " + usedBy)).toList();
+            throw new StatementError(values.placeOfValue(g, 0), errors);
+        }
+        if (mesh.count() == 0) {
+            // else the scene would lose the mesh without a word, and the warning of an empty picture would blame the camera
+            throw values.errorAtValue(g, 0, "the mesh file '" + shown + "' has no faces: rtd found no 'f' line in it",
+                    "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
+                            + "skipped too; a mesh needs at least one face");
+        }
+        return mesh;
+    }
+
+    /** The OBJ file's name as the user knows it: the scene's name, with the path in place of its file name. */
+    private static String shownName(String sceneName, Path path) {
+        try {
+            return Path.of(sceneName).resolveSibling(path).toString();
+        } catch (InvalidPathException e) {
+            return path.toString();
+        }
+    }
+
+    private static byte[] readFile(Path file) throws IOException {
+        if (Files.isDirectory(file)) {
+            throw new FileSystemException(file.toString(), null, "it is a folder, not a file");
+        }
+        if (Files.exists(file) && !Files.isRegularFile(file)) {
+            // a device or a pipe: it might never end
+            throw new FileSystemException(file.toString(), null, "it is not a regular file");
+        }
+        if (Files.exists(file) && Files.size(file) > MAX_FILE_SIZE) {
+            throw new FileSystemException(file.toString(), null, "it is larger than 2 GB");
+        }
+        return SceneFileReader.readWhole(file); // not Files.readAllBytes: it keeps a buffer as large as the file
+    }
+
+    /** Why a file could not be read, in words for a person. */
+    private static String reason(IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return "no such file";
+        }
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException failure && failure.getReason() != null) {
+            return failure.getReason().toLowerCase(Locale.ROOT);
+        }
+        return e.getMessage() != null ? e.getMessage() : "an input error";
     }
 }

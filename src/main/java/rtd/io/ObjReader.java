@@ -5,18 +5,11 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * Reads the part of the Wavefront OBJ format that a {@code mesh} statement uses (Part II,
- * "Geometry"): {@code v x y z [w]} vertices, {@code vn x y z} normals and {@code f} faces whose corners
- * are written {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, with indices counted from 1
- * or, when negative, back from the last vertex or normal read so far. A face of more than three
- * corners is split into triangles by {@link EarClipping}. {@code #} starts a comment; every
- * other line ({@code o}, {@code g}, {@code s}, {@code usemtl}, {@code mtllib}, {@code vt}, …) is
- * skipped whatever it holds, as are numbers after the third on a {@code v} line (a {@code w}, or
- * the vertex colours some tools write) and texture indices.
- *
- * <p>It works on the file's bytes, like the scene reader, since a model may have millions of
- * faces. Each mistake is located in the OBJ file, as in a scene file, and reading goes on with
- * the next line.
+ * Reads the Wavefront OBJ that a {@code mesh} uses (Part II, "Geometry"): {@code v x y z [w]},
+ * {@code vn x y z} and {@code f} with corners {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, indices
+ * from 1 or, negative, back from the last read. Faces of more corners go to {@link EarClipping}; {@code #}
+ * starts a comment; other lines, extra numbers on a {@code v} line and texture indices are skipped. Each
+ * mistake is located in the OBJ file and reading goes on with the next line.
  */
 final class ObjReader {
 
@@ -46,18 +39,17 @@ final class ObjReader {
     private final List<SceneError> errors = new ArrayList<>();
 
     /**
-     * The mesh in {@code source}, or every mistake found in it (up to one more than
-     * {@link SceneParser#MAX_ERRORS}, so that the caller can tell there were more). A file with a
-     * NUL byte is no text, and is refused at it before any line is read.
+     * The mesh in {@code source}, or its mistakes (up to one more than {@link SceneParser#MAX_ERRORS}); a
+     * NUL byte refuses the file.
      */
     static ObjMesh read(SourceText source) throws SceneException {
         byte[] bytes = source.bytes();
         for (int i = 0; i < bytes.length; i++) {
             if (bytes[i] == 0) {
-                throw new SceneException(List.of(NotText.inObjFile(source, i)), false);
+                throw new SceneException(List.of(TextBytes.inObjFile(source, i)), false);
             }
         }
-        return new ObjReader(source, ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
+        return new ObjReader(source, TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
     }
 
     private ObjReader(SourceText source, int start) {
@@ -252,7 +244,7 @@ final class ObjReader {
 
     private StatementError cornerError(int start) {
         int after = start;
-        while (!ByteClasses.endsObjWord(bytes, after)) {
+        while (!TextBytes.endsObjWord(bytes, after)) {
             after++;
         }
         return error(start, "expected a corner of the face, found " + (after > start ? "'" + source.text(start, after) + "'"
@@ -263,7 +255,7 @@ final class ObjReader {
 
     /** Whether {@link #pos} is at a blank, a comment, the end of the line or of the file. */
     private boolean atTokenEnd() {
-        return ByteClasses.endsObjWord(bytes, pos);
+        return TextBytes.endsObjWord(bytes, pos);
     }
 
     private boolean at(char c) {
@@ -271,7 +263,7 @@ final class ObjReader {
     }
 
     private void skipBlanks() {
-        while (pos < bytes.length && ByteClasses.isBlank(bytes[pos])) {
+        while (pos < bytes.length && TextBytes.isBlank(bytes[pos])) {
             pos++;
         }
     }

@@ -49,11 +49,7 @@ final class SceneContents implements Statement.Output {
     /** The material names of the objects built at once, with a material defined above them. */
     final Set<String> namedAtOnce = new HashSet<>();
     int statementCount;
-    /**
-     * The first line that starts with a line number, as the paper's listing does, and how many
-     * do: they are one mistake (the listing was pasted with its numbers), reported once, and do
-     * not count towards {@link SceneParser#MAX_ERRORS} while reading.
-     */
+    /** The first line that starts with a line number, and how many do: one mistake, reported once. */
     SceneError firstLineNumber;
     int lineNumbers;
     /** Where {@link #object} puts objects: {@link #objects}, or the list a pending object is built into. */
@@ -120,11 +116,7 @@ final class SceneContents implements Statement.Output {
         litWarnings.add(warning);
     }
 
-    /**
-     * The material {@code name} if it is defined above the line being read, else null. In a scene
-     * without mistakes that is the file's one definition of the name; in a scene with mistakes the
-     * objects are only checked, and no check depends on the material.
-     */
+    /** The material {@code name} if it is defined above the line being read, else null. */
     Material materialAbove(String name) {
         for (Located<Named> definition : materials) {
             if (definition.value().name().equals(name)) {

@@ -13,6 +13,11 @@ package rtd.io;
  */
 public record SceneError(String file, int line, int column, String message, String sourceLine, String help) {
 
+    /** Another message and help at the same place. */
+    SceneError saying(String message, String help) {
+        return new SceneError(file, line, column, message, sourceLine, help);
+    }
+
     /**
      * The error as a compiler prints it:
      * <pre>
@@ -49,9 +54,8 @@ public record SceneError(String file, int line, int column, String message, Stri
     }
 
     /**
-     * The part of a long line that is shown: at most {@value #WIDTH} characters around the column,
-     * with an ellipsis for each end cut off, so that a line of 50 MB prints one short line (the
-     * column number in the message stays exact).
+     * The part of a long line shown: at most {@value #WIDTH} characters around the column, an ellipsis for
+     * each end cut off.
      *
      * @param shown        the text to print
      * @param caretPadding what goes before the caret: spaces, and the line's tabs so that it lines up

@@ -9,12 +9,9 @@ import java.util.Arrays;
 import java.util.Locale;
 
 /**
- * Reads a scene file into memory in bounded time and memory, whatever the file is: a file larger
- * than {@link SceneIO#MAX_SCENE_BYTES} is refused before it is read, one within it is read whole,
- * and a stream that never ends
- * ({@code /dev/zero}, a pipe) is read in chunks, each checked as it arrives, so that reading stops
- * at the first chunk with a byte that is not text (a NUL byte, bytes that are not UTF-8), or once
- * the stream has grown past the limit. The parser then names that byte, with its line and column.
+ * Reads a scene file into memory in bounded time and memory: a file over {@link SceneIO#MAX_SCENE_BYTES} is
+ * refused before it is read, and a stream that never ends ({@code /dev/zero}, a pipe) is read in chunks,
+ * each checked as it arrives, up to the first byte that is not text or the limit.
  */
 final class SceneFileReader {
 
@@ -51,10 +48,9 @@ final class SceneFileReader {
     }
 
     /**
-     * All bytes of the regular file {@code path}, which had {@code size} of them (more if it
-     * grew meanwhile), read {@value #WHOLE_FILE_PIECE} bytes at a time: Java reads a file into
-     * an array through a buffer outside the heap as large as each read, and keeps that buffer
-     * for the thread ({@code Files.readAllBytes} would keep one as large as the file).
+     * All bytes of the regular file {@code path}, read {@value #WHOLE_FILE_PIECE} bytes at a time: Java
+     * keeps a buffer outside the heap as large as each read for the thread ({@code Files.readAllBytes} one
+     * as large as the file).
      */
     static byte[] readWhole(Path path) throws IOException {
         return readWhole(path, Files.size(path));
@@ -83,9 +79,8 @@ final class SceneFileReader {
     }
 
     /**
-     * A stream of unknown length, read in chunks, each checked as it arrives: reading stops at
-     * the first chunk with a byte that is not text (a character may be cut at the end of a
-     * chunk; its rest comes with the next), or past the limit.
+     * A stream of unknown length, read in chunks up to the first with a byte that is not text, or past the
+     * limit.
      */
     private static byte[] readStream(Path path, InputStream in, int limit) throws IOException {
         byte[] bytes = new byte[Math.min(limit + 1, CHUNK)];
@@ -104,7 +99,7 @@ final class SceneFileReader {
             }
             filled += read;
             int whole = wholeCharacters(bytes, checked, filled);
-            if (NotText.firstBadByte(bytes, checked, whole) >= 0) {
+            if (TextBytes.firstBadByte(bytes, checked, whole) >= 0) {
                 break; // the rest cannot change the verdict: not a scene
             }
             checked = whole;

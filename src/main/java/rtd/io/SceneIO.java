@@ -22,20 +22,15 @@ import rtd.scene.Scene;
  */
 public final class SceneIO {
 
-    /**
-     * The largest scene file rtd reads, 1 GiB: about 20 million spheres, more than fit in the
-     * memory of most machines once read. Java could not hold a file of over 2 GiB in one piece.
-     */
+    /** The largest scene file rtd reads, 1 GiB: about 20 million spheres. */
     public static final long MAX_SCENE_BYTES = 1L << 30;
 
     private SceneIO() {
     }
 
     /**
-     * Reads the scene file at {@code path} (UTF-8), in bounded memory and time: a file over
-     * {@link #MAX_SCENE_BYTES} is refused, and a stream such as {@code /dev/zero} is read only
-     * up to its first byte that is not text ({@link SceneFileReader}). The OBJ files of its
-     * meshes are found relative to the folder it is in.
+     * Reads the scene file at {@code path} (UTF-8) in bounded memory and time ({@link SceneFileReader}); its
+     * meshes' OBJ files are found from its folder.
      *
      * @throws SceneException if the file has mistakes; it lists them all
      * @throws IOException    if the file cannot be read
@@ -75,17 +70,7 @@ public final class SceneIO {
 
     /** As {@link #parseScene(String, String)}, with the OBJ files of meshes found relative to {@code meshFolder}. */
     public static Scene parseScene(String name, String text, Path meshFolder) throws SceneException {
-        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), meshFolder);
-    }
-
-    /** Reads a scene from raw bytes; {@code name} stands for the file in error messages. */
-    public static Scene parseScene(String name, byte[] bytes) throws SceneException {
-        return parseScene(name, bytes, Path.of(""));
-    }
-
-    /** As {@link #parseScene(String, byte[])}, with the OBJ files of meshes found relative to {@code meshFolder}. */
-    public static Scene parseScene(String name, byte[] bytes, Path meshFolder) throws SceneException {
-        return parse(new SourceText(name, bytes, meshFolder), null);
+        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), meshFolder, null);
     }
 
     /** As {@link #parseScene(String, String)}, adding the scene's warnings to {@code warnings}. */
@@ -93,7 +78,7 @@ public final class SceneIO {
         return parseScene(name, text.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
     }
 
-    /** As {@link #parseScene(String, byte[], Path)}, adding the scene's warnings to {@code warnings}. */
+    /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}; warnings go to {@code warnings} (null: dropped). */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
         return parse(new SourceText(name, bytes, meshFolder), warnings);
@@ -107,11 +92,9 @@ public final class SceneIO {
     }
 
     /**
-     * Writes {@code picture} to {@code output} in {@code format} ({@link ImageWriting}), all or
-     * nothing: the picture goes to a temporary file in the same folder first and replaces
-     * {@code output} only when it is complete, so a failed write leaves any earlier file exactly
-     * as it was. The temporary file ({@code .NAME.<hex>.tmp}) is removed on failure and when a
-     * signal stops the JVM ({@link TemporaryFiles}). {@code progress} hears the fraction written.
+     * Writes {@code picture} to {@code output} all or nothing: into a temporary file beside it
+     * ({@link TemporaryFiles}), which replaces {@code output} only when complete and is removed on failure.
+     * {@code progress} hears the fraction written.
      */
     public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
             throws IOException {
@@ -131,10 +114,8 @@ public final class SceneIO {
     }
 
     /**
-     * Writes {@code picture} in {@code format} into {@code device}, a FIFO or a character device
-     * such as /dev/null, which stays what it is: it is opened for writing only, never created,
-     * replaced or truncated. A reader of a FIFO gets the picture as it is written (a failed write
-     * leaves it with part of one).
+     * Writes {@code picture} into {@code device}, a FIFO or a device such as /dev/null, opened for writing
+     * only: never created, replaced or truncated.
      */
     public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
             throws IOException {

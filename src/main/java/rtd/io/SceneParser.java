@@ -13,21 +13,14 @@ import rtd.image.Color;
 import rtd.scene.Scene;
 
 /**
- * Reads the scene format of the paper (section 4.1, Listing A.1), as Part II ("The scene file")
- * extends it, from a file's bytes.
+ * Reads a scene file (paper, section 4.1, Listing A.1; Part II, "The scene file"): one statement of the
+ * {@link Grammar} a line, {@code //} comments, any blanks, line ends and a byte-order mark. Text that is not
+ * UTF-8 is refused at its first bad byte; every mistake is reported with line and column, in file order, up
+ * to {@value #MAX_ERRORS}.
  *
- * <p>One statement a line: {@code keyword:(group):(group)…}, the statements being those of the
- * {@link Grammar}. {@code //} starts a comment; blank lines, spaces and tabs around any token,
- * Windows and old Mac line ends (CR LF, a CR alone) and a UTF-8 byte-order mark are all fine.
- * A file that is not UTF-8 text is refused at its first bad byte, before any statement is read.
- * Every mistake is reported with its line and column, in file order, up to {@value #MAX_ERRORS},
- * so that one run shows them all.
- *
- * <p>After the {@link StatementReader} has read every line, what only the whole file can tell is
- * checked here: one camera, one {@code ambient}, one material per name; and the objects that name
- * a material defined further down are built, at their places among the objects. Slips that are no
- * mistakes are told as warnings, located as mistakes are: those of {@link MaterialWarnings}, and
- * a sphere so large that it will show shadow acne in a shaded scene.
+ * After the {@link StatementReader} has read every line, it checks what only the whole file can tell (one
+ * camera, one {@code ambient}, one material per name), builds the objects that name a material defined
+ * further down, and gives the warnings of slips that are no mistakes.
  */
 final class SceneParser {
 
@@ -41,23 +34,23 @@ final class SceneParser {
     }
 
     /**
-     * Reads a scene, or throws every mistake found in it; what is no mistake but likely a slip
-     * goes to {@code warnings} (null: dropped), in file order.
+     * Reads a scene, or throws its mistakes; likely slips go to {@code warnings} (null: dropped), in file
+     * order.
      */
     static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
-        int start = ByteClasses.startsWithByteOrderMark(bytes) ? 3 : 0;
+        int start = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;
         int lines = 1;
         boolean plain = true;
         for (int i = start; i < bytes.length; i++) {
             if (bytes[i] <= '\r') { // one test for the rare bytes: line breaks, control characters, every non-ASCII byte
-                lines += bytes[i] == '\n' || bytes[i] == '\r' && ByteClasses.endsLine(bytes, i) ? 1 : 0;
+                lines += bytes[i] == '\n' || bytes[i] == '\r' && TextBytes.endsLine(bytes, i) ? 1 : 0;
                 plain &= bytes[i] > 0;
             }
         }
-        int bad = plain ? -1 : NotText.firstBadByte(bytes, start, bytes.length);
+        int bad = plain ? -1 : TextBytes.firstBadByte(bytes, start, bytes.length);
         if (bad >= 0) {
-            throw new SceneException(List.of(NotText.error(source, start, bad)), false);
+            throw new SceneException(List.of(TextBytes.error(source, start, bad)), false);
         }
         // Most lines of a large file make one object, so the list is made that long at once: grown
         // line by line, its large arrays would go to the old generation, and stay there long.
@@ -73,11 +66,11 @@ final class SceneParser {
         var ambients = contents.ambients;
         var cameras = contents.cameras;
         for (var second : ambients.subList(Math.min(1, ambients.size()), ambients.size())) {
-            errors.add(found(again(second.place(), "a second 'ambient': a scene has one background colour",
+            errors.add(found(second.place().saying("a second 'ambient': a scene has one background colour",
                     "the first 'ambient' is at line " + ambients.get(0).place().line())));
         }
         for (var second : cameras.subList(Math.min(1, cameras.size()), cameras.size())) {
-            errors.add(found(again(second.place(), "a second camera: a scene has one",
+            errors.add(found(second.place().saying("a second camera: a scene has one",
                     "the first camera is at line " + cameras.get(0).place().line())));
         }
         Map<String, Material> materials = materials(contents.materials, errors);
@@ -114,7 +107,7 @@ final class SceneParser {
         int count = contents.lineNumbers;
         if (first != null) {
             String more = count == 1 ? "" : count == 2 ? ", as does 1 more line" : ", as do " + (count - 1) + " more lines";
-            errors.add(found(again(first, first.message() + more, first.help())));
+            errors.add(found(first.saying(first.message() + more, first.help())));
         }
     }
 
@@ -129,17 +122,14 @@ final class SceneParser {
             if (earlier == null) {
                 materials.put(name, definition.value().material());
             } else {
-                errors.add(found(again(definition.place(), "a second material '" + name + "': each name is defined once",
+                errors.add(found(definition.place().saying("a second material '" + name + "': each name is defined once",
                         "the first '" + name + "' is at line " + earlier.place().line())));
             }
         }
         return materials;
     }
 
-    /**
-     * Every object in file order: those built as they were read, and between them those that
-     * name a material, built now that every material is known; their names go to {@code named}.
-     */
+    /** Every object in file order, those that named a material built now; the names go to {@code named}. */
     private static List<IGeometry> objects(SceneContents contents, Map<String, Material> materials, Set<String> named) {
         if (contents.pending.isEmpty()) {
             return contents.objects;
@@ -156,10 +146,8 @@ final class SceneParser {
     }
 
     /**
-     * Builds an object that names a material into {@code objects}, and answers the name. An
-     * unknown name is an error at the name, unless its definition has a mistake, which is
-     * reported already; the rest of the statement is still checked, so that one run shows all
-     * its mistakes.
+     * Builds an object that names a material into {@code objects}, and answers the name. An unknown name is
+     * an error (unless its definition is broken, which is reported already); the statement is still checked.
      */
     private static String build(SceneContents contents, StatementValues values, Map<String, Material> materials,
             List<IGeometry> objects) {
@@ -167,7 +155,7 @@ final class SceneParser {
         String name = values.name(group);
         Material material = materials.get(name);
         if (material == null && !contents.brokenDefinitions.contains(name)) {
-            String nearest = Suggestions.nearest(name, materials.keySet());
+            String nearest = Hints.nearest(name, materials.keySet());
             contents.addErrors(values.errorAtValue(group, 0, "unknown material '" + name + "'", nearest != null
                     ? "did you mean '" + nearest + "'?"
                     : "define it with a line such as material:(" + name + "):(diffuse=0.9)"));
@@ -186,12 +174,8 @@ final class SceneParser {
         return new SceneContents.Found(error.line(), error.column(), error);
     }
 
-    private static SceneError again(SceneError place, String message, String help) {
-        return new SceneError(place.file(), place.line(), place.column(), message, place.sourceLine(), help);
-    }
-
     private static SceneError atStart(SourceText source, String message, String help) {
-        int start = ByteClasses.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
+        int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
         return new SceneError(source.name(), 1, 1, message, source.lineText(start), help);
     }
 }

@@ -4,12 +4,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 
 /**
- * The bytes of a scene (or OBJ) file and its name, with what an error message needs: the line's
- * text and the column of a byte, counted in characters; and the folder that the file's relative
- * paths (a mesh's OBJ file) start from.
- *
- * <p>Whoever makes one closes it once the file is parsed ({@link #close}), which lets the bytes
- * go.
+ * The bytes of a scene (or OBJ) file, its name and the folder its relative paths start from, with what a
+ * message needs: a line's text, the column of a byte in characters, what stands at a place. Closed once
+ * parsed, which lets the bytes go.
  */
 final class SourceText implements AutoCloseable {
 
@@ -17,10 +14,7 @@ final class SourceText implements AutoCloseable {
     private byte[] bytes;
     private final Path folder;
 
-    /**
-     * A text named {@code name} (the file's name as the user gave it, for messages), whose
-     * relative paths point from {@code folder} (the empty path for the current directory).
-     */
+    /** A text named {@code name} in messages, whose relative paths start from {@code folder}. */
     SourceText(String name, byte[] bytes, Path folder) {
         this.name = name;
         this.bytes = bytes;
@@ -32,27 +26,21 @@ final class SourceText implements AutoCloseable {
         this(name, bytes, Path.of(""));
     }
 
-    /** The file's name as the user gave it, for messages. */
     String name() {
         return name;
     }
 
-    /** The file's contents; {@code null} once closed. */
     byte[] bytes() {
         return bytes;
     }
 
-    /** Where relative paths in the file point from. */
     Path folder() {
         return folder;
     }
 
     /**
-     * Lets the bytes go. A parse lasts long enough for the collector to move this text, and
-     * the readers that share its bytes, to the old generation, where nothing finds them dead
-     * before a concurrent mark (which a short run may never start). As long as they still
-     * point to the bytes, the bytes stay (the whole file, through the build and the render).
-     * Without the pointers, the next young collection frees them.
+     * Lets the bytes go: a parse lasts long enough to move this text to the old generation, where it would
+     * keep the whole file alive through the build and the render.
      */
     @Override
     public void close() {
@@ -62,7 +50,7 @@ final class SourceText implements AutoCloseable {
     /** The text of the line that starts at byte {@code lineStart}, without its line break. */
     String lineText(int lineStart) {
         int end = lineStart;
-        while (end < bytes.length && !ByteClasses.isLineBreak(bytes[end])) {
+        while (end < bytes.length && !TextBytes.isLineBreak(bytes[end])) {
             end++; // a line ends at LF, CR LF or a CR alone (old Mac files)
         }
         return new String(bytes, lineStart, end - lineStart, StandardCharsets.UTF_8);
@@ -97,7 +85,7 @@ final class SourceText implements AutoCloseable {
         if (offset >= bytes.length) {
             return offset > lineStart ? "the end of the line" : "the end of the file";
         }
-        if (ByteClasses.isLineBreak(bytes[offset])) {
+        if (TextBytes.isLineBreak(bytes[offset])) {
             return "the end of the line";
         }
         if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '/') {
@@ -107,8 +95,8 @@ final class SourceText implements AutoCloseable {
             return "'/*'";
         }
         int after = offset + 1;
-        if (ByteClasses.isWordByte(bytes[offset])) {
-            while (after < bytes.length && ByteClasses.isWordByte(bytes[after])) {
+        if (TextBytes.isWordByte(bytes[offset])) {
+            while (after < bytes.length && TextBytes.isWordByte(bytes[after])) {
                 after++; // show a whole word, not its first letter
             }
         }

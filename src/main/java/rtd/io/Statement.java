@@ -9,14 +9,9 @@ import rtd.image.Color;
 import rtd.scene.Light;
 
 /**
- * One statement of the scene grammar, declared once in {@link Grammar}: its keyword, its groups,
- * whether it takes a last, optional material group (Part II, "Light"), and how it builds its
- * value from what was read. {@link StatementReader} reads any statement from this alone.
- *
- * @param keyword       the word the line starts with, such as {@code sphere}
- * @param groups        the groups that must follow, in order
- * @param takesMaterial whether a last {@code :(material)} group may follow them
- * @param builder       checks the values read and hands the statement's value to the scene
+ * One statement of the {@link Grammar}: its keyword, its groups, whether it takes a last, optional material
+ * group (Part II, "Light"), and how it builds its value. {@link StatementReader} reads any statement from
+ * this alone.
  */
 record Statement(String keyword, List<Group> groups, boolean takesMaterial, Builder builder) {
 
@@ -37,23 +32,19 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
         return new Statement(keyword, groups, false, builder);
     }
 
-    /** Builds a statement's value from its groups and gives it to {@code out}. */
+    /**
+     * Checks the values (a broken rule is an error at its value) and gives what the statement makes to
+     * {@code out}.
+     */
     @FunctionalInterface
     interface Builder {
-        /**
-         * Checks the values (each broken rule becomes an error at its value) and gives what the
-         * statement makes to {@code out}. For an object, {@link StatementValues#material()} is the
-         * finish it names, or the default.
-         */
         void build(StatementValues values, Output out) throws StatementError;
     }
 
     /** Where the values that statements make go: the scene being read. */
     interface Output {
-        /** The background colour ({@code ambient}). */
         void ambient(Color colour);
 
-        /** The camera, of either kind. */
         void camera(ICamera camera);
 
         /** One object, at the statement's place among the objects. */
@@ -65,7 +56,6 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
         /** A finish that objects may name, defined under {@code name}. */
         void material(String name, Material material);
 
-        /** A point light. */
         void light(Light light);
 
         /** A warning about the statement that holds only if the scene has a light (a shaded scene). */

@@ -3,10 +3,8 @@ package rtd.io;
 import java.util.List;
 
 /**
- * Ends the reading of one statement with its mistakes; the reader records them and goes on with
- * the next line. Most statements fail with one error; a {@code mesh} whose OBJ file has
- * mistakes fails with all of them, located in that file, but ordered among the scene's errors
- * by {@link #place}, the statement's own place.
+ * Ends the reading of one statement with its mistakes; the reader records them and goes on. A {@code mesh}
+ * whose OBJ file has mistakes fails with all of them, ordered at {@link #place}, the statement's own place.
  */
 final class StatementError extends Exception {
 

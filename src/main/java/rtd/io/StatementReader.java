@@ -4,16 +4,10 @@ import java.util.List;
 import rtd.geometry.Material;
 
 /**
- * Reads the statements of a scene file into its {@link SceneContents}: the syntax
- * {@code keyword:(group):(group)…} of the scene file (paper, section 4.1, and Part II, "The scene
- * file"), for any statement of the {@link Grammar}. It reads a line's keyword and what may follow
- * its groups (comments, mistakes); its {@link GroupReader} reads the groups.
- *
- * <p>Each mistake becomes a {@link SceneError} with line and column, and reading goes on with the
- * next line. It works on bytes, not on a String. An object that names a material is built at once
- * if the material is defined above it ({@link SceneContents#materialAbove}); else it waits until
- * the whole file is read, as the material may be defined further down. Every other statement is
- * built at once.
+ * Reads each line of a scene file, {@code keyword:(group):(group)…}, into the {@link SceneContents}: its
+ * keyword and what follows its groups; its {@link GroupReader} reads the groups. Each mistake becomes an
+ * error at its place and reading goes on with the next line. An object that names a material defined further
+ * down waits until the whole file is read.
  */
 final class StatementReader {
 
@@ -103,9 +97,8 @@ final class StatementReader {
     }
 
     /**
-     * After a mistake in a statement that defines a name (its first group is a name, as in
-     * {@code material:}), keeps the name if it was read: the objects that use it are then not
-     * also told that it is unknown.
+     * After a mistake in a {@code material:} whose name was read, keeps the name: objects that use it are
+     * not also told it is unknown.
      */
     private void keepNameOfBrokenDefinition() {
         if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
@@ -115,13 +108,12 @@ final class StatementReader {
     }
 
     /**
-     * Reads the keyword at {@link #pos}: the statement it names, or null if the line holds only a
-     * line number. A line number, as in the paper's listing, is noted in the contents (which report
-     * them all as one mistake) and the statement after it is read as if it were not there.
+     * Reads the keyword: its statement, or null for a line of only a line number (as in the paper's listing,
+     * noted once in the contents; a statement after it is read as if it were not there).
      */
     private Statement readKeyword(boolean afterLineNumber) throws StatementError {
         statementStart = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[cursor.pos])) {
+        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
             cursor.pos++;
         }
         if (cursor.pos == statementStart) {
@@ -148,12 +140,12 @@ final class StatementReader {
                 return false;
             }
         }
-        return cursor.atEndOfStatement() || ByteClasses.isSpace(cursor.bytes[cursor.pos]);
+        return cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]);
     }
 
     private StatementError unknownKeyword(int keywordStart) {
         String word = cursor.source.text(keywordStart, cursor.pos);
-        return cursor.error(keywordStart, "unknown statement '" + word + "'", Suggestions.keywordHelp(word));
+        return cursor.error(keywordStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
     }
 
     /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
@@ -189,16 +181,16 @@ final class StatementReader {
     /** The help for a second statement (a keyword, then ':') from {@code from} on, after blanks; or null. */
     private String secondStatement(int from) {
         int start = from;
-        while (start < cursor.bytes.length && ByteClasses.isSpace(cursor.bytes[start])) {
+        while (start < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[start])) {
             start++;
         }
         int end = start;
-        while (end < cursor.bytes.length && ByteClasses.isWordByte(cursor.bytes[end])) {
+        while (end < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[end])) {
             end++;
         }
         Statement statement = Grammar.find(cursor.bytes, start, end);
         int after = end;
-        while (after < cursor.bytes.length && ByteClasses.isSpace(cursor.bytes[after])) {
+        while (after < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[after])) {
             after++;
         }
         return statement != null && after < cursor.bytes.length && cursor.bytes[after] == ':'
@@ -230,7 +222,7 @@ final class StatementReader {
 
     /** The offset after the first {@code *}{@code /} from {@code from} to the end of its line, or −1. */
     private int commentEnd(int from) {
-        for (int i = from; i + 1 < cursor.bytes.length && !ByteClasses.isLineBreak(cursor.bytes[i]); i++) {
+        for (int i = from; i + 1 < cursor.bytes.length && !TextBytes.isLineBreak(cursor.bytes[i]); i++) {
             if (cursor.bytes[i] == '*' && cursor.bytes[i + 1] == '/') {
                 return i + 2;
             }

@@ -5,13 +5,10 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The values of the statement being read, group by group, where each was written, and the rules
- * they must follow (the paper's scene file, section 4.1, and Part II's, "The scene file"): every
- * number finite, a radius, zoom or scale above 0, a direction not zero, a colour channel a whole
- * number from 0 to 255, and so on. The numbers are those {@link GroupReader} wrote into the
- * {@link WrittenGroups}; a statement's {@link Statement.Builder} asks for its groups by index, and a
- * broken rule becomes an error at the value that breaks it, worded with the group's meaning ("the x
- * of the centre must be a finite number").
+ * The values of the statement being read, group by group, and the rules they must follow (section 4.1; Part
+ * II, "The scene file"): every number finite, a radius above 0, a direction not zero, a colour channel a
+ * whole number from 0 to 255, and so on. A builder asks for its groups by index; a broken rule is an error
+ * at the value that breaks it.
  */
 final class StatementValues {
 
@@ -61,12 +58,10 @@ final class StatementValues {
 
     // ---- asked for by the builders ------------------------------------------------------
 
-    /** The statement these values belong to. */
     Statement statement() {
         return statement;
     }
 
-    /** The number of the line the statement stands on. */
     int line() {
         return line;
     }
@@ -173,9 +168,8 @@ final class StatementValues {
     }
 
     /**
-     * The point of group {@code g}, written {@code (at x|y|z)} (Part III, "A camera that looks at a
-     * point"): the direction from the position {@code from} to it, as the camera computes it, is
-     * not zero and neither too short nor too long to compute with in float.
+     * The point of group {@code g}, written {@code (at x|y|z)} (Part III): the direction to it from
+     * {@code from} must be neither zero nor too short or long for float.
      */
     Vector3f target(int g, Vector3f from) throws StatementError {
         Vector3f target = vector(g);

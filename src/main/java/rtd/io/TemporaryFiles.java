@@ -11,21 +11,16 @@ import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
- * The hidden temporary files that a picture is written to before it is moved into place, named
- * {@code .NAME.<16 hex digits>.tmp} beside the output, and removed whatever happens: after a
- * failed write by {@link SceneIO}, and on the way out of a JVM stopped by a signal (SIGINT,
- * SIGTERM, SIGHUP) by a shutdown hook. Only {@code kill -9}, which runs no Java code, can leave one.
- *
- * <p>Its list of open files is global state, on purpose: a shutdown hook belongs to the JVM, not
- * to one run, so the list it reads must too (guarded by this class's lock).
+ * The hidden temporary files {@code .NAME.<16 hex digits>.tmp} a picture is written to beside its output
+ * before it is moved into place, removed after a failed write and by a shutdown hook when a signal stops the
+ * JVM (only {@code kill -9} can leave one). Its list is global on purpose, as the hook belongs to the JVM
+ * (guarded by this class's lock).
  */
 final class TemporaryFiles {
 
     /**
-     * The most bytes of the output's name kept in the temporary name: with the dot, the dot
-     * before the digits, 16 digits and ".tmp" (22 bytes) it stays within the 255 bytes that
-     * most file systems allow for a name, so that any name that is legal for the output is so
-     * for its temporary file.
+     * The most bytes of the output's name kept in the temporary name: with the 22 bytes added it stays
+     * within the 255 that most file systems allow.
      */
     static final int MAX_NAME_BYTES = 200;
 
@@ -44,8 +39,8 @@ final class TemporaryFiles {
     }
 
     /**
-     * Creates a new temporary file in {@code folder} for {@code outputName}, open for writing,
-     * and remembers it until {@link #forget}. Fails rather than take over a file of that name.
+     * A new temporary file in {@code folder} for {@code outputName}, open for writing and remembered until
+     * {@link #forget}; never one that exists.
      */
     static synchronized Created create(Path folder, String outputName) throws IOException {
         if (stopping) {

@@ -3,11 +3,9 @@ package rtd.io;
 import java.util.Arrays;
 
 /**
- * What the reader found in the groups of one statement, and where: each value (a number, or the
- * place of a name or path), its offsets in the file and its key's index in a properties group;
- * and for each group, the index of its first value and the offset of its '('. {@link GroupReader}
- * fills one for every line of the file, so that a line of numbers makes no object per number;
- * {@link StatementValues} reads it with the rules the values must follow.
+ * What the {@link GroupReader} found in the groups of one statement, and where: each value, its offsets and
+ * its key's index, and each group's first value and '('. One is filled for every line, so that a line of
+ * numbers makes no object per number.
  */
 final class WrittenGroups {
 

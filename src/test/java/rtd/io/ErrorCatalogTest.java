@@ -86,7 +86,7 @@ class ErrorCatalogTest {
                     .isEqualTo(message.strip());
             return;
         }
-        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", bytes, folder));
+        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", bytes, folder, null));
         assertThat(e).as("a SceneException").isNotNull();
         assertThat(e.errors()).hasSize(1);
         assertThat(e.errors().get(0).format().strip()).isEqualTo(message.strip());

@@ -3,6 +3,7 @@ package rtd.io;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.camera.OrthographicCamera;
@@ -36,7 +37,7 @@ class LenientReadingTest {
     @Test
     void aByteOrderMarkWindowsLineEndsTabsAndSpacesAreFine() throws SceneException {
         String text = "\uFEFF  orthographic_camera : ( 0 | 0 | 20 ) :\t(0|0|-1):(50)\r\n\r\n\t sphere\t:\t(\t3 |8| -1 ) : ( 2 ) : (0 | 127 | 255 )  \r\n";
-        Scene scene = SceneIO.parseScene("scene.txt", text.getBytes(StandardCharsets.UTF_8));
+        Scene scene = SceneIO.parseScene("scene.txt", text.getBytes(StandardCharsets.UTF_8), Path.of(""), null);
         assertThat(scene.objects()).containsExactly(EXPECTED);
     }
 

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.DisplayName;
@@ -23,7 +24,7 @@ class SceneErrorsTest {
     }
 
     static SceneException errorsOf(byte[] bytes) {
-        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", bytes));
+        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", bytes, Path.of(""), null));
         assertThat(e).as("a SceneException").isNotNull();
         return e;
     }

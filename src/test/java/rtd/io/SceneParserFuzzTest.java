@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import java.nio.file.Path;
 import java.time.Duration;
 import rtd.scene.Scene;
 
@@ -29,7 +30,7 @@ class SceneParserFuzzTest {
 
     private static void check(byte[] bytes) {
         try {
-            Scene scene = SceneIO.parseScene("fuzz.txt", bytes);
+            Scene scene = SceneIO.parseScene("fuzz.txt", bytes, Path.of(""), null);
             assertThat(scene.camera()).isNotNull();
             assertThat(scene.ambient()).isNotNull();
         } catch (SceneException e) {

@@ -9,20 +9,21 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 
 /**
- * Finds the first byte of a scene file that is not UTF-8 text (a NUL byte, or bytes that are
- * not UTF-8), and says what the file looks like instead: UTF-16, as some old Windows editors
- * save; Latin-1 or Windows-1252, as editors in Germany and elsewhere save an umlaut in a
- * comment; or no text at all, such as a picture. For text in another encoding the help is to
- * save the file as UTF-8. An OBJ file is refused for a NUL byte only ({@link #inObjFile}).
+ * What the bytes of a scene or OBJ file are: blanks, ends of numbers, words and lines, UTF-8's byte
+ * order mark; and the first byte that is not UTF-8 text (a NUL byte, bytes that are not UTF-8),
+ * with what the file looks like instead: UTF-16, as some old Windows editors save; Latin-1 or
+ * Windows-1252, as editors in Germany and elsewhere save an umlaut in a comment; or no text at all,
+ * such as a picture. For text in another encoding the help is to save the file as UTF-8. An OBJ file
+ * is refused for a NUL byte only ({@link #inObjFile}).
  */
-final class NotText {
+final class TextBytes {
 
     private static final Charset WINDOWS_1252 = Charset.forName("windows-1252");
     private static final String SAVE_AS_UTF8 = "save the file as UTF-8";
     /** How many bytes at the start of a file tell whether it is UTF-16. */
     private static final int SAMPLE = 512;
 
-    private NotText() {
+    private TextBytes() {
     }
 
     /** The first bad byte of {@code bytes[from, to)}: the first NUL byte, unless an invalid UTF-8 sequence comes before it. */
@@ -56,7 +57,7 @@ final class NotText {
         int line = 1;
         int lineStart = start;
         for (int i = start; i < bad; i++) {
-            if (ByteClasses.endsLine(bytes, i)) {
+            if (TextBytes.endsLine(bytes, i)) {
                 line++;
                 lineStart = i + 1;
             }
@@ -132,7 +133,7 @@ final class NotText {
     /** The line, its UTF-8 start as UTF-8 and its rest from the bad byte on as Windows-1252, so that the caret lines up. */
     private static String legacyLine(byte[] bytes, int lineStart, int bad) {
         int end = bad;
-        while (end < bytes.length && !ByteClasses.isLineBreak(bytes[end])) {
+        while (end < bytes.length && !TextBytes.isLineBreak(bytes[end])) {
             end++;
         }
         return new String(bytes, lineStart, bad - lineStart, StandardCharsets.UTF_8)
@@ -152,5 +153,81 @@ final class NotText {
         }
         return new SceneError(source.name(), line, source.column(lineStart, nul), "this is not a text file: found a NUL byte",
                 null, "a mesh is a Wavefront OBJ file, which is text");
+    }
+
+    // ---- classes of bytes ----------------------------------------------------------------
+
+
+    /** A blank, a carriage return among them: what an OBJ line and a number token end at. */
+    static boolean isBlank(byte b) {
+        return b == ' ' || b == '\t' || b == '\r' || b == '\f' || b == 0x0B;
+    }
+
+    /**
+     * A blank within a line of a scene file: not a carriage return, which ends a line there,
+     * alone (old Mac files) or before a line feed (Windows files).
+     */
+    static boolean isSpace(byte b) {
+        return b == ' ' || b == '\t' || b == '\f' || b == 0x0B;
+    }
+
+    /**
+     * Whether the bytes begin with UTF-8's byte order mark (EF BB BF), which some Windows editors
+     * write: the scene and OBJ readers start after it.
+     */
+    static boolean startsWithByteOrderMark(byte[] bytes) {
+        return bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF;
+    }
+
+    static boolean isLineBreak(byte b) {
+        return b == '\n' || b == '\r';
+    }
+
+    static boolean isWordByte(byte b) {
+        return (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z') || (b >= '0' && b <= '9') || b == '_';
+    }
+
+    /** Whether {@code b} ends a number: a table, as it is asked for every byte of every number of the file. */
+    static boolean isDelimiter(byte b) {
+        return DELIMITERS[b & 0xFF];
+    }
+
+    /**
+     * {@link #isDelimiter} for each byte value: one look-up instead of ten comparisons for each
+     * digit of the seven million numbers of a million spheres.
+     */
+    private static final boolean[] DELIMITERS = new boolean[256];
+
+    static {
+        for (int value = 0; value < 256; value++) {
+            byte b = (byte) value;
+            DELIMITERS[value] = b == '|' || b == ')' || b == '(' || b == ':' || b == '\n' || isBlank(b);
+        }
+    }
+
+    /**
+     * Whether an OBJ file's word (a keyword, a number, a face's corner) ends at {@code bytes[i]}:
+     * at a blank, a {@code #} (a comment), the end of the line or of the file.
+     */
+    static boolean endsObjWord(byte[] bytes, int i) {
+        return i >= bytes.length || OBJ_WORD_ENDS[bytes[i] & 0xFF];
+    }
+
+    /** {@link #endsObjWord} for each byte value: one look-up for each byte of every number of an OBJ file. */
+    private static final boolean[] OBJ_WORD_ENDS = new boolean[256];
+
+    static {
+        for (int value = 0; value < 256; value++) {
+            byte b = (byte) value;
+            OBJ_WORD_ENDS[value] = b == '\n' || b == '#' || isBlank(b);
+        }
+    }
+
+    /**
+     * Whether a line ends just after {@code bytes[i]}: a line feed, or a carriage return not
+     * followed by a line feed (a CR LF pair is one line break, which ends after its LF).
+     */
+    static boolean endsLine(byte[] bytes, int i) {
+        return bytes[i] == '\n' || bytes[i] == '\r' && (i + 1 == bytes.length || bytes[i + 1] != '\n');
     }
 }
