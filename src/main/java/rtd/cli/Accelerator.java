@@ -17,7 +17,7 @@ import rtd.scene.Scene;
  *
  * @param tracers   a new tracer for each thread
  * @param built     what was built, for {@code --stats}: made only if asked, as formatting numbers
- *                  the first time costs a run of the paper's example some 20 ms
+ *                  the first time is slow
  * @param walksTree whether the tracers walk a tree, so that nodes per ray mean something
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
