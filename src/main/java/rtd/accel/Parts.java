@@ -74,7 +74,7 @@ final class Parts {
     }
 
     /**
-     * Turns counts per part and per cell (of a grid, or a tile of an image) into where each part's
+     * Turns counts per part and per cell (of the view grid) into where each part's
      * share of each cell starts: a cell's share of the first part, then of the second, and so on,
      * cell after cell, so that a cell's objects come in file order however many parts there are.
      * The cells' starts go into {@code starts} (one longer than the cells), and the answer is the
