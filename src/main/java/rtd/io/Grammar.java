@@ -33,6 +33,8 @@ final class Grammar {
     private static final Material DEFAULT = Material.DEFAULT;
     /** The radius from which a sphere warns of shadow acne in a shaded scene ({@link #sphere}). */
     static final float FLOOR_RADIUS = 5000;
+    /** The keyword of the statement that names a value (Part III). */
+    static final String LET = "let";
     private static final String VIEW_HELP = "the camera looks along it; (0|0|-1) looks into the screen";
 
     /** Every statement, in the order the messages list them. */
@@ -74,7 +76,8 @@ final class Grammar {
             Statement.setting("material",
                     List.of(name("name", "name"), properties("properties",
                             "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
-                    (v, out) -> out.material(v.name(0), material(v))));
+                    (v, out) -> out.material(v.name(0), material(v))),
+            Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")), (v, out) -> v.define(0)));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {

@@ -13,12 +13,12 @@ final class GroupReader {
 
     private final LineCursor cursor;
     private final WrittenGroups written;
-    /** Where the number that {@link #readNumber} read last starts. */
-    private int tokenStart;
+    private final NumberReader numbers;
 
-    GroupReader(LineCursor cursor, WrittenGroups written) {
+    GroupReader(LineCursor cursor, WrittenGroups written, Names names) {
         this.cursor = cursor;
         this.written = written;
+        this.numbers = new NumberReader(cursor, names);
     }
 
     /** Reads {@code :(…)} into {@link #values}. */
@@ -55,11 +55,12 @@ final class GroupReader {
         int found = 0;
         while (true) {
             cursor.skipBlanks();
-            float value = readNumber();
+            float value = numbers.read();
             if (found == group.size()) {
                 throw tooManyNumbers(statement, group, groupStart);
             }
-            written.add(value, tokenStart, cursor.pos);
+            written.add(value, numbers.tokenStart, cursor.pos);
+            numbers.markIfExpression(written);
             found++;
             if (groupEndsAfterNumber(statement, group)) {
                 break;
@@ -151,8 +152,9 @@ final class GroupReader {
             }
             cursor.pos++;
             cursor.skipBlanks();
-            float value = readNumber();
-            written.addProperty(key, value, tokenStart, cursor.pos);
+            float value = numbers.read();
+            written.addProperty(key, value, numbers.tokenStart, cursor.pos);
+            numbers.markIfExpression(written);
             if (groupEndsAfterNumber(statement, group)) {
                 return;
             }
@@ -207,10 +209,10 @@ final class GroupReader {
         String message = "too many numbers in %s: it takes " + contents(group);
         int g = statement.groups().indexOf(group);
         if (g < 0 || groupsOnTheLineFrom(groupStart) >= statement.groups().size() - g) {
-            return groupError(tokenStart, message, statement, group);
+            return groupError(numbers.tokenStart, message, statement, group);
         }
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement)));
-        return cursor.error(tokenStart, text, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
+        return cursor.error(numbers.tokenStart, text, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
                 + group.meaning() + " left out before this group? write it as " + statement.usage());
     }
 
@@ -230,59 +232,6 @@ final class GroupReader {
     private StatementError groupError(int offset, String message, Statement statement, Group group) {
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
         return cursor.error(offset, text, "write it as " + statement.usage());
-    }
-
-    /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
-    private float readNumber() throws StatementError {
-        tokenStart = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && !TextBytes.isDelimiter(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
-        if (cursor.pos == tokenStart) {
-            boolean emptyPlace = cursor.at('|') || cursor.at(')');
-            throw cursor.error(cursor.pos, "expected a number, found " + cursor.describe(cursor.pos),
-                    emptyPlace ? "a number is missing here: each place between '(', '|' and ')' holds one" : null);
-        }
-        try {
-            return FloatParser.parse(cursor.bytes, tokenStart, cursor.pos);
-        } catch (NumberFormatException e) {
-            throw notANumber();
-        }
-    }
-
-    /**
-     * The error for a token that is no number: at an invisible character that starts it or follows a number,
-     * else at the token, with a hint.
-     */
-    private StatementError notANumber() {
-        int invisible = firstInvisible(tokenStart, cursor.pos);
-        if (invisible == tokenStart) {
-            return cursor.error(invisible, "expected a number, found " + cursor.describe(invisible), null);
-        }
-        if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
-            return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
-        }
-        String token = cursor.source.text(tokenStart, cursor.pos);
-        return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
-    }
-
-    private boolean isNumber(int from, int to) {
-        try {
-            FloatParser.parse(cursor.bytes, from, to);
-            return true;
-        } catch (NumberFormatException e) {
-            return false;
-        }
-    }
-
-    /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */
-    private int firstInvisible(int from, int to) {
-        for (int i = from; i < to; i++) {
-            if (cursor.bytes[i] < 0 && (cursor.bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(cursor.source.codePointAt(i))) {
-                return i;
-            }
-        }
-        return -1;
     }
 
     /** What a group holds, for messages: "3 numbers (x|y|z)", "a name". */

@@ -38,6 +38,11 @@ final class SceneParser {
      * order.
      */
     static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
+        return parse(source, new Names(0), warnings);
+    }
+
+    /** As {@link #parse(SourceText, List)}, with the clock and the named values of {@code names} (Part III). */
+    static Scene parse(SourceText source, Names names, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
         int start = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;
         int lines = 1;
@@ -55,7 +60,7 @@ final class SceneParser {
         // Most lines of a large file make one object, so the list is made that long at once: grown
         // line by line, its large arrays would go to the old generation, and stay there long.
         SceneContents contents = new SceneContents(Math.min(lines, (bytes.length - start) / SHORTEST_OBJECT + 1));
-        new StatementReader(source, start, contents).readAll();
+        new StatementReader(source, start, contents, names).readAll();
         return join(source, contents, warnings);
     }
 

@@ -22,12 +22,15 @@ final class StatementReader {
     /** Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
     private boolean inBlockComment;
 
-    /** A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}. */
-    StatementReader(SourceText source, int start, SceneContents contents) {
+    /**
+     * A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}; its
+     * expressions use {@code names}.
+     */
+    StatementReader(SourceText source, int start, SceneContents contents, Names names) {
         this.cursor = new LineCursor(source, start);
         WrittenGroups written = new WrittenGroups(16, 8);
-        this.groupReader = new GroupReader(cursor, written);
-        this.values = new StatementValues(source, written);
+        this.groupReader = new GroupReader(cursor, written, names);
+        this.values = new StatementValues(source, written, names);
         this.contents = contents;
         contents.readFrom(values);
     }
@@ -97,11 +100,13 @@ final class StatementReader {
     }
 
     /**
-     * After a mistake in a {@code material:} whose name was read, keeps the name: objects that use it are
-     * not also told it is unknown.
+     * After a mistake in a {@code material:} or {@code let:} whose name was read, keeps the name: objects and
+     * expressions that use it are not also told it is unknown.
      */
     private void keepNameOfBrokenDefinition() {
-        if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
+        if (current != null && current.keyword().equals(Grammar.LET)) {
+            values.defineBroken();
+        } else if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
                 && values.hasValue(0)) {
             contents.brokenDefinitions.add(values.name(0));
         }

@@ -14,6 +14,7 @@ final class StatementValues {
 
     private final SourceText source;
     private final WrittenGroups groups;
+    private final Names names;
     private Statement statement;
     private int line;
     private int lineStart;
@@ -21,9 +22,10 @@ final class StatementValues {
     private Material material;
 
     /** The values of the statements read into {@code groups}, one after the other. */
-    StatementValues(SourceText source, WrittenGroups groups) {
+    StatementValues(SourceText source, WrittenGroups groups, Names names) {
         this.source = source;
         this.groups = groups;
+        this.names = names;
     }
 
     /** Starts a statement whose keyword stands at byte {@code statementStart} of a line. */
@@ -48,7 +50,7 @@ final class StatementValues {
 
     /** An independent copy, for an object built when the whole file is read. */
     StatementValues copy() {
-        StatementValues copy = new StatementValues(source, groups.copy());
+        StatementValues copy = new StatementValues(source, groups.copy(), names);
         copy.statement = statement;
         copy.line = line;
         copy.lineStart = lineStart;
@@ -226,9 +228,16 @@ final class StatementValues {
                         : "NaN (not a number) and Infinity are not numbers a scene can use; give a finite number");
     }
 
-    /** Number {@code i}, the {@code name} channel of the colour whose numbers start at {@code first}. */
+    /**
+     * Number {@code i}, the {@code name} channel of the colour whose numbers start at {@code first}; an expression
+     * is rounded to the nearest whole number, ½ up (Part III).
+     */
     private int channel(int i, String name, int first) throws StatementError {
-        float value = groups.values[i];
+        float value = groups.trees[i] == null ? groups.values[i] : (float) Math.floor(groups.exact[i] + 0.5);
+        if (groups.trees[i] != null && !(value >= 0 && value <= 255)) {
+            throw errorAt(groups.starts[i], "the " + name + " channel must be from 0 to 255, found " + written(i),
+                    "an expression in a colour is rounded to a whole number, which must be from 0 to 255");
+        }
         if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
             String fractions = fractionsHint(first);
             throw errorAt(groups.starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
@@ -274,8 +283,52 @@ final class StatementValues {
                 source.lineText(lineStart), help));
     }
 
-    /** Value {@code i} (of all groups) as written, for messages. */
+    /**
+     * Value {@code i} (of all groups) as written, for messages; an expression with its value, and the clock if
+     * it uses it: "1-2*clock, which is -0.5 at clock = 0.75".
+     */
     private String written(int i) {
-        return source.text(groups.starts[i], groups.ends[i]);
+        String text = source.text(groups.starts[i], groups.ends[i]);
+        Expression tree = groups.trees[i];
+        if (tree == null) {
+            return text;
+        }
+        float value = groups.values[i];
+        return text + ", which is " + (value == Math.rint(value) && Math.abs(value) < 1e9 ? String.valueOf((long) value)
+                : String.valueOf(value)) + (tree.usesClock() ? " at clock = " + ClockText.format(names.clock()) : "");
+    }
+
+    /**
+     * {@code let:(name):(expression)} (Part III): defines the name of group {@code g} as the expression of
+     * group {@code g + 1}, for the lines below. A name is a letter, then letters, digits or '_'; not a word the
+     * expressions use, and not defined twice.
+     */
+    void define(int g) throws StatementError {
+        String name = name(g);
+        if (!ExpressionParser.isLetter((byte) name.charAt(0)) || name.indexOf('-') >= 0) {
+            throw errorAtValue(g, 0, "the name '" + name + "' cannot be defined: a name starts with a letter, then "
+                    + "letters, digits or '_'", "such as let:(r" + name.replace("-", "_") + "):(1)");
+        }
+        if (Names.isReserved(name)) {
+            throw errorAtValue(g, 0, "'" + name + "' cannot be defined: it is a word of the expressions",
+                    "choose another name; clock, pi and the functions (sin, cos, sqrt, …) keep their meaning");
+        }
+        Integer earlier = names.lineOf(name);
+        if (earlier != null) {
+            throw errorAtValue(g, 0, "a second let of '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier);
+        }
+        int i = groups.firsts[g + 1];
+        float value = finite(i, meaning(g + 1));
+        Expression tree = groups.trees[i] != null ? groups.trees[i]
+                : new Expression.Number(value, groups.starts[i]); // a plain number: as a statement would read it
+        names.define(name, tree, line);
+    }
+
+    /** Notes that the {@code let} being read has a mistake, once its name is read: its uses then say so. */
+    void defineBroken() {
+        if (groups.hasValue(0)) {
+            names.defineBroken(name(0), line);
+        }
     }
 }

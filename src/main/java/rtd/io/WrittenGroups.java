@@ -14,6 +14,9 @@ final class WrittenGroups {
     int[] ends;
     /** The index of a property's key among its group's keys, or −1. */
     int[] keys;
+    /** For a value written as an expression (Part III): its tree and its value in double precision; else null. */
+    Expression[] trees;
+    double[] exact;
     int count;
     int[] firsts;
     int[] opens;
@@ -27,6 +30,8 @@ final class WrittenGroups {
         starts = new int[values];
         ends = new int[values];
         keys = new int[values];
+        trees = new Expression[values];
+        exact = new double[values];
         firsts = new int[groups];
         opens = new int[groups];
     }
@@ -60,11 +65,20 @@ final class WrittenGroups {
             starts = Arrays.copyOf(starts, 2 * count);
             ends = Arrays.copyOf(ends, 2 * count);
             keys = Arrays.copyOf(keys, 2 * count);
+            trees = Arrays.copyOf(trees, 2 * count);
+            exact = Arrays.copyOf(exact, 2 * count);
         }
         values[count] = value;
         starts[count] = start;
         ends[count] = end;
+        trees[count] = null;
         keys[count++] = -1;
+    }
+
+    /** Marks the value kept last as written as the expression {@code tree}, whose value is {@code exactValue}. */
+    void markExpression(double exactValue, Expression tree) {
+        trees[count - 1] = tree;
+        exact[count - 1] = exactValue;
     }
 
     /** Keeps {@code key=value} of the current group: the key's index among the group's keys. */
@@ -100,6 +114,8 @@ final class WrittenGroups {
         copy.starts = Arrays.copyOf(starts, count);
         copy.ends = Arrays.copyOf(ends, count);
         copy.keys = Arrays.copyOf(keys, count);
+        copy.trees = Arrays.copyOf(trees, count);
+        copy.exact = Arrays.copyOf(exact, count);
         copy.firsts = Arrays.copyOf(firsts, groupCount);
         copy.opens = Arrays.copyOf(opens, groupCount);
         copy.count = count;

@@ -1,0 +1,22 @@
+package rtd.io;
+
+import java.math.BigDecimal;
+import java.math.MathContext;
+
+/**
+ * A clock value as messages and the progress line write it (Part III, "Expressions, named values and the
+ * clock"): at most six significant digits, no trailing zeros, {@code 0.75}, {@code 0.333333}, {@code 1}.
+ */
+public final class ClockText {
+
+    private ClockText() {
+    }
+
+    /** {@code clock} written short. */
+    public static String format(double clock) {
+        if (clock == 0) {
+            return "0";
+        }
+        return new BigDecimal(clock).round(new MathContext(6)).stripTrailingZeros().toPlainString();
+    }
+}

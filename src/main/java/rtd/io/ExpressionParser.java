@@ -1,0 +1,279 @@
+package rtd.io;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Reads one expression of a scene file into an {@link Expression} tree, by recursive descent: one method per
+ * level of the grammar, the loosest first (Part III, "Expressions, named values and the clock"):
+ *
+ * <pre>
+ * sum     = product { ("+" | "-") product }
+ * product = unary { ("*" | "/") unary }
+ * unary   = ("-" | "+") unary | power
+ * power   = atom [ "^" unary ]                  (right-associative: 2^3^2 = 2^9; -2^2 = -4)
+ * atom    = number | name | function "(" sum { "," sum } ")" | "(" sum ")"
+ * </pre>
+ *
+ * It reads at the {@link LineCursor} and stops before the first byte that cannot go on the expression (a
+ * {@code |} or the group's {@code )}); each mistake is an error at its place, with "did you mean …?" for a
+ * misspelt name or function.
+ */
+final class ExpressionParser {
+
+    /** Deeper nesting than this is a mistake, not a scene: it would overflow the reader's stack. */
+    static final int MAX_DEPTH = 100;
+    private static final String OPERATORS = "an operator (+ - * / ^)";
+
+    private final LineCursor cursor;
+    private final Names names;
+    private int depth;
+
+    ExpressionParser(LineCursor cursor, Names names) {
+        this.cursor = cursor;
+        this.names = names;
+    }
+
+    /** Reads an expression from the cursor on; the cursor is left after it. */
+    Expression read() throws StatementError {
+        depth = 0;
+        Expression expression = sum();
+        cursor.skipBlanks();
+        if (startsOperand()) { // "2 x", "2(3)": a product needs its '*'
+            throw cursor.error(cursor.pos, "expected " + OPERATORS + ", '|' or ')' after " + cursor.source.text(
+                    expression.start(), lastNonBlank()) + ", found " + cursor.describe(cursor.pos),
+                    "a product is written with '*', such as 2*x");
+        }
+        return expression;
+    }
+
+    private Expression sum() throws StatementError {
+        Expression left = product();
+        while (true) {
+            cursor.skipBlanks();
+            if (!cursor.at('+') && !cursor.at('-')) {
+                return left;
+            }
+            int at = cursor.pos++;
+            left = new Expression.Operation(cursor.bytes[at] == '+' ? '+' : '-', left, product(), at);
+        }
+    }
+
+    private Expression product() throws StatementError {
+        Expression left = unary();
+        while (true) {
+            cursor.skipBlanks();
+            if (!cursor.at('*') && !(cursor.at('/') && !atComment())) {
+                return left;
+            }
+            int at = cursor.pos++;
+            left = new Expression.Operation(cursor.bytes[at] == '*' ? '*' : '/', left, unary(), at);
+        }
+    }
+
+    /** A minus sign binds looser than {@code ^}: {@code -2^2} is {@code -(2^2)}. */
+    private Expression unary() throws StatementError {
+        cursor.skipBlanks();
+        enter();
+        try {
+            if (cursor.at('-')) {
+                int at = cursor.pos++;
+                return new Expression.Negation(unary(), at);
+            }
+            if (cursor.at('+')) {
+                cursor.pos++;
+                return unary();
+            }
+            return power();
+        } finally {
+            depth--;
+        }
+    }
+
+    private Expression power() throws StatementError {
+        Expression base = atom();
+        cursor.skipBlanks();
+        if (!cursor.at('^')) {
+            return base;
+        }
+        int at = cursor.pos++;
+        return new Expression.Operation('^', base, unary(), at);
+    }
+
+    private Expression atom() throws StatementError {
+        cursor.skipBlanks();
+        if (cursor.at('(')) {
+            int open = cursor.pos++;
+            Expression inner = sum();
+            expectClosing(open, "the '('");
+            return inner;
+        }
+        if (cursor.pos < cursor.bytes.length && isDigitOrPoint(cursor.bytes[cursor.pos])) {
+            return number();
+        }
+        if (cursor.pos < cursor.bytes.length && isLetter(cursor.bytes[cursor.pos])) {
+            return nameOrCall();
+        }
+        throw cursor.error(cursor.pos, "expected a number, a name or '(' in an expression, found "
+                + cursor.describe(cursor.pos), atGroupEnd() ? "an operator needs a number on either side" : null);
+    }
+
+    /** Digits with an optional point and exponent, read as a double. */
+    private Expression number() throws StatementError {
+        int start = cursor.pos;
+        byte[] bytes = cursor.bytes;
+        while (cursor.pos < bytes.length && isDigitOrPoint(bytes[cursor.pos])) {
+            cursor.pos++;
+        }
+        int beforeExponent = cursor.pos;
+        if (cursor.pos < bytes.length && (bytes[cursor.pos] == 'e' || bytes[cursor.pos] == 'E')) {
+            cursor.pos++;
+            if (cursor.pos < bytes.length && (bytes[cursor.pos] == '+' || bytes[cursor.pos] == '-')) {
+                cursor.pos++;
+            }
+            int digits = cursor.pos;
+            while (cursor.pos < bytes.length && bytes[cursor.pos] >= '0' && bytes[cursor.pos] <= '9') {
+                cursor.pos++;
+            }
+            if (cursor.pos == digits) {
+                cursor.pos = beforeExponent; // "2e" is no exponent: the 'e' is left for the next token
+            }
+        }
+        String text = new String(bytes, start, cursor.pos - start, StandardCharsets.US_ASCII);
+        try {
+            return new Expression.Number(Double.parseDouble(text), start);
+        } catch (NumberFormatException e) { // "1.2.3", "."
+            throw cursor.error(start, "expected a number, found '" + text + "'", Hints.NUMBER_FORMS);
+        }
+    }
+
+    /** A word: a function if '(' follows it, else a name. */
+    private Expression nameOrCall() throws StatementError {
+        int start = cursor.pos;
+        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
+            cursor.pos++;
+        }
+        String word = cursor.source.text(start, cursor.pos);
+        int end = cursor.pos;
+        cursor.skipBlanks();
+        ExpressionFunction function = ExpressionFunction.named(word);
+        if (cursor.at('(')) {
+            if (function == null) {
+                throw unknownFunction(word, start);
+            }
+            return call(function, start);
+        }
+        cursor.pos = end;
+        if (function != null) {
+            throw cursor.error(start, "'" + word + "' is a function, and it needs its argument in parentheses",
+                    "write it as " + function.usage());
+        }
+        Expression name = names.lookUp(word, start);
+        if (name == null) {
+            throw unknownName(word, start);
+        }
+        if (name.usesClock()) {
+            names.noteClockUse();
+        }
+        return name;
+    }
+
+    /** The arguments of {@code function}, from its '(' to its ')': as many as it takes. */
+    private Expression call(ExpressionFunction function, int start) throws StatementError {
+        int open = cursor.pos++;
+        List<Expression> arguments = new ArrayList<>();
+        arguments.add(sum());
+        cursor.skipBlanks();
+        while (cursor.at(',')) {
+            cursor.pos++;
+            arguments.add(sum());
+            cursor.skipBlanks();
+        }
+        expectClosing(open, "'" + function.spelling() + "('");
+        if (arguments.size() != function.arity()) {
+            throw cursor.error(start, "'" + function.spelling() + "' takes " + count(function.arity()) + ", found "
+                    + arguments.size(), "write it as " + function.usage());
+        }
+        return new Expression.Call(function, arguments, start);
+    }
+
+    /** The ')' that closes the '(' at {@code open}, which {@code what} names in the message. */
+    private void expectClosing(int open, String what) throws StatementError {
+        cursor.skipBlanks();
+        if (cursor.at(')')) {
+            cursor.pos++;
+            return;
+        }
+        String found = cursor.describe(cursor.pos);
+        throw cursor.error(cursor.pos, "expected " + OPERATORS + " or ')' to close " + what + " at column "
+                + cursor.source.column(cursor.lineStart, open) + ", found " + found,
+                cursor.at(',') ? "',' separates the arguments of a function, such as max(a, b)"
+                        : "every '(' in an expression needs its ')'");
+    }
+
+    private StatementError unknownFunction(String word, int start) {
+        String nearest = Hints.nearest(word, ExpressionFunction.NAMES);
+        return cursor.error(start, "unknown function '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
+                : "the functions are " + String.join(", ", ExpressionFunction.NAMES)
+                        + (names.lookUp(word, start) != null ? "; a product is written with '*', such as " + word + "*(…)" : ""));
+    }
+
+    private StatementError unknownName(String word, int start) {
+        if (names.isBroken(word)) {
+            return cursor.error(start, "'" + word + "' cannot be used: its let at line " + names.lineOf(word)
+                    + " has a mistake", "correct that line, and this one follows");
+        }
+        String nearest = nearestName(word);
+        return cursor.error(start, "unknown name '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
+                : "define it above this line with let:(" + word + "):(1), or use clock or pi");
+    }
+
+    /** The known name or function nearest {@code word}, or null. */
+    String nearestName(String word) {
+        List<String> candidates = new ArrayList<>(names.known());
+        candidates.addAll(ExpressionFunction.NAMES);
+        return Hints.nearest(word, candidates);
+    }
+
+    private void enter() throws StatementError {
+        if (++depth > MAX_DEPTH) {
+            throw cursor.error(cursor.pos, "the expression is nested too deeply: more than " + MAX_DEPTH + " levels",
+                    "split it with let:(name):(expression) lines");
+        }
+    }
+
+    private boolean startsOperand() {
+        return cursor.pos < cursor.bytes.length && (isDigitOrPoint(cursor.bytes[cursor.pos])
+                || isLetter(cursor.bytes[cursor.pos]) || cursor.bytes[cursor.pos] == '(');
+    }
+
+    private boolean atGroupEnd() {
+        return cursor.at('|') || cursor.at(')') || cursor.atEndOfStatement();
+    }
+
+    private boolean atComment() {
+        return cursor.pos + 1 < cursor.bytes.length && cursor.bytes[cursor.pos + 1] == '/';
+    }
+
+    /** The end of the expression read so far, before the blanks after it. */
+    private int lastNonBlank() {
+        int end = cursor.pos;
+        while (end > 0 && TextBytes.isSpace(cursor.bytes[end - 1])) {
+            end--;
+        }
+        return end;
+    }
+
+    private static String count(int arguments) {
+        return arguments == 1 ? "1 argument" : arguments + " arguments";
+    }
+
+    static boolean isLetter(byte b) {
+        return (b >= 'a' && b <= 'z') || (b >= 'A' && b <= 'Z');
+    }
+
+    private static boolean isDigitOrPoint(byte b) {
+        return (b >= '0' && b <= '9') || b == '.';
+    }
+}

@@ -1,0 +1,188 @@
+package rtd.io;
+
+import java.util.Locale;
+
+/**
+ * Reads one number of a group: a plain number as the paper's scenes have (read as {@link Float#parseFloat}
+ * does, by {@link FloatParser}, without a String), or an expression (Part III), read by the
+ * {@link ExpressionParser}, evaluated in double precision at the reading's clock and rounded to float once.
+ * Only a value that is not a plain number goes to the expression reader, so a file of plain numbers reads as
+ * fast as ever and every mistake in one keeps its message.
+ */
+final class NumberReader {
+
+    private final LineCursor cursor;
+    private final Names names;
+    private final ExpressionParser expressions;
+    /** Where the number read last starts. */
+    int tokenStart;
+    /** The expression read last, and its value in double precision; null for a plain number. */
+    private Expression tree;
+    private double exact;
+
+    NumberReader(LineCursor cursor, Names names) {
+        this.cursor = cursor;
+        this.names = names;
+        this.expressions = new ExpressionParser(cursor, names);
+    }
+
+    /** Reads one number, or an expression, at the cursor; its start is left in {@link #tokenStart}. */
+    float read() throws StatementError {
+        tree = null;
+        tokenStart = cursor.pos;
+        byte[] bytes = cursor.bytes;
+        while (cursor.pos < bytes.length && !TextBytes.isDelimiter(bytes[cursor.pos])) {
+            cursor.pos++;
+        }
+        if (cursor.pos > tokenStart) {
+            try {
+                float plain = FloatParser.parse(bytes, tokenStart, cursor.pos);
+                if (!operatorFollows()) {
+                    return plain;
+                }
+            } catch (NumberFormatException e) {
+                if (!looksLikeExpression()) {
+                    throw notANumber();
+                }
+            }
+        } else if (!cursor.at('(')) {
+            boolean emptyPlace = cursor.at('|') || cursor.at(')');
+            throw cursor.error(cursor.pos, "expected a number, found " + cursor.describe(cursor.pos),
+                    emptyPlace ? "a number is missing here: each place between '(', '|' and ')' holds one" : null);
+        }
+        return expression();
+    }
+
+    /** Marks the value {@code written} kept last as an expression, if the number read last was one. */
+    void markIfExpression(WrittenGroups written) {
+        if (tree != null) {
+            written.markExpression(exact, tree);
+        }
+    }
+
+    /** Reads the expression from {@link #tokenStart}: its value at the clock, finite and within a float's range. */
+    private float expression() throws StatementError {
+        cursor.pos = tokenStart;
+        Expression read = expressions.read();
+        String text = cursor.source.text(tokenStart, cursor.pos);
+        String at = read.usesClock() ? " at clock = " + ClockText.format(names.clock()) : "";
+        try {
+            exact = read.value(names.clock());
+        } catch (Expression.NotFinite e) {
+            String part = e.why != null ? e.why : "is " + (Double.isNaN(e.value) ? "not a number (NaN)" : "infinite");
+            throw cursor.error(e.part.start(), "'" + text + "' is not a finite number" + at + ": this part of it " + part,
+                    "a division by 0, the square root of a number below 0, or asin or acos of a number beyond -1 "
+                            + "to 1 have no value");
+        }
+        float value = (float) exact;
+        if (Float.isInfinite(value)) {
+            throw cursor.error(tokenStart, "'" + text + "' is " + exact + at + ", which is too large for a float",
+                    "a float holds numbers up to about 3.4e38");
+        }
+        tree = read;
+        return value;
+    }
+
+    /** Whether an operator follows the plain number just read, after blanks: {@code 2 * x}. */
+    private boolean operatorFollows() {
+        int p = cursor.pos;
+        byte[] bytes = cursor.bytes;
+        while (p < bytes.length && TextBytes.isSpace(bytes[p])) {
+            p++;
+        }
+        if (p >= bytes.length) {
+            return false;
+        }
+        byte b = bytes[p];
+        boolean comment = b == '/' && p + 1 < bytes.length && bytes[p + 1] == '/';
+        return b == '+' || b == '-' || b == '*' || b == '^' || b == '/' && !comment;
+    }
+
+    /**
+     * Whether the token that is no plain number is meant as an expression: it calls a function, holds an
+     * operator, or names (or nearly names) a value or a function; else it keeps the message of a number
+     * mistyped ({@code 2,5}, {@code eight}, a typographic minus).
+     */
+    private boolean looksLikeExpression() {
+        byte[] bytes = cursor.bytes;
+        int end = cursor.pos;
+        if (end < bytes.length && bytes[end] == '(' || operatorFollows()) {
+            return true;
+        }
+        for (int i = tokenStart; i < end; i++) {
+            byte b = bytes[i];
+            boolean sign = b == '+' || b == '-';
+            if (!TextBytes.isWordByte(b) && b != '.' && !sign && b != '*' && b != '/' && b != '^') {
+                return false;
+            }
+            if (b == '*' || b == '/' || b == '^' || sign && i > tokenStart && !afterExponent(i)) {
+                return true;
+            }
+        }
+        return nearlyAName(tokenStart, end);
+    }
+
+    /** Whether the sign at {@code i} is an exponent's, as in {@code 1e-5}. */
+    private boolean afterExponent(int i) {
+        byte[] bytes = cursor.bytes;
+        return (bytes[i - 1] == 'e' || bytes[i - 1] == 'E') && i - 2 >= tokenStart
+                && (bytes[i - 2] >= '0' && bytes[i - 2] <= '9' || bytes[i - 2] == '.');
+    }
+
+    /** Whether {@code bytes[from, to)} holds a word that is a known name or function, or one letter away from one. */
+    private boolean nearlyAName(int from, int to) {
+        byte[] bytes = cursor.bytes;
+        for (int i = from; i < to; i++) {
+            boolean startsWord = ExpressionParser.isLetter(bytes[i]) && (i == from || !TextBytes.isWordByte(bytes[i - 1])
+                    && bytes[i - 1] != '.');
+            if (startsWord) {
+                int end = i;
+                while (end < to && TextBytes.isWordByte(bytes[end])) {
+                    end++;
+                }
+                String word = cursor.source.text(i, end);
+                String nearest = expressions.nearestName(word);
+                if (nearest != null && Hints.editDistance(word.toLowerCase(Locale.ROOT), nearest.toLowerCase(Locale.ROOT)) <= 1) {
+                    return true;
+                }
+                i = end;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The error for a token that is no number: at an invisible character that starts it or follows a number,
+     * else at the token, with a hint.
+     */
+    private StatementError notANumber() {
+        int invisible = firstInvisible(tokenStart, cursor.pos);
+        if (invisible == tokenStart) {
+            return cursor.error(invisible, "expected a number, found " + cursor.describe(invisible), null);
+        }
+        if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
+            return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
+        }
+        String token = cursor.source.text(tokenStart, cursor.pos);
+        return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
+    }
+
+    private boolean isNumber(int from, int to) {
+        try {
+            FloatParser.parse(cursor.bytes, from, to);
+            return true;
+        } catch (NumberFormatException e) {
+            return false;
+        }
+    }
+
+    /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */
+    private int firstInvisible(int from, int to) {
+        for (int i = from; i < to; i++) {
+            if (cursor.bytes[i] < 0 && (cursor.bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(cursor.source.codePointAt(i))) {
+                return i;
+            }
+        }
+        return -1;
+    }
+}
