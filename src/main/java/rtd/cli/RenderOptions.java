@@ -13,9 +13,10 @@ import java.util.List;
  * @param scale    {@code --scale}, for the camera
  * @param given    whether {@code --width} or {@code --height} was given, not left at its default
  * @param progress whether to show the progress line (on a terminal, without {@code --no-progress})
+ * @param clock    {@code --clock}, the clock of a single picture (Part III); 0 by default
  */
 record RenderOptions(List<Path> scenes, Path output, int width, int height, Scale scale, boolean given, int threads,
-        Accel accel, boolean paper, int samples, boolean stats, boolean progress) {
+        Accel accel, boolean paper, int samples, boolean stats, boolean progress, double clock) {
 
     Path scene() {
         return scenes.get(0);

@@ -110,6 +110,10 @@ public final class RtdCommand implements Callable<Integer> {
     @Mixin
     private TeachingOptions teaching;
 
+    /** Motion: --clock, --frames, --fps and --subset (Part III). */
+    @Mixin
+    private MotionOptions motion;
+
     private RtdCommand(StandardStreams streams) {
         this.streams = streams;
     }
@@ -163,6 +167,7 @@ public final class RtdCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
+            FramePlan frames = motion.plan(spec.commandLine(), scenePaths, output, teaching.replacingOption());
             Integer taught = teaching.run(options(), spec.commandLine(), err); // null: no teaching option answers
             if (taught != null) {
                 return taught;
@@ -182,7 +187,7 @@ public final class RtdCommand implements Callable<Integer> {
             CompletableFuture<Void> writerReady = WarmUp.start(jobs.get(0).format());
             int exitCode = 0;
             for (JobPlanner.Job job : jobs) {
-                exitCode = Math.max(exitCode, run(job, options, writerReady, export, err));
+                exitCode = Math.max(exitCode, run(job, options, writerReady, export, frames, err));
             }
             return exitCode;
         } catch (SceneException | FileError e) {
@@ -194,7 +199,7 @@ public final class RtdCommand implements Callable<Integer> {
 
     /** One scene's run, with {@code export} (or null) written once the scene is read; its exit code, 0 or 1. */
     private int run(JobPlanner.Job job, RenderOptions options, CompletableFuture<Void> writerReady, OutputTarget export,
-            PrintWriter err) {
+            FramePlan frames, PrintWriter err) {
         try {
             if (job.refusal() != null) {
                 throw job.refusal();
@@ -203,7 +208,12 @@ public final class RtdCommand implements Callable<Integer> {
                 err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
                 err.flush();
             }
-            new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
+            if (frames != null) {
+                new FrameRun(options, streams, err, spec.commandLine(), frames).run(job.source(), job.target(), job.format(),
+                        writerReady, export);
+            } else {
+                new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
+            }
             return 0;
         } catch (SceneException | FileError e) {
             return failed(err, e);
@@ -229,7 +239,7 @@ public final class RtdCommand implements Callable<Integer> {
         return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scale.times(width))),
                 (int) Math.max(1, Math.min(Integer.MAX_VALUE, scale.times(height))), scale,
                 given("--width") || given("--height"), threads, accel, paper, samples, stats,
-                !noProgress && StandardStreams.stderrIsTerminal());
+                !noProgress && StandardStreams.stderrIsTerminal(), motion.clock());
     }
 
     /** The options, once the sizes after {@code --scale} are checked. */

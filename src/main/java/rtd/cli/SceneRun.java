@@ -101,7 +101,7 @@ final class SceneRun {
             ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
         display.show(ProgressDisplay.Phase.of("reading " + source.name()));
         List<SceneError> warnings = new ArrayList<>();
-        Scene scene = options.scale().of(source.read(streams, warnings));
+        Scene scene = options.scale().of(source.read(streams, options.clock(), warnings));
         warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
         stats.endPhase("parse");
         if (export != null) {
@@ -141,7 +141,7 @@ final class SceneRun {
     }
 
     /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */
-    private static void replaceWithText(Path file, String text) throws IOException {
+    static void replaceWithText(Path file, String text) throws IOException {
         // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
         Path temporary = file.toAbsolutePath().getParent().resolve("." + file.getFileName() + "."
                 + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
@@ -187,7 +187,7 @@ final class SceneRun {
      * the scene has lights; for {@code --paper}, the paper's own {@link Scene#render}, one ray a pixel on this
      * thread, in flat colours. The progress line counts the rays as the tracers do, which {@code --stats} sums.
      */
-    private RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
+    RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
         int width = options.width();
         int height = options.height();
         if (accelerator == null) {
@@ -230,6 +230,13 @@ final class SceneRun {
         } catch (RuntimeException e) {
             return -1; // a tracer that cannot tell while it works: no rate, rather than a wrong one
         }
+    }
+
+    /** Builds what {@code --accel} chose and renders {@code scene}, quietly: one frame of an animation ({@link FrameRun}). */
+    Picture draw(Scene scene) {
+        Accelerator accelerator = options.paper() ? null : Accelerator.of(scene, options.accel(), options.width(),
+                options.height(), options.samples(), options.threads());
+        return render(scene, accelerator, ProgressDisplay.start(false, err)).image();
     }
 
     /**

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
+import rtd.io.SceneFile;
 import rtd.io.SceneIO;
 import rtd.scene.Scene;
 
@@ -27,14 +28,30 @@ record SceneSource(Path path, boolean stdin) {
         return stdin ? STDIN_NAME : path.toString();
     }
 
-    /** Reads the scene; its warnings (slips that are no mistakes) go to {@code warnings}. */
-    Scene read(StandardStreams streams, List<SceneError> warnings) throws SceneException, FileError {
+    /** Reads the scene at {@code clock}; its warnings (slips that are no mistakes) go to {@code warnings}. */
+    Scene read(StandardStreams streams, double clock, List<SceneError> warnings) throws SceneException, FileError {
+        if (clock != 0) {
+            return readFile(streams).at(clock, warnings);
+        }
         try {
             if (!stdin) {
                 return SceneIO.readScene(path, warnings);
             }
             return streams.inPath().isPresent() ? SceneIO.readScene(streams.inPath().get(), STDIN_NAME, warnings)
                     : SceneIO.readScene(streams.in(), STDIN_NAME, warnings);
+        } catch (IOException e) {
+            throw new FileError("cannot read the scene file '" + name() + "'", e);
+        }
+    }
+
+    /** Reads the scene file once, to be parsed at each clock of an animation (Part III). */
+    SceneFile readFile(StandardStreams streams) throws FileError {
+        try {
+            if (!stdin) {
+                return SceneFile.read(path);
+            }
+            return streams.inPath().isPresent() ? SceneFile.read(streams.inPath().get(), STDIN_NAME, Path.of(""))
+                    : SceneFile.read(streams.in(), STDIN_NAME);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);
         }

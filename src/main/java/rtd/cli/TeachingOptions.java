@@ -102,6 +102,11 @@ public final class TeachingOptions {
         return 0;
     }
 
+    /** The option given that takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}), or null. */
+    String replacingOption() {
+        return watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : null;
+    }
+
     /** Where {@code --export-pov} goes, planned before anything is read or written; null without it. */
     OutputTarget planExport(RenderOptions options, CommandLine commandLine) throws FileError {
         return exportPov == null ? null : JobPlanner.exportTarget(exportPov, options.scene(), commandLine);

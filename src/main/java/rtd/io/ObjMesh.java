@@ -117,6 +117,11 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (InvalidPathException e) {
             throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
         }
+        MeshCache cache = scene.meshes();
+        ObjMesh cached = cache == null ? null : cache.get(file);
+        if (cached != null) {
+            return cached;
+        }
         byte[] bytes;
         try {
             bytes = readFile(file);
@@ -141,6 +146,9 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
             throw values.errorAtValue(g, 0, "the mesh file '" + shown + "' has no faces: rtd found no 'f' line in it",
                     "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
                             + "skipped too; a mesh needs at least one face");
+        }
+        if (cache != null) {
+            cache.put(file, mesh);
         }
         return mesh;
     }

@@ -13,12 +13,20 @@ final class SourceText implements AutoCloseable {
     private final String name;
     private byte[] bytes;
     private final Path folder;
+    /** The meshes read for other frames of one animation (Part III), or null: each is read anew. */
+    private final MeshCache meshes;
 
     /** A text named {@code name} in messages, whose relative paths start from {@code folder}. */
     SourceText(String name, byte[] bytes, Path folder) {
+        this(name, bytes, folder, null);
+    }
+
+    /** As {@link #SourceText(String, byte[], Path)}, its meshes kept in (and taken from) {@code meshes}. */
+    SourceText(String name, byte[] bytes, Path folder, MeshCache meshes) {
         this.name = name;
         this.bytes = bytes;
         this.folder = folder;
+        this.meshes = meshes;
     }
 
     /** A text whose relative paths start from the current directory. */
@@ -36,6 +44,11 @@ final class SourceText implements AutoCloseable {
 
     Path folder() {
         return folder;
+    }
+
+    /** Where meshes read once are kept for the other frames, or null. */
+    MeshCache meshes() {
+        return meshes;
     }
 
     /**

@@ -1,0 +1,232 @@
+package rtd.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import picocli.CommandLine;
+import rtd.image.Picture;
+import rtd.io.AnimatedGif;
+import rtd.io.ClockText;
+import rtd.io.ImageFormat;
+import rtd.io.SceneError;
+import rtd.io.SceneException;
+import rtd.io.SceneFile;
+import rtd.scene.Scene;
+import rtd.scene.SceneWarnings;
+
+/**
+ * {@code --frames N}: the frames of an animation in one run (Part III, "Frames on the command line"). The
+ * scene file is read once and parsed at each frame's clock, its meshes read once; a scene that never uses the
+ * clock is drawn once and written N times. A small file is first parsed at every clock, so that a value that
+ * breaks a rule at some frame (a radius below 0 at clock = 0.75) stops the run before any drawing. While a
+ * frame is written the next is drawn. Each picture is written all or nothing; a GIF as a whole.
+ */
+final class FrameRun {
+
+    /** Files up to this size are parsed at every clock before the first frame is drawn. */
+    private static final int CHECKED_AHEAD = 1 << 20;
+
+    private final RenderOptions options;
+    private final StandardStreams streams;
+    private final PrintWriter err;
+    private final CommandLine commandLine;
+    private final FramePlan plan;
+
+    FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err, CommandLine commandLine, FramePlan plan) {
+        this.options = options;
+        this.streams = streams;
+        this.err = err;
+        this.commandLine = commandLine;
+        this.plan = plan;
+    }
+
+    /** Draws the plan's frames of {@code source} to {@code target} (numbered, or one GIF); the POV-Ray twin to {@code export}. */
+    void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
+            OutputTarget export) throws SceneException, FileError {
+        boolean gif = format.extension().equals("gif");
+        List<OutputTarget> targets = gif ? List.of(target) : frameTargets(source, target);
+        SceneFile file = source.readFile(streams);
+        String summary;
+        try (ProgressDisplay display = ProgressDisplay.start(options.progress(), err);
+                FrameWriter writer = new FrameWriter(gif ? target : null, targets, format, plan, streams)) {
+            display.show(ProgressDisplay.Phase.of("reading " + source.name()));
+            List<SceneError> warnings = new ArrayList<>();
+            Scene first = frame(file, plan.first(), warnings);
+            warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
+            checkEveryFrame(file);
+            if (export != null) {
+                display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
+                display.message(PovFrames.export(file, plan, options, export));
+            }
+            SceneWarnings.of(first, options.width(), options.height(), !options.paper())
+                    .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
+            writerReady.exceptionally(failure -> null).join();
+            drawAll(file, first, writer, display);
+            writer.finish();
+            summary = "rtd: wrote " + writer.describe() + "\n";
+        }
+        err.print(summary);
+    }
+
+    /** Draws each frame and hands it to the writer, which writes it while the next is drawn. */
+    private void drawAll(SceneFile file, Scene first, FrameWriter writer, ProgressDisplay display)
+            throws SceneException, FileError {
+        SceneRun renderer = new SceneRun(options, streams, err);
+        Picture picture = null;
+        for (int i = plan.first(); i <= plan.last(); i++) {
+            int done = i - plan.first();
+            display.show(ProgressDisplay.Phase.counted(String.format("frame %d of %d-%d, clock %s", i, plan.first(),
+                    plan.last(), ClockText.format(plan.clock(i))), () -> done / (double) plan.count()));
+            if (picture == null || file.usesClock()) {
+                Scene scene = i == plan.first() ? first : frame(file, i, null);
+                picture = renderer.draw(scene);
+            }
+            writer.write(i, picture);
+        }
+    }
+
+    /** The scene at frame {@code i}'s clock, at the size asked; a mistake names the clock if its message does not. */
+    private Scene frame(SceneFile file, int i, List<SceneError> warnings) throws SceneException {
+        double clock = plan.clock(i);
+        try {
+            return options.scale().of(file.at(clock, warnings));
+        } catch (SceneException e) {
+            List<SceneError> named = e.errors().stream().map(error -> error.message().contains("clock =") ? error
+                    : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
+                            + ", at clock = " + ClockText.format(clock) + ")", error.sourceLine(), error.help())).toList();
+            throw new SceneException(named, false);
+        }
+    }
+
+    /** For a small file that uses the clock, parses it at each frame's clock: a mistake at any frame stops the run now. */
+    private void checkEveryFrame(SceneFile file) throws SceneException {
+        if (file.usesClock() && file.size() <= CHECKED_AHEAD) {
+            for (int i = plan.first() + 1; i <= plan.last(); i++) {
+                frame(file, i, null);
+            }
+        }
+    }
+
+    /** Each numbered picture's target, all checked before anything is drawn. */
+    private List<OutputTarget> frameTargets(SceneSource source, OutputTarget target) throws FileError {
+        List<OutputTarget> targets = new ArrayList<>();
+        Path scene = source.stdin() ? streams.inPath().orElse(source.path()) : source.path();
+        for (int i = plan.first(); i <= plan.last(); i++) {
+            targets.add(target.kind() == OutputTarget.Kind.STREAM ? target
+                    : OutputTarget.of(plan.frameFile(target.spelt(), i), scene, "-o", commandLine));
+        }
+        return targets;
+    }
+
+    /** Writes frames on a thread of its own, one behind the drawing: numbered pictures, or one animated GIF. */
+    private static final class FrameWriter implements AutoCloseable {
+        private final ExecutorService thread = Executors.newSingleThreadExecutor(runnable -> {
+            Thread t = new Thread(runnable, "rtd-frame-writer");
+            t.setDaemon(true);
+            return t;
+        });
+        private final OutputTarget gifTarget;
+        private final List<OutputTarget> targets;
+        private final ImageFormat format;
+        private final FramePlan plan;
+        private final StandardStreams streams;
+        private AnimatedGif gif;
+        private Future<Void> pending;
+        private int written;
+
+        FrameWriter(OutputTarget gifTarget, List<OutputTarget> targets, ImageFormat format, FramePlan plan,
+                StandardStreams streams) {
+            this.gifTarget = gifTarget;
+            this.targets = targets;
+            this.format = format;
+            this.plan = plan;
+            this.streams = streams;
+        }
+
+        /** Writes frame {@code i} once the frame before it is written. */
+        void write(int i, Picture picture) throws FileError {
+            waitForPending();
+            pending = thread.submit(() -> {
+                if (gifTarget != null) {
+                    if (gif == null) {
+                        gif = gifTarget.kind() == OutputTarget.Kind.STREAM
+                                ? AnimatedGif.into(gifTarget.file(), plan.delayHundredths())
+                                : AnimatedGif.replacing(gifTarget.file(), plan.delayHundredths());
+                    }
+                    gif.add(picture);
+                } else {
+                    targets.get(i - plan.first()).write(picture, format, streams.out(), f -> { });
+                }
+                written++;
+                return null;
+            });
+        }
+
+        /** Waits for the last frame, and ends the GIF. */
+        void finish() throws FileError {
+            waitForPending();
+            if (gif != null) {
+                try {
+                    gif.finish();
+                } catch (IOException e) {
+                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", e);
+                }
+            }
+        }
+
+        /** What was written: "60 frames, orbit-000.png to orbit-059.png", "orbit.gif (60 frames, 24 per second)". */
+        String describe() {
+            if (gifTarget != null) {
+                return gifTarget.spelt() + " (" + written + " frames, a delay of " + plan.delayHundredths()
+                        + " hundredths of a second each)";
+            }
+            return written + " frames, " + targets.get(0).spelt() + " to " + targets.get(targets.size() - 1).spelt();
+        }
+
+        private void waitForPending() throws FileError {
+            if (pending == null) {
+                return;
+            }
+            try {
+                pending.get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new FileError("interrupted while writing the frames");
+            } catch (java.util.concurrent.ExecutionException e) {
+                Throwable cause = e.getCause();
+                if (cause instanceof FileError fileError) {
+                    throw fileError;
+                }
+                if (cause instanceof IOException io) {
+                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", io);
+                }
+                throw cause instanceof RuntimeException runtime ? runtime : new IllegalStateException(cause);
+            } finally {
+                pending = null;
+            }
+        }
+
+        @Override
+        public void close() {
+            thread.shutdownNow();
+            try {
+                thread.awaitTermination(1, java.util.concurrent.TimeUnit.MINUTES); // the GIF is closed once no frame is being added
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            try {
+                if (gif != null) {
+                    gif.close();
+                }
+            } catch (IOException e) {
+                // the run has failed already, or the GIF is in place: nothing to add
+            }
+        }
+    }
+}

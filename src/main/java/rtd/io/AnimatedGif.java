@@ -1,0 +1,139 @@
+package rtd.io;
+
+import java.awt.image.BufferedImage;
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import javax.imageio.IIOImage;
+import javax.imageio.ImageIO;
+import javax.imageio.ImageTypeSpecifier;
+import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageWriter;
+import javax.imageio.metadata.IIOMetadata;
+import javax.imageio.metadata.IIOMetadataNode;
+import javax.imageio.stream.ImageOutputStream;
+import javax.imageio.stream.MemoryCacheImageOutputStream;
+import rtd.image.Picture;
+
+/**
+ * An animated GIF that loops for ever, written frame by frame through {@code javax.imageio}'s GIF writer
+ * (Part III, "Frames on the command line"): each frame waits its delay in hundredths of a second, and the
+ * first carries the NETSCAPE2.0 extension that makes players loop. Each frame is reduced to 256 colours by
+ * {@link GifPalette}. Like every picture rtd writes, a file is written all or nothing: into a temporary file
+ * beside it, which replaces it only in {@link #finish}; closed unfinished, the temporary file goes.
+ */
+public final class AnimatedGif implements AutoCloseable {
+
+    private static final String FORMAT = "javax_imageio_gif_image_1.0";
+
+    private final ImageWriter writer;
+    private final ImageOutputStream stream;
+    private final OutputStream out;
+    private final int delay;
+    /** The temporary file and where it goes, or null when written into a device as it is. */
+    private final Path temporary;
+    private final Path output;
+    private int frames;
+    private boolean finished;
+
+    private AnimatedGif(OutputStream out, int delay, Path temporary, Path output) throws IOException {
+        this.out = new BufferedOutputStream(out, 1 << 16);
+        this.delay = delay;
+        this.temporary = temporary;
+        this.output = output;
+        this.writer = ImageIO.getImageWritersByFormatName("gif").next();
+        this.stream = new MemoryCacheImageOutputStream(this.out);
+        writer.setOutput(stream);
+        writer.prepareWriteSequence(null);
+    }
+
+    /** A GIF that replaces the regular file {@code output} once finished; {@code delay} in hundredths of a second. */
+    public static AnimatedGif replacing(Path output, int delay) throws IOException {
+        Path folder = output.toAbsolutePath().getParent();
+        TemporaryFiles.Created created = TemporaryFiles.create(folder, output.getFileName().toString());
+        try {
+            return new AnimatedGif(created.out(), delay, created.path(), output);
+        } catch (IOException | RuntimeException e) {
+            created.out().close();
+            Files.deleteIfExists(created.path());
+            TemporaryFiles.forget(created.path());
+            throw e;
+        }
+    }
+
+    /** A GIF written into {@code device} (a FIFO, /dev/null) as it is made. */
+    public static AnimatedGif into(Path device, int delay) throws IOException {
+        return new AnimatedGif(Files.newOutputStream(device, StandardOpenOption.WRITE), delay, null, null);
+    }
+
+    /** Adds the next frame. */
+    public void add(Picture picture) throws IOException {
+        BufferedImage indexed = GifPalette.reduce(picture);
+        ImageWriteParam param = writer.getDefaultWriteParam();
+        IIOMetadata metadata = writer.getDefaultImageMetadata(new ImageTypeSpecifier(indexed), param);
+        IIOMetadataNode root = (IIOMetadataNode) metadata.getAsTree(FORMAT);
+        IIOMetadataNode control = child(root, "GraphicControlExtension");
+        control.setAttribute("disposalMethod", "none");
+        control.setAttribute("userInputFlag", "FALSE");
+        control.setAttribute("transparentColorFlag", "FALSE");
+        control.setAttribute("delayTime", Integer.toString(delay));
+        control.setAttribute("transparentColorIndex", "0");
+        if (frames == 0) {
+            IIOMetadataNode loop = new IIOMetadataNode("ApplicationExtension");
+            loop.setAttribute("applicationID", "NETSCAPE");
+            loop.setAttribute("authenticationCode", "2.0");
+            loop.setUserObject(new byte[] {1, 0, 0}); // sub-block 1: loop count 0, for ever
+            child(root, "ApplicationExtensions").appendChild(loop);
+        }
+        metadata.setFromTree(FORMAT, root);
+        writer.writeToSequence(new IIOImage(indexed, null, metadata), param);
+        frames++;
+    }
+
+    /** Ends the GIF and moves it into place. */
+    public void finish() throws IOException {
+        writer.endWriteSequence();
+        stream.flush();
+        out.flush();
+        out.close();
+        if (temporary != null) {
+            try {
+                Files.move(temporary, output, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temporary, output, StandardCopyOption.REPLACE_EXISTING);
+            }
+            TemporaryFiles.forget(temporary);
+        }
+        finished = true;
+    }
+
+    /** Lets the writer go; an unfinished GIF's temporary file is deleted. */
+    @Override
+    public void close() throws IOException {
+        writer.dispose();
+        if (!finished) {
+            out.close();
+            if (temporary != null) {
+                Files.deleteIfExists(temporary);
+                TemporaryFiles.forget(temporary);
+            }
+        }
+    }
+
+    /** The child of {@code root} named {@code name}, added if it has none. */
+    private static IIOMetadataNode child(IIOMetadataNode root, String name) {
+        for (int i = 0; i < root.getLength(); i++) {
+            if (root.item(i).getNodeName().equalsIgnoreCase(name)) {
+                return (IIOMetadataNode) root.item(i);
+            }
+        }
+        IIOMetadataNode node = new IIOMetadataNode(name);
+        root.appendChild(node);
+        return node;
+    }
+}

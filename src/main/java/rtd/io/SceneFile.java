@@ -1,0 +1,83 @@
+package rtd.io;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import rtd.scene.Scene;
+
+/**
+ * A scene file read into memory once, to be parsed at any clock (Part III, "Expressions, named values and the
+ * clock"): each frame of an animation is the file parsed at its own clock, and the OBJ files of its meshes are
+ * read once for all frames. After the first parse it tells whether any number uses the clock; if none does,
+ * every frame is the same picture.
+ */
+public final class SceneFile {
+
+    private final String name;
+    private final byte[] bytes;
+    private final Path folder;
+    private final MeshCache meshes = new MeshCache();
+    private volatile boolean usesClock;
+
+    private SceneFile(String name, byte[] bytes, Path folder) {
+        this.name = name;
+        this.bytes = bytes;
+        this.folder = folder;
+    }
+
+    /** The scene file at {@code path}, named {@code name} in messages, its meshes found from {@code folder}. */
+    public static SceneFile read(Path path, String name, Path folder) throws IOException {
+        if (Files.isDirectory(path)) {
+            throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
+        }
+        return new SceneFile(name, SceneFileReader.read(path), folder);
+    }
+
+    /** The scene file at {@code path}, its meshes found from its folder, as {@link SceneIO#readScene(Path)}. */
+    public static SceneFile read(Path path) throws IOException {
+        return read(path, path.toString(), path.getParent() == null ? Path.of("") : path.getParent());
+    }
+
+    /** A scene read from {@code in} (at most {@link SceneIO#MAX_SCENE_BYTES}), named {@code name}. */
+    public static SceneFile read(InputStream in, String name) throws IOException {
+        byte[] bytes = in.readNBytes((int) SceneIO.MAX_SCENE_BYTES + 1);
+        if (bytes.length > SceneIO.MAX_SCENE_BYTES) {
+            throw new FileSystemException(name, null, "it is larger than " + SceneFileReader.bytes(SceneIO.MAX_SCENE_BYTES));
+        }
+        return new SceneFile(name, bytes, Path.of(""));
+    }
+
+    /** A scene of {@code text}'s bytes, as {@link SceneIO#parseScene(String, byte[], Path, List)} reads them. */
+    public static SceneFile of(String name, byte[] bytes, Path folder) {
+        return new SceneFile(name, bytes, folder);
+    }
+
+    /** The size of the file in bytes. */
+    public int size() {
+        return bytes.length;
+    }
+
+    /**
+     * The scene at {@code clock}; its slips go to {@code warnings} (null: dropped).
+     *
+     * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
+     */
+    public Scene at(double clock, List<SceneError> warnings) throws SceneException {
+        Names names = new Names(clock);
+        try (SourceText source = new SourceText(name, bytes, folder, meshes)) {
+            Scene scene = SceneParser.parse(source, names, warnings);
+            usesClock |= names.clockUsed();
+            return scene;
+        } finally {
+            usesClock |= names.clockUsed();
+        }
+    }
+
+    /** Whether a number of the file used the clock, in a parse so far. */
+    public boolean usesClock() {
+        return usesClock;
+    }
+}
