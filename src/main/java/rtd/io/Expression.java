@@ -90,7 +90,7 @@ sealed interface Expression {
                 case '/' -> a / b;
                 default -> Math.pow(a, b);
             };
-            return NotFinite.check(result, this, b == 0 && op == '/' ? "it divides by 0" : null);
+            return NotFinite.check(result, this, b == 0 && op == '/' ? "divides by 0" : null);
         }
 
         @Override
@@ -123,7 +123,7 @@ sealed interface Expression {
     /** A part of an expression whose value is NaN or infinite, such as {@code 1/0} or {@code sqrt(-1)}. */
     final class NotFinite extends Exception {
         private static final long serialVersionUID = 1L;
-        /** The part, and what went wrong if it can tell ("it divides by 0"), or null. */
+        /** The part, and what went wrong if it can tell ("divides by 0"), or null. */
         final transient Expression part;
         final String why;
         final double value;

@@ -213,7 +213,7 @@ final class ExpressionParser {
     }
 
     private StatementError unknownFunction(String word, int start) {
-        String nearest = Hints.nearest(word, ExpressionFunction.NAMES);
+        String nearest = near(word, Hints.nearest(word, ExpressionFunction.NAMES));
         return cursor.error(start, "unknown function '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
                 : "the functions are " + String.join(", ", ExpressionFunction.NAMES)
                         + (names.lookUp(word, start) != null ? "; a product is written with '*', such as " + word + "*(…)" : ""));
@@ -233,7 +233,13 @@ final class ExpressionParser {
     String nearestName(String word) {
         List<String> candidates = new ArrayList<>(names.known());
         candidates.addAll(ExpressionFunction.NAMES);
-        return Hints.nearest(word, candidates);
+        return near(word, Hints.nearest(word, candidates));
+    }
+
+    /** {@code nearest} if it is a slip of {@code word}: an edit for every three letters, at least one; else null. */
+    private static String near(String word, String nearest) {
+        return nearest != null && Hints.editDistance(word.toLowerCase(java.util.Locale.ROOT),
+                nearest.toLowerCase(java.util.Locale.ROOT)) <= Math.max(1, word.length() / 3) ? nearest : null;
     }
 
     private void enter() throws StatementError {

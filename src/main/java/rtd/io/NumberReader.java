@@ -70,13 +70,14 @@ final class NumberReader {
             exact = read.value(names.clock());
         } catch (Expression.NotFinite e) {
             String part = e.why != null ? e.why : "is " + (Double.isNaN(e.value) ? "not a number (NaN)" : "infinite");
-            throw cursor.error(e.part.start(), "'" + text + "' is not a finite number" + at + ": this part of it " + part,
+            int place = e.part instanceof Expression.Operation operation ? operation.opOffset() : e.part.start();
+            throw cursor.error(place, "'" + text + "' is not a finite number" + at + ": this part of it " + part,
                     "a division by 0, the square root of a number below 0, or asin or acos of a number beyond -1 "
                             + "to 1 have no value");
         }
         float value = (float) exact;
         if (Float.isInfinite(value)) {
-            throw cursor.error(tokenStart, "'" + text + "' is " + exact + at + ", which is too large for a float",
+            throw cursor.error(tokenStart, "'" + text + "' is too large for a float" + at,
                     "a float holds numbers up to about 3.4e38");
         }
         tree = read;
