@@ -10,8 +10,10 @@ import rtd.image.Picture;
 
 /**
  * Reduces a picture to the 256 colours a GIF frame holds: a palette by median cut (Heckbert, 1982) of the
- * frame's own colours, each pixel mapped to its nearest palette colour after an ordered dither (an 8 × 8
- * Bayer matrix) of ±½ a step of the 32 levels per channel the palette is looked up by. An ordered dither
+ * frame's own colours, each the mean of the pixels it stands for; a pixel of a palette colour keeps it (a
+ * flat scene of few colours stays exact), any other is mapped to its nearest palette colour after an ordered
+ * dither (an 8 × 8 Bayer matrix) of up to one step of the 32 levels per channel the palette is looked up by.
+ * An ordered dither
  * depends on the pixel's place only, not on its neighbours, so a part of the picture that does not move keeps
  * its pattern from frame to frame instead of crawling, as error diffusion would make it.
  */
@@ -31,10 +33,19 @@ final class GifPalette {
     /** The picture in {@code palette} (packed RGB), dithered or not. */
     static BufferedImage reduce(Picture picture, int[] palette, boolean dither) {
         int[] nearest = nearestTable(palette);
+        java.util.Map<Integer, Integer> exact = new java.util.HashMap<>();
+        for (int k = 0; k < palette.length; k++) {
+            exact.putIfAbsent(palette[k], k);
+        }
         int w = picture.width();
         byte[] indices = new byte[w * picture.height()];
         int[] rgb = picture.rgb();
         for (int i = 0; i < rgb.length; i++) {
+            Integer same = exact.get(rgb[i] & 0xFFFFFF);
+            if (same != null) {
+                indices[i] = (byte) (int) same;
+                continue;
+            }
             int offset = dither ? BAYER[(i / w % 8) * 8 + i % w % 8] : 4; // 4: half a step, plain rounding
             int r = Math.min(255, ((rgb[i] >> 16) & 0xFF) + offset) >> 3;
             int g = Math.min(255, ((rgb[i] >> 8) & 0xFF) + offset) >> 3;
@@ -57,8 +68,13 @@ final class GifPalette {
     /** A palette of at most 256 colours for {@code rgb}, by median cut of its colours at 32 levels per channel. */
     static int[] palette(int[] rgb) {
         int[] counts = new int[LEVELS * LEVELS * LEVELS];
+        long[][] sums = new long[3][counts.length];
         for (int c : rgb) {
-            counts[((c >> 19) & 0x1F) << 10 | ((c >> 11) & 0x1F) << 5 | ((c >> 3) & 0x1F)]++;
+            int bin = ((c >> 19) & 0x1F) << 10 | ((c >> 11) & 0x1F) << 5 | ((c >> 3) & 0x1F);
+            counts[bin]++;
+            sums[0][bin] += (c >> 16) & 0xFF;
+            sums[1][bin] += (c >> 8) & 0xFF;
+            sums[2][bin] += c & 0xFF;
         }
         List<int[]> boxes = new ArrayList<>();
         int[] all = new int[counts.length];
@@ -80,7 +96,7 @@ final class GifPalette {
         }
         int[] palette = new int[Math.max(2, boxes.size())]; // an IndexColorModel needs at least 2 entries
         for (int k = 0; k < boxes.size(); k++) {
-            palette[k] = mean(boxes.get(k), counts);
+            palette[k] = mean(boxes.get(k), counts, sums);
         }
         return palette;
     }
@@ -130,20 +146,19 @@ final class GifPalette {
         return List.of(java.util.Arrays.copyOfRange(sorted, 0, cut), java.util.Arrays.copyOfRange(sorted, cut, sorted.length));
     }
 
-    /** The mean colour of the box's pixels, each bin at its centre. */
-    private static int mean(int[] box, int[] counts) {
+    /** The mean colour of the box's pixels, rounded. */
+    private static int mean(int[] box, int[] counts, long[][] sums) {
         long r = 0;
         long g = 0;
         long b = 0;
         long n = 0;
         for (int bin : box) {
-            long c = counts[bin];
-            r += c * (((bin >> 10) & 0x1F) * 8 + 4);
-            g += c * (((bin >> 5) & 0x1F) * 8 + 4);
-            b += c * ((bin & 0x1F) * 8 + 4);
-            n += c;
+            r += sums[0][bin];
+            g += sums[1][bin];
+            b += sums[2][bin];
+            n += counts[bin];
         }
-        return (int) (r / n) << 16 | (int) (g / n) << 8 | (int) (b / n);
+        return (int) ((r + n / 2) / n) << 16 | (int) ((g + n / 2) / n) << 8 | (int) ((b + n / 2) / n);
     }
 
     /** For each bin of 32 levels per channel, the index of the nearest palette colour to its centre. */
