@@ -23,8 +23,11 @@ import rtd.image.Picture;
 /**
  * An animated GIF that loops for ever, written frame by frame through {@code javax.imageio}'s GIF writer
  * (Part III, "Frames on the command line"): each frame waits its delay in hundredths of a second, and the
- * first carries the NETSCAPE2.0 extension that makes players loop. Each frame is reduced to 256 colours by
- * {@link GifPalette}. Like every picture rtd writes, a file is written all or nothing: into a temporary file
+ * first carries the NETSCAPE2.0 extension that makes players loop. Each frame gets its own palette of 256
+ * colours, which the GIF writer builds from the frame's colours (an octree), without dithering: measured on a
+ * shaded animation, this kept the frames closer to the rendered ones (in PSNR, in the error of 4 × 4 pixel
+ * means, which shows banding) and the file smaller than one median-cut palette for the whole animation or per
+ * frame, with or without an ordered dither; a flat scene of few colours keeps them exactly. Like every picture rtd writes, a file is written all or nothing: into a temporary file
  * beside it, which replaces it only in {@link #finish}; closed unfinished, the temporary file goes.
  */
 public final class AnimatedGif implements AutoCloseable {
@@ -73,9 +76,9 @@ public final class AnimatedGif implements AutoCloseable {
 
     /** Adds the next frame. */
     public void add(Picture picture) throws IOException {
-        BufferedImage indexed = GifPalette.reduce(picture);
+        BufferedImage image = ImageWriting.asImage(picture);
         ImageWriteParam param = writer.getDefaultWriteParam();
-        IIOMetadata metadata = writer.getDefaultImageMetadata(new ImageTypeSpecifier(indexed), param);
+        IIOMetadata metadata = writer.getDefaultImageMetadata(new ImageTypeSpecifier(image), param);
         IIOMetadataNode root = (IIOMetadataNode) metadata.getAsTree(FORMAT);
         IIOMetadataNode control = child(root, "GraphicControlExtension");
         control.setAttribute("disposalMethod", "none");
@@ -91,7 +94,7 @@ public final class AnimatedGif implements AutoCloseable {
             child(root, "ApplicationExtensions").appendChild(loop);
         }
         metadata.setFromTree(FORMAT, root);
-        writer.writeToSequence(new IIOImage(indexed, null, metadata), param);
+        writer.writeToSequence(new IIOImage(image, null, metadata), param);
         frames++;
     }
 
