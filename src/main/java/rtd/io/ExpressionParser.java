@@ -220,9 +220,8 @@ final class ExpressionParser {
     }
 
     private StatementError unknownName(String word, int start) {
-        if (names.isBroken(word)) {
-            return cursor.error(start, "'" + word + "' cannot be used: its let at line " + names.lineOf(word)
-                    + " has a mistake", "correct that line, and this one follows");
+        if (names.isBroken(word)) { // its let's mistake is reported there: this statement is only left out
+            return new StatementError(cursor.error(start, "", null).place(), List.of());
         }
         String nearest = nearestName(word);
         return cursor.error(start, "unknown name '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"

@@ -89,10 +89,11 @@ final class Names {
         }
     }
 
-    /** The names known now, for "did you mean …?". */
+    /** The names known now, those of broken lets among them, for "did you mean …?". */
     List<String> known() {
         List<String> known = new ArrayList<>(List.of("clock", "pi"));
         known.addAll(defined.keySet());
+        known.addAll(broken.keySet());
         return known;
     }
 }

@@ -17,9 +17,12 @@ final class StatementError extends Exception {
         this(error, List.of(error));
     }
 
-    /** Several errors, ordered among the scene's errors as if they stood at {@code place}. */
+    /**
+     * Several errors, ordered among the scene's errors as if they stood at {@code place}; none for a statement
+     * left out because of a mistake reported elsewhere (a broken {@code let} it uses).
+     */
     StatementError(SceneError place, List<SceneError> errors) {
-        super(errors.get(0).message(), null, false, false);
+        super(errors.isEmpty() ? place.message() : errors.get(0).message(), null, false, false);
         this.place = place;
         this.errors = List.copyOf(errors);
     }

@@ -127,7 +127,8 @@ final class StatementValues {
             return value;
         }
         throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than 0, found " + written(i),
-                value < 0 ? "without its minus sign: " + number(-value)
+                groups.trees[i] != null ? "an expression here must be greater than 0 at every clock the scene is drawn at"
+                        : value < 0 ? "without its minus sign: " + number(-value)
                         : "a " + meaning(g) + " of 0 leaves nothing to see; give a number greater than 0, such as 1");
     }
 
@@ -307,7 +308,7 @@ final class StatementValues {
         String name = name(g);
         if (!ExpressionParser.isLetter((byte) name.charAt(0)) || name.indexOf('-') >= 0) {
             throw errorAtValue(g, 0, "the name '" + name + "' cannot be defined: a name starts with a letter, then "
-                    + "letters, digits or '_'", "such as let:(r" + name.replace("-", "_") + "):(1)");
+                    + "letters, digits or '_'", "such as let:(size):(1)");
         }
         if (Names.isReserved(name)) {
             throw errorAtValue(g, 0, "'" + name + "' cannot be defined: it is a word of the expressions",

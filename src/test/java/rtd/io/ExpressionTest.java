@@ -223,6 +223,12 @@ class ExpressionTest {
         }
 
         @Test
+        void theUseOfABrokenLetIsNotAMistakeOfItsOwn() {
+            assertError("let:(a):(1/0)\nsphere:(a|0|0):(1):(9|9|9)", 0, 2, 11,
+                    "'1/0' is not a finite number: this part of it divides by 0", null);
+        }
+
+        @Test
         void aNestingTooDeepIsAMistakeNotACrash() {
             String deep = "(".repeat(150) + "1" + ")".repeat(150);
             assertError("sphere:(" + deep + "|0|0):(1):(9|9|9)", 0, 2, 9 + ExpressionParser.MAX_DEPTH,
