@@ -1,17 +1,12 @@
 package rtd.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import picocli.CommandLine;
 import rtd.image.Picture;
-import rtd.io.AnimatedGif;
 import rtd.io.ClockText;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
@@ -50,6 +45,9 @@ final class FrameRun {
     void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
             OutputTarget export) throws SceneException, FileError {
         boolean gif = format.extension().equals("gif");
+        if (options.stats()) {
+            err.println("rtd: note: --stats times the phases of one picture; with --frames it is not used");
+        }
         List<OutputTarget> targets = gif ? List.of(target) : frameTargets(source, target);
         SceneFile file = source.readFile(streams);
         String summary;
@@ -81,8 +79,8 @@ final class FrameRun {
         Picture picture = null;
         for (int i = plan.first(); i <= plan.last(); i++) {
             int done = i - plan.first();
-            display.show(ProgressDisplay.Phase.counted(String.format("frame %d of %d-%d, clock %s", i, plan.first(),
-                    plan.last(), ClockText.format(plan.clock(i))), () -> done / (double) plan.count()));
+            display.show(ProgressDisplay.Phase.counted(String.format("frame %d (%d to %d), clock %s", i,
+                    plan.first(), plan.last(), ClockText.format(plan.clock(i))), () -> done / (double) plan.count()));
             if (picture == null || file.usesClock()) {
                 Scene scene = i == plan.first() ? first : frame(file, i, null);
                 picture = renderer.draw(scene);
@@ -122,111 +120,5 @@ final class FrameRun {
                     : OutputTarget.of(plan.frameFile(target.spelt(), i), scene, "-o", commandLine));
         }
         return targets;
-    }
-
-    /** Writes frames on a thread of its own, one behind the drawing: numbered pictures, or one animated GIF. */
-    private static final class FrameWriter implements AutoCloseable {
-        private final ExecutorService thread = Executors.newSingleThreadExecutor(runnable -> {
-            Thread t = new Thread(runnable, "rtd-frame-writer");
-            t.setDaemon(true);
-            return t;
-        });
-        private final OutputTarget gifTarget;
-        private final List<OutputTarget> targets;
-        private final ImageFormat format;
-        private final FramePlan plan;
-        private final StandardStreams streams;
-        private AnimatedGif gif;
-        private Future<Void> pending;
-        private int written;
-
-        FrameWriter(OutputTarget gifTarget, List<OutputTarget> targets, ImageFormat format, FramePlan plan,
-                StandardStreams streams) {
-            this.gifTarget = gifTarget;
-            this.targets = targets;
-            this.format = format;
-            this.plan = plan;
-            this.streams = streams;
-        }
-
-        /** Writes frame {@code i} once the frame before it is written. */
-        void write(int i, Picture picture) throws FileError {
-            waitForPending();
-            pending = thread.submit(() -> {
-                if (gifTarget != null) {
-                    if (gif == null) {
-                        gif = gifTarget.kind() == OutputTarget.Kind.STREAM
-                                ? AnimatedGif.into(gifTarget.file(), plan.delayHundredths())
-                                : AnimatedGif.replacing(gifTarget.file(), plan.delayHundredths());
-                    }
-                    gif.add(picture);
-                } else {
-                    targets.get(i - plan.first()).write(picture, format, streams.out(), f -> { });
-                }
-                written++;
-                return null;
-            });
-        }
-
-        /** Waits for the last frame, and ends the GIF. */
-        void finish() throws FileError {
-            waitForPending();
-            if (gif != null) {
-                try {
-                    gif.finish();
-                } catch (IOException e) {
-                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", e);
-                }
-            }
-        }
-
-        /** What was written: "60 frames, orbit-000.png to orbit-059.png", "orbit.gif (60 frames, 24 per second)". */
-        String describe() {
-            if (gifTarget != null) {
-                return gifTarget.spelt() + " (" + written + " frames, a delay of " + plan.delayHundredths()
-                        + " hundredths of a second each)";
-            }
-            return written + " frames, " + targets.get(0).spelt() + " to " + targets.get(targets.size() - 1).spelt();
-        }
-
-        private void waitForPending() throws FileError {
-            if (pending == null) {
-                return;
-            }
-            try {
-                pending.get();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new FileError("interrupted while writing the frames");
-            } catch (java.util.concurrent.ExecutionException e) {
-                Throwable cause = e.getCause();
-                if (cause instanceof FileError fileError) {
-                    throw fileError;
-                }
-                if (cause instanceof IOException io) {
-                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", io);
-                }
-                throw cause instanceof RuntimeException runtime ? runtime : new IllegalStateException(cause);
-            } finally {
-                pending = null;
-            }
-        }
-
-        @Override
-        public void close() {
-            thread.shutdownNow();
-            try {
-                thread.awaitTermination(1, java.util.concurrent.TimeUnit.MINUTES); // the GIF is closed once no frame is being added
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            try {
-                if (gif != null) {
-                    gif.close();
-                }
-            } catch (IOException e) {
-                // the run has failed already, or the GIF is in place: nothing to add
-            }
-        }
     }
 }

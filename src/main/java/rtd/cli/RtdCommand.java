@@ -39,6 +39,7 @@ import rtd.io.SceneException;
             "  java -jar rtd.jar examples/input_rtd.txt -o out.png",
             "  java -jar rtd.jar examples/input_rtd.txt --scale 0.25 -o thumbnail.jpg",
             "  java -jar rtd.jar examples/*.txt",
+            "  java -jar rtd.jar examples/orbit.txt --frames 60 -o orbit.gif",
             "The scene format and every message: see README.md and docs/errors.md."})
 public final class RtdCommand implements Callable<Integer> {
 

@@ -77,7 +77,8 @@ final class Grammar {
                     List.of(name("name", "name"), properties("properties",
                             "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
                     (v, out) -> out.material(v.name(0), material(v))),
-            Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")), (v, out) -> v.define(0)));
+            Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
+                    (v, out) -> LetDefinition.define(v, 0)));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {

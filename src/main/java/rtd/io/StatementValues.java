@@ -14,7 +14,8 @@ final class StatementValues {
 
     private final SourceText source;
     private final WrittenGroups groups;
-    private final Names names;
+    /** The names of this reading: the clock and what {@code let} defined (Part III). */
+    final Names names;
     private Statement statement;
     private int line;
     private int lineStart;
@@ -229,10 +230,7 @@ final class StatementValues {
                         : "NaN (not a number) and Infinity are not numbers a scene can use; give a finite number");
     }
 
-    /**
-     * Number {@code i}, the {@code name} channel of the colour whose numbers start at {@code first}; an expression
-     * is rounded to the nearest whole number, ½ up (Part III).
-     */
+    /** Number {@code i}, the {@code name} channel of the colour from {@code first}; an expression rounded ½ up (Part III). */
     private int channel(int i, String name, int first) throws StatementError {
         float value = groups.trees[i] == null ? groups.values[i] : (float) Math.floor(groups.exact[i] + 0.5);
         if (groups.trees[i] != null && !(value >= 0 && value <= 255)) {
@@ -284,52 +282,17 @@ final class StatementValues {
                 source.lineText(lineStart), help));
     }
 
-    /**
-     * Value {@code i} (of all groups) as written, for messages; an expression with its value, and the clock if
-     * it uses it: "1-2*clock, which is -0.5 at clock = 0.75".
-     */
+    /** Value {@code i} (of all groups) as written, for messages; an expression with its value ({@link ClockText#withValue}). */
     private String written(int i) {
         String text = source.text(groups.starts[i], groups.ends[i]);
         Expression tree = groups.trees[i];
-        if (tree == null) {
-            return text;
-        }
-        float value = groups.values[i];
-        return text + ", which is " + (value == Math.rint(value) && Math.abs(value) < 1e9 ? String.valueOf((long) value)
-                : String.valueOf(value)) + (tree.usesClock() ? " at clock = " + ClockText.format(names.clock()) : "");
+        return tree == null ? text : ClockText.withValue(text, groups.values[i], tree.usesClock(), names.clock());
     }
 
-    /**
-     * {@code let:(name):(expression)} (Part III): defines the name of group {@code g} as the expression of
-     * group {@code g + 1}, for the lines below. A name is a letter, then letters, digits or '_'; not a word the
-     * expressions use, and not defined twice.
-     */
-    void define(int g) throws StatementError {
-        String name = name(g);
-        if (!ExpressionParser.isLetter((byte) name.charAt(0)) || name.indexOf('-') >= 0) {
-            throw errorAtValue(g, 0, "the name '" + name + "' cannot be defined: a name starts with a letter, then "
-                    + "letters, digits or '_'", "such as let:(size):(1)");
-        }
-        if (Names.isReserved(name)) {
-            throw errorAtValue(g, 0, "'" + name + "' cannot be defined: it is a word of the expressions",
-                    "choose another name; clock, pi and the functions (sin, cos, sqrt, …) keep their meaning");
-        }
-        Integer earlier = names.lineOf(name);
-        if (earlier != null) {
-            throw errorAtValue(g, 0, "a second let of '" + name + "': each name is defined once",
-                    "the first '" + name + "' is at line " + earlier);
-        }
-        int i = groups.firsts[g + 1];
-        float value = finite(i, meaning(g + 1));
-        Expression tree = groups.trees[i] != null ? groups.trees[i]
-                : new Expression.Number(value, groups.starts[i]); // a plain number: as a statement would read it
-        names.define(name, tree, line);
-    }
-
-    /** Notes that the {@code let} being read has a mistake, once its name is read: its uses then say so. */
-    void defineBroken() {
-        if (groups.hasValue(0)) {
-            names.defineBroken(name(0), line);
-        }
+    /** The one value of group {@code g}, finite, as an expression: the one written, or the plain number as read. */
+    Expression expression(int g) throws StatementError {
+        int i = groups.firsts[g];
+        float value = finite(i, meaning(g));
+        return groups.trees[i] != null ? groups.trees[i] : new Expression.Number(value, groups.starts[i]);
     }
 }
