@@ -26,17 +26,35 @@ final class NumberReader {
         this.expressions = new ExpressionParser(cursor, names);
     }
 
-    /** Reads one number, or an expression, at the cursor; its start is left in {@link #tokenStart}. */
+    /**
+     * Reads one number, or an expression, at the cursor; its start is left in {@link #tokenStart}. The common case,
+     * a plain number that ends at '|' or ')', stays a small method, compiled early in a large file's first read.
+     */
     float read() throws StatementError {
         tree = null;
-        tokenStart = cursor.pos;
+        int start = cursor.pos;
+        tokenStart = start;
         byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && !TextBytes.isDelimiter(bytes[cursor.pos])) {
-            cursor.pos++;
+        int end = start;
+        while (end < bytes.length && !TextBytes.isDelimiter(bytes[end])) {
+            end++;
         }
+        cursor.pos = end;
+        if (end > start && end < bytes.length && (bytes[end] == '|' || bytes[end] == ')')) {
+            try {
+                return FloatParser.parse(bytes, start, end);
+            } catch (NumberFormatException e) {
+                // an expression or a mistake: below
+            }
+        }
+        return readOther();
+    }
+
+    /** A token that is no plain number before '|' or ')': one before blanks, an expression, or a mistake. */
+    private float readOther() throws StatementError {
         if (cursor.pos > tokenStart) {
             try {
-                float plain = FloatParser.parse(bytes, tokenStart, cursor.pos);
+                float plain = FloatParser.parse(cursor.bytes, tokenStart, cursor.pos);
                 if (!operatorFollows()) {
                     return plain;
                 }

@@ -17,6 +17,8 @@ final class WrittenGroups {
     /** For a value written as an expression (Part III): its tree and its value in double precision; else null. */
     Expression[] trees;
     double[] exact;
+    /** Whether a value of this statement is an expression. */
+    boolean anyExpression;
     int count;
     int[] firsts;
     int[] opens;
@@ -38,6 +40,10 @@ final class WrittenGroups {
 
     /** Forgets the groups of the last statement. */
     void clear() {
+        if (anyExpression) { // only then does a tree need forgetting: a plain number's stays null
+            Arrays.fill(trees, 0, count, null);
+            anyExpression = false;
+        }
         count = 0;
         groupCount = 0;
         target = -1;
@@ -71,7 +77,6 @@ final class WrittenGroups {
         values[count] = value;
         starts[count] = start;
         ends[count] = end;
-        trees[count] = null;
         keys[count++] = -1;
     }
 
@@ -79,6 +84,7 @@ final class WrittenGroups {
     void markExpression(double exactValue, Expression tree) {
         trees[count - 1] = tree;
         exact[count - 1] = exactValue;
+        anyExpression = true;
     }
 
     /** Keeps {@code key=value} of the current group: the key's index among the group's keys. */
@@ -119,6 +125,7 @@ final class WrittenGroups {
         copy.firsts = Arrays.copyOf(firsts, groupCount);
         copy.opens = Arrays.copyOf(opens, groupCount);
         copy.count = count;
+        copy.anyExpression = anyExpression;
         copy.groupCount = groupCount;
         copy.target = target;
         return copy;
