@@ -15,6 +15,8 @@ import javax.imageio.stream.ImageInputStream;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import rtd.io.SceneException;
+import rtd.io.SceneFile;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
@@ -147,6 +149,17 @@ class FramesTest {
         Run run = rtd(still.toString(), "--frames", "3", "-o", dir.resolve("s.png").toString());
         assertThat(run.exitCode()).as(run.err()).isZero();
         assertThat(pixels(dir.resolve("s-002.png"))).isEqualTo(pixels(dir.resolve("s-000.png")));
+    }
+
+    @Test
+    void theAnimatedExamplesReadAtEveryClockAndUseIt() throws IOException, SceneException {
+        for (String example : new String[] {"orbit", "bouncing_ball", "planets"}) {
+            SceneFile file = SceneFile.read(Path.of("examples", example + ".txt"));
+            for (double clock : new double[] {0, 0.37, 0.5, 1}) {
+                assertThat(file.at(clock, null).objects()).as(example).isNotEmpty();
+            }
+            assertThat(file.usesClock()).as(example).isTrue();
+        }
     }
 
     private static int[] pixels(Path png) throws IOException {
