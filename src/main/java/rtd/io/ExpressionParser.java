@@ -24,11 +24,14 @@ final class ExpressionParser {
 
     /** Deeper nesting than this is a mistake, not a scene: it would overflow the reader's stack. */
     static final int MAX_DEPTH = 100;
+    /** More operators than this in one expression are a mistake too: its tree would be as deep to evaluate. */
+    static final int MAX_OPERATORS = 1000;
     private static final String OPERATORS = "an operator (+ - * / ^)";
 
     private final LineCursor cursor;
     private final Names names;
     private int depth;
+    private int operators;
 
     ExpressionParser(LineCursor cursor, Names names) {
         this.cursor = cursor;
@@ -38,6 +41,7 @@ final class ExpressionParser {
     /** Reads an expression from the cursor on; the cursor is left after it. */
     Expression read() throws StatementError {
         depth = 0;
+        operators = 0;
         Expression expression = sum();
         cursor.skipBlanks();
         if (startsOperand()) { // "2 x", "2(3)": a product needs its '*'
@@ -55,7 +59,7 @@ final class ExpressionParser {
             if (!cursor.at('+') && !cursor.at('-')) {
                 return left;
             }
-            int at = cursor.pos++;
+            int at = operator();
             left = new Expression.Operation(cursor.bytes[at] == '+' ? '+' : '-', left, product(), at);
         }
     }
@@ -67,7 +71,7 @@ final class ExpressionParser {
             if (!cursor.at('*') && !(cursor.at('/') && !atComment())) {
                 return left;
             }
-            int at = cursor.pos++;
+            int at = operator();
             left = new Expression.Operation(cursor.bytes[at] == '*' ? '*' : '/', left, unary(), at);
         }
     }
@@ -78,7 +82,7 @@ final class ExpressionParser {
         enter();
         try {
             if (cursor.at('-')) {
-                int at = cursor.pos++;
+                int at = operator();
                 return new Expression.Negation(unary(), at);
             }
             if (cursor.at('+')) {
@@ -97,7 +101,7 @@ final class ExpressionParser {
         if (!cursor.at('^')) {
             return base;
         }
-        int at = cursor.pos++;
+        int at = operator();
         return new Expression.Operation('^', base, unary(), at);
     }
 
@@ -239,6 +243,15 @@ final class ExpressionParser {
     private static String near(String word, String nearest) {
         return nearest != null && Hints.editDistance(word.toLowerCase(java.util.Locale.ROOT),
                 nearest.toLowerCase(java.util.Locale.ROOT)) <= Math.max(1, word.length() / 3) ? nearest : null;
+    }
+
+    /** Passes the operator at the cursor and answers where it stands; one too many is a mistake. */
+    private int operator() throws StatementError {
+        if (++operators > MAX_OPERATORS) {
+            throw cursor.error(cursor.pos, "the expression is too long: more than " + MAX_OPERATORS + " operators",
+                    "split it with let:(name):(expression) lines");
+        }
+        return cursor.pos++;
     }
 
     private void enter() throws StatementError {

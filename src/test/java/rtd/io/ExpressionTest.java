@@ -236,6 +236,13 @@ class ExpressionTest {
         }
 
         @Test
+        void anExpressionOfTooManyOperatorsIsAMistakeNotACrash() {
+            String sum = "1" + "+1".repeat(200_000);
+            assertError("sphere:(" + sum + "|0|0):(1):(9|9|9)", 0, 2, 9 + 2 * ExpressionParser.MAX_OPERATORS + 1,
+                    "the expression is too long: more than " + ExpressionParser.MAX_OPERATORS + " operators", null);
+        }
+
+        @Test
         void aWordThatIsNoNameKeepsTheMessageOfANumberMistyped() {
             assertError("sphere:(3|eight|-1):(2):(0|127|255)", 11, "expected a number, found 'eight'", Hints.NUMBER_FORMS);
         }
