@@ -38,7 +38,7 @@ final class NothingInView {
     /** Whether an object may be drawn in the background's colour: any, in a lit scene; else one painted in it. */
     static boolean someObjectLooksLikeBackground(Scene scene) {
         int background = scene.ambient().getRGB();
-        return !scene.lights().isEmpty() || scene.objects().stream().anyMatch(o -> o.color().getRGB() == background);
+        return !scene.lights().isEmpty() || scene.objects().stream().anyMatch(o -> o.isPatterned() || o.color().getRGB() == background);
     }
 
     /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}, drawn as {@code options} ask. */
