@@ -74,7 +74,12 @@ final class Grammar {
             Statement.setting("material",
                     List.of(name("name", "name"), properties("properties",
                             "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
-                    (v, out) -> out.material(v.name(0), material(v))));
+                    (v, out) -> out.material(v.name(0), material(v))),
+            Statement.definition("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
+                    numbers("first colour", "R|G|B"), numbers("second colour", "R|G|B")),
+                    List.of(name("transform", "transform")), false, Definitions::pattern),
+            Statement.definition("transform", List.of(name("name", "name"), Group.operation("step", "scale s")),
+                    List.of(Group.operation("step", "step")), true, Definitions::transform));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {

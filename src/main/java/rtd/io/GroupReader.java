@@ -38,8 +38,14 @@ final class GroupReader {
         if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
             throw groupError(groupStart, "empty group: %s needs " + contents(group), statement, group);
         }
+        if (group.orName() && atLoneName()) {
+            readName(statement, group);
+            written.markNamed();
+            return;
+        }
         switch (group.kind()) {
             case NUMBERS -> readNumbers(statement, group, groupStart);
+            case OPERATION -> readOperation(statement, group);
             case NAME -> readName(statement, group);
             case PATH -> readPath(statement, group);
             case PROPERTIES -> readProperties(statement, group);
@@ -68,6 +74,48 @@ final class GroupReader {
         if (found < group.size()) {
             throw groupError(groupStart, "too few numbers in %s: it takes " + contents(group) + ", found " + found,
                     statement, group);
+        }
+    }
+
+    /** Whether the group holds one name from the cursor on: a letter first, then a word, blanks and ')'. */
+    private boolean atLoneName() {
+        byte[] bytes = cursor.bytes;
+        int p = cursor.pos;
+        if (p >= bytes.length || !Character.isLetter(bytes[p])) {
+            return false;
+        }
+        while (p < bytes.length && (TextBytes.isWordByte(bytes[p]) || bytes[p] == '-')) {
+            p++;
+        }
+        while (p < bytes.length && TextBytes.isBlank(bytes[p])) {
+            p++;
+        }
+        return p < bytes.length && bytes[p] == ')';
+    }
+
+    /** A step of a transformation: a word, blanks, and one or more numbers separated by '|', up to and with ')'. */
+    private void readOperation(Statement statement, Group group) throws StatementError {
+        int start = cursor.pos;
+        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
+            cursor.pos++;
+        }
+        if (cursor.pos == start) {
+            throw groupError(cursor.pos, "expected an operation such as 'scale 2' in %s, found " + cursor.describe(cursor.pos),
+                    statement, group);
+        }
+        written.add(Float.NaN, start, cursor.pos);
+        cursor.skipBlanks();
+        if (cursor.at(')')) {
+            throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos - 0).strip()
+                    + "' in " + group.of(statement) + ", found ')'", "write a step as (scale 2), (rotate_y 30) or (translate 0|1|0)");
+        }
+        while (true) {
+            cursor.skipBlanks();
+            float value = readNumber();
+            written.add(value, tokenStart, cursor.pos);
+            if (groupEndsAfterNumber(statement, group)) {
+                return;
+            }
         }
     }
 
@@ -293,6 +341,7 @@ final class GroupReader {
             case NAME -> "a name";
             case PATH -> "a file path";
             case PROPERTIES -> "key=value pairs";
+            case OPERATION -> "an operation such as (" + group.shape() + ")";
         };
     }
 }

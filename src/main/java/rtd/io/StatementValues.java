@@ -1,7 +1,12 @@
 package rtd.io;
 
+import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
+import rtd.geometry.Pattern;
+import rtd.geometry.Patterned;
+import rtd.geometry.Transformed;
 import rtd.image.Color;
+import rtd.math.Matrix4;
 import rtd.math.Vector3f;
 
 /**
@@ -19,6 +24,10 @@ final class StatementValues {
     private int lineStart;
     private int statementStart;
     private Material material;
+    /** The pattern the colour group names, once known; null for a colour of numbers. */
+    private Pattern pattern;
+    /** The transformation the object names, once known; null for none. */
+    private Matrix4 transform;
 
     /** The values of the statements read into {@code groups}, one after the other. */
     StatementValues(SourceText source, WrittenGroups groups) {
@@ -33,12 +42,49 @@ final class StatementValues {
         this.lineStart = lineStart;
         this.statementStart = statementStart;
         this.material = Material.DEFAULT;
+        this.pattern = null;
+        this.transform = null;
         groups.clear();
     }
 
     /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
     void useMaterial(Material material) {
         this.material = material;
+    }
+
+    /** Sets the pattern the colour group names and the transformation the object names (either null: none). */
+    void usePatternAndTransform(Pattern pattern, Matrix4 transform) {
+        this.pattern = pattern;
+        this.transform = transform;
+    }
+
+    /**
+     * The object as the statement's names make it: patterned if its colour group names a pattern, then
+     * transformed if it names a transform (Part III). Every shape's object passes through here.
+     */
+    IGeometry dress(IGeometry object) {
+        IGeometry painted = pattern == null ? object : new Patterned(object, pattern);
+        return transform == null ? painted : new Transformed(painted, transform);
+    }
+
+    /** The group that holds a name in the place of its numbers (a colour naming a pattern), or −1. */
+    int namedGroup() {
+        return groups.named;
+    }
+
+    /** How many optional groups follow the statement's own. */
+    int optionalCount() {
+        return groups.groupCount - statement.groups().size();
+    }
+
+    /** How many values group {@code g} holds: a step of a transformation holds its word and its numbers. */
+    int size(int g) {
+        return groups.end(g) - groups.firsts[g];
+    }
+
+    /** Value {@code k} of group {@code g}, which must be finite. */
+    float number(int g, int k) throws StatementError {
+        return finite(groups.firsts[g] + k, meaning(g));
     }
 
     /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
@@ -190,6 +236,9 @@ final class StatementValues {
 
     /** The three numbers of group {@code g}: a colour, each channel a whole number from 0 to 255. */
     Color colour(int g) throws StatementError {
+        if (g == groups.named) {
+            return pattern == null ? Color.BLACK : pattern.a(); // the object's colour is the pattern's: see dress
+        }
         int i = groups.firsts[g];
         return new Color(channel(i, "red", i), channel(i + 1, "green", i), channel(i + 2, "blue", i));
     }
@@ -251,7 +300,8 @@ final class StatementValues {
     }
 
     private String meaning(int g) {
-        return g < statement.groups().size() ? statement.groups().get(g).meaning() : Statement.MATERIAL.meaning();
+        int own = statement.groups().size();
+        return g < own ? statement.groups().get(g).meaning() : statement.optional(g - own).meaning();
     }
 
     /** Group {@code g} as written, "(0|0|0)"; "(at 0|0|0)" for a point to look at. */

@@ -1,0 +1,138 @@
+package rtd.io;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import rtd.geometry.Material;
+import rtd.geometry.Pattern;
+import rtd.math.Matrix4;
+
+/**
+ * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each
+ * name is defined once, by one of them, above or below the lines that use it. It resolves an object's names
+ * (its material and transform, in either order, each at most once; the pattern its colour group names) and
+ * a pattern's transform, and words each mistake at the name that makes it.
+ */
+final class Names {
+
+    /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}. */
+    private final Map<String, Object> defined = new HashMap<>();
+    private final Map<String, String> kinds = new HashMap<>();
+    /** The names whose definitions have mistakes: not unknown, only broken. */
+    private final Set<String> broken;
+    /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
+    private final boolean onlyMaterials;
+
+    /** The names {@code contents} defines; a name defined twice is an error at the second definition. */
+    Names(SceneContents contents, List<SceneContents.Found> errors) {
+        broken = contents.brokenDefinitions;
+        onlyMaterials = contents.patterns.isEmpty() && contents.transforms.isEmpty();
+        Map<String, SceneError> first = new HashMap<>();
+        for (var definition : contents.materials) {
+            define(definition.value().name(), "material", definition.value().material(), definition.place(), first, errors);
+        }
+        for (var definition : contents.transforms) {
+            define(definition.value().name(), "transform", definition.value().matrix(), definition.place(), first, errors);
+        }
+        for (var definition : contents.patterns) {
+            var named = definition.value();
+            Pattern pattern = named.pattern();
+            if (named.transform() != null) {
+                Matrix4 matrix = lookUp(named.transform(), "transform", definition.place(), errors);
+                pattern = new Pattern(pattern.kind(), pattern.a(), pattern.b(), matrix == null ? Matrix4.IDENTITY : matrix);
+            }
+            define(named.name(), "pattern", pattern, definition.place(), first, errors);
+        }
+    }
+
+    private void define(String name, String kind, Object value, SceneError place, Map<String, SceneError> first,
+            List<SceneContents.Found> errors) {
+        SceneError earlier = first.putIfAbsent(name, place);
+        if (earlier == null) {
+            defined.put(name, value);
+            kinds.put(name, kind);
+        } else if (kinds.get(name).equals(kind)) {
+            errors.add(found(place.saying("a second " + kind + " '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier.line())));
+        } else {
+            errors.add(found(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
+                    + earlier.line() + ": materials, patterns and transforms share one set of names",
+                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'")));
+        }
+    }
+
+    /** The material {@code name} names, or null. */
+    Material material(String name) {
+        return defined.get(name) instanceof Material material ? material : null;
+    }
+
+    /** The transformation {@code name} names, or null. */
+    Matrix4 transform(String name) {
+        return defined.get(name) instanceof Matrix4 matrix ? matrix : null;
+    }
+
+    /** What {@code name} is defined as ("material", "pattern", "transform"), or null. */
+    String kindOf(String name) {
+        return kinds.get(name);
+    }
+
+    /** Whether {@code name} is unknown only because its definition has a mistake, reported already. */
+    boolean isBroken(String name) {
+        return broken.contains(name);
+    }
+
+    /**
+     * The pattern or transform {@code name} (as {@code kind} says) for a use at {@code place}; null, with an
+     * error, if it is unknown or something else.
+     */
+    @SuppressWarnings("unchecked")
+    <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
+        String is = kinds.get(name);
+        if (kind.equals(is)) {
+            return (T) defined.get(name);
+        }
+        if (is != null) {
+            errors.add(found(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is))));
+        } else if (!broken.contains(name)) {
+            errors.add(found(place.saying("unknown " + kind + " '" + name + "'", didYouMean(name, kind))));
+        }
+        return null;
+    }
+
+    /** "did you mean …?" among the names of {@code kind}, or how to define one. */
+    String didYouMean(String name, String kind) {
+        List<String> candidates = kinds.entrySet().stream().filter(e -> kind.contains(e.getValue()))
+                .map(Map.Entry::getKey).toList();
+        String nearest = Hints.nearest(name, candidates);
+        if (nearest != null) {
+            return "did you mean '" + nearest + "'?";
+        }
+        return switch (kind) {
+            case "pattern" -> "define it with a line such as pattern:(" + name + "):(checker):(255|0|0):(255|255|0)";
+            case "transform" -> "define it with a line such as transform:(" + name + "):(scale 2):(translate 0|1|0)";
+            default -> onlyMaterials ? "define it with a line such as material:(" + name + "):(diffuse=0.9)"
+                    : "define it with a line such as material:(" + name + "):(diffuse=0.9) or transform:(" + name
+                            + "):(scale 2)";
+        };
+    }
+
+    /** The word for an unknown name in an object's last groups: "material", or "material or transform" once there are transforms. */
+    String objectNameKind() {
+        return onlyMaterials ? "material" : "material or transform";
+    }
+
+    /** Where a name of {@code kind} belongs, for a name used in the wrong place. */
+    static String whereItGoes(String kind) {
+        return switch (kind) {
+            case "pattern" -> "a pattern's name goes in the object's colour group: sphere:(0|0|0):(1):(checks)";
+            case "material" -> "a material's name goes in one of the object's last groups: sphere:(0|0|0):(1):(255|0|0):(shiny)";
+            default -> "a transform's name goes in one of an object's last groups, or a pattern's: "
+                    + "sphere:(0|0|0):(1):(255|0|0):(stretched)";
+        };
+    }
+
+    private static SceneContents.Found found(SceneError error) {
+        return new SceneContents.Found(error.line(), error.column(), error);
+    }
+}
