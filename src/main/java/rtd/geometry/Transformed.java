@@ -46,12 +46,25 @@ public final class Transformed implements IGeometry {
         return intersect(ray, TestObserver.NONE);
     }
 
-    /** The shape's own test on the ray in its space; the hit point on the world's ray at the same t. */
+    /**
+     * The shape's own test on the ray in its space; the hit point on the world's ray at the same t. A hit
+     * outside the object's box is no hit: float rounding of a ray from far away, magnified by an uneven
+     * scale, would put it there, and it is noise, not the surface. So every hit lies in {@link #bounds},
+     * as the engine requires of a shape it does not know.
+     */
     @Override
     public Intersection intersect(Ray ray, TestObserver watch) {
         Ray local = objectRay(ray);
         watch.transformedRay(matrix, local);
-        return Intersection.at(ray, shape.intersect(local, watch).t());
+        Intersection hit = Intersection.at(ray, shape.intersect(local, watch).t());
+        return !hit.happened() || inBounds(hit) ? hit : Intersection.at(ray, Float.NaN);
+    }
+
+    private boolean inBounds(Intersection hit) {
+        Vector3f min = bounds.min();
+        Vector3f max = bounds.max();
+        return min.x() <= hit.x() && hit.x() <= max.x() && min.y() <= hit.y() && hit.y() <= max.y()
+                && min.z() <= hit.z() && hit.z() <= max.z(); // true throughout for an unbounded shape
     }
 
     /** {@code M⁻¹O + t·M⁻¹R}: the ray in the shape's space. */
