@@ -42,8 +42,12 @@ public record Hit(IGeometry object, int index, float t, float distance, Vector3f
      * boundary shows the side beneath it, not noise.
      */
     public Color colour(Vector3f direction) {
-        return object.isPatterned() ? object.colorAt(under(direction, normal(direction)), PatternObserver.NONE)
-                : object.color();
+        return colour(direction, PatternObserver.NONE);
+    }
+
+    /** {@link #colour(Vector3f)}, telling {@code watch} how a pattern chose it ({@code --explain}). */
+    public Color colour(Vector3f direction, PatternObserver watch) {
+        return object.isPatterned() ? object.colorAt(under(direction, normal(direction)), watch) : object.color();
     }
 
     /** {@code P − ε·N}, N being {@code normal} turned towards where the ray along {@code direction} came from. */
