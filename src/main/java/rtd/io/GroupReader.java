@@ -106,8 +106,8 @@ final class GroupReader {
         written.add(Float.NaN, start, cursor.pos);
         cursor.skipBlanks();
         if (cursor.at(')')) {
-            throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos - 0).strip()
-                    + "' in " + group.of(statement) + ", found ')'", "write a step as (scale 2), (rotate_y 30) or (translate 0|1|0)");
+            throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
+                    + "' in " + group.of(statement) + ", found ')'", "write a step as (scale 2), (scale 1|2|1), (rotate_y 30) or (translate 0|1|0)");
         }
         while (true) {
             cursor.skipBlanks();

@@ -1,5 +1,7 @@
 package rtd.io;
 
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -24,26 +26,32 @@ final class Names {
     /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
     private final boolean onlyMaterials;
 
-    /** The names {@code contents} defines; a name defined twice is an error at the second definition. */
+    /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
     Names(SceneContents contents, List<SceneContents.Found> errors) {
         broken = contents.brokenDefinitions;
         onlyMaterials = contents.patterns.isEmpty() && contents.transforms.isEmpty();
+        List<Definition> all = new ArrayList<>();
+        contents.materials.forEach(d -> all.add(new Definition(d.value().name(), "material", d.value().material(), d.place())));
+        contents.transforms.forEach(d -> all.add(new Definition(d.value().name(), "transform", d.value().matrix(), d.place())));
+        contents.patterns.forEach(d -> all.add(new Definition(d.value().name(), "pattern", d.value(), d.place())));
+        all.sort(Comparator.comparingInt((Definition d) -> d.place().line()).thenComparingInt(d -> d.place().column()));
         Map<String, SceneError> first = new HashMap<>();
-        for (var definition : contents.materials) {
-            define(definition.value().name(), "material", definition.value().material(), definition.place(), first, errors);
+        for (Definition definition : all) {
+            define(definition.name(), definition.kind(), definition.value(), definition.place(), first, errors);
         }
-        for (var definition : contents.transforms) {
-            define(definition.value().name(), "transform", definition.value().matrix(), definition.place(), first, errors);
-        }
-        for (var definition : contents.patterns) {
+        for (var definition : contents.patterns) { // a pattern's transform may be defined below it
             var named = definition.value();
-            Pattern pattern = named.pattern();
-            if (named.transform() != null) {
-                Matrix4 matrix = lookUp(named.transform(), "transform", definition.place(), errors);
-                pattern = new Pattern(pattern.kind(), pattern.a(), pattern.b(), matrix == null ? Matrix4.IDENTITY : matrix);
+            if (defined.get(named.name()) == named) {
+                Matrix4 matrix = named.transform() == null ? Matrix4.IDENTITY
+                        : lookUp(named.transform(), "transform", named.transformPlace(), errors);
+                Pattern p = named.pattern();
+                defined.put(named.name(), new Pattern(p.kind(), p.a(), p.b(), matrix == null ? Matrix4.IDENTITY : matrix));
             }
-            define(named.name(), "pattern", pattern, definition.place(), first, errors);
         }
+    }
+
+    /** One definition of a name, with the place of its name. */
+    private record Definition(String name, String kind, Object value, SceneError place) {
     }
 
     private void define(String name, String kind, Object value, SceneError place, Map<String, SceneError> first,

@@ -29,8 +29,8 @@ final class SceneContents implements Statement.Output {
     record Named(String name, Material material) {
     }
 
-    /** A pattern, the name it is defined under, and the name of its transform (null: none). */
-    record NamedPattern(String name, Pattern pattern, String transform) {
+    /** A pattern, the name it is defined under, and the name of its transform (null: none) with its place. */
+    record NamedPattern(String name, Pattern pattern, String transform, SceneError transformPlace) {
     }
 
     /** A transformation and the name it is defined under. */
@@ -127,7 +127,8 @@ final class SceneContents implements Statement.Output {
 
     @Override
     public void pattern(String name, Pattern pattern, String transform) {
-        patterns.add(new Located<>(new NamedPattern(name, pattern, transform), values.placeOfValue(0, 0)));
+        SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
+        patterns.add(new Located<>(new NamedPattern(name, pattern, transform, transformPlace), values.placeOfValue(0, 0)));
     }
 
     @Override
