@@ -112,6 +112,8 @@ final class Hints {
         synonyms("tri dreieck face", "triangle");
         synonyms("obj model modell", "mesh");
         synonyms("mat finish surface", "material");
+        synonyms("texture textur pigment muster checkerboard checkers stripe ring", "pattern");
+        synonyms("matrix transformation scale rotate translate move", "transform");
     }
 
 
