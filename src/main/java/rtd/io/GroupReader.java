@@ -14,7 +14,7 @@ final class GroupReader {
     private final LineCursor cursor;
     private final WrittenGroups written;
     /** Where the number that {@link #readNumber} read last starts. */
-    private int tokenStart;
+    int tokenStart;
 
     GroupReader(LineCursor cursor, WrittenGroups written) {
         this.cursor = cursor;
@@ -38,14 +38,14 @@ final class GroupReader {
         if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
             throw groupError(groupStart, "empty group: %s needs " + contents(group), statement, group);
         }
-        if (group.orName() && atLoneName()) {
+        if (group.orName() && WordGroups.atLoneName(cursor)) {
             readName(statement, group);
             written.markNamed();
             return;
         }
         switch (group.kind()) {
             case NUMBERS -> readNumbers(statement, group, groupStart);
-            case OPERATION -> readOperation(statement, group);
+            case OPERATION -> WordGroups.readStep(this, cursor, written, statement, group);
             case NAME -> readName(statement, group);
             case PATH -> readPath(statement, group);
             case PROPERTIES -> readProperties(statement, group);
@@ -77,48 +77,6 @@ final class GroupReader {
         }
     }
 
-    /** Whether the group holds one name from the cursor on: a letter first, then a word, blanks and ')'. */
-    private boolean atLoneName() {
-        byte[] bytes = cursor.bytes;
-        int p = cursor.pos;
-        if (p >= bytes.length || !Character.isLetter(bytes[p])) {
-            return false;
-        }
-        while (p < bytes.length && (TextBytes.isWordByte(bytes[p]) || bytes[p] == '-')) {
-            p++;
-        }
-        while (p < bytes.length && TextBytes.isBlank(bytes[p])) {
-            p++;
-        }
-        return p < bytes.length && bytes[p] == ')';
-    }
-
-    /** A step of a transformation: a word, blanks, and one or more numbers separated by '|', up to and with ')'. */
-    private void readOperation(Statement statement, Group group) throws StatementError {
-        int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
-        if (cursor.pos == start) {
-            throw groupError(cursor.pos, "expected an operation such as 'scale 2' in %s, found " + cursor.describe(cursor.pos),
-                    statement, group);
-        }
-        written.add(Float.NaN, start, cursor.pos);
-        cursor.skipBlanks();
-        if (cursor.at(')')) {
-            throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
-                    + "' in " + group.of(statement) + ", found ')'", "write a step as (scale 2), (scale 1|2|1), (rotate_y 30) or (translate 0|1|0)");
-        }
-        while (true) {
-            cursor.skipBlanks();
-            float value = readNumber();
-            written.add(value, tokenStart, cursor.pos);
-            if (groupEndsAfterNumber(statement, group)) {
-                return;
-            }
-        }
-    }
-
     /** Whether the cursor is at the word {@code at} and a blank: {@code (at x|y|z)}. */
     private boolean atWordAt() {
         byte[] bytes = cursor.bytes;
@@ -142,25 +100,9 @@ final class GroupReader {
         if (!cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected ')' after '" + cursor.source.text(start, nameEnd) + "' in "
                     + group.of(statement) + ", found "
-                    + cursor.describe(cursor.pos), nameHint(group, start));
+                    + cursor.describe(cursor.pos), Hints.forName(cursor, group, start));
         }
         cursor.pos++;
-    }
-
-    /** The help for a name followed by something else; properties where a name belongs get their own. */
-    private String nameHint(Group group, int start) {
-        if (!cursor.at('=')) {
-            return "a name holds only letters, digits, '_' and '-'";
-        }
-        int end = start;
-        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !TextBytes.isLineBreak(cursor.bytes[end])) {
-            end++;
-        }
-        String properties = cursor.source.text(start, end).strip();
-        return group == Statement.MATERIAL
-                ? "an object names its material here; define the material on a line of its own, such as "
-                        + "material:(shiny):(" + properties + "), then write (shiny) here"
-                : "a material's name comes first, then its properties: material:(shiny):(" + properties + ")";
     }
 
     /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
@@ -208,7 +150,7 @@ final class GroupReader {
     }
 
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
-    private boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
+    boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
         cursor.skipBlanks();
         if (cursor.at('|') || cursor.at(')')) {
             return cursor.bytes[cursor.pos++] == ')';
@@ -275,13 +217,13 @@ final class GroupReader {
     }
 
     /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
-    private StatementError groupError(int offset, String message, Statement statement, Group group) {
+    StatementError groupError(int offset, String message, Statement statement, Group group) {
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
         return cursor.error(offset, text, "write it as " + statement.usage());
     }
 
     /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
-    private float readNumber() throws StatementError {
+    float readNumber() throws StatementError {
         tokenStart = cursor.pos;
         while (cursor.pos < cursor.bytes.length && !TextBytes.isDelimiter(cursor.bytes[cursor.pos])) {
             cursor.pos++;

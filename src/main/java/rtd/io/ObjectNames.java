@@ -2,8 +2,12 @@ package rtd.io;
 
 import java.util.ArrayList;
 import java.util.List;
+import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
+import rtd.geometry.Patterned;
+import rtd.geometry.Transformed;
+import rtd.image.Color;
 import rtd.math.Matrix4;
 
 /**
@@ -18,13 +22,35 @@ import rtd.math.Matrix4;
  */
 record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<String> names) {
 
+    /** An object that names nothing: the default finish, its own colour, not transformed. */
+    static final ObjectNames NONE = new ObjectNames(Material.DEFAULT, null, null, List.of());
+
+    /** These names with {@code material} as the finish. */
+    ObjectNames with(Material material) {
+        return new ObjectNames(material, pattern, transform, names);
+    }
+
+    /**
+     * The object as its names make it: patterned if its colour group names a pattern, then transformed if
+     * it names a transform, so that the pattern lies in the object's own space and moves with it.
+     */
+    IGeometry dress(IGeometry object) {
+        IGeometry painted = pattern == null ? object : new Patterned(object, pattern);
+        return transform == null ? painted : new Transformed(painted, transform);
+    }
+
+    /** The colour a builder sees for a colour group that names the pattern: its first colour (black if unknown). */
+    Color colour() {
+        return pattern == null ? Color.BLACK : pattern.a();
+    }
+
     /** The names of the object whose values are {@code values}; each mistake goes to {@code errors}. */
     static ObjectNames of(StatementValues values, Names names, List<SceneContents.Found> errors) {
         Material material = null;
         Matrix4 transform = null;
         List<String> used = new ArrayList<>();
         int first = values.statement().groups().size();
-        for (int g = first; g < first + values.optionalCount(); g++) {
+        for (int g = first; g < values.groups().groupCount; g++) {
             String name = values.name(g);
             used.add(name);
             String kind = names.kindOf(name);
@@ -47,7 +73,7 @@ record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<S
             }
         }
         Pattern pattern = null;
-        int colour = values.namedGroup();
+        int colour = values.groups().named;
         if (colour >= 0) {
             String name = values.name(colour);
             used.add(name);

@@ -135,8 +135,7 @@ final class SceneParser {
         int before = errors.size();
         ObjectNames resolved = ObjectNames.of(values, names, errors);
         named.addAll(resolved.names());
-        values.useMaterial(resolved.material());
-        values.usePatternAndTransform(resolved.pattern(), resolved.transform());
+        values.useNames(resolved);
         try {
             // with a name that is not right the scene has errors: the object is only checked
             contents.buildInto(values, errors.size() > before ? new ArrayList<>() : objects);

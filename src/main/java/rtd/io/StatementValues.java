@@ -2,11 +2,7 @@ package rtd.io;
 
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
-import rtd.geometry.Pattern;
-import rtd.geometry.Patterned;
-import rtd.geometry.Transformed;
 import rtd.image.Color;
-import rtd.math.Matrix4;
 import rtd.math.Vector3f;
 
 /**
@@ -23,11 +19,8 @@ final class StatementValues {
     private int line;
     private int lineStart;
     private int statementStart;
-    private Material material;
-    /** The pattern the colour group names, once known; null for a colour of numbers. */
-    private Pattern pattern;
-    /** The transformation the object names, once known; null for none. */
-    private Matrix4 transform;
+    /** What the object's names mean, once known: its material, pattern and transform. */
+    private ObjectNames names;
 
     /** The values of the statements read into {@code groups}, one after the other. */
     StatementValues(SourceText source, WrittenGroups groups) {
@@ -41,45 +34,28 @@ final class StatementValues {
         this.line = line;
         this.lineStart = lineStart;
         this.statementStart = statementStart;
-        this.material = Material.DEFAULT;
-        this.pattern = null;
-        this.transform = null;
+        this.names = ObjectNames.NONE;
         groups.clear();
     }
 
     /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
     void useMaterial(Material material) {
-        this.material = material;
+        this.names = ObjectNames.NONE.with(material);
     }
 
-    /** Sets the pattern the colour group names and the transformation the object names (either null: none). */
-    void usePatternAndTransform(Pattern pattern, Matrix4 transform) {
-        this.pattern = pattern;
-        this.transform = transform;
+    /** Sets what the object's names mean (Part III: a material, a pattern, a transform). */
+    void useNames(ObjectNames names) {
+        this.names = names;
     }
 
-    /**
-     * The object as the statement's names make it: patterned if its colour group names a pattern, then
-     * transformed if it names a transform (Part III). Every shape's object passes through here.
-     */
+    /** The object as its names make it ({@link ObjectNames#dress}): every shape's object passes through here. */
     IGeometry dress(IGeometry object) {
-        IGeometry painted = pattern == null ? object : new Patterned(object, pattern);
-        return transform == null ? painted : new Transformed(painted, transform);
+        return names.dress(object);
     }
 
-    /** The group that holds a name in the place of its numbers (a colour naming a pattern), or −1. */
-    int namedGroup() {
-        return groups.named;
-    }
-
-    /** How many optional groups follow the statement's own. */
-    int optionalCount() {
-        return groups.groupCount - statement.groups().size();
-    }
-
-    /** How many values group {@code g} holds: a step of a transformation holds its word and its numbers. */
-    int size(int g) {
-        return groups.end(g) - groups.firsts[g];
+    /** The groups as read, for what Part III's statements ask of them ({@link WrittenGroups#named}, a step's size). */
+    WrittenGroups groups() {
+        return groups;
     }
 
     /** Value {@code k} of group {@code g}, which must be finite. */
@@ -118,7 +94,7 @@ final class StatementValues {
 
     /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
     Material material() {
-        return material;
+        return names.material();
     }
 
     /** The name or path that group {@code g} holds, as written. */
@@ -237,7 +213,7 @@ final class StatementValues {
     /** The three numbers of group {@code g}: a colour, each channel a whole number from 0 to 255. */
     Color colour(int g) throws StatementError {
         if (g == groups.named) {
-            return pattern == null ? Color.BLACK : pattern.a(); // the object's colour is the pattern's: see dress
+            return names.colour(); // the object's colour is its pattern's: see dress
         }
         int i = groups.firsts[g];
         return new Color(channel(i, "red", i), channel(i + 1, "green", i), channel(i + 2, "blue", i));
@@ -279,24 +255,12 @@ final class StatementValues {
     private int channel(int i, String name, int first) throws StatementError {
         float value = groups.values[i];
         if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
-            String fractions = fractionsHint(first);
+            String fractions = Hints.colourFractions(groups.values, first);
             throw errorAt(groups.starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
                     + written(i), fractions != null ? fractions
                             : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
         }
         return (int) value;
-    }
-
-    /** For a colour written as fractions from 0 to 1, as other programs write colours, the same from 0 to 255; else null. */
-    private String fractionsHint(int first) {
-        StringBuilder scaled = new StringBuilder("(");
-        for (int i = first; i < first + 3; i++) {
-            if (!(groups.values[i] >= 0 && groups.values[i] <= 1)) {
-                return null;
-            }
-            scaled.append(i > first ? "|" : "").append(Math.round(groups.values[i] * 255));
-        }
-        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is " + scaled + ")";
     }
 
     private String meaning(int g) {
