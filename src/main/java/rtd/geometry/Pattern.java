@@ -1,5 +1,6 @@
 package rtd.geometry;
 
+import java.util.Locale;
 import rtd.image.Color;
 import rtd.math.Matrix4;
 import rtd.math.Vector3f;
@@ -25,7 +26,7 @@ public final class Pattern {
 
         /** The name the scene file writes: "stripes", "checker". */
         public String word() {
-            return name().toLowerCase(java.util.Locale.ROOT);
+            return name().toLowerCase(Locale.ROOT);
         }
     }
 

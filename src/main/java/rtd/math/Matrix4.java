@@ -16,6 +16,9 @@ public final class Matrix4 {
     /** The transformation that changes nothing. */
     public static final Matrix4 IDENTITY = new Matrix4(new double[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0});
 
+    /** sin 0°, 90°, 180°, 270°, exactly. */
+    private static final double[] QUARTER_SINES = {0, 1, 0, -1};
+
     /** The top three rows, row by row: {@code m[4·r + c]}. */
     private final double[] m;
 
@@ -140,8 +143,6 @@ public final class Matrix4 {
     private static double sin(double degrees) {
         return degrees % 90 == 0 ? QUARTER_SINES[quarter(degrees)] : Math.sin(Math.toRadians(degrees));
     }
-
-    private static final double[] QUARTER_SINES = {0, 1, 0, -1};
 
     /** Which quarter turn, 0 to 3, a whole number of quarter turns ends at. */
     private static int quarter(double degrees) {
