@@ -37,6 +37,12 @@ final class TransformedSteps implements TestObserver {
         inner = shapeSteps.apply(text);
     }
 
+    @Override
+    public void outsideBox(float t) {
+        text.line("but P at t = " + Numbers.of(t) + " lies outside the object's box: float's rounding of a far ray, "
+                + "no hit");
+    }
+
     /** Closes the shape's steps: the hit point is the world ray's at the same t. */
     void done(float t) {
         text.out();

@@ -56,4 +56,8 @@ public interface TestObserver {
      */
     default void transformedRay(Matrix4 matrix, Ray objectRay) {
     }
+
+    /** The shape's test hit at {@code t}, but the world's point lies outside the object's box: float noise, no hit. */
+    default void outsideBox(float t) {
+    }
 }

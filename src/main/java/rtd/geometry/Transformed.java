@@ -57,7 +57,11 @@ public final class Transformed implements IGeometry {
         Ray local = objectRay(ray);
         watch.transformedRay(matrix, local);
         Intersection hit = Intersection.at(ray, shape.intersect(local, watch).t());
-        return !hit.happened() || inBounds(hit) ? hit : Intersection.at(ray, Float.NaN);
+        if (!hit.happened() || inBounds(hit)) {
+            return hit;
+        }
+        watch.outsideBox(hit.t());
+        return Intersection.at(ray, Float.NaN);
     }
 
     private boolean inBounds(Intersection hit) {
