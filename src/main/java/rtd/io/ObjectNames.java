@@ -45,7 +45,7 @@ record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<S
     }
 
     /** The names of the object whose values are {@code values}; each mistake goes to {@code errors}. */
-    static ObjectNames of(StatementValues values, Names names, List<SceneContents.Found> errors) {
+    static ObjectNames of(StatementValues values, DefinedNames names, List<SceneContents.Found> errors) {
         Material material = null;
         Matrix4 transform = null;
         List<String> used = new ArrayList<>();
@@ -62,7 +62,7 @@ record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<S
                 }
             } else if (kind.equals("pattern")) {
                 errors.add(found(place.saying("'" + name + "' is a pattern, not a material or a transform",
-                        Names.whereItGoes(kind))));
+                        DefinedNames.whereItGoes(kind))));
             } else if (kind.equals("material") ? material != null : transform != null) {
                 errors.add(found(place.saying("a second " + kind + " for one object: it takes at most one material and one "
                         + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform")));

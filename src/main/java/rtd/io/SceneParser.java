@@ -70,7 +70,7 @@ final class SceneParser {
             errors.add(found(second.place().saying("a second camera: a scene has one",
                     "the first camera is at line " + cameras.get(0).place().line())));
         }
-        Names names = new Names(contents, errors);
+        DefinedNames names = new DefinedNames(contents, errors);
         Set<String> named = new HashSet<>(contents.namedAtOnce);
         List<IGeometry> objects = objects(contents, names, named, errors);
         if (errors.isEmpty() && contents.statementCount == 0) {
@@ -109,7 +109,7 @@ final class SceneParser {
     }
 
     /** Every object in file order, those that name a material, pattern or transform built now; the names go to {@code named}. */
-    private static List<IGeometry> objects(SceneContents contents, Names names, Set<String> named,
+    private static List<IGeometry> objects(SceneContents contents, DefinedNames names, Set<String> named,
             List<SceneContents.Found> errors) {
         if (contents.pending.isEmpty()) {
             return contents.objects;
@@ -130,7 +130,7 @@ final class SceneParser {
      * to {@code named}. A name that is unknown or of the wrong kind is an error (unless its definition is
      * broken, which is reported already); the statement is still checked.
      */
-    private static void build(SceneContents contents, StatementValues values, Names names, List<IGeometry> objects,
+    private static void build(SceneContents contents, StatementValues values, DefinedNames names, List<IGeometry> objects,
             Set<String> named, List<SceneContents.Found> errors) {
         int before = errors.size();
         ObjectNames resolved = ObjectNames.of(values, names, errors);

@@ -16,7 +16,7 @@ import rtd.math.Matrix4;
  * (its material and transform, in either order, each at most once; the pattern its colour group names) and
  * a pattern's transform, and words each mistake at the name that makes it.
  */
-final class Names {
+final class DefinedNames {
 
     /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}. */
     private final Map<String, Object> defined = new HashMap<>();
@@ -27,7 +27,7 @@ final class Names {
     private final boolean onlyMaterials;
 
     /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
-    Names(SceneContents contents, List<SceneContents.Found> errors) {
+    DefinedNames(SceneContents contents, List<SceneContents.Found> errors) {
         broken = contents.brokenDefinitions;
         onlyMaterials = contents.patterns.isEmpty() && contents.transforms.isEmpty();
         List<Definition> all = new ArrayList<>();
