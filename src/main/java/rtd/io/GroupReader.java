@@ -14,7 +14,7 @@ final class GroupReader {
     private final LineCursor cursor;
     private final WrittenGroups written;
     /** Where the number that {@link #readNumber} read last starts. */
-    int tokenStart;
+    private int tokenStart;
 
     GroupReader(LineCursor cursor, WrittenGroups written) {
         this.cursor = cursor;
@@ -87,6 +87,12 @@ final class GroupReader {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
         return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
+    }
+
+    /** Reads one number into the current group: a number of a transformation's step ({@link WordGroups#readStep}). */
+    void readNumberInto() throws StatementError {
+        float value = readNumber();
+        written.add(value, tokenStart, cursor.pos);
     }
 
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
@@ -228,7 +234,7 @@ final class GroupReader {
     }
 
     /** Reads one number token at {@link #pos}; its start is left in {@link #tokenStart}. */
-    float readNumber() throws StatementError {
+    private float readNumber() throws StatementError {
         tokenStart = cursor.pos;
         while (cursor.pos < cursor.bytes.length && !TextBytes.isDelimiter(cursor.bytes[cursor.pos])) {
             cursor.pos++;

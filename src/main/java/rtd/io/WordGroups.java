@@ -45,8 +45,7 @@ final class WordGroups {
         }
         while (true) {
             cursor.skipBlanks();
-            float value = reader.readNumber();
-            written.add(value, reader.tokenStart, cursor.pos);
+            reader.readNumberInto();
             if (reader.groupEndsAfterNumber(statement, group)) {
                 return;
             }
