@@ -3,6 +3,7 @@ package rtd.io;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -25,6 +26,10 @@ final class DefinedNames {
     private final Set<String> broken;
     /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
     private final boolean onlyMaterials;
+    /** The patterns and transforms, in file order, for the warning about those nothing names. */
+    private final List<Definition> patternsAndTransforms = new ArrayList<>();
+    /** The transforms that patterns name. */
+    private final Set<String> namedByPatterns = new HashSet<>();
 
     /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
     DefinedNames(SceneContents contents, List<SceneContents.Found> errors) {
@@ -38,9 +43,15 @@ final class DefinedNames {
         Map<String, SceneError> first = new HashMap<>();
         for (Definition definition : all) {
             define(definition.name(), definition.kind(), definition.value(), definition.place(), first, errors);
+            if (!definition.kind().equals("material")) {
+                patternsAndTransforms.add(definition);
+            }
         }
         for (var definition : contents.patterns) { // a pattern's transform may be defined below it
             var named = definition.value();
+            if (named.transform() != null) {
+                namedByPatterns.add(named.transform());
+            }
             if (defined.get(named.name()) == named) {
                 Matrix4 matrix = named.transform() == null ? Matrix4.IDENTITY
                         : lookUp(named.transform(), "transform", named.transformPlace(), errors);
@@ -68,6 +79,26 @@ final class DefinedNames {
                     + earlier.line() + ": materials, patterns and transforms share one set of names",
                     "give the " + kind + " another name, such as '" + name + "_" + kind + "'")));
         }
+    }
+
+    /**
+     * A warning at each pattern and transform that nothing names ({@code named}: the names objects used), at
+     * most {@code most}: a slip that changes nothing in the picture, as an unused material is.
+     */
+    List<SceneError> unused(Set<String> named, int most) {
+        List<SceneError> warnings = new ArrayList<>();
+        for (Definition definition : patternsAndTransforms) {
+            String name = definition.name();
+            if (!named.contains(name) && !namedByPatterns.contains(name) && warnings.size() < most) {
+                boolean pattern = definition.kind().equals("pattern");
+                warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
+                        + (pattern ? "no object names it" : "no object or pattern names it"), pattern
+                        ? "an object names its pattern in its colour group, such as sphere:(0|0|0):(1):(" + name + ")"
+                        : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):(" + name
+                                + ")"));
+            }
+        }
+        return warnings;
     }
 
     /** The material {@code name} names, or null. */

@@ -88,6 +88,7 @@ final class SceneParser {
         if (warnings != null) {
             boolean lit = !contents.lights.isEmpty();
             warnings.addAll(MaterialWarnings.of(contents.materials, named, lit));
+            warnings.addAll(names.unused(named, MAX_ERRORS));
             if (lit) {
                 List<SceneError> acne = new ArrayList<>(contents.litWarnings);
                 acne.sort(Comparator.comparingInt(SceneError::line));

@@ -79,4 +79,15 @@ class PatternsAndTransformsReadingTest {
         assertThat(scene.objects().get(0).bounds().min().x()).isCloseTo(-1f, org.assertj.core.data.Offset.offset(0.01f));
         assertThat(scene.objects().get(1).bounds().min().x()).isCloseTo(0f, org.assertj.core.data.Offset.offset(0.01f));
     }
+
+    @Test
+    void aPatternOrTransformThatNothingNamesIsWarnedOfButOneAPatternNamesIsNot() throws SceneException {
+        java.util.List<SceneError> warnings = new java.util.ArrayList<>();
+        SceneIO.parseScene("scene.txt", CAMERA + "transform:(big):(scale 2)\ntransform:(lift):(translate 0|1|0)\n"
+                + "pattern:(tiles):(checker):(255|0|0):(255|255|0):(big)\npattern:(spare):(rings):(0|0|0):(9|9|9)\n"
+                + "plane:(0|0|0):(0|1|0):(tiles)\n", warnings);
+        assertThat(warnings).extracting(SceneError::message).containsExactly(
+                "transform 'lift' is defined, but no object or pattern names it",
+                "pattern 'spare' is defined, but no object names it");
+    }
 }
