@@ -1,0 +1,138 @@
+package rtd.cli;
+
+import java.io.PrintWriter;
+import java.io.Writer;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Supplier;
+import picocli.CommandLine;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import rtd.io.SceneException;
+import rtd.render.LinearTracer;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
+import rtd.window.Engine;
+import rtd.window.FileWatch;
+import rtd.window.Window;
+import rtd.window.WindowSetup;
+
+/**
+ * {@code --window}, a picocli mixin of {@link RtdCommand}: opens the scene in a window ({@link Window}) instead of
+ * writing its picture. The command line gives it what it knows: the size, {@code --samples}, {@code --threads},
+ * the tracers {@code --accel} chooses ({@link Accelerator}), and {@link SceneWatcher}'s eye on the files.
+ */
+public final class WindowOptions {
+
+    /** The options that have no meaning in a window, each with what the window does instead. */
+    private static final List<String[]> REFUSED = List.of(
+            new String[] {"--explain", "a click on a pixel explains it"},
+            new String[] {"--view", "keys 2 to 5 show the views"},
+            new String[] {"--watch", "the window renders again whenever the scene is saved"},
+            new String[] {"--export-pov", "export without --window"},
+            new String[] {"--paper", "--accel none traces with the paper's loop"},
+            new String[] {"--frames", "render the frames without --window"},
+            new String[] {"--clock", "render the frames without --window"},
+            new String[] {"-o", "Ctrl+S saves the picture beside the scene"});
+
+    @Option(names = "--window", description = "instead of writing the picture, open the scene in a window: it renders "
+            + "coarse at once and refines; drag to orbit, right-drag to pan, wheel to zoom, click a pixel to see its "
+            + "rays and --explain; keys 1-5 picture and views, R reset, C copy the camera line, Ctrl+S save, Q quit")
+    private boolean window;
+
+    /** Whether {@code --window} was given. */
+    boolean requested() {
+        return window;
+    }
+
+    /** Opens the window, once the command line is checked, and returns the exit code when it is closed. */
+    int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException {
+        check(options, commandLine);
+        if (!Window.hasDisplay()) {
+            return noDisplay(err);
+        }
+        Memory.checkImageFits(commandLine, options.width(), options.height(), options.scale());
+        WindowSetup setup = new WindowSetup(options.scene(), () -> read(options), watch(options),
+                engine(options), options.width(), options.height(), options.samples(), options.threads());
+        try {
+            Window.open(setup);
+            return 0;
+        } catch (Window.NoDisplay e) {
+            return noDisplay(err);
+        } catch (IOException e) {
+            err.println("rtd: cannot read the scene file '" + options.scene() + "': " + e.getMessage());
+            return 1;
+        }
+    }
+
+    /** A misuse (exit 2) for what makes no sense in a window: several scenes, standard input, other outputs. */
+    private static void check(RenderOptions options, CommandLine commandLine) {
+        if (options.scenes().size() > 1) {
+            throw new ParameterException(commandLine, "--window opens one scene file, but " + options.scenes().size()
+                    + " were given; open each in a window of its own");
+        }
+        if (options.scene().toString().equals("-")) {
+            throw new ParameterException(commandLine, "--window needs a scene file to watch; it cannot open standard "
+                    + "input ('-')");
+        }
+        for (String[] refused : REFUSED) {
+            if (commandLine.getCommandSpec().findOption(refused[0]) != null
+                    && commandLine.getParseResult().hasMatchedOption(refused[0])) {
+                throw new ParameterException(commandLine, "--window and " + refused[0] + " do not go together: "
+                        + refused[1]);
+            }
+        }
+    }
+
+    private static int noDisplay(PrintWriter err) {
+        err.println("rtd: --window needs a desktop, and there is no display here (a server, SSH without X); "
+                + "-o writes the picture to a file instead, such as -o picture.png");
+        return 2;
+    }
+
+    /** The scene at the size and {@code --scale} of the command line, its warnings left to the panel's renders. */
+    private static Scene read(RenderOptions options) throws SceneException, IOException {
+        try {
+            return options.scale().of(SceneSource.of(options.scene()).read(null, new ArrayList<>()));
+        } catch (FileError e) {
+            throw new IOException(e.getMessage(), e);
+        }
+    }
+
+    /** The tracers {@code --accel} chooses: those {@code -o} builds for the picture, and a BVH for any camera. */
+    private static Engine engine(RenderOptions options) {
+        return new Engine() {
+            @Override
+            public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples) {
+                return Accelerator.of(scene, options.accel(), width, height, samples, options.threads()).tracers();
+            }
+
+            @Override
+            public Supplier<Tracer> forAnyCamera(Scene scene) {
+                if (options.accel() == Accel.none || scene.objects().isEmpty()) {
+                    return () -> new LinearTracer(scene);
+                }
+                return Accelerator.build(Accelerator.Kind.BVH, scene, 1, 1, 1, options.threads()).tracers();
+            }
+        };
+    }
+
+    /** {@link SceneWatcher} on the scene and its meshes, telling the window of each save (not of the first look). */
+    private static FileWatch watch(RenderOptions options) {
+        return changed -> {
+            boolean[] first = {true};
+            SceneWatcher watcher = new SceneWatcher(options.scene(), () -> {
+                if (!first[0]) {
+                    changed.run();
+                }
+                first[0] = false;
+                return 0;
+            }, new PrintWriter(Writer.nullWriter()), SceneWatcher.POLL_MILLIS);
+            Thread thread = new Thread(watcher::run, "rtd-window-watch");
+            thread.setDaemon(true);
+            thread.start();
+            return watcher::stop;
+        };
+    }
+}
