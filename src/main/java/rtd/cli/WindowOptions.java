@@ -49,8 +49,9 @@ public final class WindowOptions {
     /** Opens the window, once the command line is checked, and returns the exit code when it is closed. */
     int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException {
         check(options, commandLine);
-        if (!Window.hasDisplay()) {
-            return noDisplay(err);
+        String missing = Window.missingDisplay();
+        if (missing != null) {
+            return noDisplay(err, missing);
         }
         Memory.checkImageFits(commandLine, options.width(), options.height(), options.scale());
         WindowSetup setup = new WindowSetup(options.scene(), () -> read(options), watch(options),
@@ -59,7 +60,7 @@ public final class WindowOptions {
             Window.open(setup);
             return 0;
         } catch (Window.NoDisplay e) {
-            return noDisplay(err);
+            return noDisplay(err, e.getMessage());
         } catch (IOException e) {
             err.println("rtd: cannot read the scene file '" + options.scene() + "': " + e.getMessage());
             return 1;
@@ -85,9 +86,10 @@ public final class WindowOptions {
         }
     }
 
-    private static int noDisplay(PrintWriter err) {
-        err.println("rtd: --window needs a desktop, and there is no display here (a server, SSH without X); "
-                + "-o writes the picture to a file instead, such as -o picture.png");
+    /** No screen to open the window on (a server, SSH without X, CI): exit code 2, as for a misuse. */
+    private static int noDisplay(PrintWriter err, String why) {
+        err.println("rtd: --window needs a desktop, and there is none here (" + why + "); -o writes the picture to a "
+                + "file instead, such as -o picture.png");
         return 2;
     }
 

@@ -31,7 +31,24 @@ public final class Window {
 
     /** Whether this Java can open windows at all; without, {@link #open} throws {@link NoDisplay}. */
     public static boolean hasDisplay() {
-        return !GraphicsEnvironment.isHeadless();
+        return missingDisplay() == null;
+    }
+
+    /**
+     * Why no window can open here, in a few words ("DISPLAY is not set"), or null if one can: Java runs headless
+     * without a display, and a display that cannot be reached fails when the first window would open.
+     */
+    public static String missingDisplay() {
+        String display = System.getenv("DISPLAY");
+        if (GraphicsEnvironment.isHeadless()) {
+            return display == null || display.isBlank() ? "DISPLAY is not set" : "Java runs headless";
+        }
+        try {
+            return GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices().length > 0 ? null
+                    : "the display has no screen";
+        } catch (AWTError | HeadlessException | InternalError e) {
+            return "the display '" + display + "' that DISPLAY names cannot be reached";
+        }
     }
 
     /**
@@ -39,8 +56,9 @@ public final class Window {
      * are thrown, as for {@code -o}.
      */
     public static void open(WindowSetup setup) throws SceneException, IOException, NoDisplay {
-        if (!hasDisplay()) {
-            throw new NoDisplay("no display");
+        String missing = missingDisplay();
+        if (missing != null) {
+            throw new NoDisplay(missing);
         }
         Scene scene = setup.loader().load();
         CountDownLatch closed = new CountDownLatch(1);
