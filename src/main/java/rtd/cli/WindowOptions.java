@@ -9,6 +9,8 @@ import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
+import rtd.accel.Bvh;
+import rtd.accel.LightGrids;
 import rtd.io.SceneException;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
@@ -36,6 +38,10 @@ public final class WindowOptions {
             new String[] {"--clock", "render the frames without --window"},
             new String[] {"-o", "Ctrl+S saves the picture beside the scene"});
 
+    /** The window's picture without --width, --height or --scale: half the default picture each way. */
+    static final int WIDTH = 960;
+    static final int HEIGHT = 540;
+
     @Option(names = "--window", description = "instead of writing the picture, open the scene in a window: it renders "
             + "coarse at once and refines; drag to orbit, right-drag to pan, wheel to zoom, click a pixel to see its "
             + "rays and --explain; keys 1-5 picture and views, R reset, C copy the camera line, Ctrl+S save, Q quit")
@@ -54,8 +60,9 @@ public final class WindowOptions {
             return noDisplay(err, missing);
         }
         Memory.checkImageFits(commandLine, options.width(), options.height(), options.scale());
-        WindowSetup setup = new WindowSetup(options.scene(), () -> read(options), watch(options),
-                engine(options), options.width(), options.height(), options.samples(), options.threads());
+        RenderOptions sized = windowSize(options, commandLine);
+        WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized),
+                engine(sized.accel(), sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads());
         try {
             Window.open(setup);
             return 0;
@@ -65,6 +72,20 @@ public final class WindowOptions {
             err.println("rtd: cannot read the scene file '" + options.scene() + "': " + e.getMessage());
             return 1;
         }
+    }
+
+    /**
+     * The window's size: the command line's {@code --width}, {@code --height} and {@code --scale}; without any of
+     * them {@value #WIDTH} × {@value #HEIGHT}, the default picture at {@code --scale 0.5}, which shows what it shows
+     * and fits a screen.
+     */
+    private static RenderOptions windowSize(RenderOptions options, CommandLine commandLine) {
+        if (options.given() || commandLine.getParseResult().hasMatchedOption("--scale")) {
+            return options;
+        }
+        Scale half = new Scale((double) WIDTH / RtdCommand.DEFAULT_WIDTH);
+        return new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, half, false, options.threads(),
+                options.accel(), options.paper(), options.samples(), options.stats(), options.progress());
     }
 
     /** A misuse (exit 2) for what makes no sense in a window: several scenes, standard input, other outputs. */
@@ -102,20 +123,35 @@ public final class WindowOptions {
         }
     }
 
-    /** The tracers {@code --accel} chooses: those {@code -o} builds for the picture, and a BVH for any camera. */
-    private static Engine engine(RenderOptions options) {
+    /**
+     * The tracers {@code --accel ACCEL} chooses ({@code auto}, {@code none}, {@code bvh} or {@code grid}) with
+     * {@code threads} threads: for the picture those {@code -o} builds; for any camera the same without the view
+     * grid, which serves one camera only: the lights' grids (they see from the lights, whatever the camera) and
+     * the BVH, or the paper's loop for {@code none}. Public for the window's benchmark.
+     */
+    public static Engine engine(String accel, int threads) {
+        return engine(Accel.valueOf(accel), threads);
+    }
+
+    private static Engine engine(Accel accel, int threads) {
         return new Engine() {
             @Override
             public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples) {
-                return Accelerator.of(scene, options.accel(), width, height, samples, options.threads()).tracers();
+                return Accelerator.of(scene, accel, width, height, samples, threads).tracers();
             }
 
             @Override
-            public Supplier<Tracer> forAnyCamera(Scene scene) {
-                if (options.accel() == Accel.none || scene.objects().isEmpty()) {
+            public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
+                Accelerator.Kind kind = Accelerator.choose(scene, accel);
+                if (kind == Accelerator.Kind.LOOP) {
                     return () -> new LinearTracer(scene);
                 }
-                return Accelerator.build(Accelerator.Kind.BVH, scene, 1, 1, 1, options.threads()).tracers();
+                Bvh bvh = Bvh.build(scene);
+                if (kind != Accelerator.Kind.GRID_AND_BVH) {
+                    return bvh::newTracer;
+                }
+                LightGrids lights = LightGrids.build(scene, width, height, 1, threads);
+                return () -> lights.newTracer(bvh.newTracer());
             }
         };
     }

@@ -18,8 +18,9 @@ public interface Engine {
     Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples);
 
     /**
-     * Tracers for rays of any camera in {@code scene}'s objects and lights, built once for a scene and kept while
-     * the camera moves (coarse passes and moving frames, whose rays a camera's grid does not serve).
+     * Tracers for rays of any camera in {@code scene}'s objects and lights, for pictures of about
+     * {@code width × height}, built once for a scene and kept while the camera moves (coarse passes and moving
+     * frames, whose rays a camera's grid does not serve).
      */
-    Supplier<Tracer> forAnyCamera(Scene scene);
+    Supplier<Tracer> forAnyCamera(Scene scene, int width, int height);
 }

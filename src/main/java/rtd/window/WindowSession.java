@@ -1,6 +1,7 @@
 package rtd.window;
 
 import java.io.IOException;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.concurrent.ExecutorService;
@@ -8,13 +9,10 @@ import java.util.concurrent.Executors;
 import java.util.function.Supplier;
 import rtd.explain.PixelExplanation;
 import rtd.explain.RayTree;
-import rtd.geometry.Hit;
-import rtd.geometry.IGeometry;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
-import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
@@ -65,6 +63,9 @@ final class WindowSession implements AutoCloseable {
     /** Counts the frames asked for: a pass of an older one is not shown. */
     private long generation;
     private long shownGeneration = -1;
+    /** The blocks and time of the last moving frame shown, for the next one's blocks. */
+    private int movingBlock = 2;
+    private long movingNanos;
     /** The tracers for any camera of the scene {@link #anyFor} is for; touched on the render thread only. */
     private Scene anyScene;
     private Supplier<Tracer> anyTracers;
@@ -107,23 +108,28 @@ final class WindowSession implements AutoCloseable {
         Scene objects = file;
         FrameRenderer.Frame request = new FrameRenderer.Frame(scene, view, setup.width(), setup.height(),
                 setup.samples(), setup.threads(), refinement);
+        boolean moving = !refinement.endsFull();
         renders.submit(() -> renderer.render(request, anyFor(objects),
-                new ProgressiveBuffer(setup.width(), setup.height()), pass -> ui.execute(() -> show(frame, pass))),
-                refinement != Refinement.MOVING);
+                new ProgressiveBuffer(setup.width(), setup.height()), pass -> ui.execute(() -> show(frame, pass, moving))),
+                !moving);
     }
 
     /** The tracers for any camera, built once for each scene read (on the render thread). */
     private Supplier<Tracer> anyFor(Scene scene) {
         if (anyScene != scene) {
-            anyTracers = setup.engine().forAnyCamera(scene);
+            anyTracers = setup.engine().forAnyCamera(scene, setup.width(), setup.height());
             anyScene = scene;
         }
         return anyTracers;
     }
 
-    private void show(long frame, FrameRenderer.Pass pass) {
+    private void show(long frame, FrameRenderer.Pass pass, boolean moving) {
         if (frame < shownGeneration) {
             return; // a newer frame is already on screen
+        }
+        if (moving) {
+            movingBlock = pass.block();
+            movingNanos = pass.nanos();
         }
         shownGeneration = frame;
         shown = pass;
@@ -144,23 +150,9 @@ final class WindowSession implements AutoCloseable {
         status();
     }
 
-    /** The point to orbit around and pan at: what the centre pixel sees, else the middle of the objects. */
+    /** The point to orbit around and pan at ({@link Pivot}). */
     Vector3f pivot() {
-        Scene scene = scene();
-        Ray centre = scene.camera().generateRay(setup.width() / 2, setup.height() / 2, setup.width(), setup.height());
-        Hit hit = scene.nearestHit(centre);
-        if (hit != null) {
-            return hit.point();
-        }
-        Vector3f sum = Vector3f.ZERO;
-        int bounded = 0;
-        for (IGeometry object : scene.objects()) {
-            if (object.bounds().isBounded()) {
-                sum = sum.add(object.bounds().centre());
-                bounded++;
-            }
-        }
-        return bounded > 0 ? sum.divide(bounded) : centre.pointAt(10);
+        return Pivot.of(scene(), setup.width(), setup.height());
     }
 
     /** The mouse dragged by {@code dx, dy} pixels of the picture: an orbit about {@code pivot}, or a pan. */
@@ -181,7 +173,7 @@ final class WindowSession implements AutoCloseable {
 
     private void moved() {
         display.rays(List.of()); // the selected pixel's rays follow once the camera rests
-        render(Refinement.MOVING);
+        render(Refinement.moving(movingBlock, movingNanos));
     }
 
     /** The mouse rests after moving the camera: the full picture, and the selected pixel's rays again. */
@@ -262,7 +254,7 @@ final class WindowSession implements AutoCloseable {
             return;
         }
         Picture picture = shown.picture();
-        java.nio.file.Path target = setup.savedPicture();
+        Path target = setup.savedPicture();
         helper.execute(() -> {
             String said;
             try {

@@ -57,13 +57,13 @@ class WindowOptionsTest {
     @Test
     void withoutADisplayTheExitCodeIs2WithOneLineAndNoStackTrace() throws Exception {
         // a new JVM without DISPLAY, as on a server or over SSH without X
-        ProcessBuilder java = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        ProcessBuilder command = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), "rtd.cli.Main", EXAMPLE, "--window");
-        java.environment().remove("DISPLAY");
-        java.environment().remove("WAYLAND_DISPLAY");
-        java.redirectOutput(dir.resolve("out.txt").toFile());
-        java.redirectError(dir.resolve("err.txt").toFile());
-        Process process = java.start();
+        command.environment().remove("DISPLAY");
+        command.environment().remove("WAYLAND_DISPLAY");
+        command.redirectOutput(dir.resolve("out.txt").toFile());
+        command.redirectError(dir.resolve("err.txt").toFile());
+        Process process = command.start();
         assertThat(process.waitFor(60, TimeUnit.SECONDS)).isTrue();
         String err = java.nio.file.Files.readString(dir.resolve("err.txt"), StandardCharsets.UTF_8);
         assertThat(process.exitValue()).isEqualTo(2);

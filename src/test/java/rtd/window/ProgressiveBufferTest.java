@@ -20,6 +20,19 @@ class ProgressiveBufferTest {
     }
 
     @Test
+    void aSceneTooSlowForMovingFramesOfBlocksOf2TakesCoarserBlocks() {
+        long frame = Refinement.FRAME_NANOS;
+        assertThat(Refinement.moving(2, 0).blocks()).containsExactly(2); // the first moving frame
+        assertThat(Refinement.moving(2, frame).blocks()).containsExactly(2);
+        // twice too slow at blocks of 2: blocks of 4 take a quarter of the rays
+        assertThat(Refinement.moving(2, 2 * frame).blocks()).containsExactly(4);
+        // a frame of blocks of 4 in a third of the time: blocks of 2 would take 4/3 of it, too long; stay at 4
+        assertThat(Refinement.moving(4, frame / 3).blocks()).containsExactly(4);
+        assertThat(Refinement.moving(4, frame / 5).blocks()).containsExactly(2);
+        assertThat(Refinement.moving(2, 100 * frame).blocks()).containsExactly(8);
+    }
+
+    @Test
     void theBlocksCoverThePictureTheLastOneCutOff() {
         // 5 pixels in blocks of 2: [0, 2), [2, 4), [4, 5)
         assertThat(ProgressiveBuffer.blocks(5, 2)).isEqualTo(3);
