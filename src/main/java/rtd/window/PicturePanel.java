@@ -33,7 +33,8 @@ final class PicturePanel extends JComponent {
     private static final Color REFLECTED = new Color(80, 200, 255);
     private static final Color REFRACTED = new Color(255, 120, 255);
     private static final Color LIT = new Color(255, 230, 40);
-    private static final Color BLOCKED = new Color(90, 90, 90);
+    private static final Color BLOCKED = new Color(150, 150, 150);
+    private static final Color OUTLINE = new Color(0, 0, 0, 160);
 
     private final WindowSession session;
     private final Timer rest;
@@ -103,19 +104,31 @@ final class PicturePanel extends JComponent {
         g.dispose();
     }
 
+    /**
+     * The rays, each over a dark outline so that it shows on any colour: shadow rays dashed, a dot at each hit,
+     * and a ring round the selected pixel, where the camera's ray starts.
+     */
     private void drawRays(Graphics2D g, PixelMapping map) {
-        for (RayTreeProjection.Line line : rays) {
-            boolean shadow = line.kind() == RayTree.Kind.SHADOW_LIT || line.kind() == RayTree.Kind.SHADOW_BLOCKED;
-            g.setStroke(shadow ? new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 1,
-                    new float[] {5, 4}, 0) : new BasicStroke(2.5f));
-            g.setColor(colour(line.kind()));
-            double x0 = map.panelX(line.x0());
-            double y0 = map.panelY(line.y0());
-            double x1 = map.panelX(line.x1());
-            double y1 = map.panelY(line.y1());
-            g.draw(new Line2D.Double(x0, y0, x1, y1));
-            if (line.ends() && !shadow) {
-                g.fill(new Ellipse2D.Double(x1 - 4, y1 - 4, 8, 8)); // the hit point
+        for (boolean outline : new boolean[] {true, false}) {
+            for (RayTreeProjection.Line line : rays) {
+                boolean shadow = line.kind() == RayTree.Kind.SHADOW_LIT || line.kind() == RayTree.Kind.SHADOW_BLOCKED;
+                float width = (shadow ? 1.5f : 2.5f) + (outline ? 2 : 0);
+                g.setStroke(shadow ? new BasicStroke(width, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 1,
+                        new float[] {6, 4}, 0) : new BasicStroke(width, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+                g.setColor(outline ? OUTLINE : colour(line.kind()));
+                double x0 = map.panelX(line.x0());
+                double y0 = map.panelY(line.y0());
+                double x1 = map.panelX(line.x1());
+                double y1 = map.panelY(line.y1());
+                g.draw(new Line2D.Double(x0, y0, x1, y1));
+                double dot = outline ? 5 : 3.5;
+                if (line.ends() && !shadow) {
+                    g.fill(new Ellipse2D.Double(x1 - dot, y1 - dot, 2 * dot, 2 * dot)); // the hit point
+                }
+                if (line.kind() == RayTree.Kind.CAMERA) {
+                    g.setStroke(new BasicStroke(outline ? 4 : 2));
+                    g.draw(new Ellipse2D.Double(x0 - 8, y0 - 8, 16, 16)); // the selected pixel
+                }
             }
         }
     }
