@@ -41,8 +41,14 @@ final class RayTreeProjection {
         this.height = height;
     }
 
-    /** The tree's rays as lines in the picture; a ray wholly behind a perspective camera's eye is left out. */
+    /**
+     * The tree's rays as lines in the picture; a ray wholly behind a perspective camera's eye is left out, and a
+     * camera other than rtd's two shows none.
+     */
     List<Line> lines(RayTree tree) {
+        if (!(camera instanceof OrthographicCamera) && !(camera instanceof PerspectiveCamera)) {
+            return List.of();
+        }
         float size = 1;
         for (RayTree.Segment segment : tree.segments()) {
             if (segment.to() != null) {
