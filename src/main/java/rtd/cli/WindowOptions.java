@@ -59,10 +59,10 @@ public final class WindowOptions {
         if (missing != null) {
             return noDisplay(err, missing);
         }
-        Memory.checkImageFits(commandLine, options.width(), options.height(), options.scale());
         RenderOptions sized = windowSize(options, commandLine);
-        WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized),
-                engine(sized.accel(), sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads());
+        Memory.checkImageFits(commandLine, sized.width(), sized.height(), sized.scale());
+        WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel(),
+                sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads());
         try {
             Window.open(setup);
             return 0;

@@ -27,6 +27,7 @@ import rtd.math.Vector3f;
  */
 final class PicturePanel extends JComponent {
 
+    private static final long serialVersionUID = 1L;
     /** How long the mouse must rest before the full picture is rendered. */
     static final int REST_MILLIS = 150;
     private static final Color CAMERA = new Color(255, 255, 255);
@@ -93,12 +94,13 @@ final class PicturePanel extends JComponent {
         g.fillRect(0, 0, getWidth(), getHeight());
         PixelMapping map = mapping();
         if (map != null) {
-            g.drawImage(image, (int) Math.round(map.left()), (int) Math.round(map.top()),
-                    (int) Math.round(image.getWidth() * map.scale()), (int) Math.round(image.getHeight() * map.scale()),
-                    null);
+            int left = (int) Math.round(map.left());
+            int top = (int) Math.round(map.top());
+            int width = (int) Math.round(image.getWidth() * map.scale());
+            int height = (int) Math.round(image.getHeight() * map.scale());
+            g.drawImage(image, left, top, width, height, null);
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-            g.clipRect((int) Math.round(map.left()), (int) Math.round(map.top()),
-                    (int) Math.round(image.getWidth() * map.scale()), (int) Math.round(image.getHeight() * map.scale()));
+            g.clipRect(left, top, width, height);
             drawRays(g, map);
         }
         g.dispose();
@@ -162,7 +164,8 @@ final class PicturePanel extends JComponent {
                 return; // a click that wobbles is still a click
             }
             dragged = true;
-            boolean pan = SwingUtilities.isRightMouseButton(e) || (e.getModifiersEx() & InputEvent.SHIFT_DOWN_MASK) != 0;
+            boolean pan = SwingUtilities.isRightMouseButton(e)
+                    || (e.getModifiersEx() & InputEvent.SHIFT_DOWN_MASK) != 0;
             session.drag((e.getX() - lastX) / map.scale(), (e.getY() - lastY) / map.scale(), pan, pivot);
             lastX = e.getX();
             lastY = e.getY();

@@ -30,7 +30,7 @@ import rtd.view.View;
  * right (the explanation, the copied camera, a scene's mistakes), the status line below, and the keys
  * ({@link Keys}). Made and used on Swing's thread only.
  */
-final class SceneWindow implements WindowSession.Display {
+final class SceneWindow implements Display {
 
     private final JFrame frame;
     private final WindowSession session;

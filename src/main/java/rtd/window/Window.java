@@ -24,6 +24,8 @@ public final class Window {
 
     /** Thrown where there is no screen to open a window on: a server, SSH without X, CI. */
     public static final class NoDisplay extends Exception {
+        private static final long serialVersionUID = 1L;
+
         NoDisplay(String why) {
             super(why);
         }
@@ -68,12 +70,17 @@ public final class Window {
             window.set(opened);
             opened.open();
         });
-        try (AutoCloseable watching = setup.watch().start(() -> reload(setup, window.get()))) {
+        AutoCloseable watching = setup.watch().start(() -> reload(setup, window.get()));
+        try {
             closed.await();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        } catch (Exception e) {
-            // closing the watcher failed: nothing is left to do, the window is closed
+        } finally {
+            try {
+                watching.close();
+            } catch (Exception e) {
+                // the watcher could not stop cleanly: its thread is a daemon, and the window is closed
+            }
         }
     }
 

@@ -26,22 +26,6 @@ import rtd.view.View;
  */
 final class WindowSession implements AutoCloseable {
 
-    /** What the window shows; called on the window's thread. */
-    interface Display {
-        /** The picture (a view with its legend below), whose top {@code renderHeight} rows are the render. */
-        void picture(Picture picture, int renderHeight);
-
-        /** The selected pixel's ray tree, in image coordinates; empty for none. */
-        void rays(List<RayTreeProjection.Line> lines);
-
-        void panel(String text);
-
-        void status(String text);
-
-        /** Puts {@code text} on the clipboard. */
-        void copy(String text);
-    }
-
     private static final View[] VIEWS = View.values();
 
     private final WindowSetup setup;
@@ -65,6 +49,8 @@ final class WindowSession implements AutoCloseable {
     private long shownGeneration = -1;
     /** The blocks and time of the last moving frame shown, for the next one's blocks. */
     private int movingBlock = 2;
+    /** Whether the panel is to show the view's scale once its full picture is drawn. */
+    private boolean legendWanted;
     private long movingNanos;
     /** The tracers for any camera of the scene {@link #anyFor} is for; touched on the render thread only. */
     private Scene anyScene;
@@ -109,9 +95,9 @@ final class WindowSession implements AutoCloseable {
         FrameRenderer.Frame request = new FrameRenderer.Frame(scene, view, setup.width(), setup.height(),
                 setup.samples(), setup.threads(), refinement);
         boolean moving = !refinement.endsFull();
-        renders.submit(() -> renderer.render(request, anyFor(objects),
-                new ProgressiveBuffer(setup.width(), setup.height()), pass -> ui.execute(() -> show(frame, pass, moving))),
-                !moving);
+        FrameRenderer.Listener listener = pass -> ui.execute(() -> show(frame, pass, moving));
+        renders.submit(() -> renderer.render(request, anyFor(objects), new ProgressiveBuffer(setup.width(),
+                setup.height()), listener), !moving);
     }
 
     /** The tracers for any camera, built once for each scene read (on the render thread). */
@@ -133,6 +119,10 @@ final class WindowSession implements AutoCloseable {
         }
         shownGeneration = frame;
         shown = pass;
+        if (legendWanted && pass.block() == 1 && frame == generation && selected == null) {
+            legendWanted = false;
+            display.panel(pass.legend());
+        }
         display.picture(pass.picture(), setup.height());
         status();
     }
@@ -189,9 +179,10 @@ final class WindowSession implements AutoCloseable {
         explainSelected();
     }
 
-    /** Keys 1 to 5: the picture (null) or a view. */
+    /** Keys 1 to 5: the picture (null) or a view, whose scale the panel shows once it is drawn. */
     void show(View shownView) {
         view = shownView;
+        legendWanted = view != null;
         render(Refinement.STILL);
     }
 
@@ -227,7 +218,8 @@ final class WindowSession implements AutoCloseable {
         int h = setup.height();
         helper.execute(() -> {
             String text = "pixel (" + x + ", " + y + ") of the " + w + " × " + h + " picture of " + setup.scene()
-                    + ", as --explain " + x + "," + y + " tells it:\n\n" + PixelExplanation.of(scene, x, y, w, h);
+                    + " (what --explain " + x + "," + y + " prints at this size and camera):\n\n"
+                    + PixelExplanation.of(scene, x, y, w, h);
             List<RayTreeProjection.Line> lines = new RayTreeProjection(scene.camera(), w, h)
                     .lines(RayTree.of(scene, x, y, w, h));
             ui.execute(() -> {

@@ -43,7 +43,7 @@ class CameraControllerTest {
 
     @Test
     void aQuarterTurnAboutTheVerticalLooksAtThePivotFromTheSide() {
-        // from (0, 0, 20) looking along −z at the origin; a quarter turn to the left: at (−20, 0, 0) looking along +x
+        // from (0, 0, 20) looking along −z at the origin; a quarter turn to the left: at (−20, 0, 0), along +x
         CameraController controller = new CameraController(orthographic);
         controller.orbit(-Math.PI / 2, 0, PIVOT);
         OrthographicCamera turned = (OrthographicCamera) controller.camera();

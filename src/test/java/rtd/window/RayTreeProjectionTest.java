@@ -17,6 +17,8 @@ import rtd.testing.Scenes;
 @DisplayName("A pixel's ray tree projected into the picture")
 class RayTreeProjectionTest {
 
+    private static final Vector3f BACK = new Vector3f(0, 0, 1);
+
     @Test
     void theOrthographicProjectionUndoesListing41() {
         // zoom 50 from (0, 0, 20) along −z, 160 × 90: the point (1, −0.5, 3) lies 50 right and 25 down of (80, 45)
@@ -69,7 +71,8 @@ class RayTreeProjectionTest {
         // a lit shadow ray ends at its light
         assertThat(segments).filteredOn(s -> s.kind() == Kind.SHADOW_LIT).allMatch(s ->
                 scene.lights().stream().anyMatch(light -> light.position().equals(s.to())));
-        List<RayTreeProjection.Line> lines = new RayTreeProjection(scene.camera(), 160, 90).lines(new RayTree(segments));
+        List<RayTreeProjection.Line> lines = new RayTreeProjection(scene.camera(), 160, 90)
+                .lines(new RayTree(segments));
         assertThat(lines).isNotEmpty().allMatch(l -> Double.isFinite(l.x0()) && Double.isFinite(l.y1()));
     }
 
@@ -77,8 +80,8 @@ class RayTreeProjectionTest {
     void aRayBehindThePerspectiveEyeIsCutAtIt() {
         PerspectiveCamera camera = new PerspectiveCamera(Vector3f.ZERO, new Vector3f(0, 0, -1), 90);
         RayTree behind = new RayTree(List.of(
-                new RayTree.Segment(Kind.REFLECTED, new Vector3f(0, 0, 2), new Vector3f(0, 0, 5), new Vector3f(0, 0, 1), 1),
-                new RayTree.Segment(Kind.REFLECTED, new Vector3f(1, 0, -2), new Vector3f(1, 0, 2), new Vector3f(0, 0, 1), 1)));
+                new RayTree.Segment(Kind.REFLECTED, new Vector3f(0, 0, 2), new Vector3f(0, 0, 5), BACK, 1),
+                new RayTree.Segment(Kind.REFLECTED, new Vector3f(1, 0, -2), new Vector3f(1, 0, 2), BACK, 1)));
         List<RayTreeProjection.Line> lines = new RayTreeProjection(camera, 160, 90).lines(behind);
         assertThat(lines).hasSize(1); // the first lies wholly behind the eye
         assertThat(lines.get(0).ends()).isFalse(); // its end was cut off

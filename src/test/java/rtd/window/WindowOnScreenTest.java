@@ -45,7 +45,7 @@ class WindowOnScreenTest {
     Path dir;
 
     @Test
-    void itShowsOsPixelsExplainsAClickedPixelAndRendersASavedSceneAgain() throws Exception {
+    void showsTheSamePixelsAsOExplainsAClickRendersASavedSceneAgainOrbitsAndShowsAView() throws Exception {
         Assumptions.assumeTrue(Window.hasDisplay(), "no display (DISPLAY is not set): the window's test on a screen "
                 + "is skipped; run it under Xvfb, as .ci/run does");
         Path scene = dir.resolve("scene.txt");
@@ -83,6 +83,24 @@ class WindowOnScreenTest {
                     "the picture of the saved scene");
             assertThat(awaitFinal(session)).isEqualTo(picture(scene, "second.png"));
 
+            // a drag orbits the camera; once the mouse rests, the full picture of the new view
+            robot.mouseMove(at.x, at.y);
+            robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+            for (int step = 1; step <= 10; step++) {
+                robot.mouseMove(at.x - 4 * step, at.y);
+                Thread.sleep(20);
+            }
+            robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+            int[] turned = await(() -> onEdt(() -> session.camera().moved() && session.shown().block() == 1
+                    ? session.shown().picture().rgb() : null), "the orbited picture");
+            assertThat(turned).isNotEqualTo(picture(scene, "third.png"));
+
+            // key 2: the cost view, with its legend below the picture
+            robot.keyPress(KeyEvent.VK_2);
+            robot.keyRelease(KeyEvent.VK_2);
+            await(() -> onEdt(() -> session.shown().picture().height() > H && session.shown().block() == 1
+                    ? true : null), "the cost view");
+
             robot.keyPress(KeyEvent.VK_Q);
             robot.keyRelease(KeyEvent.VK_Q);
             assertThat(run.get(20, TimeUnit.SECONDS).exitCode()).isZero();
@@ -118,7 +136,8 @@ class WindowOnScreenTest {
     private static void screenshot(PicturePanel panel) throws Exception {
         Thread.sleep(300);
         Rectangle bounds = onEdt(() -> SwingUtilities.getWindowAncestor(panel).getBounds());
-        ImageIO.write(new Robot().createScreenCapture(bounds), "png", Path.of("target", "window-screenshot.png").toFile());
+        Path file = Path.of("target", "window-screenshot.png");
+        ImageIO.write(new Robot().createScreenCapture(bounds), "png", file.toFile());
     }
 
     private static <T extends Component> T find(Class<T> kind) throws Exception {

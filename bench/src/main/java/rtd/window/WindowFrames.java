@@ -8,9 +8,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.Supplier;
 import rtd.accel.ViewGrid;
+import rtd.camera.OrthographicCamera;
 import rtd.cli.WindowOptions;
 import rtd.image.Picture;
 import rtd.io.SceneIO;
+import rtd.math.Vector3f;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 
@@ -52,8 +54,7 @@ public final class WindowFrames {
         Supplier<Tracer> any = engine.forAnyCamera(file, WIDTH, HEIGHT);
         CameraController camera = new CameraController(file.camera());
         BufferedImage screen = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
-        Scene pivotScene = file;
-        rtd.math.Vector3f pivot = Pivot.of(pivotScene, WIDTH, HEIGHT);
+        Vector3f pivot = Pivot.of(file, WIDTH, HEIGHT);
         frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING); // warming
         double fps = frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING);
         Refinement four = new Refinement(List.of(4));
@@ -72,12 +73,13 @@ public final class WindowFrames {
         }
         System.out.printf(Locale.ROOT, "%-17s moving: %.1f frames/s in blocks of 2 × 2 (%d × %d rays), %.1f in "
                 + "blocks of 4 × 4; full %d × %d after the mouse rests: %.3f s (median of 9; the view grid's build "
-                + "in it %.4f s)%n", name, fps, WIDTH / 2, HEIGHT / 2, fps4, WIDTH, HEIGHT, median(full), median(grids));
+                + "in it %.4f s)%n", name, fps, WIDTH / 2, HEIGHT / 2, fps4, WIDTH, HEIGHT, median(full),
+                median(grids));
     }
 
     /** Frames per second while the camera orbits a little each frame, for {@code seconds}. */
     private static double frames(FrameRenderer renderer, Supplier<Tracer> any, CameraController camera, Scene file,
-            rtd.math.Vector3f pivot, BufferedImage screen, int threads, double seconds, Refinement moving) {
+            Vector3f pivot, BufferedImage screen, int threads, double seconds, Refinement moving) {
         long start = System.nanoTime();
         long end = start + (long) (seconds * 1e9);
         int frames = 0;
@@ -103,8 +105,8 @@ public final class WindowFrames {
 
     /** The paper's scene as {@code --window} opens it: half the default picture, at half its zoom. */
     private static Scene halfZoom(Scene scene) {
-        rtd.camera.OrthographicCamera camera = (rtd.camera.OrthographicCamera) scene.camera();
-        return new Scene(scene.ambient(), new rtd.camera.OrthographicCamera(camera.position(), camera.direction(),
+        OrthographicCamera camera = (OrthographicCamera) scene.camera();
+        return new Scene(scene.ambient(), new OrthographicCamera(camera.position(), camera.direction(),
                 camera.zoom() / 2), scene.objects(), scene.lights());
     }
 
