@@ -69,7 +69,7 @@ public final class WindowOptions {
         } catch (Window.NoDisplay e) {
             return noDisplay(err, e.getMessage());
         } catch (IOException e) {
-            err.println("rtd: cannot read the scene file '" + options.scene() + "': " + e.getMessage());
+            err.println("rtd: " + e.getMessage()); // as -o says it: cannot read the scene file '…': why
             return 1;
         }
     }
@@ -114,7 +114,10 @@ public final class WindowOptions {
         return 2;
     }
 
-    /** The scene at the size and {@code --scale} of the command line, its warnings left to the panel's renders. */
+    /**
+     * The scene at the size and {@code --scale} of the command line (its warnings are not shown); a file that
+     * cannot be read is an {@link IOException} with {@code -o}'s message.
+     */
     private static Scene read(RenderOptions options) throws SceneException, IOException {
         try {
             return options.scale().of(SceneSource.of(options.scene()).read(null, new ArrayList<>()));

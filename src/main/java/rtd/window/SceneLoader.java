@@ -8,6 +8,9 @@ import rtd.scene.Scene;
 @FunctionalInterface
 public interface SceneLoader {
 
-    /** The scene as the file holds it now, or its located mistakes. */
+    /**
+     * The scene as the file holds it now, or its located mistakes; a file that cannot be read throws an
+     * {@link IOException} whose message says so for people ("cannot read the scene file '…': …").
+     */
     Scene load() throws SceneException, IOException;
 }

@@ -263,8 +263,7 @@ final class WindowSession implements AutoCloseable {
     /** The scene file was saved: read again, or its mistakes shown while the last good picture stays. */
     void reloaded(Scene scene, SceneException mistakes, IOException unreadable) {
         if (scene == null) {
-            String why = mistakes != null ? mistakes.report() : "rtd: cannot read the scene file '" + setup.scene()
-                    + "': " + unreadable.getMessage() + "\n";
+            String why = mistakes != null ? mistakes.report() : "rtd: " + unreadable.getMessage() + "\n";
             display.panel(why + "\nThe last good picture stays; fix the scene and save it again.");
             return;
         }
