@@ -11,6 +11,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import rtd.accel.Bvh;
 import rtd.accel.LightGrids;
+import rtd.accel.ViewGrid;
 import rtd.io.SceneException;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
@@ -128,9 +129,9 @@ public final class WindowOptions {
 
     /**
      * The tracers {@code --accel ACCEL} chooses ({@code auto}, {@code none}, {@code bvh} or {@code grid}) with
-     * {@code threads} threads: for the picture those {@code -o} builds; for any camera the same without the view
-     * grid, which serves one camera only: the lights' grids (they see from the lights, whatever the camera) and
-     * the BVH, or the paper's loop for {@code none}. Public for the window's benchmark.
+     * {@code threads} threads, as {@code -o} chains them ({@link Accelerator}): for any camera the lights' grids
+     * (they see from the lights, whatever the camera) before the BVH, or the paper's loop for {@code none}; for
+     * the picture the view grid of its camera before those. Public for the window's benchmark.
      */
     public static Engine engine(String accel, int threads) {
         return engine(Accel.valueOf(accel), threads);
@@ -138,9 +139,16 @@ public final class WindowOptions {
 
     private static Engine engine(Accel accel, int threads) {
         return new Engine() {
+            /** The view grid of this camera's picture where {@code -o} takes one, before what serves any camera. */
             @Override
-            public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples) {
-                return Accelerator.of(scene, accel, width, height, samples, threads).tracers();
+            public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples,
+                    Supplier<Tracer> anyCamera) {
+                Accelerator.Kind kind = Accelerator.choose(scene, accel);
+                if (kind != Accelerator.Kind.GRID && kind != Accelerator.Kind.GRID_AND_BVH) {
+                    return anyCamera;
+                }
+                ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
+                return () -> grid.newTracer(anyCamera.get());
             }
 
             @Override

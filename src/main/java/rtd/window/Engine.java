@@ -13,9 +13,11 @@ public interface Engine {
 
     /**
      * Tracers for the full {@code width × height} picture of {@code scene} by its camera with
-     * {@code samples × samples} rays per pixel, built as {@code -o} builds them; a new tracer for each thread.
+     * {@code samples × samples} rays per pixel, as {@code -o} chooses them; a new tracer for each thread. What
+     * serves any camera comes from {@code anyCamera} (built once for the scene), so that only what serves this
+     * camera alone is built again.
      */
-    Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples);
+    Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples, Supplier<Tracer> anyCamera);
 
     /**
      * Tracers for rays of any camera in {@code scene}'s objects and lights, for pictures of about

@@ -76,7 +76,7 @@ final class FrameRenderer {
         int h = ProgressiveBuffer.blocks(frame.height(), block);
         if (block == 1) {
             int samples = frame.view() == null ? frame.samples() : 1; // a view takes one ray per pixel
-            Supplier<Tracer> tracers = engine.forPicture(scene, frame.width(), frame.height(), samples);
+            Supplier<Tracer> tracers = engine.forPicture(scene, frame.width(), frame.height(), samples, anyCamera);
             return ParallelRenderer.render(scene.camera(), tracers, shaders(scene, frame.view()), w, h, samples,
                     frame.threads(), new RenderProgress());
         }

@@ -14,6 +14,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import rtd.camera.OrthographicCamera;
 import rtd.cli.WindowOptions;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
@@ -41,6 +42,23 @@ class FrameRendererTest {
         int[] coarse = passes.get(0).picture().rgb();
         int[] full = passes.get(3).picture().rgb();
         assertThat(coarse[37 * 160 + 83]).isEqualTo(full[32 * 160 + 80]);
+    }
+
+    @Test
+    void thePapersFlatSceneEndsWithThePixelsOfOToo() throws Exception {
+        // -o at --scale 0.125: 240 × 135 pixels at zoom 6.25, both spheres in view
+        Scene paper = Scenes.example("input_rtd");
+        OrthographicCamera camera = (OrthographicCamera) paper.camera();
+        Scene scaled = new Scene(paper.ambient(), new OrthographicCamera(camera.position(), camera.direction(), 6.25f),
+                paper.objects(), paper.lights());
+        List<FrameRenderer.Pass> passes = new ArrayList<>();
+        Supplier<Tracer> any = ENGINE.forAnyCamera(scaled, 240, 135);
+        new FrameRenderer(ENGINE).render(new FrameRenderer.Frame(scaled, null, 240, 135, 1, 2, Refinement.STILL), any,
+                new ProgressiveBuffer(240, 135), passes::add);
+        Path out = dir.resolve("paper.png");
+        assertThat(Cli.run("examples/input_rtd.txt", "--scale", "0.125", "-o", out.toString()).exitCode()).isZero();
+        assertThat(passes.get(3).picture().rgb()).isEqualTo(rgb(ImageIO.read(out.toFile())))
+                .contains(0xFF0000, 0x007FFF); // the red and the blue sphere
     }
 
     @Test
