@@ -168,7 +168,7 @@ public final class WindowOptions {
     }
 
     /** {@link SceneWatcher} on the scene and its meshes, telling the window of each save (not of the first look). */
-    private static FileWatch watch(RenderOptions options) {
+    static FileWatch watch(RenderOptions options) {
         return changed -> {
             boolean[] first = {true};
             SceneWatcher watcher = new SceneWatcher(options.scene(), () -> {

@@ -3,17 +3,20 @@ package rtd.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
-@DisplayName("--window on the command line: what it refuses, and no display")
+@DisplayName("--window on the command line: what it refuses, its eye on the files, and no display")
 class WindowOptionsTest {
 
     private static final String EXAMPLE = Path.of("examples", "input_rtd.txt").toString();
@@ -55,6 +58,25 @@ class WindowOptionsTest {
     }
 
     @Test
+    void theWindowHearsOfEachSaveOfTheSceneButNotOfItsFirstLook() throws Exception {
+        Path scene = dir.resolve("scene.txt");
+        Files.copy(Path.of(EXAMPLE), scene);
+        RenderOptions options = new RenderOptions(List.of(scene), null, 160, 90, new Scale(1), true, 1, Accel.auto,
+                false, 1, false, false);
+        AtomicInteger saves = new AtomicInteger();
+        try (AutoCloseable watching = WindowOptions.watch(options).start(saves::incrementAndGet)) {
+            Thread.sleep(3 * SceneWatcher.POLL_MILLIS);
+            assertThat(saves).hasValue(0);
+            Files.writeString(scene, "ambient:(0|0|0)\n", StandardOpenOption.APPEND);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (saves.get() == 0 && System.nanoTime() < end) {
+                Thread.sleep(20);
+            }
+            assertThat(saves).hasValue(1);
+        }
+    }
+
+    @Test
     void withoutADisplayTheExitCodeIs2WithOneLineAndNoStackTrace() throws Exception {
         // a new JVM without DISPLAY, as on a server or over SSH without X
         ProcessBuilder command = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
@@ -65,7 +87,7 @@ class WindowOptionsTest {
         command.redirectError(dir.resolve("err.txt").toFile());
         Process process = command.start();
         assertThat(process.waitFor(60, TimeUnit.SECONDS)).isTrue();
-        String err = java.nio.file.Files.readString(dir.resolve("err.txt"), StandardCharsets.UTF_8);
+        String err = Files.readString(dir.resolve("err.txt"), StandardCharsets.UTF_8);
         assertThat(process.exitValue()).isEqualTo(2);
         String message = "rtd: --window needs a desktop, and there is none here (DISPLAY is not set); -o writes the "
                 + "picture to a file instead, such as -o picture.png";
