@@ -43,9 +43,10 @@ public final class WindowOptions {
     static final int WIDTH = 960;
     static final int HEIGHT = 540;
 
-    @Option(names = "--window", description = "instead of writing the picture, open the scene in a window: it renders "
-            + "coarse at once and refines; drag to orbit, right-drag to pan, wheel to zoom, click a pixel to see its "
-            + "rays and --explain; keys 1-5 picture and views, R reset, C copy the camera line, Ctrl+S save, Q quit")
+    @Option(names = "--window", description = "instead of writing the picture, open the scene in a window (960x540 "
+            + "unless --width, --height or --scale say otherwise): it renders coarse at once and refines; drag to "
+            + "orbit, right-drag to pan, wheel to zoom, click a pixel to see its rays and --explain; keys 1-5 picture "
+            + "and views, R reset, C copy the camera line, Ctrl+S save, Q quit; saving the scene renders it again")
     private boolean window;
 
     /** Whether {@code --window} was given. */
