@@ -3,6 +3,8 @@ package rtd.window;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.Font;
+import java.awt.GraphicsEnvironment;
+import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.datatransfer.StringSelection;
 import java.awt.event.ActionEvent;
@@ -32,6 +34,9 @@ import rtd.view.View;
  */
 final class SceneWindow implements Display {
 
+    /** The side panel's width in screen pixels. */
+    private static final int SIDE_WIDTH = 460;
+
     private final JFrame frame;
     private final WindowSession session;
     private final PicturePanel picture;
@@ -43,13 +48,14 @@ final class SceneWindow implements Display {
         this.closed = closed;
         this.frame = new JFrame("rtd: " + setup.scene());
         this.session = new WindowSession(setup, scene, this, SwingUtilities::invokeLater);
-        this.picture = new PicturePanel(session, setup.width(), setup.height());
+        Dimension shown = fitted(setup.width(), setup.height());
+        this.picture = new PicturePanel(session, shown.width, shown.height);
         panel.setEditable(false);
         panel.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         panel.setLineWrap(true);
         panel.setWrapStyleWord(true);
         JScrollPane side = new JScrollPane(panel);
-        side.setPreferredSize(new Dimension(460, setup.height()));
+        side.setPreferredSize(new Dimension(SIDE_WIDTH, shown.height));
         status.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         frame.getContentPane().add(picture, BorderLayout.CENTER);
         frame.getContentPane().add(side, BorderLayout.EAST);
@@ -65,6 +71,17 @@ final class SceneWindow implements Display {
         bindKeys();
         frame.pack();
         frame.setLocationByPlatform(true);
+    }
+
+    /**
+     * The picture's size on the screen: its own, or scaled down to fit the screen beside the side panel (nine
+     * tenths of it, for the window's frame and status line); a click still selects a pixel of the picture.
+     */
+    private static Dimension fitted(int width, int height) {
+        Rectangle screen = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        double room = Math.min(1, Math.min((screen.width * 0.9 - SIDE_WIDTH) / width, screen.height * 0.9 / height));
+        double scale = room > 0 ? room : 1;
+        return new Dimension(Math.max(1, (int) (width * scale)), Math.max(1, (int) (height * scale)));
     }
 
     /** Shows the window and starts the first render. */
