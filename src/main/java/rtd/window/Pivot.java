@@ -1,5 +1,6 @@
 package rtd.window;
 
+import rtd.geometry.BoundingBox;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.math.Ray;
@@ -8,8 +9,8 @@ import rtd.scene.Scene;
 
 /**
  * The point the camera orbits around and pans at: what the centre pixel sees (its nearest hit, by the paper's
- * depth test), or where it sees nothing, the middle of the centres of the objects' boxes; with no box, a point
- * ahead on the centre ray.
+ * depth test), or where it sees nothing, the centre of the box around the objects that have one; with none, a
+ * point ahead on the centre ray.
  */
 final class Pivot {
 
@@ -23,14 +24,23 @@ final class Pivot {
         if (hit != null) {
             return hit.point();
         }
-        Vector3f sum = Vector3f.ZERO;
-        int bounded = 0;
+        Vector3f min = null;
+        Vector3f max = null;
         for (IGeometry object : scene.objects()) {
-            if (object.bounds().isBounded()) {
-                sum = sum.add(object.bounds().centre());
-                bounded++;
+            BoundingBox box = object.bounds();
+            if (box.isBounded()) {
+                min = min == null ? box.min() : lowest(min, box.min());
+                max = max == null ? box.max() : highest(max, box.max());
             }
         }
-        return bounded > 0 ? sum.divide(bounded) : centre.pointAt(10);
+        return min != null ? new BoundingBox(min, max).centre() : centre.pointAt(10);
+    }
+
+    private static Vector3f lowest(Vector3f a, Vector3f b) {
+        return new Vector3f(Math.min(a.x(), b.x()), Math.min(a.y(), b.y()), Math.min(a.z(), b.z()));
+    }
+
+    private static Vector3f highest(Vector3f a, Vector3f b) {
+        return new Vector3f(Math.max(a.x(), b.x()), Math.max(a.y(), b.y()), Math.max(a.z(), b.z()));
     }
 }
