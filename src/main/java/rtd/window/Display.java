@@ -6,8 +6,8 @@ import rtd.image.Picture;
 /** What the window shows, told by its {@link WindowSession}; called on the window's thread only. */
 interface Display {
 
-    /** The picture (a view with its legend below), whose top {@code renderHeight} rows are the render. */
-    void picture(Picture picture, int renderHeight);
+    /** The picture, or a view with its legend below it. */
+    void picture(Picture picture);
 
     /** The selected pixel's ray tree, in image coordinates; empty for none. */
     void rays(List<RayTreeProjection.Line> lines);

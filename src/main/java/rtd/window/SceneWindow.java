@@ -95,18 +95,6 @@ final class SceneWindow implements Display {
         return session;
     }
 
-    JFrame frame() {
-        return frame;
-    }
-
-    JTextArea panelText() {
-        return panel;
-    }
-
-    PicturePanel picturePanel() {
-        return picture;
-    }
-
     private void bindKeys() {
         key("1", () -> session.show(null));
         View[] views = View.values();
@@ -138,7 +126,7 @@ final class SceneWindow implements Display {
     }
 
     @Override
-    public void picture(Picture shown, int renderHeight) {
+    public void picture(Picture shown) {
         picture.picture(shown);
     }
 

@@ -123,7 +123,7 @@ final class WindowSession implements AutoCloseable {
             legendWanted = false;
             display.panel(pass.legend());
         }
-        display.picture(pass.picture(), setup.height());
+        display.picture(pass.picture());
         status();
     }
 

@@ -155,7 +155,7 @@ class WindowSessionTest {
         List<RayTreeProjection.Line> rays = List.of();
 
         @Override
-        public void picture(Picture picture, int renderHeight) {
+        public void picture(Picture picture) {
         }
 
         @Override
