@@ -64,7 +64,8 @@ class WindowOptionsTest {
         RenderOptions options = new RenderOptions(List.of(scene), null, 160, 90, new Scale(1), true, 1, Accel.auto,
                 false, 1, false, false);
         AtomicInteger saves = new AtomicInteger();
-        try (AutoCloseable watching = WindowOptions.watch(options).start(saves::incrementAndGet)) {
+        AutoCloseable watching = WindowOptions.watch(options).start(saves::incrementAndGet);
+        try {
             Thread.sleep(3 * SceneWatcher.POLL_MILLIS);
             assertThat(saves).hasValue(0);
             Files.writeString(scene, "ambient:(0|0|0)\n", StandardOpenOption.APPEND);
@@ -73,6 +74,8 @@ class WindowOptionsTest {
                 Thread.sleep(20);
             }
             assertThat(saves).hasValue(1);
+        } finally {
+            watching.close();
         }
     }
 
