@@ -48,7 +48,8 @@ final class GroupReader {
 
     /** The numbers of a group, after its '(' and any blanks, up to and with its ')'. */
     private void readNumbers(Statement statement, Group group, int groupStart) throws StatementError {
-        if (group.orAt() && atWordAt()) {
+        boolean target = group.orAt() && atWordAt();
+        if (target) {
             cursor.pos += 2;
             written.markTarget();
         }
@@ -64,6 +65,10 @@ final class GroupReader {
             if (groupEndsAfterNumber(statement, group)) {
                 break;
             }
+        }
+        if (found < group.size() && target) {
+            throw cursor.error(groupStart, "too few numbers in the point that '" + statement.keyword()
+                    + "' looks at: it takes 3 numbers (at x|y|z), found " + found, "write the point as (at x|y|z)");
         }
         if (found < group.size()) {
             throw groupError(groupStart, "too few numbers in %s: it takes " + contents(group) + ", found " + found,

@@ -35,6 +35,9 @@ final class Hints {
     }
 
     /** For a token that is no number. */
+    /** A token that begins as {@code (at x|y|z)} does, misspelt: {@code at0}, {@code AT}, {@code At-1}. */
+    private static final Pattern LOOK_AT = Pattern.compile("(?i)at[-+.0-9]*");
+
     static String forNumber(String token) {
         if (token.indexOf('\u2212') >= 0) {
             return "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead";
@@ -47,6 +50,9 @@ final class Hints {
         }
         if (token.indexOf(';') >= 0) {
             return "separate the numbers of a group, or its properties, with '|', not ';'";
+        }
+        if (LOOK_AT.matcher(token).matches()) {
+            return "a camera looks at a point when its direction is written (at x|y|z): 'at' in lower case, then a space";
         }
         return NUMBER_FORMS;
     }

@@ -167,6 +167,12 @@ final class StatementValues {
         return direction;
     }
 
+    /** A number for a hint, without a trailing ".0": 3, -0.5. */
+    private static String plain(float value) {
+        String text = Float.toString(value);
+        return text.endsWith(".0") ? text.substring(0, text.length() - 2) : text;
+    }
+
     /**
      * The point of group {@code g}, written {@code (at x|y|z)} (Part III): the direction to it from
      * {@code from} must be neither zero nor too short or long for float.
@@ -177,7 +183,8 @@ final class StatementValues {
         float squaredLength = direction.dot(direction);
         if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
             throw errorAt(groups.starts[groups.firsts[g]], "the camera cannot look at its own position " + groupText(g),
-                    "give a point in front of the camera, such as (at 0|0|0) for the origin");
+                    "give a point in front of the camera: (at " + plain(from.x()) + "|" + plain(from.y()) + "|"
+                            + plain(from.z() - 1) + ") looks along -z");
         }
         if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
             String tooWhat = Float.isInfinite(squaredLength) ? "far from" : "near";

@@ -3,6 +3,7 @@ package rtd.pov;
 import java.math.BigDecimal;
 import java.util.Locale;
 import rtd.camera.ICamera;
+import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
@@ -112,7 +113,9 @@ public final class PovScene {
             double zoom = ortho.zoom();
             double[] location = plus(plus(d(ortho.position()), times(d(ortho.widthVector()), shiftX / zoom)),
                     times(d(ortho.heightVector()), shiftY / zoom));
-            String lookAt = ortho.target() == null ? "" : "\n  look_at " + vector(plus(location, d(ortho.direction())));
+            // POV-Ray's look_at takes its right axis from sky × direction, which is zero looking straight up or down
+            String lookAt = ortho.target() == null || ImageAxes.looksStraightUpOrDown(ortho.direction()) ? ""
+                    : "\n  look_at " + vector(plus(location, d(ortho.direction())));
             return "camera {\n  orthographic\n  location " + vector(location) + "\n  direction " + vector(d(ortho.direction()))
                     + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
                     + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + lookAt + "\n}\n";
