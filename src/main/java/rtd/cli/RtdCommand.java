@@ -110,6 +110,10 @@ public final class RtdCommand implements Callable<Integer> {
     @Mixin
     private TeachingOptions teaching;
 
+    /** --window: the scene in a window instead of a picture. */
+    @Mixin
+    private WindowOptions window;
+
     private RtdCommand(StandardStreams streams) {
         this.streams = streams;
     }
@@ -163,6 +167,9 @@ public final class RtdCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
+            if (window.requested()) {
+                return window.run(checkedOptions(), spec.commandLine(), err);
+            }
             Integer taught = teaching.run(options(), spec.commandLine(), err); // null: no teaching option answers
             if (taught != null) {
                 return taught;
