@@ -28,7 +28,7 @@ class ArchitectureTest {
     void keepsThePapersCoreFreeOfEverythingBuiltOnIt() {
         noClasses().that().resideInAnyPackage("rtd.math..", "rtd.image..", "rtd.geometry..", "rtd.camera..", "rtd.scene..")
                 .should().dependOnClassesThat().resideInAnyPackage("rtd.render..", "rtd.shade..", "rtd.accel..",
-                        "rtd.io..", "rtd.cli..", "rtd.explain..", "rtd.view..", "rtd.pov..")
+                        "rtd.io..", "rtd.cli..", "rtd.explain..", "rtd.view..", "rtd.pov..", "rtd.window..")
                 .check(RTD);
     }
 
@@ -36,7 +36,14 @@ class ArchitectureTest {
     void letsTheEngineReadOnlyTheBooksCoreAndTheTracerItPlugsInto() {
         noClasses().that().resideInAPackage("rtd.accel..")
                 .should().dependOnClassesThat().resideInAnyPackage("rtd.shade..", "rtd.io..", "rtd.cli..", "rtd.explain..",
-                        "rtd.view..", "rtd.pov..")
+                        "rtd.view..", "rtd.pov..", "rtd.window..")
+                .check(RTD);
+    }
+
+    @Test
+    void keepsTheWindowABookPackageThatTheCommandLineBuilds() {
+        noClasses().that().resideInAPackage("rtd.window..")
+                .should().dependOnClassesThat().resideInAnyPackage("rtd.accel..", "rtd.cli..")
                 .check(RTD);
     }
 }

@@ -21,8 +21,13 @@ public record ImageAxes(Vector3f u, Vector3f v) {
 
     /** The axes for the view direction {@code dir} (any length, not zero). */
     public static ImageAxes of(Vector3f dir) {
-        Vector3f right = dir.cross(WORLD_UP);
-        Vector3f u = right.magnitude() > 0 && right.normalize().isFinite() ? right.normalize() : WORLD_RIGHT;
+        Vector3f u = looksStraightUpOrDown(dir) ? WORLD_RIGHT : dir.cross(WORLD_UP).normalize();
         return new ImageAxes(u, dir.cross(u).normalize());
+    }
+
+    /** Whether {@code dir × (0,1,0)} gives no right axis (it is zero, or too short for float): then x is right. */
+    public static boolean looksStraightUpOrDown(Vector3f dir) {
+        Vector3f right = dir.cross(WORLD_UP);
+        return !(right.magnitude() > 0 && right.normalize().isFinite());
     }
 }

@@ -11,6 +11,7 @@ import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.BoundingBox;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Plane;
 import rtd.image.Picture;
 import rtd.math.Vector3f;
 import rtd.scene.Scene;
@@ -38,7 +39,7 @@ final class NothingInView {
     /** Whether an object may be drawn in the background's colour: any, in a lit scene; else one painted in it. */
     static boolean someObjectLooksLikeBackground(Scene scene) {
         int background = scene.ambient().getRGB();
-        return !scene.lights().isEmpty() || scene.objects().stream().anyMatch(o -> o.color().getRGB() == background);
+        return !scene.lights().isEmpty() || scene.objects().stream().anyMatch(o -> o.isPatterned() || o.color().getRGB() == background);
     }
 
     /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}, drawn as {@code options} ask. */
@@ -55,6 +56,10 @@ final class NothingInView {
         }
         Vector3f forward = camera instanceof OrthographicCamera o ? o.direction()
                 : camera instanceof PerspectiveCamera p ? p.direction() : null;
+        if (forward != null && objects.stream().allMatch(o -> o instanceof Plane)) {
+            return planesMissed(objects.size(), camera, forward);
+        }
+        objects = objects.stream().filter(o -> !(o instanceof Plane)).toList(); // no ray met a plane: see planesMissed
         long behind = forward == null ? 0 : objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward))
                 .count();
         if (behind == objects.size()) {
@@ -71,6 +76,22 @@ final class NothingInView {
                     + point(camera.position()) + " along " + point(perspective.direction()) + someBehind;
         }
         return "no object is in the camera's view" + someBehind;
+    }
+
+    /**
+     * Why no ray meets the scene's planes, its only objects: a plane is met by every ray that is not parallel to
+     * it and runs towards it, so the orthographic camera's rays run along the planes or away from them, and the
+     * perspective camera's field of view holds none of their half of the world.
+     */
+    private static String planesMissed(int planes, ICamera camera, Vector3f forward) {
+        String them = planes == 1 ? "the plane" : "all " + planes + " planes";
+        String from = " from " + point(camera.position()) + " along " + point(forward);
+        if (camera instanceof PerspectiveCamera) {
+            return them + (planes == 1 ? " lies" : " lie") + " outside the camera's field of view" + from
+                    + "; turn the camera towards " + (planes == 1 ? "it" : "them");
+        }
+        return "the camera's rays" + from + " run parallel to " + them + " or away from " + (planes == 1 ? "it" : "them")
+                + "; tilt the camera towards " + (planes == 1 ? "it" : "them") + ", as (0|-1|-1) looks down onto a floor";
     }
 
     private static String orthographicCause(OrthographicCamera camera, List<IGeometry> objects, RenderOptions options) {

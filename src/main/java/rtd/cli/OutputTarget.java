@@ -50,6 +50,10 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
                         new BufferedOutputStream(standardOutput, 1 << 16), progress);
             }
         } catch (IOException e) {
+            if (kind == Kind.STANDARD_OUTPUT && "broken pipe".equalsIgnoreCase(String.valueOf(e.getMessage()))) {
+                throw new FileError("cannot write the picture to standard output: the program reading it stopped "
+                        + "before the end (broken pipe)");
+            }
             throw new FileError("cannot write '" + spelt + "'", e);
         }
     }

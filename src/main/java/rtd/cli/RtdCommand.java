@@ -111,6 +111,10 @@ public final class RtdCommand implements Callable<Integer> {
     @Mixin
     private TeachingOptions teaching;
 
+    /** --window: the scene in a window instead of a picture. */
+    @Mixin
+    private WindowOptions window;
+
     /** Motion: --clock, --frames, --fps and --subset (Part III). */
     @Mixin
     private MotionOptions motion;
@@ -168,7 +172,11 @@ public final class RtdCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            FramePlan frames = motion.plan(spec.commandLine(), scenePaths, output, teaching.replacingOption());
+            FramePlan frames = motion.plan(spec.commandLine(), scenePaths, output,
+                    window.requested() ? "--window" : teaching.replacingOption());
+            if (window.requested()) {
+                return window.run(checkedOptions(), spec.commandLine(), err);
+            }
             Integer taught = teaching.run(options(), spec.commandLine(), err); // null: no teaching option answers
             if (taught != null) {
                 return taught;

@@ -16,16 +16,13 @@ import rtd.scene.Scene;
  */
 record SceneSource(Path path, boolean stdin) {
 
-    /** The name of standard input in messages, as compilers call it. */
-    static final String STDIN_NAME = "<stdin>";
-
     static SceneSource of(Path path) {
         return new SceneSource(path, path.toString().equals("-"));
     }
 
     /** The name for messages: the path as spelt, or {@code <stdin>}. */
     String name() {
-        return stdin ? STDIN_NAME : path.toString();
+        return stdin ? SceneIO.STDIN_NAME : path.toString();
     }
 
     /** Reads the scene at {@code clock}; its warnings (slips that are no mistakes) go to {@code warnings}. */
@@ -37,8 +34,8 @@ record SceneSource(Path path, boolean stdin) {
             if (!stdin) {
                 return SceneIO.readScene(path, warnings);
             }
-            return streams.inPath().isPresent() ? SceneIO.readScene(streams.inPath().get(), STDIN_NAME, warnings)
-                    : SceneIO.readScene(streams.in(), STDIN_NAME, warnings);
+            return streams.inPath().isPresent() ? SceneIO.readScene(streams.inPath().get(), SceneIO.STDIN_NAME, warnings)
+                    : SceneIO.readScene(streams.in(), SceneIO.STDIN_NAME, warnings);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);
         }
@@ -50,8 +47,8 @@ record SceneSource(Path path, boolean stdin) {
             if (!stdin) {
                 return SceneFile.read(path);
             }
-            return streams.inPath().isPresent() ? SceneFile.read(streams.inPath().get(), STDIN_NAME, Path.of(""))
-                    : SceneFile.read(streams.in(), STDIN_NAME);
+            return streams.inPath().isPresent() ? SceneFile.read(streams.inPath().get(), SceneIO.STDIN_NAME, Path.of(""))
+                    : SceneFile.read(streams.in(), SceneIO.STDIN_NAME);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);
         }

@@ -134,7 +134,8 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
                 Map.entry('²', "^2"), Map.entry('⊙', "*"), Map.entry('∞', "inf"), Map.entry('°', " degrees"),
                 Map.entry('ε', "eps"), Map.entry('½', "1/2"), Map.entry('ö', "oe"), Map.entry('‖', "|"),
                 Map.entry('—', "--"), Map.entry('–', "-"), Map.entry('‘', "'"), Map.entry('’', "'"),
-                Map.entry('“', "\""), Map.entry('”', "\""), Map.entry('θ', "theta_"));
+                Map.entry('“', "\""), Map.entry('”', "\""), Map.entry('θ', "theta_"), Map.entry('⁻', "^-"),
+                Map.entry('¹', "1"));
 
         private final CharsetEncoder encoder;
 

@@ -50,6 +50,10 @@ public final class TeachingOptions {
         if (watch || explain != null || view != null || exportPov != null) {
             checkOneSceneFile(options, commandLine);
         }
+        if (watch && OutputTarget.DASH.equals(options.output())) {
+            throw new ParameterException(commandLine, "--watch writes the picture again at each save, which cannot go "
+                    + "to standard output ('-o -'); give a file, such as -o out.png");
+        }
         if (watch) {
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }

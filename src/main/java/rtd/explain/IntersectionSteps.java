@@ -2,9 +2,11 @@ package rtd.explain;
 
 import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Patterned;
 import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.geometry.TestObserver;
+import rtd.geometry.Transformed;
 import rtd.geometry.Triangle;
 import rtd.math.Ray;
 
@@ -22,17 +24,32 @@ final class IntersectionSteps {
     static float explain(Text text, String head, IGeometry object, Ray ray) {
         TestObserver steps = observerOf(text, head, object);
         float t = object.intersect(ray, steps).t();
-        if (steps instanceof BoxSteps box) {
+        verdict(text, head, object, steps, t);
+        return t >= 0 ? t : Float.NaN;
+    }
+
+    /** The last line of a test's steps: its answer, where its steps do not say it. */
+    private static void verdict(Text text, String head, IGeometry object, TestObserver steps, float t) {
+        if (steps instanceof TransformedSteps transformed) {
+            IGeometry shape = ((Transformed) object).shape();
+            verdict(text, "", shape instanceof Patterned p ? p.shape() : shape, transformed.inner(), t);
+            transformed.done(t);
+        } else if (steps instanceof BoxSteps box) {
             box.verdict(t);
         } else if (steps instanceof TriangleSteps triangle) {
             triangle.verdict(t);
         } else if (steps == TestObserver.NONE) {
             text.hanging(head + object.kind() + ": its test gives t = " + Numbers.of(t) + (t >= 0 ? ": a hit" : ": no hit"));
         }
-        return t >= 0 ? t : Float.NaN;
     }
 
     private static TestObserver observerOf(Text text, String head, IGeometry object) {
+        if (object instanceof Patterned patterned) {
+            return observerOf(text, head, patterned.shape()); // the shape's own test
+        }
+        if (object instanceof Transformed transformed) {
+            return new TransformedSteps(text, head, transformed, inner -> observerOf(inner, "", transformed.shape()));
+        }
         if (object instanceof Sphere sphere) {
             return new SphereSteps(text, head, sphere);
         }

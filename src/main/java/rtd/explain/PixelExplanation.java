@@ -1,6 +1,7 @@
 package rtd.explain;
 
 import java.util.List;
+import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.image.Color;
 import rtd.math.Ray;
@@ -103,6 +104,14 @@ public final class PixelExplanation {
         if (nearest < 0) {
             colour = scene.ambient();
             text.line("no hit: the background, the scene's ambient colour " + Numbers.of(colour));
+        } else if (scene.objects().get(nearest).isPatterned()) {
+            Hit hit = scene.nearestHit(ray);
+            Vector3f under = hit.under(ray.direction(), hit.normal(ray.direction()));
+            text.line("#" + (nearest + 1) + " " + hit.object().kind() + ", patterned: its colour at under = P − ε·N = "
+                    + Numbers.of(under) + " (ε = " + Numbers.of(hit.lift()) + "), taken into the object's space");
+            text.in();
+            colour = hit.colour(ray.direction(), new PatternSteps(text));
+            text.out();
         } else {
             colour = scene.objects().get(nearest).color();
             text.line("#" + (nearest + 1) + " " + scene.objects().get(nearest).kind() + ", colour " + Numbers.of(colour));

@@ -1,6 +1,7 @@
 package rtd.explain;
 
 import rtd.camera.ICamera;
+import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.math.Ray;
@@ -23,7 +24,7 @@ final class RayGeneration {
         if (camera instanceof OrthographicCamera orthographic) {
             text.line("1. Ray generation (section 3.2.1, Listing 4.1: OrthographicCamera.generateRay)").in();
             offsets(text, x, y, w, h, offsetX, offsetY);
-            axes(text, orthographic.widthVector(), orthographic.heightVector());
+            axes(text, orthographic.direction(), orthographic.widthVector(), orthographic.heightVector());
             Vector3f u = orthographic.widthVector();
             Vector3f v = orthographic.heightVector();
             float zoom = orthographic.zoom();
@@ -38,7 +39,7 @@ final class RayGeneration {
             if (perspective.target() != null) {
                 text.line("dir = at − pos = " + lookAt(perspective.target(), perspective.position(), perspective.direction()));
             }
-            axes(text, perspective.widthVector(), perspective.heightVector());
+            axes(text, perspective.direction(), perspective.widthVector(), perspective.heightVector());
             float f = perspective.focalLength(w);
             text.line("f = (w/2) / tan(fov/2) = " + Numbers.of((float) (w / 2.0)) + " / tan(" + Numbers.of(perspective.fieldOfView())
                     + "°/2) = " + Numbers.of(f) + " pixels");
@@ -63,8 +64,11 @@ final class RayGeneration {
                 + "   (the camera looks at the point)";
     }
 
-    private static void axes(Text text, Vector3f u, Vector3f v) {
-        text.line("u = normalize(dir × (0,1,0)) = " + Numbers.of(u) + "   (right in the image)");
+    private static void axes(Text text, Vector3f dir, Vector3f u, Vector3f v) {
+        text.line(ImageAxes.looksStraightUpOrDown(dir)
+                ? "u = " + Numbers.of(u) + "   (right in the image: looking straight up or down, dir × (0,1,0) is zero, "
+                        + "so world x is right, as ImageAxes.of says)"
+                : "u = normalize(dir × (0,1,0)) = " + Numbers.of(u) + "   (right in the image)");
         text.line("v = normalize(dir × u) = " + Numbers.of(v) + "   (down in the image)");
     }
 }

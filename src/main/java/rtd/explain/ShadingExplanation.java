@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.Deque;
 import rtd.geometry.Hit;
 import rtd.geometry.Material;
+import rtd.geometry.PatternObserver;
 import rtd.geometry.Triangle;
 import rtd.image.Rgb;
 import rtd.math.Ray;
@@ -86,7 +87,8 @@ final class ShadingExplanation implements ShadingObserver {
         frame.material = hit.object().material();
         frame.hasBack = !hit.object().isSolid();
         text.line("hits #" + (hit.index() + 1) + " " + hit.object().kind() + " at t = " + Numbers.of(hit.t()) + ", P = "
-                + Numbers.of(hit.point()) + ", |P − O| = " + Numbers.of(hit.distance()) + ", colour " + hit.object().color());
+                + Numbers.of(hit.point()) + ", |P − O| = " + Numbers.of(hit.distance()) + ", colour "
+                + (hit.object().isPatterned() ? "from its pattern, at under = P − ε·N" : hit.object().color()));
     }
 
     @Override
@@ -106,6 +108,11 @@ final class ShadingExplanation implements ShadingObserver {
                 + Numbers.of(m.specular()) + ", shininess " + Numbers.of(m.shininess()) + ", reflective "
                 + Numbers.of(m.reflective()) + ", transparency " + Numbers.of(m.transparency()) + ", ior " + Numbers.of(m.ior()));
         lightNumber = 0;
+    }
+
+    @Override
+    public PatternObserver patterns() {
+        return new PatternSteps(text);
     }
 
     @Override

@@ -55,6 +55,27 @@ public interface IGeometry {
     /** The flat colour the object paints the pixels whose ray it is nearest on. */
     Color color();
 
+    /**
+     * Whether the object's colour changes from point to point (it shows a {@link Pattern}); if
+     * not, {@link #color()} is its colour everywhere and {@link #colorAt} need not be asked.
+     */
+    default boolean isPatterned() {
+        return false;
+    }
+
+    /**
+     * The colour at {@code under}, the point just beneath the surface where a ray hit it
+     * ({@link Hit#colour}): {@link #color()} unless the object is patterned.
+     */
+    default Color colorAt(Vector3f under) {
+        return colorAt(under, PatternObserver.NONE);
+    }
+
+    /** {@link #colorAt(Vector3f)}, telling {@code watch} how a pattern chose the colour ({@code --explain}). */
+    default Color colorAt(Vector3f under, PatternObserver watch) {
+        return color();
+    }
+
     /** The object's finish, for shading. */
     Material material();
 

@@ -1,5 +1,8 @@
 package rtd.geometry;
 
+import rtd.math.Matrix4;
+import rtd.math.Ray;
+
 /**
  * Watches an intersection test at work, for {@code --explain}: each shape's test tells it the
  * numbers it computes, as it computes them, so that an explanation shows the very numbers of the
@@ -45,5 +48,16 @@ public interface TestObserver {
 
     /** A triangle's side test of edge {@code edge} (0, 1, 2): {@code (P − corner)·(n × edge)}, and the rounding it allows. */
     default void triangleSide(int edge, float side, float allowance) {
+    }
+
+    /**
+     * A transformed object's test takes the ray into the object's own space with the inverse of
+     * {@code matrix} ({@code M⁻¹O + t·M⁻¹R}); the untransformed shape's own test follows.
+     */
+    default void transformedRay(Matrix4 matrix, Ray objectRay) {
+    }
+
+    /** The shape's test hit at {@code t}, but the world's point lies outside the object's box: float noise, no hit. */
+    default void outsideBox(float t) {
     }
 }

@@ -77,6 +77,11 @@ final class Grammar {
                     List.of(name("name", "name"), properties("properties",
                             "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
                     (v, out) -> out.material(v.name(0), material(v))),
+            Statement.definition("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
+                    numbers("first colour", "R|G|B"), numbers("second colour", "R|G|B")),
+                    List.of(name("transform", "transform")), false, Definitions::pattern),
+            Statement.definition("transform", List.of(name("name", "name"), Group.operation("step", "scale s")),
+                    List.of(Group.operation("step", "step")), true, Definitions::transform),
             Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
                     (v, out) -> LetDefinition.define(v, 0)));
 

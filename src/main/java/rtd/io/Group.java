@@ -12,8 +12,9 @@ import java.util.List;
  * @param size    how many numbers a {@link Kind#NUMBERS} group holds; 1 for the others
  * @param keys    the keys a {@link Kind#PROPERTIES} group may hold; empty for the others
  * @param orAt    whether it may be written {@code (at x|y|z)}, a point to look at (Part III)
+ * @param orName  whether it may hold one name instead of its numbers: an object's colour group, naming a pattern
  */
-record Group(String meaning, Kind kind, String shape, int size, List<String> keys, boolean orAt) {
+record Group(String meaning, Kind kind, String shape, int size, List<String> keys, boolean orAt, boolean orName) {
 
     /** What a group holds. */
     enum Kind {
@@ -24,32 +25,44 @@ record Group(String meaning, Kind kind, String shape, int size, List<String> key
         /** One file path, everything up to the group's {@code )}, blanks around it trimmed. */
         PATH,
         /** {@code key=number} pairs separated by {@code |}, each key at most once, any left out. */
-        PROPERTIES
+        PROPERTIES,
+        /** A word, a blank and numbers separated by {@code |}, as many as the word takes: {@code scale 2}, {@code translate 0|1|0}. */
+        OPERATION
     }
 
     /** A group of numbers written as {@code shape}, such as {@code x|y|z}; their count is the shape's. */
     static Group numbers(String meaning, String shape) {
-        return new Group(meaning, Kind.NUMBERS, shape, shape.split("\\|").length, List.of(), false);
+        return new Group(meaning, Kind.NUMBERS, shape, shape.split("\\|").length, List.of(), false, false);
     }
 
     /** A camera's view direction {@code (x|y|z)}, or {@code (at x|y|z)}: the point it looks at. */
     static Group view(String meaning) {
-        return new Group(meaning, Kind.NUMBERS, "x|y|z", 3, List.of(), true);
+        return new Group(meaning, Kind.NUMBERS, "x|y|z", 3, List.of(), true, false);
     }
 
     /** A group that holds one name, written as {@code shape} in the statement's usage. */
     static Group name(String meaning, String shape) {
-        return new Group(meaning, Kind.NAME, shape, 1, List.of(), false);
+        return new Group(meaning, Kind.NAME, shape, 1, List.of(), false, false);
     }
 
     /** A group that holds one file path. */
     static Group path(String meaning) {
-        return new Group(meaning, Kind.PATH, "path", 1, List.of(), false);
+        return new Group(meaning, Kind.PATH, "path", 1, List.of(), false, false);
     }
 
     /** A group of {@code key=number} pairs with the given keys. */
     static Group properties(String meaning, String... keys) {
-        return new Group(meaning, Kind.PROPERTIES, "key=value|key=value...", 1, List.of(keys), false);
+        return new Group(meaning, Kind.PROPERTIES, "key=value|key=value...", 1, List.of(keys), false, false);
+    }
+
+    /** A transformation's step, such as {@code (rotate_y 30)}: a word and its numbers. */
+    static Group operation(String meaning, String shape) {
+        return new Group(meaning, Kind.OPERATION, shape, 1, List.of(), false, false);
+    }
+
+    /** This group, which may hold a pattern's name if it is an object's colour (Part III, "Patterns"). */
+    Group orPatternName() {
+        return meaning.equals("colour") && kind == Kind.NUMBERS ? new Group(meaning, kind, shape, size, keys, orAt, true) : this;
     }
 
     /** "the centre of 'sphere'", for messages. */

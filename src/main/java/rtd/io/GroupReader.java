@@ -38,8 +38,14 @@ final class GroupReader {
         if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
             throw groupError(groupStart, "empty group: %s needs " + contents(group), statement, group);
         }
+        if (group.orName() && WordGroups.atLoneName(cursor)) {
+            readName(statement, group);
+            written.markNamed();
+            return;
+        }
         switch (group.kind()) {
             case NUMBERS -> readNumbers(statement, group, groupStart);
+            case OPERATION -> WordGroups.readStep(this, cursor, written, statement, group);
             case NAME -> readName(statement, group);
             case PATH -> readPath(statement, group);
             case PROPERTIES -> readProperties(statement, group);
@@ -48,7 +54,8 @@ final class GroupReader {
 
     /** The numbers of a group, after its '(' and any blanks, up to and with its ')'. */
     private void readNumbers(Statement statement, Group group, int groupStart) throws StatementError {
-        if (group.orAt() && atWordAt()) {
+        boolean target = group.orAt() && atWordAt();
+        if (target) {
             cursor.pos += 2;
             written.markTarget();
         }
@@ -66,6 +73,10 @@ final class GroupReader {
                 break;
             }
         }
+        if (found < group.size() && target) {
+            throw cursor.error(groupStart, "too few numbers in the point that '" + statement.keyword()
+                    + "' looks at: it takes 3 numbers (at x|y|z), found " + found, "write the point as (at x|y|z)");
+        }
         if (found < group.size()) {
             throw groupError(groupStart, "too few numbers in %s: it takes " + contents(group) + ", found " + found,
                     statement, group);
@@ -77,6 +88,13 @@ final class GroupReader {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
         return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
+    }
+
+    /** Reads one number into the current group: a number of a transformation's step ({@link WordGroups#readStep}). */
+    void readNumberInto() throws StatementError {
+        float value = numbers.read();
+        written.add(value, numbers.tokenStart, cursor.pos);
+        numbers.markIfExpression(written);
     }
 
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
@@ -95,25 +113,9 @@ final class GroupReader {
         if (!cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected ')' after '" + cursor.source.text(start, nameEnd) + "' in "
                     + group.of(statement) + ", found "
-                    + cursor.describe(cursor.pos), nameHint(group, start));
+                    + cursor.describe(cursor.pos), Hints.forName(cursor, group, start));
         }
         cursor.pos++;
-    }
-
-    /** The help for a name followed by something else; properties where a name belongs get their own. */
-    private String nameHint(Group group, int start) {
-        if (!cursor.at('=')) {
-            return "a name holds only letters, digits, '_' and '-'";
-        }
-        int end = start;
-        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !TextBytes.isLineBreak(cursor.bytes[end])) {
-            end++;
-        }
-        String properties = cursor.source.text(start, end).strip();
-        return group == Statement.MATERIAL
-                ? "an object names its material here; define the material on a line of its own, such as "
-                        + "material:(shiny):(" + properties + "), then write (shiny) here"
-                : "a material's name comes first, then its properties: material:(shiny):(" + properties + ")";
     }
 
     /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
@@ -162,7 +164,7 @@ final class GroupReader {
     }
 
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
-    private boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
+    boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
         cursor.skipBlanks();
         if (cursor.at('|') || cursor.at(')')) {
             return cursor.bytes[cursor.pos++] == ')';
@@ -229,7 +231,7 @@ final class GroupReader {
     }
 
     /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
-    private StatementError groupError(int offset, String message, Statement statement, Group group) {
+    StatementError groupError(int offset, String message, Statement statement, Group group) {
         String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
         return cursor.error(offset, text, "write it as " + statement.usage());
     }
@@ -242,6 +244,7 @@ final class GroupReader {
             case NAME -> "a name";
             case PATH -> "a file path";
             case PROPERTIES -> "key=value pairs";
+            case OPERATION -> "an operation such as (" + group.shape() + ")";
         };
     }
 }

@@ -35,6 +35,9 @@ final class Hints {
     }
 
     /** For a token that is no number. */
+    /** A token that begins as {@code (at x|y|z)} does, misspelt: {@code at0}, {@code AT}, {@code At-1}. */
+    private static final Pattern LOOK_AT = Pattern.compile("(?i)at[-+.0-9]*");
+
     static String forNumber(String token) {
         if (token.indexOf('\u2212') >= 0) {
             return "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead";
@@ -47,6 +50,9 @@ final class Hints {
         }
         if (token.indexOf(';') >= 0) {
             return "separate the numbers of a group, or its properties, with '|', not ';'";
+        }
+        if (LOOK_AT.matcher(token).matches()) {
+            return "a camera looks at a point when its direction is written (at x|y|z): 'at' in lower case, then a space";
         }
         return NUMBER_FORMS;
     }
@@ -112,8 +118,38 @@ final class Hints {
         synonyms("tri dreieck face", "triangle");
         synonyms("obj model modell", "mesh");
         synonyms("mat finish surface", "material");
+        synonyms("texture textur pigment muster checkerboard checkers stripe ring", "pattern");
+        synonyms("matrix transformation scale rotate translate move", "transform");
     }
 
+
+    /** The help for a name in {@code group} from {@code start} followed by something else at the cursor; properties where a name belongs get their own. */
+    static String forName(LineCursor cursor, Group group, int start) {
+        if (!cursor.at('=')) {
+            return "a name holds only letters, digits, '_' and '-'";
+        }
+        int end = start;
+        while (end < cursor.bytes.length && cursor.bytes[end] != ')' && !TextBytes.isLineBreak(cursor.bytes[end])) {
+            end++;
+        }
+        String properties = cursor.source.text(start, end).strip();
+        return group == Statement.MATERIAL
+                ? "an object names its material here; define the material on a line of its own, such as "
+                        + "material:(shiny):(" + properties + "), then write (shiny) here"
+                : "a material's name comes first, then its properties: material:(shiny):(" + properties + ")";
+    }
+
+    /** For a colour written as fractions from 0 to 1, as other programs write colours, the same from 0 to 255; else null. */
+    static String colourFractions(float[] values, int first) {
+        StringBuilder scaled = new StringBuilder("(");
+        for (int i = first; i < first + 3; i++) {
+            if (!(values[i] >= 0 && values[i] <= 1)) {
+                return null;
+            }
+            scaled.append(i > first ? "|" : "").append(Math.round(values[i] * 255));
+        }
+        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is " + scaled + ")";
+    }
 
     /** The help for an unknown statement keyword: "did you mean …?", or the list of keywords. */
     static String keywordHelp(String word) {

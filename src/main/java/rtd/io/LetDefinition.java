@@ -21,18 +21,18 @@ final class LetDefinition {
             throw v.errorAtValue(g, 0, "'" + name + "' cannot be defined: it is a word of the expressions",
                     "choose another name; clock, pi and the functions (sin, cos, sqrt, …) keep their meaning");
         }
-        Integer earlier = v.names.lineOf(name);
+        Integer earlier = v.expressionNames.lineOf(name);
         if (earlier != null) {
             throw v.errorAtValue(g, 0, "a second let of '" + name + "': each name is defined once",
                     "the first '" + name + "' is at line " + earlier);
         }
-        v.names.define(name, v.expression(g + 1), v.line());
+        v.expressionNames.define(name, v.expression(g + 1), v.line());
     }
 
     /** Notes that the {@code let} being read has a mistake, once its name is read: its uses are then left out. */
     static void defineBroken(StatementValues v) {
         if (v.hasValue(0)) {
-            v.names.defineBroken(v.name(0), v.line());
+            v.expressionNames.defineBroken(v.name(0), v.line());
         }
     }
 }

@@ -128,7 +128,10 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (IOException e) {
             throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
                     e instanceof NoSuchFileException && written.indexOf('\\') >= 0 ? Hints.forWindowsPath(written)
-                            : "a mesh's path is relative to the folder of the scene file");
+                            : scene.name().equals(SceneIO.STDIN_NAME)
+                                    ? "the scene comes from standard input, so a mesh's path is relative to the "
+                                            + "folder rtd runs in; or give the full path"
+                                    : "a mesh's path is relative to the folder of the scene file");
         }
         ObjMesh mesh;
         try {

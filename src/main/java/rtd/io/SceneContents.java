@@ -7,7 +7,9 @@ import java.util.Set;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
+import rtd.geometry.Pattern;
 import rtd.image.Color;
+import rtd.math.Matrix4;
 import rtd.scene.Light;
 
 /**
@@ -27,6 +29,14 @@ final class SceneContents implements Statement.Output {
     record Named(String name, Material material) {
     }
 
+    /** A pattern, the name it is defined under, and the name of its transform (null: none) with its place. */
+    record NamedPattern(String name, Pattern pattern, String transform, SceneError transformPlace) {
+    }
+
+    /** A transformation and the name it is defined under. */
+    record NamedTransform(String name, Matrix4 matrix) {
+    }
+
     /** An object that names a material, built when every material is known: its values, and how many objects come before it. */
     record Pending(int index, StatementValues values) {
     }
@@ -40,6 +50,8 @@ final class SceneContents implements Statement.Output {
     final List<Located<Color>> ambients = new ArrayList<>();
     final List<Located<ICamera>> cameras = new ArrayList<>();
     final List<Located<Named>> materials = new ArrayList<>();
+    final List<Located<NamedPattern>> patterns = new ArrayList<>();
+    final List<Located<NamedTransform>> transforms = new ArrayList<>();
     final List<Light> lights = new ArrayList<>();
     final List<Found> errors = new ArrayList<>();
     /** Warnings that hold only if the scene has a light, in the order their statements were built. */
@@ -98,17 +110,30 @@ final class SceneContents implements Statement.Output {
 
     @Override
     public void object(IGeometry object) {
-        into.add(object);
+        into.add(values.dress(object));
     }
 
     @Override
     public void objects(List<IGeometry> more) {
-        into.addAll(more);
+        for (IGeometry object : more) {
+            into.add(values.dress(object));
+        }
     }
 
     @Override
     public void material(String name, Material material) {
         materials.add(new Located<>(new Named(name, material), values.placeOfValue(0, 0)));
+    }
+
+    @Override
+    public void pattern(String name, Pattern pattern, String transform) {
+        SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
+        patterns.add(new Located<>(new NamedPattern(name, pattern, transform, transformPlace), values.placeOfValue(0, 0)));
+    }
+
+    @Override
+    public void transform(String name, Matrix4 transform) {
+        transforms.add(new Located<>(new NamedTransform(name, transform), values.placeOfValue(0, 0)));
     }
 
     @Override

@@ -22,6 +22,8 @@ import rtd.scene.Scene;
  */
 public final class SceneIO {
 
+    /** The name of standard input in messages, as compilers call it. */
+    public static final String STDIN_NAME = "<stdin>";
     /** The largest scene file rtd reads, 1 GiB: about 20 million spheres. */
     public static final long MAX_SCENE_BYTES = 1L << 30;
 

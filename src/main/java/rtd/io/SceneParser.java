@@ -2,13 +2,10 @@ package rtd.io;
 
 import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Material;
 import rtd.image.Color;
 import rtd.scene.Scene;
 
@@ -78,9 +75,9 @@ final class SceneParser {
             errors.add(found(second.place().saying("a second camera: a scene has one",
                     "the first camera is at line " + cameras.get(0).place().line())));
         }
-        Map<String, Material> materials = materials(contents.materials, errors);
+        DefinedNames names = new DefinedNames(contents, errors);
         Set<String> named = new HashSet<>(contents.namedAtOnce);
-        List<IGeometry> objects = objects(contents, materials, named);
+        List<IGeometry> objects = objects(contents, names, named, errors);
         if (errors.isEmpty() && contents.statementCount == 0) {
             errors.add(found(atStart(source, "the scene is empty: it has no statements, only blanks and comments",
                     "a scene needs at least a camera, such as " + CAMERA_EXAMPLE)));
@@ -96,6 +93,7 @@ final class SceneParser {
         if (warnings != null) {
             boolean lit = !contents.lights.isEmpty();
             warnings.addAll(MaterialWarnings.of(contents.materials, named, lit));
+            warnings.addAll(names.unused(named, MAX_ERRORS));
             if (lit) {
                 List<SceneError> acne = new ArrayList<>(contents.litWarnings);
                 acne.sort(Comparator.comparingInt(SceneError::line));
@@ -116,26 +114,9 @@ final class SceneParser {
         }
     }
 
-    /** The materials by name; a name defined again is an error at the second definition. */
-    private static Map<String, Material> materials(List<SceneContents.Located<SceneContents.Named>> definitions,
+    /** Every object in file order, those that name a material, pattern or transform built now; the names go to {@code named}. */
+    private static List<IGeometry> objects(SceneContents contents, DefinedNames names, Set<String> named,
             List<SceneContents.Found> errors) {
-        Map<String, SceneContents.Located<SceneContents.Named>> first = new HashMap<>();
-        Map<String, Material> materials = new HashMap<>();
-        for (var definition : definitions) {
-            String name = definition.value().name();
-            var earlier = first.putIfAbsent(name, definition);
-            if (earlier == null) {
-                materials.put(name, definition.value().material());
-            } else {
-                errors.add(found(definition.place().saying("a second material '" + name + "': each name is defined once",
-                        "the first '" + name + "' is at line " + earlier.place().line())));
-            }
-        }
-        return materials;
-    }
-
-    /** Every object in file order, those that named a material built now; the names go to {@code named}. */
-    private static List<IGeometry> objects(SceneContents contents, Map<String, Material> materials, Set<String> named) {
         if (contents.pending.isEmpty()) {
             return contents.objects;
         }
@@ -144,35 +125,29 @@ final class SceneParser {
         for (SceneContents.Pending pending : contents.pending) {
             objects.addAll(contents.objects.subList(next, pending.index()));
             next = pending.index();
-            named.add(build(contents, pending.values(), materials, objects));
+            build(contents, pending.values(), names, objects, named, errors);
         }
         objects.addAll(contents.objects.subList(next, contents.objects.size()));
         return objects;
     }
 
     /**
-     * Builds an object that names a material into {@code objects}, and answers the name. An unknown name is
-     * an error (unless its definition is broken, which is reported already); the statement is still checked.
+     * Builds an object that names a material, pattern or transform into {@code objects}; the names it uses go
+     * to {@code named}. A name that is unknown or of the wrong kind is an error (unless its definition is
+     * broken, which is reported already); the statement is still checked.
      */
-    private static String build(SceneContents contents, StatementValues values, Map<String, Material> materials,
-            List<IGeometry> objects) {
-        int group = values.statement().groups().size(); // the last, optional group: the material's name
-        String name = values.name(group);
-        Material material = materials.get(name);
-        if (material == null && !contents.brokenDefinitions.contains(name)) {
-            String nearest = Hints.nearest(name, materials.keySet());
-            contents.addErrors(values.errorAtValue(group, 0, "unknown material '" + name + "'", nearest != null
-                    ? "did you mean '" + nearest + "'?"
-                    : "define it with a line such as material:(" + name + "):(diffuse=0.9)"));
-        }
-        values.useMaterial(material == null ? Material.DEFAULT : material);
+    private static void build(SceneContents contents, StatementValues values, DefinedNames names, List<IGeometry> objects,
+            Set<String> named, List<SceneContents.Found> errors) {
+        int before = errors.size();
+        ObjectNames resolved = ObjectNames.of(values, names, errors);
+        named.addAll(resolved.names());
+        values.useNames(resolved);
         try {
-            // with an unknown material the scene has errors: the object is only checked
-            contents.buildInto(values, material == null ? new ArrayList<>() : objects);
+            // with a name that is not right the scene has errors: the object is only checked
+            contents.buildInto(values, errors.size() > before ? new ArrayList<>() : objects);
         } catch (StatementError e) {
             contents.addErrors(e);
         }
-        return name;
     }
 
     private static SceneContents.Found found(SceneError error) {

@@ -5,31 +5,65 @@ import java.util.stream.Collectors;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
+import rtd.geometry.Pattern;
 import rtd.image.Color;
+import rtd.math.Matrix4;
 import rtd.scene.Light;
 
 /**
- * One statement of the {@link Grammar}: its keyword, its groups, whether it takes a last, optional material
- * group (Part II, "Light"), and how it builds its value. {@link StatementReader} reads any statement from
- * this alone.
+ * One statement of the {@link Grammar}: its keyword, its groups, the optional groups that may follow them
+ * (an object's material and transform, Part II's "Light" and Part III's "Transformations"; a
+ * transformation's further steps), and how it builds its value. {@link StatementReader} reads any statement
+ * from this alone.
+ *
+ * @param optional    the groups that may follow {@code groups}, in this order, each at most once
+ * @param repeatsLast whether the last optional group may follow any number of times
  */
-record Statement(String keyword, List<Group> groups, boolean takesMaterial, Builder builder) {
+record Statement(String keyword, List<Group> groups, List<Group> optional, boolean repeatsLast, Builder builder) {
 
-    /** The optional last group of an object: the name of a {@code material:}. */
+    /** The first optional group of an object: the name of a {@code material:} (or of a {@code transform:}). */
     static final Group MATERIAL = Group.name("material", "material");
+    /** The second optional group of an object: the name of a {@code transform:} (or of a {@code material:}). */
+    static final Group TRANSFORM = Group.name("transform", "transform");
 
     Statement {
         groups = List.copyOf(groups);
+        optional = List.copyOf(optional);
     }
 
-    /** A statement that makes an object, a shape: it may name a material in a last group. */
+    /**
+     * A statement that makes an object, a shape: its colour group may name a pattern, and up to two last
+     * groups may name its material and its transform, in either order.
+     */
     static Statement shape(String keyword, List<Group> groups, Builder builder) {
-        return new Statement(keyword, groups, true, builder);
+        return new Statement(keyword, groups.stream().map(Group::orPatternName).toList(), List.of(MATERIAL, TRANSFORM),
+                false, builder);
     }
 
-    /** A statement that sets something of the scene (its background, camera, a light, a material): no material group. */
+    /** A statement that sets something of the scene (its background, camera, a light, a material): no optional group. */
     static Statement setting(String keyword, List<Group> groups, Builder builder) {
-        return new Statement(keyword, groups, false, builder);
+        return new Statement(keyword, groups, List.of(), false, builder);
+    }
+
+    /** A definition with optional last groups, the last of which may repeat. */
+    static Statement definition(String keyword, List<Group> groups, List<Group> optional, boolean repeatsLast,
+            Builder builder) {
+        return new Statement(keyword, groups, optional, repeatsLast, builder);
+    }
+
+    /** Whether it makes an object, which may name a material and a transform. */
+    boolean takesMaterial() {
+        return optional.contains(MATERIAL);
+    }
+
+    /** How many optional groups may follow at most. */
+    int mostOptional() {
+        return repeatsLast ? Integer.MAX_VALUE : optional.size();
+    }
+
+    /** The {@code k}-th optional group read (from 0). */
+    Group optional(int k) {
+        return optional.get(Math.min(k, optional.size() - 1));
     }
 
     /**
@@ -56,20 +90,33 @@ record Statement(String keyword, List<Group> groups, boolean takesMaterial, Buil
         /** A finish that objects may name, defined under {@code name}. */
         void material(String name, Material material);
 
+        /** A pattern that objects' colour groups may name; its transform's name (or null) is resolved when the file is read. */
+        void pattern(String name, Pattern pattern, String transform);
+
+        /** A transformation that objects and patterns may name. */
+        void transform(String name, Matrix4 transform);
+
         void light(Light light);
 
         /** A warning about the statement that holds only if the scene has a light (a shaded scene). */
         void warningIfLit(SceneError warning);
     }
 
-    /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)[:(material)]}. */
+    /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)[:(material)][:(transform)]}. */
     String usage() {
         return keyword + groups.stream().map(g -> ":(" + g.shape() + ")").collect(Collectors.joining())
-                + (takesMaterial ? "[:(" + MATERIAL.shape() + ")]" : "");
+                + optional.stream().map(g -> "[:(" + g.shape() + ")]").collect(Collectors.joining())
+                + (repeatsLast ? "…" : "");
     }
 
-    /** How many groups it takes, for "too many groups: 'sphere' takes 3, or 4 with a material". */
+    /** How many groups it takes, for "too many groups: 'sphere' takes 3, or up to 5 with a material and a transform". */
     String groupCount() {
-        return groups.size() + (takesMaterial ? ", or " + (groups.size() + 1) + " with a material" : "");
+        if (optional.isEmpty()) {
+            return String.valueOf(groups.size());
+        }
+        if (takesMaterial()) {
+            return groups.size() + ", or up to " + (groups.size() + 2) + " with a material and a transform";
+        }
+        return groups.size() + ", or " + (groups.size() + optional.size()) + " with a " + optional.get(0).meaning();
     }
 }

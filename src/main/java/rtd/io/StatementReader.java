@@ -72,9 +72,9 @@ final class StatementReader {
             groupReader.readGroup(statement, groups.get(g));
         }
         cursor.skipBlanks();
-        boolean namesMaterial = statement.takesMaterial() && cursor.at(':');
-        if (namesMaterial) {
-            groupReader.readGroup(statement, Statement.MATERIAL);
+        int optional = 0;
+        while (optional < statement.mostOptional() && cursor.at(':')) {
+            groupReader.readGroup(statement, statement.optional(optional++));
             cursor.skipBlanks();
         }
         if (cursor.at(':')) {
@@ -84,14 +84,14 @@ final class StatementReader {
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (!namesMaterial) {
+        if (!statement.takesMaterial() || optional == 0 && values.groups().named < 0) {
             statement.builder().build(values, contents);
             return;
         }
         String name = values.name(groups.size());
-        Material above = contents.materialAbove(name);
+        Material above = optional == 1 && values.groups().named < 0 ? contents.materialAbove(name) : null;
         if (above == null) {
-            contents.addPending(values.copy()); // the material may be defined further down
+            contents.addPending(values.copy()); // its names are resolved when the whole file is read
             return;
         }
         contents.namedAtOnce.add(name);

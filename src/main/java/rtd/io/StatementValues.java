@@ -1,5 +1,6 @@
 package rtd.io;
 
+import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
 import rtd.math.Vector3f;
@@ -14,19 +15,20 @@ final class StatementValues {
 
     private final SourceText source;
     private final WrittenGroups groups;
-    /** The names of this reading: the clock and what {@code let} defined (Part III). */
-    final Names names;
+    /** The names of this reading's expressions: the clock and what {@code let} defined (Part III). */
+    final Names expressionNames;
     private Statement statement;
     private int line;
     private int lineStart;
     private int statementStart;
-    private Material material;
+    /** What the object's names mean, once known: its material, pattern and transform. */
+    private ObjectNames names;
 
     /** The values of the statements read into {@code groups}, one after the other. */
-    StatementValues(SourceText source, WrittenGroups groups, Names names) {
+    StatementValues(SourceText source, WrittenGroups groups, Names expressionNames) {
         this.source = source;
         this.groups = groups;
-        this.names = names;
+        this.expressionNames = expressionNames;
     }
 
     /** Starts a statement whose keyword stands at byte {@code statementStart} of a line. */
@@ -35,13 +37,33 @@ final class StatementValues {
         this.line = line;
         this.lineStart = lineStart;
         this.statementStart = statementStart;
-        this.material = Material.DEFAULT;
+        this.names = ObjectNames.NONE;
         groups.clear();
     }
 
     /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
     void useMaterial(Material material) {
-        this.material = material;
+        this.names = ObjectNames.NONE.with(material);
+    }
+
+    /** Sets what the object's names mean (Part III: a material, a pattern, a transform). */
+    void useNames(ObjectNames names) {
+        this.names = names;
+    }
+
+    /** The object as its names make it ({@link ObjectNames#dress}): every shape's object passes through here. */
+    IGeometry dress(IGeometry object) {
+        return names.dress(object);
+    }
+
+    /** The groups as read, for what Part III's statements ask of them ({@link WrittenGroups#named}, a step's size). */
+    WrittenGroups groups() {
+        return groups;
+    }
+
+    /** Value {@code k} of group {@code g}, which must be finite. */
+    float number(int g, int k) throws StatementError {
+        return finite(groups.firsts[g] + k, meaning(g));
     }
 
     /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
@@ -51,7 +73,7 @@ final class StatementValues {
 
     /** An independent copy, for an object built when the whole file is read. */
     StatementValues copy() {
-        StatementValues copy = new StatementValues(source, groups.copy(), names);
+        StatementValues copy = new StatementValues(source, groups.copy(), expressionNames);
         copy.statement = statement;
         copy.line = line;
         copy.lineStart = lineStart;
@@ -75,7 +97,7 @@ final class StatementValues {
 
     /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
     Material material() {
-        return material;
+        return names.material();
     }
 
     /** The name or path that group {@code g} holds, as written. */
@@ -171,6 +193,12 @@ final class StatementValues {
         return direction;
     }
 
+    /** A number for a hint, without a trailing ".0": 3, -0.5. */
+    private static String plain(float value) {
+        String text = Float.toString(value);
+        return text.endsWith(".0") ? text.substring(0, text.length() - 2) : text;
+    }
+
     /**
      * The point of group {@code g}, written {@code (at x|y|z)} (Part III): the direction to it from
      * {@code from} must be neither zero nor too short or long for float.
@@ -181,7 +209,8 @@ final class StatementValues {
         float squaredLength = direction.dot(direction);
         if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
             throw errorAt(groups.starts[groups.firsts[g]], "the camera cannot look at its own position " + groupText(g),
-                    "give a point in front of the camera, such as (at 0|0|0) for the origin");
+                    "give a point in front of the camera: (at " + plain(from.x()) + "|" + plain(from.y()) + "|"
+                            + plain(from.z() - 1) + ") looks along -z");
         }
         if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
             String tooWhat = Float.isInfinite(squaredLength) ? "far from" : "near";
@@ -194,6 +223,9 @@ final class StatementValues {
 
     /** The three numbers of group {@code g}: a colour, each channel a whole number from 0 to 255. */
     Color colour(int g) throws StatementError {
+        if (g == groups.named) {
+            return names.colour(); // the object's colour is its pattern's: see dress
+        }
         int i = groups.firsts[g];
         return new Color(channel(i, "red", i), channel(i + 1, "green", i), channel(i + 2, "blue", i));
     }
@@ -238,7 +270,7 @@ final class StatementValues {
                     "an expression in a colour is rounded to a whole number, which must be from 0 to 255");
         }
         if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
-            String fractions = fractionsHint(first);
+            String fractions = Hints.colourFractions(groups.values, first);
             throw errorAt(groups.starts[i], "the " + name + " channel must be a whole number from 0 to 255, found "
                     + written(i), fractions != null ? fractions
                             : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
@@ -246,20 +278,9 @@ final class StatementValues {
         return (int) value;
     }
 
-    /** For a colour written as fractions from 0 to 1, as other programs write colours, the same from 0 to 255; else null. */
-    private String fractionsHint(int first) {
-        StringBuilder scaled = new StringBuilder("(");
-        for (int i = first; i < first + 3; i++) {
-            if (!(groups.values[i] >= 0 && groups.values[i] <= 1)) {
-                return null;
-            }
-            scaled.append(i > first ? "|" : "").append(Math.round(groups.values[i] * 255));
-        }
-        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is " + scaled + ")";
-    }
-
     private String meaning(int g) {
-        return g < statement.groups().size() ? statement.groups().get(g).meaning() : Statement.MATERIAL.meaning();
+        int own = statement.groups().size();
+        return g < own ? statement.groups().get(g).meaning() : statement.optional(g - own).meaning();
     }
 
     /** Group {@code g} as written, "(0|0|0)"; "(at 0|0|0)" for a point to look at. */
@@ -286,7 +307,7 @@ final class StatementValues {
     private String written(int i) {
         String text = source.text(groups.starts[i], groups.ends[i]);
         Expression tree = groups.trees[i];
-        return tree == null ? text : ClockText.withValue(text, groups.values[i], tree.usesClock(), names.clock());
+        return tree == null ? text : ClockText.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock());
     }
 
     /** The one value of group {@code g}, finite, as an expression: the one written, or the plain number as read. */

@@ -25,6 +25,8 @@ final class WrittenGroups {
     int groupCount;
     /** The group written {@code (at x|y|z)}, a point to look at, or −1. */
     int target = -1;
+    /** The group that holds a name where numbers may stand (an object's colour naming a pattern), or −1. */
+    int named = -1;
 
     /** Room for {@code values} values and {@code groups} groups, which grows as the reader needs. */
     WrittenGroups(int values, int groups) {
@@ -47,6 +49,7 @@ final class WrittenGroups {
         count = 0;
         groupCount = 0;
         target = -1;
+        named = -1;
     }
 
     /** Starts the next group, whose '(' stands at {@code offset}. */
@@ -62,6 +65,11 @@ final class WrittenGroups {
     /** Marks the current group as written {@code (at x|y|z)}. */
     void markTarget() {
         target = groupCount - 1;
+    }
+
+    /** Marks the current group as holding a name in the place of its numbers. */
+    void markNamed() {
+        named = groupCount - 1;
     }
 
     /** Keeps a number of the current group, written at {@code bytes[start, end)}; a name or path is NaN. */
@@ -128,6 +136,7 @@ final class WrittenGroups {
         copy.anyExpression = anyExpression;
         copy.groupCount = groupCount;
         copy.target = target;
+        copy.named = named;
         return copy;
     }
 }

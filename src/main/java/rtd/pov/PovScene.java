@@ -3,13 +3,17 @@ package rtd.pov;
 import java.math.BigDecimal;
 import java.util.Locale;
 import rtd.camera.ICamera;
+import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
+import rtd.geometry.Pattern;
+import rtd.geometry.Patterned;
 import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
+import rtd.geometry.Transformed;
 import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
@@ -112,7 +116,9 @@ public final class PovScene {
             double zoom = ortho.zoom();
             double[] location = plus(plus(d(ortho.position()), times(d(ortho.widthVector()), shiftX / zoom)),
                     times(d(ortho.heightVector()), shiftY / zoom));
-            String lookAt = ortho.target() == null ? "" : "\n  look_at " + vector(plus(location, d(ortho.direction())));
+            // POV-Ray's look_at takes its right axis from sky × direction, which is zero looking straight up or down
+            String lookAt = ortho.target() == null || ImageAxes.looksStraightUpOrDown(ortho.direction()) ? ""
+                    : "\n  look_at " + vector(plus(location, d(ortho.direction())));
             return "camera {\n  orthographic\n  location " + vector(location) + "\n  direction " + vector(d(ortho.direction()))
                     + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
                     + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + lookAt + "\n}\n";
@@ -132,20 +138,38 @@ public final class PovScene {
     }
 
     private static String object(IGeometry object, boolean shaded) {
-        String shape = shape(object); // "sphere { <x, y, z>, r": the pigment and finish follow
+        IGeometry shape = object;
+        String end = " }";
+        if (shape instanceof Transformed transformed) { // the matrix after the pigment moves the pattern too
+            end = " " + PovPaint.matrix(transformed.matrix()) + " }";
+            shape = transformed.shape();
+        }
+        Pattern pattern = shape instanceof Patterned patterned ? patterned.pattern() : null;
+        shape = shape instanceof Patterned patterned ? patterned.shape() : shape;
+        String start = shape(shape); // "sphere { <x, y, z>, r": the pigment and finish follow
         if (!shaded) {
-            return shape + " pigment { " + rgb(object.color()) + " } finish { ambient 1 diffuse 0 } }\n";
+            return start + " " + pigment(shape, pattern, object.color(), 0) + " finish { ambient 1 diffuse 0 }" + end + "\n";
         }
         Material m = object.material();
         if (m.transparency() <= 0) {
-            return shape + " pigment { " + rgb(object.color()) + " } " + finish(m, 1) + " }\n";
+            return start + " " + pigment(shape, pattern, object.color(), 0) + " " + finish(m, 1) + end + "\n";
         }
         float t = Math.min(m.transparency(), 0.999f); // POV-Ray's rgbt of 1 would leave no share to scale by
-        Rgb c = Rgb.of(object.color());
-        return shape + " pigment { rgbt <" + num(c.red()) + ", " + num(c.green()) + ", "
-                + num(c.blue()) + ", " + num(t) + "> } " + finish(m, 1 - t) + " interior { ior " + num(m.ior())
-                + " } no_shadow }\n"
-                + shape + " pigment { rgb 0 } no_image no_reflection } // its shadow\n";
+        return start + " " + pigment(shape, pattern, object.color(), t) + " " + finish(m, 1 - t) + " interior { ior "
+                + num(m.ior()) + " } no_shadow" + end + "\n"
+                + start + " pigment { rgb 0 } no_image no_reflection" + end + " // its shadow\n";
+    }
+
+    /** A flat colour's pigment, or a pattern's; {@code filter} is rgbt's share let through (0: plain rgb). */
+    private static String pigment(IGeometry shape, Pattern pattern, Color colour, float filter) {
+        if (pattern != null) {
+            return PovPaint.pigment(shape, pattern, filter);
+        }
+        if (filter <= 0) {
+            return "pigment { " + rgb(colour) + " }";
+        }
+        Rgb c = Rgb.of(colour);
+        return "pigment { rgbt <" + num(c.red()) + ", " + num(c.green()) + ", " + num(c.blue()) + ", " + num(filter) + "> }";
     }
 
     /** rtd's finish (The Ray Tracer Challenge's) in POV-Ray's words; ambient and diffuse scaled by {@code 1/share} where rgbt's filter takes a share. */

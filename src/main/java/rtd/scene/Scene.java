@@ -52,11 +52,11 @@ public record Scene(Color ambient, ICamera camera, List<IGeometry> objects, List
 
     /**
      * Listing 4.3 with flat colours: the colour of the nearest object the ray hits, or the
-     * background.
+     * background. A patterned object's colour is its pattern's at the hit ({@link Hit#colour}).
      */
     public Color trace(Ray ray) {
         Hit hit = nearestHit(ray);
-        return hit == null ? ambient : hit.object().color();
+        return hit == null ? ambient : hit.colour(ray.direction());
     }
 
     /**

@@ -43,7 +43,7 @@ public final class SceneWarnings {
                     scene.camera().generateRay(0, height - 1, width, height),
                     scene.camera().generateRay(width - 1, height - 1, width, height));
             cameraInPlane(objects, corners).ifPresent(warnings::add);
-            cameraInside(objects, corners).ifPresent(warnings::add);
+            cameraInside(objects, corners, lit && !scene.lights().isEmpty()).ifPresent(warnings::add);
             for (int i = 0; lit && i < scene.lights().size(); i++) {
                 lightInside(objects, corners, scene.lights().get(i), i + 1).ifPresent(warnings::add);
             }
@@ -78,9 +78,10 @@ public final class SceneWarnings {
 
     /**
      * A sphere or box that every ray starts in (being convex, it holds them all if it holds the four corners'), with
-     * nothing else in reach of its box: a room with objects inside it is no mistake.
+     * nothing else in reach of its box: a room with objects inside it is no mistake. Its inside shows in one flat
+     * colour unless the scene is {@code shaded}.
      */
-    private static Optional<String> cameraInside(List<IGeometry> objects, List<Ray> corners) {
+    private static Optional<String> cameraInside(List<IGeometry> objects, List<Ray> corners, boolean shaded) {
         int room = enclosing(objects, corners);
         if (room < 0) {
             return Optional.empty();
@@ -92,7 +93,7 @@ public final class SceneWarnings {
             }
         }
         return Optional.of("the camera is inside " + describe(objects.get(room), room) + ": every ray starts inside it, "
-                + "so the picture shows its inside, all in one colour; move the camera out of it");
+                + "so the picture shows its inside" + (shaded ? "" : ", all in one colour") + "; move the camera out of it");
     }
 
     /** A sphere or box that holds the light but not the camera, which sees its outside only. */

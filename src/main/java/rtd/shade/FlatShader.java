@@ -1,6 +1,10 @@
 package rtd.shade;
 
 import java.util.Arrays;
+import java.util.List;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.math.Ray;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.image.Color;
@@ -20,14 +24,24 @@ public final class FlatShader implements Shader {
      * a hit and a miss take the same path, without a branch.
      */
     private final int[] colours;
+    /** Whether object {@code index} is patterned, at {@code index + 1} as in {@link #colours}: its colour is found at the hit. */
+    private final boolean[] patterned;
+    private final List<IGeometry> objects;
+    private final boolean anyPatterned;
 
     /** The flat colours of {@code scene}'s objects. */
     public FlatShader(Scene scene) {
-        colours = new int[scene.objects().size() + 1];
+        objects = scene.objects();
+        colours = new int[objects.size() + 1];
+        patterned = new boolean[colours.length];
         colours[0] = scene.ambient().getRGB();
+        boolean any = false;
         for (int i = 1; i < colours.length; i++) {
-            colours[i] = scene.objects().get(i - 1).color().getRGB();
+            colours[i] = objects.get(i - 1).color().getRGB();
+            patterned[i] = objects.get(i - 1).isPatterned();
+            any |= patterned[i];
         }
+        anyPatterned = any;
     }
 
     /**
@@ -38,6 +52,10 @@ public final class FlatShader implements Shader {
     public void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
         if (hits.missedAll()) {
             Arrays.fill(rgb, 0, count, colours[0]);
+        } else if (anyPatterned) {
+            for (int i = 0; i < count; i++) {
+                rgb[i] = rgb(rays, hits, i);
+            }
         } else {
             for (int i = 0; i < count; i++) {
                 rgb[i] = colours[hits.index(i) + 1];
@@ -45,9 +63,15 @@ public final class FlatShader implements Shader {
         }
     }
 
+    /** The object's flat colour; a patterned object's at the hit ({@link Hit#colour}), as the paper's loop finds it. */
     @Override
     public int rgb(RayBundle rays, HitBuffer hits, int i) {
-        return colours[hits.index(i) + 1];
+        int at = hits.index(i) + 1;
+        if (!patterned[at]) {
+            return colours[at];
+        }
+        Ray ray = rays.ray(i);
+        return hits.hit(i, ray, objects).colour(ray.direction()).getRGB();
     }
 
     @Override

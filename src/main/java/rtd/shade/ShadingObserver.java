@@ -1,6 +1,7 @@
 package rtd.shade;
 
 import rtd.geometry.Hit;
+import rtd.geometry.PatternObserver;
 import rtd.image.Rgb;
 import rtd.math.Ray;
 import rtd.scene.Light;
@@ -27,6 +28,11 @@ public interface ShadingObserver {
 
     /** What the shader knows of the hit point (step 2). */
     default void surface(Surface surface) {
+    }
+
+    /** Who watches a patterned surface's pattern choose its colour c (step 2); nobody by default. */
+    default PatternObserver patterns() {
+        return PatternObserver.NONE;
     }
 
     /** The shadow ray towards {@code light} hit {@code blocker} ({@code null}: nothing); the light is {@code lightDistance} away. */

@@ -1,6 +1,8 @@
 package rtd.shade;
 
 import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.geometry.PatternObserver;
 import rtd.geometry.Material;
 import rtd.image.Color;
 import rtd.image.Rgb;
@@ -25,11 +27,11 @@ import rtd.math.Vector3f;
 public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean inside, Vector3f over, Vector3f under) {
 
     /** ε per unit of the hit point's largest coordinate: how far {@link #over} and {@link #under} lie off the surface. */
-    public static final float LIFT = 1e-4f;
+    public static final float LIFT = Hit.LIFT;
 
     /**
      * The surface at {@code hit}, a hit of {@code ray}; {@code ε = 1e-4·(1 + max(|Px|, |Py|,
-     * |Pz|))}, so that it stays above float's rounding of P however far P is from the origin.
+     * |Pz|))} ({@link Hit#lift}), so that it stays above float's rounding of P however far P is from the origin.
      */
     public static Surface at(Ray ray, Hit hit) {
         Vector3f point = hit.point();
@@ -39,7 +41,7 @@ public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean i
         if (inside) {
             normal = normal.inverse();
         }
-        float epsilon = LIFT * (1 + Math.max(Math.abs(point.x()), Math.max(Math.abs(point.y()), Math.abs(point.z()))));
+        float epsilon = hit.lift();
         Vector3f offset = normal.multiply(epsilon);
         return new Surface(ray, hit, eye, normal, inside, point.add(offset), point.subtract(offset));
     }
@@ -49,9 +51,18 @@ public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean i
         return hit.object().material();
     }
 
-    /** The flat colour of the object hit, as light (0 to 1). */
+    /**
+     * The colour c of the object hit, as light (0 to 1): its flat colour, or a patterned object's
+     * colour at {@link #under} ({@link Hit#colour} takes the same point).
+     */
     public Rgb colour() {
-        Color colour = hit.object().color();
+        return colour(PatternObserver.NONE);
+    }
+
+    /** {@link #colour()}, telling {@code watch} how a pattern chose it ({@code --explain}). */
+    public Rgb colour(PatternObserver watch) {
+        IGeometry object = hit.object();
+        Color colour = object.isPatterned() ? object.colorAt(under, watch) : object.color();
         return Rgb.of(colour);
     }
 }

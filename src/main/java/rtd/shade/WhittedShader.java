@@ -107,10 +107,11 @@ public final class WhittedShader implements Shader {
     /** Step 3: the light of every light at the point, or only its ambient share where the light is shadowed. */
     private Rgb lit(Surface surface) {
         Rgb sum = Rgb.BLACK;
+        Rgb colour = surface.colour(observer.patterns()); // c, the same for every light
         for (Light light : lights) {
             // a light behind the surface gives only its ambient part: no shadow ray needed to know
             boolean shadow = facesTheLight(surface, light) && isShadowed(surface.over(), light);
-            LightTerms terms = Lighting.terms(surface.material(), surface.colour(), light, surface.over(), surface.eye(),
+            LightTerms terms = Lighting.terms(surface.material(), colour, light, surface.over(), surface.eye(),
                     surface.normal(), shadow);
             observer.light(light, shadow, terms);
             sum = sum.plus(terms.sum());

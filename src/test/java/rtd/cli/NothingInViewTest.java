@@ -127,4 +127,21 @@ class NothingInViewTest {
         assertThat(render("orthographic_camera:(0|0|20):(0|0|-1):(50)\nsphere:(30|0|0):(2):(0|127|255)\n", "--width",
                 "480", "--height", "270").err()).doesNotContain("--scale");
     }
+
+    @Test
+    void aFloorThatTheOrthographicCameraLooksAlongIsNamedWithTheWayToSeeIt() throws IOException {
+        Run run = render("orthographic_camera:(0|5|20):(0|0|-1):(50)\nplane:(0|0|0):(0|1|0):(0|0|0)\n");
+        assertThat(warning(run)).isEqualTo("rtd: warning: scene.txt: no ray hit anything, so the picture is only "
+                + "background: the camera's rays from (0|5|20) along (0|0|-1) run parallel to the plane or away from it; "
+                + "tilt the camera towards it, as (0|-1|-1) looks down onto a floor");
+    }
+
+    @Test
+    void aFloorBelowAPerspectiveCameraThatLooksUpIsOutsideItsFieldOfView() throws IOException {
+        Run run = render("perspective_camera:(0|5|20):(0|1|0):(60)\nplane:(0|0|0):(0|1|0):(200|0|0)\n"
+                + "plane:(0|-1|0):(0|1|0):(0|200|0)\n");
+        assertThat(warning(run)).isEqualTo("rtd: warning: scene.txt: no ray hit anything, so the picture is only "
+                + "background: all 2 planes lie outside the camera's field of view from (0|5|20) along (0|1|0); turn the "
+                + "camera towards them");
+    }
 }

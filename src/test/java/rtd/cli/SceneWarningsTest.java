@@ -125,4 +125,12 @@ class SceneWarningsTest {
         assertThat(render(CAMERA_AND_BALL + "light:(0|5|10):(255|255|255)\nbox:(-50|-50|-50):(50|50|50):(200|200|200)\n"
                 + "sphere:(0|0|0):(2):(255|0|0)\n").err()).isEmpty();
     }
+
+    @Test
+    @DisplayName("A camera inside a sphere of a lit scene shows its inside shaded, so the warning says no more than that")
+    void aCameraInsideASphereOfALitSceneIsNotSaidToShowOneColour() throws IOException {
+        Run run = render(CAMERA_AND_BALL + "sphere:(0|0|20):(5):(255|0|0)\nlight:(0|0|21):(255|255|255)\n");
+        assertThat(line(run)).isEqualTo("rtd: warning: scene.txt: the camera is inside sphere #1 (centre (0|0|20), "
+                + "radius 5): every ray starts inside it, so the picture shows its inside; move the camera out of it");
+    }
 }

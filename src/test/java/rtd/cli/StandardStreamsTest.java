@@ -77,4 +77,23 @@ class StandardStreamsTest {
         assertThat(Docs.errors()).contains(message);
         assertThat(run.out()).isEmpty();
     }
+
+    @Test
+    void aReaderThatStopsEarlyIsNamedAsTheCauseOfABrokenPipe() {
+        java.io.OutputStream closed = new java.io.OutputStream() {
+            @Override
+            public void write(int b) throws IOException {
+                throw new IOException("Broken pipe"); // what the JVM says when the reader of a pipe has gone
+            }
+        };
+        StandardStreams streams = new StandardStreams(new ByteArrayInputStream(NOTHING), java.util.Optional.empty(),
+                false, closed, false);
+        java.io.StringWriter err = new java.io.StringWriter();
+        picocli.CommandLine commandLine = RtdCommand.commandLine(streams);
+        commandLine.setErr(new java.io.PrintWriter(err, true));
+        int exitCode = commandLine.execute(EXAMPLE.toString(), "-o", "-", "--scale", "0.1");
+        assertThat(exitCode).isEqualTo(1);
+        assertThat(err.toString()).startsWith("rtd: cannot write the picture to standard output: the program reading it "
+                + "stopped before the end (broken pipe)");
+    }
 }

@@ -189,6 +189,10 @@ class TeachingOptionsTest {
         Run watch = Cli.run(EXAMPLE, EXAMPLE, "--watch");
         assertThat(watch.exitCode()).isEqualTo(2);
         assertThat(watch.err()).contains("--watch works on one scene file");
+        Run watchToPipe = Cli.run(EXAMPLE, "--watch", "-o", "-");
+        assertThat(watchToPipe.exitCode()).isEqualTo(2);
+        assertThat(watchToPipe.err()).startsWith("rtd: --watch writes the picture again at each save, which cannot go to "
+                + "standard output ('-o -'); give a file, such as -o out.png");
     }
 
     @Test

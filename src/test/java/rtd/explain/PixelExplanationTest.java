@@ -188,4 +188,16 @@ class PixelExplanationTest {
         }
         return indent;
     }
+
+    @Test
+    void aCameraLookingStraightDownSaysWhyWorldXIsRight() {
+        Scene scene = new Scene(Color.BLACK, new OrthographicCamera(new Vector3f(0, 5, 0), new Vector3f(0, -1, 0), 1),
+                List.of(new Sphere(new Vector3f(0, 0, 0), 1, new Color(255, 0, 0), Material.DEFAULT)));
+        String text = PixelExplanation.of(scene, 1, 1, 2, 2);
+        assertThat(text).contains("u = (1|0|0)   (right in the image: looking straight up or down, dir × (0,1,0) is zero, "
+                + "so world x is right, as ImageAxes.of says)").doesNotContain("u = normalize(dir × (0,1,0))");
+        String tilted = PixelExplanation.of(new Scene(Color.BLACK, new OrthographicCamera(new Vector3f(0, 5, 0),
+                new Vector3f(0, -1, -1), 1), scene.objects()), 1, 1, 2, 2);
+        assertThat(tilted).contains("u = normalize(dir × (0,1,0)) = (1|0|0)");
+    }
 }

@@ -268,4 +268,14 @@ class MeshTest {
             assertThat(t.bounds()).isEqualTo(alone.bounds());
         }
     }
+
+    @Test
+    void aMeshMissingFromAStandardInputSceneIsLookedForInTheFolderRtdRunsIn() {
+        byte[] scene = (CAMERA + "mesh:(no-such-model.obj):(0|0|0):(1):(255|0|0)\n").getBytes(StandardCharsets.UTF_8);
+        SceneException e = catchThrowableOfType(
+                () -> SceneIO.readScene(new java.io.ByteArrayInputStream(scene), SceneIO.STDIN_NAME, null),
+                SceneException.class);
+        assertThat(e.errors().get(0).help()).isEqualTo("the scene comes from standard input, so a mesh's path is "
+                + "relative to the folder rtd runs in; or give the full path");
+    }
 }

@@ -99,6 +99,16 @@ class PovSceneTest {
         assertSameFlatPicture(rtd(scene, 161, 121), povRay(scene, 161, 121));
     }
 
+    /** Straight down, POV-Ray's look_at has no right axis (it warns); the vectors alone give the same picture. */
+    @Test
+    void anOrthographicCameraLookingStraightDownAtAPointIsWrittenWithoutLookAt() throws Exception {
+        Scene scene = rtd.io.SceneIO.parseScene("down.txt", "orthographic_camera:(1|10|-1):(at 1|0|-1):(12)\n"
+                + "ambient:(20|30|40)\nsphere:(1|0|-1):(2):(200|60|60)\nbox:(-4.3|-1|-4.3):(-2.2|2|-2.2):(60|200|60)\n");
+        assertThat(PovScene.of(scene, 160, 120, "down.pov")).doesNotContain("look_at");
+        PovRay.assumeInstalled();
+        assertSameFlatPicture(rtd(scene, 160, 120), povRay(scene, 160, 120));
+    }
+
     private static void assertSameFlatPicture(BufferedImage rtd, BufferedImage pov) {
         ImageComparison.Result result = ImageComparison.EDGE_TOLERANT.compare(rtd, pov);
         assertThat(result.matches()).as(result.summary()).isTrue();

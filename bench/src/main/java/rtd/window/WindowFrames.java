@@ -1,0 +1,118 @@
+package rtd.window;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Supplier;
+import rtd.accel.ViewGrid;
+import rtd.camera.OrthographicCamera;
+import rtd.cli.WindowOptions;
+import rtd.image.Picture;
+import rtd.io.SceneIO;
+import rtd.math.Vector3f;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
+
+/**
+ * The window's speed, warm, without a screen: frames rendered as the window renders them ({@link FrameRenderer})
+ * and painted into its image (a {@link BufferedImage}, as {@link PicturePanel} does), while the camera orbits
+ * ({@link CameraController}); then the time from the mouse resting to the full picture. The paper's example is
+ * the window's default view of it (960 × 540 at half its zoom, as {@code --window} opens it).
+ *
+ * <pre>
+ * mvn -q -f bench/pom.xml package && java -cp bench/target/benchmarks.jar rtd.window.WindowFrames [SECONDS]
+ * </pre>
+ */
+public final class WindowFrames {
+
+    private static final int WIDTH = 960;
+    private static final int HEIGHT = 540;
+
+    private WindowFrames() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        double seconds = args.length > 0 ? Double.parseDouble(args[0]) : 5;
+        int threads = Runtime.getRuntime().availableProcessors();
+        Engine engine = WindowOptions.engine("auto", threads);
+        System.out.printf(Locale.ROOT, "%d × %d, %d threads, %.0f s of frames per figure, after as long warming%n",
+                WIDTH, HEIGHT, threads, seconds);
+        for (String name : new String[] {"input_rtd", "glass_and_mirror"}) {
+            Scene scene = SceneIO.readScene(Path.of("examples", name + ".txt"));
+            if (name.equals("input_rtd")) {
+                scene = halfZoom(scene);
+            }
+            measure(name, scene, engine, threads, seconds);
+        }
+    }
+
+    private static void measure(String name, Scene file, Engine engine, int threads, double seconds) {
+        FrameRenderer renderer = new FrameRenderer(engine);
+        Supplier<Tracer> any = engine.forAnyCamera(file, WIDTH, HEIGHT);
+        CameraController camera = new CameraController(file.camera());
+        BufferedImage screen = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
+        Vector3f pivot = Pivot.of(file, WIDTH, HEIGHT);
+        frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING); // warming
+        double fps = frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING);
+        Refinement four = new Refinement(List.of(4));
+        double fps4 = frames(renderer, any, camera, file, pivot, screen, threads, seconds, four);
+        List<Double> full = new ArrayList<>();
+        List<Double> grids = new ArrayList<>();
+        for (int i = 0; i < 9; i++) {
+            camera.orbit(0.05, 0, pivot);
+            Scene moved = new Scene(file.ambient(), camera.camera(), file.objects(), file.lights());
+            long start = System.nanoTime();
+            render(renderer, any, moved, Refinement.RESTED, screen, threads);
+            full.add((System.nanoTime() - start) / 1e9);
+            start = System.nanoTime();
+            ViewGrid.build(moved, WIDTH, HEIGHT, 1, threads);
+            grids.add((System.nanoTime() - start) / 1e9);
+        }
+        System.out.printf(Locale.ROOT, "%-17s moving: %.1f frames/s in blocks of 2 × 2 (%d × %d rays), %.1f in "
+                + "blocks of 4 × 4; full %d × %d after the mouse rests: %.3f s (median of 9; the view grid's build "
+                + "in it %.4f s)%n", name, fps, WIDTH / 2, HEIGHT / 2, fps4, WIDTH, HEIGHT, median(full),
+                median(grids));
+    }
+
+    /** Frames per second while the camera orbits a little each frame, for {@code seconds}. */
+    private static double frames(FrameRenderer renderer, Supplier<Tracer> any, CameraController camera, Scene file,
+            Vector3f pivot, BufferedImage screen, int threads, double seconds, Refinement moving) {
+        long start = System.nanoTime();
+        long end = start + (long) (seconds * 1e9);
+        int frames = 0;
+        while (System.nanoTime() < end) {
+            camera.orbit(0.02, 0.002 * Math.sin(frames / 10.0), pivot);
+            Scene moved = new Scene(file.ambient(), camera.camera(), file.objects(), file.lights());
+            render(renderer, any, moved, moving, screen, threads);
+            frames++;
+        }
+        return frames / ((System.nanoTime() - start) / 1e9);
+    }
+
+    private static void render(FrameRenderer renderer, Supplier<Tracer> any, Scene scene, Refinement refinement,
+            BufferedImage screen, int threads) {
+        FrameRenderer.Frame frame = new FrameRenderer.Frame(scene, null, WIDTH, HEIGHT, 1, threads, refinement);
+        renderer.render(frame, any, new ProgressiveBuffer(WIDTH, HEIGHT), pass -> paint(pass.picture(), screen));
+    }
+
+    /** Into the window's image, as {@link PicturePanel#picture} does. */
+    private static void paint(Picture picture, BufferedImage screen) {
+        screen.setRGB(0, 0, picture.width(), picture.height(), picture.rgb(), 0, picture.width());
+    }
+
+    /** The paper's scene as {@code --window} opens it: half the default picture, at half its zoom. */
+    private static Scene halfZoom(Scene scene) {
+        OrthographicCamera camera = (OrthographicCamera) scene.camera();
+        return new Scene(scene.ambient(), new OrthographicCamera(camera.position(), camera.direction(),
+                camera.zoom() / 2), scene.objects(), scene.lights());
+    }
+
+    private static double median(List<Double> values) {
+        List<Double> sorted = new ArrayList<>(values);
+        Collections.sort(sorted);
+        return sorted.get(sorted.size() / 2);
+    }
+}

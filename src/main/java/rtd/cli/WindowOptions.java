@@ -1,0 +1,188 @@
+package rtd.cli;
+
+import java.io.PrintWriter;
+import java.io.Writer;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Supplier;
+import picocli.CommandLine;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import rtd.accel.Bvh;
+import rtd.accel.LightGrids;
+import rtd.accel.ViewGrid;
+import rtd.io.SceneException;
+import rtd.render.LinearTracer;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
+import rtd.window.Engine;
+import rtd.window.FileWatch;
+import rtd.window.Window;
+import rtd.window.WindowSetup;
+
+/**
+ * {@code --window}, a picocli mixin of {@link RtdCommand}: opens the scene in a window ({@link Window}) instead of
+ * writing its picture. The command line gives it what it knows: the size, {@code --samples}, {@code --threads},
+ * the tracers {@code --accel} chooses ({@link Accelerator}), and {@link SceneWatcher}'s eye on the files.
+ */
+public final class WindowOptions {
+
+    /** The options that have no meaning in a window, each with what the window does instead. */
+    private static final List<String[]> REFUSED = List.of(
+            new String[] {"--explain", "a click on a pixel explains it"},
+            new String[] {"--view", "keys 2 to 5 show the views"},
+            new String[] {"--watch", "the window renders again whenever the scene is saved"},
+            new String[] {"--export-pov", "export without --window"},
+            new String[] {"--paper", "--accel none traces with the paper's loop"},
+            new String[] {"--frames", "render the frames without --window"},
+            new String[] {"--clock", "render the frames without --window"},
+            new String[] {"-o", "Ctrl+S saves the picture beside the scene"});
+
+    /** The window's picture without --width, --height or --scale: half the default picture each way. */
+    static final int WIDTH = 960;
+    static final int HEIGHT = 540;
+
+    @Option(names = "--window", description = "instead of writing the picture, open the scene in a window (960x540 "
+            + "unless --width, --height or --scale say otherwise): it renders coarse at once and refines; drag to "
+            + "orbit, right-drag to pan, wheel to zoom, click a pixel to see its rays and --explain; keys 1-5 picture "
+            + "and views, R reset, C copy the camera line, Ctrl+S save, Q quit; saving the scene renders it again")
+    private boolean window;
+
+    /** Whether {@code --window} was given. */
+    boolean requested() {
+        return window;
+    }
+
+    /** Opens the window, once the command line is checked, and returns the exit code when it is closed. */
+    int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException {
+        check(options, commandLine);
+        String missing = Window.missingDisplay();
+        if (missing != null) {
+            return noDisplay(err, missing);
+        }
+        RenderOptions sized = windowSize(options, commandLine);
+        Memory.checkImageFits(commandLine, sized.width(), sized.height(), sized.scale());
+        WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel(),
+                sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads());
+        try {
+            Window.open(setup);
+            return 0;
+        } catch (Window.NoDisplay e) {
+            return noDisplay(err, e.getMessage());
+        } catch (IOException e) {
+            err.println("rtd: " + e.getMessage()); // as -o says it: cannot read the scene file '…': why
+            return 1;
+        }
+    }
+
+    /**
+     * The window's size: the command line's {@code --width}, {@code --height} and {@code --scale}; without any of
+     * them {@value #WIDTH} × {@value #HEIGHT}, the default picture at {@code --scale 0.5}, which shows what it shows
+     * and fits a screen.
+     */
+    private static RenderOptions windowSize(RenderOptions options, CommandLine commandLine) {
+        if (options.given() || commandLine.getParseResult().hasMatchedOption("--scale")) {
+            return options;
+        }
+        Scale half = new Scale((double) WIDTH / RtdCommand.DEFAULT_WIDTH);
+        return new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, half, false, options.threads(),
+                options.accel(), options.paper(), options.samples(), options.stats(), options.progress(), options.clock());
+    }
+
+    /** A misuse (exit 2) for what makes no sense in a window: several scenes, standard input, other outputs. */
+    private static void check(RenderOptions options, CommandLine commandLine) {
+        if (options.scenes().size() > 1) {
+            throw new ParameterException(commandLine, "--window opens one scene file, but " + options.scenes().size()
+                    + " were given; open each in a window of its own");
+        }
+        if (options.scene().toString().equals("-")) {
+            throw new ParameterException(commandLine, "--window needs a scene file to watch; it cannot open standard "
+                    + "input ('-')");
+        }
+        for (String[] refused : REFUSED) {
+            if (commandLine.getCommandSpec().findOption(refused[0]) != null
+                    && commandLine.getParseResult().hasMatchedOption(refused[0])) {
+                throw new ParameterException(commandLine, "--window and " + refused[0] + " do not go together: "
+                        + refused[1]);
+            }
+        }
+    }
+
+    /** No screen to open the window on (a server, SSH without X, CI): exit code 2, as for a misuse. */
+    private static int noDisplay(PrintWriter err, String why) {
+        err.println("rtd: --window needs a desktop, and there is none here (" + why + "); -o writes the picture to a "
+                + "file instead, such as -o picture.png");
+        return 2;
+    }
+
+    /**
+     * The scene at the size and {@code --scale} of the command line (its warnings are not shown); a file that
+     * cannot be read is an {@link IOException} with {@code -o}'s message.
+     */
+    private static Scene read(RenderOptions options) throws SceneException, IOException {
+        try {
+            return options.scale().of(SceneSource.of(options.scene()).read(null, options.clock(), new ArrayList<>()));
+        } catch (FileError e) {
+            throw new IOException(e.getMessage(), e);
+        }
+    }
+
+    /**
+     * The tracers {@code --accel ACCEL} chooses ({@code auto}, {@code none}, {@code bvh} or {@code grid}) with
+     * {@code threads} threads, as {@code -o} chains them ({@link Accelerator}): for any camera the lights' grids
+     * (they see from the lights, whatever the camera) before the BVH, or the paper's loop for {@code none}; for
+     * the picture the view grid of its camera before those. Public for the window's benchmark.
+     */
+    public static Engine engine(String accel, int threads) {
+        return engine(Accel.valueOf(accel), threads);
+    }
+
+    private static Engine engine(Accel accel, int threads) {
+        return new Engine() {
+            /** The view grid of this camera's picture where {@code -o} takes one, before what serves any camera. */
+            @Override
+            public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples,
+                    Supplier<Tracer> anyCamera) {
+                Accelerator.Kind kind = Accelerator.choose(scene, accel);
+                if (kind != Accelerator.Kind.GRID && kind != Accelerator.Kind.GRID_AND_BVH) {
+                    return anyCamera;
+                }
+                ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
+                return () -> grid.newTracer(anyCamera.get());
+            }
+
+            @Override
+            public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
+                Accelerator.Kind kind = Accelerator.choose(scene, accel);
+                if (kind == Accelerator.Kind.LOOP) {
+                    return () -> new LinearTracer(scene);
+                }
+                Bvh bvh = Bvh.build(scene);
+                if (kind != Accelerator.Kind.GRID_AND_BVH) {
+                    return bvh::newTracer;
+                }
+                LightGrids lights = LightGrids.build(scene, width, height, 1, threads);
+                return () -> lights.newTracer(bvh.newTracer());
+            }
+        };
+    }
+
+    /** {@link SceneWatcher} on the scene and its meshes, telling the window of each save (not of the first look). */
+    static FileWatch watch(RenderOptions options) {
+        return changed -> {
+            boolean[] first = {true};
+            SceneWatcher watcher = new SceneWatcher(options.scene(), () -> {
+                if (!first[0]) {
+                    changed.run();
+                }
+                first[0] = false;
+                return 0;
+            }, new PrintWriter(Writer.nullWriter()), SceneWatcher.POLL_MILLIS);
+            Thread thread = new Thread(watcher::run, "rtd-window-watch");
+            thread.setDaemon(true);
+            thread.start();
+            return watcher::stop;
+        };
+    }
+}

@@ -1,0 +1,177 @@
+package rtd.io;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import rtd.geometry.Material;
+import rtd.geometry.Pattern;
+import rtd.math.Matrix4;
+
+/**
+ * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each
+ * name is defined once, by one of them, above or below the lines that use it. It resolves an object's names
+ * (its material and transform, in either order, each at most once; the pattern its colour group names) and
+ * a pattern's transform, and words each mistake at the name that makes it.
+ */
+final class DefinedNames {
+
+    /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}. */
+    private final Map<String, Object> defined = new HashMap<>();
+    private final Map<String, String> kinds = new HashMap<>();
+    /** The names whose definitions have mistakes: not unknown, only broken. */
+    private final Set<String> broken;
+    /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
+    private final boolean onlyMaterials;
+    /** The patterns and transforms, in file order, for the warning about those nothing names. */
+    private final List<Definition> patternsAndTransforms = new ArrayList<>();
+    /** The transforms that patterns name. */
+    private final Set<String> namedByPatterns = new HashSet<>();
+
+    /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
+    DefinedNames(SceneContents contents, List<SceneContents.Found> errors) {
+        broken = contents.brokenDefinitions;
+        onlyMaterials = contents.patterns.isEmpty() && contents.transforms.isEmpty();
+        List<Definition> all = new ArrayList<>();
+        contents.materials.forEach(d -> all.add(new Definition(d.value().name(), "material", d.value().material(), d.place())));
+        contents.transforms.forEach(d -> all.add(new Definition(d.value().name(), "transform", d.value().matrix(), d.place())));
+        contents.patterns.forEach(d -> all.add(new Definition(d.value().name(), "pattern", d.value(), d.place())));
+        all.sort(Comparator.comparingInt((Definition d) -> d.place().line()).thenComparingInt(d -> d.place().column()));
+        Map<String, SceneError> first = new HashMap<>();
+        for (Definition definition : all) {
+            define(definition.name(), definition.kind(), definition.value(), definition.place(), first, errors);
+            if (!definition.kind().equals("material")) {
+                patternsAndTransforms.add(definition);
+            }
+        }
+        for (var definition : contents.patterns) { // a pattern's transform may be defined below it
+            var named = definition.value();
+            if (named.transform() != null) {
+                namedByPatterns.add(named.transform());
+            }
+            if (defined.get(named.name()) == named) {
+                Matrix4 matrix = named.transform() == null ? Matrix4.IDENTITY
+                        : lookUp(named.transform(), "transform", named.transformPlace(), errors);
+                Pattern p = named.pattern();
+                defined.put(named.name(), new Pattern(p.kind(), p.a(), p.b(), matrix == null ? Matrix4.IDENTITY : matrix));
+            }
+        }
+    }
+
+    /** One definition of a name, with the place of its name. */
+    private record Definition(String name, String kind, Object value, SceneError place) {
+    }
+
+    private void define(String name, String kind, Object value, SceneError place, Map<String, SceneError> first,
+            List<SceneContents.Found> errors) {
+        SceneError earlier = first.putIfAbsent(name, place);
+        if (earlier == null) {
+            defined.put(name, value);
+            kinds.put(name, kind);
+        } else if (kinds.get(name).equals(kind)) {
+            errors.add(found(place.saying("a second " + kind + " '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier.line())));
+        } else {
+            errors.add(found(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
+                    + earlier.line() + ": materials, patterns and transforms share one set of names",
+                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'")));
+        }
+    }
+
+    /**
+     * A warning at each pattern and transform that nothing names ({@code named}: the names objects used), at
+     * most {@code most}: a slip that changes nothing in the picture, as an unused material is.
+     */
+    List<SceneError> unused(Set<String> named, int most) {
+        List<SceneError> warnings = new ArrayList<>();
+        for (Definition definition : patternsAndTransforms) {
+            String name = definition.name();
+            if (!named.contains(name) && !namedByPatterns.contains(name) && warnings.size() < most) {
+                boolean pattern = definition.kind().equals("pattern");
+                warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
+                        + (pattern ? "no object names it" : "no object or pattern names it"), pattern
+                        ? "an object names its pattern in its colour group, such as sphere:(0|0|0):(1):(" + name + ")"
+                        : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):(" + name
+                                + ")"));
+            }
+        }
+        return warnings;
+    }
+
+    /** The material {@code name} names, or null. */
+    Material material(String name) {
+        return defined.get(name) instanceof Material material ? material : null;
+    }
+
+    /** The transformation {@code name} names, or null. */
+    Matrix4 transform(String name) {
+        return defined.get(name) instanceof Matrix4 matrix ? matrix : null;
+    }
+
+    /** What {@code name} is defined as ("material", "pattern", "transform"), or null. */
+    String kindOf(String name) {
+        return kinds.get(name);
+    }
+
+    /** Whether {@code name} is unknown only because its definition has a mistake, reported already. */
+    boolean isBroken(String name) {
+        return broken.contains(name);
+    }
+
+    /**
+     * The pattern or transform {@code name} (as {@code kind} says) for a use at {@code place}; null, with an
+     * error, if it is unknown or something else.
+     */
+    @SuppressWarnings("unchecked")
+    <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
+        String is = kinds.get(name);
+        if (kind.equals(is)) {
+            return (T) defined.get(name);
+        }
+        if (is != null) {
+            errors.add(found(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is))));
+        } else if (!broken.contains(name)) {
+            errors.add(found(place.saying("unknown " + kind + " '" + name + "'", didYouMean(name, kind))));
+        }
+        return null;
+    }
+
+    /** "did you mean …?" among the names of {@code kind}, or how to define one. */
+    String didYouMean(String name, String kind) {
+        List<String> candidates = kinds.entrySet().stream().filter(e -> kind.contains(e.getValue()))
+                .map(Map.Entry::getKey).toList();
+        String nearest = Hints.nearest(name, candidates);
+        if (nearest != null) {
+            return "did you mean '" + nearest + "'?";
+        }
+        return switch (kind) {
+            case "pattern" -> "define it with a line such as pattern:(" + name + "):(checker):(255|0|0):(255|255|0)";
+            case "transform" -> "define it with a line such as transform:(" + name + "):(scale 2):(translate 0|1|0)";
+            default -> onlyMaterials ? "define it with a line such as material:(" + name + "):(diffuse=0.9)"
+                    : "define it with a line such as material:(" + name + "):(diffuse=0.9) or transform:(" + name
+                            + "):(scale 2)";
+        };
+    }
+
+    /** The word for an unknown name in an object's last groups: "material", or "material or transform" once there are transforms. */
+    String objectNameKind() {
+        return onlyMaterials ? "material" : "material or transform";
+    }
+
+    /** Where a name of {@code kind} belongs, for a name used in the wrong place. */
+    static String whereItGoes(String kind) {
+        return switch (kind) {
+            case "pattern" -> "a pattern's name goes in the object's colour group: sphere:(0|0|0):(1):(checks)";
+            case "material" -> "a material's name goes in one of the object's last groups: sphere:(0|0|0):(1):(255|0|0):(shiny)";
+            default -> "a transform's name goes in one of an object's last groups, or a pattern's: "
+                    + "sphere:(0|0|0):(1):(255|0|0):(stretched)";
+        };
+    }
+
+    private static SceneContents.Found found(SceneError error) {
+        return new SceneContents.Found(error.line(), error.column(), error);
+    }
+}

@@ -1,0 +1,23 @@
+package rtd.window;
+
+import java.util.List;
+import rtd.image.Picture;
+
+/** What the window shows, told by its {@link WindowSession}; called on the window's thread only. */
+interface Display {
+
+    /** The picture, or a view with its legend below it. */
+    void picture(Picture picture);
+
+    /** The selected pixel's ray tree, in image coordinates; empty for none. */
+    void rays(List<RayTreeProjection.Line> lines);
+
+    /** The side panel's text: the explanation, the copied camera, a scene's mistakes, the keys. */
+    void panel(String text);
+
+    /** The status line. */
+    void status(String text);
+
+    /** Puts {@code text} on the clipboard. */
+    void copy(String text);
+}

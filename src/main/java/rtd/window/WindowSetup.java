@@ -1,0 +1,28 @@
+package rtd.window;
+
+import java.nio.file.Path;
+
+/**
+ * What the command line gives the window: the scene file, how to read it and watch it, what to trace with, and
+ * the picture's size, samples and threads as {@code -o} would render it.
+ *
+ * @param scene   the scene file, as the user spelt it
+ * @param loader  reads it
+ * @param watch   tells of each save
+ * @param engine  the tracers {@code --accel} chose
+ * @param width   the picture's width in pixels
+ * @param height  the picture's height in pixels
+ * @param samples {@code --samples}: rays per pixel, each way, of the full picture
+ * @param threads {@code --threads}
+ */
+public record WindowSetup(Path scene, SceneLoader loader, FileWatch watch, Engine engine, int width, int height,
+        int samples, int threads) {
+
+    /** Where {@code Ctrl+S} saves: beside the scene, its name with {@code -window.png} for its extension. */
+    Path savedPicture() {
+        String name = scene.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String stem = dot > 0 ? name.substring(0, dot) : name;
+        return scene.resolveSibling(stem + "-window.png");
+    }
+}

@@ -1,0 +1,132 @@
+package rtd.window;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.Supplier;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import rtd.camera.OrthographicCamera;
+import rtd.cli.WindowOptions;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
+import rtd.testing.Cli;
+import rtd.testing.Scenes;
+import rtd.view.View;
+
+@DisplayName("The window's renders: passes of 8, 4, 2 and 1, the last -o's own pixels, and cancelled by a newer one")
+class FrameRendererTest {
+
+    private static final Engine ENGINE = WindowOptions.engine("auto", 2);
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aStillPictureComesInPassesOf8421AndEndsWithThePixelsOfO() throws Exception {
+        Scene scene = Scenes.example("glass_and_mirror");
+        List<FrameRenderer.Pass> passes = new ArrayList<>();
+        boolean done = render(scene, null, Refinement.STILL, passes::add);
+        assertThat(done).isTrue();
+        assertThat(passes).extracting(FrameRenderer.Pass::block).containsExactly(8, 4, 2, 1);
+        assertThat(passes.get(3).picture().rgb()).isEqualTo(written("examples/glass_and_mirror.txt"));
+        // a coarse pass shows the colour of each block's top left pixel of the final picture
+        int[] coarse = passes.get(0).picture().rgb();
+        int[] full = passes.get(3).picture().rgb();
+        assertThat(coarse[37 * 160 + 83]).isEqualTo(full[32 * 160 + 80]);
+    }
+
+    @Test
+    void thePapersFlatSceneEndsWithThePixelsOfOToo() throws Exception {
+        // -o at --scale 0.125: 240 × 135 pixels at zoom 6.25, both spheres in view
+        Scene paper = Scenes.example("input_rtd");
+        OrthographicCamera camera = (OrthographicCamera) paper.camera();
+        Scene scaled = new Scene(paper.ambient(), new OrthographicCamera(camera.position(), camera.direction(), 6.25f),
+                paper.objects(), paper.lights());
+        List<FrameRenderer.Pass> passes = new ArrayList<>();
+        Supplier<Tracer> any = ENGINE.forAnyCamera(scaled, 240, 135);
+        new FrameRenderer(ENGINE).render(new FrameRenderer.Frame(scaled, null, 240, 135, 1, 2, Refinement.STILL), any,
+                new ProgressiveBuffer(240, 135), passes::add);
+        Path out = dir.resolve("paper.png");
+        assertThat(Cli.run("examples/input_rtd.txt", "--scale", "0.125", "-o", out.toString()).exitCode()).isZero();
+        assertThat(passes.get(3).picture().rgb()).isEqualTo(rgb(ImageIO.read(out.toFile())))
+                .contains(0xFF0000, 0x007FFF); // the red and the blue sphere
+    }
+
+    @Test
+    void aViewIsDrawnWithItsLegendAsViewDrawsIt() throws Exception {
+        Scene scene = Scenes.example("glass_and_mirror");
+        List<FrameRenderer.Pass> passes = new ArrayList<>();
+        render(scene, View.cost, Refinement.RESTED, passes::add);
+        Path out = dir.resolve("cost.png");
+        assertThat(Cli.run("examples/glass_and_mirror.txt", "--width", "160", "--height", "90", "--view", "cost", "-o",
+                out.toString()).exitCode()).isZero();
+        BufferedImage image = ImageIO.read(out.toFile());
+        assertThat(passes.get(0).picture().height()).isEqualTo(image.getHeight()).isGreaterThan(90);
+        assertThat(passes.get(0).picture().rgb()).isEqualTo(rgb(image));
+        assertThat(passes.get(0).legend()).startsWith("cost: intersection tests per camera ray");
+    }
+
+    @Test
+    void aNewRenderCancelsTheOneInProgress() throws Exception {
+        CountDownLatch started = new CountDownLatch(1);
+        AtomicBoolean finished = new AtomicBoolean();
+        CountDownLatch second = new CountDownLatch(1);
+        try (RenderLoop loop = new RenderLoop(e -> { })) {
+            loop.submit(() -> {
+                started.countDown();
+                try {
+                    Thread.sleep(30_000); // a long render: interrupted as FrameRenderer's bands would be
+                    finished.set(true);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, true);
+            assertThat(started.await(10, TimeUnit.SECONDS)).isTrue();
+            loop.submit(second::countDown, true);
+            assertThat(second.await(10, TimeUnit.SECONDS)).isTrue();
+        }
+        assertThat(finished).isFalse();
+    }
+
+    @Test
+    void anInterruptedRenderShowsNoFurtherPass() {
+        Scene scene = Scenes.example("glass_and_mirror");
+        List<FrameRenderer.Pass> passes = new ArrayList<>();
+        Thread.currentThread().interrupt();
+        try {
+            assertThat(render(scene, null, Refinement.STILL, passes::add)).isFalse();
+        } finally {
+            Thread.interrupted();
+        }
+        assertThat(passes).isEmpty();
+    }
+
+    private static boolean render(Scene scene, View view, Refinement refinement, FrameRenderer.Listener listener) {
+        Supplier<Tracer> any = ENGINE.forAnyCamera(scene, 160, 90);
+        FrameRenderer.Frame frame = new FrameRenderer.Frame(scene, view, 160, 90, 1, 2, refinement);
+        return new FrameRenderer(ENGINE).render(frame, any, new ProgressiveBuffer(160, 90), listener);
+    }
+
+    private int[] written(String scene) throws Exception {
+        Path out = dir.resolve("o.png");
+        assertThat(Cli.run(scene, "--width", "160", "--height", "90", "-o", out.toString()).exitCode()).isZero();
+        return rgb(ImageIO.read(out.toFile()));
+    }
+
+    private static int[] rgb(BufferedImage image) {
+        int[] rgb = image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
+        for (int i = 0; i < rgb.length; i++) {
+            rgb[i] &= 0xFFFFFF;
+        }
+        return rgb;
+    }
+}

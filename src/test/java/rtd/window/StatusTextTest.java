@@ -1,0 +1,23 @@
+package rtd.window;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+
+@DisplayName("The window's status line")
+class StatusTextTest {
+
+    @Test
+    void itGivesTheFramesTimeRaysPerSecondSizeAndThePixelUnderTheMouse() {
+        // 2,000,000 rays in 0.25 s: 8 Mrays/s
+        assertThat(StatusText.of(960, 540, 250_000_000L, 2_000_000L, 1, new int[] {12, 40}, "picture"))
+                .isEqualTo("picture · 960 × 540 · last frame 0.250 s · 8.00 Mrays/s · pixel (12, 40)");
+    }
+
+    @Test
+    void aCoarseFrameSaysItsBlocksAndNoPixelWhenTheMouseIsOutside() {
+        assertThat(StatusText.of(960, 540, 100_000_000L, 129_600L, 2, null, "cost"))
+                .isEqualTo("cost · 960 × 540 (blocks of 2 × 2) · last frame 0.100 s · 1.30 Mrays/s");
+    }
+}
