@@ -46,4 +46,26 @@ public interface TestObserver {
     /** A triangle's side test of edge {@code edge} (0, 1, 2): {@code (P − corner)·(n × edge)}, and the rounding it allows. */
     default void triangleSide(int edge, float side, float allowance) {
     }
+    /**
+     * A cylinder's or a cone's side (Part III, "More shapes"): the quadratic {@code a·t² + b·t + c = 0}
+     * whose roots are where the ray is as far from the axis as the side, and its discriminant.
+     */
+    default void side(float a, float b, float c, float discriminant) {
+    }
+
+    /** A root of the side's quadratic, {@code along} the axis from the first end, {@code between} the ends or not. */
+    default void sideRoot(float t, float along, boolean between) {
+    }
+
+    /**
+     * A flat cap at end {@code end} (0: the first, 1: the second): the plane's t (NaN: parallel
+     * or behind the ray), and the hit point's squared distance from the cap's centre against the
+     * cap's squared radius.
+     */
+    default void cap(int end, float t, float fromCentreSquared, float radiusSquared) {
+    }
+
+    /** Which part of a solid with several parts was nearest: "side", "first cap", "second cap", or "none". */
+    default void nearestPart(String part, float t) {
+    }
 }
