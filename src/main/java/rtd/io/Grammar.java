@@ -74,7 +74,15 @@ final class Grammar {
             Statement.setting("material",
                     List.of(name("name", "name"), properties("properties",
                             "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
-                    (v, out) -> out.material(v.name(0), material(v))));
+                    (v, out) -> out.material(v.name(0), material(v))),
+            Statement.shape("cylinder",
+                    List.of(numbers("first end", "x1|y1|z1"), numbers("second end", "x2|y2|z2"), numbers("radius", "r"),
+                            numbers("colour", "R|G|B")),
+                    (v, out) -> out.object(SolidShapes.cylinder(v))),
+            Statement.shape("cone",
+                    List.of(numbers("first end", "x1|y1|z1"), numbers("first radius", "r1"),
+                            numbers("second end", "x2|y2|z2"), numbers("second radius", "r2"), numbers("colour", "R|G|B")),
+                    (v, out) -> out.object(SolidShapes.cone(v))));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {
