@@ -20,6 +20,7 @@ import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Vector3f;
+import rtd.scene.AreaLight;
 import rtd.scene.Light;
 
 /**
@@ -82,7 +83,17 @@ final class Grammar {
             Statement.shape("cone",
                     List.of(numbers("first end", "x1|y1|z1"), numbers("first radius", "r1"),
                             numbers("second end", "x2|y2|z2"), numbers("second radius", "r2"), numbers("colour", "R|G|B")),
-                    (v, out) -> out.object(SolidShapes.cone(v))));
+                    (v, out) -> out.object(SolidShapes.cone(v))),
+            Statement.setting("area_light",
+                    List.of(numbers("corner", "x|y|z"), numbers("first edge", "ux|uy|uz"), numbers("second edge", "vx|vy|vz"),
+                            numbers("samples", "n|m"), numbers("intensity", "R|G|B")),
+                    (v, out) -> {
+                        AreaLight area = new AreaLight(v.vector(0), v.vector(1), v.vector(2),
+                                v.whole(3, 0, 1, AreaLight.MOST_SAMPLES, "number of samples along the first edge"),
+                                v.whole(3, 1, 1, AreaLight.MOST_SAMPLES, "number of samples along the second edge"),
+                                Rgb.of(v.colour(4)));
+                        area.samples().forEach(out::light);
+                    }));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {

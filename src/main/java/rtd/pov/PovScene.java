@@ -6,6 +6,8 @@ import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
@@ -194,6 +196,13 @@ public final class PovScene {
         }
         if (object instanceof Box b) {
             return "box { " + vector(b.min()) + ", " + vector(b.max());
+        }
+        if (object instanceof Cylinder c) { // closed by its caps, as POV-Ray's is unless it is "open"
+            return "cylinder { " + vector(c.first()) + ", " + vector(c.second()) + ", " + num(c.radius());
+        }
+        if (object instanceof Cone c) {
+            return "cone { " + vector(c.first()) + ", " + num(c.firstRadius()) + ", " + vector(c.second()) + ", "
+                    + num(c.secondRadius());
         }
         throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
     }

@@ -5,6 +5,8 @@ import java.util.List;
 import java.util.Random;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
@@ -48,7 +50,7 @@ public final class MixedScenes {
         }
         Vector3f centre = point(random, 12);
         float size = random.nextInt(4) == 0 ? 0.001f + random.nextFloat() * 0.05f : 0.1f + random.nextFloat() * 3;
-        switch (random.nextInt(3)) {
+        switch (random.nextInt(5)) {
             case 0:
                 return new Sphere(centre, size, colour(random));
             case 1:
@@ -58,6 +60,13 @@ public final class MixedScenes {
                         ? a.add(b.subtract(a).multiply(0.5f)).add(direction(random).multiply(size * 1e-4f)) // a needle
                         : centre.add(direction(random).multiply(size));
                 return new Triangle(a, b, c, colour(random), Material.DEFAULT);
+            case 3:
+                return new Cylinder(centre, centre.add(direction(random).multiply(size)), size * random.nextFloat() + 1e-3f,
+                        colour(random), Material.DEFAULT);
+            case 4:
+                return new Cone(centre, random.nextBoolean() ? 0 : size * random.nextFloat(),
+                        centre.add(direction(random).multiply(size)), size * random.nextFloat() + 1e-3f, colour(random),
+                        Material.DEFAULT);
             default:
                 return Box.between(centre, centre.add(new Vector3f(random.nextFloat() * size + 1e-3f,
                         random.nextFloat() * size + 1e-3f, random.nextFloat() * size + 1e-3f)), colour(random),
@@ -81,6 +90,12 @@ public final class MixedScenes {
         }
         if (object instanceof Box box) {
             return new Box(box.min(), box.max(), colour, material);
+        }
+        if (object instanceof Cylinder c) {
+            return new Cylinder(c.first(), c.second(), c.radius(), colour, material);
+        }
+        if (object instanceof Cone c) {
+            return new Cone(c.first(), c.firstRadius(), c.second(), c.secondRadius(), colour, material);
         }
         throw new IllegalArgumentException("no twin for a " + object.kind() + ": add it here and to randomObject");
     }
