@@ -16,6 +16,7 @@ import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Vector3f;
+import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 
@@ -85,14 +86,40 @@ public final class PovScene {
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
         pov.append("background { ").append(rgb(scene.ambient())).append(" }\n\n");
         pov.append(camera(scene.camera(), w, h)).append('\n');
+        AreaLight written = null;
         for (Light light : scene.lights()) {
-            pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
-                    .append(" }\n");
+            if (light.area() == null) {
+                pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
+                        .append(" }\n");
+            } else if (light.area() != written) { // its samples follow one another: the first writes it
+                written = light.area();
+                pov.append(areaLight(written));
+            }
         }
         for (IGeometry object : scene.objects()) {
             pov.append(object(object, shaded));
         }
         return pov.toString();
+    }
+
+    /**
+     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples. POV-Ray centres
+     * the rectangle on the light's location and puts its n lights along an axis from one end of it
+     * to the other, rtd at the centres of n equal cells, {@code (i + ½)/n} of the edge: so the
+     * location is {@code C + u/2 + v/2} and the axes are {@code u·(n − 1)/n} and
+     * {@code v·(m − 1)/m}. Without {@code adaptive} POV-Ray tests every one of its lights, and
+     * without {@code jitter} leaves them in place. POV-Ray shades with the light's centre and uses
+     * the array for the shadows only, where rtd sums its samples' shading too: the two agree in
+     * the shadows and differ a little in the light (most where the light is near and large).
+     */
+    private static String areaLight(AreaLight area) {
+        double[] u = d(area.u());
+        double[] v = d(area.v());
+        double[] centre = plus(plus(d(area.corner()), times(u, 0.5)), times(v, 0.5));
+        double[] axis1 = area.n() == 1 ? u : times(u, (area.n() - 1.0) / area.n());
+        double[] axis2 = area.m() == 1 ? v : times(v, (area.m() - 1.0) / area.m());
+        return "light_source { " + vector(centre) + ", " + rgb(area.intensity()) + " area_light " + vector(axis1) + ", "
+                + vector(axis2) + ", " + area.n() + ", " + area.m() + " }\n";
     }
 
     private static Rgb lightSum(Scene scene) {
