@@ -16,7 +16,6 @@ class SideAndCapsSteps implements TestObserver {
 
     private final Text text;
     private final String[] coefficients;
-    private float discriminant;
 
     /** Steps into {@code text} whose side's a, b and c are {@code coefficients}, as formulas. */
     SideAndCapsSteps(Text text, String head, String[] coefficients) {
@@ -26,9 +25,9 @@ class SideAndCapsSteps implements TestObserver {
     }
 
     @Override
-    public void side(float a, float b, float c, float discriminant) {
-        this.discriminant = discriminant;
-        text.line("side, a·t² + b·t + c = 0 with w = O − A and h the unit axis:");
+    public void side(float t0, float a, float b, float c, float discriminant) {
+        text.line("side, from O' = O + t0·R nearest the axis's middle M, t0 = (M − O)·R/(R·R) = " + Numbers.of(t0) + ":");
+        text.line("  a·t'² + b·t' + c = 0 with w = O' − A, h the unit axis, and t = t0 + t'");
         text.line("  a = " + coefficients[0] + " = " + Numbers.of(a));
         text.line("  b = " + coefficients[1] + " = " + Numbers.of(b));
         text.line("  c = " + coefficients[2] + " = " + Numbers.of(c));
@@ -38,7 +37,7 @@ class SideAndCapsSteps implements TestObserver {
 
     @Override
     public void sideRoot(float t, float along, boolean between) {
-        text.line("  root t = " + Numbers.of(t) + ": s = h·(P − A) = " + Numbers.of(along)
+        text.line("  root t = t0 + t' = " + Numbers.of(t) + ": s = h·(P − A) = " + Numbers.of(along)
                 + (between ? ", between the ends" : ", beyond an end: not on the side"));
     }
 

@@ -34,14 +34,15 @@ public record Cone(Vector3f first, float firstRadius, Vector3f second, float sec
     }
 
     /**
-     * The test of the ray O + t·R against the cone from A (radius r1) to B (radius r2). With the
-     * unit axis {@code h = (B − A)/|B − A|}, {@code w = O − A} and the slope
-     * {@code k = (r2 − r1)/|B − A|}, the point {@code q = w + t·R} (P − A) lies {@code s = h·q}
-     * along the axis, where the side's radius is {@code r1 + k·s}, and {@code √(q·q − s²)} from
-     * the axis. The side is where the two are equal; with {@code g = r1 + k·(h·w)}, the radius
-     * level with O:
+     * The test of the ray O + t·R against the cone from A (radius r1) to B (radius r2). The side
+     * is solved from the ray's point {@code O' = O + t0·R} nearest the axis's middle
+     * ({@link SideRoots#nearestTheMiddle}), {@code t = t0 + t'}. With the unit axis
+     * {@code h = (B − A)/|B − A|}, {@code w = O' − A} and the slope {@code k = (r2 − r1)/|B − A|},
+     * the point {@code q = w + t'·R} (P − A) lies {@code s = h·q} along the axis, where the side's
+     * radius is {@code r1 + k·s}, and {@code √(q·q − s²)} from the axis. The side is where the two
+     * are equal; with {@code g = r1 + k·(h·w)}, the radius level with O':
      * <pre>
-     *   q·q − (h·q)² = (r1 + k·h·q)²   ⇔   a·t² + b·t + c = 0  with
+     *   q·q − (h·q)² = (r1 + k·h·q)²   ⇔   a·t'² + b·t' + c = 0  with
      *   a = R·R − (1 + k²)(h·R)²,   b = 2·(w·R − (h·w)(h·R) − k·g·(h·R)),   c = w·w − (h·w)² − g²
      * </pre>
      * and each root counts ({@link SideRoots}) where {@code 0 ≤ s ≤ |B − A|}, between the caps
@@ -56,16 +57,17 @@ public record Cone(Vector3f first, float firstRadius, Vector3f second, float sec
         float hy = (by - ay) / length;
         float hz = (bz - az) / length;
         float k = (r2 - r1) / length;                         // the slope: radius gained per unit along h
-        float wx = ox - ax;                                   // w = O − A
-        float wy = oy - ay;
-        float wz = oz - az;
+        float t0 = SideRoots.nearestTheMiddle(ax, ay, az, bx, by, bz, ox, oy, oz, dx, dy, dz);
+        float wx = (ox + t0 * dx) - ax;                       // w = O' − A, O' = O + t0·R
+        float wy = (oy + t0 * dy) - ay;
+        float wz = (oz + t0 * dz) - az;
         float hd = hx * dx + hy * dy + hz * dz;               // h·R
         float hw = hx * wx + hy * wy + hz * wz;               // h·w
-        float g = r1 + k * hw;                                // the radius level with O
+        float g = r1 + k * hw;                                // the radius level with O'
         float a = (dx * dx + dy * dy + dz * dz) - (1 + k * k) * (hd * hd);  // R·R − (1 + k²)(h·R)²
         float b = 2 * ((wx * dx + wy * dy + wz * dz) - hw * hd - k * g * hd); // 2·(w·R − (h·w)(h·R) − k·g·(h·R))
         float c = (wx * wx + wy * wy + wz * wz) - hw * hw - g * g;          // w·w − (h·w)² − g²
-        float t = SideRoots.nearest(a, b, c, hw, hd, length, watch);
+        float t = SideRoots.nearest(t0, a, b, c, hw, hd, length, watch);
         String part = t >= 0 ? "side" : "none";
         float cap = Disc.hit(0, ax, ay, az, hx, hy, hz, r1, ox, oy, oz, dx, dy, dz, watch);
         if (Disc.nearer(cap, t)) {

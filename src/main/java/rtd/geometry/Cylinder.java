@@ -32,12 +32,14 @@ public record Cylinder(Vector3f first, Vector3f second, float radius, Color colo
     }
 
     /**
-     * The test of the ray O + t·R against the cylinder from A to B of radius r. With the unit axis
-     * {@code h = (B − A)/|B − A|} and {@code w = O − A}, the point {@code q = w + t·R} (P − A) lies
-     * {@code s = h·q} along the axis and {@code √(q·q − s²)} from it. The side is where that
+     * The test of the ray O + t·R against the cylinder from A to B of radius r. The side is solved
+     * from the ray's point {@code O' = O + t0·R} nearest the axis's middle
+     * ({@link SideRoots#nearestTheMiddle}), {@code t = t0 + t'}. With the unit axis
+     * {@code h = (B − A)/|B − A|} and {@code w = O' − A}, the point {@code q = w + t'·R} (P − A)
+     * lies {@code s = h·q} along the axis and {@code √(q·q − s²)} from it. The side is where that
      * distance is r:
      * <pre>
-     *   q·q − (h·q)² = r²   ⇔   a·t² + b·t + c = 0  with
+     *   q·q − (h·q)² = r²   ⇔   a·t'² + b·t' + c = 0  with
      *   a = R·R − (h·R)²,   b = 2·(w·R − (h·w)(h·R)),   c = w·w − (h·w)² − r²
      * </pre>
      * and each root counts ({@link SideRoots}) where {@code 0 ≤ s ≤ |B − A|}, between the caps. Each cap is a plane at
@@ -50,15 +52,16 @@ public record Cylinder(Vector3f first, Vector3f second, float radius, Color colo
         float hx = (bx - ax) / length;                        // h = (B − A)/|B − A|
         float hy = (by - ay) / length;
         float hz = (bz - az) / length;
-        float wx = ox - ax;                                   // w = O − A
-        float wy = oy - ay;
-        float wz = oz - az;
+        float t0 = SideRoots.nearestTheMiddle(ax, ay, az, bx, by, bz, ox, oy, oz, dx, dy, dz);
+        float wx = (ox + t0 * dx) - ax;                       // w = O' − A, O' = O + t0·R
+        float wy = (oy + t0 * dy) - ay;
+        float wz = (oz + t0 * dz) - az;
         float hd = hx * dx + hy * dy + hz * dz;               // h·R
         float hw = hx * wx + hy * wy + hz * wz;               // h·w
         float a = (dx * dx + dy * dy + dz * dz) - hd * hd;    // R·R − (h·R)²
         float b = 2 * ((wx * dx + wy * dy + wz * dz) - hw * hd); // 2·(w·R − (h·w)(h·R))
         float c = (wx * wx + wy * wy + wz * wz) - hw * hw - r * r; // w·w − (h·w)² − r²
-        float t = SideRoots.nearest(a, b, c, hw, hd, length, watch);
+        float t = SideRoots.nearest(t0, a, b, c, hw, hd, length, watch);
         String part = t >= 0 ? "side" : "none";
         float cap = Disc.hit(0, ax, ay, az, hx, hy, hz, r, ox, oy, oz, dx, dy, dz, watch);
         if (Disc.nearer(cap, t)) {

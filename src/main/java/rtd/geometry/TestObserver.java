@@ -47,13 +47,14 @@ public interface TestObserver {
     default void triangleSide(int edge, float side, float allowance) {
     }
     /**
-     * A cylinder's or a cone's side (Part III, "More shapes"): the quadratic {@code a·t² + b·t + c = 0}
-     * whose roots are where the ray is as far from the axis as the side, and its discriminant.
+     * A cylinder's or a cone's side (Part III, "More shapes"): the quadratic {@code a·t'² + b·t' + c = 0}
+     * solved from the ray's point {@code O' = O + t0·R}, whose roots are where the ray is as far
+     * from the axis as the side, and its discriminant.
      */
-    default void side(float a, float b, float c, float discriminant) {
+    default void side(float t0, float a, float b, float c, float discriminant) {
     }
 
-    /** A root of the side's quadratic, {@code along} the axis from the first end, {@code between} the ends or not. */
+    /** A root of the side's quadratic as the ray's {@code t = t0 + t'}, {@code along} the axis from the first end, {@code between} the ends or not. */
     default void sideRoot(float t, float along, boolean between) {
     }
 

@@ -20,8 +20,9 @@ class ConeTest {
     }
 
     /**
-     * From (0|1|−5) along (0|0|1): h·w = 1, h·R = 0, g = 1 − 0.5 = 0.5, so a = 1, b = −10,
-     * c = 26 − 1 − 0.25 = 24.75, b² − 4ac = 1, roots 4.5 and 5.5: the side at radius 0.5.
+     * From (0|1|−5) along (0|0|1): t0 = 5 (O' = (0|1|0), the axis's middle), w = (0|1|0),
+     * h·w = 1, h·R = 0, g = 1 − 0.5 = 0.5, so a = 1, b = 0, c = 1 − 1 − 0.25 = −0.25,
+     * b² − 4ac = 1, t' = ∓0.5, t = 4.5 and 5.5: the side at radius 0.5.
      * The normal there: e = (0|0|−1), (e − k·h)/√1.25 = (0|0.5|−1)/√1.25.
      */
     @Test
@@ -55,7 +56,7 @@ class ConeTest {
                 .isCloseTo(3.02f, within(2e-4f)); // near an apex the roots lose digits
     }
 
-    /** From (0|0.5|0) along x: the radius there is 0.75; c = −0.5625, roots ∓0.75: the far side at t = 0.75. */
+    /** From (0|0.5|0) along x: the radius there is 0.75; t0 = 0, c = −0.5625, roots ∓0.75: the far side at t = 0.75. */
     @Test
     void aRayFromInsideHitsTheFarSide() {
         assertThat(cone.intersect(ray(0, 0.5f, 0, 1, 0, 0)).t()).isEqualTo(0.75f);

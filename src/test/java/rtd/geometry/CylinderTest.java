@@ -21,8 +21,9 @@ class CylinderTest {
     }
 
     /**
-     * From (0|1|−5) along (0|0|1): w = (0|1|−5), h·R = 0, h·w = 1, so a = 1, b = 2·(−5) = −10,
-     * c = 26 − 1 − 1 = 24, b² − 4ac = 4, roots (10 ∓ 2)/2 = 4 and 6, both at s = 1: t = 4.
+     * From (0|1|−5) along (0|0|1): the axis's middle M = (0|1|0), t0 = (M − O)·R/(R·R) = 5, so
+     * O' = (0|1|0) and w = O' − A = (0|1|0); h·R = 0, h·w = 1: a = 1, b = 0, c = 1 − 1 − 1 = −1,
+     * b² − 4ac = 4, t' = ∓1, t = 5 ∓ 1 = 4 and 6, both at s = 1: t = 4.
      */
     @Test
     void aRayFromOutsideHitsTheSide() {
@@ -42,7 +43,7 @@ class CylinderTest {
         assertThat(cylinder.normalAt(new Vector3f(0.5f, 0, 0))).isEqualTo(new Vector3f(0, -1, 0));
     }
 
-    /** From the centre (0|1|0) along x: c = 1 − 1 − 1 = −1, roots ∓1: the far side at t = 1; up: the top cap at t = 1. */
+    /** From the centre (0|1|0) along x: t0 = 0, c = 1 − 1 − 1 = −1, roots ∓1: the far side at t = 1; up: the top cap at t = 1. */
     @Test
     void aRayFromInsideHitsTheFarSide() {
         assertThat(cylinder.intersect(ray(0, 1, 0, 1, 0, 0)).t()).isEqualTo(1f);
@@ -50,7 +51,7 @@ class CylinderTest {
         assertThat(cylinder.intersect(ray(0, 1, 0, 0, 1, 0)).t()).as("along the axis, the cap").isEqualTo(1f);
     }
 
-    /** Beside it (c = 28, b² − 4ac = 100 − 112 < 0), above it (roots at s = 3 > 2, parallel to the caps), and away. */
+    /** Beside it (t0 = 5, w = (2|1|0), c = 5 − 1 − 1 = 3, b² − 4ac = −12 < 0), above it (roots at s = 3 > 2, parallel to the caps), and away. */
     @Test
     void aRayBesideAboveOrAwayMisses() {
         assertThat(cylinder.intersect(ray(2, 1, -5, 0, 0, 1)).happened()).as("beside").isFalse();
