@@ -16,6 +16,7 @@ import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 
@@ -101,8 +102,8 @@ public final class MixedScenes {
     }
 
     /**
-     * {@code scene} with random finishes (some mirrors, some glass, some both) and one to three
-     * coloured lights, the same for the same seed.
+     * {@code scene} with random finishes (some mirrors, some glass, some both), one to three
+     * coloured lights and, half the time, an area light of up to 3 × 3 samples, the same for the same seed.
      */
     public static Scene shaded(Scene scene, long seed) {
         Random random = new Random(seed);
@@ -117,6 +118,10 @@ public final class MixedScenes {
         List<Light> lights = new ArrayList<>();
         for (int i = 0; i <= random.nextInt(3); i++) {
             lights.add(new Light(point(random, 30), new Rgb(random.nextFloat(), random.nextFloat(), random.nextFloat())));
+        }
+        if (random.nextBoolean()) { // an area light: its samples are point lights that belong together
+            lights.addAll(new AreaLight(point(random, 30), direction(random), direction(random), 1 + random.nextInt(3),
+                    1 + random.nextInt(3), new Rgb(random.nextFloat(), random.nextFloat(), random.nextFloat())).samples());
         }
         return new Scene(scene.ambient(), scene.camera(), objects, lights);
     }
