@@ -89,8 +89,8 @@ final class Grammar {
                             numbers("samples", "n|m"), numbers("intensity", "R|G|B")),
                     (v, out) -> {
                         AreaLight area = new AreaLight(v.vector(0), v.vector(1), v.vector(2),
-                                v.whole(3, 0, 1, AreaLight.MOST_SAMPLES, "number of samples along the first edge"),
-                                v.whole(3, 1, 1, AreaLight.MOST_SAMPLES, "number of samples along the second edge"),
+                                SolidShapes.samples(v, 3, 0, "number of samples along the first edge"),
+                                SolidShapes.samples(v, 3, 1, "number of samples along the second edge"),
                                 Rgb.of(v.colour(4)));
                         area.samples().forEach(out::light);
                     }));

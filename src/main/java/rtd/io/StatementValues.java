@@ -212,26 +212,9 @@ final class StatementValues {
         return fallback;
     }
 
-    /** The one number of group {@code g}, finite and at least 0 (a cone's radius, Part III). */
-    float atLeastZero(int g) throws StatementError {
-        int i = groups.firsts[g];
-        float value = finite(i, meaning(g));
-        if (value >= 0) {
-            return value;
-        }
-        throw errorAt(groups.starts[i], "the " + meaning(g) + " must be at least 0, found " + written(i),
-                "without its minus sign: " + number(-value));
-    }
-
-    /** Number {@code k} of group {@code g}, a whole number from {@code low} to {@code high} (an area light's samples, Part III). */
-    int whole(int g, int k, int low, int high, String name) throws StatementError {
-        int i = groups.firsts[g] + k;
-        float value = groups.values[i];
-        if (value >= low && value <= high && value == Math.rint(value)) {
-            return (int) value;
-        }
-        throw errorAt(groups.starts[i], "the " + name + " must be a whole number from " + low + " to " + high + ", found "
-                + written(i), "more samples make a softer shadow and cost more shadow rays; 4|4 is a good start");
+    /** Number {@code k} of group {@code g}, which must be finite; a builder checks the rest of its rule. */
+    float number(int g, int k) throws StatementError {
+        return finite(groups.firsts[g] + k, meaning(g));
     }
 
     /** Number {@code i}, which must be finite (not NaN, not infinite, not beyond a float's range). */

@@ -81,6 +81,10 @@ public final class PovScene {
                         + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also mirrors uses\n"
                         + "// POV-Ray's own Fresnel reflection, close to rtd's Schlick mix but not the same.\n"
                 : "// and compare decoded pixels: flat scenes agree but for the odd pixel on an edge.\n");
+        if (scene.lights().stream().anyMatch(light -> light.area() != null)) {
+            pov.append("// Area lights: their lights fall on rtd's samples and cast the same soft shadows; POV-Ray lights with\n"
+                    + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n");
+        }
         pov.append("#version 3.7;\n\n");
         pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? rgb(lightSum(scene)) : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
