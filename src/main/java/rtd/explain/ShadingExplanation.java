@@ -1,7 +1,10 @@
 package rtd.explain;
 
 import java.util.ArrayDeque;
+import java.util.Collections;
 import java.util.Deque;
+import java.util.IdentityHashMap;
+import java.util.Set;
 import rtd.geometry.Hit;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
@@ -70,7 +73,8 @@ final class ShadingExplanation implements ShadingObserver {
     /** Writes the shading of {@code ray} in {@code scene} into {@code text}, ending with the pixel's colour. */
     static void explain(Text text, Scene scene, Ray ray) {
         text.line("4. Result, shaded (beyond the paper, which stops at flat colours: WhittedShader.shade)").in();
-        long lights = scene.lights().stream().filter(l -> l.area() == null || l.area().samples().get(0).equals(l)).count();
+        Set<AreaLight> areas = Collections.newSetFromMap(new IdentityHashMap<>());
+        long lights = scene.lights().stream().filter(l -> l.area() == null || areas.add(l.area())).count();
         text.line(lights + " light" + (lights == 1 ? "" : "s") + (lights == scene.lights().size() ? ""
                 : " (" + scene.lights().size() + " point lights: each area light is its samples)") + ", at most "
                 + WhittedShader.BOUNCES + " bounces; the camera's ray:");

@@ -42,8 +42,9 @@ public record Cylinder(Vector3f first, Vector3f second, float radius, Color colo
      *   q·q − (h·q)² = r²   ⇔   a·t'² + b·t' + c = 0  with
      *   a = R·R − (h·R)²,   b = 2·(w·R − (h·w)(h·R)),   c = w·w − (h·w)² − r²
      * </pre>
-     * and each root counts ({@link SideRoots}) where {@code 0 ≤ s ≤ |B − A|}, between the caps. Each cap is a plane at
-     * right angles to h through its end point, hit within r of it ({@link Disc}). Returns the
+     * and each root counts ({@link SideRoots}) where {@code 0 ≤ s ≤ |B − A|}, between the caps.
+     * Each cap is a plane at right angles to h through its end point, hit within r of it
+     * ({@link Disc}). Returns the
      * smallest t ≥ 0 of the side and the caps, or NaN. Every renderer runs this test.
      */
     public static float hit(float ax, float ay, float az, float bx, float by, float bz, float r,

@@ -12,8 +12,9 @@ final class SideRoots {
     /**
      * The nearest root at which the ray's point lies between the ends,
      * {@code 0 ≤ s = h·w + t'·(h·R) ≤ length} along the unit axis h from the first end, as the
-     * ray's {@code t = t0 + t' ≥ 0} ({@code t'} counts from {@code O' = O + t0·R}); NaN if none. The roots are {@code (−b ∓ √(b² − 4ac))/2a}; where {@code a = 0} the equation is
-     * {@code b·t + c = 0}, one root (a cone's ray parallel to its slant; a cylinder's ray along
+     * ray's {@code t = t0 + t' ≥ 0} ({@code t'} counts from {@code O' = O + t0·R}); NaN if none.
+     * The roots are {@code (−b ∓ √(b² − 4ac))/2a}; where {@code a = 0} the equation is
+     * {@code b·t' + c = 0}, one root (a cone's ray parallel to its slant; a cylinder's ray along
      * its axis, whose b is 0 too, meets no side).
      */
     static float nearest(float t0, float a, float b, float c, float hw, float hd, float length, TestObserver watch) {
