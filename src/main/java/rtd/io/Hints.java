@@ -112,6 +112,9 @@ final class Hints {
         synonyms("tri dreieck face", "triangle");
         synonyms("obj model modell", "mesh");
         synonyms("mat finish surface", "material");
+        synonyms("cyl zylinder tube pipe rod", "cylinder");
+        synonyms("kegel", "cone");
+        synonyms("arealight area softlight soft_light flaechenlicht", "area_light");
     }
 
 
