@@ -1,6 +1,8 @@
 package rtd.explain;
 
 import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Patterned;
 import rtd.geometry.Plane;
@@ -61,6 +63,12 @@ final class IntersectionSteps {
         }
         if (object instanceof Box box) {
             return new BoxSteps(text, head, box);
+        }
+        if (object instanceof Cylinder cylinder) {
+            return new CylinderSteps(text, head, cylinder);
+        }
+        if (object instanceof Cone cone) {
+            return new ConeSteps(text, head, cone);
         }
         return TestObserver.NONE;
     }

@@ -1,7 +1,10 @@
 package rtd.explain;
 
 import java.util.ArrayDeque;
+import java.util.Collections;
 import java.util.Deque;
+import java.util.IdentityHashMap;
+import java.util.Set;
 import rtd.geometry.Hit;
 import rtd.geometry.Material;
 import rtd.geometry.PatternObserver;
@@ -9,6 +12,7 @@ import rtd.geometry.Triangle;
 import rtd.image.Rgb;
 import rtd.math.Ray;
 import rtd.render.LinearTracer;
+import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 import rtd.shade.LightTerms;
@@ -56,6 +60,12 @@ final class ShadingExplanation implements ShadingObserver {
     private Hit blocker;
     private float lightDistance;
     private int lightNumber;
+    /** The samples of the area light being explained seen so far, how many of them are lit, and their terms summed. */
+    private int samplesSeen;
+    private int samplesLit;
+    private Rgb areaSum = Rgb.BLACK;
+    /** The most samples of an area light shown one by one; of more, the count alone. */
+    private static final int SAMPLES_SHOWN = 16;
 
     private ShadingExplanation(Text text) {
         this.text = text;
@@ -64,7 +74,10 @@ final class ShadingExplanation implements ShadingObserver {
     /** Writes the shading of {@code ray} in {@code scene} into {@code text}, ending with the pixel's colour. */
     static void explain(Text text, Scene scene, Ray ray) {
         text.line("4. Result, shaded (beyond the paper, which stops at flat colours: WhittedShader.shade)").in();
-        text.line(scene.lights().size() + " light" + (scene.lights().size() == 1 ? "" : "s") + ", at most "
+        Set<AreaLight> areas = Collections.newSetFromMap(new IdentityHashMap<>());
+        long lights = scene.lights().stream().filter(l -> l.area() == null || areas.add(l.area())).count();
+        text.line(lights + " light" + (lights == 1 ? "" : "s") + (lights == scene.lights().size() ? ""
+                : " (" + scene.lights().size() + " point lights: each area light is its samples)") + ", at most "
                 + WhittedShader.BOUNCES + " bounces; the camera's ray:");
         ShadingExplanation tree = new ShadingExplanation(text);
         Rgb colour = new WhittedShader(scene, new LinearTracer(scene), tree).colourAt(ray, WhittedShader.BOUNCES);
@@ -124,9 +137,13 @@ final class ShadingExplanation implements ShadingObserver {
 
     @Override
     public void light(Light light, boolean shadowed, LightTerms terms) {
-        lightNumber++;
         Frame frame = open.peek();
         frame.surface = frame.surface.plus(terms.sum());
+        if (light.area() != null) {
+            areaSample(light, shadowed, terms);
+            return;
+        }
+        lightNumber++;
         text.line("light " + lightNumber + " at " + Numbers.of(light.position()) + ", intensity " + Numbers.of(light.intensity())
                 + ":").in();
         String verdict = blocker == null ? "hits nothing: lit"
@@ -141,6 +158,38 @@ final class ShadingExplanation implements ShadingObserver {
         text.line("diffuse  = diffuse·c⊙I·(N·L) = " + Numbers.of(terms.diffuse()));
         text.line("specular = specular·I·(Rl·E)^shininess = " + Numbers.of(terms.specular()));
         text.out();
+    }
+
+    /**
+     * One sample of an area light: the first opens the area light's lines, each gets a line of its
+     * own if there are at most {@link #SAMPLES_SHOWN}, and the last says how many were lit.
+     */
+    private void areaSample(Light light, boolean shadowed, LightTerms terms) {
+        AreaLight area = light.area();
+        if (samplesSeen == 0) {
+            lightNumber++;
+            areaSum = Rgb.BLACK;
+            samplesLit = 0;
+            text.line("light " + lightNumber + ", an area light: corner " + Numbers.of(area.corner()) + ", edges u = "
+                    + Numbers.of(area.u()) + ", v = " + Numbers.of(area.v()) + ", " + area.n() + " × " + area.m()
+                    + " samples, each a point light of intensity I/(n·m) at C + (i + ½)/n·u + (j + ½)/m·v:").in();
+        }
+        boolean lit = !shadowed && terms.lightFacing() > 0;
+        samplesLit += lit ? 1 : 0;
+        areaSum = areaSum.plus(terms.sum());
+        if (area.sampleCount() <= SAMPLES_SHOWN) {
+            text.line("sample (" + samplesSeen / area.m() + ", " + samplesSeen % area.m() + ") at "
+                    + Numbers.of(light.position()) + ": "
+                    + (shadowed ? "in shadow of #" + (blocker.index() + 1) + " " + blocker.object().kind()
+                            : terms.lightFacing() > 0 ? "lit" : "behind the surface")
+                    + ", N·L = " + Numbers.of(terms.lightFacing()) + ", terms summed " + Numbers.of(terms.sum()));
+        }
+        samplesSeen++;
+        if (samplesSeen == area.sampleCount()) {
+            text.line(samplesLit + " of " + area.sampleCount() + " samples lit; the area light gives " + Numbers.of(areaSum));
+            text.out();
+            samplesSeen = 0;
+        }
     }
 
     @Override

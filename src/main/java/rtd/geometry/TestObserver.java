@@ -60,4 +60,28 @@ public interface TestObserver {
     /** The shape's test hit at {@code t}, but the world's point lies outside the object's box: float noise, no hit. */
     default void outsideBox(float t) {
     }
+
+    /**
+     * A cylinder's or a cone's side (Part III, "More shapes"): the quadratic {@code a·t'² + b·t' + c = 0}
+     * solved from the ray's point {@code O' = O + t0·R}, whose roots are where the ray is as far
+     * from the axis as the side, and its discriminant.
+     */
+    default void side(float t0, float a, float b, float c, float discriminant) {
+    }
+
+    /** A root of the side's quadratic as the ray's {@code t = t0 + t'}, {@code along} the axis from the first end, {@code between} the ends or not. */
+    default void sideRoot(float t, float along, boolean between) {
+    }
+
+    /**
+     * A flat cap at end {@code end} (0: the first, 1: the second): the plane's t (NaN: parallel
+     * or behind the ray), and the hit point's squared distance from the cap's centre against the
+     * cap's squared radius.
+     */
+    default void cap(int end, float t, float fromCentreSquared, float radiusSquared) {
+    }
+
+    /** Which part of a solid with several parts was nearest: "side", "first cap", "second cap", or "none". */
+    default void nearestPart(String part, float t) {
+    }
 }

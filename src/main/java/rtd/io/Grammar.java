@@ -20,6 +20,7 @@ import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Vector3f;
+import rtd.scene.AreaLight;
 import rtd.scene.Light;
 
 /**
@@ -77,6 +78,24 @@ final class Grammar {
                     List.of(name("name", "name"), properties("properties",
                             "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
                     (v, out) -> out.material(v.name(0), material(v))),
+            Statement.shape("cylinder",
+                    List.of(numbers("first end", "x1|y1|z1"), numbers("second end", "x2|y2|z2"), numbers("radius", "r"),
+                            numbers("colour", "R|G|B")),
+                    (v, out) -> out.object(SolidShapes.cylinder(v))),
+            Statement.shape("cone",
+                    List.of(numbers("first end", "x1|y1|z1"), numbers("first radius", "r1"),
+                            numbers("second end", "x2|y2|z2"), numbers("second radius", "r2"), numbers("colour", "R|G|B")),
+                    (v, out) -> out.object(SolidShapes.cone(v))),
+            Statement.setting("area_light",
+                    List.of(numbers("corner", "x|y|z"), numbers("first edge", "ux|uy|uz"), numbers("second edge", "vx|vy|vz"),
+                            numbers("samples", "n|m"), numbers("intensity", "R|G|B")),
+                    (v, out) -> {
+                        AreaLight area = new AreaLight(v.vector(0), v.vector(1), v.vector(2),
+                                SolidShapes.samples(v, 3, 0, "number of samples along the first edge"),
+                                SolidShapes.samples(v, 3, 1, "number of samples along the second edge"),
+                                Rgb.of(v.colour(4)));
+                        area.samples().forEach(out::light);
+                    }),
             Statement.definition("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
                     numbers("first colour", "R|G|B"), numbers("second colour", "R|G|B")),
                     List.of(name("transform", "transform")), false, Definitions::pattern),

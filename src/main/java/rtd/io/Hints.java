@@ -120,6 +120,9 @@ final class Hints {
         synonyms("mat finish surface", "material");
         synonyms("texture textur pigment muster checkerboard checkers stripe ring", "pattern");
         synonyms("matrix transformation scale rotate translate move", "transform");
+        synonyms("cyl zylinder tube pipe rod", "cylinder");
+        synonyms("kegel", "cone");
+        synonyms("arealight area softlight soft_light flaechenlicht", "area_light");
     }
 
 

@@ -7,6 +7,8 @@ import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
@@ -18,6 +20,7 @@ import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Vector3f;
+import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 
@@ -82,19 +85,49 @@ public final class PovScene {
                         + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also mirrors uses\n"
                         + "// POV-Ray's own Fresnel reflection, close to rtd's Schlick mix but not the same.\n"
                 : "// and compare decoded pixels: flat scenes agree but for the odd pixel on an edge.\n");
+        if (scene.lights().stream().anyMatch(light -> light.area() != null)) {
+            pov.append("// Area lights: their lights fall on rtd's samples and cast the same soft shadows; POV-Ray lights with\n"
+                    + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n");
+        }
         pov.append("#version 3.7;\n\n");
         pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? rgb(lightSum(scene)) : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
         pov.append("background { ").append(rgb(scene.ambient())).append(" }\n\n");
         pov.append(camera(scene.camera(), w, h)).append('\n');
+        AreaLight written = null;
         for (Light light : scene.lights()) {
-            pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
-                    .append(" }\n");
+            if (light.area() == null) {
+                pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
+                        .append(" }\n");
+            } else if (light.area() != written) { // its samples follow one another: the first writes it
+                written = light.area();
+                pov.append(areaLight(written));
+            }
         }
         for (IGeometry object : scene.objects()) {
             pov.append(object(object, shaded));
         }
         return pov.toString();
+    }
+
+    /**
+     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples. POV-Ray centres
+     * the rectangle on the light's location and puts its n lights along an axis from one end of it
+     * to the other, rtd at the centres of n equal cells, {@code (i + ½)/n} of the edge: so the
+     * location is {@code C + u/2 + v/2} and the axes are {@code u·(n − 1)/n} and
+     * {@code v·(m − 1)/m}. Without {@code adaptive} POV-Ray tests every one of its lights, and
+     * without {@code jitter} leaves them in place. POV-Ray shades with the light's centre and uses
+     * the array for the shadows only, where rtd sums its samples' shading too: the two agree in
+     * the shadows and differ a little in the light (most where the light is near and large).
+     */
+    private static String areaLight(AreaLight area) {
+        double[] u = d(area.u());
+        double[] v = d(area.v());
+        double[] centre = plus(plus(d(area.corner()), times(u, 0.5)), times(v, 0.5));
+        double[] axis1 = area.n() == 1 ? u : times(u, (area.n() - 1.0) / area.n());
+        double[] axis2 = area.m() == 1 ? v : times(v, (area.m() - 1.0) / area.m());
+        return "light_source { " + vector(centre) + ", " + rgb(area.intensity()) + " area_light " + vector(axis1) + ", "
+                + vector(axis2) + ", " + area.n() + ", " + area.m() + " }\n";
     }
 
     private static Rgb lightSum(Scene scene) {
@@ -218,6 +251,13 @@ public final class PovScene {
         }
         if (object instanceof Box b) {
             return "box { " + vector(b.min()) + ", " + vector(b.max());
+        }
+        if (object instanceof Cylinder c) { // closed by its caps, as POV-Ray's is unless it is "open"
+            return "cylinder { " + vector(c.first()) + ", " + vector(c.second()) + ", " + num(c.radius());
+        }
+        if (object instanceof Cone c) {
+            return "cone { " + vector(c.first()) + ", " + num(c.firstRadius()) + ", " + vector(c.second()) + ", "
+                    + num(c.secondRadius());
         }
         throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
     }

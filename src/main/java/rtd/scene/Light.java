@@ -5,12 +5,20 @@ import rtd.math.Vector3f;
 
 /**
  * A point light (Part II, "Light"): it shines from one point with one colour. A scene with
- * lights is shaded; a scene without is drawn in the paper's flat colours.
+ * lights is shaded; a scene without is drawn in the paper's flat colours. An area light is a
+ * grid of point lights ({@link AreaLight#samples}), each of which names the area light it
+ * belongs to; every path that sums point lights draws it unchanged.
  *
  * @param position  where the light is
  * @param intensity its colour and brightness; 1 a channel is full white (255 in the scene file)
+ * @param area      the area light this light is a sample of, or null for a light of its own
  */
-public record Light(Vector3f position, Rgb intensity) {
+public record Light(Vector3f position, Rgb intensity, AreaLight area) {
+
+    /** A point light of its own, as the {@code light} statement makes. */
+    public Light(Vector3f position, Rgb intensity) {
+        this(position, intensity, null);
+    }
 
     /**
      * How far short of the light a shadow ray ends: {@code ε = 1e-4·(1 + max(|x|, |y|, |z|))} of

@@ -44,15 +44,28 @@ public final class SceneWarnings {
                     scene.camera().generateRay(width - 1, height - 1, width, height));
             cameraInPlane(objects, corners).ifPresent(warnings::add);
             cameraInside(objects, corners, lit && !scene.lights().isEmpty()).ifPresent(warnings::add);
+            AreaLight warned = null; // an area light's samples: one warning for them all
             for (int i = 0; lit && i < scene.lights().size(); i++) {
-                lightInside(objects, corners, scene.lights().get(i), i + 1).ifPresent(warnings::add);
+                Light light = scene.lights().get(i);
+                if (light.area() == null || light.area() != warned) {
+                    Optional<String> inside = lightInside(objects, corners, light, name(light, i));
+                    inside.ifPresent(warnings::add);
+                    warned = inside.isPresent() ? light.area() : warned;
+                }
             }
         }
+        AreaLight seen = null;
         for (int i = 0; lit && i < scene.lights().size(); i++) {
-            Rgb c = scene.lights().get(i).intensity();
+            Light light = scene.lights().get(i);
+            if (light.area() != null && light.area() == seen) {
+                continue;
+            }
+            seen = light.area();
+            Rgb c = seen == null ? light.intensity() : seen.intensity(); // the whole area light's, not a sample's share
             float brightest = Math.max(c.red(), Math.max(c.green(), c.blue()));
             if (brightest > 0 && brightest <= ONE_LEVEL) {
-                warnings.add("light #" + (i + 1) + " has the intensity (" + Math.round(c.red() * 255) + "|"
+                warnings.add((seen == null ? "light #" + (i + 1) : "the area light with corner " + point(seen.corner()))
+                        + " has the intensity (" + Math.round(c.red() * 255) + "|"
                         + Math.round(c.green() * 255) + "|" + Math.round(c.blue() * 255) + "), almost black: rtd's "
                         + "colours run from 0 to 255, so a full white light is (255|255|255)");
             }
@@ -97,15 +110,21 @@ public final class SceneWarnings {
     }
 
     /** A sphere or box that holds the light but not the camera, which sees its outside only. */
-    private static Optional<String> lightInside(List<IGeometry> objects, List<Ray> corners, Light light, int number) {
+    private static Optional<String> lightInside(List<IGeometry> objects, List<Ray> corners, Light light, String name) {
         for (int i = 0; i < objects.size(); i++) {
             if (inside(objects.get(i), light.position()) && !holdsAll(objects.get(i), corners)) {
-                return Optional.of("light #" + number + " at " + point(light.position()) + " is inside "
+                return Optional.of(name + " at " + point(light.position()) + " is inside "
                         + describe(objects.get(i), i) + ": every point outside it is in its shadow, so the light lights "
                         + "nothing outside it; move the light out of it");
             }
         }
         return Optional.empty();
+    }
+
+    /** "light #3", as {@code --explain} numbers the point lights; "a sample of the area light with corner (x|y|z)". */
+    private static String name(Light light, int index) {
+        return light.area() == null ? "light #" + (index + 1)
+                : "a sample of the area light with corner " + point(light.area().corner());
     }
 
     /** The first object that every corner ray starts in, or −1. */

@@ -51,6 +51,23 @@ class SceneWarningsTest {
                 .as("a light turned off").isEmpty();
     }
 
+    /**
+     * An area light of 16 × 16 white samples: each sample's share, 1/256, is below one level, and
+     * no warning; one of (1|1|1) is almost black as a whole, told once. A sphere round the first
+     * sample is told once too, not for each sample inside it.
+     */
+    @Test
+    void anAreaLightIsWarnedOfOnceAsAWhole() throws IOException {
+        String light = "area_light:(-1|4|0):(2|0|0):(0|0|2):(16|16):";
+        assertThat(render(CAMERA_AND_BALL + "sphere:(0|0|0):(3):(255|0|0)\n" + light + "(255|255|255)\n").err()).isEmpty();
+        assertThat(line(render(CAMERA_AND_BALL + "sphere:(0|0|0):(3):(255|0|0)\n" + light + "(1|1|1)\n")))
+                .isEqualTo("rtd: warning: scene.txt: the area light with corner (-1|4|0) has the intensity (1|1|1), "
+                        + "almost black: rtd's colours run from 0 to 255, so a full white light is (255|255|255)");
+        assertThat(line(render(CAMERA_AND_BALL + "sphere:(0|4|0):(0.5):(200|0|0)\nsphere:(0|0|0):(3):(255|0|0)\n" + light
+                + "(255|255|255)\n"))).startsWith("rtd: warning: scene.txt: a sample of the area light with corner (-1|4|0) "
+                        + "at (-0.4375|4|0.0625) is inside sphere #1 (centre (0|4|0), radius 0.5)");
+    }
+
     @Test
     void withPaperTheLightIsNotUsedAndItsDimnessNotTold() throws IOException {
         Path file = Files.writeString(dir.resolve("scene.txt"), CAMERA_AND_BALL + "sphere:(0|0|0):(3):(255|0|0)\n"

@@ -36,7 +36,7 @@ class SceneErrorsTest {
                 Arguments.of("a keyword in the wrong case", CAMERA + "Sphere:(3|8|-1):(2):(0|127|255)", 2, 1,
                         "unknown statement 'Sphere'", "did you mean 'sphere'?"),
                 Arguments.of("a line that starts with no keyword", CAMERA + "(3|8|-1)", 2, 1,
-                        "expected a statement ('ambient', 'orthographic_camera', 'perspective_camera', 'sphere', 'plane', 'triangle', 'box', 'mesh', 'light', 'material', 'pattern', 'transform' or 'let'), found '('", null),
+                        "expected a statement ('ambient', 'orthographic_camera', 'perspective_camera', 'sphere', 'plane', 'triangle', 'box', 'mesh', 'light', 'material', 'cylinder', 'cone', 'area_light', 'pattern', 'transform' or 'let'), found '('", null),
                 Arguments.of("a missing ':'", CAMERA + "sphere(3|8|-1):(2):(0|127|255)", 2, 7,
                         "expected ':' before the centre of 'sphere', found '('", "write it as sphere:(x|y|z):(r):(R|G|B)[:(material)][:(transform)]"),
                 Arguments.of("a missing '('", CAMERA + "sphere:3|8|-1):(2):(0|127|255)", 2, 8,

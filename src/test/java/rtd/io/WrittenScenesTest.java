@@ -17,6 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
@@ -80,7 +82,7 @@ class WrittenScenesTest {
             Color colour = new Color(random.nextInt(256), random.nextInt(256), random.nextInt(256));
             Vector3f a = point(random);
             Vector3f b = new Vector3f(0.5f + random.nextInt(90) / 8f, 0.5f + random.nextInt(90) / 8f, 0.5f + random.nextInt(90) / 8f);
-            switch (random.nextInt(5)) {
+            switch (random.nextInt(7)) {
                 case 0 -> {
                     float r = 0.1f + random.nextInt(30) / 10f;
                     objects.add(new Sphere(a, r, colour, material));
@@ -100,6 +102,16 @@ class WrittenScenesTest {
                     Vector3f far = a.add(b);
                     objects.add(Box.between(far, a, colour, material));
                     lines.add("box:(" + vector(far) + "):(" + vector(a) + "):(" + colour(colour) + ")" + suffix);
+                }
+                case 5 -> {
+                    float r = 0.1f + random.nextInt(30) / 10f;
+                    objects.add(new Cylinder(a, a.add(b), r, colour, material));
+                    lines.add("cylinder:(" + vector(a) + "):(" + vector(a.add(b)) + "):(" + r + "):(" + colour(colour) + ")" + suffix);
+                }
+                case 6 -> {
+                    float r = random.nextInt(30) / 10f;
+                    objects.add(new Cone(a, r, a.add(b), 0.5f, colour, material));
+                    lines.add("cone:(" + vector(a) + "):(" + r + "):(" + vector(a.add(b)) + "):(0.5):(" + colour(colour) + ")" + suffix);
                 }
                 default -> {
                     float scale = 1 + random.nextInt(4);

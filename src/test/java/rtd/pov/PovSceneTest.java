@@ -109,6 +109,40 @@ class PovSceneTest {
         assertSameFlatPicture(rtd(scene, 160, 120), povRay(scene, 160, 120));
     }
 
+    /** Cylinders and cones, upright, tilted and with an apex, flat: POV-Ray's closed {@code cylinder} and {@code cone} draw the same. */
+    @Test
+    void cylindersAndConesDrawTheSamePictureAsPovRaysClosedOnes() throws Exception {
+        Scene scene = rtd.io.SceneIO.parseScene("solids.txt", "perspective_camera:(0|3|10):(at 0|1|0):(50)\n"
+                + "ambient:(20|30|40)\ncylinder:(-2|0|0):(-2|2|0):(1):(200|60|40)\ncone:(1.5|0|0):(1):(1.5|2.5|0):(0):(60|160|220)\n"
+                + "cylinder:(0|0.5|2):(1|0.5|3):(0.4):(240|200|60)\ncone:(-1|0.3|3):(0.3):(0.5|1|3.5):(0.1):(120|220|90)\n");
+        assertThat(PovScene.of(scene, 160, 120, "s.pov")).contains("cylinder { <-2, 0, 0>, <-2, 2, 0>, 1 pigment",
+                "cone { <1.5, 0, 0>, 1, <1.5, 2.5, 0>, 0 pigment");
+        PovRay.assumeInstalled();
+        assertSameFlatPicture(rtd(scene, 160, 120), povRay(scene, 160, 120));
+        assertSameFlatPicture(rtd(scene, 161, 121), povRay(scene, 161, 121));
+    }
+
+    /**
+     * An area light of 4 × 4 over a sphere and a cylinder on a floor: POV-Ray's {@code area_light},
+     * placed so that its 16 lights fall on rtd's samples, draws the same soft shadows. It shades
+     * with the light's centre, where rtd sums its samples, so highlights and the edge between
+     * light and dark differ a little: at most 1 % of the pixels may differ by more than 8 levels.
+     */
+    @Test
+    void anAreaLightCastsTheSameSoftShadowsAsPovRaysAreaLight() throws Exception {
+        Scene scene = rtd.io.SceneIO.parseScene("soft.txt", "perspective_camera:(0|4|10):(at 0|0.5|0):(50)\n"
+                + "ambient:(20|30|50)\narea_light:(-1|6|-1):(2|0|0):(0|0|2):(4|4):(255|255|255)\n"
+                + "plane:(0|0|0):(0|1|0):(200|200|200)\nsphere:(0|1|0):(1):(200|60|40)\n"
+                + "cylinder:(2.5|0|0):(2.5|1.5|0):(0.5):(60|160|220)\n");
+        int w = 240;
+        int h = 135;
+        assertThat(PovScene.of(scene, w, h, "soft.pov"))
+                .contains("light_source { <0, 6, 0>, rgb <1, 1, 1> area_light <1.5, 0, 0>, <0, 0, 1.5>, 4, 4 }");
+        PovRay.assumeInstalled();
+        assertThat(pixelsApart(shaded(scene, w, h), povRay(scene, w, h), 8)).as("pixels more than 8 levels apart")
+                .isLessThanOrEqualTo(w * h / 100);
+    }
+
     private static void assertSameFlatPicture(BufferedImage rtd, BufferedImage pov) {
         ImageComparison.Result result = ImageComparison.EDGE_TOLERANT.compare(rtd, pov);
         assertThat(result.matches()).as(result.summary()).isTrue();

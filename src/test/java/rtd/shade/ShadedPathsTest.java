@@ -32,7 +32,7 @@ class ShadedPathsTest {
     }
 
     @ParameterizedTest(name = "random shaded scene {0}")
-    @ValueSource(longs = {1, 2, 3, 4, 5, 6})
+    @ValueSource(longs = {1, 2, 3, 4, 6, 9}) // seeds whose lights some pixel faces: shadow rays are cast
     void theSamePixelsForAnyThreadCountWithAndWithoutTheBvh(long seed) {
         Scene scene = MixedScenes.shaded(MixedScenes.generate(seed, 60), seed);
         int[] reference = render(scene, 96, 64, 1, 1, false).image().rgb();

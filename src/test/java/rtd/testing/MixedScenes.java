@@ -5,6 +5,8 @@ import java.util.List;
 import java.util.Random;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
@@ -14,6 +16,7 @@ import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 
@@ -48,7 +51,7 @@ public final class MixedScenes {
         }
         Vector3f centre = point(random, 12);
         float size = random.nextInt(4) == 0 ? 0.001f + random.nextFloat() * 0.05f : 0.1f + random.nextFloat() * 3;
-        switch (random.nextInt(3)) {
+        switch (random.nextInt(5)) {
             case 0:
                 return new Sphere(centre, size, colour(random));
             case 1:
@@ -58,6 +61,13 @@ public final class MixedScenes {
                         ? a.add(b.subtract(a).multiply(0.5f)).add(direction(random).multiply(size * 1e-4f)) // a needle
                         : centre.add(direction(random).multiply(size));
                 return new Triangle(a, b, c, colour(random), Material.DEFAULT);
+            case 3:
+                return new Cylinder(centre, centre.add(direction(random).multiply(size)), size * random.nextFloat() + 1e-3f,
+                        colour(random), Material.DEFAULT);
+            case 4:
+                return new Cone(centre, random.nextBoolean() ? 0 : size * random.nextFloat(),
+                        centre.add(direction(random).multiply(size)), size * random.nextFloat() + 1e-3f, colour(random),
+                        Material.DEFAULT);
             default:
                 return Box.between(centre, centre.add(new Vector3f(random.nextFloat() * size + 1e-3f,
                         random.nextFloat() * size + 1e-3f, random.nextFloat() * size + 1e-3f)), colour(random),
@@ -82,12 +92,18 @@ public final class MixedScenes {
         if (object instanceof Box box) {
             return new Box(box.min(), box.max(), colour, material);
         }
+        if (object instanceof Cylinder c) {
+            return new Cylinder(c.first(), c.second(), c.radius(), colour, material);
+        }
+        if (object instanceof Cone c) {
+            return new Cone(c.first(), c.firstRadius(), c.second(), c.secondRadius(), colour, material);
+        }
         throw new IllegalArgumentException("no twin for a " + object.kind() + ": add it here and to randomObject");
     }
 
     /**
-     * {@code scene} with random finishes (some mirrors, some glass, some both) and one to three
-     * coloured lights, the same for the same seed.
+     * {@code scene} with random finishes (some mirrors, some glass, some both), one to three
+     * coloured lights and, half the time, an area light of up to 3 × 3 samples, the same for the same seed.
      */
     public static Scene shaded(Scene scene, long seed) {
         Random random = new Random(seed);
@@ -102,6 +118,10 @@ public final class MixedScenes {
         List<Light> lights = new ArrayList<>();
         for (int i = 0; i <= random.nextInt(3); i++) {
             lights.add(new Light(point(random, 30), new Rgb(random.nextFloat(), random.nextFloat(), random.nextFloat())));
+        }
+        if (random.nextBoolean()) { // an area light: its samples are point lights that belong together
+            lights.addAll(new AreaLight(point(random, 30), direction(random), direction(random), 1 + random.nextInt(3),
+                    1 + random.nextInt(3), new Rgb(random.nextFloat(), random.nextFloat(), random.nextFloat())).samples());
         }
         return new Scene(scene.ambient(), scene.camera(), objects, lights);
     }
