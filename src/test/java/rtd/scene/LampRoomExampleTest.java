@@ -2,15 +2,20 @@ package rtd.scene;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import rtd.image.Color;
 import rtd.image.Picture;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 import rtd.render.LinearTracer;
 import rtd.shade.WhittedShader;
+import rtd.testing.Cli;
 import rtd.testing.GoldenImages;
 import rtd.testing.ImageComparison;
 import rtd.testing.Scenes;
@@ -106,6 +111,22 @@ class LampRoomExampleTest {
             checked++;
         }
         assertThat(checked).isGreaterThan(15);
+    }
+
+    /** The loop, the BVH and the grids (the camera's and each of the 16 lights') write the same file, at 240 × 135. */
+    @Test
+    void theLoopTheBvhAndTheGridsDrawTheSamePicture(@TempDir Path dir) throws IOException {
+        byte[] loop = renderSmall(dir, "none");
+        assertThat(renderSmall(dir, "bvh")).isEqualTo(loop);
+        assertThat(renderSmall(dir, "grid")).isEqualTo(loop);
+    }
+
+    private static byte[] renderSmall(Path dir, String accel) throws IOException {
+        Path out = dir.resolve(accel + ".png");
+        Cli.Run run = Cli.run("examples/lamp_room.txt", "-o", out.toString(), "--scale", "0.125", "--accel", accel,
+                "--threads", "2", "--no-progress");
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        return Files.readAllBytes(out);
     }
 
     /** The colour of the floor at (x|0|z) seen from straight above it, from just over the floor. */
