@@ -105,16 +105,19 @@ public final class Window {
     }
 
     /**
-     * The scene file was saved: read it on the watcher's thread, hand it to the window's, which parses it at the
-     * clock it shows.
+     * The scene file was saved: read it (and its meshes) on the watcher's thread, hand it to the window's, which
+     * parses it at the clock it shows.
      */
     private static void reload(WindowSetup setup, SceneWindow window) {
         ClockedScene source = null;
         IOException unreadable = null;
         try {
             source = setup.loader().read();
+            source.at(setup.clock()); // its meshes are read here, off the window's thread, and kept for every clock
         } catch (IOException e) {
             unreadable = e;
+        } catch (SceneException e) {
+            // the window parses the file again at its own clock and shows the mistakes it finds there
         }
         ClockedScene read = source;
         IOException failed = unreadable;
