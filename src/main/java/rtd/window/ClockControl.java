@@ -53,7 +53,20 @@ final class ClockControl {
         return scene;
     }
 
-    /** The clock slider dragged to {@code to}: a frame at the moving resolution. */
+    /**
+     * The user moved the slider to {@code to}: playing stops (the slider is the user's now), and a frame at the
+     * moving resolution follows while it is dragged ({@code dragging}), the full picture once it is let go.
+     */
+    void slid(double to, boolean dragging) {
+        playing = false;
+        if (dragging) {
+            moved(to);
+        } else {
+            rested(to);
+        }
+    }
+
+    /** The clock dragged or played to {@code to}: a frame at the moving resolution. */
     void moved(double to) {
         Scene scene = at(to);
         if (scene != null) {
@@ -61,7 +74,7 @@ final class ClockControl {
         }
     }
 
-    /** The clock slider released at {@code to}: the full picture. */
+    /** The clock at rest at {@code to}: the full picture. */
     void rested(double to) {
         Scene scene = at(to);
         if (scene != null) {

@@ -99,12 +99,7 @@ final class SceneWindow implements Display {
         slider.setFocusable(false); // the keys stay the window's
         slider.addChangeListener(e -> {
             if (!settingSlider) {
-                double clock = (double) slider.getValue() / SLIDER_STEPS;
-                if (slider.getValueIsAdjusting()) {
-                    session.clock().moved(clock);
-                } else {
-                    session.clock().rested(clock);
-                }
+                session.clock().slid((double) slider.getValue() / SLIDER_STEPS, slider.getValueIsAdjusting());
             }
         });
         clockBar.add(clockLabel, BorderLayout.WEST);

@@ -88,6 +88,12 @@ class WindowClockTest {
         window.run(() -> window.session.clock().play());
         assertThat(window.on(() -> window.session.clock().playing())).isFalse();
         window.awaitTrue(() -> window.display.status.startsWith("picture · clock 0.050 · 160 × 90 · last frame"));
+
+        window.run(() -> window.session.clock().play());
+        window.run(() -> window.session.clock().slid(0.5, true)); // the user takes the slider: playing stops
+        assertThat(window.on(() -> window.session.clock().playing())).isFalse();
+        window.run(() -> window.session.clock().tick(1_000_000_000L));
+        assertThat(window.on(() -> window.session.clock().clock())).isEqualTo(0.5);
     }
 
     @Test
