@@ -3,7 +3,6 @@ package rtd.cli;
 import java.io.PrintWriter;
 import java.io.Writer;
 import java.io.IOException;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
 import picocli.CommandLine;
@@ -16,6 +15,7 @@ import rtd.io.SceneException;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
+import rtd.window.ClockedScene;
 import rtd.window.Engine;
 import rtd.window.FileWatch;
 import rtd.window.Window;
@@ -36,7 +36,6 @@ public final class WindowOptions {
             new String[] {"--export-pov", "export without --window"},
             new String[] {"--paper", "--accel none traces with the paper's loop"},
             new String[] {"--frames", "render the frames without --window"},
-            new String[] {"--clock", "render the frames without --window"},
             new String[] {"-o", "Ctrl+S saves the picture beside the scene"});
 
     /** The window's picture without --width, --height or --scale: half the default picture each way. */
@@ -46,7 +45,8 @@ public final class WindowOptions {
     @Option(names = "--window", description = "instead of writing the picture, open the scene in a window (960x540 "
             + "unless --width, --height or --scale say otherwise): it renders coarse at once and refines; drag to "
             + "orbit, right-drag to pan, wheel to zoom, click a pixel to see its rays and --explain; keys 1-5 picture "
-            + "and views, R reset, C copy the camera line, Ctrl+S save, Q quit; saving the scene renders it again")
+            + "and views, R reset, C copy the camera line, P play the clock, Ctrl+S save, Q quit; saving the scene "
+            + "renders it again; --clock C is the clock it starts at")
     private boolean window;
 
     /** Whether {@code --window} was given. */
@@ -64,7 +64,7 @@ public final class WindowOptions {
         RenderOptions sized = windowSize(options, commandLine);
         Memory.checkImageFits(commandLine, sized.width(), sized.height(), sized.scale());
         WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel(),
-                sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads());
+                sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads(), sized.clock());
         try {
             Window.open(setup);
             return 0;
@@ -117,12 +117,12 @@ public final class WindowOptions {
     }
 
     /**
-     * The scene at the size and {@code --scale} of the command line (its warnings are not shown); a file that
-     * cannot be read is an {@link IOException} with {@code -o}'s message.
+     * The scene file, read once, each scene parsed from it at the {@code --scale} of the command line (its warnings
+     * are not shown); a file that cannot be read is an {@link IOException} with {@code -o}'s message.
      */
-    private static Scene read(RenderOptions options) throws SceneException, IOException {
+    private static ClockedScene read(RenderOptions options) throws IOException {
         try {
-            return options.scale().of(SceneSource.of(options.scene()).read(null, options.clock(), new ArrayList<>()));
+            return new ClockedScene(SceneSource.of(options.scene()).readFile(null), options.scale()::of);
         } catch (FileError e) {
             throw new IOException(e.getMessage(), e);
         }

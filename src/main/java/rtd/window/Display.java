@@ -18,6 +18,9 @@ interface Display {
     /** The status line. */
     void status(String text);
 
+    /** The clock slider at {@code clock}, or hidden for null: the scene does not use {@code clock}. */
+    void clock(Double clock);
+
     /** Puts {@code text} on the clipboard. */
     void copy(String text);
 }

@@ -13,11 +13,13 @@ final class Keys {
             "  1 to 5      picture, cost, depth, normal, id (V: next)",
             "  R           the file's camera again",
             "  C           copy the camera as a scene line",
+            "  P           play the clock, 0 to 1 in 5 s, or pause",
             "  Ctrl+S      save the picture as NAME-window.png",
             "  Esc         no pixel selected",
             "  Q           quit",
             "",
-            "Saving the scene file renders it again.",
+            "Saving the scene file renders it again. A scene that uses clock",
+            "has a clock slider above this panel.",
             "");
 
     private Keys() {

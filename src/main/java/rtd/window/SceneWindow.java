@@ -18,10 +18,13 @@ import javax.swing.AbstractAction;
 import javax.swing.JComponent;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
+import javax.swing.JPanel;
 import javax.swing.JScrollPane;
+import javax.swing.JSlider;
 import javax.swing.JTextArea;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
+import javax.swing.Timer;
 import javax.swing.WindowConstants;
 import rtd.image.Picture;
 import rtd.scene.Scene;
@@ -29,25 +32,35 @@ import rtd.view.View;
 
 /**
  * The window itself, thin Swing around a {@link WindowSession}: the picture on the left, the panel of text on the
- * right (the explanation, the copied camera, a scene's mistakes), the status line below, and the keys
- * ({@link Keys}). Made and used on Swing's thread only.
+ * right (the explanation, the copied camera, a scene's mistakes) under the clock slider of a scene that uses
+ * {@code clock}, the status line below, and the keys ({@link Keys}), {@code P}'s timer among them. Made and used on
+ * Swing's thread only.
  */
 final class SceneWindow implements Display {
 
     /** The side panel's width in screen pixels. */
     private static final int SIDE_WIDTH = 460;
+    private static final int SLIDER_STEPS = 1000;
 
     private final JFrame frame;
     private final WindowSession session;
     private final PicturePanel picture;
     private final JTextArea panel = new JTextArea();
     private final JLabel status = new JLabel(" ");
+    /** The clock slider: 0 to 1 in thousandths, with its label; shown for a scene that uses {@code clock}. */
+    private final JSlider slider = new JSlider(0, SLIDER_STEPS, 0);
+    private final JLabel clockLabel = new JLabel();
+    private final JPanel clockBar = new JPanel(new BorderLayout(8, 0));
+    /** Whether the slider is being set by the session, not by the user. */
+    private boolean settingSlider;
+    private final Timer play = new Timer(ClockPlay.TICK_MILLIS, e -> tick());
+    private long lastTick;
     private final CountDownLatch closed;
 
-    SceneWindow(WindowSetup setup, Scene scene, CountDownLatch closed) {
+    SceneWindow(WindowSetup setup, ClockedScene source, Scene scene, CountDownLatch closed) {
         this.closed = closed;
         this.frame = new JFrame("rtd: " + setup.scene());
-        this.session = new WindowSession(setup, scene, this, SwingUtilities::invokeLater);
+        this.session = new WindowSession(setup, source, scene, this, SwingUtilities::invokeLater);
         Dimension shown = fitted(setup.width(), setup.height());
         this.picture = new PicturePanel(session, shown.width, shown.height);
         panel.setEditable(false);
@@ -57,13 +70,17 @@ final class SceneWindow implements Display {
         JScrollPane side = new JScrollPane(panel);
         side.setPreferredSize(new Dimension(SIDE_WIDTH, shown.height));
         status.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        JPanel right = new JPanel(new BorderLayout());
+        right.add(clockBar(), BorderLayout.NORTH);
+        right.add(side, BorderLayout.CENTER);
         frame.getContentPane().add(picture, BorderLayout.CENTER);
-        frame.getContentPane().add(side, BorderLayout.EAST);
+        frame.getContentPane().add(right, BorderLayout.EAST);
         frame.getContentPane().add(status, BorderLayout.SOUTH);
         frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
             @Override
             public void windowClosed(WindowEvent e) {
+                play.stop();
                 session.close();
                 closed.countDown();
             }
@@ -71,6 +88,44 @@ final class SceneWindow implements Display {
         bindKeys();
         frame.pack();
         frame.setLocationByPlatform(true);
+    }
+
+    /**
+     * The clock's label and slider, hidden until the session shows them: dragging renders at the moving resolution,
+     * releasing (or a click on the track) the full picture.
+     */
+    private JPanel clockBar() {
+        clockLabel.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        slider.setFocusable(false); // the keys stay the window's
+        slider.addChangeListener(e -> {
+            if (!settingSlider) {
+                session.clock().slid((double) slider.getValue() / SLIDER_STEPS, slider.getValueIsAdjusting());
+            }
+        });
+        clockBar.add(clockLabel, BorderLayout.WEST);
+        clockBar.add(slider, BorderLayout.CENTER);
+        clockBar.setVisible(false);
+        return clockBar;
+    }
+
+    /** {@code P}: the session plays or pauses, and the timer runs while it plays. */
+    private void playOrPause() {
+        session.clock().play();
+        if (session.clock().playing()) {
+            lastTick = System.nanoTime();
+            play.start();
+        } else {
+            play.stop();
+        }
+    }
+
+    private void tick() {
+        long now = System.nanoTime();
+        session.clock().tick(now - lastTick);
+        lastTick = now;
+        if (!session.clock().playing()) {
+            play.stop(); // a saved scene without the clock stops it
+        }
     }
 
     /**
@@ -105,6 +160,7 @@ final class SceneWindow implements Display {
         key("V", session::nextView);
         key("R", session::resetCamera);
         key("C", session::copyCamera);
+        key("P", this::playOrPause);
         key("ESCAPE", session::deselect);
         key("Q", frame::dispose);
         bind(KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK), "save", session::save);
@@ -144,6 +200,19 @@ final class SceneWindow implements Display {
     @Override
     public void status(String text) {
         status.setText(text);
+    }
+
+    @Override
+    public void clock(Double clock) {
+        if (clock == null) {
+            clockBar.setVisible(false);
+            return;
+        }
+        clockLabel.setText(StatusText.clock(clock));
+        settingSlider = true;
+        slider.setValue((int) Math.round(Math.max(0, Math.min(1, clock)) * SLIDER_STEPS));
+        settingSlider = false;
+        clockBar.setVisible(true);
     }
 
     @Override

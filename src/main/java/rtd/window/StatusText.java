@@ -4,11 +4,16 @@ import java.util.Locale;
 
 /**
  * The window's status line: the last frame's render time, its rays per second, the picture's size and the
- * pixel under the mouse, with what the picture shows and how coarse it is still.
+ * pixel under the mouse, with what the picture shows (and at which clock) and how coarse it is still.
  */
 final class StatusText {
 
     private StatusText() {
+    }
+
+    /** The clock as the status line and the slider's label write it: {@code clock 0.250}. */
+    static String clock(double clock) {
+        return String.format(Locale.ROOT, "clock %.3f", clock);
     }
 
     /**

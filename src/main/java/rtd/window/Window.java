@@ -15,7 +15,8 @@ import rtd.scene.Scene;
  * {@code --window}: opens a window on a scene and waits until it is closed. The picture renders coarse at once
  * and is refined on all cores; the mouse orbits, pans and zooms the camera; a click explains a pixel as
  * {@code --explain} does, with its rays drawn over the picture; keys switch to the debug views of
- * {@code --view}; saving the scene file renders it again, as {@code --watch}.
+ * {@code --view}; saving the scene file renders it again, as {@code --watch}; a scene that uses {@code clock} has a
+ * clock slider and a play key.
  */
 public final class Window {
 
@@ -62,11 +63,12 @@ public final class Window {
         if (missing != null) {
             throw new NoDisplay(missing);
         }
-        Scene scene = setup.loader().load();
+        ClockedScene source = setup.loader().read();
+        Scene scene = source.at(setup.clock());
         CountDownLatch closed = new CountDownLatch(1);
         AtomicReference<SceneWindow> window = new AtomicReference<>();
         show(() -> {
-            SceneWindow opened = new SceneWindow(setup, scene, closed);
+            SceneWindow opened = new SceneWindow(setup, source, scene, closed);
             window.set(opened);
             opened.open();
         });
@@ -102,21 +104,23 @@ public final class Window {
         }
     }
 
-    /** The scene file was saved: read it on the watcher's thread, hand the result to the window's. */
+    /**
+     * The scene file was saved: read it (and its meshes) on the watcher's thread, hand it to the window's, which
+     * parses it at the clock it shows.
+     */
     private static void reload(WindowSetup setup, SceneWindow window) {
-        Scene scene = null;
-        SceneException mistakes = null;
+        ClockedScene source = null;
         IOException unreadable = null;
         try {
-            scene = setup.loader().load();
-        } catch (SceneException e) {
-            mistakes = e;
+            source = setup.loader().read();
+            source.at(setup.clock()); // its meshes are read here, off the window's thread, and kept for every clock
         } catch (IOException e) {
             unreadable = e;
+        } catch (SceneException e) {
+            // the window parses the file again at its own clock and shows the mistakes it finds there
         }
-        Scene read = scene;
-        SceneException wrong = mistakes;
+        ClockedScene read = source;
         IOException failed = unreadable;
-        SwingUtilities.invokeLater(() -> window.session().reloaded(read, wrong, failed));
+        SwingUtilities.invokeLater(() -> window.session().reloaded(read, failed));
     }
 }

@@ -1,28 +1,18 @@
 package rtd.window;
 
 import java.io.IOException;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Executor;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.function.Supplier;
-import rtd.explain.PixelExplanation;
-import rtd.explain.RayTree;
-import rtd.image.Picture;
-import rtd.io.ImageFormat;
 import rtd.io.SceneException;
-import rtd.io.SceneIO;
 import rtd.math.Vector3f;
-import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.view.View;
 
 /**
- * What the window does, without its Swing parts: the scene and its moved camera, the view, the selected pixel, and
- * the renders. It lives on the window's thread (Swing's event thread, {@code ui}); renders run on the
- * {@link RenderLoop}, explanations and saves on a thread of their own, and what they find comes back through
- * {@code ui} to the {@link Display}.
+ * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}),
+ * the view, the selected pixel, and the renders. It lives on the window's thread (Swing's event thread,
+ * {@code ui}); renders run on the {@link RenderLoop}, explanations and saves on a thread of their own
+ * ({@link SideJobs}), and what they find comes back through {@code ui} to the {@link Display}.
  */
 final class WindowSession implements AutoCloseable {
 
@@ -33,12 +23,12 @@ final class WindowSession implements AutoCloseable {
     private final Executor ui;
     private final RenderLoop renders;
     private final FrameRenderer renderer;
-    private final ExecutorService helper = Executors.newSingleThreadExecutor(runnable -> {
-        Thread thread = new Thread(runnable, "rtd-window-explain");
-        thread.setDaemon(true);
-        return thread;
-    });
+    private final SideJobs jobs;
+    private final ClockControl clock;
+    /** The file's last good scene, at the clock shown. */
     private Scene file;
+    /** Whether the panel shows a mistake, to give way to the keys or the explanation once the scene is good. */
+    private boolean showsMistake;
     private CameraController camera;
     private View view;
     private int[] selected;
@@ -52,17 +42,19 @@ final class WindowSession implements AutoCloseable {
     /** Whether the panel is to show the view's scale once its full picture is drawn. */
     private boolean legendWanted;
     private long movingNanos;
-    /** The tracers for any camera of the scene {@link #anyFor} is for; touched on the render thread only. */
-    private Scene anyScene;
-    private Supplier<Tracer> anyTracers;
+    private final AnyCameraTracers anyCamera;
 
-    WindowSession(WindowSetup setup, Scene scene, Display display, Executor ui) {
+    /** A session on {@code scene}, which is {@code source} parsed at {@code setup}'s clock. */
+    WindowSession(WindowSetup setup, ClockedScene source, Scene scene, Display display, Executor ui) {
         this.setup = setup;
         this.display = display;
         this.ui = ui;
         this.renderer = new FrameRenderer(setup.engine());
         this.renders = new RenderLoop(e -> ui.execute(() -> display.panel("rtd: internal error while rendering: " + e
                 + ". This is a bug in rtd; please report it with the scene.")));
+        this.anyCamera = new AnyCameraTracers(setup);
+        this.jobs = new SideJobs(ui);
+        this.clock = new ClockControl(this, display, source, setup.clock());
         this.file = scene;
         this.camera = new CameraController(scene.camera());
     }
@@ -70,6 +62,7 @@ final class WindowSession implements AutoCloseable {
     /** The first picture, coarse at once, then refined. */
     void start() {
         display.panel(Keys.HELP);
+        display.clock(clock.slider());
         render(Refinement.STILL);
     }
 
@@ -80,6 +73,11 @@ final class WindowSession implements AutoCloseable {
 
     CameraController camera() {
         return camera;
+    }
+
+    /** The clock: its slider and play key. */
+    ClockControl clock() {
+        return clock;
     }
 
     /** The last pass shown, or null. */
@@ -96,17 +94,8 @@ final class WindowSession implements AutoCloseable {
                 setup.samples(), setup.threads(), refinement);
         boolean moving = !refinement.endsFull();
         FrameRenderer.Listener listener = pass -> ui.execute(() -> show(frame, pass, moving));
-        renders.submit(() -> renderer.render(request, anyFor(objects), new ProgressiveBuffer(setup.width(),
+        renders.submit(() -> renderer.render(request, anyCamera.of(objects), new ProgressiveBuffer(setup.width(),
                 setup.height()), listener), !moving);
-    }
-
-    /** The tracers for any camera, built once for each scene read (on the render thread). */
-    private Supplier<Tracer> anyFor(Scene scene) {
-        if (anyScene != scene) {
-            anyTracers = setup.engine().forAnyCamera(scene, setup.width(), setup.height());
-            anyScene = scene;
-        }
-        return anyTracers;
     }
 
     private void show(long frame, FrameRenderer.Pass pass, boolean moving) {
@@ -127,10 +116,10 @@ final class WindowSession implements AutoCloseable {
         status();
     }
 
-    private void status() {
+    void status() {
         if (shown != null) {
             display.status(StatusText.of(setup.width(), setup.height(), shown.nanos(), shown.rays(), shown.block(),
-                    underMouse, view == null ? "picture" : view.name()));
+                    underMouse, (view == null ? "picture" : view.name()) + clock.status()));
         }
     }
 
@@ -172,9 +161,9 @@ final class WindowSession implements AutoCloseable {
         explainSelected();
     }
 
-    /** {@code R}: the file's camera. */
+    /** {@code R}: the file's camera at the clock shown. */
     void resetCamera() {
-        camera.reset();
+        camera = new CameraController(file.camera());
         render(Refinement.STILL);
         explainSelected();
     }
@@ -213,21 +202,11 @@ final class WindowSession implements AutoCloseable {
         }
         int x = selected[0];
         int y = selected[1];
-        Scene scene = scene();
-        int w = setup.width();
-        int h = setup.height();
-        helper.execute(() -> {
-            String text = "pixel (" + x + ", " + y + ") of the " + w + " × " + h + " picture of " + setup.scene()
-                    + " (what --explain " + x + "," + y + " prints at this size and camera):\n\n"
-                    + PixelExplanation.of(scene, x, y, w, h);
-            List<RayTreeProjection.Line> lines = new RayTreeProjection(scene.camera(), w, h)
-                    .lines(RayTree.of(scene, x, y, w, h));
-            ui.execute(() -> {
-                if (selected != null && selected[0] == x && selected[1] == y) {
-                    display.panel(text);
-                    display.rays(lines);
-                }
-            });
+        jobs.explain(scene(), setup.scene(), x, y, setup.width(), setup.height(), (text, lines) -> {
+            if (selected != null && selected[0] == x && selected[1] == y) {
+                display.panel(text);
+                display.rays(lines);
+            }
         });
     }
 
@@ -245,26 +224,23 @@ final class WindowSession implements AutoCloseable {
             display.panel("The picture is still being rendered; save again once the status line shows no blocks.");
             return;
         }
-        Picture picture = shown.picture();
-        Path target = setup.savedPicture();
-        helper.execute(() -> {
-            String said;
-            try {
-                SceneIO.writeImage(picture, ImageFormat.PNG, target, done -> { });
-                said = "Saved the picture as " + target + " (" + picture.width() + " × " + picture.height() + ").";
-            } catch (IOException | RuntimeException e) {
-                said = "rtd: cannot write '" + target + "': " + e.getMessage();
-            }
-            String message = said;
-            ui.execute(() -> display.panel(message));
-        });
+        jobs.save(shown.picture(), setup.savedPicture(), display::panel);
     }
 
-    /** The scene file was saved: read again, or its mistakes shown while the last good picture stays. */
-    void reloaded(Scene scene, SceneException mistakes, IOException unreadable) {
-        if (scene == null) {
-            String why = mistakes != null ? mistakes.report() : "rtd: " + unreadable.getMessage() + "\n";
-            display.panel(why + "\nThe last good picture stays; fix the scene and save it again.");
+    /**
+     * The scene file was saved ({@code read}, or {@code unreadable}): it is parsed at the clock shown, or its
+     * mistakes are shown while the last good picture stays. The window's camera stays unless the file's changed.
+     */
+    void reloaded(ClockedScene read, IOException unreadable) {
+        if (read == null) {
+            mistake("rtd: " + unreadable.getMessage() + "\n", "");
+            return;
+        }
+        Scene scene;
+        try {
+            scene = clock.read(read);
+        } catch (SceneException e) {
+            mistake(e.report(), "");
             return;
         }
         boolean sameCamera = CameraLine.of(scene.camera()).equals(CameraLine.of(file.camera()));
@@ -272,7 +248,41 @@ final class WindowSession implements AutoCloseable {
         if (!sameCamera) {
             camera = new CameraController(scene.camera()); // the file's new camera
         }
+        display.clock(clock.slider());
         render(Refinement.STILL);
+        showsMistake = false;
+        panelAgain();
+    }
+
+    /**
+     * The scene at a new clock: the window's camera follows the file's if the user has not moved it (an orbiting
+     * camera orbits); a frame at the moving resolution, or the full picture once the clock rests ({@code full}).
+     */
+    void atClock(Scene scene, boolean full) {
+        boolean unmoved = CameraLine.of(camera.camera()).equals(CameraLine.of(file.camera()));
+        file = scene;
+        if (unmoved) {
+            camera = new CameraController(scene.camera());
+        }
+        if (showsMistake) {
+            showsMistake = false;
+            panelAgain();
+        }
+        if (full) {
+            rested();
+        } else {
+            moved();
+        }
+    }
+
+    /** A mistake's {@code report} in the panel, the last good picture kept; {@code orClock} adds a way out. */
+    void mistake(String report, String orClock) {
+        showsMistake = true;
+        display.panel(report + "\nThe last good picture stays; fix the scene and save it again" + orClock + ".");
+    }
+
+    /** The panel's keys, or the selected pixel's explanation, again. */
+    private void panelAgain() {
         if (selected != null) {
             explainSelected();
         } else {
@@ -283,6 +293,6 @@ final class WindowSession implements AutoCloseable {
     @Override
     public void close() {
         renders.close();
-        helper.shutdownNow();
+        jobs.close();
     }
 }

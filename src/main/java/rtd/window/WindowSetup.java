@@ -14,9 +14,10 @@ import java.nio.file.Path;
  * @param height  the picture's height in pixels
  * @param samples {@code --samples}: rays per pixel, each way, of the full picture
  * @param threads {@code --threads}
+ * @param clock   {@code --clock}: the clock the window starts at, between 0 and 1 for its slider
  */
 public record WindowSetup(Path scene, SceneLoader loader, FileWatch watch, Engine engine, int width, int height,
-        int samples, int threads) {
+        int samples, int threads, double clock) {
 
     /** Where {@code Ctrl+S} saves: beside the scene, its name with {@code -window.png} for its extension. */
     Path savedPicture() {

@@ -43,6 +43,16 @@ class WindowOptionsTest {
     }
 
     @Test
+    void framesAreRefusedWithTheClockToGiveInstead() {
+        Run run = Cli.run(EXAMPLE, "--window", "--frames", "3");
+        assertThat(run.exitCode()).isEqualTo(2);
+        String message = run.err().lines().findFirst().orElseThrow();
+        assertThat(message).isEqualTo("rtd: --window works on one picture, not on --frames; give --clock C for the "
+                + "moment you want");
+        assertThat(Docs.errors()).contains(message.replace("--window", "--explain")).contains("or `--window` with");
+    }
+
+    @Test
     void severalScenesOrStandardInputAreRefused() {
         Run two = Cli.run(EXAMPLE, EXAMPLE, "--window");
         assertThat(two.exitCode()).isEqualTo(2);
@@ -83,7 +93,7 @@ class WindowOptionsTest {
     void withoutADisplayTheExitCodeIs2WithOneLineAndNoStackTrace() throws Exception {
         // a new JVM without DISPLAY, as on a server or over SSH without X
         ProcessBuilder command = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), "rtd.cli.Main", EXAMPLE, "--window");
+                "-cp", System.getProperty("java.class.path"), "rtd.cli.Main", EXAMPLE, "--window", "--clock", "0.5"); // --clock is the window's starting clock
         command.environment().remove("DISPLAY");
         command.environment().remove("WAYLAND_DISPLAY");
         command.redirectOutput(dir.resolve("out.txt").toFile());

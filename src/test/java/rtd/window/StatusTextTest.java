@@ -20,4 +20,10 @@ class StatusTextTest {
         assertThat(StatusText.of(960, 540, 100_000_000L, 129_600L, 2, null, "cost"))
                 .isEqualTo("cost · 960 × 540 (blocks of 2 × 2) · last frame 0.100 s · 1.30 Mrays/s");
     }
+
+    @Test
+    void theClockIsWrittenWithThreeDecimals() {
+        assertThat(StatusText.clock(0.25)).isEqualTo("clock 0.250");
+        assertThat(StatusText.clock(1.0 / 3)).isEqualTo("clock 0.333");
+    }
 }

@@ -20,6 +20,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 import javax.imageio.ImageIO;
+import javax.swing.JSlider;
 import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Assumptions;
@@ -73,7 +74,7 @@ class WindowOnScreenTest {
             await(() -> onEdt(side::getText).contains(expected) ? true : null, "the explanation of the pixel");
             List<RayTreeProjection.Line> drawn = onEdt(() -> panel.rays());
             assertThat(drawn).hasSizeGreaterThan(3);
-            screenshot(panel);
+            screenshot(panel, "window-screenshot.png");
 
             // saving the file renders it again: the red sphere turned blue
             Files.writeString(scene, text.replace("(230|80|60)", "(60|80|230)"));
@@ -111,6 +112,46 @@ class WindowOnScreenTest {
         }
     }
 
+    @Test
+    void aSceneWithTheClockStartsAtClockCAndPPlaysAndPausesIt() throws Exception {
+        Assumptions.assumeTrue(Window.hasDisplay(), "no display (DISPLAY is not set): the window's test on a screen "
+                + "is skipped; run it under Xvfb, as .ci/run does");
+        Path orbit = Path.of("examples", "orbit.txt");
+        CompletableFuture<Cli.Run> run = CompletableFuture.supplyAsync(() -> Cli.run(orbit.toString(), "--window",
+                "--width", "160", "--height", "90", "--clock", "0.25"));
+        try {
+            PicturePanel panel = await(() -> find(PicturePanel.class), "the window");
+            WindowSession session = panel.session();
+            assertThat(awaitFinal(session)).isEqualTo(picture(orbit, "clock-0.25.png", 160, 90, "0.25"));
+            JSlider slider = await(() -> find(JSlider.class), "the clock slider");
+            assertThat(onEdt(() -> slider.isShowing() && slider.getValue() == 250)).isTrue();
+
+            Robot robot = new Robot();
+            robot.keyPress(KeyEvent.VK_P);
+            robot.keyRelease(KeyEvent.VK_P);
+            await(() -> onEdt(() -> session.clock().playing() && session.clock().clock() > 0.3 ? true : null),
+                    "the clock playing");
+            robot.keyPress(KeyEvent.VK_P);
+            robot.keyRelease(KeyEvent.VK_P);
+            double paused = await(() -> onEdt(() -> session.clock().playing() ? null : session.clock().clock()),
+                    "the clock paused");
+            int[] expected = picture(orbit, "paused.png", 160, 90, Double.toString(paused));
+            await(() -> onEdt(() -> session.shown().block() == 1
+                    && java.util.Arrays.equals(session.shown().picture().rgb(), expected) ? true : null),
+                    "the full picture at the paused clock");
+            assertThat(onEdt(() -> slider.getValue())).isEqualTo((int) Math.round(paused * 1000));
+            screenshot(panel, "window-clock-screenshot.png");
+
+            robot.keyPress(KeyEvent.VK_Q);
+            robot.keyRelease(KeyEvent.VK_Q);
+            assertThat(run.get(20, TimeUnit.SECONDS).exitCode()).isZero();
+        } finally {
+            for (Frame frame : Frame.getFrames()) {
+                SwingUtilities.invokeAndWait(frame::dispose);
+            }
+        }
+    }
+
     /** The full picture once the window shows it. */
     private static int[] awaitFinal(WindowSession session) throws Exception {
         return await(() -> onEdt(() -> {
@@ -121,22 +162,27 @@ class WindowOnScreenTest {
 
     /** The pixels {@code -o} writes for the scene at the window's size. */
     private int[] picture(Path scene, String name) throws Exception {
+        return picture(scene, name, W, H, "0");
+    }
+
+    /** The pixels {@code -o} writes for the scene at {@code w × h} and {@code --clock clock}. */
+    private int[] picture(Path scene, String name, int w, int h, String clock) throws Exception {
         Path out = dir.resolve(name);
-        assertThat(Cli.run(scene.toString(), "--width", "" + W, "--height", "" + H, "-o", out.toString()).exitCode())
-                .isZero();
+        assertThat(Cli.run(scene.toString(), "--width", "" + w, "--height", "" + h, "--clock", clock, "-o",
+                out.toString()).exitCode()).isZero();
         BufferedImage image = ImageIO.read(out.toFile());
-        int[] rgb = image.getRGB(0, 0, W, H, null, 0, W);
+        int[] rgb = image.getRGB(0, 0, w, h, null, 0, w);
         for (int i = 0; i < rgb.length; i++) {
             rgb[i] &= 0xFFFFFF;
         }
         return rgb;
     }
 
-    /** The window as the screen shows it, for the README: target/window-screenshot.png. */
-    private static void screenshot(PicturePanel panel) throws Exception {
+    /** The window as the screen shows it, for the README and a look: target/{@code name}. */
+    private static void screenshot(PicturePanel panel, String name) throws Exception {
         Thread.sleep(300);
         Rectangle bounds = onEdt(() -> SwingUtilities.getWindowAncestor(panel).getBounds());
-        Path file = Path.of("target", "window-screenshot.png");
+        Path file = Path.of("target", name);
         ImageIO.write(new Robot().createScreenCapture(bounds), "png", file.toFile());
     }
 
