@@ -14,9 +14,6 @@ import java.util.Set;
  */
 final class Names {
 
-    /** Words a {@code let} may not define: the clock, pi, the functions, and the words of the number format and of {@code (at x|y|z)}. */
-    private static final Set<String> RESERVED = reserved();
-
     private final double clock;
     private final Map<String, Expression> defined = new HashMap<>();
     private final Map<String, Integer> lines = new HashMap<>();
@@ -26,6 +23,14 @@ final class Names {
     /** The names of a reading at {@code clock}. */
     Names(double clock) {
         this.clock = clock;
+    }
+
+    /**
+     * Words a {@code let} may not define: the clock, pi, the functions, and the words of the number format and
+     * of {@code (at x|y|z)}; made when a name is first checked, so a file of plain numbers never needs them.
+     */
+    private static final class Reserved {
+        static final Set<String> WORDS = reserved();
     }
 
     private static Set<String> reserved() {
@@ -62,7 +67,7 @@ final class Names {
 
     /** Whether {@code word} is one a {@code let} may not take. */
     static boolean isReserved(String word) {
-        return RESERVED.contains(word);
+        return Reserved.WORDS.contains(word);
     }
 
     /** The line of the {@code let} that defined {@code name}, or of the broken one that tried to; or null. */

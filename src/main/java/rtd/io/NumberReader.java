@@ -13,7 +13,8 @@ final class NumberReader {
 
     private final LineCursor cursor;
     private final Names names;
-    private final ExpressionParser expressions;
+    /** Made at the first value that is no plain number: a file of plain numbers never loads the expression reader. */
+    private ExpressionParser expressions;
     /** Where the number read last starts. */
     int tokenStart;
     /** The expression read last, and its value in double precision; null for a plain number. */
@@ -23,7 +24,13 @@ final class NumberReader {
     NumberReader(LineCursor cursor, Names names) {
         this.cursor = cursor;
         this.names = names;
-        this.expressions = new ExpressionParser(cursor, names);
+    }
+
+    private ExpressionParser expressions() {
+        if (expressions == null) {
+            expressions = new ExpressionParser(cursor, names);
+        }
+        return expressions;
     }
 
     /**
@@ -81,7 +88,7 @@ final class NumberReader {
     /** Reads the expression from {@link #tokenStart}: its value at the clock, finite and within a float's range. */
     private float expression() throws StatementError {
         cursor.pos = tokenStart;
-        Expression read = expressions.read();
+        Expression read = expressions().read();
         String text = cursor.source.text(tokenStart, cursor.pos);
         String at = read.usesClock() ? " at clock = " + ClockText.format(names.clock()) : "";
         try {
@@ -160,7 +167,7 @@ final class NumberReader {
                     end++;
                 }
                 String word = cursor.source.text(i, end);
-                String nearest = expressions.nearestName(word);
+                String nearest = expressions().nearestName(word);
                 if (nearest != null && Hints.editDistance(word.toLowerCase(Locale.ROOT), nearest.toLowerCase(Locale.ROOT)) <= 1) {
                     return true;
                 }
