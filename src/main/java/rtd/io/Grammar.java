@@ -54,7 +54,7 @@ final class Grammar {
             Statement.shape("plane",
                     List.of(numbers("point", "x|y|z"), numbers("normal", "nx|ny|nz"), numbers("colour", "R|G|B")),
                     (v, out) -> out.object(new Plane(v.vector(0),
-                            v.direction(1, "the plane is at right angles to it; (0|1|0) makes a floor"), v.colour(2),
+                            Directions.direction(v, 1, "the plane is at right angles to it; (0|1|0) makes a floor"), v.colour(2),
                             v.material()))),
             Statement.shape("triangle",
                     List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
@@ -141,16 +141,16 @@ final class Grammar {
     private static OrthographicCamera orthographic(StatementValues v) throws StatementError {
         Vector3f pos = v.vector(0);
         if (v.isTarget(1)) {
-            return OrthographicCamera.lookingAt(pos, v.target(1, pos), v.positive(2));
+            return OrthographicCamera.lookingAt(pos, Directions.target(v, 1, pos), v.positive(2));
         }
-        return new OrthographicCamera(pos, v.direction(1, VIEW_HELP), v.positive(2));
+        return new OrthographicCamera(pos, Directions.direction(v, 1, VIEW_HELP), v.positive(2));
     }
 
     /** The perspective camera, looking along its direction or at its point. */
     private static PerspectiveCamera perspective(StatementValues v) throws StatementError {
         Vector3f pos = v.vector(0);
         boolean looksAtPoint = v.isTarget(1);
-        Vector3f view = looksAtPoint ? v.target(1, pos) : v.direction(1, VIEW_HELP);
+        Vector3f view = looksAtPoint ? Directions.target(v, 1, pos) : Directions.direction(v, 1, VIEW_HELP);
         float fov = v.between(2, 0, 180, "degrees", "it is the angle the picture's width spans, such as 60");
         return looksAtPoint ? PerspectiveCamera.lookingAt(pos, view, fov) : new PerspectiveCamera(pos, view, fov);
     }

@@ -177,50 +177,6 @@ final class StatementValues {
         return new Vector3f(groups.values[i], groups.values[i + 1], groups.values[i + 2]);
     }
 
-    /** The three numbers of group {@code g} as a direction: finite, not zero, not too short or long for float. */
-    Vector3f direction(int g, String zeroHelp) throws StatementError {
-        Vector3f direction = vector(g);
-        int i = groups.firsts[g];
-        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
-            throw errorAt(groups.starts[i], "the " + meaning(g) + " must not be zero, found " + groupText(g), zeroHelp);
-        }
-        float squaredLength = direction.dot(direction);
-        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
-            throw errorAt(groups.starts[i], "the " + meaning(g) + " " + groupText(g) + " is too "
-                    + (Float.isInfinite(squaredLength) ? "long" : "short") + " to compute with in float",
-                    "only its direction matters: scale it to a length near 1");
-        }
-        return direction;
-    }
-
-    /** A number for a hint, without a trailing ".0": 3, -0.5. */
-    private static String plain(float value) {
-        String text = Float.toString(value);
-        return text.endsWith(".0") ? text.substring(0, text.length() - 2) : text;
-    }
-
-    /**
-     * The point of group {@code g}, written {@code (at x|y|z)} (Part III): the direction to it from
-     * {@code from} must be neither zero nor too short or long for float.
-     */
-    Vector3f target(int g, Vector3f from) throws StatementError {
-        Vector3f target = vector(g);
-        Vector3f direction = target.subtract(from);
-        float squaredLength = direction.dot(direction);
-        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
-            throw errorAt(groups.starts[groups.firsts[g]], "the camera cannot look at its own position " + groupText(g),
-                    "give a point in front of the camera: (at " + plain(from.x()) + "|" + plain(from.y()) + "|"
-                            + plain(from.z() - 1) + ") looks along -z");
-        }
-        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
-            String tooWhat = Float.isInfinite(squaredLength) ? "far from" : "near";
-            throw errorAt(groups.starts[groups.firsts[g]], "the point " + groupText(g) + " is too " + tooWhat
-                    + " the camera's position to compute the view direction in float",
-                    "give a point at a distance near 1 to 1000 from the camera");
-        }
-        return target;
-    }
-
     /** The three numbers of group {@code g}: a colour, each channel a whole number from 0 to 255. */
     Color colour(int g) throws StatementError {
         if (g == groups.named) {
@@ -278,13 +234,13 @@ final class StatementValues {
         return (int) value;
     }
 
-    private String meaning(int g) {
+    String meaning(int g) {
         int own = statement.groups().size();
         return g < own ? statement.groups().get(g).meaning() : statement.optional(g - own).meaning();
     }
 
     /** Group {@code g} as written, "(0|0|0)"; "(at 0|0|0)" for a point to look at. */
-    private String groupText(int g) {
+    String groupText(int g) {
         StringBuilder text = new StringBuilder(g == groups.target ? "(at " : "(");
         for (int i = groups.firsts[g]; i < groups.end(g); i++) {
             text.append(i > groups.firsts[g] ? "|" : "").append(written(i));

@@ -1,7 +1,7 @@
 package rtd.pov;
 
-import java.math.BigDecimal;
-import java.util.Locale;
+import static rtd.pov.PovNumbers.num;
+
 import rtd.geometry.BoundingBox;
 import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
@@ -113,14 +113,4 @@ final class PovPaint {
         return filter > 0 ? "rgbt <" + rgb + ", " + num(filter) + ">" : "rgb <" + rgb + ">";
     }
 
-    private static String num(float value) {
-        return new BigDecimal(Float.toString(value)).stripTrailingZeros().toPlainString();
-    }
-
-    private static String num(double value) {
-        if (value == 0) {
-            return "0";
-        }
-        return new BigDecimal(String.format(Locale.ROOT, "%.17g", value)).stripTrailingZeros().toPlainString();
-    }
 }

@@ -1,7 +1,7 @@
 package rtd.pov;
 
-import java.math.BigDecimal;
-import java.util.Locale;
+import static rtd.pov.PovNumbers.num;
+
 import rtd.camera.ICamera;
 import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
@@ -288,18 +288,5 @@ public final class PovScene {
 
     private static double[] times(double[] a, double f) {
         return new double[] {a[0] * f, a[1] * f, a[2] * f};
-    }
-
-    /** A float exactly as rtd holds it (its shortest decimal); POV-Ray reads it as the same number. */
-    private static String num(float value) {
-        return new BigDecimal(Float.toString(value)).stripTrailingZeros().toPlainString();
-    }
-
-    /** A double to 17 significant digits, plain. */
-    private static String num(double value) {
-        if (value == 0) {
-            return "0";
-        }
-        return new BigDecimal(String.format(Locale.ROOT, "%.17g", value)).stripTrailingZeros().toPlainString();
     }
 }
