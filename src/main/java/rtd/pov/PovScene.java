@@ -19,6 +19,7 @@ import rtd.geometry.Transformed;
 import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
+import rtd.io.ClockedScene;
 import rtd.math.Vector3f;
 import rtd.scene.AreaLight;
 import rtd.scene.Light;
@@ -76,6 +77,20 @@ public final class PovScene {
 
     /** The POV-Ray text of {@code scene} as rtd draws it at {@code w × h}; {@code povFile} names the file, for the comment. */
     public static String of(Scene scene, int w, int h, String povFile) {
+        return of(scene, w, h, povFile, null);
+    }
+
+    /**
+     * As {@link #of(Scene, int, int, String)}, each number that uses the clock written with POV-Ray's {@code clock}
+     * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot}
+     * passes.
+     */
+    public static String of(ClockedScene clocked, int w, int h, String povFile) {
+        return of(clocked.scene(), w, h, povFile, new PovClock(clocked));
+    }
+
+    /** The text, the numbers that use the clock written by {@code clock} (null: a still). */
+    private static String of(Scene scene, int w, int h, String povFile, PovClock clock) {
         boolean shaded = !scene.lights().isEmpty();
         StringBuilder pov = new StringBuilder();
         pov.append("// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n");
@@ -90,13 +105,18 @@ public final class PovScene {
                     + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n");
         }
         pov.append("#version 3.7;\n\n");
-        pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? rgb(lightSum(scene)) : "rgb <1, 1, 1>")
+        String lightSum = clock == null ? rgb(lightSum(scene)) : clock.lightSum(scene.lights());
+        pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? lightSum : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
-        pov.append("background { ").append(rgb(scene.ambient())).append(" }\n\n");
-        pov.append(camera(scene.camera(), w, h)).append('\n');
+        pov.append("background { ").append(clock == null ? rgb(scene.ambient()) : clock.background(scene.ambient()))
+                .append(" }\n\n");
+        String moving = clock == null ? null : clock.camera(scene.camera(), w, h);
+        pov.append(moving != null ? moving : camera(scene.camera(), w, h)).append('\n');
         AreaLight written = null;
         for (Light light : scene.lights()) {
-            if (light.area() == null) {
+            if (light.area() == null && clock != null) {
+                pov.append(clock.light(light));
+            } else if (light.area() == null) {
                 pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
                         .append(" }\n");
             } else if (light.area() != written) { // its samples follow one another: the first writes it
@@ -105,7 +125,7 @@ public final class PovScene {
             }
         }
         for (IGeometry object : scene.objects()) {
-            pov.append(object(object, shaded));
+            pov.append(object(object, shaded, clock != null && clock.animates(object) ? clock : null));
         }
         return pov.toString();
     }
@@ -170,7 +190,8 @@ public final class PovScene {
         throw new IllegalArgumentException("the export knows the orthographic and the perspective camera only");
     }
 
-    private static String object(IGeometry object, boolean shaded) {
+    /** The object; {@code clock} writes its shape and colour if its numbers use the clock, else null. */
+    private static String object(IGeometry object, boolean shaded, PovClock clock) {
         IGeometry shape = object;
         String end = " }";
         if (shape instanceof Transformed transformed) { // the matrix after the pigment moves the pattern too
@@ -179,24 +200,29 @@ public final class PovScene {
         }
         Pattern pattern = shape instanceof Patterned patterned ? patterned.pattern() : null;
         shape = shape instanceof Patterned patterned ? patterned.shape() : shape;
-        String start = shape(shape); // "sphere { <x, y, z>, r": the pigment and finish follow
+        // "sphere { <x, y, z>, r": the pigment and finish follow
+        String start = clock == null ? shape(shape) : clock.shape(shape, object);
         if (!shaded) {
-            return start + " " + pigment(shape, pattern, object.color(), 0) + " finish { ambient 1 diffuse 0 }" + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, clock) + " finish { ambient 1 diffuse 0 }" + end + "\n";
         }
         Material m = object.material();
         if (m.transparency() <= 0) {
-            return start + " " + pigment(shape, pattern, object.color(), 0) + " " + finish(m, 1) + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, clock) + " " + finish(m, 1) + end + "\n";
         }
         float t = Math.min(m.transparency(), 0.999f); // POV-Ray's rgbt of 1 would leave no share to scale by
-        return start + " " + pigment(shape, pattern, object.color(), t) + " " + finish(m, 1 - t) + " interior { ior "
+        return start + " " + pigment(object, shape, pattern, t, clock) + " " + finish(m, 1 - t) + " interior { ior "
                 + num(m.ior()) + " } no_shadow" + end + "\n"
                 + start + " pigment { rgb 0 } no_image no_reflection" + end + " // its shadow\n";
     }
 
     /** A flat colour's pigment, or a pattern's; {@code filter} is rgbt's share let through (0: plain rgb). */
-    private static String pigment(IGeometry shape, Pattern pattern, Color colour, float filter) {
+    private static String pigment(IGeometry object, IGeometry shape, Pattern pattern, float filter, PovClock clock) {
         if (pattern != null) {
             return PovPaint.pigment(shape, pattern, filter);
+        }
+        Color colour = object.color();
+        if (clock != null) {
+            return clock.pigment(object, colour, filter);
         }
         if (filter <= 0) {
             return "pigment { " + rgb(colour) + " }";
