@@ -201,7 +201,7 @@ public final class PovClock {
 
     /** The camera, if a number of its statement uses the clock; else null. */
     String camera(ICamera camera, int w, int h) {
-        return clocked.camera().isEmpty() ? null : PovClockCamera.of(clocked.camera(), camera, w, h);
+        return clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
     }
 
     /** Number {@code k} of {@code group}: its expression if it uses the clock, else {@code value}. */

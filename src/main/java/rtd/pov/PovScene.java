@@ -1,11 +1,12 @@
 package rtd.pov;
 
+import static rtd.pov.PovNumbers.d;
 import static rtd.pov.PovNumbers.num;
+import static rtd.pov.PovNumbers.plus;
+import static rtd.pov.PovNumbers.rgb;
+import static rtd.pov.PovNumbers.times;
+import static rtd.pov.PovNumbers.vector;
 
-import rtd.camera.ICamera;
-import rtd.camera.ImageAxes;
-import rtd.camera.OrthographicCamera;
-import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
 import rtd.geometry.Cone;
 import rtd.geometry.Cylinder;
@@ -20,7 +21,6 @@ import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.io.ClockedScene;
-import rtd.math.Vector3f;
 import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
@@ -111,7 +111,7 @@ public final class PovScene {
         pov.append("background { ").append(clock == null ? rgb(scene.ambient()) : clock.background(scene.ambient()))
                 .append(" }\n\n");
         String moving = clock == null ? null : clock.camera(scene.camera(), w, h);
-        pov.append(moving != null ? moving : camera(scene.camera(), w, h)).append('\n');
+        pov.append(moving != null ? moving : PovCamera.of(scene.camera(), w, h)).append('\n');
         AreaLight written = null;
         for (Light light : scene.lights()) {
             if (light.area() == null && clock != null) {
@@ -156,38 +156,6 @@ public final class PovScene {
             sum = sum.plus(light.intensity());
         }
         return sum;
-    }
-
-    /**
-     * The camera, shifted from pixel centres to rtd's corners: {@code x' = x − ⌊w/2⌋} against
-     * POV-Ray's {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w).
-     */
-    static String camera(ICamera camera, int w, int h) {
-        double shiftX = w / 2.0 - w / 2 - 0.5;
-        double shiftY = h / 2.0 - h / 2 - 0.5;
-        if (camera instanceof OrthographicCamera ortho) {
-            double zoom = ortho.zoom();
-            double[] location = plus(plus(d(ortho.position()), times(d(ortho.widthVector()), shiftX / zoom)),
-                    times(d(ortho.heightVector()), shiftY / zoom));
-            // POV-Ray's look_at takes its right axis from sky × direction, which is zero looking straight up or down
-            String lookAt = ortho.target() == null || ImageAxes.looksStraightUpOrDown(ortho.direction()) ? ""
-                    : "\n  look_at " + vector(plus(location, d(ortho.direction())));
-            return "camera {\n  orthographic\n  location " + vector(location) + "\n  direction " + vector(d(ortho.direction()))
-                    + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
-                    + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + lookAt + "\n}\n";
-        }
-        if (camera instanceof PerspectiveCamera perspective) {
-            double f = w / 2.0 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2);
-            double[] forward = d(perspective.direction().normalize());
-            double[] direction = plus(plus(times(forward, f), times(d(perspective.widthVector()), shiftX)),
-                    times(d(perspective.heightVector()), shiftY));
-            String lookAt = perspective.target() == null ? "" : "\n  // look_at " + vector(d(perspective.target()))
-                    + ", written out: POV-Ray's look_at would undo the half-pixel shift in direction";
-            return "camera {\n  perspective\n  location " + vector(d(perspective.position())) + lookAt + "\n  direction "
-                    + vector(direction) + "\n  right " + vector(times(d(perspective.widthVector()), w))
-                    + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
-        }
-        throw new IllegalArgumentException("the export knows the orthographic and the perspective camera only");
     }
 
     /** The object; {@code clock} writes its shape and colour if its numbers use the clock, else null. */
@@ -286,33 +254,5 @@ public final class PovScene {
                     + num(c.secondRadius());
         }
         throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
-    }
-
-    private static String rgb(Color c) {
-        return rgb(Rgb.of(c));
-    }
-
-    private static String rgb(Rgb c) {
-        return "rgb <" + num(c.red()) + ", " + num(c.green()) + ", " + num(c.blue()) + ">";
-    }
-
-    private static String vector(Vector3f v) {
-        return vector(d(v));
-    }
-
-    private static String vector(double[] v) {
-        return "<" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + ">";
-    }
-
-    private static double[] d(Vector3f v) {
-        return new double[] {v.x(), v.y(), v.z()};
-    }
-
-    private static double[] plus(double[] a, double[] b) {
-        return new double[] {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-    }
-
-    private static double[] times(double[] a, double f) {
-        return new double[] {a[0] * f, a[1] * f, a[2] * f};
     }
 }
