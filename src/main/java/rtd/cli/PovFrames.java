@@ -69,7 +69,7 @@ final class PovFrames {
             cameras.add(file.at(plan.clock(i), null).camera());
         }
         ClockedScene clocked = file.withClock(plan.clock(0));
-        String why = options.scale().of(clocked.scene()) != clocked.scene() ? "--scale with the orthographic camera"
+        String why = options.scale().of(clocked.scene()) != clocked.scene() ? "the orthographic camera at --scale"
                 : PovClock.whyNot(clocked, cameras);
         if (why == null) {
             try {
@@ -80,8 +80,8 @@ final class PovFrames {
             }
         }
         StringBuilder pov = new StringBuilder("// Each frame is rtd's scene at clock = frame_number/" + (plan.frames() - 1)
-                + ", written out in the #case of its frame_number,\n// as this export does not write POV-Ray's clock for: "
-                + why + ".\n#switch (frame_number)\n");
+                + ", written out in the #case of its frame_number:\n// this export does not write the clock of " + why
+                + " as POV-Ray's clock.\n#switch (frame_number)\n");
         for (int i = 0; i < plan.frames(); i++) {
             pov.append("#case (").append(i).append(")\n").append(still(file, plan.clock(i), options, name)).append("#break\n");
         }

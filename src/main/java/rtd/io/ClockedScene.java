@@ -58,7 +58,7 @@ public final class ClockedScene {
         return !ambient.isEmpty() || !camera.isEmpty() || !parts.isEmpty() || !unwritten.isEmpty();
     }
 
-    /** The statements that use the clock where the table does not carry it, such as "line 4: 'material'". */
+    /** The statements that use the clock where the table does not carry it, such as "the 'material' at line 4". */
     public List<String> unwritten() {
         return unwritten;
     }

@@ -68,28 +68,28 @@ public final class PovClock {
     public static String whyNot(ClockedScene clocked, List<ICamera> cameras) {
         List<String> reasons = new ArrayList<>(clocked.unwritten());
         Scene scene = clocked.scene();
-        check(reasons, "ambient", "ambient", clocked.ambient());
-        check(reasons, "camera", "camera", clocked.camera());
+        check(reasons, "ambient", "'ambient'", clocked.ambient());
+        check(reasons, "camera", "the camera", clocked.camera());
         for (Light light : scene.lights()) {
-            check(reasons, "light", "light", clocked.of(light));
+            check(reasons, "light", "a light", clocked.of(light));
         }
         for (IGeometry object : scene.objects()) {
             ClockFields fields = clocked.of(object);
             IGeometry shape = object instanceof Transformed transformed ? transformed.shape() : object;
             if (shape instanceof Patterned && !fields.isEmpty()) {
-                reasons.add("a " + shape.kind() + " with a pattern");
+                reasons.add("a " + shape.kind() + " with a pattern, which follows its numbers");
             }
             check(reasons, shape.kind(), "a " + shape.kind(), fields);
         }
         if (!clocked.camera().isEmpty()) {
             for (ICamera camera : cameras) {
                 if (ImageAxes.looksStraightUpOrDown(direction(camera))) {
-                    reasons.add("the camera looks straight up or down at a frame");
+                    reasons.add("the camera, which looks straight up or down at a frame");
                     break;
                 }
             }
         }
-        return reasons.isEmpty() ? null : String.join(", ", reasons);
+        return reasons.isEmpty() ? null : String.join("; ", reasons);
     }
 
     private static void check(List<String> reasons, String kind, String what, ClockFields fields) {
