@@ -115,8 +115,11 @@ public final class PovClock {
         return rgb(clocked.ambient(), "colour", ambient);
     }
 
-    /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene. */
+    /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene; null if none uses the clock. */
     String lightSum(List<Light> lights) {
+        if (lights.stream().noneMatch(light -> clocked.of(light).has("intensity"))) {
+            return null; // the sum as rtd adds it, in float
+        }
         StringBuilder[] sums = {new StringBuilder(), new StringBuilder(), new StringBuilder()};
         for (Light light : lights) {
             Rgb intensity = light.intensity();

@@ -40,8 +40,8 @@ final class PovExpression {
             char op = operation.op();
             return op == '+' || op == '-' ? SUM : op == '^' ? ATOM : PRODUCT;
         }
-        if (e instanceof Expression.Negation) {
-            return SUM;
+        if (e instanceof Expression.Negation || e instanceof Expression.Number number && number.number() < 0) {
+            return SUM; // a let's plain number may be negative
         }
         return e instanceof Expression.Name name && !name.name().equals("pi") ? binds(name.definition()) : ATOM;
     }
@@ -106,8 +106,14 @@ final class PovExpression {
         };
     }
 
-    /** A number as written, in its shortest decimal, plain. */
+    /**
+     * A number in its shortest decimal, plain; a let's plain number, a float as a statement reads it, in the float's
+     * shortest decimal, as the export writes every number rtd holds.
+     */
     static String number(double value) {
+        if (value == (float) value) {
+            return PovNumbers.num((float) value);
+        }
         return new BigDecimal(Double.toString(value)).stripTrailingZeros().toPlainString();
     }
 }

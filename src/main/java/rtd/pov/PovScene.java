@@ -105,8 +105,9 @@ public final class PovScene {
                     + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n");
         }
         pov.append("#version 3.7;\n\n");
-        String lightSum = clock == null ? rgb(lightSum(scene)) : clock.lightSum(scene.lights());
-        pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? lightSum : "rgb <1, 1, 1>")
+        String lightSum = clock == null ? null : clock.lightSum(scene.lights());
+        pov.append("global_settings { assumed_gamma 1.0 ambient_light ")
+                .append(shaded ? lightSum != null ? lightSum : rgb(lightSum(scene)) : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
         pov.append("background { ").append(clock == null ? rgb(scene.ambient()) : clock.background(scene.ambient()))
                 .append(" }\n\n");

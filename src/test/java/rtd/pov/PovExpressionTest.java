@@ -88,4 +88,12 @@ class PovExpressionTest {
         assertThat(pov(lets, "2*shift")).isEqualTo("2 * (clock + 1)");
         assertThat(pov(lets, "shift + 1")).isEqualTo("clock + 1 + 1");
     }
+
+    @Test
+    void aLetsPlainNumberIsWrittenAsTheFloatItIsAndInParenthesesIfNegative() throws SceneException {
+        String lets = "let:(low):(-2)\nlet:(tenth):(0.1)\n";
+        assertThat(pov(lets, "clock * low")).isEqualTo("clock * (-2)");
+        assertThat(pov(lets, "low + clock")).isEqualTo("-2 + clock");
+        assertThat(pov(lets, "tenth * clock")).isEqualTo("0.1 * clock");
+    }
 }
