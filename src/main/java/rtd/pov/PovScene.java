@@ -46,7 +46,9 @@ import rtd.scene.Scene;
  *     intensities, and {@code max_trace_level 6} counts the camera's ray as rtd's 5 bounces do
  *     not; transparent objects are drawn with {@code rgbt}, their own shadow left to an opaque,
  *     invisible twin, as rtd's every object casts a full shadow;</li>
- * <li>gamma 1: values are linear, as rtd's.</li>
+ * <li>gamma 1: values are linear, as rtd's;</li>
+ * <li>an animation's numbers that use the clock: POV-Ray's {@code clock} in their expressions, and what rtd
+ *     works out from them worked out alike in POV-Ray ({@link PovClock}).</li>
  * </ul>
  */
 public final class PovScene {
