@@ -68,8 +68,10 @@ final class PovFrames {
         for (int i = 0; i < plan.frames(); i++) {
             cameras.add(file.at(plan.clock(i), null).camera());
         }
-        ClockedScene clocked = file.withClock(plan.clock(0));
-        String why = options.scale().of(clocked.scene()) != clocked.scene() ? "the orthographic camera at --scale"
+        ClockedScene read = file.withClock(plan.clock(0));
+        ClockedScene clocked = read.with(options.scale().of(read.scene()));
+        boolean scaled = clocked.scene() != read.scene(); // the orthographic camera's zoom times --scale
+        String why = scaled && !clocked.camera().isEmpty() ? "the orthographic camera at --scale"
                 : PovClock.whyNot(clocked, cameras);
         if (why == null) {
             try {

@@ -38,6 +38,14 @@ public final class ClockedScene {
         return scene;
     }
 
+    /**
+     * The same table beside {@code other}, a scene with the same objects and lights, such as this one at another
+     * size (its orthographic camera's zoom scaled).
+     */
+    public ClockedScene with(Scene other) {
+        return new ClockedScene(other, ambient, camera, parts, unwritten);
+    }
+
     /** The {@code ambient} statement's numbers that use the clock. */
     public ClockFields ambient() {
         return ambient;

@@ -135,6 +135,27 @@ class PovFramesTest {
                 .isLessThanOrEqualTo(W * H / 100);
     }
 
+    /** At {@code --scale 0.5} the orthographic camera's zoom is halved, as rtd halves it; one that follows the clock is written frame by frame. */
+    @Test
+    void anOrthographicSceneAtAScaleFollowsTheClockWithItsZoomScaled() throws Exception {
+        Files.writeString(dir.resolve("slide.txt"), "ambient:(0|0|40)\northographic_camera:(0|0|10):(0|0|-1):(40)\n"
+                + "sphere:(2*clock - 1|0|0):(1):(255|0|0)\n");
+        Run run = Cli.run(dir.resolve("slide.txt").toString(), "--frames", "" + FRAMES, "--width", "" + 2 * W, "--height",
+                "" + 2 * H, "--scale", "0.5", "-o", dir.resolve("slide.png").toString(), "--export-pov",
+                dir.resolve("slide.pov").toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(Files.readString(dir.resolve("slide.pov"))).contains("right <8, 0, 0>").doesNotContain("#switch");
+        Files.writeString(dir.resolve("zoom.txt"), "orthographic_camera:(0|0|10):(0|0|-1):(40 + clock)\n");
+        Run zoom = Cli.run(dir.resolve("zoom.txt").toString(), "--frames", "3", "--width", "64", "--height", "36", "--scale",
+                "0.5", "-o",
+                dir.resolve("zoom.png").toString(), "--export-pov", dir.resolve("zoom.pov").toString());
+        assertThat(zoom.exitCode()).as(zoom.err()).isZero();
+        assertThat(Files.readString(dir.resolve("zoom.pov"))).contains("the orthographic camera at --scale", "#switch");
+        assumePovRay();
+        assertThat(differing(povRay("slide", 2), rtd("slide", 2), 0)).as("pixels that differ, of " + W * H)
+                .isLessThanOrEqualTo(W * H / 400);
+    }
+
     @Test
     void aSceneThatDoesNotUseTheClockIsWrittenOnce() throws IOException {
         Run run = export(example("glass_and_mirror"), "still", 3, 64, 36);
