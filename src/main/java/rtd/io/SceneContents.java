@@ -112,10 +112,11 @@ final class SceneContents implements Statement.Output {
     @Override
     public void light(Light light) {
         lights.add(light);
-        if (recorder() != null && light.area() == null) {
-            recorder().part(light, values);
-        } else if (recorder() != null) {
-            recorder().unwritten(values);
+        ClockRecorder recorder = recorder();
+        if (recorder != null && light.area() == null) {
+            recorder.part(light, values);
+        } else if (recorder != null) {
+            recorder.unwritten(values); // an area light's samples: the export writes them frame by frame
         }
     }
 
