@@ -4,16 +4,23 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.List;
+import rtd.camera.ICamera;
+import rtd.io.ClockedScene;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
+import rtd.pov.PovClock;
 import rtd.pov.PovScene;
 
 /**
- * {@code --export-pov} with {@code --frames N}: one POV-Ray file for the whole animation. Each frame is the scene
- * at its clock written as {@link PovScene} writes a still, in a {@code #case} of POV-Ray's {@code frame_number},
- * so that each of POV-Ray's frames is the exact twin of rtd's (the camera's half-pixel shift included); the file's
- * first lines give the {@code povray} options that render the same N frames, {@code +KFI0 +KFF(N−1)} with the
- * clock from 0 to 1. A scene that never uses the clock is written once.
+ * {@code --export-pov} with {@code --frames N}: one POV-Ray file for the whole animation (Part III, "Frames on
+ * the command line"). Each number that uses the clock is written with POV-Ray's {@code clock} ({@link PovClock});
+ * a scene with a number that cannot be written so (a material, a pattern, a transformation that uses the clock)
+ * is written frame by frame instead, each frame as {@link PovScene} writes a still, in a {@code #case} of
+ * POV-Ray's {@code frame_number}. Either way each of POV-Ray's frames is the twin of rtd's (the camera's
+ * half-pixel shift included); the file's first lines give the {@code povray} options that render the same N
+ * frames, {@code +KFI0 +KFF(N−1)} with the clock from 0 to 1. A scene that never uses the clock is written once.
  */
 final class PovFrames {
 
@@ -30,17 +37,11 @@ final class PovFrames {
         StringBuilder pov = new StringBuilder();
         pov.append("// An animation of ").append(plan.frames()).append(" frames, written by rtd --export-pov --frames ")
                 .append(plan.frames()).append(". Render all of them with\n//   ").append(command).append('\n');
-        pov.append("// Each frame is rtd's scene at clock = frame_number/").append(plan.frames() - 1)
-                .append(", written out in the #case of its frame_number.\n");
         if (!file.usesClock()) {
+            pov.append("// The scene does not use the clock: every frame is the same picture.\n");
             pov.append(still(file, 0, options, name));
         } else {
-            pov.append("#switch (frame_number)\n");
-            for (int i = 0; i < plan.frames(); i++) {
-                pov.append("#case (").append(i).append(")\n").append(still(file, plan.clock(i), options, name))
-                        .append("#break\n");
-            }
-            pov.append("#end\n");
+            pov.append(animation(file, plan, options, name));
         }
         try {
             if (target.kind() == OutputTarget.Kind.STREAM) {
@@ -53,6 +54,40 @@ final class PovFrames {
         }
         return "rtd: wrote " + target.spelt() + "; render its " + plan.frames() + " frames with POV-Ray:\n  cd "
                 + PovScene.shellWord(target.spelt().toAbsolutePath().getParent().toString()) + " && " + command;
+    }
+
+    /**
+     * The animation: one scene whose numbers that use the clock are written with POV-Ray's {@code clock}, or, where
+     * {@link PovClock#whyNot} finds a number it cannot write so, each frame's scene in the {@code #case} of its
+     * {@code frame_number}. Either way the scene is read at every frame's clock first, so that a value that breaks a
+     * rule at some frame stops the export as it stops the frames.
+     */
+    private static String animation(SceneFile file, FramePlan plan, RenderOptions options, String name)
+            throws SceneException, FileError {
+        List<ICamera> cameras = new ArrayList<>();
+        for (int i = 0; i < plan.frames(); i++) {
+            cameras.add(file.at(plan.clock(i), null).camera());
+        }
+        ClockedScene read = file.withClock(plan.clock(0));
+        ClockedScene clocked = read.with(options.scale().of(read.scene()));
+        boolean scaled = clocked.scene() != read.scene(); // the orthographic camera's zoom times --scale
+        String why = scaled && !clocked.camera().isEmpty() ? "the orthographic camera at --scale"
+                : PovClock.whyNot(clocked, cameras);
+        if (why == null) {
+            try {
+                return "// Each number that uses rtd's clock is written with POV-Ray's clock, which runs from 0 to 1 over\n"
+                        + "// the frames as rtd's does.\n" + PovScene.of(clocked, options.width(), options.height(), name);
+            } catch (IllegalArgumentException e) {
+                throw new FileError("cannot export to POV-Ray: " + e.getMessage());
+            }
+        }
+        StringBuilder pov = new StringBuilder("// Each frame is rtd's scene at clock = frame_number/" + (plan.frames() - 1)
+                + ", written out in the #case of its frame_number:\n// this export does not write the clock of " + why
+                + " as POV-Ray's clock.\n#switch (frame_number)\n");
+        for (int i = 0; i < plan.frames(); i++) {
+            pov.append("#case (").append(i).append(")\n").append(still(file, plan.clock(i), options, name)).append("#break\n");
+        }
+        return pov.append("#end\n").toString();
     }
 
     private static String still(SceneFile file, double clock, RenderOptions options, String name) throws SceneException,

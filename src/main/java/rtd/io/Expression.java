@@ -8,8 +8,10 @@ import java.util.List;
  * expressions joined by {@code + - * / ^}, or a function called with its arguments. {@link ExpressionParser}
  * builds it; {@link #value} evaluates it in double precision for a clock. Each node knows where it starts in
  * the file, so that a value that is not a number (a division by 0 at some clock) is reported at its place.
+ * It is public, and immutable, so that the POV-Ray export can write a number that uses the clock as POV-Ray's
+ * own expression ({@link SceneFile#withClock}).
  */
-sealed interface Expression {
+public sealed interface Expression {
 
     /** The byte of the file where this part of the expression starts. */
     int start();
@@ -112,6 +114,11 @@ sealed interface Expression {
                 args[k] = arguments.get(k).value(clock);
             }
             return NotFinite.check(function.apply(args), this, null);
+        }
+
+        /** The function's name as a scene writes it: {@code sin}, {@code atan2}. */
+        public String functionName() {
+            return function.spelling();
         }
 
         @Override

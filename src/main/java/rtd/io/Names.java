@@ -19,10 +19,18 @@ final class Names {
     private final Map<String, Integer> lines = new HashMap<>();
     private final Map<String, Integer> broken = new HashMap<>();
     private boolean clockUsed;
+    /** Where the reading notes each statement's numbers that use the clock ({@link SceneFile#withClock}), or null. */
+    final ClockRecorder recorder;
 
     /** The names of a reading at {@code clock}. */
     Names(double clock) {
+        this(clock, null);
+    }
+
+    /** The names of a reading at {@code clock} that tells {@code recorder} (null: nobody) the numbers that use it. */
+    Names(double clock, ClockRecorder recorder) {
         this.clock = clock;
+        this.recorder = recorder;
     }
 
     /**

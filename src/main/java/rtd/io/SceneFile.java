@@ -66,7 +66,21 @@ public final class SceneFile {
      * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
      */
     public Scene at(double clock, List<SceneError> warnings) throws SceneException {
-        Names names = new Names(clock);
+        return parse(new Names(clock), warnings);
+    }
+
+    /**
+     * The scene at {@code clock} with the expression of every number that uses the clock, for writing an animation
+     * as one POV-Ray file; read as {@link #at} reads it, with that table besides.
+     *
+     * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
+     */
+    public ClockedScene withClock(double clock) throws SceneException {
+        ClockRecorder recorder = new ClockRecorder();
+        return recorder.scene(parse(new Names(clock, recorder), null));
+    }
+
+    private Scene parse(Names names, List<SceneError> warnings) throws SceneException {
         try (SourceText source = new SourceText(name, bytes, folder, meshes)) {
             Scene scene = SceneParser.parse(source, names, warnings);
             usesClock |= names.clockUsed();

@@ -1,11 +1,12 @@
 package rtd.pov;
 
+import static rtd.pov.PovNumbers.d;
 import static rtd.pov.PovNumbers.num;
+import static rtd.pov.PovNumbers.plus;
+import static rtd.pov.PovNumbers.rgb;
+import static rtd.pov.PovNumbers.times;
+import static rtd.pov.PovNumbers.vector;
 
-import rtd.camera.ICamera;
-import rtd.camera.ImageAxes;
-import rtd.camera.OrthographicCamera;
-import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
 import rtd.geometry.Cone;
 import rtd.geometry.Cylinder;
@@ -19,7 +20,7 @@ import rtd.geometry.Transformed;
 import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
-import rtd.math.Vector3f;
+import rtd.io.ClockedScene;
 import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
@@ -45,7 +46,9 @@ import rtd.scene.Scene;
  *     intensities, and {@code max_trace_level 6} counts the camera's ray as rtd's 5 bounces do
  *     not; transparent objects are drawn with {@code rgbt}, their own shadow left to an opaque,
  *     invisible twin, as rtd's every object casts a full shadow;</li>
- * <li>gamma 1: values are linear, as rtd's.</li>
+ * <li>gamma 1: values are linear, as rtd's;</li>
+ * <li>an animation's numbers that use the clock: POV-Ray's {@code clock} in their expressions, and what rtd
+ *     works out from them worked out alike in POV-Ray ({@link PovClock}).</li>
  * </ul>
  */
 public final class PovScene {
@@ -76,6 +79,20 @@ public final class PovScene {
 
     /** The POV-Ray text of {@code scene} as rtd draws it at {@code w × h}; {@code povFile} names the file, for the comment. */
     public static String of(Scene scene, int w, int h, String povFile) {
+        return of(scene, w, h, povFile, null);
+    }
+
+    /**
+     * As {@link #of(Scene, int, int, String)}, each number that uses the clock written with POV-Ray's {@code clock}
+     * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot}
+     * passes.
+     */
+    public static String of(ClockedScene clocked, int w, int h, String povFile) {
+        return of(clocked.scene(), w, h, povFile, new PovClock(clocked));
+    }
+
+    /** The text, the numbers that use the clock written by {@code clock} (null: a still). */
+    private static String of(Scene scene, int w, int h, String povFile, PovClock clock) {
         boolean shaded = !scene.lights().isEmpty();
         StringBuilder pov = new StringBuilder();
         pov.append("// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n");
@@ -90,13 +107,19 @@ public final class PovScene {
                     + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n");
         }
         pov.append("#version 3.7;\n\n");
-        pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? rgb(lightSum(scene)) : "rgb <1, 1, 1>")
+        String lightSum = clock == null ? null : clock.lightSum(scene.lights());
+        pov.append("global_settings { assumed_gamma 1.0 ambient_light ")
+                .append(shaded ? lightSum != null ? lightSum : rgb(lightSum(scene)) : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
-        pov.append("background { ").append(rgb(scene.ambient())).append(" }\n\n");
-        pov.append(camera(scene.camera(), w, h)).append('\n');
+        pov.append("background { ").append(clock == null ? rgb(scene.ambient()) : clock.background(scene.ambient()))
+                .append(" }\n\n");
+        String moving = clock == null ? null : clock.camera(scene.camera(), w, h);
+        pov.append(moving != null ? moving : PovCamera.of(scene.camera(), w, h)).append('\n');
         AreaLight written = null;
         for (Light light : scene.lights()) {
-            if (light.area() == null) {
+            if (light.area() == null && clock != null) {
+                pov.append(clock.light(light));
+            } else if (light.area() == null) {
                 pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
                         .append(" }\n");
             } else if (light.area() != written) { // its samples follow one another: the first writes it
@@ -105,7 +128,7 @@ public final class PovScene {
             }
         }
         for (IGeometry object : scene.objects()) {
-            pov.append(object(object, shaded));
+            pov.append(object(object, shaded, clock != null && clock.animates(object) ? clock : null));
         }
         return pov.toString();
     }
@@ -138,39 +161,8 @@ public final class PovScene {
         return sum;
     }
 
-    /**
-     * The camera, shifted from pixel centres to rtd's corners: {@code x' = x − ⌊w/2⌋} against
-     * POV-Ray's {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w).
-     */
-    static String camera(ICamera camera, int w, int h) {
-        double shiftX = w / 2.0 - w / 2 - 0.5;
-        double shiftY = h / 2.0 - h / 2 - 0.5;
-        if (camera instanceof OrthographicCamera ortho) {
-            double zoom = ortho.zoom();
-            double[] location = plus(plus(d(ortho.position()), times(d(ortho.widthVector()), shiftX / zoom)),
-                    times(d(ortho.heightVector()), shiftY / zoom));
-            // POV-Ray's look_at takes its right axis from sky × direction, which is zero looking straight up or down
-            String lookAt = ortho.target() == null || ImageAxes.looksStraightUpOrDown(ortho.direction()) ? ""
-                    : "\n  look_at " + vector(plus(location, d(ortho.direction())));
-            return "camera {\n  orthographic\n  location " + vector(location) + "\n  direction " + vector(d(ortho.direction()))
-                    + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
-                    + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + lookAt + "\n}\n";
-        }
-        if (camera instanceof PerspectiveCamera perspective) {
-            double f = w / 2.0 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2);
-            double[] forward = d(perspective.direction().normalize());
-            double[] direction = plus(plus(times(forward, f), times(d(perspective.widthVector()), shiftX)),
-                    times(d(perspective.heightVector()), shiftY));
-            String lookAt = perspective.target() == null ? "" : "\n  // look_at " + vector(d(perspective.target()))
-                    + ", written out: POV-Ray's look_at would undo the half-pixel shift in direction";
-            return "camera {\n  perspective\n  location " + vector(d(perspective.position())) + lookAt + "\n  direction "
-                    + vector(direction) + "\n  right " + vector(times(d(perspective.widthVector()), w))
-                    + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
-        }
-        throw new IllegalArgumentException("the export knows the orthographic and the perspective camera only");
-    }
-
-    private static String object(IGeometry object, boolean shaded) {
+    /** The object; {@code clock} writes its shape and colour if its numbers use the clock, else null. */
+    private static String object(IGeometry object, boolean shaded, PovClock clock) {
         IGeometry shape = object;
         String end = " }";
         if (shape instanceof Transformed transformed) { // the matrix after the pigment moves the pattern too
@@ -179,24 +171,29 @@ public final class PovScene {
         }
         Pattern pattern = shape instanceof Patterned patterned ? patterned.pattern() : null;
         shape = shape instanceof Patterned patterned ? patterned.shape() : shape;
-        String start = shape(shape); // "sphere { <x, y, z>, r": the pigment and finish follow
+        // "sphere { <x, y, z>, r": the pigment and finish follow
+        String start = clock == null ? shape(shape) : clock.shape(shape, object);
         if (!shaded) {
-            return start + " " + pigment(shape, pattern, object.color(), 0) + " finish { ambient 1 diffuse 0 }" + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, clock) + " finish { ambient 1 diffuse 0 }" + end + "\n";
         }
         Material m = object.material();
         if (m.transparency() <= 0) {
-            return start + " " + pigment(shape, pattern, object.color(), 0) + " " + finish(m, 1) + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, clock) + " " + finish(m, 1) + end + "\n";
         }
         float t = Math.min(m.transparency(), 0.999f); // POV-Ray's rgbt of 1 would leave no share to scale by
-        return start + " " + pigment(shape, pattern, object.color(), t) + " " + finish(m, 1 - t) + " interior { ior "
+        return start + " " + pigment(object, shape, pattern, t, clock) + " " + finish(m, 1 - t) + " interior { ior "
                 + num(m.ior()) + " } no_shadow" + end + "\n"
                 + start + " pigment { rgb 0 } no_image no_reflection" + end + " // its shadow\n";
     }
 
     /** A flat colour's pigment, or a pattern's; {@code filter} is rgbt's share let through (0: plain rgb). */
-    private static String pigment(IGeometry shape, Pattern pattern, Color colour, float filter) {
+    private static String pigment(IGeometry object, IGeometry shape, Pattern pattern, float filter, PovClock clock) {
         if (pattern != null) {
             return PovPaint.pigment(shape, pattern, filter);
+        }
+        Color colour = object.color();
+        if (clock != null) {
+            return clock.pigment(object, colour, filter);
         }
         if (filter <= 0) {
             return "pigment { " + rgb(colour) + " }";
@@ -260,33 +257,5 @@ public final class PovScene {
                     + num(c.secondRadius());
         }
         throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
-    }
-
-    private static String rgb(Color c) {
-        return rgb(Rgb.of(c));
-    }
-
-    private static String rgb(Rgb c) {
-        return "rgb <" + num(c.red()) + ", " + num(c.green()) + ", " + num(c.blue()) + ">";
-    }
-
-    private static String vector(Vector3f v) {
-        return vector(d(v));
-    }
-
-    private static String vector(double[] v) {
-        return "<" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + ">";
-    }
-
-    private static double[] d(Vector3f v) {
-        return new double[] {v.x(), v.y(), v.z()};
-    }
-
-    private static double[] plus(double[] a, double[] b) {
-        return new double[] {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-    }
-
-    private static double[] times(double[] a, double f) {
-        return new double[] {a[0] * f, a[1] * f, a[2] * f};
     }
 }

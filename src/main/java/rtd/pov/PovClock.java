@@ -1,0 +1,227 @@
+package rtd.pov;
+
+import static rtd.pov.PovNumbers.num;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import rtd.camera.ICamera;
+import rtd.camera.ImageAxes;
+import rtd.camera.OrthographicCamera;
+import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
+import rtd.geometry.IGeometry;
+import rtd.geometry.Patterned;
+import rtd.geometry.Plane;
+import rtd.geometry.Sphere;
+import rtd.geometry.Transformed;
+import rtd.geometry.Triangle;
+import rtd.image.Color;
+import rtd.image.Rgb;
+import rtd.io.ClockFields;
+import rtd.io.ClockedScene;
+import rtd.io.Expression;
+import rtd.math.Vector3f;
+import rtd.scene.Light;
+import rtd.scene.Scene;
+
+/**
+ * The numbers of an animated scene that use the clock, written as POV-Ray expressions of POV-Ray's own
+ * {@code clock} (Part III, "Frames on the command line"), so that one POV-Ray file draws every frame. Each
+ * number that uses the clock is written as its expression ({@link PovExpression}); each that does not, as the
+ * number rtd holds. What rtd works out from the numbers is worked out the same way in POV-Ray: a colour
+ * expression rounded ½ up to a whole number of 255ths, a plane's unit normal and distance, a box's smaller and
+ * larger corners, the camera's image axes and its half-pixel shift (as {@link PovScene} writes them).
+ *
+ * <p>It writes the cameras, {@code ambient}, point lights and every shape but a mesh's; a pattern on a shape
+ * whose numbers use the clock, and everything that {@link ClockedScene#unwritten} lists, it does not:
+ * {@link #whyNot} tells, and such an animation is written frame by frame.
+ */
+public final class PovClock {
+
+    /** The groups whose numbers it writes with the clock, for each kind of thing the scene file makes. */
+    private static final Map<String, Set<String>> WRITTEN = Map.of(
+            "sphere", Set.of("centre", "radius", "colour"),
+            "plane", Set.of("point", "normal", "colour"),
+            "triangle", Set.of("first corner", "second corner", "third corner", "colour"),
+            "box", Set.of("first corner", "second corner", "colour"),
+            "cylinder", Set.of("first end", "second end", "radius", "colour"),
+            "cone", Set.of("first end", "first radius", "second end", "second radius", "colour"),
+            "light", Set.of("position", "intensity"),
+            "camera", Set.of("position", "view direction", "field of view", "zoom"),
+            "ambient", Set.of("colour"));
+
+    private final ClockedScene clocked;
+
+    PovClock(ClockedScene clocked) {
+        this.clocked = clocked;
+    }
+
+    /**
+     * Why {@code clocked} cannot be written as one POV-Ray file that follows the clock, or null if it can:
+     * {@code cameras} are the scene's camera at every frame's clock, which must each have image axes that
+     * POV-Ray's {@code vcross} gives (rtd's camera looking straight up or down takes x as its right axis).
+     */
+    public static String whyNot(ClockedScene clocked, List<ICamera> cameras) {
+        List<String> reasons = new ArrayList<>(clocked.unwritten());
+        Scene scene = clocked.scene();
+        check(reasons, "ambient", "'ambient'", clocked.ambient());
+        check(reasons, "camera", "the camera", clocked.camera());
+        for (Light light : scene.lights()) {
+            check(reasons, "light", "a light", clocked.of(light));
+        }
+        for (IGeometry object : scene.objects()) {
+            ClockFields fields = clocked.of(object);
+            IGeometry shape = object instanceof Transformed transformed ? transformed.shape() : object;
+            if (shape instanceof Patterned && !fields.isEmpty()) {
+                reasons.add("a " + shape.kind() + " with a pattern, which follows its numbers");
+            }
+            check(reasons, shape.kind(), "a " + shape.kind(), fields);
+        }
+        if (!clocked.camera().isEmpty()) {
+            for (ICamera camera : cameras) {
+                if (ImageAxes.looksStraightUpOrDown(direction(camera))) {
+                    reasons.add("the camera, which looks straight up or down at a frame");
+                    break;
+                }
+            }
+        }
+        return reasons.isEmpty() ? null : String.join("; ", reasons);
+    }
+
+    private static void check(List<String> reasons, String kind, String what, ClockFields fields) {
+        Set<String> written = WRITTEN.getOrDefault(kind, Set.of());
+        for (String group : fields.groups()) {
+            if (!written.contains(group)) {
+                reasons.add("the " + group + " of " + what);
+            }
+        }
+    }
+
+    private static Vector3f direction(ICamera camera) {
+        return camera instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) camera).direction();
+    }
+
+    /** Whether a number of the statement that made {@code part} uses the clock. */
+    boolean animates(Object part) {
+        return !clocked.of(part).isEmpty();
+    }
+
+    /** The background, {@code ambient}'s colour. */
+    String background(Color ambient) {
+        return rgb(clocked.ambient(), "colour", ambient);
+    }
+
+    /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene; null if none uses the clock. */
+    String lightSum(List<Light> lights) {
+        if (lights.stream().noneMatch(light -> clocked.of(light).has("intensity"))) {
+            return null; // the sum as rtd adds it, in float
+        }
+        StringBuilder[] sums = {new StringBuilder(), new StringBuilder(), new StringBuilder()};
+        for (Light light : lights) {
+            Rgb intensity = light.intensity();
+            float[] channels = {intensity.red(), intensity.green(), intensity.blue()};
+            for (int k = 0; k < 3; k++) {
+                sums[k].append(sums[k].length() > 0 ? " + " : "").append(channel(clocked.of(light), "intensity", k, channels[k]));
+            }
+        }
+        return "rgb <" + sums[0] + ", " + sums[1] + ", " + sums[2] + ">";
+    }
+
+    /** A point light. */
+    String light(Light light) {
+        ClockFields f = clocked.of(light);
+        Rgb c = light.intensity();
+        return "light_source { " + vector(f, "position", light.position()) + ", rgb <" + channel(f, "intensity", 0, c.red())
+                + ", " + channel(f, "intensity", 1, c.green()) + ", " + channel(f, "intensity", 2, c.blue()) + "> }\n";
+    }
+
+    /** A shape's colour, as {@code rgb <…>} or, with a share let through ({@code filter > 0}), as {@code rgbt <…>}. */
+    String pigment(Object part, Color colour, float filter) {
+        ClockFields f = clocked.of(part);
+        Rgb c = Rgb.of(colour);
+        String channels = channel(f, "colour", 0, c.red()) + ", " + channel(f, "colour", 1, c.green()) + ", "
+                + channel(f, "colour", 2, c.blue());
+        return filter <= 0 ? "pigment { rgb <" + channels + "> }" : "pigment { rgbt <" + channels + ", " + num(filter) + "> }";
+    }
+
+    /** Channel {@code k} of a colour group: rtd rounds an expression ½ up to a whole number, then takes 255ths. */
+    private static String channel(ClockFields f, String group, int k, float fraction) {
+        Expression e = f.of(group, k);
+        return e == null ? num(fraction) : "floor(" + PovExpression.of(e) + " + 0.5) / 255";
+    }
+
+    /** The shape of {@code part} (the object, or inside its transformation), up to its pigment: {@code sphere { <…>, r}. */
+    String shape(IGeometry shape, Object part) {
+        ClockFields f = clocked.of(part);
+        if (shape instanceof Sphere s) {
+            return "sphere { " + vector(f, "centre", s.center()) + ", " + number(f, "radius", 0, s.radius());
+        }
+        if (shape instanceof Plane p) {
+            String n = "vnormalize(" + vector(f, "normal", p.normal()) + ")";
+            return "plane { " + n + ", vdot(" + vector(f, "point", p.point()) + ", " + n + ")";
+        }
+        if (shape instanceof Triangle t && !t.isSmooth()) {
+            return "triangle { " + vector(f, "first corner", t.corner(0)) + ", " + vector(f, "second corner", t.corner(1))
+                    + ", " + vector(f, "third corner", t.corner(2));
+        }
+        if (shape instanceof Box b) {
+            return "box { " + corners(f, b);
+        }
+        if (shape instanceof Cylinder c) {
+            return "cylinder { " + vector(f, "first end", c.first()) + ", " + vector(f, "second end", c.second()) + ", "
+                    + number(f, "radius", 0, c.radius());
+        }
+        if (shape instanceof Cone c) {
+            return "cone { " + vector(f, "first end", c.first()) + ", " + number(f, "first radius", 0, c.firstRadius())
+                    + ", " + vector(f, "second end", c.second()) + ", " + number(f, "second radius", 0, c.secondRadius());
+        }
+        throw new IllegalArgumentException("no POV-Ray shape with the clock for a " + shape.kind());
+    }
+
+    /** A box's smaller corner and its larger, as rtd's box takes them from the two corners written. */
+    private static String corners(ClockFields f, Box box) {
+        float[] min = {box.min().x(), box.min().y(), box.min().z()};
+        float[] max = {box.max().x(), box.max().y(), box.max().z()};
+        String[] low = new String[3];
+        String[] high = new String[3];
+        for (int k = 0; k < 3; k++) {
+            if (f.of("first corner", k) == null && f.of("second corner", k) == null) {
+                low[k] = num(min[k]);
+                high[k] = num(max[k]);
+            } else {
+                String a = number(f, "first corner", k, f.value("first corner", k));
+                String b = number(f, "second corner", k, f.value("second corner", k));
+                low[k] = "min(" + a + ", " + b + ")";
+                high[k] = "max(" + a + ", " + b + ")";
+            }
+        }
+        return "<" + String.join(", ", low) + ">, <" + String.join(", ", high) + ">";
+    }
+
+    /** The camera, if a number of its statement uses the clock; else null. */
+    String camera(ICamera camera, int w, int h) {
+        return clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
+    }
+
+    /** Number {@code k} of {@code group}: its expression if it uses the clock, else {@code value}. */
+    static String number(ClockFields f, String group, int k, float value) {
+        Expression e = f.of(group, k);
+        return e == null ? num(value) : PovExpression.of(e);
+    }
+
+    /** The three numbers of {@code group}, each its expression if it uses the clock, else {@code v}'s. */
+    static String vector(ClockFields f, String group, Vector3f v) {
+        return "<" + number(f, group, 0, v.x()) + ", " + number(f, group, 1, v.y()) + ", " + number(f, group, 2, v.z()) + ">";
+    }
+
+    /** {@code colour} as {@code rgb <…>}, its channels from {@code group} where they use the clock. */
+    private static String rgb(ClockFields f, String group, Color colour) {
+        Rgb c = Rgb.of(colour);
+        return "rgb <" + channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
+                + channel(f, group, 2, c.blue()) + ">";
+    }
+}

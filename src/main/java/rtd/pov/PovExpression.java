@@ -1,0 +1,119 @@
+package rtd.pov;
+
+import java.math.BigDecimal;
+import rtd.io.Expression;
+
+/**
+ * An expression of a scene file written in POV-Ray's scene language, for an animation whose numbers follow
+ * POV-Ray's {@code clock} (Part III, "Expressions, named values and the clock", and "Frames on the command line"):
+ * {@code clock} and {@code pi} as they are; rtd's {@code sin cos tan} take degrees, so their argument goes
+ * through {@code radians()}, and {@code asin acos atan atan2} answer in degrees, so they go through
+ * {@code degrees()}; {@code a ^ b} is {@code pow(a, b)}; {@code sqrt abs floor min max} are POV-Ray's own. A
+ * name that a {@code let} defined is written as its definition, in parentheses where it needs them, so the file
+ * needs no {@code #declare} for it. One method per kind of node; parentheses only where POV-Ray's order of
+ * operations would read the text otherwise, and around every minus sign that is not the first thing written.
+ */
+final class PovExpression {
+
+    /** How tightly each kind binds: a sum, a product, and everything written as one piece (a number, a call). */
+    private static final int SUM = 1;
+    private static final int PRODUCT = 2;
+    private static final int ATOM = 3;
+
+    private PovExpression() {
+    }
+
+    /** {@code e} as POV-Ray's expression of the same value. */
+    static String of(Expression e) {
+        return within(e, SUM);
+    }
+
+    /** {@code e}, in parentheses if it binds less tightly than {@code context} asks. */
+    private static String within(Expression e, int context) {
+        String text = text(e);
+        return binds(e) < context ? "(" + text + ")" : text;
+    }
+
+    /** How tightly {@code e} as written binds; a minus sign as loosely as a sum, so "a * -b" is written "a * (-b)". */
+    private static int binds(Expression e) {
+        if (e instanceof Expression.Operation operation) {
+            char op = operation.op();
+            return op == '+' || op == '-' ? SUM : op == '^' ? ATOM : PRODUCT;
+        }
+        if (e instanceof Expression.Negation || e instanceof Expression.Number number && number.number() < 0) {
+            return SUM; // a let's plain number may be negative
+        }
+        return e instanceof Expression.Name name && !name.name().equals("pi") ? binds(name.definition()) : ATOM;
+    }
+
+    private static String text(Expression e) {
+        if (e instanceof Expression.Operation operation) {
+            return operation(operation);
+        }
+        if (e instanceof Expression.Negation negation) {
+            return negation(negation);
+        }
+        if (e instanceof Expression.Name name) {
+            return name(name);
+        }
+        return atom(e);
+    }
+
+    /** {@code a + b}, {@code a - b}, {@code a * b}, {@code a / b}, each left to right; {@code pow(a, b)} for {@code a ^ b}. */
+    private static String operation(Expression.Operation operation) {
+        char op = operation.op();
+        if (op == '^') {
+            return "pow(" + of(operation.left()) + ", " + of(operation.right()) + ")";
+        }
+        int level = op == '+' || op == '-' ? SUM : PRODUCT;
+        return within(operation.left(), level) + " " + op + " " + within(operation.right(), level + 1);
+    }
+
+    /** {@code -a}. */
+    private static String negation(Expression.Negation negation) {
+        return "-" + within(negation.operand(), ATOM);
+    }
+
+    /** {@code pi} as POV-Ray's; a {@code let}'s name as its definition. */
+    private static String name(Expression.Name name) {
+        return name.name().equals("pi") ? "pi" : within(name.definition(), SUM);
+    }
+
+    /** A number, the clock, or a function's call. */
+    private static String atom(Expression e) {
+        if (e instanceof Expression.Number number) {
+            return number(number.number());
+        }
+        if (e instanceof Expression.Clock) {
+            return "clock";
+        }
+        if (e instanceof Expression.Call call) {
+            return call(call);
+        }
+        throw new IllegalArgumentException("no POV-Ray expression for " + e);
+    }
+
+    /** A function: angles in POV-Ray are radians, rtd's are degrees. */
+    private static String call(Expression.Call call) {
+        String a = of(call.arguments().get(0));
+        return switch (call.functionName()) {
+            case "sin", "cos", "tan" -> call.functionName() + "(radians(" + a + "))";
+            case "asin", "acos", "atan" -> "degrees(" + call.functionName() + "(" + a + "))";
+            case "atan2" -> "degrees(atan2(" + a + ", " + of(call.arguments().get(1)) + "))";
+            case "min", "max" -> call.functionName() + "(" + a + ", " + of(call.arguments().get(1)) + ")";
+            case "sqrt", "abs", "floor" -> call.functionName() + "(" + a + ")";
+            default -> throw new IllegalArgumentException("no POV-Ray function for " + call.functionName());
+        };
+    }
+
+    /**
+     * A number in its shortest decimal, plain; a let's plain number, a float as a statement reads it, in the float's
+     * shortest decimal, as the export writes every number rtd holds.
+     */
+    static String number(double value) {
+        if (value == (float) value) {
+            return PovNumbers.num((float) value);
+        }
+        return new BigDecimal(Double.toString(value)).stripTrailingZeros().toPlainString();
+    }
+}
