@@ -54,16 +54,18 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         return Kind.BVH;
     }
 
-    /** {@link #build} of what {@code accel} asks ({@link #choose}). */
+    /** {@link #build} of what {@code accel} asks ({@link #choose}), from nothing. */
     static Accelerator of(Scene scene, Accel accel, int width, int height, int samples, int threads) {
-        return build(choose(scene, accel), scene, width, height, samples, threads);
+        return build(choose(scene, accel), scene, width, height, samples, threads, new StructureCache());
     }
 
     /**
      * Builds {@code kind} for {@code scene}, for a {@code width × height} picture with
-     * {@code samples²} rays per pixel, with {@code threads} threads.
+     * {@code samples²} rays per pixel, with {@code threads} threads; the BVH and the light grids
+     * from {@code kept} where they still serve.
      */
-    static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads) {
+    static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads,
+            StructureCache kept) {
         switch (kind) {
             case GRID -> {
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
@@ -72,9 +74,9 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                         grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries")), false);
             }
             case GRID_AND_BVH -> {
-                CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene));
+                CompletableFuture<Bvh> tree = inBackground(() -> kept.bvh(scene));
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
-                LightGrids lights = LightGrids.build(scene, width, height, samples, threads);
+                LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
                 return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())),
                         () -> String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s, %s, and BVH of %s",
@@ -83,7 +85,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                                 StatsReport.count(bvh.nodeCount(), "node")), true);
             }
             case BVH -> {
-                Bvh bvh = Bvh.build(scene);
+                Bvh bvh = kept.bvh(scene);
                 return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
             }
             default -> {

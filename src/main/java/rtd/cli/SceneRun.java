@@ -49,6 +49,8 @@ final class SceneRun {
     private final RenderOptions options;
     private final StandardStreams streams;
     private final PrintWriter err;
+    /** What one frame built that the next may use again. */
+    private final StructureCache kept = new StructureCache();
 
     SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err) {
         this.options = options;
@@ -70,7 +72,7 @@ final class SceneRun {
             Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, options.accel());
             display.show(ProgressDisplay.Phase.of(kind.building));
             Accelerator accelerator = options.paper() ? null : Accelerator.build(kind, scene, options.width(),
-                    options.height(), options.samples(), options.threads());
+                    options.height(), options.samples(), options.threads(), kept);
             stats.endPhase("build");
 
             SceneWarnings.of(scene, options.width(), options.height(), !options.paper()) // --paper: no lights
@@ -232,10 +234,13 @@ final class SceneRun {
         }
     }
 
-    /** Builds what {@code --accel} chose and renders {@code scene}, quietly: one frame of an animation ({@link FrameRun}). */
+    /**
+     * Builds what {@code --accel} chose and renders {@code scene}, quietly: one frame of an animation
+     * ({@link FrameRun}), with what the last frame built that does not depend on the camera if it still serves.
+     */
     Picture draw(Scene scene) {
-        Accelerator accelerator = options.paper() ? null : Accelerator.of(scene, options.accel(), options.width(),
-                options.height(), options.samples(), options.threads());
+        Accelerator accelerator = options.paper() ? null : Accelerator.build(Accelerator.choose(scene, options.accel()),
+                scene, options.width(), options.height(), options.samples(), options.threads(), kept);
         return render(scene, accelerator, ProgressDisplay.start(false, err)).image();
     }
 
