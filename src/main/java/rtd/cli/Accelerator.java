@@ -22,6 +22,18 @@ import rtd.scene.Scene;
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
+    /** What {@code --accel} asks for. */
+    enum Accel {
+        /** As {@link #grid}; the hierarchy alone where the grid cannot serve the camera. */
+        auto,
+        /** The paper's loop over every object (Listing 4.3). */
+        none,
+        /** The bounding volume hierarchy for every ray. */
+        bvh,
+        /** The view grid for the camera's rays; with lights, the light grids and the BVH for the rest. */
+        grid
+    }
+
     /** What a run finds its hits with, and how the progress line names its building. */
     enum Kind {
         LOOP("the paper's loop: nothing to build"),

@@ -7,6 +7,7 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.camera.OrthographicCamera;
+import rtd.cli.Accelerator.Accel;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.image.Color;

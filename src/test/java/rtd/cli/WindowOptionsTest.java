@@ -13,6 +13,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import rtd.cli.Accelerator.Accel;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
@@ -93,7 +94,7 @@ class WindowOptionsTest {
     void withoutADisplayTheExitCodeIs2WithOneLineAndNoStackTrace() throws Exception {
         // a new JVM without DISPLAY, as on a server or over SSH without X
         ProcessBuilder command = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), "rtd.cli.Main", EXAMPLE, "--window", "--clock", "0.5"); // --clock is the window's starting clock
+                "-cp", System.getProperty("java.class.path"), "rtd.cli.RtdCommand", EXAMPLE, "--window", "--clock", "0.5"); // --clock is the window's starting clock
         command.environment().remove("DISPLAY");
         command.environment().remove("WAYLAND_DISPLAY");
         command.redirectOutput(dir.resolve("out.txt").toFile());
