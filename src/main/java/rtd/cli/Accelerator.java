@@ -22,8 +22,8 @@ import rtd.scene.Scene;
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
-    /** What {@code --accel} asks for. */
-    enum Accel {
+    /** The values of {@code --accel}: what the user chose, of which {@link #choose} makes a {@link Kind}. */
+    enum Choice {
         /** As {@link #grid}; the hierarchy alone where the grid cannot serve the camera. */
         auto,
         /** The paper's loop over every object (Listing 4.3). */
@@ -55,19 +55,19 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      * nothing to build for a scene without objects. The grid serves either camera at any number
      * of samples.
      */
-    static Kind choose(Scene scene, Accel accel) {
-        if (accel == Accel.none || scene.objects().isEmpty()) {
+    static Kind choose(Scene scene, Choice accel) {
+        if (accel == Choice.none || scene.objects().isEmpty()) {
             return Kind.LOOP;
         }
         boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
-        if (accel != Accel.bvh && gridFits) {
+        if (accel != Choice.bvh && gridFits) {
             return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
         }
         return Kind.BVH;
     }
 
     /** {@link #build} of what {@code accel} asks ({@link #choose}), from nothing. */
-    static Accelerator of(Scene scene, Accel accel, int width, int height, int samples, int threads) {
+    static Accelerator of(Scene scene, Choice accel, int width, int height, int samples, int threads) {
         return build(choose(scene, accel), scene, width, height, samples, threads, new StructureCache());
     }
 

@@ -88,7 +88,7 @@ public final class RtdCommand implements Callable<Integer> {
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
                     + "grid: a grid on the image for the camera's rays (with lights: a grid seen from each light for "
                     + "its shadow rays, and bvh for the rest); auto: grid (default: ${DEFAULT-VALUE})")
-    private Accelerator.Accel accel;
+    private Accelerator.Choice accel;
 
     @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "
             + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")

@@ -3,16 +3,11 @@ package rtd.cli;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -127,33 +122,16 @@ final class SceneRun {
         } catch (IllegalArgumentException e) {
             throw new FileError("cannot export to POV-Ray: " + e.getMessage());
         }
-        try {
-            if (target.kind() == OutputTarget.Kind.STREAM) {
-                Files.writeString(target.file(), text, StandardCharsets.UTF_8, StandardOpenOption.WRITE);
-            } else {
-                replaceWithText(target.file(), text);
-            }
-        } catch (IOException e) {
-            throw new FileError("cannot write '" + file + "'", e);
-        }
+        target.writeText(text);
         String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
         return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"
                 + "  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
                 + PovScene.command(name, png, width, height);
     }
 
-    /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */
+    /** As {@link OutputTarget#writeText}, for {@link PovFrames}. */
     static void replaceWithText(Path file, String text) throws IOException {
-        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
-        Path temporary = file.toAbsolutePath().getParent().resolve("." + file.getFileName() + "."
-                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
-        try {
-            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
-                    StandardOpenOption.WRITE);
-            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
-        } finally {
-            Files.deleteIfExists(temporary);
-        }
+        OutputTarget.replaceWithText(file, text);
     }
 
     /**

@@ -135,10 +135,10 @@ public final class WindowOptions {
      * the picture the view grid of its camera before those. Public for the window's benchmark.
      */
     public static Engine engine(String accel, int threads) {
-        return engine(Accelerator.Accel.valueOf(accel), threads);
+        return engine(Accelerator.Choice.valueOf(accel), threads);
     }
 
-    private static Engine engine(Accelerator.Accel accel, int threads) {
+    private static Engine engine(Accelerator.Choice accel, int threads) {
         return new Engine() {
             /** The view grid of this camera's picture where {@code -o} takes one, before what serves any camera. */
             @Override

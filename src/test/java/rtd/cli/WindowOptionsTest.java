@@ -13,7 +13,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import rtd.cli.Accelerator.Accel;
+import rtd.cli.Accelerator.Choice;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
@@ -72,7 +72,7 @@ class WindowOptionsTest {
     void theWindowHearsOfEachSaveOfTheSceneButNotOfItsFirstLook() throws Exception {
         Path scene = dir.resolve("scene.txt");
         Files.copy(Path.of(EXAMPLE), scene);
-        RenderOptions options = new RenderOptions(List.of(scene), null, 160, 90, new Scale(1), true, 1, Accel.auto,
+        RenderOptions options = new RenderOptions(List.of(scene), null, 160, 90, new Scale(1), true, 1, Choice.auto,
                 false, 1, false, false, 0);
         AtomicInteger saves = new AtomicInteger();
         AutoCloseable watching = WindowOptions.watch(options).start(saves::incrementAndGet);
