@@ -59,10 +59,7 @@ public final class MotionOptions {
             throw misuse(commandLine, replacing + " works on one picture, not on --frames; give --clock C for the moment "
                     + "you want");
         }
-        if (scenes.size() > 1) {
-            throw misuse(commandLine, "--frames works on one scene file, but " + scenes.size() + " were given; run rtd "
-                    + "once for each");
-        }
+        RtdCommand.oneSceneFile(commandLine, "--frames", scenes);
         if (OutputTarget.DASH.equals(output)) {
             throw misuse(commandLine, "--frames writes several pictures, which standard output (-o -) cannot hold; give "
                     + "a name such as -o frames.png (numbered frames) or -o movie.gif");

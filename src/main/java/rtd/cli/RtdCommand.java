@@ -271,6 +271,14 @@ public final class RtdCommand implements Callable<Integer> {
         return options();
     }
 
+    /** That {@code option}, which works on one picture, is given one scene file: a misuse if not. */
+    static void oneSceneFile(CommandLine commandLine, String option, List<Path> scenes) {
+        if (scenes.size() > 1) {
+            throw new ParameterException(commandLine, option + " works on one scene file, but " + scenes.size()
+                    + " were given; run rtd once for each");
+        }
+    }
+
     /** Whether the command line gave {@code option} (not its default). */
     private boolean given(String option) {
         return spec.commandLine().getParseResult().hasMatchedOption(option);

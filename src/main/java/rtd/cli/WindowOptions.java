@@ -49,13 +49,12 @@ public final class WindowOptions {
             + "renders it again; --clock C is the clock it starts at")
     private boolean window;
 
-    /** Whether {@code --window} was given. */
     boolean requested() {
         return window;
     }
 
     /** Opens the window, once the command line is checked, and returns the exit code when it is closed. */
-    int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException {
+    int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
         check(options, commandLine);
         String missing = Window.missingDisplay();
         if (missing != null) {
@@ -71,8 +70,7 @@ public final class WindowOptions {
         } catch (Window.NoDisplay e) {
             return noDisplay(err, e.getMessage());
         } catch (IOException e) {
-            err.println("rtd: " + e.getMessage()); // as -o says it: cannot read the scene file '…': why
-            return 1;
+            throw e.getCause() instanceof FileError error ? error : new FileError(e.getMessage());
         }
     }
 
@@ -116,10 +114,7 @@ public final class WindowOptions {
         return 2;
     }
 
-    /**
-     * The scene file, read once, each scene parsed from it at the {@code --scale} of the command line (its warnings
-     * are not shown); a file that cannot be read is an {@link IOException} with {@code -o}'s message.
-     */
+    /** The scene file, read once, each scene parsed from it at {@code --scale} (its warnings not shown). */
     private static ClockedScene read(RenderOptions options) throws IOException {
         try {
             return new ClockedScene(SceneSource.of(options.scene()).readFile(null), options.scale()::of);
