@@ -11,7 +11,7 @@ import rtd.scene.Scene;
  * while the frame's objects equal the last frame's, the light grids while its objects and lights do. Records
  * compare by value; a shape that is no record (a mesh's triangle) equals only itself, so a shape made anew is
  * built anew. A camera that moves over still objects rebuilds only the view grid, and every pixel is the one a
- * build from nothing gives. The frames of one run share one picture size and samples, which the grids depend on.
+ * build from nothing gives.
  */
 final class StructureCache {
 
@@ -23,9 +23,9 @@ final class StructureCache {
         return bvh.get(scene.objects(), () -> Bvh.build(scene));
     }
 
-    /** The light grids of {@code scene}'s objects and lights: the last ones if both are equal. */
+    /** The light grids of {@code scene}'s objects and lights: the last ones if both, and the size, are equal. */
     LightGrids lightGrids(Scene scene, int width, int height, int samples, int threads) {
-        return lightGrids.get(List.of(scene.objects(), scene.lights()),
+        return lightGrids.get(List.of(scene.objects(), scene.lights(), width, height, samples),
                 () -> LightGrids.build(scene, width, height, samples, threads));
     }
 

@@ -134,6 +134,7 @@ public final class WindowOptions {
     }
 
     private static Engine engine(Accelerator.Choice accel, int threads) {
+        StructureCache kept = new StructureCache(); // a clock that moves only the camera keeps the BVH
         return new Engine() {
             /** The view grid of this camera's picture where {@code -o} takes one, before what serves any camera. */
             @Override
@@ -153,11 +154,11 @@ public final class WindowOptions {
                 if (kind == Accelerator.Kind.LOOP) {
                     return () -> new LinearTracer(scene);
                 }
-                Bvh bvh = Bvh.build(scene);
+                Bvh bvh = kept.bvh(scene);
                 if (kind != Accelerator.Kind.GRID_AND_BVH) {
                     return bvh::newTracer;
                 }
-                LightGrids lights = LightGrids.build(scene, width, height, 1, threads);
+                LightGrids lights = kept.lightGrids(scene, width, height, 1, threads);
                 return () -> lights.newTracer(bvh.newTracer());
             }
         };

@@ -54,6 +54,14 @@ class StructureCacheTest {
         assertThat(kept.lightGrids(sphereMoved, 40, 20, 1, 1)).isNotSameAs(grids);
     }
 
+    @Test
+    void anotherPictureSizeRebuildsTheLightGrids() {
+        StructureCache kept = new StructureCache();
+        var grids = kept.lightGrids(frame(0, 0, 0), 40, 20, 1, 1);
+        assertThat(kept.lightGrids(frame(1, 0, 0), 40, 20, 1, 1)).isSameAs(grids);
+        assertThat(kept.lightGrids(frame(1, 0, 0), 80, 40, 1, 1)).isNotSameAs(grids);
+    }
+
     /** A triangle is no record: one made anew is not known to be the same, so the BVH is built again. */
     @Test
     void aShapeThatIsNoRecordIsKeptOnlyAsTheSameObject() {
