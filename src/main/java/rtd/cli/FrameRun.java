@@ -22,24 +22,10 @@ import rtd.scene.SceneWarnings;
  * breaks a rule at some frame (a radius below 0 at clock = 0.75) stops the run before any drawing. While a
  * frame is written the next is drawn. Each picture is written all or nothing; a GIF as a whole.
  */
-final class FrameRun {
+record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err, CommandLine commandLine, FramePlan plan) {
 
     /** Files up to this size are parsed at every clock before the first frame is drawn. */
     private static final int CHECKED_AHEAD = 1 << 20;
-
-    private final RenderOptions options;
-    private final StandardStreams streams;
-    private final PrintWriter err;
-    private final CommandLine commandLine;
-    private final FramePlan plan;
-
-    FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err, CommandLine commandLine, FramePlan plan) {
-        this.options = options;
-        this.streams = streams;
-        this.err = err;
-        this.commandLine = commandLine;
-        this.plan = plan;
-    }
 
     /** Draws the plan's frames of {@code source} to {@code target} (numbered, or one GIF); the POV-Ray twin to {@code export}. */
     void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,

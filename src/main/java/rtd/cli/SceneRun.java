@@ -38,19 +38,13 @@ import rtd.view.ViewShader;
  * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
  * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete. Also
  * {@code --view}, which draws what the rays did instead.
+ *
+ * @param kept what one frame built that the next may use again
  */
-final class SceneRun {
-
-    private final RenderOptions options;
-    private final StandardStreams streams;
-    private final PrintWriter err;
-    /** What one frame built that the next may use again. */
-    private final StructureCache kept = new StructureCache();
+record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, StructureCache kept) {
 
     SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err) {
-        this.options = options;
-        this.streams = streams;
-        this.err = err;
+        this(options, streams, err, new StructureCache());
     }
 
     /**
