@@ -60,8 +60,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
 
             Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, options.accel());
             display.show(ProgressDisplay.Phase.of(kind.building));
-            Accelerator accelerator = options.paper() ? null : Accelerator.build(kind, scene, options.width(),
-                    options.height(), options.samples(), options.threads(), kept);
+            Accelerator accelerator = build(kind, scene);
             stats.endPhase("build");
 
             SceneWarnings.of(scene, options.width(), options.height(), !options.paper()) // --paper: no lights
@@ -211,9 +210,14 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
      * ({@link FrameRun}), with what the last frame built that does not depend on the camera if it still serves.
      */
     Picture draw(Scene scene) {
-        Accelerator accelerator = options.paper() ? null : Accelerator.build(Accelerator.choose(scene, options.accel()),
-                scene, options.width(), options.height(), options.samples(), options.threads(), kept);
-        return render(scene, accelerator, ProgressDisplay.start(false, err)).image();
+        return render(scene, build(Accelerator.choose(scene, options.accel()), scene), ProgressDisplay.start(false, err))
+                .image();
+    }
+
+    /** {@code kind} built for {@code scene} as the options ask, with what {@link #kept} still holds; null for --paper. */
+    private Accelerator build(Accelerator.Kind kind, Scene scene) {
+        return options.paper() ? null : Accelerator.build(kind, scene, options.width(), options.height(),
+                options.samples(), options.threads(), kept);
     }
 
     /**
