@@ -36,7 +36,8 @@ final class StructureCache {
 
         synchronized V get(K wanted, Supplier<V> build) {
             if (value == null || !wanted.equals(key)) {
-                value = null; // the old structure may go before the new one is built: never two in memory
+                key = null;
+                value = null; // the old structure and its objects may go before the new one is built
                 value = build.get();
                 key = wanted;
             }
