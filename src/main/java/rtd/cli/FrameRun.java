@@ -31,7 +31,8 @@ import rtd.scene.SceneWarnings;
  * breaks a rule at some frame (a radius below 0 at clock = 0.75) stops the run before any drawing. While a
  * frame is written the next is drawn. Each picture is written all or nothing; a GIF as a whole.
  */
-record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err, CommandLine commandLine, FramePlan plan) {
+record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err, CommandLine commandLine,
+        FramePlan plan) {
 
     /** Files up to this size are parsed at every clock before the first frame is drawn. */
     private static final int CHECKED_AHEAD = 1 << 20;
@@ -186,7 +187,8 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                 return gifTarget.spelt() + " (" + written.get() + " frames, a delay of " + plan.delayHundredths()
                         + " hundredths of a second each)";
             }
-            return written.get() + " frames, " + targets.get(0).spelt() + " to " + targets.get(targets.size() - 1).spelt();
+            return written.get() + " frames, " + targets.get(0).spelt() + " to "
+                    + targets.get(targets.size() - 1).spelt();
         }
 
         private void waitFor(Future<Void> frame) throws FileError {

@@ -210,11 +210,11 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
      * ({@link FrameRun}), with what the last frame built that does not depend on the camera if it still serves.
      */
     Picture draw(Scene scene) {
-        return render(scene, build(Accelerator.choose(scene, options.accel()), scene), ProgressDisplay.start(false, err))
-                .image();
+        Accelerator accelerator = build(Accelerator.choose(scene, options.accel()), scene);
+        return render(scene, accelerator, ProgressDisplay.start(false, err)).image();
     }
 
-    /** {@code kind} built for {@code scene} as the options ask, with what {@link #kept} still holds; null for --paper. */
+    /** {@code kind} built for {@code scene} as the options ask, with what {@link #kept} holds; null for --paper. */
     private Accelerator build(Accelerator.Kind kind, Scene scene) {
         return options.paper() ? null : Accelerator.build(kind, scene, options.width(), options.height(),
                 options.samples(), options.threads(), kept);

@@ -169,12 +169,13 @@ class FramesTest {
     @Test
     void eachFrameIsThePictureOfItsClockDrawnAloneWhetherTheObjectsMoveOrNot() throws IOException {
         String lit = "ambient:(20|20|40)\nperspective_camera:(12*sin(90*clock)|3|12*cos(90*clock)):(at 0|0|0):(50)\n"
-                + "light:(%s|20|10):(255|255|255)\nsphere:(%s|0|0):(1.5):(200|60|40)\nplane:(0|-1.5|0):(0|1|0):(90|90|90)\n"
-                + "box:(2|-1.5|-1):(3|0|1):(40|160|60)\n";
+                + "light:(%s|20|10):(255|255|255)\nsphere:(%s|0|0):(1.5):(200|60|40)\n"
+                + "plane:(0|-1.5|0):(0|1|0):(90|90|90)\nbox:(2|-1.5|-1):(3|0|1):(40|160|60)\n";
         for (String[] moving : new String[][] {{"-8", "-1"}, {"-8 + 16*clock", "-1 + 2*clock"}}) {
             Path scene = Files.writeString(dir.resolve("lit.txt"), String.format(lit, (Object[]) moving));
             for (String accel : new String[] {"auto", "bvh"}) {
-                Run frames = rtd(scene.toString(), "--frames", "3", "--accel", accel, "-o", dir.resolve("f.png").toString());
+                Run frames = rtd(scene.toString(), "--frames", "3", "--accel", accel, "-o",
+                        dir.resolve("f.png").toString());
                 assertThat(frames.exitCode()).as(frames.err()).isZero();
                 for (int i = 1; i <= 2; i++) {
                     Path alone = dir.resolve("alone-" + i + ".png");
