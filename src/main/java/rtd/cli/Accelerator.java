@@ -22,6 +22,18 @@ import rtd.scene.Scene;
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
+    /** The values of {@code --accel}: what the user chose, of which {@link #choose} makes a {@link Kind}. */
+    enum Choice {
+        /** As {@link #grid}; the hierarchy alone where the grid cannot serve the camera. */
+        auto,
+        /** The paper's loop over every object (Listing 4.3). */
+        none,
+        /** The bounding volume hierarchy for every ray. */
+        bvh,
+        /** The view grid for the camera's rays; with lights, the light grids and the BVH for the rest. */
+        grid
+    }
+
     /** What a run finds its hits with, and how the progress line names its building. */
     enum Kind {
         LOOP("the paper's loop: nothing to build"),
@@ -43,27 +55,29 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      * nothing to build for a scene without objects. The grid serves either camera at any number
      * of samples.
      */
-    static Kind choose(Scene scene, Accel accel) {
-        if (accel == Accel.none || scene.objects().isEmpty()) {
+    static Kind choose(Scene scene, Choice accel) {
+        if (accel == Choice.none || scene.objects().isEmpty()) {
             return Kind.LOOP;
         }
         boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
-        if (accel != Accel.bvh && gridFits) {
+        if (accel != Choice.bvh && gridFits) {
             return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
         }
         return Kind.BVH;
     }
 
-    /** {@link #build} of what {@code accel} asks ({@link #choose}). */
-    static Accelerator of(Scene scene, Accel accel, int width, int height, int samples, int threads) {
-        return build(choose(scene, accel), scene, width, height, samples, threads);
+    /** {@link #build} of what {@code accel} asks ({@link #choose}), from nothing. */
+    static Accelerator of(Scene scene, Choice accel, int width, int height, int samples, int threads) {
+        return build(choose(scene, accel), scene, width, height, samples, threads, new StructureCache());
     }
 
     /**
      * Builds {@code kind} for {@code scene}, for a {@code width × height} picture with
-     * {@code samples²} rays per pixel, with {@code threads} threads.
+     * {@code samples²} rays per pixel, with {@code threads} threads; the BVH and the light grids
+     * from {@code kept} where they still serve.
      */
-    static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads) {
+    static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads,
+            StructureCache kept) {
         switch (kind) {
             case GRID -> {
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
@@ -72,9 +86,9 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                         grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries")), false);
             }
             case GRID_AND_BVH -> {
-                CompletableFuture<Bvh> tree = inBackground(() -> Bvh.build(scene));
+                CompletableFuture<Bvh> tree = inBackground(() -> kept.bvh(scene));
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
-                LightGrids lights = LightGrids.build(scene, width, height, samples, threads);
+                LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
                 return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())),
                         () -> String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s, %s, and BVH of %s",
@@ -83,7 +97,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                                 StatsReport.count(bvh.nodeCount(), "node")), true);
             }
             case BVH -> {
-                Bvh bvh = Bvh.build(scene);
+                Bvh bvh = kept.bvh(scene);
                 return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
             }
             default -> {

@@ -1,12 +1,21 @@
 package rtd.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import picocli.CommandLine;
 import rtd.image.Picture;
+import rtd.io.AnimatedGif;
 import rtd.io.ClockText;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
@@ -22,24 +31,11 @@ import rtd.scene.SceneWarnings;
  * breaks a rule at some frame (a radius below 0 at clock = 0.75) stops the run before any drawing. While a
  * frame is written the next is drawn. Each picture is written all or nothing; a GIF as a whole.
  */
-final class FrameRun {
+record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err, CommandLine commandLine,
+        FramePlan plan) {
 
     /** Files up to this size are parsed at every clock before the first frame is drawn. */
     private static final int CHECKED_AHEAD = 1 << 20;
-
-    private final RenderOptions options;
-    private final StandardStreams streams;
-    private final PrintWriter err;
-    private final CommandLine commandLine;
-    private final FramePlan plan;
-
-    FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err, CommandLine commandLine, FramePlan plan) {
-        this.options = options;
-        this.streams = streams;
-        this.err = err;
-        this.commandLine = commandLine;
-        this.plan = plan;
-    }
 
     /** Draws the plan's frames of {@code source} to {@code target} (numbered, or one GIF); the POV-Ray twin to {@code export}. */
     void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
@@ -52,7 +48,7 @@ final class FrameRun {
         SceneFile file = source.readFile(streams);
         String summary;
         try (ProgressDisplay display = ProgressDisplay.start(options.progress(), err);
-                FrameWriter writer = new FrameWriter(gif ? target : null, targets, format, plan, streams)) {
+                Writer writer = new Writer(gif ? target : null, targets, format)) {
             display.show(ProgressDisplay.Phase.of("reading " + source.name()));
             List<SceneError> warnings = new ArrayList<>();
             Scene first = frame(file, plan.first(), warnings);
@@ -73,7 +69,7 @@ final class FrameRun {
     }
 
     /** Draws each frame and hands it to the writer, which writes it while the next is drawn. */
-    private void drawAll(SceneFile file, Scene first, FrameWriter writer, ProgressDisplay display)
+    private void drawAll(SceneFile file, Scene first, Writer writer, ProgressDisplay display)
             throws SceneException, FileError {
         SceneRun renderer = new SceneRun(options, streams, err);
         Picture picture = null;
@@ -120,5 +116,114 @@ final class FrameRun {
                     : OutputTarget.of(plan.frameFile(target.spelt(), i), scene, "-o", commandLine));
         }
         return targets;
+    }
+
+    /**
+     * Writes frames while the next are drawn: numbered pictures on two threads, each a frame behind the drawing, or
+     * one animated GIF, whose frames go in order, on one. A failed write is thrown at the next frame handed over,
+     * or at {@link #finish}; closing stops the writers and lets an unfinished GIF's file go.
+     */
+    private final class Writer implements AutoCloseable {
+
+        private final int writers;
+        private final ExecutorService threads;
+        private final OutputTarget gifTarget;
+        private final List<OutputTarget> targets;
+        private final ImageFormat format;
+        private final ArrayDeque<Future<Void>> pending = new ArrayDeque<>();
+        private AnimatedGif gif;
+        private final AtomicInteger written = new AtomicInteger();
+
+        Writer(OutputTarget gifTarget, List<OutputTarget> targets, ImageFormat format) {
+            this.gifTarget = gifTarget;
+            this.targets = targets;
+            this.format = format;
+            this.writers = gifTarget != null ? 1 : 2;
+            this.threads = Executors.newFixedThreadPool(writers, runnable -> {
+                Thread t = new Thread(runnable, "rtd-frame-writer");
+                t.setDaemon(true);
+                return t;
+            });
+        }
+
+        /** Writes frame {@code i}, once fewer frames than there are writers wait to be written. */
+        void write(int i, Picture picture) throws FileError {
+            while (pending.size() >= writers) {
+                waitFor(pending.removeFirst());
+            }
+            pending.addLast(threads.submit(() -> {
+                if (gifTarget != null) {
+                    if (gif == null) {
+                        gif = gifTarget.kind() == OutputTarget.Kind.STREAM
+                                ? AnimatedGif.into(gifTarget.file(), plan.delayHundredths())
+                                : AnimatedGif.replacing(gifTarget.file(), plan.delayHundredths());
+                    }
+                    gif.add(picture);
+                } else {
+                    targets.get(i - plan.first()).write(picture, format, streams.out(), f -> { });
+                }
+                written.incrementAndGet();
+                return null;
+            }));
+        }
+
+        /** Waits for the last frame, and ends the GIF. */
+        void finish() throws FileError {
+            while (!pending.isEmpty()) {
+                waitFor(pending.removeFirst());
+            }
+            if (gif != null) {
+                try {
+                    gif.finish();
+                } catch (IOException e) {
+                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", e);
+                }
+            }
+        }
+
+        /** What was written: "60 frames, orbit-000.png to orbit-059.png", "orbit.gif (60 frames, 24 per second)". */
+        String describe() {
+            if (gifTarget != null) {
+                return gifTarget.spelt() + " (" + written.get() + " frames, a delay of " + plan.delayHundredths()
+                        + " hundredths of a second each)";
+            }
+            return written.get() + " frames, " + targets.get(0).spelt() + " to "
+                    + targets.get(targets.size() - 1).spelt();
+        }
+
+        private void waitFor(Future<Void> frame) throws FileError {
+            try {
+                frame.get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new FileError("interrupted while writing the frames");
+            } catch (ExecutionException e) {
+                Throwable cause = e.getCause();
+                if (cause instanceof FileError fileError) {
+                    throw fileError;
+                }
+                if (cause instanceof IOException io) {
+                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", io);
+                }
+                throw cause instanceof RuntimeException runtime ? runtime : new IllegalStateException(cause);
+            }
+        }
+
+        @Override
+        public void close() {
+            threads.shutdownNow();
+            try {
+                threads.awaitTermination(1, TimeUnit.MINUTES); // the GIF is closed once no frame is being added
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            try {
+                if (gif != null) {
+                    gif.close();
+                }
+            } catch (IOException e) {
+                // the run has failed already, or the GIF is in place: nothing to add
+            }
+        }
     }
 }

@@ -21,22 +21,13 @@ import rtd.view.View;
  * Where each scene's picture goes and in which format, and where {@code --view} and {@code --export-pov} write, all
  * checked before any rendering: a mistake on the command line stops the run before any work, and a long render does
  * not end in a failed write.
+ *
+ * @param output the picture that {@code -o} names, or null for each scene's default
  */
-final class JobPlanner {
+record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine) {
 
     /** A scene with where its picture goes, or the file error (reported in its turn) for why it cannot go there. */
     record Job(SceneSource source, OutputTarget target, ImageFormat format, FileError refusal) {
-    }
-
-    /** The picture that {@code -o} names, or null for each scene's default. */
-    private final Path output;
-    private final StandardStreams streams;
-    private final CommandLine commandLine;
-
-    JobPlanner(Path output, StandardStreams streams, CommandLine commandLine) {
-        this.output = output;
-        this.streams = streams;
-        this.commandLine = commandLine;
     }
 
     /** Each scene's job, in order; one picture name cannot serve several scenes. */

@@ -6,10 +6,8 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
-import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
-import picocli.CommandLine.TypeConversionException;
 
 /**
  * The options of motion, a picocli mixin of {@link RtdCommand} (Part III, "Frames on the command line"):
@@ -19,19 +17,16 @@ import picocli.CommandLine.TypeConversionException;
  */
 public final class MotionOptions {
 
-    /** The most frames an animation may have: a slip of a digit is caught, a long film is not refused. */
-    static final int MOST_FRAMES = 1_000_000;
-
-    @Option(names = "--clock", paramLabel = "C", converter = FiniteNumber.class,
+    @Option(names = "--clock", paramLabel = "C", converter = OptionValues.FiniteNumber.class,
             description = "the value of clock in the scene's expressions (default: 0)")
     private Double clock;
 
-    @Option(names = "--frames", paramLabel = "N", converter = FrameCount.class,
+    @Option(names = "--frames", paramLabel = "N", converter = OptionValues.FrameCount.class,
             description = "draw N pictures (N at least 2), frame i at clock = i/(N-1): -o NAME.png writes NAME-000.png, "
                     + "NAME-001.png, ...; -o NAME.gif one looping animated GIF")
     private Integer frames;
 
-    @Option(names = "--fps", paramLabel = "F", converter = FramesPerSecond.class,
+    @Option(names = "--fps", paramLabel = "F", converter = OptionValues.FramesPerSecond.class,
             description = "frames per second of the animated GIF (default: 24)")
     private Double fps;
 
@@ -64,10 +59,7 @@ public final class MotionOptions {
             throw misuse(commandLine, replacing + " works on one picture, not on --frames; give --clock C for the moment "
                     + "you want");
         }
-        if (scenes.size() > 1) {
-            throw misuse(commandLine, "--frames works on one scene file, but " + scenes.size() + " were given; run rtd "
-                    + "once for each");
-        }
+        RtdCommand.oneSceneFile(commandLine, "--frames", scenes);
         if (OutputTarget.DASH.equals(output)) {
             throw misuse(commandLine, "--frames writes several pictures, which standard output (-o -) cannot hold; give "
                     + "a name such as -o frames.png (numbered frames) or -o movie.gif");
@@ -102,52 +94,5 @@ public final class MotionOptions {
 
     private static ParameterException misuse(CommandLine commandLine, String message) {
         return new ParameterException(commandLine, message);
-    }
-
-    /** A finite number, for {@code --clock}. */
-    static final class FiniteNumber implements ITypeConverter<Double> {
-        @Override
-        public Double convert(String value) {
-            try {
-                double number = Double.parseDouble(value.strip());
-                if (Double.isFinite(number) && !value.strip().matches(".*[dDfFxX].*")) {
-                    return number;
-                }
-            } catch (NumberFormatException e) {
-                // said below
-            }
-            throw new TypeConversionException("'" + value + "' is not a number, such as 0.5");
-        }
-    }
-
-    /** A whole number of frames, from 2 to {@link #MOST_FRAMES}. */
-    static final class FrameCount implements ITypeConverter<Integer> {
-        @Override
-        public Integer convert(String value) {
-            if (!value.strip().matches("\\d{1,9}") || Integer.parseInt(value.strip()) < 2
-                    || Integer.parseInt(value.strip()) > MOST_FRAMES) {
-                throw new TypeConversionException("'" + value + "' is not a whole number of frames from 2 to "
-                        + String.format(Locale.ROOT, "%,d", MOST_FRAMES) + " (an animation has a first and a last frame)");
-            }
-            return Integer.parseInt(value.strip());
-        }
-    }
-
-    /** Frames per second, above 0 and at most 100: a GIF counts its delays in hundredths of a second. */
-    static final class FramesPerSecond implements ITypeConverter<Double> {
-        @Override
-        public Double convert(String value) {
-            Double number = null;
-            try {
-                number = new FiniteNumber().convert(value);
-            } catch (TypeConversionException e) {
-                // said below
-            }
-            if (number == null || !(number > 0 && number <= 100)) {
-                throw new TypeConversionException("'" + value + "' is not a number of frames per second above 0 and at "
-                        + "most 100 (a GIF counts its frames' delays in hundredths of a second), such as 24");
-            }
-            return number;
-        }
     }
 }

@@ -3,6 +3,7 @@ package rtd.cli;
 import java.io.File;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
 
@@ -10,6 +11,19 @@ import picocli.CommandLine.TypeConversionException;
 final class OptionValues {
 
     private OptionValues() {
+    }
+
+    /** The most frames an animation may have: a slip of a digit is caught, a long film is not refused. */
+    static final int MOST_FRAMES = 1_000_000;
+
+    /** {@code value} as a finite decimal number (no hexadecimal, no "2d" or "2f"), or null. */
+    private static Double finite(String value) {
+        try {
+            double number = Double.parseDouble(value.strip());
+            return Double.isFinite(number) && !value.strip().matches(".*[dDfFxX].*") ? number : null;
+        } catch (NumberFormatException e) {
+            return null;
+        }
     }
 
     /** A whole number greater than 0, such as {@code --width 800}. */
@@ -110,6 +124,44 @@ final class OptionValues {
                         + "', so it names a folder, not a file; add the file's name after it");
             }
             return new FileName().convert(value);
+        }
+    }
+
+    /** A finite number, for {@code --clock}. */
+    static final class FiniteNumber implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String value) {
+            Double number = finite(value);
+            if (number == null) {
+                throw new TypeConversionException("'" + value + "' is not a number, such as 0.5");
+            }
+            return number;
+        }
+    }
+
+    /** {@code --frames N}: a whole number of frames, from 2 to {@link #MOST_FRAMES}. */
+    static final class FrameCount implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String value) {
+            Integer frames = value.strip().matches("[0-9]{1,9}") ? Integer.valueOf(value.strip()) : null;
+            if (frames == null || frames < 2 || frames > MOST_FRAMES) {
+                throw new TypeConversionException(String.format(Locale.ROOT, "'%s' is not a whole number of frames "
+                        + "from 2 to %,d (an animation has a first and a last frame)", value, MOST_FRAMES));
+            }
+            return frames;
+        }
+    }
+
+    /** {@code --fps F}: above 0 and at most 100, as a GIF counts its delays in hundredths of a second. */
+    static final class FramesPerSecond implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String value) {
+            Double number = finite(value);
+            if (number == null || !(number > 0 && number <= 100)) {
+                throw new TypeConversionException("'" + value + "' is not a number of frames per second above 0 and at "
+                        + "most 100 (a GIF counts its frames' delays in hundredths of a second), such as 24");
+            }
+            return number;
         }
     }
 }

@@ -3,8 +3,12 @@ package rtd.cli;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.util.concurrent.ThreadLocalRandom;
 import java.util.function.DoubleConsumer;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
@@ -55,6 +59,33 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
                         + "before the end (broken pipe)");
             }
             throw new FileError("cannot write '" + spelt + "'", e);
+        }
+    }
+
+    /** Writes {@code text} here in UTF-8; a regular file only whole. */
+    void writeText(String text) throws FileError {
+        try {
+            if (kind == Kind.STREAM) {
+                Files.writeString(file, text, StandardCharsets.UTF_8, StandardOpenOption.WRITE);
+            } else {
+                replaceWithText(file, text);
+            }
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + spelt + "'", e);
+        }
+    }
+
+    /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */
+    static void replaceWithText(Path file, String text) throws IOException {
+        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
+        Path temporary = file.toAbsolutePath().getParent().resolve("." + file.getFileName() + "."
+                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
+        try {
+            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
+                    StandardOpenOption.WRITE);
+            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
+        } finally {
+            Files.deleteIfExists(temporary);
         }
     }
 

@@ -16,7 +16,7 @@ import java.util.List;
  * @param clock    {@code --clock}, the clock of a single picture (Part III); 0 by default
  */
 record RenderOptions(List<Path> scenes, Path output, int width, int height, Scale scale, boolean given, int threads,
-        Accel accel, boolean paper, int samples, boolean stats, boolean progress, double clock) {
+        Accelerator.Choice accel, boolean paper, int samples, boolean stats, boolean progress, double clock) {
 
     Path scene() {
         return scenes.get(0);

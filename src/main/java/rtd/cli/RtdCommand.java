@@ -17,6 +17,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.UnmatchedArgumentException;
+import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 
 /**
@@ -87,7 +88,7 @@ public final class RtdCommand implements Callable<Integer> {
             description = "none: the paper's loop over every object; bvh: a bounding volume hierarchy; "
                     + "grid: a grid on the image for the camera's rays (with lights: a grid seen from each light for "
                     + "its shadow rays, and bvh for the rest); auto: grid (default: ${DEFAULT-VALUE})")
-    private Accel accel;
+    private Accelerator.Choice accel;
 
     @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "
             + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
@@ -121,6 +122,12 @@ public final class RtdCommand implements Callable<Integer> {
 
     private RtdCommand(StandardStreams streams) {
         this.streams = streams;
+    }
+
+    /** Runs the command and exits with its code: 0 done, 1 scene or file error, 2 misuse. */
+    public static void main(String[] args) {
+        WarmUp.start(ImageFormat.PNG); // the usual format, warmed while picocli starts and the scene is read
+        System.exit(commandLine().execute(args));
     }
 
     /** The command line of rtd, with its error handlers, writing in the terminal's encoding, ready to {@code execute}. */
@@ -262,6 +269,14 @@ public final class RtdCommand implements Callable<Integer> {
                     : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
         }
         return options();
+    }
+
+    /** That {@code option}, which works on one picture, is given one scene file: a misuse if not. */
+    static void oneSceneFile(CommandLine commandLine, String option, List<Path> scenes) {
+        if (scenes.size() > 1) {
+            throw new ParameterException(commandLine, option + " works on one scene file, but " + scenes.size()
+                    + " were given; run rtd once for each");
+        }
     }
 
     /** Whether the command line gave {@code option} (not its default). */

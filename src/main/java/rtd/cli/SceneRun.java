@@ -3,16 +3,11 @@ package rtd.cli;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -43,17 +38,13 @@ import rtd.view.ViewShader;
  * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
  * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete. Also
  * {@code --view}, which draws what the rays did instead.
+ *
+ * @param kept what one frame built that the next may use again
  */
-final class SceneRun {
-
-    private final RenderOptions options;
-    private final StandardStreams streams;
-    private final PrintWriter err;
+record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, StructureCache kept) {
 
     SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err) {
-        this.options = options;
-        this.streams = streams;
-        this.err = err;
+        this(options, streams, err, new StructureCache());
     }
 
     /**
@@ -69,8 +60,7 @@ final class SceneRun {
 
             Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, options.accel());
             display.show(ProgressDisplay.Phase.of(kind.building));
-            Accelerator accelerator = options.paper() ? null : Accelerator.build(kind, scene, options.width(),
-                    options.height(), options.samples(), options.threads());
+            Accelerator accelerator = build(kind, scene);
             stats.endPhase("build");
 
             SceneWarnings.of(scene, options.width(), options.height(), !options.paper()) // --paper: no lights
@@ -125,33 +115,16 @@ final class SceneRun {
         } catch (IllegalArgumentException e) {
             throw new FileError("cannot export to POV-Ray: " + e.getMessage());
         }
-        try {
-            if (target.kind() == OutputTarget.Kind.STREAM) {
-                Files.writeString(target.file(), text, StandardCharsets.UTF_8, StandardOpenOption.WRITE);
-            } else {
-                replaceWithText(target.file(), text);
-            }
-        } catch (IOException e) {
-            throw new FileError("cannot write '" + file + "'", e);
-        }
+        target.writeText(text);
         String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
         return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"
                 + "  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
                 + PovScene.command(name, png, width, height);
     }
 
-    /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */
+    /** As {@link OutputTarget#writeText}, for {@link PovFrames}. */
     static void replaceWithText(Path file, String text) throws IOException {
-        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
-        Path temporary = file.toAbsolutePath().getParent().resolve("." + file.getFileName() + "."
-                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
-        try {
-            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
-                    StandardOpenOption.WRITE);
-            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
-        } finally {
-            Files.deleteIfExists(temporary);
-        }
+        OutputTarget.replaceWithText(file, text);
     }
 
     /**
@@ -232,11 +205,19 @@ final class SceneRun {
         }
     }
 
-    /** Builds what {@code --accel} chose and renders {@code scene}, quietly: one frame of an animation ({@link FrameRun}). */
+    /**
+     * Builds what {@code --accel} chose and renders {@code scene}, quietly: one frame of an animation
+     * ({@link FrameRun}), with what the last frame built that does not depend on the camera if it still serves.
+     */
     Picture draw(Scene scene) {
-        Accelerator accelerator = options.paper() ? null : Accelerator.of(scene, options.accel(), options.width(),
-                options.height(), options.samples(), options.threads());
+        Accelerator accelerator = build(Accelerator.choose(scene, options.accel()), scene);
         return render(scene, accelerator, ProgressDisplay.start(false, err)).image();
+    }
+
+    /** {@code kind} built for {@code scene} as the options ask, with what {@link #kept} holds; null for --paper. */
+    private Accelerator build(Accelerator.Kind kind, Scene scene) {
+        return options.paper() ? null : Accelerator.build(kind, scene, options.width(), options.height(),
+                options.samples(), options.threads(), kept);
     }
 
     /**

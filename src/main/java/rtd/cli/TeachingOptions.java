@@ -160,10 +160,7 @@ public final class TeachingOptions {
             throw new ParameterException(commandLine, "--explain takes the pixel as X,Y with a comma, and '" + number
                     + "' was read as a scene file; did you mean --explain " + explain.strip() + "," + number + "?");
         }
-        if (options.scenes().size() > 1) {
-            throw new ParameterException(commandLine, option + " works on one scene file, but " + options.scenes().size()
-                    + " were given; run rtd once for each");
-        }
+        RtdCommand.oneSceneFile(commandLine, option, options.scenes());
         if (options.scene().toString().equals("-")) {
             throw new ParameterException(commandLine, option + " needs a scene file; it cannot work on standard input "
                     + "('-')");

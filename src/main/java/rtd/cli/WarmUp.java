@@ -13,9 +13,9 @@ import rtd.shade.FlatShader;
 
 /**
  * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}) and then of the reader, the view grid
- * and the renderer on a tiny scene: {@link Main} starts it before the command line is parsed, so that classes are
- * loaded on a spare core while picocli starts and the scene is read. Nothing it makes is kept; it is per JVM, as
- * what it loads is, and so the one piece of state that outlives a run.
+ * and the renderer on a tiny scene: {@link RtdCommand#main} starts it before the command line is parsed, so that
+ * classes are loaded on a spare core while picocli starts and the scene is read. Nothing it makes is kept; it is
+ * per JVM, as what it loads is, and so the one piece of state that outlives a run.
  */
 final class WarmUp {
 

@@ -49,13 +49,12 @@ public final class WindowOptions {
             + "renders it again; --clock C is the clock it starts at")
     private boolean window;
 
-    /** Whether {@code --window} was given. */
     boolean requested() {
         return window;
     }
 
     /** Opens the window, once the command line is checked, and returns the exit code when it is closed. */
-    int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException {
+    int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
         check(options, commandLine);
         String missing = Window.missingDisplay();
         if (missing != null) {
@@ -71,8 +70,7 @@ public final class WindowOptions {
         } catch (Window.NoDisplay e) {
             return noDisplay(err, e.getMessage());
         } catch (IOException e) {
-            err.println("rtd: " + e.getMessage()); // as -o says it: cannot read the scene file '…': why
-            return 1;
+            throw e.getCause() instanceof FileError error ? error : new FileError(e.getMessage());
         }
     }
 
@@ -116,10 +114,7 @@ public final class WindowOptions {
         return 2;
     }
 
-    /**
-     * The scene file, read once, each scene parsed from it at the {@code --scale} of the command line (its warnings
-     * are not shown); a file that cannot be read is an {@link IOException} with {@code -o}'s message.
-     */
+    /** The scene file, read once, each scene parsed from it at {@code --scale} (its warnings not shown). */
     private static ClockedScene read(RenderOptions options) throws IOException {
         try {
             return new ClockedScene(SceneSource.of(options.scene()).readFile(null), options.scale()::of);
@@ -135,10 +130,11 @@ public final class WindowOptions {
      * the picture the view grid of its camera before those. Public for the window's benchmark.
      */
     public static Engine engine(String accel, int threads) {
-        return engine(Accel.valueOf(accel), threads);
+        return engine(Accelerator.Choice.valueOf(accel), threads);
     }
 
-    private static Engine engine(Accel accel, int threads) {
+    private static Engine engine(Accelerator.Choice accel, int threads) {
+        StructureCache kept = new StructureCache(); // a clock that moves only the camera keeps the BVH
         return new Engine() {
             /** The view grid of this camera's picture where {@code -o} takes one, before what serves any camera. */
             @Override
@@ -158,11 +154,11 @@ public final class WindowOptions {
                 if (kind == Accelerator.Kind.LOOP) {
                     return () -> new LinearTracer(scene);
                 }
-                Bvh bvh = Bvh.build(scene);
+                Bvh bvh = kept.bvh(scene);
                 if (kind != Accelerator.Kind.GRID_AND_BVH) {
                     return bvh::newTracer;
                 }
-                LightGrids lights = LightGrids.build(scene, width, height, 1, threads);
+                LightGrids lights = kept.lightGrids(scene, width, height, 1, threads);
                 return () -> lights.newTracer(bvh.newTracer());
             }
         };

@@ -7,6 +7,7 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.camera.OrthographicCamera;
+import rtd.cli.Accelerator.Choice;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.image.Color;
@@ -30,26 +31,26 @@ class AcceleratorTest {
 
     @Test
     void autoTakesTheViewGridWithTheLightGridsWhereThereAreLights() {
-        assertThat(Accelerator.choose(spheres(2, false), Accel.auto)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(1_000, false), Accel.auto)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(2, true), Accel.auto)).as("lights").isEqualTo(Accelerator.Kind.GRID_AND_BVH);
-        assertThat(Accelerator.choose(spheres(0, false), Accel.auto)).as("nothing to build for")
+        assertThat(Accelerator.choose(spheres(2, false), Choice.auto)).isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(1_000, false), Choice.auto)).isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(2, true), Choice.auto)).as("lights").isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+        assertThat(Accelerator.choose(spheres(0, false), Choice.auto)).as("nothing to build for")
                 .isEqualTo(Accelerator.Kind.LOOP);
     }
 
     @Test
     void anyOtherChoiceIsKept() {
-        assertThat(Accelerator.choose(spheres(3, false), Accel.grid)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(3, true), Accel.grid)).isEqualTo(Accelerator.Kind.GRID_AND_BVH);
-        assertThat(Accelerator.choose(spheres(3, true), Accel.bvh)).isEqualTo(Accelerator.Kind.BVH);
-        assertThat(Accelerator.choose(spheres(3, false), Accel.none)).isEqualTo(Accelerator.Kind.LOOP);
+        assertThat(Accelerator.choose(spheres(3, false), Choice.grid)).isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(spheres(3, true), Choice.grid)).isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+        assertThat(Accelerator.choose(spheres(3, true), Choice.bvh)).isEqualTo(Accelerator.Kind.BVH);
+        assertThat(Accelerator.choose(spheres(3, false), Choice.none)).isEqualTo(Accelerator.Kind.LOOP);
     }
 
     @Test
     void statsNameWhatWasBuilt() {
-        assertThat(Accelerator.of(spheres(3, false), Accel.bvh, 40, 20, 1, 1).built().get()).startsWith("BVH of ");
-        assertThat(Accelerator.of(spheres(3, false), Accel.grid, 40, 20, 1, 1).built().get()).startsWith("view grid of ");
-        assertThat(Accelerator.of(spheres(3, true), Accel.grid, 40, 20, 1, 1).built().get())
+        assertThat(Accelerator.of(spheres(3, false), Choice.bvh, 40, 20, 1, 1).built().get()).startsWith("BVH of ");
+        assertThat(Accelerator.of(spheres(3, false), Choice.grid, 40, 20, 1, 1).built().get()).startsWith("view grid of ");
+        assertThat(Accelerator.of(spheres(3, true), Choice.grid, 40, 20, 1, 1).built().get())
                 .startsWith("view grid of ").contains("light grid").contains("and BVH of ");
     }
 }

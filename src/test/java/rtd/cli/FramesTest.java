@@ -162,6 +162,33 @@ class FramesTest {
         }
     }
 
+    /**
+     * A lit scene whose camera circles still objects keeps the BVH and the light grids from frame to frame; one
+     * whose sphere and light move builds them again. Either way each frame is the picture of its clock drawn alone.
+     */
+    @Test
+    void eachFrameIsThePictureOfItsClockDrawnAloneWhetherTheObjectsMoveOrNot() throws IOException {
+        String lit = "ambient:(20|20|40)\nperspective_camera:(12*sin(90*clock)|3|12*cos(90*clock)):(at 0|0|0):(50)\n"
+                + "light:(%s|20|10):(255|255|255)\nsphere:(%s|0|0):(1.5):(200|60|40)\n"
+                + "plane:(0|-1.5|0):(0|1|0):(90|90|90)\nbox:(2|-1.5|-1):(3|0|1):(40|160|60)\n";
+        for (String[] moving : new String[][] {{"-8", "-1"}, {"-8 + 16*clock", "-1 + 2*clock"}}) {
+            Path scene = Files.writeString(dir.resolve("lit.txt"), String.format(lit, (Object[]) moving));
+            for (String accel : new String[] {"auto", "bvh"}) {
+                Run frames = rtd(scene.toString(), "--frames", "3", "--accel", accel, "-o",
+                        dir.resolve("f.png").toString());
+                assertThat(frames.exitCode()).as(frames.err()).isZero();
+                for (int i = 1; i <= 2; i++) {
+                    Path alone = dir.resolve("alone-" + i + ".png");
+                    Run still = rtd(scene.toString(), "--clock", String.valueOf(i / 2.0), "--accel", accel, "-o",
+                            alone.toString());
+                    assertThat(still.exitCode()).as(still.err()).isZero();
+                    assertThat(pixels(dir.resolve("f-00" + i + ".png"))).as(moving[1] + ", " + accel + ", frame " + i)
+                            .isEqualTo(pixels(alone));
+                }
+            }
+        }
+    }
+
     private static int[] pixels(Path png) throws IOException {
         BufferedImage image = ImageIO.read(new File(png.toString()));
         return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());

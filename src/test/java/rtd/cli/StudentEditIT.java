@@ -103,7 +103,7 @@ class StudentEditIT {
 
     private static String run(boolean withEdit, String scene, String... options) throws Exception {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", (withEdit ? edited + File.pathSeparator : "") + JAR, "rtd.cli.Main", scene,
+                "-cp", (withEdit ? edited + File.pathSeparator : "") + JAR, "rtd.cli.RtdCommand", scene,
                 "--scale", "0.1", "--no-progress"));
         command.addAll(List.of(options));
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();

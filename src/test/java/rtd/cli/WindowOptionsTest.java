@@ -13,6 +13,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import rtd.cli.Accelerator.Choice;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 
@@ -71,7 +72,7 @@ class WindowOptionsTest {
     void theWindowHearsOfEachSaveOfTheSceneButNotOfItsFirstLook() throws Exception {
         Path scene = dir.resolve("scene.txt");
         Files.copy(Path.of(EXAMPLE), scene);
-        RenderOptions options = new RenderOptions(List.of(scene), null, 160, 90, new Scale(1), true, 1, Accel.auto,
+        RenderOptions options = new RenderOptions(List.of(scene), null, 160, 90, new Scale(1), true, 1, Choice.auto,
                 false, 1, false, false, 0);
         AtomicInteger saves = new AtomicInteger();
         AutoCloseable watching = WindowOptions.watch(options).start(saves::incrementAndGet);
@@ -93,7 +94,7 @@ class WindowOptionsTest {
     void withoutADisplayTheExitCodeIs2WithOneLineAndNoStackTrace() throws Exception {
         // a new JVM without DISPLAY, as on a server or over SSH without X
         ProcessBuilder command = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), "rtd.cli.Main", EXAMPLE, "--window", "--clock", "0.5"); // --clock is the window's starting clock
+                "-cp", System.getProperty("java.class.path"), "rtd.cli.RtdCommand", EXAMPLE, "--window", "--clock", "0.5"); // --clock is the window's starting clock
         command.environment().remove("DISPLAY");
         command.environment().remove("WAYLAND_DISPLAY");
         command.redirectOutput(dir.resolve("out.txt").toFile());
