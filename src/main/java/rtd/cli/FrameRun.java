@@ -181,11 +181,14 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             }
         }
 
-        /** What was written: "60 frames, orbit-000.png to orbit-059.png", "orbit.gif (60 frames, 24 per second)". */
+        /** What was written: "60 frames, orbit-000.png to orbit-059.png", "1 frame, orbit-003.png", "orbit.gif (60 frames, 24 per second)". */
         String describe() {
             if (gifTarget != null) {
                 return gifTarget.spelt() + " (" + written.get() + " frames, a delay of " + plan.delayHundredths()
                         + " hundredths of a second each)";
+            }
+            if (targets.size() == 1) {
+                return "1 frame, " + targets.get(0).spelt();
             }
             return written.get() + " frames, " + targets.get(0).spelt() + " to "
                     + targets.get(targets.size() - 1).spelt();

@@ -1,9 +1,5 @@
 package rtd.cli;
 
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import rtd.camera.ICamera;
@@ -43,15 +39,7 @@ final class PovFrames {
         } else {
             pov.append(animation(file, plan, options, name));
         }
-        try {
-            if (target.kind() == OutputTarget.Kind.STREAM) {
-                Files.writeString(target.file(), pov, StandardCharsets.UTF_8, StandardOpenOption.WRITE);
-            } else {
-                SceneRun.replaceWithText(target.file(), pov.toString());
-            }
-        } catch (IOException e) {
-            throw new FileError("cannot write '" + target.spelt() + "'", e);
-        }
+        target.writeText(pov.toString());
         return "rtd: wrote " + target.spelt() + "; render its " + plan.frames() + " frames with POV-Ray:\n  cd "
                 + PovScene.shellWord(target.spelt().toAbsolutePath().getParent().toString()) + " && " + command;
     }

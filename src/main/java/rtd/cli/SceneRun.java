@@ -1,7 +1,6 @@
 package rtd.cli;
 
 import java.awt.image.BufferedImage;
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -120,11 +119,6 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"
                 + "  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
                 + PovScene.command(name, png, width, height);
-    }
-
-    /** As {@link OutputTarget#writeText}, for {@link PovFrames}. */
-    static void replaceWithText(Path file, String text) throws IOException {
-        OutputTarget.replaceWithText(file, text);
     }
 
     /**

@@ -86,6 +86,8 @@ class FramesTest {
         }
         assertThat(new FramePlan(5, 2, 3, 24).clock(3)).isEqualTo(0.75);
         assertThat(part.err()).contains("wrote 2 frames");
+        Run one = rtd(moving.toString(), "--frames", "5", "--subset", "4-4", "-o", dir.resolve("one.png").toString());
+        assertThat(one.err()).contains("wrote 1 frame, ").endsWith("one-004.png\n");
     }
 
     /** 5 frames at 10 per second: a delay of 10 hundredths; the NETSCAPE2.0 extension with loop count 0. */
