@@ -31,14 +31,9 @@ final class SceneParser {
     }
 
     /**
-     * Reads a scene, or throws its mistakes; likely slips go to {@code warnings} (null: dropped), in file
-     * order.
+     * Reads a scene at the clock and with the named values of {@code names} (Part III), or throws its mistakes;
+     * likely slips go to {@code warnings} (null: dropped), in file order.
      */
-    static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
-        return parse(source, new Names(0), warnings);
-    }
-
-    /** As {@link #parse(SourceText, List)}, with the clock and the named values of {@code names} (Part III). */
     static Scene parse(SourceText source, Names names, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
         int start = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;

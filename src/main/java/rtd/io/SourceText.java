@@ -16,12 +16,10 @@ final class SourceText implements AutoCloseable {
     /** The meshes read for other frames of one animation (Part III), or null: each is read anew. */
     private final MeshCache meshes;
 
-    /** A text named {@code name} in messages, whose relative paths start from {@code folder}. */
-    SourceText(String name, byte[] bytes, Path folder) {
-        this(name, bytes, folder, null);
-    }
-
-    /** As {@link #SourceText(String, byte[], Path)}, its meshes kept in (and taken from) {@code meshes}. */
+    /**
+     * A text named {@code name} in messages, whose relative paths start from {@code folder}, its meshes kept in
+     * (and taken from) {@code meshes}, if not null.
+     */
     SourceText(String name, byte[] bytes, Path folder, MeshCache meshes) {
         this.name = name;
         this.bytes = bytes;
@@ -29,9 +27,9 @@ final class SourceText implements AutoCloseable {
         this.meshes = meshes;
     }
 
-    /** A text whose relative paths start from the current directory. */
+    /** A text whose relative paths start from the current directory, its meshes read anew. */
     SourceText(String name, byte[] bytes) {
-        this(name, bytes, Path.of(""));
+        this(name, bytes, Path.of(""), null);
     }
 
     String name() {
