@@ -72,12 +72,12 @@ final class DefinedNames {
             defined.put(name, value);
             kinds.put(name, kind);
         } else if (kinds.get(name).equals(kind)) {
-            errors.add(found(place.saying("a second " + kind + " '" + name + "': each name is defined once",
-                    "the first '" + name + "' is at line " + earlier.line())));
+            errors.add(place.saying("a second " + kind + " '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier.line()).found());
         } else {
-            errors.add(found(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
+            errors.add(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
                     + earlier.line() + ": materials, patterns and transforms share one set of names",
-                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'")));
+                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'").found());
         }
     }
 
@@ -132,9 +132,9 @@ final class DefinedNames {
             return (T) defined.get(name);
         }
         if (is != null) {
-            errors.add(found(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is))));
+            errors.add(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is)).found());
         } else if (!broken.contains(name)) {
-            errors.add(found(place.saying("unknown " + kind + " '" + name + "'", didYouMean(name, kind))));
+            errors.add(place.saying("unknown " + kind + " '" + name + "'", didYouMean(name, kind)).found());
         }
         return null;
     }
@@ -169,9 +169,5 @@ final class DefinedNames {
             default -> "a transform's name goes in one of an object's last groups, or a pattern's: "
                     + "sphere:(0|0|0):(1):(255|0|0):(stretched)";
         };
-    }
-
-    private static SceneContents.Found found(SceneError error) {
-        return new SceneContents.Found(error.line(), error.column(), error);
     }
 }

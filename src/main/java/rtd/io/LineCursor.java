@@ -82,7 +82,7 @@ final class LineCursor {
     /** An error at {@code offset}; at an invisible character, the help says what it is and what to do. */
     StatementError error(int offset, String message, String help) {
         int codePoint = offset < bytes.length && bytes[offset] < 0 ? source.codePointAt(offset) : -1;
-        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));
+        return new StatementError(source.errorAt(line, lineStart, offset, message,
+                Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));
     }
 }

@@ -57,15 +57,15 @@ record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<S
             SceneError place = values.placeOfValue(g, 0);
             if (kind == null) {
                 if (!names.isBroken(name)) {
-                    errors.add(found(place.saying("unknown " + names.objectNameKind() + " '" + name + "'",
-                            names.didYouMean(name, names.objectNameKind()))));
+                    errors.add(place.saying("unknown " + names.objectNameKind() + " '" + name + "'",
+                            names.didYouMean(name, names.objectNameKind())).found());
                 }
             } else if (kind.equals("pattern")) {
-                errors.add(found(place.saying("'" + name + "' is a pattern, not a material or a transform",
-                        DefinedNames.whereItGoes(kind))));
+                errors.add(place.saying("'" + name + "' is a pattern, not a material or a transform",
+                        DefinedNames.whereItGoes(kind)).found());
             } else if (kind.equals("material") ? material != null : transform != null) {
-                errors.add(found(place.saying("a second " + kind + " for one object: it takes at most one material and one "
-                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform")));
+                errors.add(place.saying("a second " + kind + " for one object: it takes at most one material and one "
+                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform").found());
             } else if (kind.equals("material")) {
                 material = names.material(name);
             } else {
@@ -80,9 +80,5 @@ record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<S
             pattern = names.lookUp(name, "pattern", values.placeOfValue(colour, 0), errors);
         }
         return new ObjectNames(material == null ? Material.DEFAULT : material, pattern, transform, used);
-    }
-
-    private static SceneContents.Found found(SceneError error) {
-        return new SceneContents.Found(error.line(), error.column(), error);
     }
 }

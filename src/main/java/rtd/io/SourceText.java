@@ -67,6 +67,14 @@ final class SourceText implements AutoCloseable {
         return new String(bytes, lineStart, end - lineStart, StandardCharsets.UTF_8);
     }
 
+    /**
+     * An error at byte {@code offset} of line {@code line}, which starts at byte {@code lineStart}: the place
+     * and the line's text that messages show.
+     */
+    SceneError errorAt(int line, int lineStart, int offset, String message, String help) {
+        return new SceneError(name, line, column(lineStart, offset), message, lineText(lineStart), help);
+    }
+
     /** The column, from 1, of byte {@code offset} on the line that starts at {@code lineStart}. */
     int column(int lineStart, int offset) {
         String before = new String(bytes, lineStart, offset - lineStart, StandardCharsets.UTF_8);
