@@ -112,9 +112,7 @@ final class GroupReader {
     /** A step of a transformation: a word, blanks, and one or more numbers separated by '|', up to and with ')'. */
     private void readStep() throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
+        cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
             throw groupError(cursor.pos, "expected an operation such as 'scale 2' in " + group.of(statement) + ", found "
                     + cursor.describe(cursor.pos));
@@ -210,9 +208,7 @@ final class GroupReader {
     /** A key of a properties group: its index among the group's keys; known and not given before. */
     private int readKey() throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
+        cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
             throw groupError(cursor.pos, "expected a key such as '" + group.keys().get(0) + "' in " + group.of(statement) + ", found "
                     + cursor.describe(cursor.pos));

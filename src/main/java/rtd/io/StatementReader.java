@@ -118,9 +118,7 @@ final class StatementReader {
      */
     private Statement readKeyword(boolean afterLineNumber) throws StatementError {
         statementStart = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
+        cursor.pos = cursor.afterWord(statementStart);
         if (cursor.pos == statementStart) {
             throw noStatement();
         }
@@ -185,19 +183,10 @@ final class StatementReader {
 
     /** The help for a second statement (a keyword, then ':') from {@code from} on, after blanks; or null. */
     private String secondStatement(int from) {
-        int start = from;
-        while (start < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[start])) {
-            start++;
-        }
-        int end = start;
-        while (end < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[end])) {
-            end++;
-        }
+        int start = cursor.afterSpaces(from);
+        int end = cursor.afterWord(start);
         Statement statement = Grammar.find(cursor.bytes, start, end);
-        int after = end;
-        while (after < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[after])) {
-            after++;
-        }
+        int after = cursor.afterSpaces(end);
         return statement != null && after < cursor.bytes.length && cursor.bytes[after] == ':'
                 ? Hints.oneStatementPerLine(statement.keyword()) : null;
     }
