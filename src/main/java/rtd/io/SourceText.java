@@ -113,31 +113,28 @@ final class SourceText implements AutoCloseable {
         if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '*') {
             return "'/*'";
         }
-        int after = offset + 1;
-        if (TextBytes.isWordByte(bytes[offset])) {
-            while (after < bytes.length && TextBytes.isWordByte(bytes[after])) {
-                after++; // show a whole word, not its first letter
-            }
-        }
-        while (after < bytes.length && (bytes[after] & 0xC0) == 0x80) {
-            after++; // the rest of a character of several bytes
-        }
-        int codePoint = text(offset, after).codePointAt(0);
+        int codePoint = codePointAt(offset);
         if (Character.isISOControl(codePoint)) {
             return String.format("the control character U+%04X", codePoint);
+        }
+        int after = characterEnd(offset);
+        while (TextBytes.isWordByte(bytes[offset]) && after < bytes.length && TextBytes.isWordByte(bytes[after])) {
+            after++; // show a whole word, not its first letter
         }
         return Hints.isInvisible(codePoint) ? Hints.nameOf(codePoint) : "'" + text(offset, after) + "'";
     }
 
     /** The character that starts at {@code offset}, or −1 at the end of the file. */
     int codePointAt(int offset) {
-        if (offset >= bytes.length) {
-            return -1;
-        }
+        return offset >= bytes.length ? -1 : text(offset, characterEnd(offset)).codePointAt(0);
+    }
+
+    /** Where the character that starts at {@code offset} ends: after its continuation bytes. */
+    private int characterEnd(int offset) {
         int after = offset + 1;
         while (after < bytes.length && (bytes[after] & 0xC0) == 0x80) {
             after++;
         }
-        return new String(bytes, offset, after - offset, StandardCharsets.UTF_8).codePointAt(0);
+        return after;
     }
 }
