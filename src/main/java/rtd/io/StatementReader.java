@@ -136,7 +136,7 @@ final class StatementReader {
         return cursor.atEndOfStatement() ? null : readKeyword(true);
     }
 
-    /** Whether the word from {@link #statementStart} to {@link #pos} is a line number: digits, then a blank or the end. */
+    /** Whether the word from {@link #statementStart} to the cursor is a line number: digits, then a blank or the end. */
     private boolean atLineNumber() {
         for (int i = statementStart; i < cursor.pos; i++) {
             if (cursor.bytes[i] < '0' || cursor.bytes[i] > '9') {
@@ -202,7 +202,7 @@ final class StatementReader {
         inBlockComment = atBlockComment() && commentEnd(cursor.pos + 2) < 0;
     }
 
-    /** On a line inside a block comment: whether the comment ends on it; {@link #pos} is then after the end. */
+    /** On a line inside a block comment: whether the comment ends on it; the cursor is then after the end. */
     private boolean leaveBlockComment() {
         int after = commentEnd(cursor.pos);
         if (after < 0) {
