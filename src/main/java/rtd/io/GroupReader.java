@@ -29,12 +29,12 @@ final class GroupReader {
         this.group = group;
         cursor.skipBlanks();
         if (!cursor.at(':')) {
-            throw groupError(cursor.pos, "expected ':' before " + group.of(statement) + ", found " + cursor.describe(cursor.pos));
+            throw expected("':' before ");
         }
         cursor.pos++;
         cursor.skipBlanks();
         if (!cursor.at('(')) {
-            throw groupError(cursor.pos, "expected '(' to start " + group.of(statement) + ", found " + cursor.describe(cursor.pos));
+            throw expected("'(' to start ");
         }
         int groupStart = cursor.pos++;
         written.openGroup(groupStart);
@@ -82,7 +82,8 @@ final class GroupReader {
                     + "' looks at: it takes 3 numbers (at x|y|z), found " + found, "write the point as (at x|y|z)");
         }
         if (found < group.size()) {
-            throw groupError(groupStart, "too few numbers in " + group.of(statement) + ": it takes " + contents(group) + ", found " + found);
+            throw groupError(groupStart, "too few numbers in " + group.of(statement) + ": it takes " + contents(group)
+                    + ", found " + found);
         }
     }
 
@@ -114,8 +115,7 @@ final class GroupReader {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
-            throw groupError(cursor.pos, "expected an operation such as 'scale 2' in " + group.of(statement) + ", found "
-                    + cursor.describe(cursor.pos));
+            throw expected("an operation such as 'scale 2' in ");
         }
         written.add(Float.NaN, start, cursor.pos);
         cursor.skipBlanks();
@@ -139,7 +139,7 @@ final class GroupReader {
             cursor.pos++;
         }
         if (cursor.pos == start) {
-            throw groupError(cursor.pos, "expected a name in " + group.of(statement) + ", found " + cursor.describe(cursor.pos));
+            throw expected("a name in ");
         }
         written.add(Float.NaN, start, cursor.pos);
         int nameEnd = cursor.pos;
@@ -161,7 +161,7 @@ final class GroupReader {
             cursor.pos++;
         }
         if (!cursor.at(')')) {
-            throw groupError(cursor.pos, "expected ')' after the path in " + group.of(statement) + ", found " + cursor.describe(cursor.pos));
+            throw expected("')' after the path in ");
         }
         int nameEnd = cursor.pos;
         while (TextBytes.isBlank(cursor.bytes[nameEnd - 1])) {
@@ -182,8 +182,7 @@ final class GroupReader {
             int key = readKey();
             cursor.skipBlanks();
             if (!cursor.at('=')) {
-                throw groupError(cursor.pos, "expected '=' after the key '" + group.keys().get(key) + "' in " + group.of(statement) + ", found "
-                        + cursor.describe(cursor.pos));
+                throw expected("'=' after the key '" + group.keys().get(key) + "' in ");
             }
             cursor.pos++;
             cursor.skipBlanks();
@@ -202,7 +201,7 @@ final class GroupReader {
         if (cursor.at('|') || cursor.at(')')) {
             return cursor.bytes[cursor.pos++] == ')';
         }
-        throw groupError(cursor.pos, "expected '|' or ')' after a number in " + group.of(statement) + ", found " + cursor.describe(cursor.pos));
+        throw expected("'|' or ')' after a number in ");
     }
 
     /** A key of a properties group: its index among the group's keys; known and not given before. */
@@ -210,8 +209,7 @@ final class GroupReader {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
-            throw groupError(cursor.pos, "expected a key such as '" + group.keys().get(0) + "' in " + group.of(statement) + ", found "
-                    + cursor.describe(cursor.pos));
+            throw expected("a key such as '" + group.keys().get(0) + "' in ");
         }
         String word = cursor.source.text(start, cursor.pos);
         int key = group.keys().indexOf(word);
@@ -243,8 +241,8 @@ final class GroupReader {
         if (g < 0 || groupsOnTheLineFrom(groupStart) >= statement.groups().size() - g) {
             return groupError(numbers.tokenStart, message);
         }
-        return cursor.error(numbers.tokenStart, message, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
-                + group.meaning() + " left out before this group? write it as " + statement.usage());
+        return cursor.error(numbers.tokenStart, message, "this line has fewer groups than '" + statement.keyword()
+                + "' takes: was the " + group.meaning() + " left out before this group? write it as " + statement.usage());
     }
 
     /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
@@ -257,6 +255,11 @@ final class GroupReader {
             groups += cursor.bytes[i] == '(' ? 1 : 0;
         }
         return groups;
+    }
+
+    /** "expected {@code what} the centre of 'sphere', found …" at the cursor, with the statement's usage as the help. */
+    private StatementError expected(String what) {
+        return groupError(cursor.pos, "expected " + what + group.of(statement) + ", found " + cursor.describe(cursor.pos));
     }
 
     /** An error about the group, with the statement's usage as the help. */

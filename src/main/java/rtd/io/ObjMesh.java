@@ -47,7 +47,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
             if (t % BLOCK == 0) {
                 numbers = new float[Triangle.NUMBERS * Math.min(BLOCK, count - t)];
             }
-            triangles[t] = triangle(t, shift, scale, colour, material, numbers, Triangle.NUMBERS * (t % BLOCK), normalVectors);
+            int at = Triangle.NUMBERS * (t % BLOCK);
+            triangles[t] = triangle(t, shift, scale, colour, material, numbers, at, normalVectors);
         }
         return Arrays.asList(triangles);
     }

@@ -65,7 +65,8 @@ record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<S
                         DefinedNames.whereItGoes(kind)).found());
             } else if (kind.equals("material") ? material != null : transform != null) {
                 errors.add(place.saying("a second " + kind + " for one object: it takes at most one material and one "
-                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform").found());
+                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform")
+                        .found());
             } else if (kind.equals("material")) {
                 material = names.material(name);
             } else {

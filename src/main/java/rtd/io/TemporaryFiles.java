@@ -15,8 +15,8 @@ import java.util.concurrent.ThreadLocalRandom;
 /**
  * The hidden temporary files {@code .NAME.<16 hex digits>.tmp} a picture or an animation is written to beside
  * its output before it is moved into place, so that the output is written all or nothing: removed after a
- * failed write and by a shutdown hook when a signal stops the JVM (only {@code kill -9} can leave one). Its list is global on purpose, as the hook belongs to the JVM
- * (guarded by this class's lock).
+ * failed write and by a shutdown hook when a signal stops the JVM (only {@code kill -9} can leave one). Its
+ * list is global on purpose, as the hook belongs to the JVM (guarded by this class's lock).
  */
 final class TemporaryFiles {
 
