@@ -41,7 +41,11 @@ public final class SceneIO {
 
     /** As {@link #readScene(Path)}, adding to {@code warnings} the likely slips that are no mistakes. */
     public static Scene readScene(Path path, List<SceneError> warnings) throws SceneException, IOException {
-        return SceneFile.read(path).at(0, warnings);
+        if (Files.isDirectory(path)) {
+            throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
+        }
+        Path folder = path.getParent() == null ? Path.of("") : path.getParent();
+        return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder, null), warnings);
     }
 
     /** As {@link #readScene(Path, List)}, named {@code name} in messages: {@code <stdin>} for {@code /dev/stdin}. */
@@ -77,7 +81,17 @@ public final class SceneIO {
     /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}; warnings go to {@code warnings} (null: dropped). */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
-        return SceneFile.of(name, bytes, meshFolder).at(0, warnings);
+        return parse(new SourceText(name, bytes, meshFolder, null), warnings);
+    }
+
+    /**
+     * Parses {@code source} at clock 0, and then closes it: the scene needs its bytes no more (a
+     * {@link SceneFile}, read for many clocks, keeps them).
+     */
+    private static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
+        try (source) {
+            return SceneParser.parse(source, new Names(0), warnings);
+        }
     }
 
     /**
