@@ -4,10 +4,8 @@ import java.awt.image.BufferedImage;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
@@ -24,11 +22,10 @@ import rtd.image.Picture;
  * An animated GIF that loops for ever, written frame by frame through {@code javax.imageio}'s GIF writer
  * (Part III, "Frames on the command line"): each frame waits its delay in hundredths of a second, and the
  * first carries the NETSCAPE2.0 extension that makes players loop. Each frame gets its own palette of 256
- * colours, which the GIF writer builds from the frame's colours (an octree), without dithering: measured on a
- * shaded animation, this kept the frames closer to the rendered ones (in PSNR, in the error of 4 × 4 pixel
- * means, which shows banding) and the file smaller than one median-cut palette for the whole animation or per
- * frame, with or without an ordered dither; a flat scene of few colours keeps them exactly. Like every picture rtd writes, a file is written all or nothing: into a temporary file
- * beside it, which replaces it only in {@link #finish}; closed unfinished, the temporary file goes.
+ * colours, which the GIF writer builds from the frame's colours (an octree), without dithering: closer to the
+ * rendered frames, with less banding and a smaller file, than one palette for the whole animation; a flat
+ * scene of few colours keeps its colours exactly. Like every picture rtd writes, the file is written all or
+ * nothing ({@link TemporaryFiles}): it replaces the output only in {@link #finish}; closed unfinished, it goes.
  */
 public final class AnimatedGif implements AutoCloseable {
 
@@ -38,17 +35,15 @@ public final class AnimatedGif implements AutoCloseable {
     private final ImageOutputStream stream;
     private final OutputStream out;
     private final int delay;
-    /** The temporary file and where it goes, or null when written into a device as it is. */
-    private final Path temporary;
-    private final Path output;
+    /** The temporary file that replaces the output, or null when written into a device as it is. */
+    private final TemporaryFiles.Replacement temporary;
     private int frames;
     private boolean finished;
 
-    private AnimatedGif(OutputStream out, int delay, Path temporary, Path output) throws IOException {
+    private AnimatedGif(OutputStream out, int delay, TemporaryFiles.Replacement temporary) throws IOException {
         this.out = new BufferedOutputStream(out, 1 << 16);
         this.delay = delay;
         this.temporary = temporary;
-        this.output = output;
         this.writer = ImageIO.getImageWritersByFormatName("gif").next();
         this.stream = new MemoryCacheImageOutputStream(this.out);
         writer.setOutput(stream);
@@ -57,21 +52,18 @@ public final class AnimatedGif implements AutoCloseable {
 
     /** A GIF that replaces the regular file {@code output} once finished; {@code delay} in hundredths of a second. */
     public static AnimatedGif replacing(Path output, int delay) throws IOException {
-        Path folder = output.toAbsolutePath().getParent();
-        TemporaryFiles.Created created = TemporaryFiles.create(folder, output.getFileName().toString());
+        TemporaryFiles.Replacement temporary = TemporaryFiles.create(output);
         try {
-            return new AnimatedGif(created.out(), delay, created.path(), output);
+            return new AnimatedGif(temporary.out(), delay, temporary);
         } catch (IOException | RuntimeException e) {
-            created.out().close();
-            Files.deleteIfExists(created.path());
-            TemporaryFiles.forget(created.path());
+            temporary.discard();
             throw e;
         }
     }
 
     /** A GIF written into {@code device} (a FIFO, /dev/null) as it is made. */
     public static AnimatedGif into(Path device, int delay) throws IOException {
-        return new AnimatedGif(Files.newOutputStream(device, StandardOpenOption.WRITE), delay, null, null);
+        return new AnimatedGif(Files.newOutputStream(device, StandardOpenOption.WRITE), delay, null);
     }
 
     /** Adds the next frame. */
@@ -105,12 +97,7 @@ public final class AnimatedGif implements AutoCloseable {
         out.flush();
         out.close();
         if (temporary != null) {
-            try {
-                Files.move(temporary, output, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temporary, output, StandardCopyOption.REPLACE_EXISTING);
-            }
-            TemporaryFiles.forget(temporary);
+            temporary.commit();
         }
         finished = true;
     }
@@ -122,8 +109,7 @@ public final class AnimatedGif implements AutoCloseable {
         if (!finished) {
             out.close();
             if (temporary != null) {
-                Files.deleteIfExists(temporary);
-                TemporaryFiles.forget(temporary);
+                temporary.discard();
             }
         }
     }

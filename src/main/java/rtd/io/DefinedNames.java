@@ -14,8 +14,7 @@ import rtd.math.Matrix4;
 /**
  * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each
  * name is defined once, by one of them, above or below the lines that use it. It resolves an object's names
- * (its material and transform, in either order, each at most once; the pattern its colour group names) and
- * a pattern's transform, and words each mistake at the name that makes it.
+ * ({@link #of}) and a pattern's transform, and words each mistake at the name that makes it.
  */
 final class DefinedNames {
 
@@ -72,12 +71,12 @@ final class DefinedNames {
             defined.put(name, value);
             kinds.put(name, kind);
         } else if (kinds.get(name).equals(kind)) {
-            errors.add(found(place.saying("a second " + kind + " '" + name + "': each name is defined once",
-                    "the first '" + name + "' is at line " + earlier.line())));
+            errors.add(place.saying("a second " + kind + " '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier.line()).found());
         } else {
-            errors.add(found(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
+            errors.add(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
                     + earlier.line() + ": materials, patterns and transforms share one set of names",
-                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'")));
+                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'").found());
         }
     }
 
@@ -101,24 +100,47 @@ final class DefinedNames {
         return warnings;
     }
 
-    /** The material {@code name} names, or null. */
-    Material material(String name) {
-        return defined.get(name) instanceof Material material ? material : null;
-    }
-
-    /** The transformation {@code name} names, or null. */
-    Matrix4 transform(String name) {
-        return defined.get(name) instanceof Matrix4 matrix ? matrix : null;
-    }
-
-    /** What {@code name} is defined as ("material", "pattern", "transform"), or null. */
-    String kindOf(String name) {
-        return kinds.get(name);
-    }
-
-    /** Whether {@code name} is unknown only because its definition has a mistake, reported already. */
-    boolean isBroken(String name) {
-        return broken.contains(name);
+    /**
+     * What the names of the object whose values are {@code values} mean: its last groups name a material and a
+     * transform, in either order, each at most once; its colour group may name a pattern. Each mistake goes to
+     * {@code errors}.
+     */
+    ObjectNames of(StatementValues values, List<SceneContents.Found> errors) {
+        Material material = null;
+        Matrix4 transform = null;
+        List<String> used = new ArrayList<>();
+        String unknownKind = onlyMaterials ? "material" : "material or transform";
+        for (int g = values.statement().groups().size(); g < values.groups().groupCount; g++) {
+            String name = values.name(g);
+            used.add(name);
+            String kind = kinds.get(name);
+            SceneError place = values.placeOfValue(g, 0);
+            if (kind == null) {
+                if (!broken.contains(name)) {
+                    errors.add(place.saying("unknown " + unknownKind + " '" + name + "'", didYouMean(name, unknownKind))
+                            .found());
+                }
+            } else if (kind.equals("pattern")) {
+                errors.add(place.saying("'" + name + "' is a pattern, not a material or a transform", whereItGoes(kind))
+                        .found());
+            } else if (kind.equals("material") ? material != null : transform != null) {
+                errors.add(place.saying("a second " + kind + " for one object: it takes at most one material and one "
+                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform")
+                        .found());
+            } else if (kind.equals("material")) {
+                material = (Material) defined.get(name);
+            } else {
+                transform = (Matrix4) defined.get(name);
+            }
+        }
+        Pattern pattern = null;
+        int colour = values.groups().named;
+        if (colour >= 0) {
+            String name = values.name(colour);
+            used.add(name);
+            pattern = lookUp(name, "pattern", values.placeOfValue(colour, 0), errors);
+        }
+        return new ObjectNames(material == null ? Material.DEFAULT : material, pattern, transform, used);
     }
 
     /**
@@ -126,21 +148,21 @@ final class DefinedNames {
      * error, if it is unknown or something else.
      */
     @SuppressWarnings("unchecked")
-    <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
+    private <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
         String is = kinds.get(name);
         if (kind.equals(is)) {
             return (T) defined.get(name);
         }
         if (is != null) {
-            errors.add(found(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is))));
+            errors.add(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is)).found());
         } else if (!broken.contains(name)) {
-            errors.add(found(place.saying("unknown " + kind + " '" + name + "'", didYouMean(name, kind))));
+            errors.add(place.saying("unknown " + kind + " '" + name + "'", didYouMean(name, kind)).found());
         }
         return null;
     }
 
     /** "did you mean …?" among the names of {@code kind}, or how to define one. */
-    String didYouMean(String name, String kind) {
+    private String didYouMean(String name, String kind) {
         List<String> candidates = kinds.entrySet().stream().filter(e -> kind.contains(e.getValue()))
                 .map(Map.Entry::getKey).toList();
         String nearest = Hints.nearest(name, candidates);
@@ -156,22 +178,13 @@ final class DefinedNames {
         };
     }
 
-    /** The word for an unknown name in an object's last groups: "material", or "material or transform" once there are transforms. */
-    String objectNameKind() {
-        return onlyMaterials ? "material" : "material or transform";
-    }
-
     /** Where a name of {@code kind} belongs, for a name used in the wrong place. */
-    static String whereItGoes(String kind) {
+    private static String whereItGoes(String kind) {
         return switch (kind) {
             case "pattern" -> "a pattern's name goes in the object's colour group: sphere:(0|0|0):(1):(checks)";
             case "material" -> "a material's name goes in one of the object's last groups: sphere:(0|0|0):(1):(255|0|0):(shiny)";
             default -> "a transform's name goes in one of an object's last groups, or a pattern's: "
                     + "sphere:(0|0|0):(1):(255|0|0):(stretched)";
         };
-    }
-
-    private static SceneContents.Found found(SceneError error) {
-        return new SceneContents.Found(error.line(), error.column(), error);
     }
 }

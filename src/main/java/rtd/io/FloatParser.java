@@ -9,8 +9,7 @@ import java.nio.charset.StandardCharsets;
  */
 final class FloatParser {
 
-    private static final float[] FLOAT_POWERS = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
-    private static final double[] DOUBLE_POWERS = {
+    private static final double[] POWERS = {
         1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
         1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     private static final int MAX_DIGITS = 18;
@@ -91,20 +90,16 @@ final class FloatParser {
     }
 
     /**
-     * Clinger's fast path: when the digits and the power of ten are both exact in floating
-     * point, one rounding gives the correctly rounded result. NaN when it does not apply.
+     * Clinger's fast path: when the digits and the power of ten are both exact in a double, one
+     * rounding gives the correctly rounded double, and one more the float. NaN when it does not apply.
      */
     private static float fast(long mantissa, int scale) {
         if (mantissa == 0) {
             return 0f;
         }
-        if (mantissa < (1L << 24) && Math.abs(scale) < FLOAT_POWERS.length) {
-            float m = mantissa;
-            return scale >= 0 ? m * FLOAT_POWERS[scale] : m / FLOAT_POWERS[-scale];
-        }
-        if (mantissa < (1L << 53) && Math.abs(scale) < DOUBLE_POWERS.length) {
+        if (mantissa < (1L << 53) && Math.abs(scale) < POWERS.length) {
             double m = mantissa;
-            double value = scale >= 0 ? m * DOUBLE_POWERS[scale] : m / DOUBLE_POWERS[-scale];
+            double value = scale >= 0 ? m * POWERS[scale] : m / POWERS[-scale];
             // Rounding the double again to float is wrong only when the double lies exactly
             // halfway between two floats: its lowest 29 bits are then 1 followed by zeros.
             long lowBits = Double.doubleToRawLongBits(value) & ((1L << 29) - 1);

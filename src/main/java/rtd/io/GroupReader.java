@@ -1,19 +1,21 @@
 package rtd.io;
 
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 /**
  * Reads the groups {@code :(…)} of a statement into {@link WrittenGroups}, as its {@link Group}s say, at the
- * {@link LineCursor} it shares with the {@link StatementReader}; each mistake is worded at its place, with
- * the usage or a hint.
+ * {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
+ * III where numbers may stand (a pattern's name as an object's colour, {@code (tiles)}; a transformation's
+ * step, {@code (rotate_y 30)}). Each mistake is worded at its place, with the usage or a hint.
  */
 final class GroupReader {
 
     private final LineCursor cursor;
     private final WrittenGroups written;
     private final NumberReader numbers;
+    /** The statement whose group is being read, and the group. */
+    private Statement statement;
+    private Group group;
 
     GroupReader(LineCursor cursor, WrittenGroups written, Names names) {
         this.cursor = cursor;
@@ -21,39 +23,41 @@ final class GroupReader {
         this.numbers = new NumberReader(cursor, names);
     }
 
-    /** Reads {@code :(…)} into {@link #values}. */
+    /** Reads {@code group} of {@code statement}, {@code :(…)}, into the written groups. */
     void readGroup(Statement statement, Group group) throws StatementError {
+        this.statement = statement;
+        this.group = group;
         cursor.skipBlanks();
         if (!cursor.at(':')) {
-            throw groupError(cursor.pos, "expected ':' before %s, found " + cursor.describe(cursor.pos), statement, group);
+            throw expected("':' before ");
         }
         cursor.pos++;
         cursor.skipBlanks();
         if (!cursor.at('(')) {
-            throw groupError(cursor.pos, "expected '(' to start %s, found " + cursor.describe(cursor.pos), statement, group);
+            throw expected("'(' to start ");
         }
         int groupStart = cursor.pos++;
         written.openGroup(groupStart);
         cursor.skipBlanks();
         if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
-            throw groupError(groupStart, "empty group: %s needs " + contents(group), statement, group);
+            throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + contents(group));
         }
-        if (group.orName() && WordGroups.atLoneName(cursor)) {
-            readName(statement, group);
+        if (group.orName() && atLoneName()) {
+            readName();
             written.markNamed();
             return;
         }
         switch (group.kind()) {
-            case NUMBERS -> readNumbers(statement, group, groupStart);
-            case OPERATION -> WordGroups.readStep(this, cursor, written, statement, group);
-            case NAME -> readName(statement, group);
-            case PATH -> readPath(statement, group);
-            case PROPERTIES -> readProperties(statement, group);
+            case NUMBERS -> readNumbers(groupStart);
+            case OPERATION -> readStep();
+            case NAME -> readName();
+            case PATH -> readPath();
+            case PROPERTIES -> readProperties();
         }
     }
 
     /** The numbers of a group, after its '(' and any blanks, up to and with its ')'. */
-    private void readNumbers(Statement statement, Group group, int groupStart) throws StatementError {
+    private void readNumbers(int groupStart) throws StatementError {
         boolean target = group.orAt() && atWordAt();
         if (target) {
             cursor.pos += 2;
@@ -64,12 +68,12 @@ final class GroupReader {
             cursor.skipBlanks();
             float value = numbers.read();
             if (found == group.size()) {
-                throw tooManyNumbers(statement, group, groupStart);
+                throw tooManyNumbers(groupStart);
             }
             written.add(value, numbers.tokenStart, cursor.pos);
             numbers.markIfExpression(written);
             found++;
-            if (groupEndsAfterNumber(statement, group)) {
+            if (groupEndsAfterNumber()) {
                 break;
             }
         }
@@ -78,8 +82,8 @@ final class GroupReader {
                     + "' looks at: it takes 3 numbers (at x|y|z), found " + found, "write the point as (at x|y|z)");
         }
         if (found < group.size()) {
-            throw groupError(groupStart, "too few numbers in %s: it takes " + contents(group) + ", found " + found,
-                    statement, group);
+            throw groupError(groupStart, "too few numbers in " + group.of(statement) + ": it takes " + contents(group)
+                    + ", found " + found);
         }
     }
 
@@ -90,22 +94,52 @@ final class GroupReader {
         return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
     }
 
-    /** Reads one number into the current group: a number of a transformation's step ({@link WordGroups#readStep}). */
-    void readNumberInto() throws StatementError {
-        float value = numbers.read();
-        written.add(value, numbers.tokenStart, cursor.pos);
-        numbers.markIfExpression(written);
+    /** Whether the group holds one name from the cursor on: a letter first, then a word, blanks and ')'. */
+    private boolean atLoneName() {
+        byte[] bytes = cursor.bytes;
+        int p = cursor.pos;
+        if (p >= bytes.length || !Character.isLetter(bytes[p])) {
+            return false;
+        }
+        while (p < bytes.length && (TextBytes.isWordByte(bytes[p]) || bytes[p] == '-')) {
+            p++;
+        }
+        while (p < bytes.length && TextBytes.isBlank(bytes[p])) {
+            p++;
+        }
+        return p < bytes.length && bytes[p] == ')';
+    }
+
+    /** A step of a transformation: a word, blanks, and one or more numbers separated by '|', up to and with ')'. */
+    private void readStep() throws StatementError {
+        int start = cursor.pos;
+        cursor.pos = cursor.afterWord(start);
+        if (cursor.pos == start) {
+            throw expected("an operation such as 'scale 2' in ");
+        }
+        written.add(Float.NaN, start, cursor.pos);
+        cursor.skipBlanks();
+        if (cursor.at(')')) {
+            throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
+                    + "' in " + group.of(statement) + ", found ')'", Definitions.STEP_HELP);
+        }
+        do {
+            cursor.skipBlanks();
+            float value = numbers.read();
+            written.add(value, numbers.tokenStart, cursor.pos);
+            numbers.markIfExpression(written);
+        } while (!groupEndsAfterNumber());
     }
 
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
-    private void readName(Statement statement, Group group) throws StatementError {
+    private void readName() throws StatementError {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
         while (cursor.pos < bytes.length && (TextBytes.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
             cursor.pos++;
         }
         if (cursor.pos == start) {
-            throw groupError(cursor.pos, "expected a name in %s, found " + cursor.describe(cursor.pos), statement, group);
+            throw expected("a name in ");
         }
         written.add(Float.NaN, start, cursor.pos);
         int nameEnd = cursor.pos;
@@ -119,7 +153,7 @@ final class GroupReader {
     }
 
     /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
-    private void readPath(Statement statement, Group group) throws StatementError {
+    private void readPath() throws StatementError {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
         while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !TextBytes.isLineBreak(bytes[cursor.pos])
@@ -127,8 +161,7 @@ final class GroupReader {
             cursor.pos++;
         }
         if (!cursor.at(')')) {
-            throw groupError(cursor.pos, "expected ')' after the path in %s, found " + cursor.describe(cursor.pos),
-                    statement, group);
+            throw expected("')' after the path in ");
         }
         int nameEnd = cursor.pos;
         while (TextBytes.isBlank(cursor.bytes[nameEnd - 1])) {
@@ -139,49 +172,44 @@ final class GroupReader {
     }
 
     /** {@code key=number} pairs separated by '|', up to and with the group's ')'; none is fine. */
-    private void readProperties(Statement statement, Group group) throws StatementError {
+    private void readProperties() throws StatementError {
         if (cursor.at(')')) {
             cursor.pos++;
             return;
         }
         while (true) {
             cursor.skipBlanks();
-            int key = readKey(statement, group);
+            int key = readKey();
             cursor.skipBlanks();
             if (!cursor.at('=')) {
-                throw groupError(cursor.pos, "expected '=' after the key '" + group.keys().get(key) + "' in %s, found "
-                        + cursor.describe(cursor.pos), statement, group);
+                throw expected("'=' after the key '" + group.keys().get(key) + "' in ");
             }
             cursor.pos++;
             cursor.skipBlanks();
             float value = numbers.read();
             written.addProperty(key, value, numbers.tokenStart, cursor.pos);
             numbers.markIfExpression(written);
-            if (groupEndsAfterNumber(statement, group)) {
+            if (groupEndsAfterNumber()) {
                 return;
             }
         }
     }
 
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
-    boolean groupEndsAfterNumber(Statement statement, Group group) throws StatementError {
+    private boolean groupEndsAfterNumber() throws StatementError {
         cursor.skipBlanks();
         if (cursor.at('|') || cursor.at(')')) {
             return cursor.bytes[cursor.pos++] == ')';
         }
-        throw groupError(cursor.pos, "expected '|' or ')' after a number in %s, found " + cursor.describe(cursor.pos),
-                statement, group);
+        throw expected("'|' or ')' after a number in ");
     }
 
     /** A key of a properties group: its index among the group's keys; known and not given before. */
-    private int readKey(Statement statement, Group group) throws StatementError {
+    private int readKey() throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
+        cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
-            throw groupError(cursor.pos, "expected a key such as '" + group.keys().get(0) + "' in %s, found "
-                    + cursor.describe(cursor.pos), statement, group);
+            throw expected("a key such as '" + group.keys().get(0) + "' in ");
         }
         String word = cursor.source.text(start, cursor.pos);
         int key = group.keys().indexOf(word);
@@ -207,15 +235,14 @@ final class GroupReader {
      * Too many numbers in a group; on a line with too few groups the hint says this group was likely left
      * out.
      */
-    private StatementError tooManyNumbers(Statement statement, Group group, int groupStart) {
-        String message = "too many numbers in %s: it takes " + contents(group);
+    private StatementError tooManyNumbers(int groupStart) {
+        String message = "too many numbers in " + group.of(statement) + ": it takes " + contents(group);
         int g = statement.groups().indexOf(group);
         if (g < 0 || groupsOnTheLineFrom(groupStart) >= statement.groups().size() - g) {
-            return groupError(numbers.tokenStart, message, statement, group);
+            return groupError(numbers.tokenStart, message);
         }
-        String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement)));
-        return cursor.error(numbers.tokenStart, text, "this line has fewer groups than '" + statement.keyword() + "' takes: was the "
-                + group.meaning() + " left out before this group? write it as " + statement.usage());
+        return cursor.error(numbers.tokenStart, message, "this line has fewer groups than '" + statement.keyword()
+                + "' takes: was the " + group.meaning() + " left out before this group? write it as " + statement.usage());
     }
 
     /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
@@ -230,10 +257,14 @@ final class GroupReader {
         return groups;
     }
 
-    /** An error about a group; {@code %s} in the message becomes "the centre of 'sphere'". */
-    StatementError groupError(int offset, String message, Statement statement, Group group) {
-        String text = message.replaceFirst(Pattern.quote("%s"), Matcher.quoteReplacement(group.of(statement))); // ours comes first
-        return cursor.error(offset, text, "write it as " + statement.usage());
+    /** "expected {@code what} the centre of 'sphere', found …" at the cursor, with the statement's usage as the help. */
+    private StatementError expected(String what) {
+        return groupError(cursor.pos, "expected " + what + group.of(statement) + ", found " + cursor.describe(cursor.pos));
+    }
+
+    /** An error about the group, with the statement's usage as the help. */
+    private StatementError groupError(int offset, String message) {
+        return cursor.error(offset, message, "write it as " + statement.usage());
     }
 
     /** What a group holds, for messages: "3 numbers (x|y|z)", "a name". */

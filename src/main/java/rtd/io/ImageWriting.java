@@ -34,16 +34,9 @@ public final class ImageWriting {
 
     /**
      * Starts {@code javax.imageio} and the writer of {@code format} on a daemon thread (loading it takes
-     * longer than a small render) by writing one pixel into nothing. Wait for the result before writing, so
-     * that two threads never load the same classes.
-     */
-    public static CompletableFuture<Void> warmUp(ImageFormat format) {
-        return warmUp(format, () -> { });
-    }
-
-    /**
-     * As {@link #warmUp(ImageFormat)}, then runs {@code then} on that thread; the result does not wait for
-     * it.
+     * longer than a small render) by writing one pixel into nothing, then runs {@code then} on that thread.
+     * Wait for the result (which does not wait for {@code then}) before writing, so that two threads never
+     * load the same classes.
      */
     public static CompletableFuture<Void> warmUp(ImageFormat format, Runnable then) {
         CompletableFuture<Void> done = new CompletableFuture<>();

@@ -35,10 +35,7 @@ final class LineCursor {
         if (bytes[pos] != ':') {
             return false;
         }
-        int after = pos + 1;
-        while (after < bytes.length && TextBytes.isSpace(bytes[after])) {
-            after++;
-        }
+        int after = afterSpaces(pos + 1);
         return after < bytes.length && bytes[after] == '(';
     }
 
@@ -48,9 +45,25 @@ final class LineCursor {
 
     /** Skips spaces and tabs, not a carriage return: it ends a line ({@link #skipToNextLine}). */
     void skipBlanks() {
-        while (pos < bytes.length && TextBytes.isSpace(bytes[pos])) {
-            pos++;
+        pos = afterSpaces(pos);
+    }
+
+    /** The first offset from {@code from} on that is no space or tab (a carriage return ends a line). */
+    int afterSpaces(int from) {
+        int p = from;
+        while (p < bytes.length && TextBytes.isSpace(bytes[p])) {
+            p++;
         }
+        return p;
+    }
+
+    /** The offset after the word (letters, digits, '_') that starts at {@code from}; {@code from} if none does. */
+    int afterWord(int from) {
+        int p = from;
+        while (p < bytes.length && TextBytes.isWordByte(bytes[p])) {
+            p++;
+        }
+        return p;
     }
 
     /** Whether the cursor is at the end of the file, of the line, or at a {@code //} comment. */
@@ -82,7 +95,7 @@ final class LineCursor {
     /** An error at {@code offset}; at an invisible character, the help says what it is and what to do. */
     StatementError error(int offset, String message, String help) {
         int codePoint = offset < bytes.length && bytes[offset] < 0 ? source.codePointAt(offset) : -1;
-        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));
+        return new StatementError(source.errorAt(line, lineStart, offset, message,
+                Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));
     }
 }

@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.stream.IntStream;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
@@ -30,8 +29,6 @@ import rtd.math.Vector3f;
  */
 record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNormals, int count) {
 
-    /** Meshes of fewer triangles are placed on the calling thread: starting tasks would take longer. */
-    private static final int PARALLEL_FROM = 1 << 15;
     /**
      * How many triangles share one array of numbers: 442 KiB, under half of G1's smallest region, so that it
      * is not "humongous" (put straight into the old generation).
@@ -40,33 +37,20 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
 
     /**
      * The triangles, in order, each corner p moved to {@code scale·p + shift}; one whose corners all name
-     * normals is smooth. A large mesh is placed in blocks on all cores, each triangle the same whichever
-     * thread makes it.
+     * normals is smooth.
      */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];
         Vector3f[] normalVectors = normalVectors();
-        int blocks = (count + BLOCK - 1) / BLOCK;
-        if (count < PARALLEL_FROM) {
-            for (int b = 0; b < blocks; b++) { // a plain loop: a small mesh is placed before a stream would start
-                placeBlock(b, triangles, shift, scale, colour, material, normalVectors);
+        float[] numbers = null;
+        for (int t = 0; t < count; t++) {
+            if (t % BLOCK == 0) {
+                numbers = new float[Triangle.NUMBERS * Math.min(BLOCK, count - t)];
             }
-        } else {
-            IntStream.range(0, blocks).parallel().forEach(b -> placeBlock(b, triangles, shift, scale, colour, material,
-                    normalVectors));
+            int at = Triangle.NUMBERS * (t % BLOCK);
+            triangles[t] = triangle(t, shift, scale, colour, material, numbers, at, normalVectors);
         }
         return Arrays.asList(triangles);
-    }
-
-    /** Makes the triangles of block {@code b} into {@code triangles}, their numbers in one new array. */
-    private void placeBlock(int b, IGeometry[] triangles, Vector3f shift, float scale, Color colour, Material material,
-            Vector3f[] normalVectors) {
-        int first = b * BLOCK;
-        int end = Math.min(count, first + BLOCK);
-        float[] numbers = new float[Triangle.NUMBERS * (end - first)];
-        for (int t = first; t < end; t++) {
-            triangles[t] = triangle(t, shift, scale, colour, material, numbers, Triangle.NUMBERS * (t - first), normalVectors);
-        }
     }
 
     /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */

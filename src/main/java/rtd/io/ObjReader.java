@@ -280,7 +280,6 @@ final class ObjReader {
     }
 
     private StatementError error(int offset, String message, String help) {
-        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), help));
+        return new StatementError(source.errorAt(line, lineStart, offset, message, help));
     }
 }

@@ -1,6 +1,5 @@
 package rtd.io;
 
-import java.util.ArrayList;
 import java.util.List;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
@@ -11,9 +10,9 @@ import rtd.image.Color;
 import rtd.math.Matrix4;
 
 /**
- * What an object's names mean (Part III, "Transformations" and "Patterns"): its last groups name a material
- * and a transform, in either order, each at most once; its colour group may name a pattern. Resolved once
- * the whole file is read, so that each may be defined above or below the object.
+ * What an object's names mean (Part III, "Transformations" and "Patterns"): the material and transform its
+ * last groups name, the pattern its colour group names. {@link DefinedNames#of} resolves them once the whole
+ * file is read, so that each may be defined above or below the object.
  *
  * @param material  the finish ({@link Material#DEFAULT} if none is named)
  * @param pattern   the pattern, or null
@@ -42,47 +41,5 @@ record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<S
     /** The colour a builder sees for a colour group that names the pattern: its first colour (black if unknown). */
     Color colour() {
         return pattern == null ? Color.BLACK : pattern.a();
-    }
-
-    /** The names of the object whose values are {@code values}; each mistake goes to {@code errors}. */
-    static ObjectNames of(StatementValues values, DefinedNames names, List<SceneContents.Found> errors) {
-        Material material = null;
-        Matrix4 transform = null;
-        List<String> used = new ArrayList<>();
-        int first = values.statement().groups().size();
-        for (int g = first; g < values.groups().groupCount; g++) {
-            String name = values.name(g);
-            used.add(name);
-            String kind = names.kindOf(name);
-            SceneError place = values.placeOfValue(g, 0);
-            if (kind == null) {
-                if (!names.isBroken(name)) {
-                    errors.add(found(place.saying("unknown " + names.objectNameKind() + " '" + name + "'",
-                            names.didYouMean(name, names.objectNameKind()))));
-                }
-            } else if (kind.equals("pattern")) {
-                errors.add(found(place.saying("'" + name + "' is a pattern, not a material or a transform",
-                        DefinedNames.whereItGoes(kind))));
-            } else if (kind.equals("material") ? material != null : transform != null) {
-                errors.add(found(place.saying("a second " + kind + " for one object: it takes at most one material and one "
-                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform")));
-            } else if (kind.equals("material")) {
-                material = names.material(name);
-            } else {
-                transform = names.transform(name);
-            }
-        }
-        Pattern pattern = null;
-        int colour = values.groups().named;
-        if (colour >= 0) {
-            String name = values.name(colour);
-            used.add(name);
-            pattern = names.lookUp(name, "pattern", values.placeOfValue(colour, 0), errors);
-        }
-        return new ObjectNames(material == null ? Material.DEFAULT : material, pattern, transform, used);
-    }
-
-    private static SceneContents.Found found(SceneError error) {
-        return new SceneContents.Found(error.line(), error.column(), error);
     }
 }

@@ -13,6 +13,11 @@ package rtd.io;
  */
 public record SceneError(String file, int line, int column, String message, String sourceLine, String help) {
 
+    /** This error as one of a scene's, ordered by its place. */
+    SceneContents.Found found() {
+        return new SceneContents.Found(line, column, this);
+    }
+
     /** Another message and help at the same place. */
     SceneError saying(String message, String help) {
         return new SceneError(file, line, column, message, sourceLine, help);

@@ -5,11 +5,9 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.List;
 import java.util.function.DoubleConsumer;
@@ -38,7 +36,7 @@ public final class SceneIO {
      * @throws IOException    if the file cannot be read
      */
     public static Scene readScene(Path path) throws SceneException, IOException {
-        return readScene(path, (List<SceneError>) null);
+        return readScene(path, null);
     }
 
     /** As {@link #readScene(Path)}, adding to {@code warnings} the likely slips that are no mistakes. */
@@ -47,12 +45,12 @@ public final class SceneIO {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
         Path folder = path.getParent() == null ? Path.of("") : path.getParent();
-        return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder), warnings);
+        return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder, null), warnings);
     }
 
     /** As {@link #readScene(Path, List)}, named {@code name} in messages: {@code <stdin>} for {@code /dev/stdin}. */
     public static Scene readScene(Path path, String name, List<SceneError> warnings) throws SceneException, IOException {
-        return parse(new SourceText(name, SceneFileReader.read(path), Path.of("")), warnings);
+        return parseScene(name, SceneFileReader.read(path), Path.of(""), warnings);
     }
 
     /** Reads a scene from {@code in} (all of it, up to {@link #MAX_SCENE_BYTES}), where there is no {@code /dev/stdin}. */
@@ -62,7 +60,7 @@ public final class SceneIO {
             throw new FileSystemException(name, null, "it is larger than " + SceneFileReader.bytes(MAX_SCENE_BYTES)
                     + "; rtd reads scene files of at most " + SceneFileReader.bytes(MAX_SCENE_BYTES));
         }
-        return parse(new SourceText(name, bytes, Path.of("")), warnings);
+        return parseScene(name, bytes, Path.of(""), warnings);
     }
 
     /** Reads a scene from {@code text}, named {@code name} in messages; meshes are found from the current directory. */
@@ -83,13 +81,16 @@ public final class SceneIO {
     /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}; warnings go to {@code warnings} (null: dropped). */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
-        return parse(new SourceText(name, bytes, meshFolder), warnings);
+        return parse(new SourceText(name, bytes, meshFolder, null), warnings);
     }
 
-    /** Parses {@code source}, and then closes it: the scene needs its bytes no more. */
+    /**
+     * Parses {@code source} at clock 0, and then closes it: the scene needs its bytes no more (a
+     * {@link SceneFile}, read for many clocks, keeps them).
+     */
     private static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
         try (source) {
-            return SceneParser.parse(source, warnings);
+            return SceneParser.parse(source, new Names(0), warnings);
         }
     }
 
@@ -100,18 +101,15 @@ public final class SceneIO {
      */
     public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
             throws IOException {
-        Path folder = output.toAbsolutePath().getParent();
-        TemporaryFiles.Created temporary = TemporaryFiles.create(folder, output.getFileName().toString());
+        TemporaryFiles.Replacement temporary = TemporaryFiles.create(output);
         try {
             try (OutputStream out = new BufferedOutputStream(temporary.out(), 1 << 16)) {
                 ImageWriting.write(picture, format, out, progress);
             }
-            moveIntoPlace(temporary.path(), output);
+            temporary.commit();
         } catch (IOException | RuntimeException | Error e) {
-            Files.deleteIfExists(temporary.path());
+            temporary.discard();
             throw e;
-        } finally {
-            TemporaryFiles.forget(temporary.path());
         }
     }
 
@@ -123,14 +121,6 @@ public final class SceneIO {
             throws IOException {
         try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), 1 << 16)) {
             ImageWriting.write(picture, format, out, progress);
-        }
-    }
-
-    private static void moveIntoPlace(Path temporary, Path output) throws IOException {
-        try {
-            Files.move(temporary, output, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } catch (AtomicMoveNotSupportedException e) {
-            Files.move(temporary, output, StandardCopyOption.REPLACE_EXISTING);
         }
     }
 }

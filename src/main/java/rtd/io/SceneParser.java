@@ -31,14 +31,9 @@ final class SceneParser {
     }
 
     /**
-     * Reads a scene, or throws its mistakes; likely slips go to {@code warnings} (null: dropped), in file
-     * order.
+     * Reads a scene at the clock and with the named values of {@code names} (Part III), or throws its mistakes;
+     * likely slips go to {@code warnings} (null: dropped), in file order.
      */
-    static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
-        return parse(source, new Names(0), warnings);
-    }
-
-    /** As {@link #parse(SourceText, List)}, with the clock and the named values of {@code names} (Part III). */
     static Scene parse(SourceText source, Names names, List<SceneError> warnings) throws SceneException {
         byte[] bytes = source.bytes();
         int start = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;
@@ -68,21 +63,21 @@ final class SceneParser {
         var ambients = contents.ambients;
         var cameras = contents.cameras;
         for (var second : ambients.subList(Math.min(1, ambients.size()), ambients.size())) {
-            errors.add(found(second.place().saying("a second 'ambient': a scene has one background colour",
-                    "the first 'ambient' is at line " + ambients.get(0).place().line())));
+            errors.add(second.place().saying("a second 'ambient': a scene has one background colour",
+                    "the first 'ambient' is at line " + ambients.get(0).place().line()).found());
         }
         for (var second : cameras.subList(Math.min(1, cameras.size()), cameras.size())) {
-            errors.add(found(second.place().saying("a second camera: a scene has one",
-                    "the first camera is at line " + cameras.get(0).place().line())));
+            errors.add(second.place().saying("a second camera: a scene has one",
+                    "the first camera is at line " + cameras.get(0).place().line()).found());
         }
         DefinedNames names = new DefinedNames(contents, errors);
         Set<String> named = new HashSet<>(contents.namedAtOnce);
         List<IGeometry> objects = objects(contents, names, named, errors);
         if (errors.isEmpty() && contents.statementCount == 0) {
-            errors.add(found(atStart(source, "the scene is empty: it has no statements, only blanks and comments",
-                    "a scene needs at least a camera, such as " + CAMERA_EXAMPLE)));
+            errors.add(atStart(source, "the scene is empty: it has no statements, only blanks and comments",
+                    "a scene needs at least a camera, such as " + CAMERA_EXAMPLE).found());
         } else if (errors.isEmpty() && cameras.isEmpty()) {
-            errors.add(found(atStart(source, "the scene has no camera", "add a line such as " + CAMERA_EXAMPLE)));
+            errors.add(atStart(source, "the scene has no camera", "add a line such as " + CAMERA_EXAMPLE).found());
         }
         if (!errors.isEmpty()) {
             errors.sort(Comparator.comparingInt(SceneContents.Found::line).thenComparingInt(SceneContents.Found::column));
@@ -110,7 +105,7 @@ final class SceneParser {
         int count = contents.lineNumbers;
         if (first != null) {
             String more = count == 1 ? "" : count == 2 ? ", as does 1 more line" : ", as do " + (count - 1) + " more lines";
-            errors.add(found(first.saying(first.message() + more, first.help())));
+            errors.add(first.saying(first.message() + more, first.help()).found());
         }
     }
 
@@ -139,7 +134,7 @@ final class SceneParser {
     private static void build(SceneContents contents, StatementValues values, DefinedNames names, List<IGeometry> objects,
             Set<String> named, List<SceneContents.Found> errors) {
         int before = errors.size();
-        ObjectNames resolved = ObjectNames.of(values, names, errors);
+        ObjectNames resolved = names.of(values, errors);
         named.addAll(resolved.names());
         values.useNames(resolved);
         try {
@@ -150,12 +145,8 @@ final class SceneParser {
         }
     }
 
-    private static SceneContents.Found found(SceneError error) {
-        return new SceneContents.Found(error.line(), error.column(), error);
-    }
-
     private static SceneError atStart(SourceText source, String message, String help) {
         int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
-        return new SceneError(source.name(), 1, 1, message, source.lineText(start), help);
+        return source.errorAt(1, start, start, message, help);
     }
 }

@@ -16,12 +16,10 @@ final class SourceText implements AutoCloseable {
     /** The meshes read for other frames of one animation (Part III), or null: each is read anew. */
     private final MeshCache meshes;
 
-    /** A text named {@code name} in messages, whose relative paths start from {@code folder}. */
-    SourceText(String name, byte[] bytes, Path folder) {
-        this(name, bytes, folder, null);
-    }
-
-    /** As {@link #SourceText(String, byte[], Path)}, its meshes kept in (and taken from) {@code meshes}. */
+    /**
+     * A text named {@code name} in messages, whose relative paths start from {@code folder}, its meshes kept in
+     * (and taken from) {@code meshes}, if not null.
+     */
     SourceText(String name, byte[] bytes, Path folder, MeshCache meshes) {
         this.name = name;
         this.bytes = bytes;
@@ -29,9 +27,9 @@ final class SourceText implements AutoCloseable {
         this.meshes = meshes;
     }
 
-    /** A text whose relative paths start from the current directory. */
+    /** A text whose relative paths start from the current directory, its meshes read anew. */
     SourceText(String name, byte[] bytes) {
-        this(name, bytes, Path.of(""));
+        this(name, bytes, Path.of(""), null);
     }
 
     String name() {
@@ -67,6 +65,14 @@ final class SourceText implements AutoCloseable {
             end++; // a line ends at LF, CR LF or a CR alone (old Mac files)
         }
         return new String(bytes, lineStart, end - lineStart, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * An error at byte {@code offset} of line {@code line}, which starts at byte {@code lineStart}: the place
+     * and the line's text that messages show.
+     */
+    SceneError errorAt(int line, int lineStart, int offset, String message, String help) {
+        return new SceneError(name, line, column(lineStart, offset), message, lineText(lineStart), help);
     }
 
     /** The column, from 1, of byte {@code offset} on the line that starts at {@code lineStart}. */
@@ -107,31 +113,28 @@ final class SourceText implements AutoCloseable {
         if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '*') {
             return "'/*'";
         }
-        int after = offset + 1;
-        if (TextBytes.isWordByte(bytes[offset])) {
-            while (after < bytes.length && TextBytes.isWordByte(bytes[after])) {
-                after++; // show a whole word, not its first letter
-            }
-        }
-        while (after < bytes.length && (bytes[after] & 0xC0) == 0x80) {
-            after++; // the rest of a character of several bytes
-        }
-        int codePoint = text(offset, after).codePointAt(0);
+        int codePoint = codePointAt(offset);
         if (Character.isISOControl(codePoint)) {
             return String.format("the control character U+%04X", codePoint);
+        }
+        int after = characterEnd(offset);
+        while (TextBytes.isWordByte(bytes[offset]) && after < bytes.length && TextBytes.isWordByte(bytes[after])) {
+            after++; // show a whole word, not its first letter
         }
         return Hints.isInvisible(codePoint) ? Hints.nameOf(codePoint) : "'" + text(offset, after) + "'";
     }
 
     /** The character that starts at {@code offset}, or −1 at the end of the file. */
     int codePointAt(int offset) {
-        if (offset >= bytes.length) {
-            return -1;
-        }
+        return offset >= bytes.length ? -1 : text(offset, characterEnd(offset)).codePointAt(0);
+    }
+
+    /** Where the character that starts at {@code offset} ends: after its continuation bytes. */
+    private int characterEnd(int offset) {
         int after = offset + 1;
         while (after < bytes.length && (bytes[after] & 0xC0) == 0x80) {
             after++;
         }
-        return new String(bytes, offset, after - offset, StandardCharsets.UTF_8).codePointAt(0);
+        return after;
     }
 }

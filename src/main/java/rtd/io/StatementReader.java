@@ -118,9 +118,7 @@ final class StatementReader {
      */
     private Statement readKeyword(boolean afterLineNumber) throws StatementError {
         statementStart = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
+        cursor.pos = cursor.afterWord(statementStart);
         if (cursor.pos == statementStart) {
             throw noStatement();
         }
@@ -138,7 +136,7 @@ final class StatementReader {
         return cursor.atEndOfStatement() ? null : readKeyword(true);
     }
 
-    /** Whether the word from {@link #statementStart} to {@link #pos} is a line number: digits, then a blank or the end. */
+    /** Whether the word from {@link #statementStart} to the cursor is a line number: digits, then a blank or the end. */
     private boolean atLineNumber() {
         for (int i = statementStart; i < cursor.pos; i++) {
             if (cursor.bytes[i] < '0' || cursor.bytes[i] > '9') {
@@ -185,19 +183,10 @@ final class StatementReader {
 
     /** The help for a second statement (a keyword, then ':') from {@code from} on, after blanks; or null. */
     private String secondStatement(int from) {
-        int start = from;
-        while (start < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[start])) {
-            start++;
-        }
-        int end = start;
-        while (end < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[end])) {
-            end++;
-        }
+        int start = cursor.afterSpaces(from);
+        int end = cursor.afterWord(start);
         Statement statement = Grammar.find(cursor.bytes, start, end);
-        int after = end;
-        while (after < cursor.bytes.length && TextBytes.isSpace(cursor.bytes[after])) {
-            after++;
-        }
+        int after = cursor.afterSpaces(end);
         return statement != null && after < cursor.bytes.length && cursor.bytes[after] == ':'
                 ? Hints.oneStatementPerLine(statement.keyword()) : null;
     }
@@ -213,7 +202,7 @@ final class StatementReader {
         inBlockComment = atBlockComment() && commentEnd(cursor.pos + 2) < 0;
     }
 
-    /** On a line inside a block comment: whether the comment ends on it; {@link #pos} is then after the end. */
+    /** On a line inside a block comment: whether the comment ends on it; the cursor is then after the end. */
     private boolean leaveBlockComment() {
         int after = commentEnd(cursor.pos);
         if (after < 0) {

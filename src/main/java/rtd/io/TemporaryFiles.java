@@ -3,18 +3,20 @@ package rtd.io;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.HashSet;
 import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
- * The hidden temporary files {@code .NAME.<16 hex digits>.tmp} a picture is written to beside its output
- * before it is moved into place, removed after a failed write and by a shutdown hook when a signal stops the
- * JVM (only {@code kill -9} can leave one). Its list is global on purpose, as the hook belongs to the JVM
- * (guarded by this class's lock).
+ * The hidden temporary files {@code .NAME.<16 hex digits>.tmp} a picture or an animation is written to beside
+ * its output before it is moved into place, so that the output is written all or nothing: removed after a
+ * failed write and by a shutdown hook when a signal stops the JVM (only {@code kill -9} can leave one). Its
+ * list is global on purpose, as the hook belongs to the JVM (guarded by this class's lock).
  */
 final class TemporaryFiles {
 
@@ -39,28 +41,54 @@ final class TemporaryFiles {
     }
 
     /**
-     * A new temporary file in {@code folder} for {@code outputName}, open for writing and remembered until
-     * {@link #forget}; never one that exists.
+     * A new temporary file beside {@code output}, open for writing and removed by the shutdown hook until it
+     * is committed or discarded; never one that exists.
      */
-    static synchronized Created create(Path folder, String outputName) throws IOException {
+    static synchronized Replacement create(Path output) throws IOException {
         if (stopping) {
             throw new IOException("rtd is stopping");
         }
+        Path folder = output.toAbsolutePath().getParent();
         // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
         // A random name, not a UUID: that would start a SecureRandom, which takes long to seed.
-        Path temporary = folder.resolve(name(outputName, ThreadLocalRandom.current().nextLong()));
+        Path temporary = folder.resolve(name(output.getFileName().toString(), ThreadLocalRandom.current().nextLong()));
         // CREATE_NEW: should the name be taken, fail rather than overwrite (or later delete) that file.
         OutputStream out = Files.newOutputStream(temporary, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
         OPEN.add(temporary);
-        return new Created(temporary, out);
+        return new Replacement(temporary, output, out);
     }
 
-    /** A new temporary file and the stream that writes it. */
-    record Created(Path path, OutputStream out) {
+    /**
+     * A temporary file being written, and the output it replaces once complete: all or nothing.
+     *
+     * @param path   the temporary file
+     * @param output the file it becomes
+     * @param out    the stream that writes it
+     */
+    record Replacement(Path path, Path output, OutputStream out) {
+
+        /** Moves the written file over the output (atomically where the file system can). */
+        void commit() throws IOException {
+            try {
+                Files.move(path, output, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(path, output, StandardCopyOption.REPLACE_EXISTING);
+            }
+            forget(path);
+        }
+
+        /** Closes and deletes the temporary file; the output stays as it was. */
+        void discard() throws IOException {
+            try {
+                out.close();
+            } finally {
+                Files.deleteIfExists(path);
+                forget(path);
+            }
+        }
     }
 
-    /** The temporary file is moved into place or deleted: the shutdown hook leaves it be. */
-    static synchronized void forget(Path temporary) {
+    private static synchronized void forget(Path temporary) {
         OPEN.remove(temporary);
     }
 
@@ -71,18 +99,12 @@ final class TemporaryFiles {
 
     /** The longest start of {@code name} that is at most {@code maxBytes} in UTF-8, cut between characters. */
     private static String prefix(String name, int maxBytes) {
-        int bytes = 0;
-        int end = 0;
-        while (end < name.length()) {
-            int codePoint = name.codePointAt(end);
-            int size = new String(Character.toChars(codePoint)).getBytes(StandardCharsets.UTF_8).length;
-            if (bytes + size > maxBytes) {
-                break;
-            }
-            bytes += size;
-            end += Character.charCount(codePoint);
+        byte[] bytes = name.getBytes(StandardCharsets.UTF_8);
+        int cut = Math.min(bytes.length, maxBytes);
+        while (cut < bytes.length && cut > 0 && (bytes[cut] & 0xC0) == 0x80) {
+            cut--; // not inside a character of several bytes
         }
-        return name.substring(0, end);
+        return new String(bytes, 0, cut, StandardCharsets.UTF_8);
     }
 
     private static synchronized void removeAll() {

@@ -163,8 +163,8 @@ class HintsTest {
         @Test
         void aBlockCommentOverManyLinesIsOneMistakeAndTheLinesInItAreSkipped() {
             String text = CAMERA + SPHERE.repeat(20) + "/* commented out:\n" + CAMERA + SPHERE.repeat(20) + "*/\nspere:(1|2|3):(1):(0|0|0)\n";
-            SourceText source = new SourceText("scene.txt", text.getBytes(StandardCharsets.UTF_8));
-            String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, null)).report();
+            String source = text;
+            String whole = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", source)).report();
             assertThat(whole).contains("2 errors");
         }
     }
@@ -288,8 +288,8 @@ class HintsTest {
 
         @Test
         void aLongNumberedListingIsOneMistakeAtItsFirstLine() {
-            SourceText source = new SourceText("scene.txt", listing.repeat(30).getBytes(StandardCharsets.UTF_8));
-            SceneException e = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, null));
+            String source = listing.repeat(30);
+            SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", source));
             assertThat(e.errors().get(0).line()).isEqualTo(1);
             assertThat(e.errors().get(0).message()).contains("line number");
         }
@@ -332,8 +332,8 @@ class HintsTest {
         @Test
         void aLargeCrFileCountsItsLines() {
             String many = (CAMERA + (SPHERE + "spere:(1|2|3):(1):(0|0|0)\n").repeat(8)).replace('\n', '\r');
-            SourceText source = new SourceText("scene.txt", many.getBytes(StandardCharsets.UTF_8));
-            String whole = catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, null)).report();
+            String source = many;
+            String whole = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", source)).report();
             assertThat(whole).contains(":17:1: error");
         }
 

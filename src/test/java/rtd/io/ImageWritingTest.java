@@ -84,7 +84,7 @@ class ImageWritingTest {
 
     @Test
     void theWarmUpLoadsTheWriterWithoutError() {
-        assertThat(ImageWriting.warmUp(ImageFormat.PNG)).succeedsWithin(java.time.Duration.ofSeconds(30));
+        assertThat(ImageWriting.warmUp(ImageFormat.PNG, () -> { })).succeedsWithin(java.time.Duration.ofSeconds(30));
     }
 
     @Test

@@ -3,7 +3,6 @@ package rtd.io;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.DisplayName;
@@ -21,7 +20,7 @@ class MaterialsAnywhereTest {
      */
     @Test
     void givesEachObjectItsMaterialWhereverTheMaterialIsDefined() throws SceneException {
-        SourceText source = new SourceText("scene.txt", String.join("\n",
+        String source = String.join("\n",
                 "orthographic_camera:(0|0|20):(0|0|-1):(50)",
                 "sphere:(0|0|0):(1):(255|0|0):(below)",
                 "material:(above):(reflective=0.5)",
@@ -29,10 +28,10 @@ class MaterialsAnywhereTest {
                 "material:(below):(specular=0.1)",
                 "material:(unused):(diffuse=0.5)",
                 "triangle:(0|0|0):(1|0|0):(0|1|0):(0|255|0):(above)",
-                "sphere:(2|0|0):(1):(0|0|255):(below)").getBytes(StandardCharsets.UTF_8));
+                "sphere:(2|0|0):(1):(0|0|255):(below)");
         List<SceneError> warnings = new ArrayList<>();
 
-        Scene scene = SceneParser.parse(source, warnings);
+        Scene scene = SceneIO.parseScene("scene.txt", source, warnings);
 
         assertThat(scene.objects()).extracting(IGeometry::kind).containsExactly("sphere", "sphere", "triangle", "sphere");
         assertThat(scene.objects()).extracting(object -> object.material().reflective())
@@ -46,13 +45,13 @@ class MaterialsAnywhereTest {
     /** A material defined twice: the second is a mistake, and an object after both gets the first. */
     @Test
     void reportsAMaterialDefinedTwiceAndTheObjectsMistakes() {
-        SourceText source = new SourceText("scene.txt", String.join("\n",
+        String source = String.join("\n",
                 "orthographic_camera:(0|0|20):(0|0|-1):(50)",
                 "material:(m):(reflective=0.5)",
                 "material:(m):(reflective=0.25)",
                 "sphere:(1|0|0):(-1):(255|0|0):(m)",
-                "sphere:(1|0|0):(1):(255|0|0):(n)").getBytes(StandardCharsets.UTF_8));
-        assertThat(catchThrowableOfType(SceneException.class, () -> SceneParser.parse(source, null)).report())
+                "sphere:(1|0|0):(1):(255|0|0):(n)");
+        assertThat(catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt", source)).report())
                 .contains("a second material 'm'", "greater than 0", "unknown material 'n'");
     }
 }

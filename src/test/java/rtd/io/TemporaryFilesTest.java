@@ -2,12 +2,44 @@ package rtd.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
-@DisplayName("The temporary file a PNG is written to")
+@DisplayName("The temporary file a picture is written to")
 class TemporaryFilesTest {
+
+    @TempDir
+    Path folder;
+
+    @Test
+    void aCommittedFileReplacesTheOutputAndLeavesNoTemporaryFile() throws IOException {
+        Path output = Files.writeString(folder.resolve("out.png"), "old");
+        TemporaryFiles.Replacement temporary = TemporaryFiles.create(output);
+        temporary.out().write("new".getBytes(StandardCharsets.UTF_8));
+        temporary.out().close();
+
+        temporary.commit();
+
+        assertThat(output).hasContent("new");
+        assertThat(folder.toFile().list()).containsExactly("out.png");
+    }
+
+    @Test
+    void aDiscardedFileLeavesTheOutputAsItWasAndNoTemporaryFile() throws IOException {
+        Path output = Files.writeString(folder.resolve("out.png"), "old");
+        TemporaryFiles.Replacement temporary = TemporaryFiles.create(output);
+        temporary.out().write("half".getBytes(StandardCharsets.UTF_8));
+
+        temporary.discard();
+
+        assertThat(output).hasContent("old");
+        assertThat(folder.toFile().list()).containsExactly("out.png");
+    }
 
     @Test
     void isNamedAfterTheOutputHiddenWithSixteenHexDigits() {

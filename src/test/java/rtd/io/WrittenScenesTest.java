@@ -4,7 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -52,8 +51,7 @@ class WrittenScenesTest {
     void comeBackTheSame(long seed) throws IOException, SceneException {
         Files.writeString(folder.resolve("m.obj"), MESH);
         Written written = write(new Random(seed), 150);
-        SourceText source = new SourceText("scene.txt", written.text().getBytes(StandardCharsets.UTF_8), folder);
-        Scene whole = SceneParser.parse(source, null);
+        Scene whole = SceneIO.parseScene("scene.txt", written.text(), folder);
         assertThat(Describe.objects(whole.objects())).isEqualTo(Describe.objects(written.objects()));
     }
 
