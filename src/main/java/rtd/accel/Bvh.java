@@ -19,10 +19,9 @@ import rtd.scene.Scene;
  * {@code nodes[2i] + 1}; a leaf holds {@code nodes[2i+1]} objects starting at place
  * {@code nodes[2i]} of {@link #leaves}.
  *
- * <p>A node's box and growth lie side by side, and so do two children's ({@link Compaction}):
- * a walk that opens a node reads both its children's from one stretch of 64 bytes. With a
- * hundred thousand objects the tree no longer fits in the processor's nearest caches, and a
- * walk waits for memory at every node it opens: once per node so, not once per array.
+ * <p>A node's box and growth lie side by side, and so do two children's: a walk that opens a
+ * node reads both its children's from one stretch of 64 bytes, once the tree no longer fits in
+ * the processor's nearest caches.
  *
  * <p>Objects without a box (planes) have no place in a tree of boxes: they stay beside it,
  * in {@link #unbounded}, and every ray tests them, as the paper's loop does.
@@ -61,14 +60,13 @@ public final class Bvh {
 
     private Bvh(BvhBuilder builder, List<IGeometry> objects) {
         builder.build();
-        Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
-        this.boxes = compaction.boxes();
-        this.nodes = compaction.nodes();
+        this.boxes = builder.boxes();
+        this.nodes = builder.nodes();
         int[] order = builder.order();
         // the builder's own array, unless objects without a box (planes) follow the tree's at its end
         int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
         float[] roundings = new float[2 * fileOrder.length];
-        this.leaves = new LeafObjects(objects, fileOrder, builder, roundings);
+        this.leaves = new LeafObjects(objects, fileOrder, builder.spareInts(), builder.spareFloats(), null, roundings);
         putRoundings(boxes, nodes, roundings);
         this.unboundedOrder = builder.unbounded();
         this.unbounded = new IGeometry[unboundedOrder.length];
@@ -83,7 +81,7 @@ public final class Bvh {
 
     /**
      * Each node's largest rounding, from the leaves up: a node's children have larger numbers
-     * than the node itself ({@link Compaction}), so one pass backwards meets them first. The
+     * than the node itself ({@link BvhBuilder}), so one pass backwards meets them first. The
      * objects' own are in {@code roundings}, in leaf order ({@link LeafObjects}).
      */
     private static void putRoundings(float[] boxes, int[] nodes, float[] roundings) {

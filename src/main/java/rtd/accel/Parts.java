@@ -100,18 +100,6 @@ final class Parts {
         run((start, end, part) -> range.run(start, end));
     }
 
-    /**
-     * The loop of {@link LeafObjects} on {@code pool}: 0 to n − 1 cut into parts; none (the
-     * calling thread's) without a pool.
-     */
-    static LeafObjects.ParallelLoop loopOn(ForkJoinPool pool) {
-        return pool == null ? null : (n, action) -> new Parts(n, pool).run((start, end) -> {
-            for (int i = start; i < end; i++) {
-                action.accept(i);
-            }
-        });
-    }
-
     /** Where part {@code part} starts. */
     private int start(int part) {
         return (int) ((long) count * part / parts);

@@ -169,7 +169,7 @@ final class ViewGridBuilder {
 
     /** The numbers of the objects' tests, packed in leaf order. */
     private LeafObjects pack(int[] fileOrder) {
-        return new LeafObjects(objects, fileOrder, ObjectArrays.of(0), Parts.loopOn(pool), null);
+        return new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
     }
 
     /** The places in the file of the objects without a box, in file order. */
