@@ -8,27 +8,21 @@ import java.util.Map;
 import rtd.geometry.IGeometry;
 
 /**
- * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH), as
- * pbrt's BVH does: a node's object centres are sorted into {@value #BINS} bins along the axis
- * where they spread most, and the node divides between the two bins where the expected cost is
- * least, a child's cost being its box's surface area (how likely a ray passes through it) times
- * its object count; it becomes a leaf when no split is cheaper than testing its objects.
- *
- * <p>An <em>extent</em> is twelve floats: the box around a group's boxes (min x, y, z, max x, y,
- * z), then the box around their centres, the centre of a box being {@code (min + max) · 0.5} in
- * float as {@link rtd.geometry.BoundingBox#centre} computes it. A child's extent is the union of
- * its bins', exactly what a pass over its objects would measure.
+ * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic, as pbrt's BVH
+ * does: a node's objects divide between the two {@link SahBins} where the expected cost is least,
+ * along the axis where their centres spread most, or the node becomes a leaf when no split is
+ * cheaper than testing its objects.
  *
  * <p>A node's objects are partitioned by copying them, in order, from one of two sets of arrays
  * into the other; the children partition them back, and a leaf's objects end in the first set.
- * Nodes are numbered depth first, the two children of a node side by side, in the {@link Bvh}'s
- * layout. Where all centres of a node coincide the SAH has nothing to go by: the twins of earlier
- * objects are left out ({@link #withoutTwins}) and the rest halved by count, as in very deep trees.
- * It builds on one thread, in a loop over the nodes waiting, which the JIT compiles while it runs.
+ * Nodes are numbered depth first as they are made, a node's two children side by side, in the
+ * {@link Bvh}'s layout. Where all centres of a node coincide the heuristic has nothing to go by:
+ * the twins of earlier objects are left out ({@link #withoutTwins}) and the rest halved by count,
+ * as in very deep trees. It builds on one thread, in a loop over the nodes waiting, which the JIT
+ * compiles while it runs.
  */
 final class BvhBuilder {
 
-    private static final int BINS = 16;
     private static final int MAX_LEAF_SIZE = 16;
     /** Past this depth nodes are halved by count, which bounds the depth for any input. */
     private static final int MAX_SAH_DEPTH = 48;
@@ -37,8 +31,6 @@ final class BvhBuilder {
      * shallow trees of full leaves, which a walk that waits for memory at each node favours.
      */
     private static final float TRAVERSAL_COST = 4f;
-    private static final int EXTENT = 12;
-    private static final int CENTRES = 6;
 
     private final List<IGeometry> objects;
     /** The objects with a finite box, which the tree holds: places {@code [0, count)}. */
@@ -48,12 +40,7 @@ final class BvhBuilder {
     /** Two sets of the objects' places in the file and their boxes (six floats a place); set 0 ends in leaf order. */
     private final int[][] orders;
     private final float[][] objectBoxes;
-    private final int[] binCounts = new int[BINS];
-    /** Per bin, its extent, {@value #EXTENT} floats. */
-    private final float[] bins = new float[EXTENT * BINS];
-    private final float[] costs = new float[BINS - 1];
-    /** The extent of the bins swept so far. */
-    private final float[] sweep = new float[EXTENT];
+    private final SahBins bins = new SahBins();
     private float[] boxes;
     private int[] nodes;
     private int nodeCount = 1;
@@ -66,7 +53,7 @@ final class BvhBuilder {
         orders = new int[][] {new int[n], new int[n]};
         objectBoxes = new float[][] {new float[6 * n], new float[6 * n]};
         int kept = 0;
-        int[] apart = new int[n];
+        int[] apart = orders[1]; // free until the build
         int apartCount = 0;
         for (int f = 0; f < n; f++) {
             KnownShapes.putBox(objects.get(f), objectBoxes[0], 6 * kept);
@@ -148,7 +135,7 @@ final class BvhBuilder {
         int side = waiting.side();
         float[] extent = waiting.extent() != null ? waiting.extent() : measure(side, start, end);
         System.arraycopy(extent, 0, boxes, Bvh.BOX * waiting.node(), 6);
-        int axis = widestAxis(extent);
+        int axis = SahBins.widestAxis(extent);
         if (end - start > 1 && axis < 0) {
             end = withoutTwins(side, start, end);
         }
@@ -172,30 +159,26 @@ final class BvhBuilder {
     private Pending[] bySah(Pending node, int end, float[] extent, int axis) {
         int start = node.start();
         int n = end - start;
-        float area = area(extent, 0);
+        float area = SahBins.area(extent);
         if (n <= TRAVERSAL_COST && area > 0 && area < Float.POSITIVE_INFINITY) {
             return null; // a split costs at least a visit, more than these objects' tests
         }
-        float lo = extent[CENTRES + axis];
-        float scale = BINS / (extent[CENTRES + axis + 3] - lo);
-        fillBins(node.side(), start, end, axis, lo, scale);
-        int bestBin = cheapestSplit();
-        float bestCost = bestBin < 0 ? Float.POSITIVE_INFINITY : costs[bestBin];
-        if (TRAVERSAL_COST + bestCost / area >= n && n <= MAX_LEAF_SIZE) {
+        float lo = extent[SahBins.CENTRES + axis];
+        float scale = SahBins.COUNT / (extent[SahBins.CENTRES + axis + 3] - lo);
+        bins.fill(objectBoxes[node.side()], start, end, axis, lo, scale);
+        int bestBin = bins.cheapestSplit();
+        if (TRAVERSAL_COST + bins.cost(bestBin) / area >= n && n <= MAX_LEAF_SIZE) {
             return null;
         }
-        int middle = start;
-        for (int b = 0; b <= bestBin; b++) {
-            middle += binCounts[b];
-        }
+        int middle = start + bins.count(bestBin + 1);
         if (middle == start || middle == end) {
             return byCount(node, end);
         }
         int to = 1 - node.side();
         scatter(node.side(), start, end, axis, lo, scale, bestBin, middle);
         int left = pair();
-        return new Pending[] {new Pending(left, start, middle, node.depth() + 1, binsExtent(0, bestBin + 1), to),
-                new Pending(left + 1, middle, end, node.depth() + 1, binsExtent(bestBin + 1, BINS), to)};
+        return new Pending[] {new Pending(left, start, middle, node.depth() + 1, bins.extent(0, bestBin + 1), to),
+                new Pending(left + 1, middle, end, node.depth() + 1, bins.extent(bestBin + 1, SahBins.COUNT), to)};
     }
 
     /** Halves a node's objects by count in their present order; the children measure their extents. */
@@ -217,64 +200,6 @@ final class BvhBuilder {
         return first;
     }
 
-    /** Counts the objects of places {@code [start, end)} of set {@code side} into the bins of their centres. */
-    private void fillBins(int side, int start, int end, int axis, float lo, float scale) {
-        Arrays.fill(binCounts, 0);
-        for (int b = 0; b < BINS; b++) {
-            setEmpty(bins, EXTENT * b);
-        }
-        float[] from = objectBoxes[side];
-        for (int i = start; i < end; i++) {
-            int bin = binOf((from[6 * i + axis] + from[6 * i + axis + 3]) * 0.5f, lo, scale);
-            binCounts[bin]++;
-            add(bins, EXTENT * bin, from, 6 * i);
-        }
-    }
-
-    /** The bin of a centre, for bins from {@code lo} at {@code scale} bins a unit: the same for binning and partition. */
-    private static int binOf(float centre, float lo, float scale) {
-        return Math.min(BINS - 1, Math.max(0, (int) ((centre - lo) * scale)));
-    }
-
-    /**
-     * Fills {@link #costs}, for the split between bin s and s + 1, with area(left box) · left count
-     * + area(right box) · right count (infinite where a side is empty), sweeping from both ends;
-     * answers the cheapest, or −1 if none has two sides.
-     */
-    private int cheapestSplit() {
-        setEmpty(sweep, 0);
-        for (int s = 0, n = 0; s < BINS - 1; s++) {
-            n += binCounts[s];
-            union(sweep, 0, bins, EXTENT * s);
-            costs[s] = n == 0 ? Float.POSITIVE_INFINITY : area(sweep, 0) * n;
-        }
-        setEmpty(sweep, 0);
-        for (int s = BINS - 1, n = 0; s > 0; s--) {
-            n += binCounts[s];
-            union(sweep, 0, bins, EXTENT * s);
-            costs[s - 1] = n == 0 ? Float.POSITIVE_INFINITY : costs[s - 1] + area(sweep, 0) * n;
-        }
-        int best = -1;
-        float bestCost = Float.POSITIVE_INFINITY;
-        for (int s = 0; s < BINS - 1; s++) {
-            if (costs[s] < bestCost) {
-                bestCost = costs[s];
-                best = s;
-            }
-        }
-        return best;
-    }
-
-    /** A new extent, the union of bins {@code [from, to)}. */
-    private float[] binsExtent(int from, int to) {
-        float[] extent = new float[EXTENT];
-        setEmpty(extent, 0);
-        for (int b = from; b < to; b++) {
-            union(extent, 0, bins, EXTENT * b);
-        }
-        return extent;
-    }
-
     /**
      * Copies places {@code [start, end)} of set {@code side} to the other set, keeping their order:
      * those in a bin {@code ≤ lastLeftBin} from {@code start} on, the others from {@code right} on.
@@ -289,7 +214,7 @@ final class BvhBuilder {
         int left = start;
         for (int i = start; i < end; i++) {
             int at = 6 * i;
-            int bin = binOf((from[at + axis] + from[at + axis + 3]) * 0.5f, lo, scale);
+            int bin = SahBins.binOf((from[at + axis] + from[at + axis + 3]) * 0.5f, lo, scale);
             int goesRight = (lastLeftBin - bin) >>> 31; // the sign bit: 1 if bin > lastLeftBin
             int place = left + ((right - left) & -goesRight);
             left += 1 - goesRight;
@@ -341,54 +266,11 @@ final class BvhBuilder {
 
     /** The extent of places {@code [start, end)} of set {@code side}, by one pass over them. */
     private float[] measure(int side, int start, int end) {
-        float[] extent = new float[EXTENT];
-        setEmpty(extent, 0);
+        float[] extent = SahBins.empty();
         for (int i = start; i < end; i++) {
-            add(extent, 0, objectBoxes[side], 6 * i);
+            SahBins.add(extent, 0, objectBoxes[side], 6 * i);
         }
         return extent;
-    }
-
-    /** The axis along which the centres of {@code extent} spread most, or −1 if they all coincide. */
-    private static int widestAxis(float[] extent) {
-        int axis = -1;
-        float widest = 0;
-        for (int k = 0; k < 3; k++) {
-            float spread = extent[CENTRES + k + 3] - extent[CENTRES + k];
-            if (spread > widest) {
-                widest = spread;
-                axis = k;
-            }
-        }
-        return axis;
-    }
-
-    /** Grows the extent at {@code extent[at ..]} by the object whose box is {@code box[b .. b+5]}. */
-    private static void add(float[] extent, int at, float[] box, int b) {
-        for (int k = 0; k < 3; k++) {
-            float min = box[b + k];
-            float max = box[b + k + 3];
-            extent[at + k] = Math.min(extent[at + k], min);
-            extent[at + k + 3] = Math.max(extent[at + k + 3], max);
-            float centre = (min + max) * 0.5f;
-            extent[at + CENTRES + k] = Math.min(extent[at + CENTRES + k], centre);
-            extent[at + CENTRES + k + 3] = Math.max(extent[at + CENTRES + k + 3], centre);
-        }
-    }
-
-    /** Grows the extent at {@code extent[at ..]} by the extent at {@code other[o ..]}. */
-    private static void union(float[] extent, int at, float[] other, int o) {
-        for (int k = 0; k < EXTENT; k++) {
-            boolean isMin = k % 6 < 3;
-            extent[at + k] = isMin ? Math.min(extent[at + k], other[o + k]) : Math.max(extent[at + k], other[o + k]);
-        }
-    }
-
-    /** Makes the extent at {@code extent[at ..]} empty: it grows into any it is grown by. */
-    private static void setEmpty(float[] extent, int at) {
-        for (int k = 0; k < EXTENT; k++) {
-            extent[at + k] = k % 6 < 3 ? Float.POSITIVE_INFINITY : Float.NEGATIVE_INFINITY;
-        }
     }
 
     private static boolean isFinite(float[] box, int at) {
@@ -398,13 +280,5 @@ final class BvhBuilder {
             }
         }
         return true;
-    }
-
-    /** The surface area of the box at {@code box[at .. at+5]}. */
-    private static float area(float[] box, int at) {
-        float dx = box[at + 3] - box[at];
-        float dy = box[at + 4] - box[at + 1];
-        float dz = box[at + 5] - box[at + 2];
-        return 2 * (dx * dy + dy * dz + dz * dx);
     }
 }

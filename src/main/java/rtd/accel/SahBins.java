@@ -1,0 +1,147 @@
+package rtd.accel;
+
+import java.util.Arrays;
+
+/**
+ * The bins of the surface area heuristic along one axis of a node ({@link BvhBuilder}), and the
+ * <em>extents</em> it works with: twelve floats, the box around a group's boxes (min x, y, z,
+ * max x, y, z) and the box around their centres, the centre of a box being
+ * {@code (min + max) · 0.5} in float as {@link rtd.geometry.BoundingBox#centre} computes it.
+ *
+ * <p>Each object goes to the bin of its centre; the cost of the split between two bins is
+ * area(left box) · left count + area(right box) · right count, the expected number of tests of a
+ * ray through the node, up to a factor. A child's extent is the union of its bins', exactly what
+ * a pass over its objects would measure.
+ */
+final class SahBins {
+
+    static final int COUNT = 16;
+    static final int EXTENT = 12;
+    static final int CENTRES = 6;
+
+    private final int[] counts = new int[COUNT];
+    /** Per bin, its extent, {@value #EXTENT} floats from {@code EXTENT·bin}. */
+    private final float[] bins = new float[EXTENT * COUNT];
+    /** Per split between bin s and s + 1, its cost. */
+    private final float[] costs = new float[COUNT - 1];
+    private final float[] sweep = new float[EXTENT];
+
+    /** Fills the bins with the objects whose boxes are {@code boxes[6i .. 6i+5]}, i in {@code [start, end)}. */
+    void fill(float[] boxes, int start, int end, int axis, float lo, float scale) {
+        Arrays.fill(counts, 0);
+        for (int b = 0; b < COUNT; b++) {
+            setEmpty(bins, EXTENT * b);
+        }
+        for (int i = start; i < end; i++) {
+            int bin = binOf((boxes[6 * i + axis] + boxes[6 * i + axis + 3]) * 0.5f, lo, scale);
+            counts[bin]++;
+            add(bins, EXTENT * bin, boxes, 6 * i);
+        }
+    }
+
+    /** The bin of a centre, for bins from {@code lo} at {@code scale} bins a unit: the same for binning and partition. */
+    static int binOf(float centre, float lo, float scale) {
+        return Math.min(COUNT - 1, Math.max(0, (int) ((centre - lo) * scale)));
+    }
+
+    /** The last bin of the left side of the cheapest split, sweeping from both ends, or −1 if none has two sides. */
+    int cheapestSplit() {
+        setEmpty(sweep, 0);
+        for (int s = 0, n = 0; s < COUNT - 1; s++) {
+            n += counts[s];
+            union(sweep, bins, EXTENT * s);
+            costs[s] = n == 0 ? Float.POSITIVE_INFINITY : area(sweep) * n;
+        }
+        setEmpty(sweep, 0);
+        for (int s = COUNT - 1, n = 0; s > 0; s--) {
+            n += counts[s];
+            union(sweep, bins, EXTENT * s);
+            costs[s - 1] = n == 0 ? Float.POSITIVE_INFINITY : costs[s - 1] + area(sweep) * n;
+        }
+        int best = -1;
+        for (int s = 0; s < COUNT - 1; s++) {
+            if (costs[s] < (best < 0 ? Float.POSITIVE_INFINITY : costs[best])) {
+                best = s;
+            }
+        }
+        return best;
+    }
+
+    /** The cost of split {@code split} ({@link #cheapestSplit}), infinite for −1. */
+    float cost(int split) {
+        return split < 0 ? Float.POSITIVE_INFINITY : costs[split];
+    }
+
+    /** How many objects bins {@code [0, to)} hold. */
+    int count(int to) {
+        int n = 0;
+        for (int b = 0; b < to; b++) {
+            n += counts[b];
+        }
+        return n;
+    }
+
+    /** A new extent, the union of bins {@code [from, to)}. */
+    float[] extent(int from, int to) {
+        float[] extent = empty();
+        for (int b = from; b < to; b++) {
+            union(extent, bins, EXTENT * b);
+        }
+        return extent;
+    }
+
+    /** A new empty extent, which grows into any it is grown by. */
+    static float[] empty() {
+        float[] extent = new float[EXTENT];
+        setEmpty(extent, 0);
+        return extent;
+    }
+
+    private static void setEmpty(float[] extent, int at) {
+        for (int k = 0; k < EXTENT; k++) {
+            extent[at + k] = k % 6 < 3 ? Float.POSITIVE_INFINITY : Float.NEGATIVE_INFINITY;
+        }
+    }
+
+    /** Grows the extent at {@code extent[at ..]} by the object whose box is {@code box[b .. b+5]}. */
+    static void add(float[] extent, int at, float[] box, int b) {
+        for (int k = 0; k < 3; k++) {
+            float min = box[b + k];
+            float max = box[b + k + 3];
+            extent[at + k] = Math.min(extent[at + k], min);
+            extent[at + k + 3] = Math.max(extent[at + k + 3], max);
+            float centre = (min + max) * 0.5f;
+            extent[at + CENTRES + k] = Math.min(extent[at + CENTRES + k], centre);
+            extent[at + CENTRES + k + 3] = Math.max(extent[at + CENTRES + k + 3], centre);
+        }
+    }
+
+    /** Grows {@code extent} by the extent at {@code other[o ..]}. */
+    private static void union(float[] extent, float[] other, int o) {
+        for (int k = 0; k < EXTENT; k++) {
+            extent[k] = k % 6 < 3 ? Math.min(extent[k], other[o + k]) : Math.max(extent[k], other[o + k]);
+        }
+    }
+
+    /** The axis along which the centres of {@code extent} spread most, or −1 if they all coincide. */
+    static int widestAxis(float[] extent) {
+        int axis = -1;
+        float widest = 0;
+        for (int k = 0; k < 3; k++) {
+            float spread = extent[CENTRES + k + 3] - extent[CENTRES + k];
+            if (spread > widest) {
+                widest = spread;
+                axis = k;
+            }
+        }
+        return axis;
+    }
+
+    /** The surface area of an extent's box. */
+    static float area(float[] extent) {
+        float dx = extent[3] - extent[0];
+        float dy = extent[4] - extent[1];
+        float dz = extent[5] - extent[2];
+        return 2 * (dx * dy + dy * dz + dz * dx);
+    }
+}
