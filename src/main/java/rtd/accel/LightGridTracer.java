@@ -11,7 +11,7 @@ import rtd.render.Tracer;
 import rtd.render.WorkCount;
 
 /**
- * Answers shadow rays through {@link LightGrid}s: a ray towards a light with a grid tests the
+ * Answers shadow rays through {@link LightGrids}: a ray towards a light with a grid tests the
  * objects of its cell and those without a box, and stops at the first hit nearer than the light.
  * Its cell holds every object the ray can hit before the light, so the answer is the paper's
  * loop's. Every other ray, and every shadow ray no grid serves, goes to the tracer for the others.
@@ -20,17 +20,17 @@ import rtd.render.WorkCount;
  */
 final class LightGridTracer implements Tracer {
 
-    private final LightGrid[] grids;
+    private final LightGrids.Grid[] grids;
     /** Per grid, the tests on its objects. */
     private final NearestHit[] hits;
     private final Tracer others;
     private long rays;
 
-    LightGridTracer(List<LightGrid> grids, Tracer others) {
-        this.grids = grids.toArray(LightGrid[]::new);
+    LightGridTracer(List<LightGrids.Grid> grids, Tracer others) {
+        this.grids = grids.toArray(LightGrids.Grid[]::new);
         this.hits = new NearestHit[this.grids.length];
         for (int g = 0; g < hits.length; g++) {
-            hits[g] = new NearestHit(this.grids[g].cells.objects);
+            hits[g] = new NearestHit(this.grids[g].cells().objects);
         }
         this.others = others;
     }
@@ -41,7 +41,7 @@ final class LightGridTracer implements Tracer {
             int cell = grids[g].cellOf(ray, distance);
             if (cell >= 0) {
                 rays++;
-                ViewGrid cells = grids[g].cells;
+                ViewGrid cells = grids[g].cells();
                 NearestHit hit = hits[g];
                 Vector3f origin = ray.origin();
                 Vector3f direction = ray.direction();

@@ -47,7 +47,7 @@ public final class ViewGrid {
     final int[] places;
     /**
      * Per place in the leaf, a distance from the ray's origin before which no camera ray hits the
-     * object (in a {@link LightGrid}, from the light): it never decreases along a cell's objects,
+     * object (in a light's grid, from the light, {@link LightGrids}): it never decreases along a cell's objects,
      * so a ray that has a hit nearer than an object's may stop there
      * ({@link NearestHit#testPlacesNearestFirst}; a shadow ray, where it is beyond its origin,
      * {@link NearestHit#testPlacesUntilHit}).

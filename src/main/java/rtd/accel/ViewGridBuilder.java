@@ -53,7 +53,7 @@ final class ViewGridBuilder {
     /**
      * The grid of the objects' {@code footprint}s on a {@code width × height} image, for about
      * {@code samples²} rays a pixel; {@code camera} and {@code latestOffset} are what its rays
-     * are (a {@link LightGrid}'s has no camera).
+     * are (a light's grid has no camera).
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
         int shift = CellSide.choose(objects, footprint, width, height, samples);
