@@ -49,34 +49,43 @@ public final class Bvh {
     final int[] unboundedOrder;
     final int maxDepth;
     final List<IGeometry> objects;
-    /**
-     * For --stats, where the tree holds several kinds of object ({@link TestCounts#byKind}): per
-     * node, a leaf's kind if its objects are all of one, else −1 − its number among
-     * {@link #mixedLeaves}; empty if the tree holds one kind.
-     */
-    final int[] leafKinds;
-    /** The leaves whose objects are of several kinds, by number: their nodes. */
-    final int[] mixedLeaves;
 
-    private Bvh(BvhBuilder builder, List<IGeometry> objects) {
-        builder.build();
-        this.boxes = builder.boxes();
-        this.nodes = builder.nodes();
-        int[] order = builder.order();
-        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
-        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
-        float[] roundings = new float[2 * fileOrder.length];
-        this.leaves = new LeafObjects(objects, fileOrder, builder.spareInts(), builder.spareFloats(), null, roundings);
-        putRoundings(boxes, nodes, roundings);
-        this.unboundedOrder = builder.unbounded();
+    private Bvh(float[] boxes, int[] nodes, LeafObjects leaves, int[] unboundedOrder, int maxDepth,
+            List<IGeometry> objects) {
+        this.boxes = boxes;
+        this.nodes = nodes;
+        this.leaves = leaves;
+        this.unboundedOrder = unboundedOrder;
         this.unbounded = new IGeometry[unboundedOrder.length];
         for (int i = 0; i < unbounded.length; i++) {
             unbounded[i] = objects.get(unboundedOrder[i]);
         }
-        this.maxDepth = builder.maxDepth();
+        this.maxDepth = maxDepth;
         this.objects = objects;
-        this.leafKinds = leafKinds(nodes, leaves);
-        this.mixedLeaves = mixedLeaves(leafKinds);
+    }
+
+    /** Builds the hierarchy for {@code scene}, on this thread. */
+    public static Bvh build(Scene scene) {
+        List<IGeometry> objects = scene.objects();
+        BvhBuilder builder = new BvhBuilder(objects);
+        builder.build();
+        int[] order = builder.order();
+        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
+        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
+        float[] roundings = new float[2 * fileOrder.length];
+        LeafObjects leaves = new LeafObjects(objects, fileOrder, builder.spareInts(), builder.spareFloats(), null,
+                roundings);
+        putRoundings(builder.boxes(), builder.nodes(), roundings);
+        return new Bvh(builder.boxes(), builder.nodes(), leaves, builder.unbounded(), builder.maxDepth(), objects);
+    }
+
+    /**
+     * A hierarchy of one leaf, {@code leaves}, and the objects without a box beside it: no tree,
+     * for a {@link ViewGrid}, which finds the objects a ray may hit in its own way; no walk reads
+     * its root's box.
+     */
+    static Bvh oneLeaf(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
+        return new Bvh(new float[BOX], new int[] {0, leaves.fileOrder.length}, leaves, unboundedOrder, 0, objects);
     }
 
     /**
@@ -111,74 +120,6 @@ public final class Bvh {
         }
         into[at] = linear;
         into[at + 1] = quadratic;
-    }
-
-    /** Builds the hierarchy for {@code scene}, on this thread. */
-    public static Bvh build(Scene scene) {
-        return new Bvh(new BvhBuilder(scene.objects()), scene.objects());
-    }
-
-    /**
-     * A hierarchy of one leaf, {@code leaves}, and the objects without a box beside it: no tree,
-     * for a {@link ViewGrid}, which finds the objects a ray may hit in its own way.
-     */
-    static Bvh oneLeaf(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
-        return new Bvh(leaves, unboundedOrder, objects);
-    }
-
-    private Bvh(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
-        this.boxes = new float[BOX]; // a root that no walk reads: the grid's tracer tests the leaf's objects itself
-        this.nodes = new int[] {0, leaves.fileOrder.length};
-        this.leaves = leaves;
-        this.unboundedOrder = unboundedOrder;
-        this.unbounded = new IGeometry[unboundedOrder.length];
-        for (int i = 0; i < unbounded.length; i++) {
-            unbounded[i] = objects.get(unboundedOrder[i]);
-        }
-        this.maxDepth = 0;
-        this.objects = objects;
-        this.leafKinds = leafKinds(nodes, leaves);
-        this.mixedLeaves = mixedLeaves(leafKinds);
-    }
-
-    /** {@link #leafKinds}: per leaf, its objects' one kind, or −1 − its number among the leaves of several. */
-    private static int[] leafKinds(int[] nodes, LeafObjects leaves) {
-        if (leaves.kindNames.length <= 1) {
-            return new int[0];
-        }
-        int[] kinds = new int[nodes.length / 2];
-        int mixed = 0;
-        for (int node = 0; node < kinds.length; node++) {
-            if (nodes[2 * node + 1] == INNER) {
-                continue;
-            }
-            int first = nodes[2 * node];
-            int end = first + nodes[2 * node + 1];
-            int kind = first < end ? leaves.kinds[first] : 0;
-            for (int i = first; i < end; i++) {
-                if (leaves.kinds[i] != kind) {
-                    kind = -1 - mixed++;
-                    break;
-                }
-            }
-            kinds[node] = kind;
-        }
-        return kinds;
-    }
-
-    /** {@link #mixedLeaves}: the nodes of the leaves of several kinds, in the order of their numbers. */
-    private static int[] mixedLeaves(int[] leafKinds) {
-        int count = 0;
-        for (int kind : leafKinds) {
-            count += kind < 0 ? 1 : 0;
-        }
-        int[] nodes = new int[count];
-        for (int node = 0; node < leafKinds.length; node++) {
-            if (leafKinds[node] < 0) {
-                nodes[-1 - leafKinds[node]] = node;
-            }
-        }
-        return nodes;
     }
 
     /** A new tracer that follows rays through this hierarchy; one per thread. */

@@ -17,10 +17,9 @@ import rtd.math.Ray;
  * only must not skip a leaf in which the ray could find a nearer hit ({@link #worthVisiting}).
  *
  * <p>Boxes are grown as the ray runs: an object's test may report a hit outside its box by
- * a margin that grows with the distance the ray has run ({@link IGeometry#bounds}). A walk
- * knows a t beyond which the ray cannot be in a node (its {@link #reach}, then each parent's
- * exit), and grows the node's children by their margin there ({@link #growth}); how both are
- * counted is {@link BoxGrowth}'s.
+ * a margin that grows with the distance the ray has run ({@link Rounding}). A walk knows a t
+ * beyond which the ray cannot be in a node (its {@link #reach}, then each parent's exit), and
+ * grows the node's children by their margin there ({@link #growth}).
  *
  * <p>Kept as numbers, and reused from ray to ray, because a {@link Ray} kept in a field
  * would be allocated for every ray.
@@ -104,20 +103,34 @@ final class NearestHit {
     }
 
     /**
-     * A t beyond which no object of the tree can report a hit: a hit at t lies in the root's
-     * box grown by {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from
-     * the origin (summing over the axes), and {@code t·|R|} from it.
+     * A t beyond which no object of the tree can report a hit: a hit at t lies in the root's box
+     * grown by {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from the
+     * origin (summing over the axes), and {@code t·|R|} from it.
      */
     float reach() {
-        return BoxGrowth.reach(bvh, ox, oy, oz, length);
+        float[] root = bvh.boxes; // node 0
+        double far = farthest(ox, root[0], root[3]) + farthest(oy, root[1], root[4]) + farthest(oz, root[2], root[5]);
+        double widest = KnownShapes.ROUNDING_CONE + root[Bvh.ROUNDING]; // the root's rounding is the largest
+        float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
+        return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
+    }
+
+    private static double farthest(double origin, double min, double max) {
+        return Math.max(Math.abs(origin - min), Math.abs(origin - max));
     }
 
     /**
      * How much to grow the boxes of {@code node}'s objects, for a ray that cannot be in them
-     * beyond {@code reach}: their {@link Rounding} at the distance the ray runs.
+     * beyond {@code reach}: their {@link Rounding} at the distance L the ray runs,
+     * {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)}, infinite if that is not a number.
      */
     float growth(int node, float reach) {
-        return BoxGrowth.growth(bvh.boxes, node, reach * length);
+        float distance = reach * length;
+        int at = Bvh.BOX * node + Bvh.ROUNDING;
+        float[] boxes = bvh.boxes;
+        float grow = boxes[at] * distance
+                + Math.min(KnownShapes.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
+        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
     }
 
     /**
@@ -162,7 +175,7 @@ final class NearestHit {
     void testLeaf(int leaf) {
         int first = bvh.nodes[2 * leaf];
         int end = first + bvh.nodes[2 * leaf + 1];
-        counts.leaf(leaf, end - first);
+        counts.leaf(first, end);
         for (int i = first; i < end; i++) {
             test(i);
         }
