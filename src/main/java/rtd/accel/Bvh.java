@@ -122,6 +122,36 @@ public final class Bvh {
         into[at + 1] = quadratic;
     }
 
+    /**
+     * A t beyond which no object of the tree can report a hit, for a ray from {@code (x, y, z)}
+     * with direction length {@code length}: a hit at t lies in the root's box grown by
+     * {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from the origin
+     * (summing over the axes), and {@code t·|R|} from it.
+     */
+    float reach(float x, float y, float z, float length) {
+        double far = farthest(x, boxes[0], boxes[3]) + farthest(y, boxes[1], boxes[4])
+                + farthest(z, boxes[2], boxes[5]);
+        double widest = KnownShapes.ROUNDING_CONE + boxes[ROUNDING]; // the root's rounding is the largest
+        float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
+        return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
+    }
+
+    private static double farthest(double origin, double min, double max) {
+        return Math.max(Math.abs(origin - min), Math.abs(origin - max));
+    }
+
+    /**
+     * How much to grow the boxes of {@code node}'s objects at a distance L the ray has run: their
+     * {@link Rounding} there, {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)}, infinite if
+     * that is not a number.
+     */
+    float growth(int node, float distance) {
+        int at = BOX * node + ROUNDING;
+        float grow = boxes[at] * distance
+                + Math.min(KnownShapes.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
+        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
+    }
+
     /** A new tracer that follows rays through this hierarchy; one per thread. */
     public BvhTracer newTracer() {
         return new BvhTracer(this);

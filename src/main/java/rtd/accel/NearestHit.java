@@ -3,7 +3,6 @@ package rtd.accel;
 import rtd.scene.DepthTest;
 import java.util.Map;
 import rtd.geometry.Hit;
-import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 
 /**
@@ -102,35 +101,14 @@ final class NearestHit {
         skipBeyond = skipFor(t);
     }
 
-    /**
-     * A t beyond which no object of the tree can report a hit: a hit at t lies in the root's box
-     * grown by {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from the
-     * origin (summing over the axes), and {@code t·|R|} from it.
-     */
+    /** A t beyond which no object of the tree can report a hit ({@link Bvh#reach}). */
     float reach() {
-        float[] root = bvh.boxes; // node 0
-        double far = farthest(ox, root[0], root[3]) + farthest(oy, root[1], root[4]) + farthest(oz, root[2], root[5]);
-        double widest = KnownShapes.ROUNDING_CONE + root[Bvh.ROUNDING]; // the root's rounding is the largest
-        float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
-        return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
+        return bvh.reach(ox, oy, oz, length);
     }
 
-    private static double farthest(double origin, double min, double max) {
-        return Math.max(Math.abs(origin - min), Math.abs(origin - max));
-    }
-
-    /**
-     * How much to grow the boxes of {@code node}'s objects, for a ray that cannot be in them
-     * beyond {@code reach}: their {@link Rounding} at the distance L the ray runs,
-     * {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)}, infinite if that is not a number.
-     */
+    /** How much to grow the boxes of {@code node}'s children for a ray not in it beyond {@code reach} ({@link Bvh#growth}). */
     float growth(int node, float reach) {
-        float distance = reach * length;
-        int at = Bvh.BOX * node + Bvh.ROUNDING;
-        float[] boxes = bvh.boxes;
-        float grow = boxes[at] * distance
-                + Math.min(KnownShapes.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
-        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
+        return bvh.growth(node, reach * length);
     }
 
     /**
