@@ -18,10 +18,9 @@ import rtd.math.Vector3f;
  *
  * <p>{@link #t} runs each shape's own kernel ({@code Sphere.hit}, {@code RayTriangle.hit},
  * {@code Box.hit}) on these numbers, so it finds the same {@code t} as the shape's
- * {@code intersect} to the last bit; it only skips following references. With a million objects this matters: a reference to
- * each object and its corners is a wait for memory per test, while the numbers of a leaf's
- * objects arrive together. Any other kind of object runs its own {@link IGeometry#intersect}, in
- * the same leaf, so one such object among a million spheres costs only its own tests.
+ * {@code intersect} to the last bit, without a wait for memory per reference followed: the
+ * numbers of a leaf's objects arrive together. Any other kind of object runs its own
+ * {@link IGeometry#intersect}, in the same leaf.
  */
 final class LeafObjects {
 
@@ -90,7 +89,7 @@ final class LeafObjects {
         }
         this.kindNames = leafNames.toArray(String[]::new);
         this.numbers = reused(spareFloats, size);
-        new Parts(scene.size(), pool).run((start, end) -> {
+        new Parts(scene.size(), pool).run((start, end, part) -> {
             for (int f = start; f < end; f++) {
                 pack(f, leafPlaces[f], roundings);
             }

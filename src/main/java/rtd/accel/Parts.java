@@ -19,11 +19,6 @@ final class Parts {
         void run(int start, int end, int part);
     }
 
-    /** A pass that does not need its part's number. */
-    interface Range {
-        void run(int start, int end);
-    }
-
     /** The most parts: a part of the view grid's passes keeps a count for every cell of the image. */
     static final int MOST = 8;
     /** The fewest objects for which the grids are built on a pool: for fewer, starting threads takes longer. */
@@ -93,11 +88,6 @@ final class Parts {
         }
         starts[cells] = total;
         return total;
-    }
-
-    /** As {@link #run(Pass)}, for a pass that does not need its part's number. */
-    void run(Range range) {
-        run((start, end, part) -> range.run(start, end));
     }
 
     /** Where part {@code part} starts. */

@@ -229,7 +229,7 @@ final class ViewGridBuilder {
      * ({@link NearestHit}), so the pictures do not depend on it.
      */
     private static void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace, ForkJoinPool pool) {
-        new Parts(cellStart.length - 1, pool).run((first, end) -> {
+        new Parts(cellStart.length - 1, pool).run((first, end, part) -> {
             for (int c = first; c < end; c++) {
                 int from = cellStart[c];
                 int to = cellStart[c + 1];
