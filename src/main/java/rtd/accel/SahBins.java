@@ -18,6 +18,8 @@ final class SahBins {
     static final int COUNT = 16;
     static final int EXTENT = 12;
     static final int CENTRES = 6;
+    /** From this many objects on, {@link #fill} grows the bins by comparisons the processor predicts. */
+    private static final int MANY = 8192;
 
     private final int[] counts = new int[COUNT];
     /** Per bin, its extent, {@value #EXTENT} floats from {@code EXTENT·bin}. */
@@ -32,10 +34,37 @@ final class SahBins {
         for (int b = 0; b < COUNT; b++) {
             setEmpty(bins, EXTENT * b);
         }
+        if (end - start >= MANY) {
+            addMany(boxes, start, end, axis, lo, scale);
+        } else {
+            for (int i = start; i < end; i++) {
+                int bin = binOf((boxes[6 * i + axis] + boxes[6 * i + axis + 3]) * 0.5f, lo, scale);
+                counts[bin]++;
+                add(bins, EXTENT * bin, boxes, 6 * i); // without branches: few objects a bin grow it often
+            }
+        }
+    }
+
+    /**
+     * {@link #fill} for many objects: a bin's box soon reaches its size, and the comparisons go the
+     * same way almost always, which the processor predicts ({@link FastMath}); the numbers are
+     * {@link #add}'s but for the sign of a zero, which no comparison sees. A method of its own, so
+     * that the JIT compiles each loop while it runs.
+     */
+    private void addMany(float[] boxes, int start, int end, int axis, float lo, float scale) {
         for (int i = start; i < end; i++) {
             int bin = binOf((boxes[6 * i + axis] + boxes[6 * i + axis + 3]) * 0.5f, lo, scale);
             counts[bin]++;
-            add(bins, EXTENT * bin, boxes, 6 * i);
+            int at = EXTENT * bin;
+            for (int k = 0; k < 3; k++) {
+                float min = boxes[6 * i + k];
+                float max = boxes[6 * i + k + 3];
+                float centre = (min + max) * 0.5f;
+                bins[at + k] = FastMath.min(bins[at + k], min);
+                bins[at + k + 3] = FastMath.max(bins[at + k + 3], max);
+                bins[at + CENTRES + k] = FastMath.min(bins[at + CENTRES + k], centre);
+                bins[at + CENTRES + k + 3] = FastMath.max(bins[at + CENTRES + k + 3], centre);
+            }
         }
     }
 
@@ -49,13 +78,13 @@ final class SahBins {
         setEmpty(sweep, 0);
         for (int s = 0, n = 0; s < COUNT - 1; s++) {
             n += counts[s];
-            union(sweep, bins, EXTENT * s);
+            union(sweep, 0, bins, EXTENT * s);
             costs[s] = n == 0 ? Float.POSITIVE_INFINITY : area(sweep) * n;
         }
         setEmpty(sweep, 0);
         for (int s = COUNT - 1, n = 0; s > 0; s--) {
             n += counts[s];
-            union(sweep, bins, EXTENT * s);
+            union(sweep, 0, bins, EXTENT * s);
             costs[s - 1] = n == 0 ? Float.POSITIVE_INFINITY : costs[s - 1] + area(sweep) * n;
         }
         int best = -1;
@@ -85,7 +114,8 @@ final class SahBins {
     float[] extent(int from, int to) {
         float[] extent = empty();
         for (int b = from; b < to; b++) {
-            union(extent, bins, EXTENT * b);
+            union(extent, 0, bins, EXTENT * b);
+            union(extent, CENTRES, bins, EXTENT * b + CENTRES);
         }
         return extent;
     }
@@ -98,8 +128,11 @@ final class SahBins {
     }
 
     private static void setEmpty(float[] extent, int at) {
-        for (int k = 0; k < EXTENT; k++) {
-            extent[at + k] = k % 6 < 3 ? Float.POSITIVE_INFINITY : Float.NEGATIVE_INFINITY;
+        for (int k = 0; k < 3; k++) {
+            extent[at + k] = Float.POSITIVE_INFINITY;
+            extent[at + k + 3] = Float.NEGATIVE_INFINITY;
+            extent[at + CENTRES + k] = Float.POSITIVE_INFINITY;
+            extent[at + CENTRES + k + 3] = Float.NEGATIVE_INFINITY;
         }
     }
 
@@ -116,10 +149,11 @@ final class SahBins {
         }
     }
 
-    /** Grows {@code extent} by the extent at {@code other[o ..]}. */
-    private static void union(float[] extent, float[] other, int o) {
-        for (int k = 0; k < EXTENT; k++) {
-            extent[k] = k % 6 < 3 ? Math.min(extent[k], other[o + k]) : Math.max(extent[k], other[o + k]);
+    /** Grows the box at {@code box[0 .. 5]} by the box at {@code other[o .. o+5]}: an extent's box, or its centres' from {@code o + CENTRES}. */
+    private static void union(float[] box, int at, float[] other, int o) {
+        for (int k = 0; k < 3; k++) {
+            box[at + k] = Math.min(box[at + k], other[o + k]);
+            box[at + k + 3] = Math.max(box[at + k + 3], other[o + k + 3]);
         }
     }
 
