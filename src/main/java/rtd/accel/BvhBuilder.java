@@ -55,9 +55,11 @@ final class BvhBuilder {
         int kept = 0;
         int[] apart = orders[1]; // free until the build
         int apartCount = 0;
+        float[] box = new float[6];
         for (int f = 0; f < n; f++) {
-            KnownShapes.putBox(objects.get(f), objectBoxes[0], 6 * kept);
-            if (isFinite(objectBoxes[0], 6 * kept)) {
+            KnownShapes.putBox(objects.get(f), box, 0);
+            if (ImageFootprint.isFinite(box)) {
+                System.arraycopy(box, 0, objectBoxes[0], 6 * kept, 6);
                 orders[0][kept++] = f;
             } else {
                 apart[apartCount++] = f;
@@ -271,14 +273,5 @@ final class BvhBuilder {
             SahBins.add(extent, 0, objectBoxes[side], 6 * i);
         }
         return extent;
-    }
-
-    private static boolean isFinite(float[] box, int at) {
-        for (int k = 0; k < 6; k++) {
-            if (!Float.isFinite(box[at + k])) {
-                return false;
-            }
-        }
-        return true;
     }
 }

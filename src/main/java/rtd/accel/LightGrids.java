@@ -108,9 +108,7 @@ public final class LightGrids {
         float[] box = boxOf(objects);
         int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples));
         long most = Math.max(1, mostPacked / Math.max(1, objects.size()));
-        boolean parallel = threads > 1 && objects.size() >= Parts.PARALLEL_THRESHOLD;
-        ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
-        try {
+        return Parts.onPool(threads, objects.size(), pool -> {
             List<Grid> grids = new ArrayList<>();
             for (Light light : scene.lights()) {
                 if (box == null || grids.size() >= most) {
@@ -122,11 +120,7 @@ public final class LightGrids {
                 }
             }
             return new LightGrids(List.copyOf(grids));
-        } finally {
-            if (pool != null) {
-                pool.shutdown();
-            }
-        }
+        });
     }
 
     /** The box of all objects that have a finite one, or null if none has. */

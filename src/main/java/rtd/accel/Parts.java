@@ -6,6 +6,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.Future;
+import java.util.function.Function;
 
 /**
  * The places {@code [0, count)} cut into a part per thread of a pool, {@value #MOST} at most, for
@@ -32,6 +33,21 @@ final class Parts {
         this.count = count;
         this.pool = pool;
         this.parts = pool == null ? 1 : Math.min(MOST, pool.getParallelism());
+    }
+
+    /**
+     * What {@code build} makes on a pool of {@code threads} threads, shut down afterwards, or on
+     * this thread (a null pool) for one thread or fewer than {@link #PARALLEL_THRESHOLD} objects.
+     */
+    static <T> T onPool(int threads, int objects, Function<ForkJoinPool, T> build) {
+        ForkJoinPool pool = threads > 1 && objects >= PARALLEL_THRESHOLD ? new ForkJoinPool(threads) : null;
+        try {
+            return build.apply(pool);
+        } finally {
+            if (pool != null) {
+                pool.shutdown();
+            }
+        }
     }
 
     /** Runs {@code pass} on every part, in parallel if there is a pool, and returns when all are done. */

@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
@@ -74,17 +73,9 @@ public final class ViewGrid {
      * picture with {@code samples × samples} rays per pixel, built with {@code threads} threads.
      */
     public static ViewGrid build(Scene scene, int width, int height, int samples, int threads) {
-        boolean parallel = threads > 1 && scene.objects().size() >= Parts.PARALLEL_THRESHOLD;
-        ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
-        try {
-            float latestOffset = samples == 1 ? 0 : (samples - 0.5f) / samples;
-            return new ViewGridBuilder(scene.objects(), width, height, pool)
-                    .build(scene.camera(), latestOffset, samples);
-        } finally {
-            if (pool != null) {
-                pool.shutdown();
-            }
-        }
+        float latestOffset = samples == 1 ? 0 : (samples - 0.5f) / samples;
+        return Parts.onPool(threads, scene.objects().size(), pool -> new ViewGridBuilder(scene.objects(), width, height,
+                pool).build(scene.camera(), latestOffset, samples));
     }
 
     /** Whether {@link #build} can make a grid for this scene's camera: the orthographic or the perspective one. */
