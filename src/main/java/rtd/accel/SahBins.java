@@ -37,11 +37,16 @@ final class SahBins {
         if (end - start >= MANY) {
             addMany(boxes, start, end, axis, lo, scale);
         } else {
-            for (int i = start; i < end; i++) {
-                int bin = binOf((boxes[6 * i + axis] + boxes[6 * i + axis + 3]) * 0.5f, lo, scale);
-                counts[bin]++;
-                add(bins, EXTENT * bin, boxes, 6 * i); // without branches: few objects a bin grow it often
-            }
+            addFew(boxes, start, end, axis, lo, scale);
+        }
+    }
+
+    /** {@link #fill} for few objects, which grow a bin's box often: without branches ({@link #add}). */
+    private void addFew(float[] boxes, int start, int end, int axis, float lo, float scale) {
+        for (int i = start; i < end; i++) {
+            int bin = binOf((boxes[6 * i + axis] + boxes[6 * i + axis + 3]) * 0.5f, lo, scale);
+            counts[bin]++;
+            add(bins, EXTENT * bin, boxes, 6 * i);
         }
     }
 
@@ -49,7 +54,7 @@ final class SahBins {
      * {@link #fill} for many objects: a bin's box soon reaches its size, and the comparisons go the
      * same way almost always, which the processor predicts ({@link FastMath}); the numbers are
      * {@link #add}'s but for the sign of a zero, which no comparison sees. A method of its own, so
-     * that the JIT compiles each loop while it runs.
+     * that the JIT compiles each of the two loops on its own, while it runs.
      */
     private void addMany(float[] boxes, int start, int end, int axis, float lo, float scale) {
         for (int i = start; i < end; i++) {
