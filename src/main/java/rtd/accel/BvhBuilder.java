@@ -141,9 +141,16 @@ final class BvhBuilder {
         if (end - start > 1 && axis < 0) {
             end = withoutTwins(side, start, end);
         }
-        Pending[] children = end - start <= 1 ? null
-                : waiting.depth() >= MAX_SAH_DEPTH || axis < 0 && end - start > MAX_LEAF_SIZE ? byCount(waiting, end)
-                : axis < 0 ? null : bySah(waiting, end, extent, axis);
+        Pending[] children;
+        if (end - start <= 1) {
+            children = null;
+        } else if (waiting.depth() >= MAX_SAH_DEPTH) {
+            children = byCount(waiting, end);
+        } else if (axis < 0) { // all centres coincide
+            children = end - start > MAX_LEAF_SIZE ? byCount(waiting, end) : null;
+        } else {
+            children = bySah(waiting, end, extent, axis);
+        }
         if (children == null) {
             if (side != 0) {
                 copy(side, start, end);
