@@ -11,12 +11,8 @@ import rtd.render.Tracer;
 import rtd.render.WorkCount;
 
 /**
- * Answers shadow rays through {@link LightGrids}: a ray towards a light with a grid tests the
- * objects of its cell and those without a box, and stops at the first hit nearer than the light.
- * Its cell holds every object the ray can hit before the light, so the answer is the paper's
- * loop's. Every other ray, and every shadow ray no grid serves, goes to the tracer for the others.
- *
- * <p>Not thread-safe: it keeps the ray's state and counters of its own. Use one per thread.
+ * Answers the shadow rays that {@link LightGrids} serve, the same as the paper's loop; every other
+ * ray goes to the tracer for the others. Not thread-safe: one per thread.
  */
 final class LightGridTracer implements Tracer {
 

@@ -12,13 +12,10 @@ import rtd.scene.Scene;
  * image, and the search for what a ray hits is a search in two dimensions: a ray tests only the
  * objects of its cell, a few where the paper's loop tests all, and no tree is built or walked.
  *
- * <p>It serves only the camera's rays ({@link ViewGridTracer}): in a picture in flat colours no
- * other ray is traced; a scene with lights casts shadow rays, which its tracer hands on: to the
- * {@link LightGrids}, which see the objects from each light as this grid sees them from the
- * camera, and the rest to a {@link Bvh}'s. The cells hold places in {@link #objects}, a hierarchy
- * of one leaf that holds every object with its numbers packed for the test. A ray tests its
- * cell's objects nearest first, and stops at the first that lies beyond a hit it has found:
- * where objects hide each other, it tests the few in front.
+ * <p>It serves only the camera's rays ({@link ViewGridTracer}). The cells hold places in
+ * {@link #objects}, a hierarchy of one leaf that holds every object with its numbers packed for
+ * the test. A ray tests its cell's objects nearest first, and stops at the first that lies beyond
+ * a hit it has found: where objects hide each other, it tests the few in front.
  *
  * <p>The cell's side is a power of two, chosen for the scene: small cells let a ray test fewer
  * objects, but an object then lies in more cells, which costs building and memory
