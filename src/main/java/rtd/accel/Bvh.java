@@ -19,10 +19,9 @@ import rtd.scene.Scene;
  * {@code nodes[2i] + 1}; a leaf holds {@code nodes[2i+1]} objects starting at place
  * {@code nodes[2i]} of {@link #leaves}.
  *
- * <p>A node's box and growth lie side by side, and so do two children's ({@link Compaction}):
- * a walk that opens a node reads both its children's from one stretch of 64 bytes. With a
- * hundred thousand objects the tree no longer fits in the processor's nearest caches, and a
- * walk waits for memory at every node it opens: once per node so, not once per array.
+ * <p>A node's box and growth lie side by side, and so do two children's: a walk that opens a
+ * node reads both its children's from one stretch of 64 bytes, once the tree no longer fits in
+ * the processor's nearest caches.
  *
  * <p>Objects without a box (planes) have no place in a tree of boxes: they stay beside it,
  * in {@link #unbounded}, and every ray tests them, as the paper's loop does.
@@ -50,40 +49,48 @@ public final class Bvh {
     final int[] unboundedOrder;
     final int maxDepth;
     final List<IGeometry> objects;
-    /**
-     * For --stats, where the tree holds several kinds of object ({@link TestCounts#byKind}): per
-     * node, a leaf's kind if its objects are all of one, else −1 − its number among
-     * {@link #mixedLeaves}; empty if the tree holds one kind.
-     */
-    final int[] leafKinds;
-    /** The leaves whose objects are of several kinds, by number: their nodes. */
-    final int[] mixedLeaves;
 
-    private Bvh(BvhBuilder builder, List<IGeometry> objects) {
-        builder.build();
-        Compaction compaction = new Compaction(builder.bounds(), builder.nodes());
-        this.boxes = compaction.boxes();
-        this.nodes = compaction.nodes();
-        int[] order = builder.order();
-        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
-        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
-        float[] roundings = new float[2 * fileOrder.length];
-        this.leaves = new LeafObjects(objects, fileOrder, builder, roundings);
-        putRoundings(boxes, nodes, roundings);
-        this.unboundedOrder = builder.unbounded();
+    private Bvh(float[] boxes, int[] nodes, LeafObjects leaves, int[] unboundedOrder, int maxDepth,
+            List<IGeometry> objects) {
+        this.boxes = boxes;
+        this.nodes = nodes;
+        this.leaves = leaves;
+        this.unboundedOrder = unboundedOrder;
         this.unbounded = new IGeometry[unboundedOrder.length];
         for (int i = 0; i < unbounded.length; i++) {
             unbounded[i] = objects.get(unboundedOrder[i]);
         }
-        this.maxDepth = builder.maxDepth();
+        this.maxDepth = maxDepth;
         this.objects = objects;
-        this.leafKinds = leafKinds(nodes, leaves);
-        this.mixedLeaves = mixedLeaves(leafKinds);
+    }
+
+    /** Builds the hierarchy for {@code scene}, on this thread. */
+    public static Bvh build(Scene scene) {
+        List<IGeometry> objects = scene.objects();
+        BvhBuilder builder = new BvhBuilder(objects);
+        builder.build();
+        int[] order = builder.order();
+        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
+        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
+        float[] roundings = new float[2 * fileOrder.length];
+        LeafObjects leaves = new LeafObjects(objects, fileOrder, builder.spareInts(), builder.spareFloats(), null,
+                roundings);
+        putRoundings(builder.boxes(), builder.nodes(), roundings);
+        return new Bvh(builder.boxes(), builder.nodes(), leaves, builder.unbounded(), builder.maxDepth(), objects);
+    }
+
+    /**
+     * A hierarchy of one leaf, {@code leaves}, and the objects without a box beside it: no tree,
+     * for a {@link ViewGrid}, which finds the objects a ray may hit in its own way; no walk reads
+     * its root's box.
+     */
+    static Bvh oneLeaf(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
+        return new Bvh(new float[BOX], new int[] {0, leaves.fileOrder.length}, leaves, unboundedOrder, 0, objects);
     }
 
     /**
      * Each node's largest rounding, from the leaves up: a node's children have larger numbers
-     * than the node itself ({@link Compaction}), so one pass backwards meets them first. The
+     * than the node itself ({@link BvhBuilder}), so one pass backwards meets them first. The
      * objects' own are in {@code roundings}, in leaf order ({@link LeafObjects}).
      */
     private static void putRoundings(float[] boxes, int[] nodes, float[] roundings) {
@@ -115,72 +122,34 @@ public final class Bvh {
         into[at + 1] = quadratic;
     }
 
-    /** Builds the hierarchy for {@code scene}, on this thread. */
-    public static Bvh build(Scene scene) {
-        return new Bvh(new BvhBuilder(scene.objects()), scene.objects());
+    /**
+     * A t beyond which no object of the tree can report a hit, for a ray from {@code (x, y, z)}
+     * with direction length {@code length}: a hit at t lies in the root's box grown by
+     * {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from the origin
+     * (summing over the axes), and {@code t·|R|} from it.
+     */
+    float reach(float x, float y, float z, float length) {
+        double far = farthest(x, boxes[0], boxes[3]) + farthest(y, boxes[1], boxes[4])
+                + farthest(z, boxes[2], boxes[5]);
+        double widest = KnownShapes.ROUNDING_CONE + boxes[ROUNDING]; // the root's rounding is the largest
+        float reach = (float) (far / (length * (1 - 3.0 * widest)) * (1 + 1e-6));
+        return reach >= 0 ? reach : Float.POSITIVE_INFINITY; // NaN (a ray of no length): assume the worst
+    }
+
+    private static double farthest(double origin, double min, double max) {
+        return Math.max(Math.abs(origin - min), Math.abs(origin - max));
     }
 
     /**
-     * A hierarchy of one leaf, {@code leaves}, and the objects without a box beside it: no tree,
-     * for a {@link ViewGrid}, which finds the objects a ray may hit in its own way.
+     * How much to grow the boxes of {@code node}'s objects at a distance L the ray has run: their
+     * {@link Rounding} there, {@code linear·L + min(ROUNDING_CONE·L, quadratic·L²)}, infinite if
+     * that is not a number.
      */
-    static Bvh oneLeaf(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
-        return new Bvh(leaves, unboundedOrder, objects);
-    }
-
-    private Bvh(LeafObjects leaves, int[] unboundedOrder, List<IGeometry> objects) {
-        this.boxes = new float[BOX]; // a root that no walk reads: the grid's tracer tests the leaf's objects itself
-        this.nodes = new int[] {0, leaves.fileOrder.length};
-        this.leaves = leaves;
-        this.unboundedOrder = unboundedOrder;
-        this.unbounded = new IGeometry[unboundedOrder.length];
-        for (int i = 0; i < unbounded.length; i++) {
-            unbounded[i] = objects.get(unboundedOrder[i]);
-        }
-        this.maxDepth = 0;
-        this.objects = objects;
-        this.leafKinds = leafKinds(nodes, leaves);
-        this.mixedLeaves = mixedLeaves(leafKinds);
-    }
-
-    /** {@link #leafKinds}: per leaf, its objects' one kind, or −1 − its number among the leaves of several. */
-    private static int[] leafKinds(int[] nodes, LeafObjects leaves) {
-        if (leaves.kindNames.length <= 1) {
-            return new int[0];
-        }
-        int[] kinds = new int[nodes.length / 2];
-        int mixed = 0;
-        for (int node = 0; node < kinds.length; node++) {
-            if (nodes[2 * node + 1] == INNER) {
-                continue;
-            }
-            int first = nodes[2 * node];
-            int end = first + nodes[2 * node + 1];
-            int kind = first < end ? leaves.kinds[first] : 0;
-            for (int i = first; i < end; i++) {
-                if (leaves.kinds[i] != kind) {
-                    kind = -1 - mixed++;
-                    break;
-                }
-            }
-            kinds[node] = kind;
-        }
-        return kinds;
-    }
-
-    /** {@link #mixedLeaves}: the nodes of the leaves of several kinds, in the order of their numbers. */
-    private static int[] mixedLeaves(int[] leafKinds) {
-        int count = 0;
-        for (int kind : leafKinds) {
-            count += kind < 0 ? 1 : 0;
-        }
-        int[] nodes = new int[count];
-        for (int node = 0; node < leafKinds.length; node++) {
-            if (leafKinds[node] < 0) {
-                nodes[-1 - leafKinds[node]] = node;
-            }
-        }
-        return nodes;
+    float growth(int node, float distance) {
+        int at = BOX * node + ROUNDING;
+        float grow = boxes[at] * distance
+                + Math.min(KnownShapes.ROUNDING_CONE * distance, boxes[at + 1] * distance * distance);
+        return grow >= 0 ? grow : Float.POSITIVE_INFINITY;
     }
 
     /** A new tracer that follows rays through this hierarchy; one per thread. */

@@ -1,173 +1,284 @@
 package rtd.accel;
 
 import java.util.ArrayDeque;
+import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import rtd.geometry.IGeometry;
 
 /**
- * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic (SAH).
+ * Builds the tree of a {@link Bvh} top-down with the binned surface area heuristic, as pbrt's BVH
+ * does: a node's objects divide between the two {@link SahBins} where the expected cost is least,
+ * along the axis where their centres spread most, or the node becomes a leaf when no split is
+ * cheaper than testing its objects.
  *
- * <p>Each node's objects are divided where the SAH expects rays to test the fewest objects, or
- * the node becomes a leaf when no split is cheaper than testing its objects: how the cost is
- * counted and the objects divided is the {@link SahSplitter}'s part; this class makes the nodes.
- *
- * <p>A node's objects are partitioned by copying them, in order, from one {@link ObjectArrays}
- * into the other; the children partition them back. The nodes, numbered as they are made
- * ({@link NodeBlocks}), are numbered anew at the end, depth first ({@link Compaction}). It builds
- * on one thread: the hierarchy answers the rays the grids do not serve, and is built beside them.
+ * <p>A node's objects are partitioned by copying them, in order, from one of two sets of arrays
+ * into the other; the children partition them back, and a leaf's objects end in the first set.
+ * Nodes are numbered depth first as they are made, a node's two children side by side, in the
+ * {@link Bvh}'s layout. Where all centres of a node coincide the heuristic has nothing to go by:
+ * the twins of earlier objects are left out ({@link #withoutTwins}) and the rest halved by count,
+ * as in very deep trees. It builds on one thread, in a loop over the nodes waiting, which the JIT
+ * compiles while it runs.
  */
 final class BvhBuilder {
 
-    /** Past this depth the builder halves by count, which bounds the depth for any input. */
+    private static final int MAX_LEAF_SIZE = 16;
+    /** Past this depth nodes are halved by count, which bounds the depth for any input. */
     private static final int MAX_SAH_DEPTH = 48;
-
-    /** The objects with a finite box, which the tree holds: places {@code [0, count)} of {@link #primary}. */
-    private final int count;
-    /** The objects without one (planes), in file order: places {@code [count, objects.size())} of its order. */
-    private final int[] unbounded;
     /**
-     * The objects, where the leaves' objects end, in leaf order. Their boxes travel with them,
-     * so that every pass over a node's objects reads memory front to back, not at random. An object's centre, by
-     * which it is sorted, is computed from its box where needed: fewer numbers to move than to keep.
+     * The cost of visiting a node, counted in intersection tests: with leaves of up to 16 it makes
+     * shallow trees of full leaves, which a walk that waits for memory at each node favours.
      */
-    private final ObjectArrays primary;
-    /** The second set of arrays, which the partitions copy into and back out of. */
-    private final ObjectArrays spare;
-    /** The nodes as they are made. */
-    private final NodeBlocks tree;
-    /** How each node's objects divide, and the dividing. */
-    private final SahSplitter splitter;
+    private static final float TRAVERSAL_COST = 4f;
+
+    private final List<IGeometry> objects;
+    /** The objects with a finite box, which the tree holds: places {@code [0, count)}. */
+    private final int count;
+    /** The places in the file of the objects without one (planes), in file order. */
+    private final int[] unbounded;
+    /** Two sets of the objects' places in the file and their boxes (six floats a place); set 0 ends in leaf order. */
+    private final int[][] orders;
+    private final float[][] objectBoxes;
+    private final SahBins bins = new SahBins();
+    private float[] boxes;
+    private int[] nodes;
+    private int nodeCount = 1;
     private int maxDepth;
 
-    /**
-     * A builder for the scene's {@code objects}. Each object's box is measured once
-     * ({@link ObjectBoxes}); the objects without a finite one are kept apart ({@link #unbounded}).
-     */
+    /** A builder for {@code objects}: each box measured once, the objects without a finite one set apart. */
     BvhBuilder(List<IGeometry> objects) {
-        this.primary = ObjectArrays.of(objects.size());
-        this.spare = ObjectArrays.of(objects.size());
-        this.unbounded = ObjectBoxes.measure(objects, primary);
-        this.count = objects.size() - unbounded.length;
-        this.tree = new NodeBlocks(count);
-        this.splitter = new SahSplitter(objects, primary, spare);
+        this.objects = objects;
+        int n = objects.size();
+        orders = new int[][] {new int[n], new int[n]};
+        objectBoxes = new float[][] {new float[6 * n], new float[6 * n]};
+        int kept = 0;
+        int[] apart = orders[1]; // free until the build
+        int apartCount = 0;
+        float[] box = new float[6];
+        for (int f = 0; f < n; f++) {
+            KnownShapes.putBox(objects.get(f), box, 0);
+            if (ImageFootprint.isFinite(box)) {
+                System.arraycopy(box, 0, objectBoxes[0], 6 * kept, 6);
+                orders[0][kept++] = f;
+            } else {
+                apart[apartCount++] = f;
+            }
+        }
+        count = kept;
+        unbounded = Arrays.copyOf(apart, apartCount);
+        System.arraycopy(unbounded, 0, orders[0], count, apartCount);
+        int room = Math.max(64, count / 2); // leaves of four objects or more, as the SAH makes them
+        boxes = new float[Bvh.BOX * room];
+        nodes = new int[2 * room];
     }
 
-    /** The places in the file of the objects without a finite box, in file order. */
-    int[] unbounded() {
-        return unbounded;
-    }
-
-    /** The number of objects in the tree. */
     int count() {
         return count;
     }
 
-    /** Builds the tree; afterwards {@link #order()} is in leaf order. */
-    void build() {
-        maxDepth = buildNode(0, 0, count, 0, null, primary, new SahBins());
+    int[] unbounded() {
+        return unbounded;
     }
 
-    /** The objects' places in the file, in the order of the tree's leaves ({@link #count} of them). */
+    /** The objects' places in the file, in leaf order ({@link #count} of them), then those without a box. */
     int[] order() {
-        return primary.order();
+        return orders[0];
     }
 
-    /**
-     * The second set of arrays, which the partitions no longer need once the tree is built: for
-     * {@link LeafObjects} to pack its numbers into, instead of new arrays.
-     */
-    ObjectArrays spare() {
-        return spare;
+    /** The second set of arrays, which the tree no longer needs once built: room for {@link LeafObjects}. */
+    int[] spareInts() {
+        return orders[1];
     }
 
-    /** The depth of the deepest leaf. */
+    float[] spareFloats() {
+        return objectBoxes[1];
+    }
+
+    /** Each node's box at {@code Bvh.BOX·i}, its rounding not yet filled in. */
+    float[] boxes() {
+        return boxes;
+    }
+
+    int[] nodes() {
+        return nodes;
+    }
+
     int maxDepth() {
         return maxDepth;
     }
 
-    /** The node boxes, with numbers not all used ({@link NodeBlocks#bounds}); asked once. */
-    float[] bounds() {
-        return tree.bounds();
+    /** A node that waits to be built: its places in set {@code side}, and its extent if known. */
+    private record Pending(int node, int start, int end, int depth, float[] extent, int side) {
     }
 
-    /** The node contents, with numbers not all used ({@link NodeBlocks#nodes}); asked once. */
-    int[] nodes() {
-        return tree.nodes();
-    }
-
-    /**
-     * Builds the node numbered {@code node} over places {@code [start, end)} of {@code data}
-     * (the primary or the spare arrays). The node's {@code extent} comes from its parent's
-     * bins, or is {@code null} and measured here.
-     * Answers the subtree's depth.
-     *
-     * <p>The subtree's nodes are built in a loop over a stack of those waiting, not by
-     * recursion: the JIT compiles a loop early, while it runs, and a recursive method that it
-     * inlines into itself is a long compilation, during which the build runs slower code.
-     */
-    private int buildNode(int node, int start, int end, int depth, Extent extent, ObjectArrays data, SahBins bins) {
+    /** Builds the tree. */
+    void build() {
         ArrayDeque<Pending> waiting = new ArrayDeque<>();
-        waiting.push(new Pending(node, start, end, depth, extent, data));
-        int deepest = depth;
+        waiting.push(new Pending(0, 0, count, 0, null, 0));
         while (!waiting.isEmpty()) {
             Pending next = waiting.pop();
-            Split split = split(next, bins);
-            if (split == null) {
-                deepest = Math.max(deepest, next.depth());
-                continue;
+            Pending[] children = split(next);
+            if (children == null) {
+                maxDepth = Math.max(maxDepth, next.depth());
+            } else {
+                waiting.push(children[1]);
+                waiting.push(children[0]);
             }
-            int left = tree.firstChild(next.node());
-            waiting.push(new Pending(left + 1, split.middle(), split.end(), next.depth() + 1, split.right(),
-                    split.data()));
-            waiting.push(new Pending(left, next.start(), split.middle(), next.depth() + 1, split.left(), split.data()));
         }
-        return deepest;
+        boxes = Arrays.copyOf(boxes, Bvh.BOX * nodeCount);
+        nodes = Arrays.copyOf(nodes, 2 * nodeCount);
+    }
+
+    /** Makes the {@code waiting} node a leaf (answers null) or an inner node, and answers its children. */
+    private Pending[] split(Pending waiting) {
+        int start = waiting.start();
+        int end = waiting.end();
+        int side = waiting.side();
+        float[] extent = waiting.extent() != null ? waiting.extent() : measure(side, start, end);
+        System.arraycopy(extent, 0, boxes, Bvh.BOX * waiting.node(), 6);
+        int axis = SahBins.widestAxis(extent);
+        if (end - start > 1 && axis < 0) {
+            end = withoutTwins(side, start, end);
+        }
+        Pending[] children;
+        if (end - start <= 1) {
+            children = null;
+        } else if (waiting.depth() >= MAX_SAH_DEPTH) {
+            children = byCount(waiting, end);
+        } else if (axis < 0) { // all centres coincide
+            children = end - start > MAX_LEAF_SIZE ? byCount(waiting, end) : null;
+        } else {
+            children = bySah(waiting, end, extent, axis);
+        }
+        if (children == null) {
+            if (side != 0) {
+                copy(side, start, end);
+            }
+            nodes[2 * waiting.node()] = start;
+            nodes[2 * waiting.node() + 1] = end - start;
+            return null;
+        }
+        nodes[2 * waiting.node()] = children[0].node();
+        nodes[2 * waiting.node() + 1] = Bvh.INNER;
+        return children;
+    }
+
+    /** The children of the cheapest split by the SAH, its objects partitioned into the other set; null for a leaf. */
+    private Pending[] bySah(Pending node, int end, float[] extent, int axis) {
+        int start = node.start();
+        int n = end - start;
+        float area = SahBins.area(extent);
+        if (n <= TRAVERSAL_COST && area > 0 && area < Float.POSITIVE_INFINITY) {
+            return null; // a split costs at least a visit, more than these objects' tests
+        }
+        float lo = extent[SahBins.CENTRES + axis];
+        float scale = SahBins.COUNT / (extent[SahBins.CENTRES + axis + 3] - lo);
+        bins.fill(objectBoxes[node.side()], start, end, axis, lo, scale);
+        int bestBin = bins.cheapestSplit();
+        if (TRAVERSAL_COST + bins.cost(bestBin) / area >= n && n <= MAX_LEAF_SIZE) {
+            return null;
+        }
+        int middle = start + bins.count(bestBin + 1);
+        if (middle == start || middle == end) {
+            return byCount(node, end);
+        }
+        int to = 1 - node.side();
+        scatter(node.side(), start, end, axis, lo, scale, bestBin, middle);
+        int left = pair();
+        return new Pending[] {new Pending(left, start, middle, node.depth() + 1, bins.extent(0, bestBin + 1), to),
+                new Pending(left + 1, middle, end, node.depth() + 1, bins.extent(bestBin + 1, SahBins.COUNT), to)};
+    }
+
+    /** Halves a node's objects by count in their present order; the children measure their extents. */
+    private Pending[] byCount(Pending node, int end) {
+        int middle = node.start() + (end - node.start()) / 2;
+        int left = pair();
+        return new Pending[] {new Pending(left, node.start(), middle, node.depth() + 1, null, node.side()),
+                new Pending(left + 1, middle, end, node.depth() + 1, null, node.side())};
+    }
+
+    /** Two new node numbers side by side, for the children of an inner node; answers the first. */
+    private int pair() {
+        int first = nodeCount;
+        nodeCount += 2;
+        if (2 * nodeCount > nodes.length) {
+            boxes = Arrays.copyOf(boxes, 2 * boxes.length);
+            nodes = Arrays.copyOf(nodes, 2 * nodes.length);
+        }
+        return first;
     }
 
     /**
-     * Makes the {@code waiting} node a leaf (answers {@code null}) or an inner node, whose
-     * children's objects are then divided as the answer says.
+     * Copies places {@code [start, end)} of set {@code side} to the other set, keeping their order:
+     * those in a bin {@code ≤ lastLeftBin} from {@code start} on, the others from {@code right} on.
+     * Without a branch on the side: which side an object goes to is as good as random, and a
+     * mispredicted branch per object costs more than the copy.
      */
-    private Split split(Pending waiting, SahBins bins) {
-        int start = waiting.start();
-        int end = waiting.end();
-        ObjectArrays data = waiting.data();
-        Extent known = waiting.extent() != null ? waiting.extent() : measure(data, start, end);
-        tree.setBox(waiting.node(), known.box());
-        if (end - start > 1 && SahSplitter.widestAxis(known.centres()) < 0) {
-            end = splitter.withoutTwins(data, start, end);
-        }
-        int n = end - start;
-        Split split = n <= 1 ? null
-                : waiting.depth() < MAX_SAH_DEPTH ? splitter.splitBySah(known, data, start, end, bins)
-                : SahSplitter.splitByCount(data, start, end);
-        if (split == null) {
-            leaf(waiting.node(), start, end, data);
-        } else {
-            tree.setInner(waiting.node(), tree.pair());
-        }
-        return split;
-    }
-
-    /** A node that waits to be built, with what {@link #buildNode} would be called with. */
-    private record Pending(int node, int start, int end, int depth, Extent extent, ObjectArrays data) {
-    }
-
-    /** Makes node {@code node} the leaf of places {@code [start, end)}, whose objects go to the primary arrays. */
-    private void leaf(int node, int start, int end, ObjectArrays data) {
-        if (data != primary) {
-            data.copy(start, end, primary);
-        }
-        tree.setLeaf(node, start, end - start);
-    }
-
-    /** The extent of places {@code [start, end)} of {@code data}, by one pass over the objects. */
-    private Extent measure(ObjectArrays data, int start, int end) {
-        Extent extent = Extent.empty();
+    private void scatter(int side, int start, int end, int axis, float lo, float scale, int lastLeftBin, int right) {
+        int[] order = orders[side];
+        float[] from = objectBoxes[side];
+        int[] toOrder = orders[1 - side];
+        float[] to = objectBoxes[1 - side];
+        int left = start;
         for (int i = start; i < end; i++) {
-            extent.add(data.boxes(), 6 * i);
+            int at = 6 * i;
+            int bin = SahBins.binOf((from[at + axis] + from[at + axis + 3]) * 0.5f, lo, scale);
+            int goesRight = (lastLeftBin - bin) >>> 31; // the sign bit: 1 if bin > lastLeftBin
+            int place = left + ((right - left) & -goesRight);
+            left += 1 - goesRight;
+            right += goesRight;
+            toOrder[place] = order[i];
+            int p6 = 6 * place;
+            to[p6] = from[at];
+            to[p6 + 1] = from[at + 1];
+            to[p6 + 2] = from[at + 2];
+            to[p6 + 3] = from[at + 3];
+            to[p6 + 4] = from[at + 4];
+            to[p6 + 5] = from[at + 5];
+        }
+    }
+
+    /**
+     * Moves the objects of places {@code [start, end)} that are the twin of one before them in the
+     * file ({@link KnownShapes#twinKey}) behind the others, and answers where they start: the tree
+     * leaves them out. A twin reports the same hit as the first of its kind for every ray, and on
+     * that tie the first in the file wins. Asked only where all centres coincide, the one place
+     * where many twins can gather and defeat the tree.
+     */
+    private int withoutTwins(int side, int start, int end) {
+        int[] order = orders[side];
+        Arrays.sort(order, start, end); // file order, so that the first of each kind is kept
+        Map<Object, Boolean> seen = new HashMap<>();
+        int kept = start;
+        for (int i = start; i < end; i++) {
+            if (seen.putIfAbsent(KnownShapes.twinKey(objects.get(order[i])), Boolean.TRUE) == null) {
+                int object = order[i];
+                order[i] = order[kept];
+                order[kept++] = object;
+            }
+        }
+        for (int i = start; i < end; i++) {
+            KnownShapes.putBox(objects.get(order[i]), objectBoxes[side], 6 * i);
+        }
+        if (side != 0) { // the twins stay in no leaf, but in the list of objects
+            copy(side, kept, end);
+        }
+        return kept;
+    }
+
+    /** Copies places {@code [start, end)} of set {@code side} to the same places of set 0. */
+    private void copy(int side, int start, int end) {
+        System.arraycopy(orders[side], start, orders[0], start, end - start);
+        System.arraycopy(objectBoxes[side], 6 * start, objectBoxes[0], 6 * start, 6 * (end - start));
+    }
+
+    /** The extent of places {@code [start, end)} of set {@code side}, by one pass over them. */
+    private float[] measure(int side, int start, int end) {
+        float[] extent = SahBins.empty();
+        for (int i = start; i < end; i++) {
+            SahBins.add(extent, 0, objectBoxes[side], 6 * i);
         }
         return extent;
     }
 }
-

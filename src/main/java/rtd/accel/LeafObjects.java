@@ -3,7 +3,7 @@ package rtd.accel;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.function.IntConsumer;
+import java.util.concurrent.ForkJoinPool;
 import rtd.scene.DepthTest;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
@@ -18,10 +18,9 @@ import rtd.math.Vector3f;
  *
  * <p>{@link #t} runs each shape's own kernel ({@code Sphere.hit}, {@code RayTriangle.hit},
  * {@code Box.hit}) on these numbers, so it finds the same {@code t} as the shape's
- * {@code intersect} to the last bit; it only skips following references. With a million objects this matters: a reference to
- * each object and its corners is a wait for memory per test, while the numbers of a leaf's
- * objects arrive together. Any other kind of object runs its own {@link IGeometry#intersect}, in
- * the same leaf, so one such object among a million spheres costs only its own tests.
+ * {@code intersect} to the last bit, without a wait for memory per reference followed: the
+ * numbers of a leaf's objects arrive together. Any other kind of object runs its own
+ * {@link IGeometry#intersect}, in the same leaf.
  */
 final class LeafObjects {
 
@@ -44,30 +43,15 @@ final class LeafObjects {
     final float[] numbers;
 
     /**
-     * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order) into the
-     * builder's spare arrays where they are long enough ({@link BvhBuilder#spare}); writes each one's {@link KnownShapes#rounding} to
-     * {@code roundings} in leaf order too, linear at {@code [2i]} and quadratic at
-     * {@code [2i + 1]}, for the {@link Bvh} to grow its nodes by.
-     *
-     * <p>Each object is read in file order, as it lies in memory, and its numbers are written to
-     * its place in leaf order: read in leaf order, each object (and a sphere's centre) would be a
-     * wait for memory.
+     * Packs the {@code scene}'s objects at places {@code fileOrder} (in leaf order), into
+     * {@code spareInts} and {@code spareFloats} where they are long enough (the builder's arrays,
+     * which the tree no longer needs), on {@code pool} or on this thread if it is null; writes each
+     * one's {@link KnownShapes#rounding} to {@code roundings}, unless it is null, in leaf order too,
+     * linear at {@code [2i]} and quadratic at {@code [2i + 1]}, for the {@link Bvh} to grow its
+     * nodes by. Each object is read in file order, as it lies in memory, and its numbers are
+     * written to its place in leaf order.
      */
-    LeafObjects(List<IGeometry> scene, int[] fileOrder, BvhBuilder builder, float[] roundings) {
-        this(scene, fileOrder, builder.spare(), null, roundings);
-    }
-
-    /** Runs an action for 0 to n − 1, in parallel. */
-    interface ParallelLoop {
-        void forEach(int n, IntConsumer action);
-    }
-
-    /**
-     * As {@link #LeafObjects(List, int[], BvhBuilder, float[])}, packing into
-     * {@code spare}'s arrays where they are long enough, with {@code loop}, or on this thread if
-     * it is null; without the roundings if {@code roundings} is null.
-     */
-    LeafObjects(List<IGeometry> scene, int[] fileOrder, ObjectArrays spare, ParallelLoop loop,
+    LeafObjects(List<IGeometry> scene, int[] fileOrder, int[] spareInts, float[] spareFloats, ForkJoinPool pool,
             float[] roundings) {
         this.scene = scene;
         this.fileOrder = fileOrder;
@@ -85,7 +69,7 @@ final class LeafObjects {
         List<String> leafNames = new ArrayList<>();
         this.kinds = new byte[count];
         this.testOf = new byte[count];
-        this.offsets = reused(spare.order(), count);
+        this.offsets = reused(spareInts, count);
         int[] leafPlaces = new int[scene.size()]; // per place in the file, the place in leaf order, or −1 for none
         Arrays.fill(leafPlaces, -1);
         int size = 0;
@@ -104,14 +88,12 @@ final class LeafObjects {
             size += PackedTests.size(test);
         }
         this.kindNames = leafNames.toArray(String[]::new);
-        this.numbers = reused(spare.boxes(), size);
-        if (loop != null) {
-            loop.forEach(scene.size(), f -> pack(f, leafPlaces[f], roundings));
-        } else {
-            for (int f = 0; f < scene.size(); f++) {
+        this.numbers = reused(spareFloats, size);
+        new Parts(scene.size(), pool).run((start, end, part) -> {
+            for (int f = start; f < end; f++) {
                 pack(f, leafPlaces[f], roundings);
             }
-        }
+        });
     }
 
     /**

@@ -4,14 +4,21 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
 import rtd.render.Tracer;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
- * A {@link LightGrid} for each light of a scene that lies outside the box of its objects: the
- * shadow rays' counterpart of the camera's {@link ViewGrid}. Not in the paper or Part II; it
- * answers the shadow rays' question faster, and the same as the paper's loop.
+ * For shadow rays, a grid seen from each light that lies outside the box of the scene's objects:
+ * the shadow rays' counterpart of the camera's {@link ViewGrid}. The objects seen from the light
+ * ({@link PointFootprint}) are sorted into the cells of a square picture of the directions from
+ * it; a shadow ray towards the light tests the objects of its cell and those without a box, and
+ * stops at the first hit before the light ({@link LightGridTracer}): its cell holds every object
+ * it can hit, so the answer is the paper's loop's. A ray that no grid serves (one that does not
+ * end at a light, runs too far, or comes from outside the picture) goes to the tracer for the
+ * others. Not in the paper or Part II.
  */
 public final class LightGrids {
 
@@ -26,9 +33,60 @@ public final class LightGrids {
     private static final int SMALLEST = 16;
     private static final int LARGEST = 4096;
 
-    private final List<LightGrid> grids;
+    /**
+     * One light's grid: the footprints seen from it and the cells of its picture ({@code cells.width}
+     * pixels square), and how far short of the light the shader's shadow rays end
+     * ({@link Light#clearance}): a ray is served as if it ran on to the light, where the grid's
+     * geometry is exact, and its hits are still only those nearer than its own end.
+     */
+    record Grid(PointFootprint footprint, ViewGrid cells, float clearance) {
 
-    private LightGrids(List<LightGrid> grids) {
+        /**
+         * The grid of {@code objects} seen from {@code light}, whose objects with a box lie in
+         * {@code box}, on a picture of {@code size × size} pixels; null if the light lies too near or
+         * among them ({@link PointFootprint#around}).
+         */
+        static Grid build(List<IGeometry> objects, float[] box, Light light, int size, ForkJoinPool pool) {
+            PointFootprint footprint = PointFootprint.around(light.position(), box, size);
+            if (footprint == null) {
+                return null;
+            }
+            // no camera: the grid's "pixels" are directions from the light; a ray shows anywhere in its pixel (1)
+            ViewGrid cells = new ViewGridBuilder(objects, size, size, pool).build(footprint, null, 1, 1);
+            return new Grid(footprint, cells, light.clearance());
+        }
+
+        /**
+         * How far from the light a hit of a served ray of length {@code distance} can lie, at most:
+         * {@code distance + c + g}, as its origin lies at most that far (c the clearance) and its hits
+         * lie between the origin and the end, within the gap g of the light ({@link PointFootprint});
+         * a second g and a millionth are room for rounding past the end.
+         */
+        float farthestHit(float distance) {
+            return (float) (((double) distance + clearance + 2 * footprint.gap()) * (1 + 1e-6));
+        }
+
+        /**
+         * The cell of a shadow ray, whose question is whether it hits anything nearer than
+         * {@code distance}, or −1 if the grid does not serve it: served if, run on by the clearance,
+         * it ends at the light.
+         */
+        int cellOf(Ray ray, float distance) {
+            Vector3f origin = ray.origin();
+            Vector3f direction = ray.direction();
+            double length = Math.sqrt((double) direction.x() * direction.x() + (double) direction.y() * direction.y()
+                    + (double) direction.z() * direction.z());
+            double toLight = (double) distance + clearance;
+            double along = toLight / length;
+            int pixel = footprint.pixelOf(origin.x(), origin.y(), origin.z(), origin.x() + along * direction.x(),
+                    origin.y() + along * direction.y(), origin.z() + along * direction.z(), toLight);
+            return pixel < 0 ? -1 : cells.cellOf(pixel % cells.width, pixel / cells.width);
+        }
+    }
+
+    private final List<Grid> grids;
+
+    private LightGrids(List<Grid> grids) {
         this.grids = grids;
     }
 
@@ -50,25 +108,19 @@ public final class LightGrids {
         float[] box = boxOf(objects);
         int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples));
         long most = Math.max(1, mostPacked / Math.max(1, objects.size()));
-        boolean parallel = threads > 1 && objects.size() >= Parts.PARALLEL_THRESHOLD;
-        ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
-        try {
-            List<LightGrid> grids = new ArrayList<>();
+        return Parts.onPool(threads, objects.size(), pool -> {
+            List<Grid> grids = new ArrayList<>();
             for (Light light : scene.lights()) {
                 if (box == null || grids.size() >= most) {
                     break;
                 }
-                LightGrid grid = LightGrid.build(objects, box, light, size, pool);
+                Grid grid = Grid.build(objects, box, light, size, pool);
                 if (grid != null) {
                     grids.add(grid);
                 }
             }
             return new LightGrids(List.copyOf(grids));
-        } finally {
-            if (pool != null) {
-                pool.shutdown();
-            }
-        }
+        });
     }
 
     /** The box of all objects that have a finite one, or null if none has. */
@@ -91,7 +143,7 @@ public final class LightGrids {
     }
 
     /** The grids, one for each light that has one. */
-    List<LightGrid> grids() {
+    List<Grid> grids() {
         return grids;
     }
 
@@ -103,8 +155,8 @@ public final class LightGrids {
     /** The objects in all the grids' cells together. */
     public long entries() {
         long entries = 0;
-        for (LightGrid grid : grids) {
-            entries += grid.cells.entries();
+        for (Grid grid : grids) {
+            entries += grid.cells().entries();
         }
         return entries;
     }

@@ -3,7 +3,6 @@ package rtd.accel;
 import rtd.scene.DepthTest;
 import java.util.Map;
 import rtd.geometry.Hit;
-import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 
 /**
@@ -17,10 +16,9 @@ import rtd.math.Ray;
  * only must not skip a leaf in which the ray could find a nearer hit ({@link #worthVisiting}).
  *
  * <p>Boxes are grown as the ray runs: an object's test may report a hit outside its box by
- * a margin that grows with the distance the ray has run ({@link IGeometry#bounds}). A walk
- * knows a t beyond which the ray cannot be in a node (its {@link #reach}, then each parent's
- * exit), and grows the node's children by their margin there ({@link #growth}); how both are
- * counted is {@link BoxGrowth}'s.
+ * a margin that grows with the distance the ray has run ({@link Rounding}). A walk knows a t
+ * beyond which the ray cannot be in a node (its {@link #reach}, then each parent's exit), and
+ * grows the node's children by their margin there ({@link #growth}).
  *
  * <p>Kept as numbers, and reused from ray to ray, because a {@link Ray} kept in a field
  * would be allocated for every ray.
@@ -103,21 +101,14 @@ final class NearestHit {
         skipBeyond = skipFor(t);
     }
 
-    /**
-     * A t beyond which no object of the tree can report a hit: a hit at t lies in the root's
-     * box grown by {@code cone·t}, at most the box's farthest corner plus {@code 3·cone·t} from
-     * the origin (summing over the axes), and {@code t·|R|} from it.
-     */
+    /** A t beyond which no object of the tree can report a hit ({@link Bvh#reach}). */
     float reach() {
-        return BoxGrowth.reach(bvh, ox, oy, oz, length);
+        return bvh.reach(ox, oy, oz, length);
     }
 
-    /**
-     * How much to grow the boxes of {@code node}'s objects, for a ray that cannot be in them
-     * beyond {@code reach}: their {@link Rounding} at the distance the ray runs.
-     */
+    /** How much to grow the boxes of {@code node}'s children for a ray not in it beyond {@code reach} ({@link Bvh#growth}). */
     float growth(int node, float reach) {
-        return BoxGrowth.growth(bvh.boxes, node, reach * length);
+        return bvh.growth(node, reach * length);
     }
 
     /**
@@ -162,7 +153,7 @@ final class NearestHit {
     void testLeaf(int leaf) {
         int first = bvh.nodes[2 * leaf];
         int end = first + bvh.nodes[2 * leaf + 1];
-        counts.leaf(leaf, end - first);
+        counts.leaf(first, end);
         for (int i = first; i < end; i++) {
             test(i);
         }

@@ -6,6 +6,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.Future;
+import java.util.function.Function;
 
 /**
  * The places {@code [0, count)} cut into a part per thread of a pool, {@value #MOST} at most, for
@@ -17,11 +18,6 @@ final class Parts {
     /** A pass over the places {@code [start, end)}, the part numbered {@code part}. */
     interface Pass {
         void run(int start, int end, int part);
-    }
-
-    /** A pass that does not need its part's number. */
-    interface Range {
-        void run(int start, int end);
     }
 
     /** The most parts: a part of the view grid's passes keeps a count for every cell of the image. */
@@ -37,6 +33,21 @@ final class Parts {
         this.count = count;
         this.pool = pool;
         this.parts = pool == null ? 1 : Math.min(MOST, pool.getParallelism());
+    }
+
+    /**
+     * What {@code build} makes on a pool of {@code threads} threads, shut down afterwards, or on
+     * this thread (a null pool) for one thread or fewer than {@link #PARALLEL_THRESHOLD} objects.
+     */
+    static <T> T onPool(int threads, int objects, Function<ForkJoinPool, T> build) {
+        ForkJoinPool pool = threads > 1 && objects >= PARALLEL_THRESHOLD ? new ForkJoinPool(threads) : null;
+        try {
+            return build.apply(pool);
+        } finally {
+            if (pool != null) {
+                pool.shutdown();
+            }
+        }
     }
 
     /** Runs {@code pass} on every part, in parallel if there is a pool, and returns when all are done. */
@@ -93,23 +104,6 @@ final class Parts {
         }
         starts[cells] = total;
         return total;
-    }
-
-    /** As {@link #run(Pass)}, for a pass that does not need its part's number. */
-    void run(Range range) {
-        run((start, end, part) -> range.run(start, end));
-    }
-
-    /**
-     * The loop of {@link LeafObjects} on {@code pool}: 0 to n − 1 cut into parts; none (the
-     * calling thread's) without a pool.
-     */
-    static LeafObjects.ParallelLoop loopOn(ForkJoinPool pool) {
-        return pool == null ? null : (n, action) -> new Parts(n, pool).run((start, end) -> {
-            for (int i = start; i < end; i++) {
-                action.accept(i);
-            }
-        });
     }
 
     /** Where part {@code part} starts. */

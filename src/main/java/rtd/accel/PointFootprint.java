@@ -44,16 +44,16 @@ final class PointFootprint implements ImageFootprint {
     private final double reach;
     private final double gap;
 
-    private PointFootprint(Vector3f point, PointView view, int size, double reach, double gap) {
+    private PointFootprint(Vector3f point, double[][] axes, double widest, int size, double reach, double gap) {
         pointX = point.x();
         pointY = point.y();
         pointZ = point.z();
-        this.forward = view.forward();
-        this.across = view.across();
-        this.down = view.down();
+        this.forward = axes[0];
+        this.across = axes[1];
+        this.down = axes[2];
         this.size = size;
         this.half = size / 2.0;
-        this.scale = size / (2 * view.widest());
+        this.scale = size / (2 * widest);
         this.reach = reach;
         this.gap = gap;
     }
@@ -62,22 +62,60 @@ final class PointFootprint implements ImageFootprint {
      * The footprints seen from {@code point} on a picture of {@code size × size} pixels that shows
      * the box {@code box} (min x, y, z, max x, y, z), for rays towards the point that run up to
      * 1.25 times as far as the box's farthest corner is from the point, and at most a diagonal of
-     * the box farther (the shadow rays from the objects, and from the floor beneath them); null if
-     * the box is not all well in front of the point ({@link PointView#of}), or if the point lies so far
-     * that the gap is more than a few hundredths of the box's picture.
+     * the box farther (the shadow rays from the objects, and from the floor beneath them). The
+     * picture's axes are F towards the box's middle, u level across it and v down it. Null if the
+     * box is not all well in front of the point (each corner within 87° of F, a tangent of 20, and
+     * a twentieth of the distance to the middle ahead), as when the point lies inside it or beside
+     * it; or if the point lies so far that the gap is more than a few hundredths of the box's picture.
      */
     static PointFootprint around(Vector3f point, float[] box, int size) {
-        PointView view = PointView.of(point, box);
-        if (view == null) {
+        double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
+                (box[2] + box[5]) / 2.0 - point.z()};
+        double distance = Math.sqrt(dot(toMiddle, toMiddle));
+        if (!(distance > 0 && Double.isFinite(distance))) {
             return null;
         }
+        double[] forward = scaled(toMiddle, 1 / distance);
+        double[] up = Math.abs(forward[1]) < 0.9 ? new double[] {0, 1, 0} : new double[] {0, 0, 1};
+        double[] level = cross(up, forward);
+        double[] across = scaled(level, 1 / Math.sqrt(dot(level, level)));
+        double[] down = cross(forward, across);
+        double widest = 0;
+        double farthest = 0;
+        for (int k = 0; k < 8; k++) {
+            double[] w = {box[(k & 1) * 3] - point.x(), box[1 + (k >> 1 & 1) * 3] - point.y(),
+                    box[2 + (k >> 2 & 1) * 3] - point.z()};
+            double depth = dot(w, forward);
+            if (!(depth > distance / 20)) {
+                return null;
+            }
+            widest = Math.max(widest, Math.max(Math.abs(dot(w, across)), Math.abs(dot(w, down))) / depth);
+            farthest = Math.max(farthest, Math.sqrt(dot(w, w)));
+        }
+        widest = Math.max(widest * 1.01, 1e-6); // a hundredth of room at the picture's edges; never 0
+        double diagonal = Math.sqrt(Math.pow(box[3] - box[0], 2) + Math.pow(box[4] - box[1], 2)
+                + Math.pow(box[5] - box[2], 2));
         // rays from beyond the box, but not from much farther: every object grows by its rounding at the
         // reach less its distance, which for a far light would grow with the light's distance
-        double reach = Math.min(1.25 * view.farthest(), view.farthest() + view.diagonal());
+        double reach = Math.min(1.25 * farthest, farthest + diagonal);
         // the float rounding of a ray's end grows with its length and with the size of the coordinates
         double gap = GAP * (reach + Math.sqrt((double) point.x() * point.x() + (double) point.y() * point.y()
                 + (double) point.z() * point.z()));
-        return view.tooNarrowFor(gap) ? null : new PointFootprint(point, view, size, reach, gap);
+        boolean tooNarrow = gap > 0.08 * distance * widest; // the tree does better
+        return widest > 20 || tooNarrow ? null
+                : new PointFootprint(point, new double[][] {forward, across, down}, widest, size, reach, gap);
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    private static double[] scaled(double[] a, double factor) {
+        return new double[] {a[0] * factor, a[1] * factor, a[2] * factor};
+    }
+
+    private static double[] cross(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     }
 
     /** The largest gap served, g. */

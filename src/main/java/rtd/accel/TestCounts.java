@@ -6,25 +6,16 @@ import rtd.geometry.IGeometry;
 
 /**
  * The intersection tests that one {@link NearestHit} has run, in all and by kind of object: what
- * {@code --stats} reports per ray and {@code --view cost} draws. Not the paper's: counting is all
- * it does, and it never changes which object a ray hits.
- *
- * <p>Counted as cheaply as the tests allow, as they are counted on every ray: the objects tested
- * at their places (a grid's cells) one by one; a leaf's objects at once if they are all of one
- * kind; and for a leaf of several kinds, only how many rays tested it, sorted by kind when asked
- * ({@link #byKind}).
+ * {@code --stats} reports per ray and {@code --view cost} draws. Counting is all it does, and it
+ * never changes which object a ray hits. Where the tree holds one kind of object, as most scenes
+ * do, a leaf's tests are counted at once; else each by its object's kind.
  */
 final class TestCounts {
 
-    private final Bvh bvh;
     private final LeafObjects leaves;
-    /** The tests by kind, where the tree holds more than one kind; else only {@link #treeTests} counts. */
+    private final IGeometry[] unbounded;
+    /** The tests by kind ({@link LeafObjects#kindNames}), where the tree holds several kinds. */
     private final long[] tests;
-    /**
-     * Per leaf of several kinds ({@link Bvh#mixedLeaves}), how many rays tested its objects: not one
-     * counter a node, which for a mesh of a million triangles would be megabytes a tracer.
-     */
-    private final long[] leafVisits;
     private final boolean severalKinds;
     /** The tests of the tree's objects so far. */
     private long treeTests;
@@ -32,22 +23,18 @@ final class TestCounts {
     private long unboundedTests;
 
     TestCounts(Bvh bvh) {
-        this.bvh = bvh;
         this.leaves = bvh.leaves;
+        this.unbounded = bvh.unbounded;
         this.tests = new long[leaves.kindNames.length];
-        this.leafVisits = new long[bvh.mixedLeaves.length];
         this.severalKinds = tests.length > 1;
     }
 
-    /** One ray tested the {@code objects} objects of {@code leaf}. */
-    void leaf(int leaf, int objects) {
-        treeTests += objects;
+    /** One ray tested the objects at places {@code [first, end)} in leaf order. */
+    void leaf(int first, int end) {
+        treeTests += end - first;
         if (severalKinds) {
-            int kind = bvh.leafKinds[leaf];
-            if (kind >= 0) {
-                tests[kind] += objects;
-            } else {
-                leafVisits[-1 - kind]++;
+            for (int i = first; i < end; i++) {
+                tests[leaves.kinds[i]]++;
             }
         }
     }
@@ -65,45 +52,20 @@ final class TestCounts {
         unboundedTests++;
     }
 
-    /** The tests of the tree's objects by kind ({@link LeafObjects#kindNames}). */
-    long[] byKind() {
-        if (tests.length == 1) {
-            return new long[] {treeTests}; // one kind: counted per leaf only
-        }
-        long[] byKind = tests.clone();
-        for (int m = 0; m < leafVisits.length; m++) {
-            if (leafVisits[m] > 0) {
-                int leaf = bvh.mixedLeaves[m];
-                int first = bvh.nodes[2 * leaf];
-                for (int i = first; i < first + bvh.nodes[2 * leaf + 1]; i++) {
-                    byKind[leaves.kinds[i]] += leafVisits[m];
-                }
-            }
-        }
-        return byKind;
-    }
-
     /** The tests so far by the name of each kind of object, those of the objects without a box too ({@code --stats}). */
     Map<String, Long> byKindName() {
-        Map<String, Long> tests = new TreeMap<>();
-        long[] treeTests = byKind();
-        for (int k = 0; k < treeTests.length; k++) {
-            tests.merge(leaves.kindNames[k], treeTests[k], Long::sum);
+        Map<String, Long> byName = new TreeMap<>();
+        for (int k = 0; k < tests.length; k++) {
+            byName.merge(leaves.kindNames[k], severalKinds ? tests[k] : treeTests, Long::sum);
         }
-        for (IGeometry object : bvh.unbounded) {
-            tests.merge(object.kind(), unboundedTests, Long::sum);
+        for (IGeometry object : unbounded) {
+            byName.merge(object.kind(), unboundedTests, Long::sum);
         }
-        return tests;
-    }
-
-    /** How many counters of leaf visits these counts keep. */
-    int leafCounters() {
-        return leafVisits.length;
+        return byName;
     }
 
     /** All tests so far: a running count, read before and after a ray to tell its own. */
     long all() {
-        return treeTests + unboundedTests * bvh.unbounded.length;
+        return treeTests + unboundedTests * unbounded.length;
     }
-
 }

@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
@@ -13,13 +12,10 @@ import rtd.scene.Scene;
  * image, and the search for what a ray hits is a search in two dimensions: a ray tests only the
  * objects of its cell, a few where the paper's loop tests all, and no tree is built or walked.
  *
- * <p>It serves only the camera's rays ({@link ViewGridTracer}): in a picture in flat colours no
- * other ray is traced; a scene with lights casts shadow rays, which its tracer hands on: to the
- * {@link LightGrids}, which see the objects from each light as this grid sees them from the
- * camera, and the rest to a {@link Bvh}'s. The cells hold places in {@link #objects}, a hierarchy
- * of one leaf that holds every object with its numbers packed for the test. A ray tests its
- * cell's objects nearest first, and stops at the first that lies beyond a hit it has found:
- * where objects hide each other, it tests the few in front.
+ * <p>It serves only the camera's rays ({@link ViewGridTracer}). The cells hold places in
+ * {@link #objects}, a hierarchy of one leaf that holds every object with its numbers packed for
+ * the test. A ray tests its cell's objects nearest first, and stops at the first that lies beyond
+ * a hit it has found: where objects hide each other, it tests the few in front.
  *
  * <p>The cell's side is a power of two, chosen for the scene: small cells let a ray test fewer
  * objects, but an object then lies in more cells, which costs building and memory
@@ -47,7 +43,7 @@ public final class ViewGrid {
     final int[] places;
     /**
      * Per place in the leaf, a distance from the ray's origin before which no camera ray hits the
-     * object (in a {@link LightGrid}, from the light): it never decreases along a cell's objects,
+     * object (in a light's grid, from the light, {@link LightGrids}): it never decreases along a cell's objects,
      * so a ray that has a hit nearer than an object's may stop there
      * ({@link NearestHit#testPlacesNearestFirst}; a shadow ray, where it is beyond its origin,
      * {@link NearestHit#testPlacesUntilHit}).
@@ -74,17 +70,9 @@ public final class ViewGrid {
      * picture with {@code samples × samples} rays per pixel, built with {@code threads} threads.
      */
     public static ViewGrid build(Scene scene, int width, int height, int samples, int threads) {
-        boolean parallel = threads > 1 && scene.objects().size() >= Parts.PARALLEL_THRESHOLD;
-        ForkJoinPool pool = parallel ? new ForkJoinPool(threads) : null;
-        try {
-            float latestOffset = samples == 1 ? 0 : (samples - 0.5f) / samples;
-            return new ViewGridBuilder(scene.objects(), width, height, pool)
-                    .build(scene.camera(), latestOffset, samples);
-        } finally {
-            if (pool != null) {
-                pool.shutdown();
-            }
-        }
+        float latestOffset = samples == 1 ? 0 : (samples - 0.5f) / samples;
+        return Parts.onPool(threads, scene.objects().size(), pool -> new ViewGridBuilder(scene.objects(), width, height,
+                pool).build(scene.camera(), latestOffset, samples));
     }
 
     /** Whether {@link #build} can make a grid for this scene's camera: the orthographic or the perspective one. */

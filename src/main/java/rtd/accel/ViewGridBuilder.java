@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.ICamera;
@@ -7,11 +8,12 @@ import rtd.geometry.IGeometry;
 
 /**
  * Builds a {@link ViewGrid}, in passes over arrays, each on all threads where it can be: every
- * object's footprint on the image and nearest distance ({@link ImageFootprint}); a place for it in the
- * leaf, by the square of the image it lies in, so that neighbours on the image lie side by side
- * in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists, with cells
- * of the side {@link CellSide} chooses; and each list sorted nearest first ({@link NearestFirst}).
- * The grid is the same for any number of threads.
+ * object's footprint on the image and nearest distance ({@link ImageFootprint}); a place for it in
+ * the leaf, by the square of the image it lies in, so that neighbours on the image lie side by
+ * side in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists, with
+ * cells of the side {@link CellSide} chooses; and each list sorted nearest first, so that a ray
+ * can stop at the first object beyond its hit ({@link NearestHit#testPlacesNearestFirst}). The
+ * grid is the same for any number of threads.
  */
 final class ViewGridBuilder {
 
@@ -21,6 +23,8 @@ final class ViewGridBuilder {
     private static final byte UNBOUNDED = 2;
     /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's squares. */
     private static final int TILE_SHIFT = 3;
+    /** A cell of more objects than this is sorted by {@link Arrays#sort}, not by insertion. */
+    private static final int INSERTION_SORT_MOST = 32;
 
     private final List<IGeometry> objects;
     private final ForkJoinPool pool;
@@ -53,7 +57,7 @@ final class ViewGridBuilder {
     /**
      * The grid of the objects' {@code footprint}s on a {@code width × height} image, for about
      * {@code samples²} rays a pixel; {@code camera} and {@code latestOffset} are what its rays
-     * are (a {@link LightGrid}'s has no camera).
+     * are (a light's grid has no camera).
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
         int shift = CellSide.choose(objects, footprint, width, height, samples);
@@ -72,7 +76,7 @@ final class ViewGridBuilder {
         Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
         float[] nearestByPlace = new float[fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
-        NearestFirst.sort(cellStart, places, nearestByPlace, pool);
+        sortNearestFirst(cellStart, places, nearestByPlace, pool);
         return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
     }
 
@@ -169,7 +173,7 @@ final class ViewGridBuilder {
 
     /** The numbers of the objects' tests, packed in leaf order. */
     private LeafObjects pack(int[] fileOrder) {
-        return new LeafObjects(objects, fileOrder, ObjectArrays.of(0), Parts.loopOn(pool), null);
+        return new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
     }
 
     /** The places in the file of the objects without a box, in file order. */
@@ -213,5 +217,67 @@ final class ViewGridBuilder {
             }
         });
         return places;
+    }
+
+    /**
+     * Sorts each cell's objects by their nearest distance, in parallel by cells: by insertion, as
+     * a cell holds a dozen or so, and a crowded cell (objects that cover the whole image, say) by
+     * their distances and places. A list that runs from far to near is turned round first: a
+     * file that lists a mesh from the back to the front fills every cell that way, the worst
+     * order for an insertion sort. Objects at the same distance may end in any order (file order,
+     * its reverse, or by place): a ray's depth test breaks such ties by file order itself
+     * ({@link NearestHit}), so the pictures do not depend on it.
+     */
+    private static void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace, ForkJoinPool pool) {
+        new Parts(cellStart.length - 1, pool).run((first, end, part) -> {
+            for (int c = first; c < end; c++) {
+                int from = cellStart[c];
+                int to = cellStart[c + 1];
+                if (to - from > INSERTION_SORT_MOST) {
+                    sortCrowded(places, from, to, nearestByPlace);
+                    continue;
+                }
+                if (to - from > 1 && nearestByPlace[places[from]] > nearestByPlace[places[to - 1]]) {
+                    reverse(places, from, to);
+                }
+                // j > beforeFrom, not j >= from: the JIT compiles the first form once, and gave up on the second
+                int beforeFrom = from - 1;
+                for (int k = from + 1; k < to; k++) {
+                    int place = places[k];
+                    float distance = nearestByPlace[place];
+                    int j = k - 1;
+                    while (j > beforeFrom && nearestByPlace[places[j]] > distance) {
+                        places[j + 1] = places[j];
+                        j--;
+                    }
+                    places[j + 1] = place;
+                }
+            }
+        });
+    }
+
+    private static void reverse(int[] places, int from, int to) {
+        for (int i = from, j = to - 1; i < j; i++, j--) {
+            int swap = places[i];
+            places[i] = places[j];
+            places[j] = swap;
+        }
+    }
+
+    /**
+     * Sorts {@code places[from .. to)} by distance, then place: each as one long, the distance's
+     * bits turned into an int that orders as the floats do (negative ones too), above the place.
+     */
+    static void sortCrowded(int[] places, int from, int to, float[] nearestByPlace) {
+        long[] keys = new long[to - from];
+        for (int k = from; k < to; k++) {
+            int bits = Float.floatToIntBits(nearestByPlace[places[k]]);
+            bits ^= (bits >> 31) & 0x7FFF_FFFF; // a negative float's bits order backwards: turn them round
+            keys[k - from] = (long) bits << 32 | places[k];
+        }
+        Arrays.sort(keys);
+        for (int k = from; k < to; k++) {
+            places[k] = (int) keys[k - from];
+        }
     }
 }

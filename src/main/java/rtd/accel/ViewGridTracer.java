@@ -17,11 +17,9 @@ import rtd.render.WorkCount;
  * once that distance passes the hit found, by more than rounding can explain (as a box's entry
  * does in {@link BvhTracer}), no object after it can win or tie, and the ray stops.
  *
- * <p>A ray that is not the grid camera's (a shadow ray, a reflected ray, a ray given alone) goes
- * to the tracer for the others in a scene with lights (its {@link LightGrids}' tracer, which
- * hands what they do not serve to a {@link BvhTracer}); without one it runs
- * the tests on every object, as the paper's loop does: right for any ray, and fast only for the
- * camera's.
+ * <p>A ray that is not the grid camera's goes to the tracer for the others (in a scene with lights,
+ * the {@link LightGrids}' and then a {@link BvhTracer}); without one it runs the tests on every
+ * object, as the paper's loop does: right for any ray, and fast only for the camera's.
  *
  * <p>Not thread-safe: it keeps the ray's state and counters of its own. Use one per thread.
  */

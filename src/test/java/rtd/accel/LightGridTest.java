@@ -162,8 +162,8 @@ class LightGridTest {
                 new PerspectiveCamera(new Vector3f(0, 0, 60), new Vector3f(0, 0, -1), 60), spheres,
                 List.of(new Light(light, new Rgb(1, 1, 1))));
         LightGrids grids = LightGrids.build(scene, 2048, 2048, 1, 1);
-        LightGrid grid = grids.grids().get(0);
-        double gap = grid.footprint.gap();
+        LightGrids.Grid grid = grids.grids().get(0);
+        double gap = grid.footprint().gap();
         Tracer tracer = grids.newTracer(new LinearTracer(scene));
         int served = 0;
         for (int i = 0; i < 20_000; i++) {
@@ -203,7 +203,7 @@ class LightGridTest {
                 new PerspectiveCamera(point(middle[0], middle[1], middle[2] + 60), new Vector3f(0, 0, -1), 60), boxes,
                 List.of(new Light(light, new Rgb(1, 1, 1))));
         LightGrids grids = LightGrids.build(scene, 2048, 2048, 1, 1);
-        LightGrid grid = grids.grids().get(0);
+        LightGrids.Grid grid = grids.grids().get(0);
         Tracer tracer = grids.newTracer(new LinearTracer(scene));
         int served = 0;
         int blocked = 0;
@@ -214,7 +214,7 @@ class LightGridTest {
             double[] q = grazing.q();
             // the end, up to the gap off the light towards the inside; the origin beyond Q on the line
             double[] end = grazing.awayFromSide();
-            double off = grid.footprint.gap() * (0.3 + 0.69 * random.nextDouble());
+            double off = grid.footprint().gap() * (0.3 + 0.69 * random.nextDouble());
             double beyond = Math.pow(10, -1 + 2 * random.nextDouble());
             Vector3f origin = point(x[0] + q[0] + beyond * (q[0] - off * end[0]),
                     x[1] + q[1] + beyond * (q[1] - off * end[1]), x[2] + q[2] + beyond * (q[2] - off * end[2]));
@@ -332,6 +332,6 @@ class LightGridTest {
         LightGrids one = LightGrids.build(scene, 200, 100, 1, 1);
         LightGrids two = LightGrids.build(scene, 200, 100, 1, 2);
         assertThat(two.entries()).isEqualTo(one.entries()).isGreaterThan(30_000);
-        assertThat(two.grids().get(0).cells.places).isEqualTo(one.grids().get(0).cells.places);
+        assertThat(two.grids().get(0).cells().places).isEqualTo(one.grids().get(0).cells().places);
     }
 }

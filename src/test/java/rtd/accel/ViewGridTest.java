@@ -330,7 +330,7 @@ class ViewGridTest {
     void aCrowdedCellIsSortedByDistanceNegativeOnesTooThenByPlace() {
         float[] nearestByPlace = {3, -2, Float.NEGATIVE_INFINITY, -0.5f, 3, 0, -7};
         int[] places = {9, 0, 1, 2, 3, 4, 5, 6, 9}; // the cell is places[1 .. 8)
-        NearestFirst.sortCrowded(places, 1, 8, nearestByPlace);
+        ViewGridBuilder.sortCrowded(places, 1, 8, nearestByPlace);
         assertThat(places).containsExactly(9, 2, 6, 1, 3, 5, 0, 4, 9);
     }
 
