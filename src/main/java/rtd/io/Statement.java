@@ -51,9 +51,12 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return new Statement(keyword, groups, optional, repeatsLast, builder);
     }
 
-    /** Whether it makes an object, which may name a material and a transform. */
+    /**
+     * Whether it makes an object, which may name a material and a transform. The group itself, not an equal one:
+     * asked of every line, and a record's {@code equals} would compare every field.
+     */
     boolean takesMaterial() {
-        return optional.contains(MATERIAL);
+        return !optional.isEmpty() && optional.get(0) == MATERIAL;
     }
 
     /** How many optional groups may follow at most. */
