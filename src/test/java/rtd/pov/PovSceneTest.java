@@ -75,7 +75,7 @@ class PovSceneTest {
     }
 
     @ParameterizedTest(name = "random scene {0}")
-    @ValueSource(longs = {1, 2, 3})
+    @ValueSource(longs = {1, 2})
     void randomFlatScenesOfEveryKindOfObjectAndBothCamerasDrawTheSamePicture(long seed) throws Exception {
         PovRay.assumeInstalled();
         for (Scene scene : List.of(MixedScenes.generate(seed, 40), RandomScenes.generate(seed, 40))) {
