@@ -8,6 +8,7 @@ import rtd.io.SceneException;
 import rtd.io.SceneFile;
 import rtd.pov.PovClock;
 import rtd.pov.PovScene;
+import rtd.scene.Scene;
 
 /**
  * {@code --export-pov} with {@code --frames N}: one POV-Ray file for the whole animation (Part III, "Frames on
@@ -33,11 +34,16 @@ final class PovFrames {
         StringBuilder pov = new StringBuilder();
         pov.append("// An animation of ").append(plan.frames()).append(" frames, written by rtd --export-pov --frames ")
                 .append(plan.frames()).append(". Render all of them with\n//   ").append(command).append('\n');
-        if (!file.usesClock()) {
-            pov.append("// The scene does not use the clock: every frame is the same picture.\n");
-            pov.append(still(file, 0, options, name));
-        } else {
-            pov.append(animation(file, plan, options, name));
+        try {
+            if (!file.usesClock()) {
+                pov.append("// The scene does not use the clock: every frame is the same picture.\n");
+                ClockedScene read = file.withClock(0);
+                pov.append(PovScene.of(read.with(options.scale().of(read.scene())), options.width(), options.height()));
+            } else {
+                pov.append(animation(file, plan, options));
+            }
+        } catch (IllegalArgumentException e) {
+            throw new FileError("cannot export to POV-Ray: " + e.getMessage());
         }
         target.writeText(pov.toString());
         return "rtd: wrote " + target.spelt() + "; render its " + plan.frames() + " frames with POV-Ray:\n  cd "
@@ -50,7 +56,7 @@ final class PovFrames {
      * {@code frame_number}. Either way the scene is read at every frame's clock first, so that a value that breaks a
      * rule at some frame stops the export as it stops the frames.
      */
-    private static String animation(SceneFile file, FramePlan plan, RenderOptions options, String name)
+    private static String animation(SceneFile file, FramePlan plan, RenderOptions options)
             throws SceneException, FileError {
         List<ICamera> cameras = new ArrayList<>();
         for (int i = 0; i < plan.frames(); i++) {
@@ -62,28 +68,18 @@ final class PovFrames {
         String why = scaled && !clocked.camera().isEmpty() ? "the orthographic camera at --scale"
                 : PovClock.whyNot(clocked, cameras);
         if (why == null) {
-            try {
-                return "// Each number that uses rtd's clock is written with POV-Ray's clock, which runs from 0 to 1 over\n"
-                        + "// the frames as rtd's does.\n" + PovScene.of(clocked, options.width(), options.height(), name);
-            } catch (IllegalArgumentException e) {
-                throw new FileError("cannot export to POV-Ray: " + e.getMessage());
-            }
+            return "// Each number that uses rtd's clock is written with POV-Ray's clock, which runs from 0 to 1 over\n"
+                    + "// the frames as rtd's does.\n" + PovScene.of(clocked, options.width(), options.height());
         }
-        StringBuilder pov = new StringBuilder("// Each frame is rtd's scene at clock = frame_number/" + (plan.frames() - 1)
-                + ", written out in the #case of its frame_number:\n// this export does not write the clock of " + why
-                + " as POV-Ray's clock.\n#switch (frame_number)\n");
+        StringBuilder pov = new StringBuilder("// Each frame is rtd's scene at clock = frame_number/"
+                + (plan.frames() - 1) + ", written out in the #case of its frame_number, since POV-Ray's clock\n"
+                + "// cannot stand for the numbers that use rtd's clock in " + why + ".\n#version 3.7;\n\n"
+                + "#switch (frame_number)\n");
         for (int i = 0; i < plan.frames(); i++) {
-            pov.append("#case (").append(i).append(")\n").append(still(file, plan.clock(i), options, name)).append("#break\n");
+            Scene scene = options.scale().of(file.at(plan.clock(i), null));
+            pov.append("#case (").append(i).append(")\n").append(PovScene.frame(scene, options.width(), options.height()))
+                    .append("#break\n");
         }
         return pov.append("#end\n").toString();
-    }
-
-    private static String still(SceneFile file, double clock, RenderOptions options, String name) throws SceneException,
-            FileError {
-        try {
-            return PovScene.of(options.scale().of(file.at(clock, null)), options.width(), options.height(), name);
-        } catch (IllegalArgumentException e) {
-            throw new FileError("cannot export to POV-Ray: " + e.getMessage());
-        }
     }
 }

@@ -1,7 +1,9 @@
 package rtd.io;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
@@ -68,6 +70,19 @@ public final class ClockFields {
     /** The meanings of the groups with a number that uses the clock. */
     public Set<String> groups() {
         return clocked.keySet();
+    }
+
+    /** Every number's expression that uses the clock, in no particular order. */
+    public List<Expression> expressions() {
+        List<Expression> all = new ArrayList<>();
+        for (Expression[] numbers : clocked.values()) {
+            for (Expression e : numbers) {
+                if (e != null) {
+                    all.add(e);
+                }
+            }
+        }
+        return all;
     }
 
     /** Whether no number of the statement uses the clock. */

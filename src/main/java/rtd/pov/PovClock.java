@@ -61,6 +61,22 @@ public final class PovClock {
     }
 
     /**
+     * The {@code #declare} of each {@code let} name that a number using the clock uses ({@link
+     * PovExpression#declarations}), to stand before the camera.
+     */
+    String declarations() {
+        List<Expression> all = new ArrayList<>(clocked.ambient().expressions());
+        all.addAll(clocked.camera().expressions());
+        for (Light light : clocked.scene().lights()) {
+            all.addAll(clocked.of(light).expressions());
+        }
+        for (IGeometry object : clocked.scene().objects()) {
+            all.addAll(clocked.of(object).expressions());
+        }
+        return PovExpression.declarations(all);
+    }
+
+    /**
      * Why {@code clocked} cannot be written as one POV-Ray file that follows the clock, or null if it can:
      * {@code cameras} are the scene's camera at every frame's clock, which must each have image axes that
      * POV-Ray's {@code vcross} gives (rtd's camera looking straight up or down takes x as its right axis).

@@ -1,6 +1,8 @@
 package rtd.pov;
 
 import java.math.BigDecimal;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import rtd.io.Expression;
 
 /**
@@ -9,8 +11,9 @@ import rtd.io.Expression;
  * {@code clock} and {@code pi} as they are; rtd's {@code sin cos tan} take degrees, so their argument goes
  * through {@code radians()}, and {@code asin acos atan atan2} answer in degrees, so they go through
  * {@code degrees()}; {@code a ^ b} is {@code pow(a, b)}; {@code sqrt abs floor min max} are POV-Ray's own. A
- * name that a {@code let} defined is written as its definition, in parentheses where it needs them, so the file
- * needs no {@code #declare} for it. One method per kind of node; parentheses only where POV-Ray's order of
+ * name that a {@code let} defined is written as POV-Ray's {@code Rtd_name}, {@code #declare}d once
+ * ({@link #declarations}): a name defined from names is then written once, not once for each use, which a chain
+ * of {@code let}s would double at every line. One method per kind of node; parentheses only where POV-Ray's order of
  * operations would read the text otherwise, and around every minus sign that is not the first thing written.
  */
 final class PovExpression {
@@ -43,7 +46,7 @@ final class PovExpression {
         if (e instanceof Expression.Negation || e instanceof Expression.Number number && number.number() < 0) {
             return SUM; // a let's plain number may be negative
         }
-        return e instanceof Expression.Name name && !name.name().equals("pi") ? binds(name.definition()) : ATOM;
+        return ATOM;
     }
 
     private static String text(Expression e) {
@@ -74,9 +77,46 @@ final class PovExpression {
         return "-" + within(negation.operand(), ATOM);
     }
 
-    /** {@code pi} as POV-Ray's; a {@code let}'s name as its definition. */
+    /** {@code pi} as POV-Ray's; a {@code let}'s name as the identifier {@link #declarations} declares. */
     private static String name(Expression.Name name) {
-        return name.name().equals("pi") ? "pi" : within(name.definition(), SUM);
+        return name.name().equals("pi") ? "pi" : identifier(name);
+    }
+
+    private static String identifier(Expression.Name name) {
+        return "Rtd_" + name.name();
+    }
+
+    /**
+     * The {@code #declare} of every {@code let} name that {@code expressions} use, directly or through other names,
+     * each once and after the names its definition uses.
+     */
+    static String declarations(Iterable<Expression> expressions) {
+        Map<String, Expression.Name> names = new LinkedHashMap<>();
+        for (Expression e : expressions) {
+            collect(e, names);
+        }
+        StringBuilder text = new StringBuilder();
+        for (Expression.Name name : names.values()) {
+            text.append("#declare ").append(identifier(name)).append(" = ").append(of(name.definition())).append(";\n");
+        }
+        return text.toString();
+    }
+
+    /** Adds the names {@code e} uses to {@code names}, each after those its definition uses. */
+    private static void collect(Expression e, Map<String, Expression.Name> names) {
+        if (e instanceof Expression.Name name && !name.name().equals("pi")) {
+            if (!names.containsKey(name.name())) {
+                collect(name.definition(), names);
+                names.put(name.name(), name);
+            }
+        } else if (e instanceof Expression.Operation operation) {
+            collect(operation.left(), names);
+            collect(operation.right(), names);
+        } else if (e instanceof Expression.Negation negation) {
+            collect(negation.operand(), names);
+        } else if (e instanceof Expression.Call call) {
+            call.arguments().forEach(argument -> collect(argument, names));
+        }
     }
 
     /** A number, the clock, or a function's call. */

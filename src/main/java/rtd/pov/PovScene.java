@@ -79,34 +79,44 @@ public final class PovScene {
 
     /** The POV-Ray text of {@code scene} as rtd draws it at {@code w × h}; {@code povFile} names the file, for the comment. */
     public static String of(Scene scene, int w, int h, String povFile) {
-        return of(scene, w, h, povFile, null);
+        return "// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n//   "
+                + command(povFile, povFile.replaceAll("(?i)\\.pov$", "") + "-pov.png", w, h) + "\n" + notes(scene, "// and compare")
+                + "#version 3.7;\n\n" + body(scene, w, h, null);
     }
 
     /**
      * As {@link #of(Scene, int, int, String)}, each number that uses the clock written with POV-Ray's {@code clock}
      * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot}
-     * passes.
+     * passes. The command that renders the frames is the caller's to write.
      */
-    public static String of(ClockedScene clocked, int w, int h, String povFile) {
-        return of(clocked.scene(), w, h, povFile, new PovClock(clocked));
+    public static String of(ClockedScene clocked, int w, int h) {
+        PovClock clock = new PovClock(clocked);
+        return notes(clocked.scene(), "// Compare") + "#version 3.7;\n\n" + clock.declarations() + body(clocked.scene(), w, h, clock);
     }
 
-    /** The text, the numbers that use the clock written by {@code clock} (null: a still). */
-    private static String of(Scene scene, int w, int h, String povFile, PovClock clock) {
-        boolean shaded = !scene.lights().isEmpty();
-        StringBuilder pov = new StringBuilder();
-        pov.append("// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n");
-        pov.append("//   ").append(command(povFile, povFile.replaceAll("(?i)\\.pov$", "") + "-pov.png", w, h)).append('\n');
-        pov.append(shaded
-                ? "// and compare decoded pixels: shaded scenes agree but for shadow and silhouette edges and a level here\n"
+    /** The scene alone, without the comments and the {@code #version} of a file: one frame among others. */
+    public static String frame(Scene scene, int w, int h) {
+        return body(scene, w, h, null);
+    }
+
+    /** What to expect when comparing the pictures, after {@code opening}. */
+    private static String notes(Scene scene, String opening) {
+        String notes = opening + (!scene.lights().isEmpty()
+                ? " decoded pixels: shaded scenes agree but for shadow and silhouette edges and a level here\n"
                         + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also mirrors uses\n"
                         + "// POV-Ray's own Fresnel reflection, close to rtd's Schlick mix but not the same.\n"
-                : "// and compare decoded pixels: flat scenes agree but for the odd pixel on an edge.\n");
+                : " decoded pixels: flat scenes agree but for the odd pixel on an edge.\n");
         if (scene.lights().stream().anyMatch(light -> light.area() != null)) {
-            pov.append("// Area lights: their lights fall on rtd's samples and cast the same soft shadows; POV-Ray lights with\n"
-                    + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n");
+            notes += "// Area lights: their lights fall on rtd's samples and cast the same soft shadows; POV-Ray lights with\n"
+                    + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n";
         }
-        pov.append("#version 3.7;\n\n");
+        return notes;
+    }
+
+    /** The settings, camera, lights and objects, the numbers that use the clock written by {@code clock} (null: a still). */
+    private static String body(Scene scene, int w, int h, PovClock clock) {
+        boolean shaded = !scene.lights().isEmpty();
+        StringBuilder pov = new StringBuilder();
         String lightSum = clock == null ? null : clock.lightSum(scene.lights());
         pov.append("global_settings { assumed_gamma 1.0 ambient_light ")
                 .append(shaded ? lightSum != null ? lightSum : rgb(lightSum(scene)) : "rgb <1, 1, 1>")

@@ -107,8 +107,10 @@ class PovFramesTest {
         Run run = export(dir.resolve("spin.txt").toString(), "spin", FRAMES, W, H);
         assertThat(run.exitCode()).as(run.err()).isZero();
         String pov = Files.readString(dir.resolve("spin.pov"));
-        assertThat(pov).contains("the clock of the 'transform' at line 3", "#switch (frame_number)", "#case (0)", "#case (4)")
-                .doesNotContain("#case (5)");
+        assertThat(pov).contains("the numbers that use rtd's clock in the 'transform' at line 3.", "#switch (frame_number)",
+                "#case (0)", "#case (4)").doesNotContain("#case (5)");
+        assertThat(pov.split("#version 3.7;", -1)).as("one #version, before the frames").hasSize(2);
+        assertThat(pov).doesNotContain("Render it at rtd's size");
         assumePovRay();
         assertThat(differing(povRay("spin", 1), rtd("spin", 1), 8)).as("pixels that differ, of " + W * H)
                 .isLessThanOrEqualTo(W * H / 100);

@@ -22,7 +22,7 @@ class PovClockTest {
     }
 
     private static String pov(String text) throws SceneException {
-        return PovScene.of(read(text), 64, 36, "t.pov");
+        return PovScene.of(read(text), 64, 36);
     }
 
     private static String whyNot(String text) throws SceneException {

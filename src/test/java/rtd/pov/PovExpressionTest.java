@@ -81,19 +81,39 @@ class PovExpressionTest {
         assertThat(pov("min(clock, 1) * max(2, clock)")).isEqualTo("min(clock, 1) * max(2, clock)");
     }
 
-    @Test
-    void aLetsNameIsWrittenAsItsDefinitionInParenthesesWhereItNeedsThem() throws SceneException {
-        String lets = "let:(angle):(360*clock)\nlet:(shift):(clock + 1)\nlet:(size):(3)\n";
-        assertThat(pov(lets, "size*sin(angle)")).isEqualTo("3 * sin(radians(360 * clock))");
-        assertThat(pov(lets, "2*shift")).isEqualTo("2 * (clock + 1)");
-        assertThat(pov(lets, "shift + 1")).isEqualTo("clock + 1 + 1");
+    /** The {@code #declare}s the export writes for the x of the sphere's centre written as {@code x}. */
+    private static String declarations(String lets, String x) throws SceneException {
+        String text = lets + "orthographic_camera:(0|0|10):(0|0|-1):(20)\nsphere:(" + x + "|0|0):(1):(255|0|0)\n";
+        ClockedScene clocked = SceneFile.of("t.txt", text.getBytes(StandardCharsets.UTF_8), Path.of("")).withClock(0);
+        return new PovClock(clocked).declarations();
     }
 
     @Test
-    void aLetsPlainNumberIsWrittenAsTheFloatItIsAndInParenthesesIfNegative() throws SceneException {
+    void aLetsNameIsWrittenAsItsDeclaredIdentifierAndDeclaredOnceAfterTheNamesItUses() throws SceneException {
+        String lets = "let:(angle):(360*clock)\nlet:(shift):(clock + 1)\nlet:(size):(3)\nlet:(twice):(shift + shift)\n";
+        assertThat(pov(lets, "size*sin(angle)")).isEqualTo("Rtd_size * sin(radians(Rtd_angle))");
+        assertThat(pov(lets, "2*shift")).isEqualTo("2 * Rtd_shift");
+        assertThat(declarations(lets, "size*sin(angle)")).isEqualTo("#declare Rtd_size = 3;\n#declare Rtd_angle = 360 * clock;\n");
+        assertThat(declarations(lets, "twice*twice")).isEqualTo("#declare Rtd_shift = clock + 1;\n"
+                + "#declare Rtd_twice = Rtd_shift + Rtd_shift;\n");
+    }
+
+    /** Each name is written once, so a chain of names that doubles at every line stays as long as the chain. */
+    @Test
+    void aChainOfLetsThatDoublesAtEveryLineIsWrittenOnceALine() throws SceneException {
+        StringBuilder lets = new StringBuilder("let:(a0):(clock)\n");
+        for (int i = 1; i <= 16; i++) {
+            lets.append("let:(a").append(i).append("):(a").append(i - 1).append(" + a").append(i - 1).append(")\n");
+        }
+        String declared = declarations(lets.toString(), "a16");
+        assertThat(declared.lines()).hasSize(17);
+        assertThat(declared).endsWith("#declare Rtd_a16 = Rtd_a15 + Rtd_a15;\n");
+    }
+
+    @Test
+    void aLetsPlainNumberIsDeclaredAsTheFloatItIs() throws SceneException {
         String lets = "let:(low):(-2)\nlet:(tenth):(0.1)\n";
-        assertThat(pov(lets, "clock * low")).isEqualTo("clock * (-2)");
-        assertThat(pov(lets, "low + clock")).isEqualTo("-2 + clock");
-        assertThat(pov(lets, "tenth * clock")).isEqualTo("0.1 * clock");
+        assertThat(pov(lets, "clock * low")).isEqualTo("clock * Rtd_low");
+        assertThat(declarations(lets, "clock * low + tenth")).isEqualTo("#declare Rtd_low = -2;\n#declare Rtd_tenth = 0.1;\n");
     }
 }
