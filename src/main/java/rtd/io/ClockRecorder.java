@@ -8,7 +8,8 @@ import rtd.scene.Scene;
 
 /**
  * Notes, while a scene is read for {@link SceneFile#withClock}, which numbers of each statement use the clock:
- * the {@link ClockedScene}'s table in the making. {@link SceneContents} tells it what each statement made.
+ * the {@link ClockedScene}'s table in the making. {@link SceneContents} tells it what each statement made; a
+ * statement none of whose numbers uses the clock leaves no trace.
  */
 final class ClockRecorder {
 
@@ -37,8 +38,11 @@ final class ClockRecorder {
 
     /** The statement of {@code v} made something whose numbers the table does not carry. */
     void unwritten(StatementValues v) {
+        if (ClockFields.of(v).isEmpty()) {
+            return;
+        }
         String statement = "the '" + v.statement().keyword() + "' at line " + v.line();
-        if (!ClockFields.of(v).isEmpty() && !unwritten.contains(statement)) { // an area light makes many lights
+        if (!unwritten.contains(statement)) { // an area light makes many lights
             unwritten.add(statement);
         }
     }

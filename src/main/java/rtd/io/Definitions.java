@@ -7,9 +7,12 @@ import rtd.geometry.Pattern;
 import rtd.math.Matrix4;
 
 /**
- * The builders of the two definitions of Part III that objects name: {@code pattern:} (<i>The Ray Tracer
- * Challenge</i>, chapter 10) and {@code transform:} (chapters 4 and 14). A transform's steps apply in the
- * order written, {@code M = T_k ⋯ T_2·T_1}; each step is checked where it is written.
+ * The builders of Part III's definitions: {@code pattern:} (<i>The Ray Tracer Challenge</i>, chapter 10) and
+ * {@code transform:} (chapters 4 and 14), which objects name, and {@code let:} ("Expressions, named values and
+ * the clock"), which expressions on the lines below name. A transform's steps apply in the order written,
+ * {@code M = T_k ⋯ T_2·T_1}; each step is checked where it is written. A {@code let} name is a letter, then
+ * letters, digits or '_'; not a word the expressions use, and not defined twice; a plain number is kept as a
+ * statement would read it, an expression as its tree.
  */
 final class Definitions {
 
@@ -73,5 +76,31 @@ final class Definitions {
             case "rotate_z" -> Matrix4.rotateZ(n[0]);
             default -> Matrix4.translate(n[0], n[1], n[2]);
         };
+    }
+
+    /** {@code let:(name):(expression)}: defines the name of group 0 as the expression of group 1. */
+    static void let(StatementValues v) throws StatementError {
+        String name = v.name(0);
+        if (!ExpressionParser.isLetter((byte) name.charAt(0)) || name.indexOf('-') >= 0) {
+            throw v.errorAtValue(0, 0, "the name '" + name + "' cannot be defined: a name starts with a letter, then "
+                    + "letters, digits or '_'", "such as let:(size):(1)");
+        }
+        if (Names.isReserved(name)) {
+            throw v.errorAtValue(0, 0, "'" + name + "' cannot be defined: it is a word of the expressions",
+                    "choose another name; clock, pi and the functions (sin, cos, sqrt, …) keep their meaning");
+        }
+        Integer earlier = v.expressionNames.lineOf(name);
+        if (earlier != null) {
+            throw v.errorAtValue(0, 0, "a second let of '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier);
+        }
+        v.expressionNames.define(name, v.expression(1), v.line());
+    }
+
+    /** Notes that the {@code let} being read has a mistake, once its name is read: its uses are then left out. */
+    static void brokenLet(StatementValues v) {
+        if (v.hasValue(0)) {
+            v.expressionNames.defineBroken(v.name(0), v.line());
+        }
     }
 }

@@ -102,7 +102,7 @@ final class Grammar {
             Statement.definition("transform", List.of(name("name", "name"), Group.operation("step", "scale s")),
                     List.of(Group.operation("step", "step")), true, Definitions::transform),
             Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
-                    (v, out) -> LetDefinition.define(v, 0)));
+                    (v, out) -> Definitions.let(v)));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {

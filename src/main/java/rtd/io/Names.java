@@ -19,15 +19,15 @@ final class Names {
     private final Map<String, Integer> lines = new HashMap<>();
     private final Map<String, Integer> broken = new HashMap<>();
     private boolean clockUsed;
-    /** Where the reading notes each statement's numbers that use the clock ({@link SceneFile#withClock}), or null. */
+    /** Where the reading notes each statement's numbers that use the clock, for {@link SceneFile#withClock}. */
     final ClockRecorder recorder;
 
-    /** The names of a reading at {@code clock}. */
+    /** The names of a reading at {@code clock}, whose numbers that use the clock nobody asks for. */
     Names(double clock) {
-        this(clock, null);
+        this(clock, new ClockRecorder());
     }
 
-    /** The names of a reading at {@code clock} that tells {@code recorder} (null: nobody) the numbers that use it. */
+    /** The names of a reading at {@code clock} that tells {@code recorder} the numbers that use it. */
     Names(double clock, ClockRecorder recorder) {
         this.clock = clock;
         this.recorder = recorder;

@@ -105,7 +105,7 @@ final class StatementReader {
      */
     private void keepNameOfBrokenDefinition() {
         if (current != null && current.keyword().equals(Grammar.LET)) {
-            LetDefinition.defineBroken(values);
+            Definitions.brokenLet(values);
         } else if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
                 && values.hasValue(0)) {
             contents.brokenDefinitions.add(values.name(0));

@@ -22,7 +22,7 @@ final class StatementValues {
     private int lineStart;
     private int statementStart;
     /** What the object's names mean, once known: its material, pattern and transform. */
-    private ObjectNames names;
+    private DefinedNames.ObjectNames names;
 
     /** The values of the statements read into {@code groups}, one after the other. */
     StatementValues(SourceText source, WrittenGroups groups, Names expressionNames) {
@@ -37,21 +37,21 @@ final class StatementValues {
         this.line = line;
         this.lineStart = lineStart;
         this.statementStart = statementStart;
-        this.names = ObjectNames.NONE;
+        this.names = DefinedNames.ObjectNames.NONE;
         groups.clear();
     }
 
     /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
     void useMaterial(Material material) {
-        this.names = ObjectNames.NONE.with(material);
+        this.names = DefinedNames.ObjectNames.NONE.with(material);
     }
 
     /** Sets what the object's names mean (Part III: a material, a pattern, a transform). */
-    void useNames(ObjectNames names) {
+    void useNames(DefinedNames.ObjectNames names) {
         this.names = names;
     }
 
-    /** The object as its names make it ({@link ObjectNames#dress}): every shape's object passes through here. */
+    /** The object as its names make it ({@link DefinedNames.ObjectNames#dress}): every shape's object passes through here. */
     IGeometry dress(IGeometry object) {
         return names.dress(object);
     }
@@ -151,7 +151,7 @@ final class StatementValues {
         }
         throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than 0, found " + written(i),
                 groups.trees[i] != null ? "an expression here must be greater than 0 at every clock the scene is drawn at"
-                        : value < 0 ? "without its minus sign: " + number(-value)
+                        : value < 0 ? "without its minus sign: " + plain(-value)
                         : "a " + meaning(g) + " of 0 leaves nothing to see; give a number greater than 0, such as 1");
     }
 
@@ -162,8 +162,8 @@ final class StatementValues {
         if (value > low && value < high) {
             return value;
         }
-        throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than " + number(low) + " and less than "
-                + number(high) + " " + unit + ", found " + written(i), help);
+        throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than " + plain(low) + " and less than "
+                + plain(high) + " " + unit + ", found " + written(i), help);
     }
 
     /** The three numbers of group {@code g} as a vector of finite numbers. */
@@ -196,7 +196,7 @@ final class StatementValues {
                 if (value >= minimum) {
                     return value;
                 }
-                throw errorAt(groups.starts[i], "the " + name + " must be at least " + number(minimum) + ", found " + written(i),
+                throw errorAt(groups.starts[i], "the " + name + " must be at least " + plain(minimum) + ", found " + written(i),
                         minimum > 0 ? "an index of refraction is 1 for air, 1.33 for water, 1.5 for glass"
                                 : "0 turns this part of the finish off");
             }
@@ -248,8 +248,8 @@ final class StatementValues {
         return text.append(')').toString();
     }
 
-    /** 180 rather than 180.0 in a message. */
-    private static String number(float value) {
+    /** A number for a message or a hint without a trailing ".0": 180, -0.5. */
+    static String plain(float value) {
         return value == Math.rint(value) ? String.valueOf((long) value) : String.valueOf(value);
     }
 
