@@ -148,7 +148,7 @@ final class DefinedNames {
         Matrix4 transform = null;
         List<String> used = new ArrayList<>();
         String unknownKind = onlyMaterials ? "material" : "material or transform";
-        for (int g = values.statement().groups().size(); g < values.groups().groupCount; g++) {
+        for (int g = values.statement().groups().size(); g < values.groupCount(); g++) {
             String name = values.name(g);
             used.add(name);
             String kind = kinds.get(name);
@@ -172,7 +172,7 @@ final class DefinedNames {
             }
         }
         Pattern pattern = null;
-        int colour = values.groups().named;
+        int colour = values.patternGroup();
         if (colour >= 0) {
             String name = values.name(colour);
             used.add(name);

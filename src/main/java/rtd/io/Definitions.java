@@ -34,13 +34,13 @@ final class Definitions {
                     ? "did you mean '" + nearest + "'?" : "the kinds are 'stripes', 'gradient', 'rings' and 'checker'");
         }
         Pattern pattern = new Pattern(kind, v.colour(2), v.colour(3), Matrix4.IDENTITY);
-        out.pattern(v.name(0), pattern, v.groups().groupCount > 4 ? v.name(4) : null);
+        out.pattern(v.name(0), pattern, v.groupCount() > 4 ? v.name(4) : null);
     }
 
     /** {@code transform:(name):(step)[:(step)…]}: the steps composed in the order written. */
     static void transform(StatementValues v, Statement.Output out) throws StatementError {
         Matrix4 m = Matrix4.IDENTITY;
-        for (int g = 1; g < v.groups().groupCount; g++) {
+        for (int g = 1; g < v.groupCount(); g++) {
             m = m.then(step(v, g));
         }
         out.transform(v.name(0), m);
@@ -49,7 +49,7 @@ final class Definitions {
     /** The step of group {@code g}: its word, then its numbers. */
     private static Matrix4 step(StatementValues v, int g) throws StatementError {
         String word = v.name(g);
-        int count = v.groups().end(g) - v.groups().firsts[g] - 1; // the word, then its numbers
+        int count = v.size(g) - 1; // the word, then its numbers
         if (!OPERATIONS.contains(word)) {
             String nearest = Hints.nearest(word.toLowerCase(Locale.ROOT), OPERATIONS);
             throw v.errorAtValue(g, 0, "unknown step '" + word + "' in a transform", nearest != null

@@ -84,12 +84,12 @@ final class StatementReader {
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (!statement.takesMaterial() || optional == 0 && values.groups().named < 0) {
+        if (!statement.takesMaterial() || optional == 0 && values.patternGroup() < 0) {
             statement.builder().build(values, contents);
             return;
         }
         String name = values.name(groups.size());
-        Material above = optional == 1 && values.groups().named < 0 ? contents.materialAbove(name) : null;
+        Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
         if (above == null) {
             contents.addPending(values.copy()); // its names are resolved when the whole file is read
             return;

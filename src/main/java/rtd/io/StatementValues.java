@@ -1,5 +1,6 @@
 package rtd.io;
 
+import java.util.Arrays;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
@@ -56,9 +57,34 @@ final class StatementValues {
         return names.dress(object);
     }
 
-    /** The groups as read, for what Part III's statements ask of them ({@link WrittenGroups#named}, a step's size). */
-    WrittenGroups groups() {
-        return groups;
+    /** How many groups were read, the optional ones among them. */
+    int groupCount() {
+        return groups.groupCount;
+    }
+
+    /** How many values group {@code g} holds: for a transformation's step, its word and its numbers. */
+    int size(int g) {
+        return groups.end(g) - groups.firsts[g];
+    }
+
+    /** The group that names a pattern in the place of an object's colour, or -1. */
+    int patternGroup() {
+        return groups.named;
+    }
+
+    /** Whether a value of this statement is an expression (Part III). */
+    boolean anyExpression() {
+        return groups.anyExpression;
+    }
+
+    /** The numbers of group {@code g} as read, unchecked, for the table of the numbers that use the clock. */
+    float[] numbers(int g) {
+        return Arrays.copyOfRange(groups.values, groups.firsts[g], groups.end(g));
+    }
+
+    /** The expression of number {@code k} of group {@code g}, or null for a plain number. */
+    Expression tree(int g, int k) {
+        return groups.trees[groups.firsts[g] + k];
     }
 
     /** Value {@code k} of group {@code g}, which must be finite. */
