@@ -31,7 +31,7 @@ final class Definitions {
             List<String> kinds = Arrays.stream(Pattern.Kind.values()).map(Pattern.Kind::word).toList();
             String nearest = Hints.nearest(word, kinds);
             throw v.errorAtValue(1, 0, "unknown kind of pattern '" + word + "'", nearest != null
-                    ? "did you mean '" + nearest + "'?" : "the kinds are 'stripes', 'gradient', 'rings' and 'checker'");
+                    ? "did you mean '" + nearest + "'?" : "the kinds are " + Hints.quoted(kinds, "and"));
         }
         Pattern pattern = new Pattern(kind, v.colour(2), v.colour(3), Matrix4.IDENTITY);
         out.pattern(v.name(0), pattern, v.groupCount() > 4 ? v.name(4) : null);
@@ -53,7 +53,7 @@ final class Definitions {
         if (!OPERATIONS.contains(word)) {
             String nearest = Hints.nearest(word.toLowerCase(Locale.ROOT), OPERATIONS);
             throw v.errorAtValue(g, 0, "unknown step '" + word + "' in a transform", nearest != null
-                    ? "did you mean '" + nearest + "'?" : "the steps are 'scale', 'rotate_x', 'rotate_y', 'rotate_z' and 'translate'");
+                    ? "did you mean '" + nearest + "'?" : "the steps are " + Hints.quoted(OPERATIONS, "and"));
         }
         boolean scale = word.equals("scale");
         int wanted = word.startsWith("rotate") ? 1 : 3;

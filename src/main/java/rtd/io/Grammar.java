@@ -9,7 +9,6 @@ import static rtd.io.Group.view;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.List;
-import java.util.stream.Collectors;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
@@ -132,9 +131,7 @@ final class Grammar {
 
     /** All keywords, for messages: "'ambient', 'orthographic_camera', … or 'material'". */
     static String keywordList() {
-        List<String> quoted = STATEMENTS.stream().map(s -> "'" + s.keyword() + "'").toList();
-        return quoted.subList(0, quoted.size() - 1).stream().collect(Collectors.joining(", "))
-                + " or " + quoted.get(quoted.size() - 1);
+        return Hints.quoted(STATEMENTS.stream().map(Statement::keyword).toList(), "or");
     }
 
     /** The orthographic camera, looking along its direction or at its point. */

@@ -1,7 +1,5 @@
 package rtd.io;
 
-import java.util.List;
-
 /**
  * Reads the groups {@code :(…)} of a statement into {@link WrittenGroups}, as its {@link Group}s say, at the
  * {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
@@ -217,18 +215,12 @@ final class GroupReader {
             String nearest = Hints.nearest(word, group.keys());
             throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
                     ? "did you mean '" + nearest + "'?"
-                    : "the keys are " + quotedList(group.keys()));
+                    : "the keys are " + Hints.quoted(group.keys(), "and"));
         }
         if (written.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
         return key;
-    }
-
-    /** "'a', 'b' and 'c'". */
-    private static String quotedList(List<String> words) {
-        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
-        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
     }
 
     /**

@@ -176,6 +176,12 @@ final class Hints {
         }
     }
 
+    /** The words a message lists, quoted: "'a', 'b' and 'c'" for {@code last} = "and". */
+    static String quoted(List<String> words, String last) {
+        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
+        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " " + last + " " + quoted.get(quoted.size() - 1);
+    }
+
     /**
      * The candidate nearest to {@code word} (the first in alphabetical order of equally near
      * ones), or null if none is near enough: within two edits, or a third of the candidate's
