@@ -20,15 +20,15 @@ final class Names {
     private final Map<String, Integer> broken = new HashMap<>();
     private boolean clockUsed;
     /** Where the reading notes each statement's numbers that use the clock, for {@link SceneFile#withClock}. */
-    final ClockRecorder recorder;
+    final ClockedScene.Recorder recorder;
 
     /** The names of a reading at {@code clock}, whose numbers that use the clock nobody asks for. */
     Names(double clock) {
-        this(clock, new ClockRecorder());
+        this(clock, new ClockedScene.Recorder());
     }
 
     /** The names of a reading at {@code clock} that tells {@code recorder} the numbers that use it. */
-    Names(double clock, ClockRecorder recorder) {
+    Names(double clock, ClockedScene.Recorder recorder) {
         this.clock = clock;
         this.recorder = recorder;
     }

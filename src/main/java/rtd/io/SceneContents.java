@@ -150,7 +150,7 @@ final class SceneContents implements Statement.Output {
     }
 
     /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */
-    private ClockRecorder recorder() {
+    private ClockedScene.Recorder recorder() {
         return values.expressionNames.recorder;
     }
 

@@ -76,7 +76,7 @@ public final class SceneFile {
      * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
      */
     public ClockedScene withClock(double clock) throws SceneException {
-        ClockRecorder recorder = new ClockRecorder();
+        ClockedScene.Recorder recorder = new ClockedScene.Recorder();
         return recorder.scene(parse(new Names(clock, recorder), null));
     }
 
