@@ -237,10 +237,10 @@ final class StatementValues {
             return value;
         }
         String written = written(i);
-        boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
+        boolean overflow = Hints.tooLarge(written);
         throw errorAt(groups.starts[i], "the " + name + " must be a finite number, found " + written
                 + (overflow ? ", which is too large for a float" : ""),
-                overflow ? "a float holds numbers up to about 3.4e38"
+                overflow ? Hints.FLOAT_RANGE
                         : "NaN (not a number) and Infinity are not numbers a scene can use; give a finite number");
     }
 
