@@ -38,7 +38,7 @@ final class GroupReader {
         written.openGroup(groupStart);
         cursor.skipBlanks();
         if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
-            throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + contents(group));
+            throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
         }
         if (group.orName() && atLoneName()) {
             readName();
@@ -80,7 +80,7 @@ final class GroupReader {
                     + "' looks at: it takes 3 numbers (at x|y|z), found " + found, "write the point as (at x|y|z)");
         }
         if (found < group.size()) {
-            throw groupError(groupStart, "too few numbers in " + group.of(statement) + ": it takes " + contents(group)
+            throw groupError(groupStart, "too few numbers in " + group.of(statement) + ": it takes " + group.contents()
                     + ", found " + found);
         }
     }
@@ -228,7 +228,7 @@ final class GroupReader {
      * out.
      */
     private StatementError tooManyNumbers(int groupStart) {
-        String message = "too many numbers in " + group.of(statement) + ": it takes " + contents(group);
+        String message = "too many numbers in " + group.of(statement) + ": it takes " + group.contents();
         int g = statement.groups().indexOf(group);
         if (g < 0 || groupsOnTheLineFrom(groupStart) >= statement.groups().size() - g) {
             return groupError(numbers.tokenStart, message);
@@ -257,17 +257,5 @@ final class GroupReader {
     /** An error about the group, with the statement's usage as the help. */
     private StatementError groupError(int offset, String message) {
         return cursor.error(offset, message, "write it as " + statement.usage());
-    }
-
-    /** What a group holds, for messages: "3 numbers (x|y|z)", "a name". */
-    private static String contents(Group group) {
-        return switch (group.kind()) {
-            case NUMBERS -> group.size() == 1 ? "1 number (" + group.shape() + ")"
-                    : group.size() + " numbers (" + group.shape() + ")";
-            case NAME -> "a name";
-            case PATH -> "a file path";
-            case PROPERTIES -> "key=value pairs";
-            case OPERATION -> "an operation such as (" + group.shape() + ")";
-        };
     }
 }
