@@ -151,11 +151,6 @@ final class StatementValues {
         return errorAt(groups.starts[groups.firsts[g] + k], message, help);
     }
 
-    /** A warning at number {@code k} of group {@code g}. */
-    SceneError warningAtValue(int g, int k, String message, String help) {
-        return errorAtValue(g, k, message, help).place();
-    }
-
     /** Where value {@code k} of group {@code g} stands, as an error with no message yet. */
     SceneError placeOfValue(int g, int k) {
         return errorAtValue(g, k, "", null).place();
