@@ -99,9 +99,7 @@ final class GroupReader {
         if (p >= bytes.length || !Character.isLetter(bytes[p])) {
             return false;
         }
-        while (p < bytes.length && (TextBytes.isWordByte(bytes[p]) || bytes[p] == '-')) {
-            p++;
-        }
+        p = afterName(p);
         while (p < bytes.length && TextBytes.isBlank(bytes[p])) {
             p++;
         }
@@ -132,10 +130,7 @@ final class GroupReader {
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
     private void readName() throws StatementError {
         int start = cursor.pos;
-        byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && (TextBytes.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
-            cursor.pos++;
-        }
+        cursor.pos = afterName(start);
         if (cursor.pos == start) {
             throw expected("a name in ");
         }
@@ -148,6 +143,15 @@ final class GroupReader {
                     + cursor.describe(cursor.pos), Hints.forName(cursor, group, start));
         }
         cursor.pos++;
+    }
+
+    /** The offset after the name (letters, digits, '_' and '-') that starts at {@code from}; {@code from} if none does. */
+    private int afterName(int from) {
+        int p = from;
+        while (p < cursor.bytes.length && (TextBytes.isWordByte(cursor.bytes[p]) || cursor.bytes[p] == '-')) {
+            p++;
+        }
+        return p;
     }
 
     /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
@@ -240,7 +244,7 @@ final class GroupReader {
     /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
     private int groupsOnTheLineFrom(int offset) {
         int groups = 0;
-        for (int i = offset; i < cursor.bytes.length && cursor.bytes[i] != '\n' && cursor.bytes[i] != '\r'; i++) {
+        for (int i = offset; i < cursor.bytes.length && !TextBytes.isLineBreak(cursor.bytes[i]); i++) {
             if (cursor.bytes[i] == '/' && i + 1 < cursor.bytes.length && cursor.bytes[i + 1] == '/') {
                 break;
             }

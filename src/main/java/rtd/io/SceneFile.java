@@ -82,10 +82,8 @@ public final class SceneFile {
 
     private Scene parse(Names names, List<SceneError> warnings) throws SceneException {
         try (SourceText source = new SourceText(name, bytes, folder, meshes)) {
-            Scene scene = SceneParser.parse(source, names, warnings);
-            usesClock |= names.clockUsed();
-            return scene;
-        } finally {
+            return SceneParser.parse(source, names, warnings);
+        } finally { // a failed parse tells too: a value may break its rule at some clocks only
             usesClock |= names.clockUsed();
         }
     }
