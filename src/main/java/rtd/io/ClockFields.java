@@ -1,7 +1,6 @@
 package rtd.io;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -30,20 +29,18 @@ public final class ClockFields {
 
     /** The numbers of {@code v}'s statement that use the clock; {@link #NONE} if none does. */
     static ClockFields of(StatementValues v) {
-        WrittenGroups written = v.groups();
-        if (!written.anyExpression) {
+        if (!v.anyExpression()) {
             return NONE;
         }
         Map<String, Expression[]> found = new HashMap<>();
         Map<String, float[]> numbers = new HashMap<>();
-        for (int g = 0; g < written.groupCount; g++) {
-            int first = written.firsts[g];
-            int size = written.end(g) - first;
-            numbers.put(v.meaning(g), Arrays.copyOfRange(written.values, first, first + size));
-            for (int i = first; i < first + size; i++) {
-                Expression tree = written.trees[i];
+        for (int g = 0; g < v.groupCount(); g++) {
+            int size = v.size(g);
+            numbers.put(v.meaning(g), v.numbers(g));
+            for (int k = 0; k < size; k++) {
+                Expression tree = v.tree(g, k);
                 if (tree != null && tree.usesClock()) {
-                    found.computeIfAbsent(v.meaning(g), meaning -> new Expression[size])[i - first] = tree;
+                    found.computeIfAbsent(v.meaning(g), meaning -> new Expression[size])[k] = tree;
                 }
             }
         }

@@ -1,5 +1,6 @@
 package rtd.io;
 
+import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.List;
@@ -69,5 +70,52 @@ public final class ClockedScene {
     /** The statements that use the clock where the table does not carry it, such as "the 'material' at line 4". */
     public List<String> unwritten() {
         return unwritten;
+    }
+
+    /**
+     * This table in the making: notes, while a scene is read, which numbers of each statement use the clock.
+     * {@link SceneContents} tells it what each statement made; a statement none of whose numbers uses the
+     * clock leaves no trace.
+     */
+    static final class Recorder {
+
+        private ClockFields ambient = ClockFields.NONE;
+        private ClockFields camera = ClockFields.NONE;
+        private final Map<Object, ClockFields> parts = new IdentityHashMap<>();
+        private final List<String> unwritten = new ArrayList<>();
+
+        /** The statement of {@code v} made {@code part}, an object or a point light. */
+        void part(Object part, StatementValues v) {
+            ClockFields fields = ClockFields.of(v);
+            if (!fields.isEmpty()) {
+                parts.put(part, fields);
+            }
+        }
+
+        /** The statement of {@code v} is the scene's {@code ambient} (a second is a mistake: that scene is never made). */
+        void ambient(StatementValues v) {
+            ambient = ClockFields.of(v);
+        }
+
+        /** The statement of {@code v} made the scene's camera (a second is a mistake: that scene is never made). */
+        void camera(StatementValues v) {
+            camera = ClockFields.of(v);
+        }
+
+        /** The statement of {@code v} made something whose numbers the table does not carry. */
+        void unwritten(StatementValues v) {
+            if (ClockFields.of(v).isEmpty()) {
+                return;
+            }
+            String statement = "the '" + v.statement().keyword() + "' at line " + v.line();
+            if (!unwritten.contains(statement)) { // an area light makes many lights
+                unwritten.add(statement);
+            }
+        }
+
+        /** The table for {@code scene}, the scene that was read. */
+        ClockedScene scene(Scene scene) {
+            return new ClockedScene(scene, ambient, camera, parts, unwritten);
+        }
     }
 }

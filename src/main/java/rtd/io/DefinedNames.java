@@ -7,8 +7,12 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
+import rtd.geometry.Patterned;
+import rtd.geometry.Transformed;
+import rtd.image.Color;
 import rtd.math.Matrix4;
 
 /**
@@ -17,6 +21,40 @@ import rtd.math.Matrix4;
  * ({@link #of}) and a pattern's transform, and words each mistake at the name that makes it.
  */
 final class DefinedNames {
+
+    /**
+     * What an object's names mean (Part III, "Transformations" and "Patterns"): the material and transform its
+     * last groups name, the pattern its colour group names.
+     *
+     * @param material  the finish ({@link Material#DEFAULT} if none is named)
+     * @param pattern   the pattern, or null
+     * @param transform the transformation, or null
+     * @param names     the names used, for the warnings about materials that no object names
+     */
+    record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<String> names) {
+
+        /** An object that names nothing: the default finish, its own colour, not transformed. */
+        static final ObjectNames NONE = new ObjectNames(Material.DEFAULT, null, null, List.of());
+
+        /** These names with {@code material} as the finish. */
+        ObjectNames with(Material material) {
+            return new ObjectNames(material, pattern, transform, names);
+        }
+
+        /**
+         * The object as its names make it: patterned if its colour group names a pattern, then transformed if
+         * it names a transform, so that the pattern lies in the object's own space and moves with it.
+         */
+        IGeometry dress(IGeometry object) {
+            IGeometry painted = pattern == null ? object : new Patterned(object, pattern);
+            return transform == null ? painted : new Transformed(painted, transform);
+        }
+
+        /** The colour a builder sees for a colour group that names the pattern: its first colour (black if unknown). */
+        Color colour() {
+            return pattern == null ? Color.BLACK : pattern.a();
+        }
+    }
 
     /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}. */
     private final Map<String, Object> defined = new HashMap<>();
@@ -110,7 +148,7 @@ final class DefinedNames {
         Matrix4 transform = null;
         List<String> used = new ArrayList<>();
         String unknownKind = onlyMaterials ? "material" : "material or transform";
-        for (int g = values.statement().groups().size(); g < values.groups().groupCount; g++) {
+        for (int g = values.statement().groups().size(); g < values.groupCount(); g++) {
             String name = values.name(g);
             used.add(name);
             String kind = kinds.get(name);
@@ -134,7 +172,7 @@ final class DefinedNames {
             }
         }
         Pattern pattern = null;
-        int colour = values.groups().named;
+        int colour = values.patternGroup();
         if (colour >= 0) {
             String name = values.name(colour);
             used.add(name);

@@ -3,9 +3,10 @@ package rtd.io;
 import rtd.math.Vector3f;
 
 /**
- * The checks of a group that gives a direction: a camera's view or a plane's normal, written as a direction
- * or, for a camera, {@code (at x|y|z)}, a point to look at (Part III, "A camera that looks at a point").
- * Either must make a direction float can compute with.
+ * The rule of every group that sets a direction: a camera's view or a plane's normal, written as a direction
+ * or, for a camera, {@code (at x|y|z)}, a point to look at (Part III, "A camera that looks at a point"); and
+ * the axis of a solid between two end points (Part III, "More shapes"). Each must be a direction that is not
+ * zero and whose squared length float can hold.
  */
 final class Directions {
 
@@ -15,11 +16,11 @@ final class Directions {
     /** The three numbers of group {@code g} as a direction: finite, not zero, not too short or long for float. */
     static Vector3f direction(StatementValues v, int g, String zeroHelp) throws StatementError {
         Vector3f direction = v.vector(g);
-        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
+        if (isZero(direction)) {
             throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " must not be zero, found " + v.groupText(g), zeroHelp);
         }
         float squaredLength = direction.dot(direction);
-        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
+        if (!computable(squaredLength)) {
             throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " " + v.groupText(g) + " is too "
                     + (Float.isInfinite(squaredLength) ? "long" : "short") + " to compute with in float",
                     "only its direction matters: scale it to a length near 1");
@@ -35,12 +36,13 @@ final class Directions {
         Vector3f target = v.vector(g);
         Vector3f direction = target.subtract(from);
         float squaredLength = direction.dot(direction);
-        if (direction.x() == 0 && direction.y() == 0 && direction.z() == 0) {
+        if (isZero(direction)) {
             throw v.errorAtValue(g, 0, "the camera cannot look at its own position " + v.groupText(g),
-                    "give a point in front of the camera: (at " + plain(from.x()) + "|" + plain(from.y()) + "|"
-                            + plain(from.z() - 1) + ") looks along -z");
+                    "give a point in front of the camera: (at " + StatementValues.plain(from.x()) + "|"
+                            + StatementValues.plain(from.y()) + "|" + StatementValues.plain(from.z() - 1)
+                            + ") looks along -z");
         }
-        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
+        if (!computable(squaredLength)) {
             String tooWhat = Float.isInfinite(squaredLength) ? "far from" : "near";
             throw v.errorAtValue(g, 0, "the point " + v.groupText(g) + " is too " + tooWhat
                     + " the camera's position to compute the view direction in float",
@@ -49,8 +51,27 @@ final class Directions {
         return target;
     }
 
-    /** A number for a hint, without a trailing ".0": 3, -0.5. */
-    private static String plain(float value) {
-        return value == Math.rint(value) ? String.valueOf((long) value) : String.valueOf(value);
+    /** The axis of a solid from {@code first} to {@code second}, whose group {@code g} is the second end point. */
+    static void axis(StatementValues v, Vector3f first, Vector3f second, int g, String shape, String help)
+            throws StatementError {
+        Vector3f axis = second.subtract(first);
+        float squaredLength = axis.dot(axis);
+        if (isZero(axis)) {
+            throw v.errorAtGroup(g, "the " + shape + "'s two end points are the same point", help);
+        }
+        if (!computable(squaredLength)) {
+            throw v.errorAtGroup(g, "the " + shape + "'s end points are too " + (Float.isInfinite(squaredLength)
+                    ? "far apart" : "close together") + " to compute with in float",
+                    "give end points a distance of about 1e-15 to 1e15 apart");
+        }
+    }
+
+    private static boolean isZero(Vector3f d) {
+        return d.x() == 0 && d.y() == 0 && d.z() == 0;
+    }
+
+    /** Whether float can normalise a vector of this squared length: neither below the normal range nor infinite. */
+    private static boolean computable(float squaredLength) {
+        return squaredLength >= Float.MIN_NORMAL && !Float.isInfinite(squaredLength);
     }
 }

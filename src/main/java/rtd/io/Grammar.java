@@ -9,7 +9,6 @@ import static rtd.io.Group.view;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.List;
-import java.util.stream.Collectors;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
@@ -102,7 +101,7 @@ final class Grammar {
             Statement.definition("transform", List.of(name("name", "name"), Group.operation("step", "scale s")),
                     List.of(Group.operation("step", "step")), true, Definitions::transform),
             Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
-                    (v, out) -> LetDefinition.define(v, 0)));
+                    (v, out) -> Definitions.let(v)));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {
@@ -132,9 +131,7 @@ final class Grammar {
 
     /** All keywords, for messages: "'ambient', 'orthographic_camera', … or 'material'". */
     static String keywordList() {
-        List<String> quoted = STATEMENTS.stream().map(s -> "'" + s.keyword() + "'").toList();
-        return quoted.subList(0, quoted.size() - 1).stream().collect(Collectors.joining(", "))
-                + " or " + quoted.get(quoted.size() - 1);
+        return Hints.quoted(STATEMENTS.stream().map(Statement::keyword).toList(), "or");
     }
 
     /** The orthographic camera, looking along its direction or at its point. */
@@ -163,9 +160,9 @@ final class Grammar {
     private static Sphere sphere(StatementValues v, Statement.Output out) throws StatementError {
         Sphere sphere = new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material());
         if (sphere.radius() >= FLOOR_RADIUS) {
-            out.warningIfLit(v.warningAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
+            out.warningIfLit(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
                     + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
-                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0"));
+                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0").place());
         }
         return sphere;
     }

@@ -65,6 +65,17 @@ record Group(String meaning, Kind kind, String shape, int size, List<String> key
         return meaning.equals("colour") && kind == Kind.NUMBERS ? new Group(meaning, kind, shape, size, keys, orAt, true) : this;
     }
 
+    /** What the group holds, for messages: "3 numbers (x|y|z)", "a name". */
+    String contents() {
+        return switch (kind) {
+            case NUMBERS -> size == 1 ? "1 number (" + shape + ")" : size + " numbers (" + shape + ")";
+            case NAME -> "a name";
+            case PATH -> "a file path";
+            case PROPERTIES -> "key=value pairs";
+            case OPERATION -> "an operation such as (" + shape + ")";
+        };
+    }
+
     /** "the centre of 'sphere'", for messages. */
     String of(Statement statement) {
         return "the " + meaning + " of '" + statement.keyword() + "'";

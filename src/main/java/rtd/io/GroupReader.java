@@ -1,7 +1,5 @@
 package rtd.io;
 
-import java.util.List;
-
 /**
  * Reads the groups {@code :(…)} of a statement into {@link WrittenGroups}, as its {@link Group}s say, at the
  * {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
@@ -40,7 +38,7 @@ final class GroupReader {
         written.openGroup(groupStart);
         cursor.skipBlanks();
         if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
-            throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + contents(group));
+            throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
         }
         if (group.orName() && atLoneName()) {
             readName();
@@ -82,7 +80,7 @@ final class GroupReader {
                     + "' looks at: it takes 3 numbers (at x|y|z), found " + found, "write the point as (at x|y|z)");
         }
         if (found < group.size()) {
-            throw groupError(groupStart, "too few numbers in " + group.of(statement) + ": it takes " + contents(group)
+            throw groupError(groupStart, "too few numbers in " + group.of(statement) + ": it takes " + group.contents()
                     + ", found " + found);
         }
     }
@@ -101,9 +99,7 @@ final class GroupReader {
         if (p >= bytes.length || !Character.isLetter(bytes[p])) {
             return false;
         }
-        while (p < bytes.length && (TextBytes.isWordByte(bytes[p]) || bytes[p] == '-')) {
-            p++;
-        }
+        p = afterName(p);
         while (p < bytes.length && TextBytes.isBlank(bytes[p])) {
             p++;
         }
@@ -134,10 +130,7 @@ final class GroupReader {
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
     private void readName() throws StatementError {
         int start = cursor.pos;
-        byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && (TextBytes.isWordByte(bytes[cursor.pos]) || bytes[cursor.pos] == '-')) {
-            cursor.pos++;
-        }
+        cursor.pos = afterName(start);
         if (cursor.pos == start) {
             throw expected("a name in ");
         }
@@ -150,6 +143,15 @@ final class GroupReader {
                     + cursor.describe(cursor.pos), Hints.forName(cursor, group, start));
         }
         cursor.pos++;
+    }
+
+    /** The offset after the name (letters, digits, '_' and '-') that starts at {@code from}; {@code from} if none does. */
+    private int afterName(int from) {
+        int p = from;
+        while (p < cursor.bytes.length && (TextBytes.isWordByte(cursor.bytes[p]) || cursor.bytes[p] == '-')) {
+            p++;
+        }
+        return p;
     }
 
     /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
@@ -217,7 +219,7 @@ final class GroupReader {
             String nearest = Hints.nearest(word, group.keys());
             throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
                     ? "did you mean '" + nearest + "'?"
-                    : "the keys are " + quotedList(group.keys()));
+                    : "the keys are " + Hints.quoted(group.keys(), "and"));
         }
         if (written.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
@@ -225,18 +227,12 @@ final class GroupReader {
         return key;
     }
 
-    /** "'a', 'b' and 'c'". */
-    private static String quotedList(List<String> words) {
-        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
-        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
-    }
-
     /**
      * Too many numbers in a group; on a line with too few groups the hint says this group was likely left
      * out.
      */
     private StatementError tooManyNumbers(int groupStart) {
-        String message = "too many numbers in " + group.of(statement) + ": it takes " + contents(group);
+        String message = "too many numbers in " + group.of(statement) + ": it takes " + group.contents();
         int g = statement.groups().indexOf(group);
         if (g < 0 || groupsOnTheLineFrom(groupStart) >= statement.groups().size() - g) {
             return groupError(numbers.tokenStart, message);
@@ -248,7 +244,7 @@ final class GroupReader {
     /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
     private int groupsOnTheLineFrom(int offset) {
         int groups = 0;
-        for (int i = offset; i < cursor.bytes.length && cursor.bytes[i] != '\n' && cursor.bytes[i] != '\r'; i++) {
+        for (int i = offset; i < cursor.bytes.length && !TextBytes.isLineBreak(cursor.bytes[i]); i++) {
             if (cursor.bytes[i] == '/' && i + 1 < cursor.bytes.length && cursor.bytes[i + 1] == '/') {
                 break;
             }
@@ -265,17 +261,5 @@ final class GroupReader {
     /** An error about the group, with the statement's usage as the help. */
     private StatementError groupError(int offset, String message) {
         return cursor.error(offset, message, "write it as " + statement.usage());
-    }
-
-    /** What a group holds, for messages: "3 numbers (x|y|z)", "a name". */
-    private static String contents(Group group) {
-        return switch (group.kind()) {
-            case NUMBERS -> group.size() == 1 ? "1 number (" + group.shape() + ")"
-                    : group.size() + " numbers (" + group.shape() + ")";
-            case NAME -> "a name";
-            case PATH -> "a file path";
-            case PROPERTIES -> "key=value pairs";
-            case OPERATION -> "an operation such as (" + group.shape() + ")";
-        };
     }
 }

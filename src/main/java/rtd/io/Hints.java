@@ -21,6 +21,8 @@ final class Hints {
     static final String NUMBER_FORMS = "numbers are written like 3 or -0.5 or .5 or 1. or 2e3";
     static final String LINE_NUMBERS = "it looks like the lines are numbered, as in the paper's listing: "
             + "remove the numbers at the start of each line";
+    /** The help for a number too large for a float ({@link #tooLarge}). */
+    static final String FLOAT_RANGE = "a float holds numbers up to about 3.4e38";
     static final String SEMICOLON = "one statement per line, with nothing after it: remove the ';'";
 
     /** One number, with a comma where the point should be: 2,5 or -0,5 or 1,5e3. */
@@ -174,6 +176,17 @@ final class Hints {
         for (String word : words.split(" ")) {
             SYNONYMS.put(word, List.of(keywords));
         }
+    }
+
+    /** Whether a number written as {@code written} that read as no finite float is one too large for a float, not NaN or Infinity. */
+    static boolean tooLarge(String written) {
+        return !written.contains("NaN") && !written.contains("Infinity");
+    }
+
+    /** The words a message lists, quoted: "'a', 'b' and 'c'" for {@code last} = "and". */
+    static String quoted(List<String> words, String last) {
+        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
+        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " " + last + " " + quoted.get(quoted.size() - 1);
     }
 
     /**

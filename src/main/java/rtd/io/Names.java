@@ -19,16 +19,16 @@ final class Names {
     private final Map<String, Integer> lines = new HashMap<>();
     private final Map<String, Integer> broken = new HashMap<>();
     private boolean clockUsed;
-    /** Where the reading notes each statement's numbers that use the clock ({@link SceneFile#withClock}), or null. */
-    final ClockRecorder recorder;
+    /** Where the reading notes each statement's numbers that use the clock, for {@link SceneFile#withClock}. */
+    final ClockedScene.Recorder recorder;
 
-    /** The names of a reading at {@code clock}. */
+    /** The names of a reading at {@code clock}, whose numbers that use the clock nobody asks for. */
     Names(double clock) {
-        this(clock, null);
+        this(clock, new ClockedScene.Recorder());
     }
 
-    /** The names of a reading at {@code clock} that tells {@code recorder} (null: nobody) the numbers that use it. */
-    Names(double clock, ClockRecorder recorder) {
+    /** The names of a reading at {@code clock} that tells {@code recorder} the numbers that use it. */
+    Names(double clock, ClockedScene.Recorder recorder) {
         this.clock = clock;
         this.recorder = recorder;
     }

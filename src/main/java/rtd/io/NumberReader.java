@@ -103,7 +103,7 @@ final class NumberReader {
         float value = (float) exact;
         if (Float.isInfinite(value)) {
             throw cursor.error(tokenStart, "'" + text + "' is too large for a float" + at,
-                    "a float holds numbers up to about 3.4e38");
+                    Hints.FLOAT_RANGE);
         }
         tree = read;
         return value;

@@ -132,10 +132,10 @@ final class ObjReader {
             }
             if (!Float.isFinite(value)) {
                 String written = source.text(start, pos);
-                boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
+                boolean overflow = Hints.tooLarge(written);
                 throw error(start, "the " + "xyz".charAt(k) + " of the " + what + " must be a finite number, found " + written
                         + (overflow ? ", which is too large for a float" : ""),
-                        overflow ? "a float holds numbers up to about 3.4e38" : "a " + what + " is written " + keyword + " 0.5 -1 2");
+                        overflow ? Hints.FLOAT_RANGE : "a " + what + " is written " + keyword + " 0.5 -1 2");
             }
             into[at + k] = value;
         }

@@ -96,27 +96,22 @@ final class SceneContents implements Statement.Output {
     @Override
     public void ambient(Color colour) {
         ambients.add(new Located<>(colour, values.placeOfStatement()));
-        if (recorder() != null) {
-            recorder().ambient(values);
-        }
+        recorder().ambient(values);
     }
 
     @Override
     public void camera(ICamera camera) {
         cameras.add(new Located<>(camera, values.placeOfStatement()));
-        if (recorder() != null) {
-            recorder().camera(values);
-        }
+        recorder().camera(values);
     }
 
     @Override
     public void light(Light light) {
         lights.add(light);
-        ClockRecorder recorder = recorder();
-        if (recorder != null && light.area() == null) {
-            recorder.part(light, values);
-        } else if (recorder != null) {
-            recorder.unwritten(values); // an area light's samples: the export writes them frame by frame
+        if (light.area() == null) {
+            recorder().part(light, values);
+        } else {
+            recorder().unwritten(values); // an area light's samples: the export writes them frame by frame
         }
     }
 
@@ -124,9 +119,7 @@ final class SceneContents implements Statement.Output {
     public void object(IGeometry object) {
         IGeometry dressed = values.dress(object);
         into.add(dressed);
-        if (recorder() != null) {
-            recorder().part(dressed, values);
-        }
+        recorder().part(dressed, values);
     }
 
     @Override
@@ -134,38 +127,30 @@ final class SceneContents implements Statement.Output {
         for (IGeometry object : more) {
             into.add(values.dress(object));
         }
-        if (recorder() != null) {
-            recorder().unwritten(values);
-        }
+        recorder().unwritten(values);
     }
 
     @Override
     public void material(String name, Material material) {
         materials.add(new Located<>(new Named(name, material), values.placeOfValue(0, 0)));
-        if (recorder() != null) {
-            recorder().unwritten(values);
-        }
+        recorder().unwritten(values);
     }
 
     @Override
     public void pattern(String name, Pattern pattern, String transform) {
         SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
         patterns.add(new Located<>(new NamedPattern(name, pattern, transform, transformPlace), values.placeOfValue(0, 0)));
-        if (recorder() != null) {
-            recorder().unwritten(values);
-        }
+        recorder().unwritten(values);
     }
 
     @Override
     public void transform(String name, Matrix4 transform) {
         transforms.add(new Located<>(new NamedTransform(name, transform), values.placeOfValue(0, 0)));
-        if (recorder() != null) {
-            recorder().unwritten(values);
-        }
+        recorder().unwritten(values);
     }
 
-    /** Where the numbers that use the clock are noted, when the scene is read for {@link SceneFile#withClock}; else null. */
-    private ClockRecorder recorder() {
+    /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */
+    private ClockedScene.Recorder recorder() {
         return values.expressionNames.recorder;
     }
 

@@ -76,16 +76,14 @@ public final class SceneFile {
      * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
      */
     public ClockedScene withClock(double clock) throws SceneException {
-        ClockRecorder recorder = new ClockRecorder();
+        ClockedScene.Recorder recorder = new ClockedScene.Recorder();
         return recorder.scene(parse(new Names(clock, recorder), null));
     }
 
     private Scene parse(Names names, List<SceneError> warnings) throws SceneException {
         try (SourceText source = new SourceText(name, bytes, folder, meshes)) {
-            Scene scene = SceneParser.parse(source, names, warnings);
-            usesClock |= names.clockUsed();
-            return scene;
-        } finally {
+            return SceneParser.parse(source, names, warnings);
+        } finally { // a failed parse tells too: a value may break its rule at some clocks only
             usesClock |= names.clockUsed();
         }
     }

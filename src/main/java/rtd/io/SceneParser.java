@@ -134,7 +134,7 @@ final class SceneParser {
     private static void build(SceneContents contents, StatementValues values, DefinedNames names, List<IGeometry> objects,
             Set<String> named, List<SceneContents.Found> errors) {
         int before = errors.size();
-        ObjectNames resolved = names.of(values, errors);
+        DefinedNames.ObjectNames resolved = names.of(values, errors);
         named.addAll(resolved.names());
         values.useNames(resolved);
         try {

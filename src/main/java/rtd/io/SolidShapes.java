@@ -20,7 +20,7 @@ final class SolidShapes {
         Vector3f first = v.vector(0);
         Vector3f second = v.vector(1);
         float radius = v.positive(2);
-        ends(v, first, second, 1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        Directions.axis(v, first, second, 1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
         return new Cylinder(first, second, radius, v.colour(3), v.material());
     }
 
@@ -34,7 +34,7 @@ final class SolidShapes {
             throw v.errorAtValue(3, 0, "the cone's radii are both 0, so it has no volume",
                     "give one end a radius greater than 0: cone:(0|0|0):(1):(0|2|0):(0) is a cone with its apex up");
         }
-        ends(v, first, second, 2, "cone", "a cone runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        Directions.axis(v, first, second, 2, "cone", "a cone runs from one end point to another, such as (0|0|0) to (0|2|0)");
         return new Cone(first, firstRadius, second, secondRadius, v.colour(4), v.material());
     }
 
@@ -59,20 +59,5 @@ final class SolidShapes {
         }
         throw v.errorAtValue(g, k, "the " + name + " must be a whole number from 1 to " + AreaLight.MOST_SAMPLES
                 + ", found " + v.written(g, k), "more samples make a softer shadow and cost more shadow rays; 4|4 is a good start");
-    }
-
-    /** The end points must differ, by a distance whose square float can hold. */
-    private static void ends(StatementValues v, Vector3f first, Vector3f second, int g, String shape, String help)
-            throws StatementError {
-        Vector3f axis = second.subtract(first);
-        float squaredLength = axis.dot(axis);
-        if (axis.x() == 0 && axis.y() == 0 && axis.z() == 0) {
-            throw v.errorAtGroup(g, "the " + shape + "'s two end points are the same point", help);
-        }
-        if (!(squaredLength >= Float.MIN_NORMAL) || Float.isInfinite(squaredLength)) {
-            throw v.errorAtGroup(g, "the " + shape + "'s end points are too " + (Float.isInfinite(squaredLength)
-                    ? "far apart" : "close together") + " to compute with in float",
-                    "give end points a distance of about 1e-15 to 1e15 apart");
-        }
     }
 }

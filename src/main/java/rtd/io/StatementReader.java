@@ -84,12 +84,12 @@ final class StatementReader {
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (!statement.takesMaterial() || optional == 0 && values.groups().named < 0) {
+        if (!statement.takesMaterial() || optional == 0 && values.patternGroup() < 0) {
             statement.builder().build(values, contents);
             return;
         }
         String name = values.name(groups.size());
-        Material above = optional == 1 && values.groups().named < 0 ? contents.materialAbove(name) : null;
+        Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
         if (above == null) {
             contents.addPending(values.copy()); // its names are resolved when the whole file is read
             return;
@@ -105,7 +105,7 @@ final class StatementReader {
      */
     private void keepNameOfBrokenDefinition() {
         if (current != null && current.keyword().equals(Grammar.LET)) {
-            LetDefinition.defineBroken(values);
+            Definitions.brokenLet(values);
         } else if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
                 && values.hasValue(0)) {
             contents.brokenDefinitions.add(values.name(0));

@@ -1,5 +1,6 @@
 package rtd.io;
 
+import java.util.Arrays;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
@@ -22,7 +23,7 @@ final class StatementValues {
     private int lineStart;
     private int statementStart;
     /** What the object's names mean, once known: its material, pattern and transform. */
-    private ObjectNames names;
+    private DefinedNames.ObjectNames names;
 
     /** The values of the statements read into {@code groups}, one after the other. */
     StatementValues(SourceText source, WrittenGroups groups, Names expressionNames) {
@@ -37,28 +38,53 @@ final class StatementValues {
         this.line = line;
         this.lineStart = lineStart;
         this.statementStart = statementStart;
-        this.names = ObjectNames.NONE;
+        this.names = DefinedNames.ObjectNames.NONE;
         groups.clear();
     }
 
     /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
     void useMaterial(Material material) {
-        this.names = ObjectNames.NONE.with(material);
+        this.names = DefinedNames.ObjectNames.NONE.with(material);
     }
 
     /** Sets what the object's names mean (Part III: a material, a pattern, a transform). */
-    void useNames(ObjectNames names) {
+    void useNames(DefinedNames.ObjectNames names) {
         this.names = names;
     }
 
-    /** The object as its names make it ({@link ObjectNames#dress}): every shape's object passes through here. */
+    /** The object as its names make it ({@link DefinedNames.ObjectNames#dress}): every shape's object passes through here. */
     IGeometry dress(IGeometry object) {
         return names.dress(object);
     }
 
-    /** The groups as read, for what Part III's statements ask of them ({@link WrittenGroups#named}, a step's size). */
-    WrittenGroups groups() {
-        return groups;
+    /** How many groups were read, the optional ones among them. */
+    int groupCount() {
+        return groups.groupCount;
+    }
+
+    /** How many values group {@code g} holds: for a transformation's step, its word and its numbers. */
+    int size(int g) {
+        return groups.end(g) - groups.firsts[g];
+    }
+
+    /** The group that names a pattern in the place of an object's colour, or -1. */
+    int patternGroup() {
+        return groups.named;
+    }
+
+    /** Whether a value of this statement is an expression (Part III). */
+    boolean anyExpression() {
+        return groups.anyExpression;
+    }
+
+    /** The numbers of group {@code g} as read, unchecked, for the table of the numbers that use the clock. */
+    float[] numbers(int g) {
+        return Arrays.copyOfRange(groups.values, groups.firsts[g], groups.end(g));
+    }
+
+    /** The expression of number {@code k} of group {@code g}, or null for a plain number. */
+    Expression tree(int g, int k) {
+        return groups.trees[groups.firsts[g] + k];
     }
 
     /** Value {@code k} of group {@code g}, which must be finite. */
@@ -125,11 +151,6 @@ final class StatementValues {
         return errorAt(groups.starts[groups.firsts[g] + k], message, help);
     }
 
-    /** A warning at number {@code k} of group {@code g}. */
-    SceneError warningAtValue(int g, int k, String message, String help) {
-        return errorAtValue(g, k, message, help).place();
-    }
-
     /** Where value {@code k} of group {@code g} stands, as an error with no message yet. */
     SceneError placeOfValue(int g, int k) {
         return errorAtValue(g, k, "", null).place();
@@ -151,7 +172,7 @@ final class StatementValues {
         }
         throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than 0, found " + written(i),
                 groups.trees[i] != null ? "an expression here must be greater than 0 at every clock the scene is drawn at"
-                        : value < 0 ? "without its minus sign: " + number(-value)
+                        : value < 0 ? "without its minus sign: " + plain(-value)
                         : "a " + meaning(g) + " of 0 leaves nothing to see; give a number greater than 0, such as 1");
     }
 
@@ -162,8 +183,8 @@ final class StatementValues {
         if (value > low && value < high) {
             return value;
         }
-        throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than " + number(low) + " and less than "
-                + number(high) + " " + unit + ", found " + written(i), help);
+        throw errorAt(groups.starts[i], "the " + meaning(g) + " must be greater than " + plain(low) + " and less than "
+                + plain(high) + " " + unit + ", found " + written(i), help);
     }
 
     /** The three numbers of group {@code g} as a vector of finite numbers. */
@@ -196,7 +217,7 @@ final class StatementValues {
                 if (value >= minimum) {
                     return value;
                 }
-                throw errorAt(groups.starts[i], "the " + name + " must be at least " + number(minimum) + ", found " + written(i),
+                throw errorAt(groups.starts[i], "the " + name + " must be at least " + plain(minimum) + ", found " + written(i),
                         minimum > 0 ? "an index of refraction is 1 for air, 1.33 for water, 1.5 for glass"
                                 : "0 turns this part of the finish off");
             }
@@ -211,10 +232,10 @@ final class StatementValues {
             return value;
         }
         String written = written(i);
-        boolean overflow = !written.contains("NaN") && !written.contains("Infinity");
+        boolean overflow = Hints.tooLarge(written);
         throw errorAt(groups.starts[i], "the " + name + " must be a finite number, found " + written
                 + (overflow ? ", which is too large for a float" : ""),
-                overflow ? "a float holds numbers up to about 3.4e38"
+                overflow ? Hints.FLOAT_RANGE
                         : "NaN (not a number) and Infinity are not numbers a scene can use; give a finite number");
     }
 
@@ -248,8 +269,8 @@ final class StatementValues {
         return text.append(')').toString();
     }
 
-    /** 180 rather than 180.0 in a message. */
-    private static String number(float value) {
+    /** A number for a message or a hint without a trailing ".0": 180, -0.5. */
+    static String plain(float value) {
         return value == Math.rint(value) ? String.valueOf((long) value) : String.valueOf(value);
     }
 

@@ -5,7 +5,8 @@ import java.util.Arrays;
 /**
  * What the {@link GroupReader} found in the groups of one statement, and where: each value, its offsets and
  * its key's index, and each group's first value and '('. One is filled for every line, so that a line of
- * numbers makes no object per number.
+ * numbers makes no object per number. It is the storage of {@link StatementValues}, which alone reads it:
+ * builders see a value only through the rule it must follow.
  */
 final class WrittenGroups {
 

@@ -90,4 +90,23 @@ class PatternsAndTransformsReadingTest {
                 "transform 'lift' is defined, but no object or pattern names it",
                 "pattern 'spare' is defined, but no object names it");
     }
+
+    @Test
+    void aKindOrStepOrKeyFarFromEveryWordGetsTheListOfWords() {
+        assertThat(helpFor("pattern:(p):(zzzzzz):(0|0|0):(9|9|9)"))
+                .isEqualTo("the kinds are 'stripes', 'gradient', 'rings' and 'checker'");
+        assertThat(helpFor("transform:(t):(zzzzzz 2)"))
+                .isEqualTo("the steps are 'scale', 'rotate_x', 'rotate_y', 'rotate_z' and 'translate'");
+        assertThat(helpFor("material:(m):(zzzzzz=1)")).isEqualTo("the keys are 'ambient', 'diffuse', 'specular', "
+                + "'shininess', 'reflective', 'transparency' and 'ior'");
+    }
+
+    private static String helpFor(String line) {
+        try {
+            read(line + "\n");
+        } catch (SceneException e) {
+            return e.errors().get(0).help();
+        }
+        throw new AssertionError("no mistake in " + line);
+    }
 }
