@@ -53,7 +53,7 @@ final class SceneWindow implements Display {
     private final JPanel clockBar = new JPanel(new BorderLayout(8, 0));
     /** Whether the slider is being set by the session, not by the user. */
     private boolean settingSlider;
-    private final Timer play = new Timer(ClockPlay.TICK_MILLIS, e -> tick());
+    private final Timer play = new Timer(ClockControl.TICK_MILLIS, e -> tick());
     private long lastTick;
     private final CountDownLatch closed;
 
