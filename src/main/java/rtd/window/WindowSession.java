@@ -3,6 +3,8 @@ package rtd.window;
 import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.Executor;
+import java.util.function.Consumer;
+import rtd.camera.ICamera;
 import rtd.io.SceneException;
 import rtd.math.Vector3f;
 import rtd.scene.Scene;
@@ -93,7 +95,7 @@ final class WindowSession implements AutoCloseable {
         FrameRenderer.Frame request = new FrameRenderer.Frame(scene, view, setup.width(), setup.height(),
                 setup.samples(), setup.threads(), refinement);
         boolean moving = !refinement.endsFull();
-        FrameRenderer.Listener listener = pass -> ui.execute(() -> show(frame, pass, moving));
+        Consumer<FrameRenderer.Pass> listener = pass -> ui.execute(() -> show(frame, pass, moving));
         renders.submit(() -> renderer.render(request, anyCamera.of(objects), new ProgressiveBuffer(setup.width(),
                 setup.height()), listener), !moving);
     }
@@ -227,15 +229,16 @@ final class WindowSession implements AutoCloseable {
         jobs.save(shown.picture(), setup.savedPicture(), display::panel);
     }
 
+    /** The scene file was saved but cannot be read: the message, and the last good picture stays. */
+    void unreadable(IOException e) {
+        mistake("rtd: " + e.getMessage() + "\n", "");
+    }
+
     /**
-     * The scene file was saved ({@code read}, or {@code unreadable}): it is parsed at the clock shown, or its
-     * mistakes are shown while the last good picture stays. The window's camera stays unless the file's changed.
+     * The scene file was saved ({@code read}): it is parsed at the clock shown, or its mistakes are shown while the
+     * last good picture stays. The window's camera stays unless the file's changed.
      */
-    void reloaded(ClockedScene read, IOException unreadable) {
-        if (read == null) {
-            mistake("rtd: " + unreadable.getMessage() + "\n", "");
-            return;
-        }
+    void reloaded(ClockedScene read) {
         Scene scene;
         try {
             scene = clock.read(read);
@@ -243,11 +246,7 @@ final class WindowSession implements AutoCloseable {
             mistake(e.report(), "");
             return;
         }
-        boolean sameCamera = CameraLine.of(scene.camera()).equals(CameraLine.of(file.camera()));
-        file = scene;
-        if (!sameCamera) {
-            camera = new CameraController(scene.camera()); // the file's new camera
-        }
+        take(scene, !sameCamera(scene.camera(), file.camera()));
         display.clock(clock.slider());
         render(Refinement.STILL);
         showsMistake = false;
@@ -259,11 +258,7 @@ final class WindowSession implements AutoCloseable {
      * camera orbits); a frame at the moving resolution, or the full picture once the clock rests ({@code full}).
      */
     void atClock(Scene scene, boolean full) {
-        boolean unmoved = CameraLine.of(camera.camera()).equals(CameraLine.of(file.camera()));
-        file = scene;
-        if (unmoved) {
-            camera = new CameraController(scene.camera());
-        }
+        take(scene, sameCamera(camera.camera(), file.camera()));
         if (showsMistake) {
             showsMistake = false;
             panelAgain();
@@ -273,6 +268,19 @@ final class WindowSession implements AutoCloseable {
         } else {
             moved();
         }
+    }
+
+    /** {@code scene} is the file's now; the window's camera becomes its camera if {@code cameraFollows}. */
+    private void take(Scene scene, boolean cameraFollows) {
+        file = scene;
+        if (cameraFollows) {
+            camera = new CameraController(scene.camera());
+        }
+    }
+
+    /** Whether two cameras write the same scene line, and so draw the same picture. */
+    private static boolean sameCamera(ICamera a, ICamera b) {
+        return CameraLine.of(a).equals(CameraLine.of(b));
     }
 
     /** A mistake's {@code report} in the panel, the last good picture kept; {@code orClock} adds a way out. */
