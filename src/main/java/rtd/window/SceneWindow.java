@@ -41,6 +41,7 @@ final class SceneWindow implements Display {
     /** The side panel's width in screen pixels. */
     private static final int SIDE_WIDTH = 460;
     private static final int SLIDER_STEPS = 1000;
+    private static final Font TEXT = new Font(Font.MONOSPACED, Font.PLAIN, 12);
 
     private final JFrame frame;
     private final WindowSession session;
@@ -64,12 +65,12 @@ final class SceneWindow implements Display {
         Dimension shown = fitted(setup.width(), setup.height());
         this.picture = new PicturePanel(session, shown.width, shown.height);
         panel.setEditable(false);
-        panel.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        panel.setFont(TEXT);
         panel.setLineWrap(true);
         panel.setWrapStyleWord(true);
         JScrollPane side = new JScrollPane(panel);
         side.setPreferredSize(new Dimension(SIDE_WIDTH, shown.height));
-        status.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        status.setFont(TEXT);
         JPanel right = new JPanel(new BorderLayout());
         right.add(clockBar(), BorderLayout.NORTH);
         right.add(side, BorderLayout.CENTER);
@@ -95,7 +96,7 @@ final class SceneWindow implements Display {
      * releasing (or a click on the track) the full picture.
      */
     private JPanel clockBar() {
-        clockLabel.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        clockLabel.setFont(TEXT);
         slider.setFocusable(false); // the keys stay the window's
         slider.addChangeListener(e -> {
             if (!settingSlider) {

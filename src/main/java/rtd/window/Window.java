@@ -116,7 +116,7 @@ public final class Window {
         try {
             source = setup.loader().read();
         } catch (IOException e) {
-            return session -> session.unreadable(e);
+            return session -> session.mistake("rtd: " + e.getMessage() + "\n", ""); // the last good picture stays
         }
         try {
             source.at(setup.clock()); // its meshes are read here, off the window's thread, and kept for every clock

@@ -1,6 +1,5 @@
 package rtd.window;
 
-import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.function.Consumer;
@@ -41,9 +40,9 @@ final class WindowSession implements AutoCloseable {
     private long shownGeneration = -1;
     /** The blocks and time of the last moving frame shown, for the next one's blocks. */
     private int movingBlock = 2;
+    private long movingNanos;
     /** Whether the panel is to show the view's scale once its full picture is drawn. */
     private boolean legendWanted;
-    private long movingNanos;
     private final AnyCameraTracers anyCamera;
 
     /** A session on {@code scene}, which is {@code source} parsed at {@code setup}'s clock. */
@@ -229,11 +228,6 @@ final class WindowSession implements AutoCloseable {
         jobs.save(shown.picture(), setup.savedPicture(), display::panel);
     }
 
-    /** The scene file was saved but cannot be read: the message, and the last good picture stays. */
-    void unreadable(IOException e) {
-        mistake("rtd: " + e.getMessage() + "\n", "");
-    }
-
     /**
      * The scene file was saved ({@code read}): it is parsed at the clock shown, or its mistakes are shown while the
      * last good picture stays. The window's camera stays unless the file's changed.
@@ -246,10 +240,12 @@ final class WindowSession implements AutoCloseable {
             mistake(e.report(), "");
             return;
         }
-        take(scene, !sameCamera(scene.camera(), file.camera()));
+        if (!sameCamera(scene.camera(), file.camera())) {
+            camera = new CameraController(scene.camera()); // the file's new camera
+        }
+        file = scene;
         display.clock(clock.slider());
         render(Refinement.STILL);
-        showsMistake = false;
         panelAgain();
     }
 
@@ -258,23 +254,17 @@ final class WindowSession implements AutoCloseable {
      * camera orbits); a frame at the moving resolution, or the full picture once the clock rests ({@code full}).
      */
     void atClock(Scene scene, boolean full) {
-        take(scene, sameCamera(camera.camera(), file.camera()));
+        if (sameCamera(camera.camera(), file.camera())) {
+            camera = new CameraController(scene.camera()); // not moved by the user: it follows the file's
+        }
+        file = scene;
         if (showsMistake) {
-            showsMistake = false;
             panelAgain();
         }
         if (full) {
             rested();
         } else {
             moved();
-        }
-    }
-
-    /** {@code scene} is the file's now; the window's camera becomes its camera if {@code cameraFollows}. */
-    private void take(Scene scene, boolean cameraFollows) {
-        file = scene;
-        if (cameraFollows) {
-            camera = new CameraController(scene.camera());
         }
     }
 
@@ -289,8 +279,9 @@ final class WindowSession implements AutoCloseable {
         display.panel(report + "\nThe last good picture stays; fix the scene and save it again" + orClock + ".");
     }
 
-    /** The panel's keys, or the selected pixel's explanation, again. */
+    /** The panel's keys, or the selected pixel's explanation, again, in place of a mistake. */
     private void panelAgain() {
+        showsMistake = false;
         if (selected != null) {
             explainSelected();
         } else {
