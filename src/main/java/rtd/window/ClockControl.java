@@ -41,9 +41,9 @@ final class ClockControl {
         return playing;
     }
 
-    /** The slider's value, or null for no slider: the scene does not use {@code clock}. */
-    Double slider() {
-        return source.usesClock() ? clock : null;
+    /** Shows the slider at the clock, or hides it for a scene that does not use {@code clock}. */
+    void showSlider() {
+        display.clock(source.usesClock() ? clock : null);
     }
 
     /** The status line's part for the clock, {@code " · clock 0.250"}, or nothing for a scene without one. */
@@ -51,11 +51,15 @@ final class ClockControl {
         return source.usesClock() ? " · " + StatusText.clock(clock) : "";
     }
 
-    /** The file saved again ({@code read}), parsed at the clock shown; a scene without the clock does not play. */
+    /**
+     * The file saved again ({@code read}), parsed at the clock shown, its slider shown again; a scene without the
+     * clock does not play.
+     */
     Scene read(ClockedScene read) throws SceneException {
         source = read;
         Scene scene = read.at(clock);
         playing &= read.usesClock();
+        showSlider();
         return scene;
     }
 
@@ -111,7 +115,7 @@ final class ClockControl {
     /** The scene at {@code to} to the session, in full or at the moving resolution; or its mistake, at that clock. */
     private void showAt(double to, boolean full) {
         clock = to;
-        display.clock(slider());
+        showSlider();
         try {
             session.atClock(source.at(to), full);
         } catch (SceneException e) {

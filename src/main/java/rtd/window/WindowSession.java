@@ -63,7 +63,7 @@ final class WindowSession implements AutoCloseable {
     /** The first picture, coarse at once, then refined. */
     void start() {
         display.panel(Keys.HELP);
-        display.clock(clock.slider());
+        clock.showSlider();
         render(Refinement.STILL);
     }
 
@@ -244,7 +244,6 @@ final class WindowSession implements AutoCloseable {
             camera = new CameraController(scene.camera()); // the file's new camera
         }
         file = scene;
-        display.clock(clock.slider());
         render(Refinement.STILL);
         panelAgain();
     }
