@@ -38,9 +38,8 @@ final class WindowSession implements AutoCloseable {
     /** Counts the frames asked for: a pass of an older one is not shown. */
     private long generation;
     private long shownGeneration = -1;
-    /** The blocks and time of the last moving frame shown, for the next one's blocks. */
-    private int movingBlock = 2;
-    private long movingNanos;
+    /** The next moving frame's blocks, from the blocks and time of the last moving frame shown. */
+    private Refinement nextMoving = Refinement.MOVING;
     /** Whether the panel is to show the view's scale once its full picture is drawn. */
     private boolean legendWanted;
     private final AnyCameraTracers anyCamera;
@@ -104,8 +103,7 @@ final class WindowSession implements AutoCloseable {
             return; // a newer frame is already on screen
         }
         if (moving) {
-            movingBlock = pass.block();
-            movingNanos = pass.nanos();
+            nextMoving = Refinement.moving(pass.block(), pass.nanos());
         }
         shownGeneration = frame;
         shown = pass;
@@ -153,7 +151,7 @@ final class WindowSession implements AutoCloseable {
 
     private void moved() {
         display.rays(List.of()); // the selected pixel's rays follow once the camera rests
-        render(Refinement.moving(movingBlock, movingNanos));
+        render(nextMoving);
     }
 
     /** The mouse rests after moving the camera: the full picture, and the selected pixel's rays again. */
