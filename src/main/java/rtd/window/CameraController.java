@@ -6,9 +6,9 @@ import rtd.camera.PerspectiveCamera;
 import rtd.math.Vector3f;
 
 /**
- * The window's camera as the mouse moves it: orbit around a point, pan across the view, zoom; and back to the
- * file's camera. Both of rtd's cameras: the orthographic camera zooms by its zoom (pixels per world unit), the
- * perspective camera moves along its view. The position and direction are kept in double, so that many small
+ * The window's camera as the mouse moves it from the file's camera: orbit around a point, pan across the view,
+ * zoom ({@code R} starts a new controller on the file's camera). Both of rtd's cameras: the orthographic camera
+ * zooms by its zoom (pixels per world unit), the perspective camera moves along its view. The position and direction are kept in double, so that many small
  * moves add no float error; each camera made from them is the scene file's kind, with float numbers.
  *
  * <p>An orbit turns the position about the point, and the direction with it, first about the world's vertical
@@ -34,7 +34,10 @@ final class CameraController {
                     + original.getClass().getSimpleName());
         }
         this.original = original;
-        reset();
+        position = Vec3.of(original.position());
+        direction = Vec3.of(original instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) original)
+                .direction()).unit();
+        zoom = original instanceof OrthographicCamera o ? o.zoom() : 1;
     }
 
     /** The camera now: the file's own until it is moved. */
@@ -51,15 +54,6 @@ final class CameraController {
     /** Whether the camera differs from the file's. */
     boolean moved() {
         return moved;
-    }
-
-    /** Back to the file's camera ({@code R}). */
-    void reset() {
-        position = Vec3.of(original.position());
-        direction = Vec3.of(original instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) original)
-                .direction()).unit();
-        zoom = original instanceof OrthographicCamera o ? o.zoom() : 1;
-        moved = false;
     }
 
     /**

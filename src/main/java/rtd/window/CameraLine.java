@@ -20,14 +20,16 @@ final class CameraLine {
     /** The scene line of {@code camera}. */
     static String of(ICamera camera) {
         if (camera instanceof PerspectiveCamera p) {
-            return "perspective_camera:" + vector(p.position()) + ":" + vector(p.direction()) + ":("
-                    + number(p.fieldOfView()) + ")";
+            return line("perspective_camera", p.position(), p.direction(), p.fieldOfView());
         }
         if (camera instanceof OrthographicCamera o) {
-            return "orthographic_camera:" + vector(o.position()) + ":" + vector(o.direction()) + ":("
-                    + number(o.zoom()) + ")";
+            return line("orthographic_camera", o.position(), o.direction(), o.zoom());
         }
         throw new IllegalArgumentException("no scene line for a " + camera.getClass().getSimpleName());
+    }
+
+    private static String line(String statement, Vector3f position, Vector3f direction, float last) {
+        return statement + ":" + vector(position) + ":" + vector(direction) + ":(" + number(last) + ")";
     }
 
     private static String vector(Vector3f v) {

@@ -4,12 +4,18 @@ import rtd.io.SceneException;
 import rtd.scene.Scene;
 
 /**
- * The window's clock: the scene file as read last, parsed again at the clock slider's value or the play key's
- * ({@link ClockPlay}), each scene handed to its {@link WindowSession}; a value that breaks at a clock (a radius
- * negative at clock = 0.75) is shown as a saved mistake is, and the last good picture stays. Used on the window's
- * thread only.
+ * The window's clock: the scene file as read last, parsed again at the clock slider's value or the play key's,
+ * each scene handed to its {@link WindowSession}; a value that breaks at a clock (a radius negative at clock = 0.75)
+ * is shown as a saved mistake is, and the last good picture stays. The play key runs the clock from where it is
+ * towards 1 and wraps round to 0, one pass in {@link #PASS_NANOS}, as the frames of an animation loop: time, not
+ * frames, moves it, so a slow scene plays at the same pace in fewer frames. Used on the window's thread only.
  */
 final class ClockControl {
+
+    /** One pass of the played clock from 0 to 1: 5 seconds. */
+    static final long PASS_NANOS = 5_000_000_000L;
+    /** How often the window asks for the next frame while playing: 25 times a second at most. */
+    static final int TICK_MILLIS = 40;
 
     private final WindowSession session;
     private final Display display;
@@ -35,9 +41,9 @@ final class ClockControl {
         return playing;
     }
 
-    /** The slider's value, or null for no slider: the scene does not use {@code clock}. */
-    Double slider() {
-        return source.usesClock() ? clock : null;
+    /** Shows the slider at the clock, or hides it for a scene that does not use {@code clock}. */
+    void showSlider() {
+        display.clock(source.usesClock() ? clock : null);
     }
 
     /** The status line's part for the clock, {@code " · clock 0.250"}, or nothing for a scene without one. */
@@ -45,11 +51,15 @@ final class ClockControl {
         return source.usesClock() ? " · " + StatusText.clock(clock) : "";
     }
 
-    /** The file saved again ({@code read}), parsed at the clock shown; a scene without the clock does not play. */
+    /**
+     * The file saved again ({@code read}), parsed at the clock shown, its slider shown again; a scene without the
+     * clock does not play.
+     */
     Scene read(ClockedScene read) throws SceneException {
         source = read;
         Scene scene = read.at(clock);
         playing &= read.usesClock();
+        showSlider();
         return scene;
     }
 
@@ -68,18 +78,12 @@ final class ClockControl {
 
     /** The clock dragged or played to {@code to}: a frame at the moving resolution. */
     void moved(double to) {
-        Scene scene = at(to);
-        if (scene != null) {
-            session.atClock(scene, false);
-        }
+        showAt(to, false);
     }
 
     /** The clock at rest at {@code to}: the full picture. */
     void rested(double to) {
-        Scene scene = at(to);
-        if (scene != null) {
-            session.atClock(scene, true);
-        }
+        showAt(to, true);
     }
 
     /** {@code P}: plays the clock or pauses it; the paused clock's picture is drawn in full. */
@@ -98,20 +102,25 @@ final class ClockControl {
     /** The play timer's tick, {@code elapsedNanos} after the one before: the next frame, if playing. */
     void tick(long elapsedNanos) {
         if (playing) {
-            moved(ClockPlay.next(clock, elapsedNanos));
+            moved(next(clock, elapsedNanos));
         }
     }
 
-    /** The scene at {@code to}, or null with its mistake shown (the status line says the clock). */
-    private Scene at(double to) {
+    /** The played clock {@code elapsedNanos} after {@code clock}, wrapped into [0, 1). */
+    static double next(double clock, long elapsedNanos) {
+        double next = clock + (double) elapsedNanos / PASS_NANOS;
+        return next - Math.floor(next);
+    }
+
+    /** The scene at {@code to} to the session, in full or at the moving resolution; or its mistake, at that clock. */
+    private void showAt(double to, boolean full) {
         clock = to;
-        display.clock(slider());
+        showSlider();
         try {
-            return source.at(to);
+            session.atClock(source.at(to), full);
         } catch (SceneException e) {
             session.mistake(e.report(), ", or move the clock");
             session.status();
-            return null;
         }
     }
 }

@@ -1,5 +1,6 @@
 package rtd.window;
 
+import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import rtd.image.Picture;
@@ -30,11 +31,6 @@ final class FrameRenderer {
     record Pass(Picture picture, int block, long nanos, long rays, String legend) {
     }
 
-    /** Told each pass as it is done. */
-    interface Listener {
-        void shown(Pass pass);
-    }
-
     /** One frame to render: {@code view} null for the picture. */
     record Frame(Scene scene, View view, int width, int height, int samples, int threads, Refinement refinement) {
     }
@@ -46,10 +42,10 @@ final class FrameRenderer {
     }
 
     /**
-     * Renders {@code frame}'s passes into {@code buffer}, telling {@code listener} each, with {@code anyCamera}'s
-     * tracers for the coarse passes; returns false if it was cancelled.
+     * Renders {@code frame}'s passes into {@code buffer}, handing each to {@code listener} as it is done, with
+     * {@code anyCamera}'s tracers for the coarse passes; returns false if it was cancelled.
      */
-    boolean render(Frame frame, Supplier<Tracer> anyCamera, ProgressiveBuffer buffer, Listener listener) {
+    boolean render(Frame frame, Supplier<Tracer> anyCamera, ProgressiveBuffer buffer, Consumer<Pass> listener) {
         for (int block : frame.refinement().blocks()) {
             long start = System.nanoTime();
             RenderResult result;
@@ -65,7 +61,7 @@ final class FrameRenderer {
                 return false; // one thread stops at the next band and returns what it has: not to be shown
             }
             buffer.put(block, result.image());
-            listener.shown(shown(frame, buffer, block, System.nanoTime() - start, result.work().rays()));
+            listener.accept(shown(frame, buffer, block, System.nanoTime() - start, result.work().rays()));
         }
         return true;
     }

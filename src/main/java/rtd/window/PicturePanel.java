@@ -41,12 +41,6 @@ final class PicturePanel extends JComponent {
     private final Timer rest;
     private BufferedImage image;
     private List<RayTreeProjection.Line> rays = List.of();
-    private int pressX;
-    private int pressY;
-    private int lastX;
-    private int lastY;
-    private boolean dragged;
-    private Vector3f pivot;
 
     PicturePanel(WindowSession session, int width, int height) {
         this.session = session;
@@ -147,6 +141,14 @@ final class PicturePanel extends JComponent {
 
     /** The mouse: drag to orbit (right button or Shift: pan), wheel to zoom, click to select a pixel. */
     private final class Mouse extends MouseAdapter {
+
+        private int pressX;
+        private int pressY;
+        private int lastX;
+        private int lastY;
+        private boolean dragged;
+        /** The point a drag orbits around, fixed when the button is pressed. */
+        private Vector3f pivot;
 
         @Override
         public void mousePressed(MouseEvent e) {

@@ -1,5 +1,6 @@
 package rtd.window;
 
+import java.util.function.BinaryOperator;
 import rtd.geometry.BoundingBox;
 import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
@@ -29,18 +30,15 @@ final class Pivot {
         for (IGeometry object : scene.objects()) {
             BoundingBox box = object.bounds();
             if (box.isBounded()) {
-                min = min == null ? box.min() : lowest(min, box.min());
-                max = max == null ? box.max() : highest(max, box.max());
+                min = min == null ? box.min() : each(min, box.min(), Math::min);
+                max = max == null ? box.max() : each(max, box.max(), Math::max);
             }
         }
         return min != null ? new BoundingBox(min, max).centre() : centre.pointAt(10);
     }
 
-    private static Vector3f lowest(Vector3f a, Vector3f b) {
-        return new Vector3f(Math.min(a.x(), b.x()), Math.min(a.y(), b.y()), Math.min(a.z(), b.z()));
-    }
-
-    private static Vector3f highest(Vector3f a, Vector3f b) {
-        return new Vector3f(Math.max(a.x(), b.x()), Math.max(a.y(), b.y()), Math.max(a.z(), b.z()));
+    /** {@code a} and {@code b} taken together coordinate by coordinate: the lowest or highest of each. */
+    private static Vector3f each(Vector3f a, Vector3f b, BinaryOperator<Float> pick) {
+        return new Vector3f(pick.apply(a.x(), b.x()), pick.apply(a.y(), b.y()), pick.apply(a.z(), b.z()));
     }
 }

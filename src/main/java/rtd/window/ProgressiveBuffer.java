@@ -13,8 +13,6 @@ final class ProgressiveBuffer {
     private final int width;
     private final int height;
     private final int[] rgb;
-    /** The side of the blocks of the last pass put in; 0 before any. */
-    private int block;
 
     ProgressiveBuffer(int width, int height) {
         this.width = width;
@@ -40,20 +38,6 @@ final class ProgressiveBuffer {
                 rgb[y * width + x] = coarse.rgb()[row + x / block];
             }
         }
-        this.block = block;
-    }
-
-    /** The side of the blocks the picture shows now: 1 once it is the full render, 0 before any pass. */
-    int block() {
-        return block;
-    }
-
-    int width() {
-        return width;
-    }
-
-    int height() {
-        return height;
     }
 
     /** A copy of the picture as it is now. */

@@ -92,10 +92,11 @@ final class RayTreeProjection {
             if (zFrom < near && zTo < near) {
                 return null;
             }
+            Vector3f cut = from.add(to.subtract(from).multiply((near - zFrom) / (zTo - zFrom)));
             if (zFrom < near) {
-                from = from.add(to.subtract(from).multiply((near - zFrom) / (zTo - zFrom)));
+                from = cut;
             } else if (zTo < near) {
-                to = from.add(to.subtract(from).multiply((near - zFrom) / (zTo - zFrom)));
+                to = cut;
                 ends = false;
             }
         }

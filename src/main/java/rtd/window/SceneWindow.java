@@ -41,6 +41,7 @@ final class SceneWindow implements Display {
     /** The side panel's width in screen pixels. */
     private static final int SIDE_WIDTH = 460;
     private static final int SLIDER_STEPS = 1000;
+    private static final Font TEXT = new Font(Font.MONOSPACED, Font.PLAIN, 12);
 
     private final JFrame frame;
     private final WindowSession session;
@@ -53,7 +54,7 @@ final class SceneWindow implements Display {
     private final JPanel clockBar = new JPanel(new BorderLayout(8, 0));
     /** Whether the slider is being set by the session, not by the user. */
     private boolean settingSlider;
-    private final Timer play = new Timer(ClockPlay.TICK_MILLIS, e -> tick());
+    private final Timer play = new Timer(ClockControl.TICK_MILLIS, e -> tick());
     private long lastTick;
     private final CountDownLatch closed;
 
@@ -64,12 +65,12 @@ final class SceneWindow implements Display {
         Dimension shown = fitted(setup.width(), setup.height());
         this.picture = new PicturePanel(session, shown.width, shown.height);
         panel.setEditable(false);
-        panel.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        panel.setFont(TEXT);
         panel.setLineWrap(true);
         panel.setWrapStyleWord(true);
         JScrollPane side = new JScrollPane(panel);
         side.setPreferredSize(new Dimension(SIDE_WIDTH, shown.height));
-        status.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        status.setFont(TEXT);
         JPanel right = new JPanel(new BorderLayout());
         right.add(clockBar(), BorderLayout.NORTH);
         right.add(side, BorderLayout.CENTER);
@@ -95,7 +96,7 @@ final class SceneWindow implements Display {
      * releasing (or a click on the track) the full picture.
      */
     private JPanel clockBar() {
-        clockLabel.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        clockLabel.setFont(TEXT);
         slider.setFocusable(false); // the keys stay the window's
         slider.addChangeListener(e -> {
             if (!settingSlider) {

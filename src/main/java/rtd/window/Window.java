@@ -7,6 +7,7 @@ import java.io.IOException;
 import java.lang.reflect.InvocationTargetException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
@@ -32,14 +33,10 @@ public final class Window {
         }
     }
 
-    /** Whether this Java can open windows at all; without, {@link #open} throws {@link NoDisplay}. */
-    public static boolean hasDisplay() {
-        return missingDisplay() == null;
-    }
-
     /**
      * Why no window can open here, in a few words ("DISPLAY is not set"), or null if one can: Java runs headless
-     * without a display, and a display that cannot be reached fails when the first window would open.
+     * without a display, and a display that cannot be reached fails when the first window would open. Where one
+     * cannot, {@link #open} throws {@link NoDisplay}.
      */
     public static String missingDisplay() {
         String display = System.getenv("DISPLAY");
@@ -109,18 +106,23 @@ public final class Window {
      * parses it at the clock it shows.
      */
     private static void reload(WindowSetup setup, SceneWindow window) {
-        ClockedScene source = null;
-        IOException unreadable = null;
+        Consumer<WindowSession> reloaded = read(setup);
+        SwingUtilities.invokeLater(() -> reloaded.accept(window.session()));
+    }
+
+    /** What the session is to be told of the file as it is now: read, or unreadable. */
+    private static Consumer<WindowSession> read(WindowSetup setup) {
+        ClockedScene source;
         try {
             source = setup.loader().read();
-            source.at(setup.clock()); // its meshes are read here, off the window's thread, and kept for every clock
         } catch (IOException e) {
-            unreadable = e;
+            return session -> session.mistake("rtd: " + e.getMessage() + "\n", ""); // the last good picture stays
+        }
+        try {
+            source.at(setup.clock()); // its meshes are read here, off the window's thread, and kept for every clock
         } catch (SceneException e) {
             // the window parses the file again at its own clock and shows the mistakes it finds there
         }
-        ClockedScene read = source;
-        IOException failed = unreadable;
-        SwingUtilities.invokeLater(() -> window.session().reloaded(read, failed));
+        return session -> session.reloaded(source);
     }
 }

@@ -1,8 +1,9 @@
 package rtd.window;
 
-import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.Executor;
+import java.util.function.Consumer;
+import rtd.camera.ICamera;
 import rtd.io.SceneException;
 import rtd.math.Vector3f;
 import rtd.scene.Scene;
@@ -37,11 +38,10 @@ final class WindowSession implements AutoCloseable {
     /** Counts the frames asked for: a pass of an older one is not shown. */
     private long generation;
     private long shownGeneration = -1;
-    /** The blocks and time of the last moving frame shown, for the next one's blocks. */
-    private int movingBlock = 2;
+    /** The next moving frame's blocks, from the blocks and time of the last moving frame shown. */
+    private Refinement nextMoving = Refinement.MOVING;
     /** Whether the panel is to show the view's scale once its full picture is drawn. */
     private boolean legendWanted;
-    private long movingNanos;
     private final AnyCameraTracers anyCamera;
 
     /** A session on {@code scene}, which is {@code source} parsed at {@code setup}'s clock. */
@@ -62,7 +62,7 @@ final class WindowSession implements AutoCloseable {
     /** The first picture, coarse at once, then refined. */
     void start() {
         display.panel(Keys.HELP);
-        display.clock(clock.slider());
+        clock.showSlider();
         render(Refinement.STILL);
     }
 
@@ -93,7 +93,7 @@ final class WindowSession implements AutoCloseable {
         FrameRenderer.Frame request = new FrameRenderer.Frame(scene, view, setup.width(), setup.height(),
                 setup.samples(), setup.threads(), refinement);
         boolean moving = !refinement.endsFull();
-        FrameRenderer.Listener listener = pass -> ui.execute(() -> show(frame, pass, moving));
+        Consumer<FrameRenderer.Pass> listener = pass -> ui.execute(() -> show(frame, pass, moving));
         renders.submit(() -> renderer.render(request, anyCamera.of(objects), new ProgressiveBuffer(setup.width(),
                 setup.height()), listener), !moving);
     }
@@ -103,8 +103,7 @@ final class WindowSession implements AutoCloseable {
             return; // a newer frame is already on screen
         }
         if (moving) {
-            movingBlock = pass.block();
-            movingNanos = pass.nanos();
+            nextMoving = Refinement.moving(pass.block(), pass.nanos());
         }
         shownGeneration = frame;
         shown = pass;
@@ -152,7 +151,7 @@ final class WindowSession implements AutoCloseable {
 
     private void moved() {
         display.rays(List.of()); // the selected pixel's rays follow once the camera rests
-        render(Refinement.moving(movingBlock, movingNanos));
+        render(nextMoving);
     }
 
     /** The mouse rests after moving the camera: the full picture, and the selected pixel's rays again. */
@@ -228,14 +227,10 @@ final class WindowSession implements AutoCloseable {
     }
 
     /**
-     * The scene file was saved ({@code read}, or {@code unreadable}): it is parsed at the clock shown, or its
-     * mistakes are shown while the last good picture stays. The window's camera stays unless the file's changed.
+     * The scene file was saved ({@code read}): it is parsed at the clock shown, or its mistakes are shown while the
+     * last good picture stays. The window's camera stays unless the file's changed.
      */
-    void reloaded(ClockedScene read, IOException unreadable) {
-        if (read == null) {
-            mistake("rtd: " + unreadable.getMessage() + "\n", "");
-            return;
-        }
+    void reloaded(ClockedScene read) {
         Scene scene;
         try {
             scene = clock.read(read);
@@ -243,14 +238,11 @@ final class WindowSession implements AutoCloseable {
             mistake(e.report(), "");
             return;
         }
-        boolean sameCamera = CameraLine.of(scene.camera()).equals(CameraLine.of(file.camera()));
-        file = scene;
-        if (!sameCamera) {
+        if (!sameCamera(scene.camera(), file.camera())) {
             camera = new CameraController(scene.camera()); // the file's new camera
         }
-        display.clock(clock.slider());
+        file = scene;
         render(Refinement.STILL);
-        showsMistake = false;
         panelAgain();
     }
 
@@ -259,13 +251,11 @@ final class WindowSession implements AutoCloseable {
      * camera orbits); a frame at the moving resolution, or the full picture once the clock rests ({@code full}).
      */
     void atClock(Scene scene, boolean full) {
-        boolean unmoved = CameraLine.of(camera.camera()).equals(CameraLine.of(file.camera()));
-        file = scene;
-        if (unmoved) {
-            camera = new CameraController(scene.camera());
+        if (sameCamera(camera.camera(), file.camera())) {
+            camera = new CameraController(scene.camera()); // not moved by the user: it follows the file's
         }
+        file = scene;
         if (showsMistake) {
-            showsMistake = false;
             panelAgain();
         }
         if (full) {
@@ -275,14 +265,20 @@ final class WindowSession implements AutoCloseable {
         }
     }
 
+    /** Whether two cameras write the same scene line, and so draw the same picture. */
+    private static boolean sameCamera(ICamera a, ICamera b) {
+        return CameraLine.of(a).equals(CameraLine.of(b));
+    }
+
     /** A mistake's {@code report} in the panel, the last good picture kept; {@code orClock} adds a way out. */
     void mistake(String report, String orClock) {
         showsMistake = true;
         display.panel(report + "\nThe last good picture stays; fix the scene and save it again" + orClock + ".");
     }
 
-    /** The panel's keys, or the selected pixel's explanation, again. */
+    /** The panel's keys, or the selected pixel's explanation, again, in place of a mistake. */
     private void panelAgain() {
+        showsMistake = false;
         if (selected != null) {
             explainSelected();
         } else {

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.DisplayName;
@@ -110,7 +111,7 @@ class FrameRendererTest {
         assertThat(passes).isEmpty();
     }
 
-    private static boolean render(Scene scene, View view, Refinement refinement, FrameRenderer.Listener listener) {
+    private static boolean render(Scene scene, View view, Refinement refinement, Consumer<FrameRenderer.Pass> listener) {
         Supplier<Tracer> any = ENGINE.forAnyCamera(scene, 160, 90);
         FrameRenderer.Frame frame = new FrameRenderer.Frame(scene, view, 160, 90, 1, 2, refinement);
         return new FrameRenderer(ENGINE).render(frame, any, new ProgressiveBuffer(160, 90), listener);

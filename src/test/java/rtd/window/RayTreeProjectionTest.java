@@ -81,10 +81,15 @@ class RayTreeProjectionTest {
         PerspectiveCamera camera = new PerspectiveCamera(Vector3f.ZERO, new Vector3f(0, 0, -1), 90);
         RayTree behind = new RayTree(List.of(
                 new RayTree.Segment(Kind.REFLECTED, new Vector3f(0, 0, 2), new Vector3f(0, 0, 5), BACK, 1),
-                new RayTree.Segment(Kind.REFLECTED, new Vector3f(1, 0, -2), new Vector3f(1, 0, 2), BACK, 1)));
+                new RayTree.Segment(Kind.REFLECTED, new Vector3f(1, 0, -2), new Vector3f(1, 0, 2), BACK, 1),
+                new RayTree.Segment(Kind.REFLECTED, new Vector3f(1, 0, 2), new Vector3f(1, 0, -2), BACK, 1)));
         List<RayTreeProjection.Line> lines = new RayTreeProjection(camera, 160, 90).lines(behind);
-        assertThat(lines).hasSize(1); // the first lies wholly behind the eye
+        assertThat(lines).hasSize(2); // the first lies wholly behind the eye
         assertThat(lines.get(0).ends()).isFalse(); // its end was cut off
-        assertThat(lines.get(0).x0()).isCloseTo(120, within(1e-3));
+        assertThat(lines.get(0).x0()).isCloseTo(120, within(1e-3)); // f = 80: x = 80 + 80 · 1/2
+        // the last starts behind the eye: cut just ahead of it, far off the picture's right edge, to its end at 120
+        assertThat(lines.get(1).ends()).isTrue();
+        assertThat(lines.get(1).x1()).isCloseTo(120, within(1e-3));
+        assertThat(lines.get(1).x0()).isGreaterThan(160);
     }
 }

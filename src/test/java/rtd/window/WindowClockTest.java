@@ -72,9 +72,9 @@ class WindowClockTest {
     @Test
     void playAdvancesTheClockWithTimeAndWrapsRoundTo0() throws Exception {
         // one pass in 5 s: 1.25 s is a quarter; 0.75 and a further 1.5 s is 1.05, which wraps to 0.05
-        assertThat(ClockPlay.next(0, 1_250_000_000L)).isEqualTo(0.25);
-        assertThat(ClockPlay.next(0.75, 1_500_000_000L)).isCloseTo(0.05, within(1e-12));
-        assertThat(ClockPlay.next(1, 0)).isZero();
+        assertThat(ClockControl.next(0, 1_250_000_000L)).isEqualTo(0.25);
+        assertThat(ClockControl.next(0.75, 1_500_000_000L)).isCloseTo(0.05, within(1e-12));
+        assertThat(ClockControl.next(1, 0)).isZero();
 
         window = SessionHarness.open(Path.of("examples", "orbit.txt"), W, H, 0);
         window.awaitFull();

@@ -47,8 +47,7 @@ class WindowOnScreenTest {
 
     @Test
     void showsTheSamePixelsAsOExplainsAClickRendersASavedSceneAgainOrbitsAndShowsAView() throws Exception {
-        Assumptions.assumeTrue(Window.hasDisplay(), "no display (DISPLAY is not set): the window's test on a screen "
-                + "is skipped; run it under Xvfb, as .ci/run does");
+        assumeADisplay();
         Path scene = dir.resolve("scene.txt");
         String text = Files.readString(Path.of("examples", "glass_and_mirror.txt"));
         Files.writeString(scene, text);
@@ -114,8 +113,7 @@ class WindowOnScreenTest {
 
     @Test
     void aSceneWithTheClockStartsAtClockCAndPPlaysAndPausesIt() throws Exception {
-        Assumptions.assumeTrue(Window.hasDisplay(), "no display (DISPLAY is not set): the window's test on a screen "
-                + "is skipped; run it under Xvfb, as .ci/run does");
+        assumeADisplay();
         Path orbit = Path.of("examples", "orbit.txt");
         CompletableFuture<Cli.Run> run = CompletableFuture.supplyAsync(() -> Cli.run(orbit.toString(), "--window",
                 "--width", "160", "--height", "90", "--clock", "0.25"));
@@ -150,6 +148,12 @@ class WindowOnScreenTest {
                 SwingUtilities.invokeAndWait(frame::dispose);
             }
         }
+    }
+
+    private static void assumeADisplay() {
+        String missing = Window.missingDisplay();
+        Assumptions.assumeTrue(missing == null, "no display (" + missing + "): the window's test on a screen is "
+                + "skipped; run it under Xvfb, as .ci/run does");
     }
 
     /** The full picture once the window shows it. */

@@ -77,7 +77,7 @@ class WindowSessionTest {
         Picture before = window.awaitFull();
         Files.writeString(dir.resolve("scene.txt"), "perspective_camera:(0|0|9):(0|0|-1):(60)\nspher:(0|0|0):(1):(1|2|3)\n");
         ClockedScene saved = new ClockedScene(SceneFile.read(dir.resolve("scene.txt")), scene -> scene);
-        window.run(() -> window.session.reloaded(saved, null));
+        window.run(() -> window.session.reloaded(saved));
         assertThat(window.on(() -> window.display.panel)).contains("scene.txt:2:1: error")
                 .contains("The last good picture stays");
         Thread.sleep(200);
