@@ -36,15 +36,29 @@ public final class ClockFields {
         Map<String, float[]> numbers = new HashMap<>();
         for (int g = 0; g < v.groupCount(); g++) {
             int size = v.size(g);
-            numbers.put(v.meaning(g), v.numbers(g));
+            String key = key(v, g, numbers);
+            numbers.put(key, v.numbers(g));
             for (int k = 0; k < size; k++) {
                 Expression tree = v.tree(g, k);
                 if (tree != null && tree.usesClock()) {
-                    found.computeIfAbsent(v.meaning(g), meaning -> new Expression[size])[k] = tree;
+                    found.computeIfAbsent(key, meaning -> new Expression[size])[k] = tree;
                 }
             }
         }
         return found.isEmpty() ? NONE : new ClockFields(Map.copyOf(found), Map.copyOf(numbers));
+    }
+
+    /**
+     * Group {@code g}'s key: its meaning, and for a meaning that repeats (a transform's steps) its count after the
+     * first, "step 2", so that no group's numbers are filed under another's.
+     */
+    private static String key(StatementValues v, int g, Map<String, float[]> keys) {
+        String meaning = v.meaning(g);
+        String key = meaning;
+        for (int n = 2; keys.containsKey(key); n++) {
+            key = meaning + " " + n;
+        }
+        return key;
     }
 
     /** Number {@code k} of the group that means {@code group} if it uses the clock, else null. */

@@ -64,4 +64,13 @@ class ClockedSceneTest {
         assertThat(clocked.unwritten()).containsExactly("the 'material' at line 2");
         assertThat(clocked.usesClock()).isTrue();
     }
+
+    /** Steps of one transform all mean "step": each is filed apart, the second as "step 2". */
+    @Test
+    void eachStepOfATransformThatUsesTheClockIsFiledApart() throws SceneException {
+        ClockedScene clocked = read(CAMERA + "transform:(spin):(rotate_y 90*clock):(translate 0|clock|0)\n"
+                + "box:(-1|0|-1):(1|1|1):(230|120|40):(spin)\n", 0.5);
+        assertThat(clocked.usesClock()).isTrue();
+        assertThat(clocked.unwritten()).containsExactly("the 'transform' at line 2");
+    }
 }
