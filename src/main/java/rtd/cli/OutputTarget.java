@@ -6,9 +6,7 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
-import java.util.concurrent.ThreadLocalRandom;
 import java.util.function.DoubleConsumer;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
@@ -68,24 +66,10 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             if (kind == Kind.STREAM) {
                 Files.writeString(file, text, StandardCharsets.UTF_8, StandardOpenOption.WRITE);
             } else {
-                replaceWithText(file, text);
+                SceneIO.writeText(text, file);
             }
         } catch (IOException e) {
             throw new FileError("cannot write '" + spelt + "'", e);
-        }
-    }
-
-    /** Writes {@code text} to a temporary file beside {@code file}, then moves it into place: never half a file. */
-    static void replaceWithText(Path file, String text) throws IOException {
-        // Not Files.createTempFile: its file may be read by its owner only, and would stay so.
-        Path temporary = file.toAbsolutePath().getParent().resolve("." + file.getFileName() + "."
-                + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ".tmp");
-        try {
-            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW,
-                    StandardOpenOption.WRITE);
-            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
-        } finally {
-            Files.deleteIfExists(temporary);
         }
     }
 

@@ -4,6 +4,8 @@ import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
@@ -105,6 +107,21 @@ public final class SceneIO {
         try {
             try (OutputStream out = new BufferedOutputStream(temporary.out(), 1 << 16)) {
                 ImageWriting.write(picture, format, out, progress);
+            }
+            temporary.commit();
+        } catch (IOException | RuntimeException | Error e) {
+            temporary.discard();
+            throw e;
+        }
+    }
+
+    /** Writes {@code text} in UTF-8 to {@code output} as {@link #writeImage} writes a picture: whole, or not at all. */
+    public static void writeText(String text, Path output) throws IOException {
+        TemporaryFiles.Replacement temporary = TemporaryFiles.create(output);
+        try {
+            try (Writer out = new OutputStreamWriter(new BufferedOutputStream(temporary.out(), 1 << 16),
+                    StandardCharsets.UTF_8)) {
+                out.write(text);
             }
             temporary.commit();
         } catch (IOException | RuntimeException | Error e) {

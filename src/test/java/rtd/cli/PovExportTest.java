@@ -41,6 +41,18 @@ class PovExportTest {
         assertThat(dir.resolve("paper.png")).isRegularFile();
     }
 
+    /** A name of 249 bytes, near most file systems' 255: the export's temporary file must be named shorter. */
+    @Test
+    void aLongNameIsWrittenAsALongPictureNameIsAndNoTemporaryFileStays() throws IOException {
+        Path pov = dir.resolve("a".repeat(245) + ".pov");
+        Run run = export("--export-pov", pov.toString(), "-o", dir.resolve("p.png").toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(Files.readString(pov)).startsWith("// A POV-Ray 3.7 twin of an rtd scene");
+        try (var files = Files.list(dir)) {
+            assertThat(files.map(f -> f.getFileName().toString())).allMatch(name -> !name.endsWith(".tmp"));
+        }
+    }
+
     @Test
     void aNameThatDoesNotEndInPovIsRefusedSoThatAMeshOrAFolderIsNeverReplaced() throws IOException {
         Path mesh = Files.writeString(dir.resolve("model.obj"), "v 0 0 0\n");
