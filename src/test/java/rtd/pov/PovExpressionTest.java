@@ -16,9 +16,14 @@ class PovExpressionTest {
 
     /** The x of a sphere's centre written as {@code x}, read and written back for POV-Ray. */
     private static String pov(String lets, String x) throws SceneException {
-        String text = lets + "orthographic_camera:(0|0|10):(0|0|-1):(20)\nsphere:(" + x + "|0|0):(1):(255|0|0)\n";
-        ClockedScene clocked = SceneFile.of("t.txt", text.getBytes(StandardCharsets.UTF_8), Path.of("")).withClock(0);
+        ClockedScene clocked = read(lets, x);
         return PovExpression.of(clocked.of(clocked.scene().objects().get(0)).of("centre", 0));
+    }
+
+    /** {@code lets}, then a sphere whose centre's x is written as {@code x}, read with its clock's expressions. */
+    private static ClockedScene read(String lets, String x) throws SceneException {
+        String text = lets + "orthographic_camera:(0|0|10):(0|0|-1):(20)\nsphere:(" + x + "|0|0):(1):(255|0|0)\n";
+        return SceneFile.of("t.txt", text.getBytes(StandardCharsets.UTF_8), Path.of("")).withClock(0);
     }
 
     private static String pov(String x) throws SceneException {
@@ -83,9 +88,7 @@ class PovExpressionTest {
 
     /** The {@code #declare}s the export writes for the x of the sphere's centre written as {@code x}. */
     private static String declarations(String lets, String x) throws SceneException {
-        String text = lets + "orthographic_camera:(0|0|10):(0|0|-1):(20)\nsphere:(" + x + "|0|0):(1):(255|0|0)\n";
-        ClockedScene clocked = SceneFile.of("t.txt", text.getBytes(StandardCharsets.UTF_8), Path.of("")).withClock(0);
-        return new PovClock(clocked).declarations();
+        return new PovClock(read(lets, x)).declarations();
     }
 
     @Test
