@@ -1,9 +1,10 @@
 package rtd.io;
 
-import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 
 /**
@@ -36,7 +37,10 @@ public final class ClockFields {
         Map<String, float[]> numbers = new HashMap<>();
         for (int g = 0; g < v.groupCount(); g++) {
             int size = v.size(g);
-            String key = key(v, g, numbers);
+            String key = v.meaning(g);
+            for (int n = 2; numbers.containsKey(key); n++) { // a meaning that repeats (a transform's steps): "step 2"
+                key = v.meaning(g) + " " + n;
+            }
             numbers.put(key, v.numbers(g));
             for (int k = 0; k < size; k++) {
                 Expression tree = v.tree(g, k);
@@ -46,19 +50,6 @@ public final class ClockFields {
             }
         }
         return found.isEmpty() ? NONE : new ClockFields(Map.copyOf(found), Map.copyOf(numbers));
-    }
-
-    /**
-     * Group {@code g}'s key: its meaning, and for a meaning that repeats (a transform's steps) its count after the
-     * first, "step 2", so that no group's numbers are filed under another's.
-     */
-    private static String key(StatementValues v, int g, Map<String, float[]> keys) {
-        String meaning = v.meaning(g);
-        String key = meaning;
-        for (int n = 2; keys.containsKey(key); n++) {
-            key = meaning + " " + n;
-        }
-        return key;
     }
 
     /** Number {@code k} of the group that means {@code group} if it uses the clock, else null. */
@@ -85,15 +76,7 @@ public final class ClockFields {
 
     /** Every number's expression that uses the clock, in no particular order. */
     public List<Expression> expressions() {
-        List<Expression> all = new ArrayList<>();
-        for (Expression[] numbers : clocked.values()) {
-            for (Expression e : numbers) {
-                if (e != null) {
-                    all.add(e);
-                }
-            }
-        }
-        return all;
+        return clocked.values().stream().flatMap(Arrays::stream).filter(Objects::nonNull).toList();
     }
 
     /** Whether no number of the statement uses the clock. */

@@ -13,30 +13,20 @@ import rtd.scene.Scene;
  * numbers follow POV-Ray's {@code clock}. The expressions stand beside the scene, in a table from each of its
  * objects and lights (by identity) to its {@link ClockFields}: the shapes themselves hold numbers only.
  *
- * <p>{@link #unwritten} lists the statements whose clock the table does not carry (a material, a pattern,
- * a transformation, a mesh or an area light that uses the clock): a scene with any is to be written frame by
- * frame.
+ * @param scene     the scene at the clock it was read at
+ * @param ambient   the {@code ambient} statement's numbers that use the clock
+ * @param camera    the camera statement's numbers that use the clock
+ * @param parts     each object's and light's numbers that use the clock, by identity
+ * @param unwritten the statements whose clock the table does not carry (a material, a pattern, a
+ *                  transformation, a mesh or an area light that uses the clock, "the 'material' at line 4"): a
+ *                  scene with any is to be written frame by frame
  */
-public final class ClockedScene {
+public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera, Map<Object, ClockFields> parts,
+        List<String> unwritten) {
 
-    private final Scene scene;
-    private final ClockFields ambient;
-    private final ClockFields camera;
-    private final Map<Object, ClockFields> parts;
-    private final List<String> unwritten;
-
-    ClockedScene(Scene scene, ClockFields ambient, ClockFields camera, Map<Object, ClockFields> parts,
-            List<String> unwritten) {
-        this.scene = scene;
-        this.ambient = ambient;
-        this.camera = camera;
-        this.parts = Collections.unmodifiableMap(new IdentityHashMap<>(parts));
-        this.unwritten = List.copyOf(unwritten);
-    }
-
-    /** The scene at the clock it was read at. */
-    public Scene scene() {
-        return scene;
+    public ClockedScene {
+        parts = Collections.unmodifiableMap(new IdentityHashMap<>(parts));
+        unwritten = List.copyOf(unwritten);
     }
 
     /**
@@ -45,16 +35,6 @@ public final class ClockedScene {
      */
     public ClockedScene with(Scene other) {
         return new ClockedScene(other, ambient, camera, parts, unwritten);
-    }
-
-    /** The {@code ambient} statement's numbers that use the clock. */
-    public ClockFields ambient() {
-        return ambient;
-    }
-
-    /** The camera statement's numbers that use the clock. */
-    public ClockFields camera() {
-        return camera;
     }
 
     /** The numbers that use the clock of the statement that made {@code part}, one of the scene's objects or lights. */
@@ -67,15 +47,10 @@ public final class ClockedScene {
         return !ambient.isEmpty() || !camera.isEmpty() || !parts.isEmpty() || !unwritten.isEmpty();
     }
 
-    /** The statements that use the clock where the table does not carry it, such as "the 'material' at line 4". */
-    public List<String> unwritten() {
-        return unwritten;
-    }
-
     /**
      * This table in the making: notes, while a scene is read, which numbers of each statement use the clock.
      * {@link SceneContents} tells it what each statement made; a statement none of whose numbers uses the
-     * clock leaves no trace.
+     * clock leaves no trace. A second {@code ambient} or camera is a mistake: that scene is never made.
      */
     static final class Recorder {
 
@@ -92,23 +67,18 @@ public final class ClockedScene {
             }
         }
 
-        /** The statement of {@code v} is the scene's {@code ambient} (a second is a mistake: that scene is never made). */
         void ambient(StatementValues v) {
             ambient = ClockFields.of(v);
         }
 
-        /** The statement of {@code v} made the scene's camera (a second is a mistake: that scene is never made). */
         void camera(StatementValues v) {
             camera = ClockFields.of(v);
         }
 
         /** The statement of {@code v} made something whose numbers the table does not carry. */
         void unwritten(StatementValues v) {
-            if (ClockFields.of(v).isEmpty()) {
-                return;
-            }
             String statement = "the '" + v.statement().keyword() + "' at line " + v.line();
-            if (!unwritten.contains(statement)) { // an area light makes many lights
+            if (!ClockFields.of(v).isEmpty() && !unwritten.contains(statement)) { // an area light makes many lights
                 unwritten.add(statement);
             }
         }

@@ -19,19 +19,16 @@ public sealed interface Expression {
     /** The value at {@code clock}; a part whose value is not finite throws, naming itself. */
     double value(double clock) throws NotFinite;
 
-    /** Whether the value depends on the clock. */
-    boolean usesClock();
+    /** Whether the value depends on the clock: a number's does not. */
+    default boolean usesClock() {
+        return false;
+    }
 
     /** A number as written, read as a double. */
     record Number(double number, int start) implements Expression {
         @Override
         public double value(double clock) {
             return number;
-        }
-
-        @Override
-        public boolean usesClock() {
-            return false;
         }
     }
 
@@ -130,7 +127,7 @@ public sealed interface Expression {
     /** A part of an expression whose value is NaN or infinite, such as {@code 1/0} or {@code sqrt(-1)}. */
     final class NotFinite extends Exception {
         private static final long serialVersionUID = 1L;
-        /** The part, and what went wrong if it can tell ("divides by 0"), or null. */
+        /** The part, what went wrong if it can tell ("divides by 0") or null, and its value. */
         final transient Expression part;
         final String why;
         final double value;

@@ -2,6 +2,7 @@ package rtd.io;
 
 import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.DoubleBinaryOperator;
 import java.util.function.DoubleUnaryOperator;
 
@@ -46,20 +47,14 @@ enum ExpressionFunction {
 
     /** The function named {@code name} (as written in a scene, lower case), or null. */
     static ExpressionFunction named(String name) {
-        for (ExpressionFunction function : values()) {
-            if (function.spelling().equals(name)) {
-                return function;
-            }
-        }
-        return null;
+        return Arrays.stream(values()).filter(function -> function.spelling().equals(name)).findFirst().orElse(null);
     }
 
     /** The name as a scene writes it: {@code sin}, {@code atan2}. */
     String spelling() {
-        return name().toLowerCase(java.util.Locale.ROOT);
+        return name().toLowerCase(Locale.ROOT);
     }
 
-    /** How many arguments it takes: 1 or 2. */
     int arity() {
         return one != null ? 1 : 2;
     }

@@ -54,26 +54,21 @@ final class ExpressionParser {
 
     private Expression sum() throws StatementError {
         Expression left = product();
-        while (true) {
-            cursor.skipBlanks();
-            if (!cursor.at('+') && !cursor.at('-')) {
-                return left;
-            }
+        for (cursor.skipBlanks(); cursor.at('+') || cursor.at('-'); cursor.skipBlanks()) {
             int at = operator();
-            left = new Expression.Operation(cursor.bytes[at] == '+' ? '+' : '-', left, product(), at);
+            left = new Expression.Operation((char) cursor.bytes[at], left, product(), at);
         }
+        return left;
     }
 
+    /** A '/' that starts a {@code //} comment ends the expression. */
     private Expression product() throws StatementError {
         Expression left = unary();
-        while (true) {
-            cursor.skipBlanks();
-            if (!cursor.at('*') && !(cursor.at('/') && !atComment())) {
-                return left;
-            }
+        for (cursor.skipBlanks(); cursor.at('*') || cursor.at('/') && !cursor.atEndOfStatement(); cursor.skipBlanks()) {
             int at = operator();
-            left = new Expression.Operation(cursor.bytes[at] == '*' ? '*' : '/', left, unary(), at);
+            left = new Expression.Operation((char) cursor.bytes[at], left, unary(), at);
         }
+        return left;
     }
 
     /** A minus sign binds looser than {@code ^}: {@code -2^2} is {@code -(2^2)}. */
@@ -113,10 +108,10 @@ final class ExpressionParser {
             expectClosing(open, "the '('");
             return inner;
         }
-        if (cursor.pos < cursor.bytes.length && isDigitOrPoint(cursor.bytes[cursor.pos])) {
+        if (isDigitOrPoint(next())) {
             return number();
         }
-        if (cursor.pos < cursor.bytes.length && isLetter(cursor.bytes[cursor.pos])) {
+        if (isLetter(next())) {
             return nameOrCall();
         }
         throw cursor.error(cursor.pos, "expected a number, a name or '(' in an expression, found "
@@ -126,25 +121,24 @@ final class ExpressionParser {
     /** Digits with an optional point and exponent, read as a double. */
     private Expression number() throws StatementError {
         int start = cursor.pos;
-        byte[] bytes = cursor.bytes;
-        while (cursor.pos < bytes.length && isDigitOrPoint(bytes[cursor.pos])) {
+        while (isDigitOrPoint(next())) {
             cursor.pos++;
         }
         int beforeExponent = cursor.pos;
-        if (cursor.pos < bytes.length && (bytes[cursor.pos] == 'e' || bytes[cursor.pos] == 'E')) {
+        if (cursor.at('e') || cursor.at('E')) {
             cursor.pos++;
-            if (cursor.pos < bytes.length && (bytes[cursor.pos] == '+' || bytes[cursor.pos] == '-')) {
+            if (cursor.at('+') || cursor.at('-')) {
                 cursor.pos++;
             }
             int digits = cursor.pos;
-            while (cursor.pos < bytes.length && bytes[cursor.pos] >= '0' && bytes[cursor.pos] <= '9') {
+            while (next() >= '0' && next() <= '9') {
                 cursor.pos++;
             }
             if (cursor.pos == digits) {
                 cursor.pos = beforeExponent; // "2e" is no exponent: the 'e' is left for the next token
             }
         }
-        String text = new String(bytes, start, cursor.pos - start, StandardCharsets.US_ASCII);
+        String text = new String(cursor.bytes, start, cursor.pos - start, StandardCharsets.US_ASCII);
         try {
             return new Expression.Number(Double.parseDouble(text), start);
         } catch (NumberFormatException e) { // "1.2.3", "."
@@ -155,11 +149,9 @@ final class ExpressionParser {
     /** A word: a function if '(' follows it, else a name. */
     private Expression nameOrCall() throws StatementError {
         int start = cursor.pos;
-        while (cursor.pos < cursor.bytes.length && TextBytes.isWordByte(cursor.bytes[cursor.pos])) {
-            cursor.pos++;
-        }
-        String word = cursor.source.text(start, cursor.pos);
-        int end = cursor.pos;
+        int end = cursor.afterWord(start);
+        String word = cursor.source.text(start, end);
+        cursor.pos = end;
         cursor.skipBlanks();
         ExpressionFunction function = ExpressionFunction.named(word);
         if (cursor.at('(')) {
@@ -196,8 +188,9 @@ final class ExpressionParser {
         }
         expectClosing(open, "'" + function.spelling() + "('");
         if (arguments.size() != function.arity()) {
-            throw cursor.error(start, "'" + function.spelling() + "' takes " + count(function.arity()) + ", found "
-                    + arguments.size(), "write it as " + function.usage());
+            String takes = function.arity() == 1 ? "1 argument" : function.arity() + " arguments";
+            throw cursor.error(start, "'" + function.spelling() + "' takes " + takes + ", found " + arguments.size(),
+                    "write it as " + function.usage());
         }
         return new Expression.Call(function, arguments, start);
     }
@@ -262,16 +255,16 @@ final class ExpressionParser {
     }
 
     private boolean startsOperand() {
-        return cursor.pos < cursor.bytes.length && (isDigitOrPoint(cursor.bytes[cursor.pos])
-                || isLetter(cursor.bytes[cursor.pos]) || cursor.bytes[cursor.pos] == '(');
+        return isDigitOrPoint(next()) || isLetter(next()) || cursor.at('(');
+    }
+
+    /** The byte at the cursor; 0, which starts nothing, at the end of the file. */
+    private byte next() {
+        return cursor.pos < cursor.bytes.length ? cursor.bytes[cursor.pos] : 0;
     }
 
     private boolean atGroupEnd() {
         return cursor.at('|') || cursor.at(')') || cursor.atEndOfStatement();
-    }
-
-    private boolean atComment() {
-        return cursor.pos + 1 < cursor.bytes.length && cursor.bytes[cursor.pos + 1] == '/';
     }
 
     /** The end of the expression read so far, before the blanks after it. */
@@ -281,10 +274,6 @@ final class ExpressionParser {
             end--;
         }
         return end;
-    }
-
-    private static String count(int arguments) {
-        return arguments == 1 ? "1 argument" : arguments + " arguments";
     }
 
     static boolean isLetter(byte b) {

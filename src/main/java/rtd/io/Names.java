@@ -5,6 +5,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.stream.Stream;
 
 /**
  * The names an expression may use while one scene file is read (Part III, "Expressions, named values and the
@@ -16,16 +17,11 @@ final class Names {
 
     private final double clock;
     private final Map<String, Expression> defined = new HashMap<>();
+    /** The line of each name's {@code let}, those with a mistake among them (a broken name is not in {@link #defined}). */
     private final Map<String, Integer> lines = new HashMap<>();
-    private final Map<String, Integer> broken = new HashMap<>();
     private boolean clockUsed;
     /** Where the reading notes each statement's numbers that use the clock, for {@link SceneFile#withClock}. */
     final ClockedScene.Recorder recorder;
-
-    /** The names of a reading at {@code clock}, whose numbers that use the clock nobody asks for. */
-    Names(double clock) {
-        this(clock, new ClockedScene.Recorder());
-    }
 
     /** The names of a reading at {@code clock} that tells {@code recorder} the numbers that use it. */
     Names(double clock, ClockedScene.Recorder recorder) {
@@ -38,13 +34,8 @@ final class Names {
      * of {@code (at x|y|z)}; made when a name is first checked, so a file of plain numbers never needs them.
      */
     private static final class Reserved {
-        static final Set<String> WORDS = reserved();
-    }
-
-    private static Set<String> reserved() {
-        List<String> words = new ArrayList<>(ExpressionFunction.NAMES);
-        words.addAll(List.of("clock", "pi", "at", "NaN", "Infinity"));
-        return Set.copyOf(words);
+        static final Set<String> WORDS = Set.copyOf(Stream.concat(ExpressionFunction.NAMES.stream(),
+                Stream.of("clock", "pi", "at", "NaN", "Infinity")).toList());
     }
 
     double clock() {
@@ -56,7 +47,6 @@ final class Names {
         return clockUsed;
     }
 
-    /** Notes that a number used the clock. */
     void noteClockUse() {
         clockUsed = true;
     }
@@ -73,20 +63,18 @@ final class Names {
         return definition == null ? null : new Expression.Name(word, definition, start);
     }
 
-    /** Whether {@code word} is one a {@code let} may not take. */
     static boolean isReserved(String word) {
         return Reserved.WORDS.contains(word);
     }
 
     /** The line of the {@code let} that defined {@code name}, or of the broken one that tried to; or null. */
     Integer lineOf(String name) {
-        Integer line = lines.get(name);
-        return line != null ? line : broken.get(name);
+        return lines.get(name);
     }
 
     /** Whether {@code name} has a {@code let} with a mistake, which is reported there. */
     boolean isBroken(String name) {
-        return broken.containsKey(name);
+        return lines.containsKey(name) && !defined.containsKey(name);
     }
 
     /** Defines {@code name} as {@code definition}, by the {@code let} at {@code line}. */
@@ -97,16 +85,13 @@ final class Names {
 
     /** Notes a {@code let} of {@code name} at {@code line} that has a mistake: its uses are not told the name is unknown. */
     void defineBroken(String name, int line) {
-        if (!lines.containsKey(name)) {
-            broken.putIfAbsent(name, line);
-        }
+        lines.putIfAbsent(name, line);
     }
 
     /** The names known now, those of broken lets among them, for "did you mean …?". */
     List<String> known() {
         List<String> known = new ArrayList<>(List.of("clock", "pi"));
-        known.addAll(defined.keySet());
-        known.addAll(broken.keySet());
+        known.addAll(lines.keySet());
         return known;
     }
 }

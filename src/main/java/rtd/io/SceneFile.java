@@ -12,7 +12,7 @@ import rtd.scene.Scene;
  * A scene file read into memory once, to be parsed at any clock (Part III, "Expressions, named values and the
  * clock"): each frame of an animation is the file parsed at its own clock, and the OBJ files of its meshes are
  * read once for all frames. After the first parse it tells whether any number uses the clock; if none does,
- * every frame is the same picture.
+ * every frame is the same picture. It is the one way in to reading a scene: {@link SceneIO} reads one at clock 0.
  */
 public final class SceneFile {
 
@@ -36,21 +36,17 @@ public final class SceneFile {
         return new SceneFile(name, SceneFileReader.read(path), folder);
     }
 
-    /** The scene file at {@code path}, its meshes found from its folder, as {@link SceneIO#readScene(Path)}. */
+    /** The scene file at {@code path}, its meshes found from its folder. */
     public static SceneFile read(Path path) throws IOException {
         return read(path, path.toString(), path.getParent() == null ? Path.of("") : path.getParent());
     }
 
     /** A scene read from {@code in} (at most {@link SceneIO#MAX_SCENE_BYTES}), named {@code name}. */
     public static SceneFile read(InputStream in, String name) throws IOException {
-        byte[] bytes = in.readNBytes((int) SceneIO.MAX_SCENE_BYTES + 1);
-        if (bytes.length > SceneIO.MAX_SCENE_BYTES) {
-            throw new FileSystemException(name, null, "it is larger than " + SceneFileReader.bytes(SceneIO.MAX_SCENE_BYTES));
-        }
-        return new SceneFile(name, bytes, Path.of(""));
+        return new SceneFile(name, SceneFileReader.read(in, name, (int) SceneIO.MAX_SCENE_BYTES), Path.of(""));
     }
 
-    /** A scene of {@code text}'s bytes, as {@link SceneIO#parseScene(String, byte[], Path, List)} reads them. */
+    /** A scene of {@code bytes}, named {@code name} in messages, its meshes found from {@code folder}. */
     public static SceneFile of(String name, byte[] bytes, Path folder) {
         return new SceneFile(name, bytes, folder);
     }
@@ -66,7 +62,7 @@ public final class SceneFile {
      * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
      */
     public Scene at(double clock, List<SceneError> warnings) throws SceneException {
-        return parse(new Names(clock), warnings);
+        return parse(new Names(clock, new ClockedScene.Recorder()), warnings);
     }
 
     /**

@@ -29,22 +29,22 @@ final class SceneFileReader {
 
     /** As {@link #read(Path)}, with a limit of {@code limit} bytes (at most {@link SceneIO#MAX_SCENE_BYTES}). */
     static byte[] read(Path path, long limit) throws IOException {
-        long size = Files.isRegularFile(path) ? Files.size(path) : -1; // devices, FIFOs: unknown
-        if (size > limit) {
-            throw tooLarge(path, "is " + bytes(size), limit);
-        }
-        if (size >= 0) {
-            // A regular file of known size is bounded already: it is read whole, and the parser
-            // checks its text before reading any statement.
-            byte[] bytes = readWhole(path, size);
-            if (bytes.length > limit) { // it grew while we read it
-                throw tooLarge(path, "is larger than " + bytes(limit), limit);
+        if (!Files.isRegularFile(path)) { // devices, FIFOs: of unknown length
+            try (InputStream in = Files.newInputStream(path)) {
+                return read(in, path.toString(), (int) limit);
             }
-            return bytes;
         }
-        try (InputStream in = Files.newInputStream(path)) {
-            return readStream(path, in, (int) limit);
+        long size = Files.size(path);
+        if (size > limit) {
+            throw tooLarge(path.toString(), "is " + bytes(size), limit);
         }
+        // A regular file of known size is bounded already: it is read whole, and the parser checks its text
+        // before reading any statement.
+        byte[] bytes = readWhole(path);
+        if (bytes.length > limit) { // it grew while we read it
+            throw tooLarge(path.toString(), "is larger than " + bytes(limit), limit);
+        }
+        return bytes;
     }
 
     /**
@@ -53,13 +53,8 @@ final class SceneFileReader {
      * as large as the file).
      */
     static byte[] readWhole(Path path) throws IOException {
-        return readWhole(path, Files.size(path));
-    }
-
-    /** {@link #readWhole(Path)} of a file that had {@code size} bytes. */
-    private static byte[] readWhole(Path path, long size) throws IOException {
         try (InputStream in = Files.newInputStream(path)) {
-            byte[] bytes = new byte[(int) size];
+            byte[] bytes = new byte[(int) Files.size(path)];
             int filled = 0;
             while (filled < bytes.length) {
                 int read = in.read(bytes, filled, Math.min(WHOLE_FILE_PIECE, bytes.length - filled));
@@ -69,27 +64,24 @@ final class SceneFileReader {
                 filled += read;
             }
             byte[] more = in.readAllBytes(); // what it grew by, in small reads
-            if (more.length == 0) {
-                return bytes;
-            }
-            byte[] all = Arrays.copyOf(bytes, Math.addExact(bytes.length, more.length));
+            byte[] all = more.length == 0 ? bytes : Arrays.copyOf(bytes, Math.addExact(bytes.length, more.length));
             System.arraycopy(more, 0, all, bytes.length, more.length);
             return all;
         }
     }
 
     /**
-     * A stream of unknown length, read in chunks up to the first with a byte that is not text, or past the
-     * limit.
+     * A stream of unknown length named {@code name}, read in chunks up to the first with a byte that is not
+     * text, or past {@code limit} bytes.
      */
-    private static byte[] readStream(Path path, InputStream in, int limit) throws IOException {
+    static byte[] read(InputStream in, String name, int limit) throws IOException {
         byte[] bytes = new byte[Math.min(limit + 1, CHUNK)];
         int filled = 0;
         int checked = 0;
         while (true) {
             if (filled == bytes.length) {
                 if (filled > limit) {
-                    throw tooLarge(path, "is larger than " + bytes(limit), limit);
+                    throw tooLarge(name, "is larger than " + bytes(limit), limit);
                 }
                 bytes = Arrays.copyOf(bytes, (int) Math.min(limit + 1L, 2L * bytes.length));
             }
@@ -107,13 +99,13 @@ final class SceneFileReader {
         return filled == bytes.length ? bytes : Arrays.copyOf(bytes, filled);
     }
 
-    private static FileSystemException tooLarge(Path path, String size, long limit) {
-        return new FileSystemException(path.toString(), null, "it " + size + "; rtd reads scene files of at most "
+    private static FileSystemException tooLarge(String name, String size, long limit) {
+        return new FileSystemException(name, null, "it " + size + "; rtd reads scene files of at most "
                 + bytes(limit) + " (a scene of a million spheres is about 50 MiB)");
     }
 
     /** {@code bytes} in the largest binary unit that keeps a digit before the point: "3.0 GiB", "12.5 MiB". */
-    static String bytes(long bytes) {
+    private static String bytes(long bytes) {
         String[] units = {"bytes", "KiB", "MiB", "GiB", "TiB"};
         int unit = 0;
         double value = bytes;

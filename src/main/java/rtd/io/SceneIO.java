@@ -4,10 +4,7 @@ import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
-import java.io.OutputStreamWriter;
-import java.io.Writer;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -17,8 +14,9 @@ import rtd.image.Picture;
 import rtd.scene.Scene;
 
 /**
- * Input and output (paper, sections 4.1 and 4.3): reads a scene file, writes the picture as a
- * PNG, or in another format that {@code javax.imageio} writes ({@link ImageWriting}).
+ * Input and output (paper, sections 4.1 and 4.3): reads a scene file at clock 0 (a {@link SceneFile} read
+ * once), writes the picture as a PNG, or in another format that {@code javax.imageio} writes
+ * ({@link ImageWriting}). Every warning list may be null: the warnings are dropped.
  */
 public final class SceneIO {
 
@@ -43,26 +41,17 @@ public final class SceneIO {
 
     /** As {@link #readScene(Path)}, adding to {@code warnings} the likely slips that are no mistakes. */
     public static Scene readScene(Path path, List<SceneError> warnings) throws SceneException, IOException {
-        if (Files.isDirectory(path)) {
-            throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
-        }
-        Path folder = path.getParent() == null ? Path.of("") : path.getParent();
-        return parse(new SourceText(path.toString(), SceneFileReader.read(path), folder, null), warnings);
+        return SceneFile.read(path).at(0, warnings);
     }
 
     /** As {@link #readScene(Path, List)}, named {@code name} in messages: {@code <stdin>} for {@code /dev/stdin}. */
     public static Scene readScene(Path path, String name, List<SceneError> warnings) throws SceneException, IOException {
-        return parseScene(name, SceneFileReader.read(path), Path.of(""), warnings);
+        return SceneFile.read(path, name, Path.of("")).at(0, warnings);
     }
 
     /** Reads a scene from {@code in} (all of it, up to {@link #MAX_SCENE_BYTES}), where there is no {@code /dev/stdin}. */
     public static Scene readScene(InputStream in, String name, List<SceneError> warnings) throws SceneException, IOException {
-        byte[] bytes = in.readNBytes((int) MAX_SCENE_BYTES + 1);
-        if (bytes.length > MAX_SCENE_BYTES) {
-            throw new FileSystemException(name, null, "it is larger than " + SceneFileReader.bytes(MAX_SCENE_BYTES)
-                    + "; rtd reads scene files of at most " + SceneFileReader.bytes(MAX_SCENE_BYTES));
-        }
-        return parseScene(name, bytes, Path.of(""), warnings);
+        return SceneFile.read(in, name).at(0, warnings);
     }
 
     /** Reads a scene from {@code text}, named {@code name} in messages; meshes are found from the current directory. */
@@ -80,20 +69,10 @@ public final class SceneIO {
         return parseScene(name, text.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
     }
 
-    /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}; warnings go to {@code warnings} (null: dropped). */
+    /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}. */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
-        return parse(new SourceText(name, bytes, meshFolder, null), warnings);
-    }
-
-    /**
-     * Parses {@code source} at clock 0, and then closes it: the scene needs its bytes no more (a
-     * {@link SceneFile}, read for many clocks, keeps them).
-     */
-    private static Scene parse(SourceText source, List<SceneError> warnings) throws SceneException {
-        try (source) {
-            return SceneParser.parse(source, new Names(0), warnings);
-        }
+        return SceneFile.of(name, bytes, meshFolder).at(0, warnings);
     }
 
     /**
@@ -103,31 +82,12 @@ public final class SceneIO {
      */
     public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
             throws IOException {
-        TemporaryFiles.Replacement temporary = TemporaryFiles.create(output);
-        try {
-            try (OutputStream out = new BufferedOutputStream(temporary.out(), 1 << 16)) {
-                ImageWriting.write(picture, format, out, progress);
-            }
-            temporary.commit();
-        } catch (IOException | RuntimeException | Error e) {
-            temporary.discard();
-            throw e;
-        }
+        TemporaryFiles.replace(output, out -> ImageWriting.write(picture, format, out, progress));
     }
 
     /** Writes {@code text} in UTF-8 to {@code output} as {@link #writeImage} writes a picture: whole, or not at all. */
     public static void writeText(String text, Path output) throws IOException {
-        TemporaryFiles.Replacement temporary = TemporaryFiles.create(output);
-        try {
-            try (Writer out = new OutputStreamWriter(new BufferedOutputStream(temporary.out(), 1 << 16),
-                    StandardCharsets.UTF_8)) {
-                out.write(text);
-            }
-            temporary.commit();
-        } catch (IOException | RuntimeException | Error e) {
-            temporary.discard();
-            throw e;
-        }
+        TemporaryFiles.replace(output, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
     }
 
     /**

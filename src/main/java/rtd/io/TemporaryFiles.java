@@ -1,5 +1,6 @@
 package rtd.io;
 
+import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
@@ -20,10 +21,7 @@ import java.util.concurrent.ThreadLocalRandom;
  */
 final class TemporaryFiles {
 
-    /**
-     * The most bytes of the output's name kept in the temporary name: with the 22 bytes added it stays
-     * within the 255 that most file systems allow.
-     */
+    /** The most bytes of the output's name kept: with the 22 bytes added it stays within most file systems' 255. */
     static final int MAX_NAME_BYTES = 200;
 
     private static final Set<Path> OPEN = new HashSet<>();
@@ -40,10 +38,26 @@ final class TemporaryFiles {
     private TemporaryFiles() {
     }
 
-    /**
-     * A new temporary file beside {@code output}, open for writing and removed by the shutdown hook until it
-     * is committed or discarded; never one that exists.
-     */
+    /** What writes a file's bytes into a stream, which is closed after. */
+    interface Writing {
+        void into(OutputStream out) throws IOException;
+    }
+
+    /** Writes {@code output} with {@code writing} through a temporary file: whole, or not at all. */
+    static void replace(Path output, Writing writing) throws IOException {
+        Replacement temporary = create(output);
+        try {
+            try (OutputStream out = new BufferedOutputStream(temporary.out(), 1 << 16)) {
+                writing.into(out);
+            }
+            temporary.commit();
+        } catch (IOException | RuntimeException | Error e) {
+            temporary.discard();
+            throw e;
+        }
+    }
+
+    /** A new temporary file beside {@code output}, open for writing; never one that exists. */
     static synchronized Replacement create(Path output) throws IOException {
         if (stopping) {
             throw new IOException("rtd is stopping");
@@ -58,13 +72,7 @@ final class TemporaryFiles {
         return new Replacement(temporary, output, out);
     }
 
-    /**
-     * A temporary file being written, and the output it replaces once complete: all or nothing.
-     *
-     * @param path   the temporary file
-     * @param output the file it becomes
-     * @param out    the stream that writes it
-     */
+    /** A temporary file at {@code path} being written by {@code out}, and the {@code output} it replaces once complete. */
     record Replacement(Path path, Path output, OutputStream out) {
 
         /** Moves the written file over the output (atomically where the file system can). */
@@ -94,17 +102,12 @@ final class TemporaryFiles {
 
     /** The name of a temporary file for {@code outputName}: {@code .NAME.<hex>.tmp}, NAME cut short if long. */
     static String name(String outputName, long random) {
-        return "." + prefix(outputName, MAX_NAME_BYTES) + "." + String.format("%016x", random) + ".tmp";
-    }
-
-    /** The longest start of {@code name} that is at most {@code maxBytes} in UTF-8, cut between characters. */
-    private static String prefix(String name, int maxBytes) {
-        byte[] bytes = name.getBytes(StandardCharsets.UTF_8);
-        int cut = Math.min(bytes.length, maxBytes);
+        byte[] bytes = outputName.getBytes(StandardCharsets.UTF_8);
+        int cut = Math.min(bytes.length, MAX_NAME_BYTES);
         while (cut < bytes.length && cut > 0 && (bytes[cut] & 0xC0) == 0x80) {
             cut--; // not inside a character of several bytes
         }
-        return new String(bytes, 0, cut, StandardCharsets.UTF_8);
+        return "." + new String(bytes, 0, cut, StandardCharsets.UTF_8) + "." + String.format("%016x", random) + ".tmp";
     }
 
     private static synchronized void removeAll() {
