@@ -1,12 +1,12 @@
 package rtd.io;
 
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import rtd.io.SceneContents.Definition;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
@@ -23,13 +23,9 @@ import rtd.math.Matrix4;
 final class DefinedNames {
 
     /**
-     * What an object's names mean (Part III, "Transformations" and "Patterns"): the material and transform its
-     * last groups name, the pattern its colour group names.
-     *
-     * @param material  the finish ({@link Material#DEFAULT} if none is named)
-     * @param pattern   the pattern, or null
-     * @param transform the transformation, or null
-     * @param names     the names used, for the warnings about materials that no object names
+     * What an object's names mean (Part III, "Transformations" and "Patterns"): the finish its last groups name
+     * ({@link Material#DEFAULT} if none), the transform (or null), the pattern its colour group names (or null),
+     * and the names used, for the warnings about definitions that no object names.
      */
     record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<String> names) {
 
@@ -63,50 +59,36 @@ final class DefinedNames {
     private final Set<String> broken;
     /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
     private final boolean onlyMaterials;
-    /** The patterns and transforms, in file order, for the warning about those nothing names. */
-    private final List<Definition> patternsAndTransforms = new ArrayList<>();
+    private final List<Definition> definitions;
     /** The transforms that patterns name. */
     private final Set<String> namedByPatterns = new HashSet<>();
 
     /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
     DefinedNames(SceneContents contents, List<SceneContents.Found> errors) {
         broken = contents.brokenDefinitions;
-        onlyMaterials = contents.patterns.isEmpty() && contents.transforms.isEmpty();
-        List<Definition> all = new ArrayList<>();
-        contents.materials.forEach(d -> all.add(new Definition(d.value().name(), "material", d.value().material(), d.place())));
-        contents.transforms.forEach(d -> all.add(new Definition(d.value().name(), "transform", d.value().matrix(), d.place())));
-        contents.patterns.forEach(d -> all.add(new Definition(d.value().name(), "pattern", d.value(), d.place())));
-        all.sort(Comparator.comparingInt((Definition d) -> d.place().line()).thenComparingInt(d -> d.place().column()));
+        definitions = contents.definitions;
+        onlyMaterials = definitions.stream().allMatch(definition -> definition.kind().equals("material"));
         Map<String, SceneError> first = new HashMap<>();
-        for (Definition definition : all) {
-            define(definition.name(), definition.kind(), definition.value(), definition.place(), first, errors);
-            if (!definition.kind().equals("material")) {
-                patternsAndTransforms.add(definition);
+        definitions.forEach(definition -> define(definition, first, errors));
+        for (Definition definition : definitions) { // a pattern's transform may be defined below it
+            if (definition.transform() != null) {
+                namedByPatterns.add(definition.transform());
             }
-        }
-        for (var definition : contents.patterns) { // a pattern's transform may be defined below it
-            var named = definition.value();
-            if (named.transform() != null) {
-                namedByPatterns.add(named.transform());
-            }
-            if (defined.get(named.name()) == named) {
-                Matrix4 matrix = named.transform() == null ? Matrix4.IDENTITY
-                        : lookUp(named.transform(), "transform", named.transformPlace(), errors);
-                Pattern p = named.pattern();
-                defined.put(named.name(), new Pattern(p.kind(), p.a(), p.b(), matrix == null ? Matrix4.IDENTITY : matrix));
+            if (definition.value() instanceof Pattern p && defined.get(definition.name()) == p) {
+                Matrix4 matrix = definition.transform() == null ? Matrix4.IDENTITY
+                        : lookUp(definition.transform(), "transform", definition.transformPlace(), errors);
+                defined.put(definition.name(), new Pattern(p.kind(), p.a(), p.b(), matrix == null ? Matrix4.IDENTITY : matrix));
             }
         }
     }
 
-    /** One definition of a name, with the place of its name. */
-    private record Definition(String name, String kind, Object value, SceneError place) {
-    }
-
-    private void define(String name, String kind, Object value, SceneError place, Map<String, SceneError> first,
-            List<SceneContents.Found> errors) {
+    private void define(Definition definition, Map<String, SceneError> first, List<SceneContents.Found> errors) {
+        String name = definition.name();
+        String kind = definition.kind();
+        SceneError place = definition.place();
         SceneError earlier = first.putIfAbsent(name, place);
         if (earlier == null) {
-            defined.put(name, value);
+            defined.put(name, definition.value());
             kinds.put(name, kind);
         } else if (kinds.get(name).equals(kind)) {
             errors.add(place.saying("a second " + kind + " '" + name + "': each name is defined once",
@@ -124,9 +106,9 @@ final class DefinedNames {
      */
     List<SceneError> unused(Set<String> named, int most) {
         List<SceneError> warnings = new ArrayList<>();
-        for (Definition definition : patternsAndTransforms) {
+        for (Definition definition : definitions) {
             String name = definition.name();
-            if (!named.contains(name) && !namedByPatterns.contains(name) && warnings.size() < most) {
+            if (!definition.kind().equals("material") && !named.contains(name) && !namedByPatterns.contains(name) && warnings.size() < most) {
                 boolean pattern = definition.kind().equals("pattern");
                 warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
                         + (pattern ? "no object names it" : "no object or pattern names it"), pattern

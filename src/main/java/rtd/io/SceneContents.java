@@ -15,9 +15,9 @@ import rtd.scene.Light;
 /**
  * What the statements of a scene file make, as {@link StatementReader} reads them (it is their
  * {@link Statement.Output}), before {@link SceneParser} checks what only the whole file can tell:
- * the objects, each {@code ambient}, camera and {@code material} with the place of its statement
- * (a scene may have only one of each, or one per name), the objects that wait for a material
- * defined further down, and the mistakes found.
+ * the objects, each {@code ambient}, camera and definition of a name with its place (a scene may have
+ * only one of each, or one per name), the objects that wait for a name defined further down, and the
+ * mistakes found.
  */
 final class SceneContents implements Statement.Output {
 
@@ -25,16 +25,16 @@ final class SceneContents implements Statement.Output {
     record Located<T>(T value, SceneError place) {
     }
 
-    /** A material and the name it is defined under. */
+    /** A material and the name it is defined under, as {@link MaterialWarnings} reads it. */
     record Named(String name, Material material) {
     }
 
-    /** A pattern, the name it is defined under, and the name of its transform (null: none) with its place. */
-    record NamedPattern(String name, Pattern pattern, String transform, SceneError transformPlace) {
-    }
-
-    /** A transformation and the name it is defined under. */
-    record NamedTransform(String name, Matrix4 matrix) {
+    /**
+     * A name's definition at {@code place} (its name's): a {@link Material}, {@link Pattern} or {@link Matrix4}
+     * as {@code kind} says; a pattern may name its {@code transform} (else null) at {@code transformPlace}.
+     */
+    record Definition(String name, String kind, Object value, SceneError place, String transform,
+            SceneError transformPlace) {
     }
 
     /** An object that names a material, built when every material is known: its values, and how many objects come before it. */
@@ -49,9 +49,8 @@ final class SceneContents implements Statement.Output {
     final List<Pending> pending = new ArrayList<>();
     final List<Located<Color>> ambients = new ArrayList<>();
     final List<Located<ICamera>> cameras = new ArrayList<>();
-    final List<Located<Named>> materials = new ArrayList<>();
-    final List<Located<NamedPattern>> patterns = new ArrayList<>();
-    final List<Located<NamedTransform>> transforms = new ArrayList<>();
+    /** The materials, patterns and transforms, in file order. */
+    final List<Definition> definitions = new ArrayList<>();
     final List<Light> lights = new ArrayList<>();
     final List<Found> errors = new ArrayList<>();
     /** Warnings that hold only if the scene has a light, in the order their statements were built. */
@@ -80,17 +79,35 @@ final class SceneContents implements Statement.Output {
         this.values = values;
     }
 
-    /** Builds the pending statement {@code pending} into {@code list}; the objects it makes go there. */
-    void buildInto(StatementValues pending, List<IGeometry> list) throws StatementError {
-        StatementValues reading = values;
-        values = pending;
-        into = list;
-        try {
-            pending.statement().builder().build(pending, this);
-        } finally {
-            values = reading;
-            into = objects;
+    /**
+     * Once every line is read: every object in file order, those that name a material, pattern or transform
+     * built now with {@code names}; the names they use go to {@code named}. A name that is unknown or of the
+     * wrong kind is an error (unless its definition is broken, which is reported already); the statement is
+     * still checked.
+     */
+    List<IGeometry> allObjects(DefinedNames names, Set<String> named) {
+        if (pending.isEmpty()) {
+            return objects;
         }
+        List<IGeometry> all = new ArrayList<>(objects.size() + pending.size());
+        int next = 0;
+        for (Pending object : pending) {
+            all.addAll(objects.subList(next, object.index()));
+            next = object.index();
+            int before = errors.size();
+            DefinedNames.ObjectNames resolved = names.of(object.values(), errors);
+            named.addAll(resolved.names());
+            values = object.values();
+            values.useNames(resolved);
+            into = errors.size() > before ? new ArrayList<>() : all; // with a name not right, the object is only checked
+            try {
+                values.statement().builder().build(values, this);
+            } catch (StatementError e) {
+                addErrors(e);
+            }
+        }
+        all.addAll(objects.subList(next, objects.size()));
+        return all;
     }
 
     @Override
@@ -132,21 +149,29 @@ final class SceneContents implements Statement.Output {
 
     @Override
     public void material(String name, Material material) {
-        materials.add(new Located<>(new Named(name, material), values.placeOfValue(0, 0)));
-        recorder().unwritten(values);
+        define(name, "material", material, null);
     }
 
     @Override
     public void pattern(String name, Pattern pattern, String transform) {
-        SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
-        patterns.add(new Located<>(new NamedPattern(name, pattern, transform, transformPlace), values.placeOfValue(0, 0)));
-        recorder().unwritten(values);
+        define(name, "pattern", pattern, transform);
     }
 
     @Override
     public void transform(String name, Matrix4 transform) {
-        transforms.add(new Located<>(new NamedTransform(name, transform), values.placeOfValue(0, 0)));
+        define(name, "transform", transform, null);
+    }
+
+    private void define(String name, String kind, Object value, String transform) {
+        SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
+        definitions.add(new Definition(name, kind, value, values.placeOfValue(0, 0), transform, transformPlace));
         recorder().unwritten(values);
+    }
+
+    /** The materials, as {@link MaterialWarnings} reads them. */
+    List<Located<Named>> materials() {
+        return definitions.stream().filter(d -> d.value() instanceof Material)
+                .map(d -> new Located<>(new Named(d.name(), (Material) d.value()), d.place())).toList();
     }
 
     /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */
@@ -161,9 +186,9 @@ final class SceneContents implements Statement.Output {
 
     /** The material {@code name} if it is defined above the line being read, else null. */
     Material materialAbove(String name) {
-        for (Located<Named> definition : materials) {
-            if (definition.value().name().equals(name)) {
-                return definition.value().material();
+        for (Definition definition : definitions) { // a loop: asked for each object of a large file
+            if (definition.value() instanceof Material material && definition.name().equals(name)) {
+                return material;
             }
         }
         return null;

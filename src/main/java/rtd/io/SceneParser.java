@@ -62,17 +62,11 @@ final class SceneParser {
         addLineNumbers(contents, errors);
         var ambients = contents.ambients;
         var cameras = contents.cameras;
-        for (var second : ambients.subList(Math.min(1, ambients.size()), ambients.size())) {
-            errors.add(second.place().saying("a second 'ambient': a scene has one background colour",
-                    "the first 'ambient' is at line " + ambients.get(0).place().line()).found());
-        }
-        for (var second : cameras.subList(Math.min(1, cameras.size()), cameras.size())) {
-            errors.add(second.place().saying("a second camera: a scene has one",
-                    "the first camera is at line " + cameras.get(0).place().line()).found());
-        }
+        onlyOne(ambients, "a second 'ambient': a scene has one background colour", "the first 'ambient'", errors);
+        onlyOne(cameras, "a second camera: a scene has one", "the first camera", errors);
         DefinedNames names = new DefinedNames(contents, errors);
         Set<String> named = new HashSet<>(contents.namedAtOnce);
-        List<IGeometry> objects = objects(contents, names, named, errors);
+        List<IGeometry> objects = contents.allObjects(names, named);
         if (errors.isEmpty() && contents.statementCount == 0) {
             errors.add(atStart(source, "the scene is empty: it has no statements, only blanks and comments",
                     "a scene needs at least a camera, such as " + CAMERA_EXAMPLE).found());
@@ -87,7 +81,7 @@ final class SceneParser {
         }
         if (warnings != null) {
             boolean lit = !contents.lights.isEmpty();
-            warnings.addAll(MaterialWarnings.of(contents.materials, named, lit));
+            warnings.addAll(MaterialWarnings.of(contents.materials(), named, lit));
             warnings.addAll(names.unused(named, MAX_ERRORS));
             if (lit) {
                 List<SceneError> acne = new ArrayList<>(contents.litWarnings);
@@ -99,6 +93,14 @@ final class SceneParser {
         return new Scene(ambient, cameras.get(0).value(), objects, contents.lights);
     }
 
+    /** An error at each of {@code found} after the first, which {@code first} names in the help. */
+    private static void onlyOne(List<? extends SceneContents.Located<?>> found, String second, String first,
+            List<SceneContents.Found> errors) {
+        for (var located : found.subList(Math.min(1, found.size()), found.size())) {
+            errors.add(located.place().saying(second, first + " is at line " + found.get(0).place().line()).found());
+        }
+    }
+
     /** The lines that start with a line number, as one mistake at the first of them. */
     private static void addLineNumbers(SceneContents contents, List<SceneContents.Found> errors) {
         SceneError first = contents.firstLineNumber;
@@ -106,42 +108,6 @@ final class SceneParser {
         if (first != null) {
             String more = count == 1 ? "" : count == 2 ? ", as does 1 more line" : ", as do " + (count - 1) + " more lines";
             errors.add(first.saying(first.message() + more, first.help()).found());
-        }
-    }
-
-    /** Every object in file order, those that name a material, pattern or transform built now; the names go to {@code named}. */
-    private static List<IGeometry> objects(SceneContents contents, DefinedNames names, Set<String> named,
-            List<SceneContents.Found> errors) {
-        if (contents.pending.isEmpty()) {
-            return contents.objects;
-        }
-        List<IGeometry> objects = new ArrayList<>(contents.objects.size() + contents.pending.size());
-        int next = 0;
-        for (SceneContents.Pending pending : contents.pending) {
-            objects.addAll(contents.objects.subList(next, pending.index()));
-            next = pending.index();
-            build(contents, pending.values(), names, objects, named, errors);
-        }
-        objects.addAll(contents.objects.subList(next, contents.objects.size()));
-        return objects;
-    }
-
-    /**
-     * Builds an object that names a material, pattern or transform into {@code objects}; the names it uses go
-     * to {@code named}. A name that is unknown or of the wrong kind is an error (unless its definition is
-     * broken, which is reported already); the statement is still checked.
-     */
-    private static void build(SceneContents contents, StatementValues values, DefinedNames names, List<IGeometry> objects,
-            Set<String> named, List<SceneContents.Found> errors) {
-        int before = errors.size();
-        DefinedNames.ObjectNames resolved = names.of(values, errors);
-        named.addAll(resolved.names());
-        values.useNames(resolved);
-        try {
-            // with a name that is not right the scene has errors: the object is only checked
-            contents.buildInto(values, errors.size() > before ? new ArrayList<>() : objects);
-        } catch (StatementError e) {
-            contents.addErrors(e);
         }
     }
 
