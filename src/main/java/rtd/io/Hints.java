@@ -1,10 +1,12 @@
 package rtd.io;
 
 import java.util.Collection;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.ToIntFunction;
 import java.util.regex.Pattern;
 
 /**
@@ -21,7 +23,6 @@ final class Hints {
     static final String NUMBER_FORMS = "numbers are written like 3 or -0.5 or .5 or 1. or 2e3";
     static final String LINE_NUMBERS = "it looks like the lines are numbered, as in the paper's listing: "
             + "remove the numbers at the start of each line";
-    /** The help for a number too large for a float ({@link #tooLarge}). */
     static final String FLOAT_RANGE = "a float holds numbers up to about 3.4e38";
     static final String SEMICOLON = "one statement per line, with nothing after it: remove the ';'";
 
@@ -31,7 +32,6 @@ final class Hints {
     private Hints() {
     }
 
-    /** For a second statement after the first on one line. */
     static String oneStatementPerLine(String keyword) {
         return "one statement per line: start a new line before '" + keyword + "'";
     }
@@ -70,8 +70,6 @@ final class Hints {
         return DECIMAL_COMMA.matcher(token).matches() ? "write decimals with a point: " + token.replace(',', '.') : NUMBER_FORMS;
     }
 
-    // ---- invisible characters ---------------------------------------------------------------
-
     /**
      * Whether a character shows as a blank or not at all, but is not one of the blanks of the
      * scene format (space, tab): U+00A0 NO-BREAK SPACE, U+200B ZERO WIDTH SPACE, U+FEFF…
@@ -87,19 +85,15 @@ final class Hints {
         return codePoint == 0xFEFF ? text + " (a byte-order mark)" : text;
     }
 
-    /** What to do about an invisible character. */
     static String forInvisible(int codePoint) {
-        String name = String.format("U+%04X", codePoint);
         if (codePoint == 0xFEFF) {
             return "a byte-order mark may stand only at the very start of a file (one gets inside when files are joined): "
                     + "delete it";
         }
         boolean looksLikeSpace = Character.isSpaceChar(codePoint) && !Character.getName(codePoint).contains("ZERO WIDTH");
-        return name + (looksLikeSpace ? " looks like a space but is not one: type a plain space instead"
+        return String.format("U+%04X", codePoint) + (looksLikeSpace ? " looks like a space but is not one: type a plain space instead"
                 : " cannot be seen but is there: delete it") + " (text copied from a PDF or a web page brings it)";
     }
-
-    // ---- did you mean ---------------------------------------------------------------------
 
     /**
      * Words people write for a statement, in English, in German (the paper's language) and from
@@ -126,7 +120,6 @@ final class Hints {
         synonyms("kegel", "cone");
         synonyms("arealight area softlight soft_light flaechenlicht", "area_light");
     }
-
 
     /** The help for a name in {@code group} from {@code start} followed by something else at the cursor; properties where a name belongs get their own. */
     static String forName(LineCursor cursor, Group group, int start) {
@@ -195,16 +188,10 @@ final class Hints {
      * length for long words. Case is ignored, so that {@code IOR} finds {@code ior}.
      */
     static String nearest(String word, Collection<String> candidates) {
-        String best = null;
-        int bestDistance = Integer.MAX_VALUE;
-        for (String candidate : candidates.stream().sorted().toList()) {
-            int distance = editDistance(word.toLowerCase(Locale.ROOT), candidate.toLowerCase(Locale.ROOT));
-            if (distance < bestDistance) {
-                bestDistance = distance;
-                best = candidate;
-            }
-        }
-        return best != null && bestDistance <= Math.max(2, best.length() / 3) ? best : null;
+        ToIntFunction<String> distance = candidate -> editDistance(word.toLowerCase(Locale.ROOT),
+                candidate.toLowerCase(Locale.ROOT));
+        return candidates.stream().sorted().min(Comparator.comparingInt(distance)) // min keeps the first of equals
+                .filter(best -> distance.applyAsInt(best) <= Math.max(2, best.length() / 3)).orElse(null);
     }
 
     /** The Levenshtein distance: the fewest single-character edits that turn a into b. */

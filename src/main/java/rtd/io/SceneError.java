@@ -1,5 +1,7 @@
 package rtd.io;
 
+import java.util.stream.Collectors;
+
 /**
  * One mistake in a scene file, located the way a compiler locates it.
  *
@@ -48,9 +50,7 @@ public record SceneError(String file, int line, int column, String message, Stri
         String number = String.valueOf(line);
         String gutter = " ".repeat(number.length() + 2);
         if (sourceLine != null) {
-            Window window = Window.around(sourceLine, column);
-            text.append(' ').append(number).append(" | ").append(window.shown()).append('\n');
-            text.append(gutter).append("| ").append(window.caretPadding()).append("^\n");
+            excerpt(text.append(' ').append(number).append(" | "), gutter);
         }
         if (help != null) {
             text.append(gutter).append("= help: ").append(help).append('\n');
@@ -58,40 +58,27 @@ public record SceneError(String file, int line, int column, String message, Stri
         return text.toString();
     }
 
+    /** At most {@value #WIDTH} characters of a long line shown, a caret under the column. */
+    private static final int WIDTH = 100;
+    /** How many characters of a long line are shown before the column. */
+    private static final int BEFORE = 40;
+
     /**
-     * The part of a long line shown: at most {@value #WIDTH} characters around the column, an ellipsis for
-     * each end cut off.
-     *
-     * @param shown        the text to print
-     * @param caretPadding what goes before the caret: spaces, and the line's tabs so that it lines up
+     * The part of the line shown around the column, an ellipsis for each end cut off, and the caret under it:
+     * what goes before the caret is spaces, and the line's tabs so that it lines up.
      */
-    private record Window(String shown, String caretPadding) {
-
-        static final int WIDTH = 100;
-        /** How many characters of a long line are shown before the column. */
-        static final int BEFORE = 40;
-
-        static Window around(String line, int column) {
-            int length = line.codePointCount(0, line.length());
-            int start = length <= WIDTH ? 0 : Math.max(0, Math.min(column - 1 - BEFORE, length - WIDTH));
-            int end = Math.min(length, start + WIDTH);
-            int from = line.offsetByCodePoints(0, start);
-            String part = line.substring(from, line.offsetByCodePoints(from, end - start));
-            String before = start > 0 ? "…" : "";
-            String after = end < length ? "…" : "";
-            return new Window(before + part + after, " ".repeat(before.length()) + padding(part, column - 1 - start));
-        }
-
-        /** {@code columns} columns of {@code part}: its tabs kept, everything else a space. */
-        private static String padding(String part, int columns) {
-            StringBuilder padding = new StringBuilder();
-            int offset = 0;
-            for (int i = 0; i < columns && offset < part.length(); i++) {
-                int codePoint = part.codePointAt(offset);
-                padding.append(codePoint == '\t' ? '\t' : ' ');
-                offset += Character.charCount(codePoint);
-            }
-            return padding.append(" ".repeat(Math.max(0, columns - padding.length()))).toString();
-        }
+    private void excerpt(StringBuilder text, String gutter) {
+        int length = sourceLine.codePointCount(0, sourceLine.length());
+        int start = length <= WIDTH ? 0 : Math.max(0, Math.min(column - 1 - BEFORE, length - WIDTH));
+        int end = Math.min(length, start + WIDTH);
+        int from = sourceLine.offsetByCodePoints(0, start);
+        String part = sourceLine.substring(from, sourceLine.offsetByCodePoints(from, end - start));
+        String before = start > 0 ? "…" : "";
+        text.append(before).append(part).append(end < length ? "…" : "").append('\n');
+        int columns = column - 1 - start;
+        String tabs = part.codePoints().limit(Math.max(0, columns)).mapToObj(c -> c == '\t' ? "\t" : " ")
+                .collect(Collectors.joining());
+        text.append(gutter).append("| ").append(" ".repeat(before.length())).append(tabs)
+                .append(" ".repeat(Math.max(0, columns - tabs.length()))).append("^\n");
     }
 }
