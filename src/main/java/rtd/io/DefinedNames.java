@@ -108,7 +108,8 @@ final class DefinedNames {
         List<SceneError> warnings = new ArrayList<>();
         for (Definition definition : definitions) {
             String name = definition.name();
-            if (!definition.kind().equals("material") && !named.contains(name) && !namedByPatterns.contains(name) && warnings.size() < most) {
+            boolean unnamed = !named.contains(name) && !namedByPatterns.contains(name);
+            if (!definition.kind().equals("material") && unnamed && warnings.size() < most) {
                 boolean pattern = definition.kind().equals("pattern");
                 warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
                         + (pattern ? "no object names it" : "no object or pattern names it"), pattern

@@ -3,6 +3,7 @@ package rtd.io;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * Reads one expression of a scene file into an {@link Expression} tree, by recursive descent: one method per
@@ -44,7 +45,7 @@ final class ExpressionParser {
         operators = 0;
         Expression expression = sum();
         cursor.skipBlanks();
-        if (startsOperand()) { // "2 x", "2(3)": a product needs its '*'
+        if (isDigitOrPoint(next()) || isLetter(next()) || cursor.at('(')) { // "2 x", "2(3)": a product needs its '*'
             throw cursor.error(cursor.pos, "expected " + OPERATORS + ", '|' or ')' after " + cursor.source.text(
                     expression.start(), lastNonBlank()) + ", found " + cursor.describe(cursor.pos),
                     "a product is written with '*', such as 2*x");
@@ -151,8 +152,7 @@ final class ExpressionParser {
         int start = cursor.pos;
         int end = cursor.afterWord(start);
         String word = cursor.source.text(start, end);
-        cursor.pos = end;
-        cursor.skipBlanks();
+        cursor.pos = cursor.afterSpaces(end);
         ExpressionFunction function = ExpressionFunction.named(word);
         if (cursor.at('(')) {
             if (function == null) {
@@ -178,13 +178,10 @@ final class ExpressionParser {
     /** The arguments of {@code function}, from its '(' to its ')': as many as it takes. */
     private Expression call(ExpressionFunction function, int start) throws StatementError {
         int open = cursor.pos++;
-        List<Expression> arguments = new ArrayList<>();
-        arguments.add(sum());
-        cursor.skipBlanks();
-        while (cursor.at(',')) {
+        List<Expression> arguments = new ArrayList<>(List.of(sum()));
+        for (cursor.skipBlanks(); cursor.at(','); cursor.skipBlanks()) {
             cursor.pos++;
             arguments.add(sum());
-            cursor.skipBlanks();
         }
         expectClosing(open, "'" + function.spelling() + "('");
         if (arguments.size() != function.arity()) {
@@ -234,8 +231,8 @@ final class ExpressionParser {
 
     /** {@code nearest} if it is a slip of {@code word}: an edit for every three letters, at least one; else null. */
     private static String near(String word, String nearest) {
-        return nearest != null && Hints.editDistance(word.toLowerCase(java.util.Locale.ROOT),
-                nearest.toLowerCase(java.util.Locale.ROOT)) <= Math.max(1, word.length() / 3) ? nearest : null;
+        return nearest != null && Hints.editDistance(word.toLowerCase(Locale.ROOT), nearest.toLowerCase(Locale.ROOT))
+                <= Math.max(1, word.length() / 3) ? nearest : null;
     }
 
     /** Passes the operator at the cursor and answers where it stands; one too many is a mistake. */
@@ -252,10 +249,6 @@ final class ExpressionParser {
             throw cursor.error(cursor.pos, "the expression is nested too deeply: more than " + MAX_DEPTH + " levels",
                     "split it with let:(name):(expression) lines");
         }
-    }
-
-    private boolean startsOperand() {
-        return isDigitOrPoint(next()) || isLetter(next()) || cursor.at('(');
     }
 
     /** The byte at the cursor; 0, which starts nothing, at the end of the file. */

@@ -2,11 +2,11 @@ package rtd.io;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.TreeSet;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageTypeSpecifier;
 import javax.imageio.ImageWriter;
@@ -32,24 +32,15 @@ public record ImageFormat(String extension) {
         return writerFor(extension.get()).isPresent() ? Optional.of(new ImageFormat(extension.get())) : Optional.empty();
     }
 
-    /**
-     * Whether this is {@link #PNG}, by the extension: the record's first {@code equals} sets up method
-     * handles.
-     */
+    /** Whether this is {@link #PNG}, by the extension: the record's first {@code equals} sets up method handles. */
     public boolean isPng() {
         return extension.equals(PNG.extension);
     }
 
     /** The extensions (lower case, sorted) whose format {@code javax.imageio} can write an RGB picture in. */
     public static List<String> writableExtensions() {
-        TreeSet<String> writable = new TreeSet<>();
-        for (String suffix : ImageIO.getWriterFileSuffixes()) {
-            String extension = suffix.toLowerCase(Locale.ROOT);
-            if (!extension.isEmpty() && writerFor(extension).isPresent()) {
-                writable.add(extension);
-            }
-        }
-        return List.copyOf(writable);
+        return Arrays.stream(ImageIO.getWriterFileSuffixes()).map(suffix -> suffix.toLowerCase(Locale.ROOT))
+                .filter(extension -> !extension.isEmpty() && writerFor(extension).isPresent()).distinct().sorted().toList();
     }
 
     /** The extension of the last name of {@code path} ("a.b.PNG" gives "png"); none for "a" and ".hidden". */

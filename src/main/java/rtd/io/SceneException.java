@@ -14,17 +14,13 @@ public final class SceneException extends Exception {
     private final transient List<SceneError> errors;
     private final boolean stoppedEarly;
 
-    /**
-     * An exception for the given errors, which must not be empty; {@code stoppedEarly} says
-     * that the file has more errors than these, which the reader did not keep.
-     */
+    /** The {@code errors}, at least one; {@code stoppedEarly}: the file has more, which the reader did not keep. */
     public SceneException(List<SceneError> errors, boolean stoppedEarly) {
         super(summary(errors), null, false, false);
         this.errors = List.copyOf(errors);
         this.stoppedEarly = stoppedEarly;
     }
 
-    /** The errors, in the order of the file. */
     public List<SceneError> errors() {
         return errors;
     }

@@ -27,12 +27,10 @@ final class StatementError extends Exception {
         this.errors = List.copyOf(errors);
     }
 
-    /** The place in the scene file by which the errors are ordered. */
     SceneError place() {
         return place;
     }
 
-    /** The errors, in order. */
     List<SceneError> errors() {
         return errors;
     }
