@@ -94,7 +94,6 @@ public final class AnimatedGif implements AutoCloseable {
     public void finish() throws IOException {
         writer.endWriteSequence();
         stream.flush();
-        out.flush();
         out.close();
         if (temporary != null) {
             temporary.commit();

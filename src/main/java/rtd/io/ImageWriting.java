@@ -54,10 +54,7 @@ public final class ImageWriting {
         return done;
     }
 
-    /**
-     * Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction
-     * written.
-     */
+    /** Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction written. */
     public static void write(Picture picture, ImageFormat format, OutputStream out, DoubleConsumer progress)
             throws IOException {
         ImageWriter writer = format.newWriter();
@@ -78,10 +75,7 @@ public final class ImageWriting {
         out.flush();
     }
 
-    /**
-     * The writer's defaults, but for PNG a low deflate level (quality 0.9), still lossless: about half the
-     * time for a little larger file.
-     */
+    /** The defaults, but for PNG a low deflate level (quality 0.9), still lossless: half the time, a little larger. */
     private static ImageWriteParam parameters(ImageWriter writer, ImageFormat format) {
         ImageWriteParam parameters = writer.getDefaultWriteParam();
         if (format.isPng() && parameters.canWriteCompressed()) {
@@ -141,7 +135,6 @@ public final class ImageWriting {
      */
     static final class PackedRgbSamples extends SinglePixelPackedSampleModel {
 
-        /** The layout of a {@code width × height} picture. */
         PackedRgbSamples(int width, int height) {
             super(DataBuffer.TYPE_INT, width, height, RGB_MASKS);
         }
