@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
@@ -19,7 +20,8 @@ import rtd.math.Vector3f;
 
 /**
  * The triangles of the OBJ file a {@code mesh} names (Part II, "Geometry"): found and read by {@link #read}
- * through {@link ObjReader}, placed in the scene by {@link #triangles}. The arrays are never changed.
+ * through {@link ObjReader}, placed in the scene by {@link #triangles}. The arrays are never changed, so the
+ * frames of an animation share one mesh.
  *
  * @param vertices      x, y, z of each vertex
  * @param normals       x, y, z of each normal
@@ -34,6 +36,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
      * is not "humongous" (put straight into the old generation).
      */
     private static final int BLOCK = 1 << 12;
+    /** Larger files do not fit in one Java array. */
+    private static final long MAX_FILE_SIZE = Integer.MAX_VALUE - 8;
 
     /**
      * The triangles, in order, each corner p moved to {@code scale·p + shift}; one whose corners all name
@@ -41,49 +45,30 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
      */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];
-        Vector3f[] normalVectors = normalVectors();
+        Vector3f[] normalVectors = new Vector3f[normals.length / 3]; // made once, shared by the corners naming them
+        for (int i = 0; i < normalVectors.length; i++) {
+            normalVectors[i] = new Vector3f(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+        }
         float[] numbers = null;
         for (int t = 0; t < count; t++) {
             if (t % BLOCK == 0) {
                 numbers = new float[Triangle.NUMBERS * Math.min(BLOCK, count - t)];
             }
             int at = Triangle.NUMBERS * (t % BLOCK);
-            triangles[t] = triangle(t, shift, scale, colour, material, numbers, at, normalVectors);
+            TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
+                    corner(corners[3 * t + 2], shift, scale), numbers, at);
+            Vector3f[] normalsOfCorners = cornerNormals[3 * t] < 0 ? null : new Vector3f[] {
+                normalVectors[cornerNormals[3 * t]], normalVectors[cornerNormals[3 * t + 1]],
+                normalVectors[cornerNormals[3 * t + 2]]};
+            triangles[t] = new Triangle(numbers, at, normalsOfCorners, colour, material);
         }
         return Arrays.asList(triangles);
-    }
-
-    /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */
-    private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
-            Vector3f[] normalVectors) {
-        TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
-                corner(corners[3 * t + 2], shift, scale), numbers, at);
-        if (cornerNormals[3 * t] < 0) {
-            return new Triangle(numbers, at, null, colour, material);
-        }
-        Vector3f[] normalsOfCorners = {normalVectors[cornerNormals[3 * t]], normalVectors[cornerNormals[3 * t + 1]],
-            normalVectors[cornerNormals[3 * t + 2]]};
-        return new Triangle(numbers, at, normalsOfCorners, colour, material);
     }
 
     private Vector3f corner(int vertex, Vector3f shift, float scale) {
         return new Vector3f(scale * vertices[3 * vertex] + shift.x(), scale * vertices[3 * vertex + 1] + shift.y(),
                 scale * vertices[3 * vertex + 2] + shift.z());
     }
-
-    /** Each normal as a vector, made once and shared by the corners that name it. */
-    private Vector3f[] normalVectors() {
-        Vector3f[] vectors = new Vector3f[normals.length / 3];
-        for (int i = 0; i < vectors.length; i++) {
-            vectors[i] = new Vector3f(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
-        }
-        return vectors;
-    }
-
-    // ---- finding and reading the file ------------------------------------------------------
-
-    /** Larger files do not fit in one Java array. */
-    private static final long MAX_FILE_SIZE = Integer.MAX_VALUE - 8;
 
     /**
      * The mesh in the OBJ file that group {@code g} names, relative to the scene's folder. A file that cannot
@@ -101,10 +86,11 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (InvalidPathException e) {
             throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
         }
-        MeshCache cache = scene.meshes();
-        ObjMesh cached = cache == null ? null : cache.get(file);
-        if (cached != null) {
-            return cached;
+        Map<Path, ObjMesh> cache = scene.meshes();
+        Path key = cache == null ? null : file.toAbsolutePath().normalize();
+        ObjMesh mesh = cache == null ? null : cache.get(key);
+        if (mesh != null) {
+            return mesh;
         }
         byte[] bytes;
         try {
@@ -117,11 +103,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                                             + "folder rtd runs in; or give the full path"
                                     : "a mesh's path is relative to the folder of the scene file");
         }
-        ObjMesh mesh;
-        try {
-            try (SourceText obj = new SourceText(shown, bytes)) {
-                mesh = ObjReader.read(obj);
-            }
+        try (SourceText obj = new SourceText(shown, bytes)) {
+            mesh = ObjReader.read(obj);
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();
             List<SceneError> errors = e.errors().stream().map(error -> error.saying(error.message(),
@@ -135,7 +118,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                             + "skipped too; a mesh needs at least one face");
         }
         if (cache != null) {
-            cache.put(file, mesh);
+            cache.put(key, mesh);
         }
         return mesh;
     }
@@ -150,26 +133,20 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
     }
 
     private static byte[] readFile(Path file) throws IOException {
-        if (Files.isDirectory(file)) {
-            throw new FileSystemException(file.toString(), null, "it is a folder, not a file");
-        }
-        if (Files.exists(file) && !Files.isRegularFile(file)) {
-            // a device or a pipe: it might never end
-            throw new FileSystemException(file.toString(), null, "it is not a regular file");
-        }
-        if (Files.exists(file) && Files.size(file) > MAX_FILE_SIZE) {
-            throw new FileSystemException(file.toString(), null, "it is larger than 2 GB");
+        String refused = Files.isDirectory(file) ? "it is a folder, not a file"
+                : !Files.exists(file) ? null
+                : !Files.isRegularFile(file) ? "it is not a regular file" // a device or a pipe: it might never end
+                : Files.size(file) > MAX_FILE_SIZE ? "it is larger than 2 GB" : null;
+        if (refused != null) {
+            throw new FileSystemException(file.toString(), null, refused);
         }
         return SceneFileReader.readWhole(file); // not Files.readAllBytes: it keeps a buffer as large as the file
     }
 
     /** Why a file could not be read, in words for a person. */
     private static String reason(IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return "no such file";
-        }
-        if (e instanceof AccessDeniedException) {
-            return "permission denied";
+        if (e instanceof NoSuchFileException || e instanceof AccessDeniedException) {
+            return e instanceof NoSuchFileException ? "no such file" : "permission denied";
         }
         if (e instanceof FileSystemException failure && failure.getReason() != null) {
             return failure.getReason().toLowerCase(Locale.ROOT);
