@@ -13,6 +13,7 @@ final class NumberReader {
 
     private final LineCursor cursor;
     private final Names names;
+    private final WrittenGroups written;
     /** Made at the first value that is no plain number: a file of plain numbers never loads the expression reader. */
     private ExpressionParser expressions;
     /** Where the number read last starts. */
@@ -21,15 +22,14 @@ final class NumberReader {
     private Expression tree;
     private double exact;
 
-    NumberReader(LineCursor cursor, Names names) {
+    NumberReader(LineCursor cursor, Names names, WrittenGroups written) {
         this.cursor = cursor;
         this.names = names;
+        this.written = written;
     }
 
     private ExpressionParser expressions() {
-        if (expressions == null) {
-            expressions = new ExpressionParser(cursor, names);
-        }
+        expressions = expressions != null ? expressions : new ExpressionParser(cursor, names);
         return expressions;
     }
 
@@ -78,8 +78,8 @@ final class NumberReader {
         return expression();
     }
 
-    /** Marks the value {@code written} kept last as an expression, if the number read last was one. */
-    void markIfExpression(WrittenGroups written) {
+    /** Marks the value kept last as an expression, if the number read last was one. */
+    void markIfExpression() {
         if (tree != null) {
             written.markExpression(exact, tree);
         }
@@ -116,10 +116,7 @@ final class NumberReader {
         while (p < bytes.length && TextBytes.isSpace(bytes[p])) {
             p++;
         }
-        if (p >= bytes.length) {
-            return false;
-        }
-        byte b = bytes[p];
+        byte b = p < bytes.length ? bytes[p] : 0;
         boolean comment = b == '/' && p + 1 < bytes.length && bytes[p + 1] == '/';
         return b == '+' || b == '-' || b == '*' || b == '^' || b == '/' && !comment;
     }
@@ -186,20 +183,16 @@ final class NumberReader {
         if (invisible == tokenStart) {
             return cursor.error(invisible, "expected a number, found " + cursor.describe(invisible), null);
         }
-        if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
-            return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
+        if (invisible > tokenStart) {
+            try {
+                FloatParser.parse(cursor.bytes, tokenStart, invisible);
+                return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
+            } catch (NumberFormatException e) {
+                // no number before it: the token's message
+            }
         }
         String token = cursor.source.text(tokenStart, cursor.pos);
         return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
-    }
-
-    private boolean isNumber(int from, int to) {
-        try {
-            FloatParser.parse(cursor.bytes, from, to);
-            return true;
-        } catch (NumberFormatException e) {
-            return false;
-        }
     }
 
     /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */

@@ -104,8 +104,9 @@ final class SourceText implements AutoCloseable {
         if (TextBytes.isLineBreak(bytes[offset])) {
             return "the end of the line";
         }
-        if (offset + 1 < bytes.length && bytes[offset] == '/' && (bytes[offset + 1] == '/' || bytes[offset + 1] == '*')) {
-            return bytes[offset + 1] == '/' ? "a comment" : "'/*'";
+        byte next = offset + 1 < bytes.length ? bytes[offset + 1] : 0;
+        if (bytes[offset] == '/' && (next == '/' || next == '*')) {
+            return next == '/' ? "a comment" : "'/*'";
         }
         int codePoint = codePointAt(offset);
         if (Character.isISOControl(codePoint)) {
