@@ -67,12 +67,10 @@ final class GroupReader {
         int found = 0;
         do {
             cursor.skipBlanks();
-            float value = numbers.read();
-            if (found++ == group.size()) {
+            numbers.readAndKeep(-1);
+            if (++found > group.size()) {
                 throw tooManyNumbers(groupStart);
             }
-            written.add(value, numbers.tokenStart, cursor.pos);
-            numbers.markIfExpression();
         } while (!groupEndsAfterNumber());
         if (found < group.size() && target) {
             throw cursor.error(groupStart, "too few numbers in the point that '" + statement.keyword()
@@ -104,7 +102,7 @@ final class GroupReader {
         if (cursor.pos == start) {
             throw expected("an operation such as 'scale 2' in ");
         }
-        written.add(Float.NaN, start, cursor.pos);
+        written.add(Float.NaN, start, cursor.pos, -1);
         cursor.skipBlanks();
         if (cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
@@ -112,9 +110,7 @@ final class GroupReader {
         }
         do {
             cursor.skipBlanks();
-            float value = numbers.read();
-            written.add(value, numbers.tokenStart, cursor.pos);
-            numbers.markIfExpression();
+            numbers.readAndKeep(-1);
         } while (!groupEndsAfterNumber());
     }
 
@@ -125,7 +121,7 @@ final class GroupReader {
         if (cursor.pos == start) {
             throw expected("a name in ");
         }
-        written.add(Float.NaN, start, cursor.pos);
+        written.add(Float.NaN, start, cursor.pos, -1);
         int nameEnd = cursor.pos;
         cursor.skipBlanks();
         if (!cursor.at(')')) {
@@ -159,7 +155,7 @@ final class GroupReader {
         while (TextBytes.isBlank(bytes[nameEnd - 1])) {
             nameEnd--; // the group is not empty, so a byte that is no blank stands before
         }
-        written.add(Float.NaN, start, nameEnd);
+        written.add(Float.NaN, start, nameEnd, -1);
         cursor.pos++;
     }
 
@@ -178,9 +174,7 @@ final class GroupReader {
             }
             cursor.pos++;
             cursor.skipBlanks();
-            float value = numbers.read();
-            written.addProperty(key, value, numbers.tokenStart, cursor.pos);
-            numbers.markIfExpression();
+            numbers.readAndKeep(key);
         } while (!groupEndsAfterNumber());
     }
 

@@ -33,11 +33,20 @@ final class NumberReader {
         return expressions;
     }
 
+    /** Reads one number, or an expression, at the cursor, and keeps it in the written groups with {@code key} (or −1). */
+    void readAndKeep(int key) throws StatementError {
+        float value = read();
+        written.add(value, tokenStart, cursor.pos, key);
+        if (tree != null) {
+            written.markExpression(exact, tree);
+        }
+    }
+
     /**
-     * Reads one number, or an expression, at the cursor; its start is left in {@link #tokenStart}. The common case,
-     * a plain number that ends at '|' or ')', stays a small method, compiled early in a large file's first read.
+     * One number, or an expression, at the cursor; its start is left in {@link #tokenStart}. The common case, a
+     * plain number that ends at '|' or ')', stays a small method, compiled early in a large file's first read.
      */
-    float read() throws StatementError {
+    private float read() throws StatementError {
         tree = null;
         int start = cursor.pos;
         tokenStart = start;
@@ -76,13 +85,6 @@ final class NumberReader {
                     emptyPlace ? "a number is missing here: each place between '(', '|' and ')' holds one" : null);
         }
         return expression();
-    }
-
-    /** Marks the value kept last as an expression, if the number read last was one. */
-    void markIfExpression() {
-        if (tree != null) {
-            written.markExpression(exact, tree);
-        }
     }
 
     /** Reads the expression from {@link #tokenStart}: its value at the clock, finite and within a float's range. */

@@ -62,21 +62,15 @@ final class WrittenGroups {
         opens[groupCount++] = offset;
     }
 
-    /** Keeps a value of the current group, written at {@code bytes[start, end)}; a name or path is NaN. */
-    void add(float value, int start, int end) {
+    /** Keeps a value of the current group, written at {@code bytes[start, end)}: a name or path is NaN; its key or −1. */
+    void add(float value, int start, int end, int key) {
         if (count == values.length) {
             resize(2 * count);
         }
         values[count] = value;
         starts[count] = start;
         ends[count] = end;
-        keys[count++] = -1;
-    }
-
-    /** Keeps {@code key=value} of the current group: the key's index among the group's keys. */
-    void addProperty(int key, float value, int start, int end) {
-        add(value, start, end);
-        keys[count - 1] = key;
+        keys[count++] = key;
     }
 
     /** Marks the value kept last as written as the expression {@code tree}, whose value is {@code exactValue}. */
