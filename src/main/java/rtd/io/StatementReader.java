@@ -84,18 +84,16 @@ final class StatementReader {
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (!statement.takesMaterial() || optional == 0 && values.patternGroup() < 0) {
-            statement.builder().build(values, contents);
-            return;
+        if (statement.takesMaterial() && (optional > 0 || values.patternGroup() >= 0)) {
+            String name = values.name(groups.size());
+            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
+            if (above == null) {
+                contents.addPending(values.copy()); // its names are resolved when the whole file is read
+                return;
+            }
+            contents.namedAtOnce.add(name);
+            values.useNames(DefinedNames.ObjectNames.NONE.with(above));
         }
-        String name = values.name(groups.size());
-        Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
-        if (above == null) {
-            contents.addPending(values.copy()); // its names are resolved when the whole file is read
-            return;
-        }
-        contents.namedAtOnce.add(name);
-        values.useMaterial(above);
         statement.builder().build(values, contents);
     }
 
@@ -197,13 +195,9 @@ final class StatementReader {
     /** On a line inside a block comment: whether the comment ends on it; the cursor is then after the end. */
     private boolean leaveBlockComment() {
         int after = commentEnd(cursor.pos);
-        if (after < 0) {
-            return false;
-        }
-        inBlockComment = false;
-        cursor.pos = after;
-        cursor.skipBlanks();
-        return true;
+        inBlockComment = after < 0;
+        cursor.pos = inBlockComment ? cursor.pos : cursor.afterSpaces(after);
+        return !inBlockComment;
     }
 
     /** The offset after the first {@code *}{@code /} from {@code from} to the end of its line, or −1. */

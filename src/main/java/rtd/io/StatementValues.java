@@ -52,11 +52,6 @@ final class StatementValues {
         return copy;
     }
 
-    /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
-    void useMaterial(Material material) {
-        this.names = DefinedNames.ObjectNames.NONE.with(material);
-    }
-
     /** Sets what the object's names mean (Part III: a material, a pattern, a transform). */
     void useNames(DefinedNames.ObjectNames names) {
         this.names = names;
