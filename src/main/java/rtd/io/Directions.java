@@ -1,5 +1,7 @@
 package rtd.io;
 
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
 import rtd.math.Vector3f;
 
 /**
@@ -18,10 +20,10 @@ final class Directions {
     static Vector3f direction(StatementValues v, int g, String zeroHelp) throws StatementError {
         Vector3f direction = v.vector(g);
         if (isZero(direction)) {
-            throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " must not be zero, found " + v.groupText(g), zeroHelp);
+            throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " must not be zero, found " + groupText(v, g), zeroHelp);
         }
         if (!computable(direction)) {
-            throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " " + v.groupText(g) + " is too "
+            throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " " + groupText(v, g) + " is too "
                     + (tooLong(direction) ? "long" : "short") + " to compute with in float",
                     "only its direction matters: scale it to a length near 1");
         }
@@ -33,13 +35,13 @@ final class Directions {
         Vector3f target = v.vector(g);
         Vector3f direction = target.subtract(from);
         if (isZero(direction)) {
-            throw v.errorAtValue(g, 0, "the camera cannot look at its own position " + v.groupText(g),
+            throw v.errorAtValue(g, 0, "the camera cannot look at its own position " + groupText(v, g),
                     "give a point in front of the camera: (at " + StatementValues.plain(from.x()) + "|"
                             + StatementValues.plain(from.y()) + "|" + StatementValues.plain(from.z() - 1)
                             + ") looks along -z");
         }
         if (!computable(direction)) {
-            throw v.errorAtValue(g, 0, "the point " + v.groupText(g) + " is too " + (tooLong(direction) ? "far from" : "near")
+            throw v.errorAtValue(g, 0, "the point " + groupText(v, g) + " is too " + (tooLong(direction) ? "far from" : "near")
                     + " the camera's position to compute the view direction in float",
                     "give a point at a distance near 1 to 1000 from the camera");
         }
@@ -57,6 +59,12 @@ final class Directions {
             throw v.errorAtGroup(g, "the " + shape + "'s end points are too " + (tooLong(axis) ? "far apart"
                     : "close together") + " to compute with in float", "give end points a distance of about 1e-15 to 1e15 apart");
         }
+    }
+
+    /** Group {@code g} as written, "(0|0|0)"; "(at 0|0|0)" for a point to look at. */
+    private static String groupText(StatementValues v, int g) {
+        return IntStream.range(0, v.size(g)).mapToObj(k -> v.written(g, k))
+                .collect(Collectors.joining("|", v.isTarget(g) ? "(at " : "(", ")"));
     }
 
     private static boolean isZero(Vector3f d) {

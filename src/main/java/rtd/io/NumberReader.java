@@ -181,11 +181,15 @@ final class NumberReader {
      * else at the token, with a hint.
      */
     private StatementError notANumber() {
-        int invisible = firstInvisible(tokenStart, cursor.pos);
+        int invisible = tokenStart;
+        while (invisible < cursor.pos && !(cursor.bytes[invisible] < 0 && (cursor.bytes[invisible] & 0xC0) != 0x80
+                && Hints.isInvisible(cursor.source.codePointAt(invisible)))) {
+            invisible++; // to the first invisible character (Hints.isInvisible), or the token's end
+        }
         if (invisible == tokenStart) {
             return cursor.error(invisible, "expected a number, found " + cursor.describe(invisible), null);
         }
-        if (invisible > tokenStart) {
+        if (invisible < cursor.pos) {
             try {
                 FloatParser.parse(cursor.bytes, tokenStart, invisible);
                 return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
@@ -195,15 +199,5 @@ final class NumberReader {
         }
         String token = cursor.source.text(tokenStart, cursor.pos);
         return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
-    }
-
-    /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */
-    private int firstInvisible(int from, int to) {
-        for (int i = from; i < to; i++) {
-            if (cursor.bytes[i] < 0 && (cursor.bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(cursor.source.codePointAt(i))) {
-                return i;
-            }
-        }
-        return -1;
     }
 }

@@ -134,15 +134,6 @@ final class StatementValues {
         return g < own ? statement.groups().get(g).meaning() : statement.optional(g - own).meaning();
     }
 
-    /** Group {@code g} as written, "(0|0|0)"; "(at 0|0|0)" for a point to look at. */
-    String groupText(int g) {
-        StringBuilder text = new StringBuilder(g == groups.target ? "(at " : "(");
-        for (int i = groups.firsts[g]; i < groups.end(g); i++) {
-            text.append(i > groups.firsts[g] ? "|" : "").append(written(i));
-        }
-        return text.append(')').toString();
-    }
-
     /** An error at the '(' of group {@code g}. */
     StatementError errorAtGroup(int g, String message, String help) {
         return errorAt(groups.opens[g], message, help);
