@@ -18,8 +18,7 @@ final class ObjReader {
     private static final int[] ONE_TRIANGLE = {0, 1, 2};
 
     private final SourceText source;
-    /** The source's bytes, until the file is read (see {@link LineCursor#release}). */
-    private byte[] bytes;
+    private final byte[] bytes;
     private int pos;
     private int line = 1;
     private int lineStart;
@@ -74,7 +73,6 @@ final class ObjReader {
             line++;
             lineStart = pos;
         }
-        bytes = null;
         if (!errors.isEmpty()) {
             throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneParser.MAX_ERRORS + 1)), false);
         }

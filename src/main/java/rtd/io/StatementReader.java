@@ -46,7 +46,6 @@ final class StatementReader {
             }
             cursor.skipToNextLine();
         }
-        cursor.release();
     }
 
     // ---- one statement ------------------------------------------------------------------
