@@ -45,29 +45,43 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
      */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];
-        Vector3f[] normalVectors = new Vector3f[normals.length / 3]; // made once, shared by the corners naming them
-        for (int i = 0; i < normalVectors.length; i++) {
-            normalVectors[i] = new Vector3f(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
-        }
+        Vector3f[] normalVectors = normalVectors();
         float[] numbers = null;
         for (int t = 0; t < count; t++) {
             if (t % BLOCK == 0) {
                 numbers = new float[Triangle.NUMBERS * Math.min(BLOCK, count - t)];
             }
             int at = Triangle.NUMBERS * (t % BLOCK);
-            TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
-                    corner(corners[3 * t + 2], shift, scale), numbers, at);
-            Vector3f[] normalsOfCorners = cornerNormals[3 * t] < 0 ? null : new Vector3f[] {
-                normalVectors[cornerNormals[3 * t]], normalVectors[cornerNormals[3 * t + 1]],
-                normalVectors[cornerNormals[3 * t + 2]]};
-            triangles[t] = new Triangle(numbers, at, normalsOfCorners, colour, material);
+            triangles[t] = triangle(t, shift, scale, colour, material, numbers, at, normalVectors);
         }
         return Arrays.asList(triangles);
+    }
+
+    /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */
+    private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
+            Vector3f[] normalVectors) {
+        TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
+                corner(corners[3 * t + 2], shift, scale), numbers, at);
+        if (cornerNormals[3 * t] < 0) {
+            return new Triangle(numbers, at, null, colour, material);
+        }
+        Vector3f[] normalsOfCorners = {normalVectors[cornerNormals[3 * t]], normalVectors[cornerNormals[3 * t + 1]],
+            normalVectors[cornerNormals[3 * t + 2]]};
+        return new Triangle(numbers, at, normalsOfCorners, colour, material);
     }
 
     private Vector3f corner(int vertex, Vector3f shift, float scale) {
         return new Vector3f(scale * vertices[3 * vertex] + shift.x(), scale * vertices[3 * vertex + 1] + shift.y(),
                 scale * vertices[3 * vertex + 2] + shift.z());
+    }
+
+    /** Each normal as a vector, made once and shared by the corners that name it. */
+    private Vector3f[] normalVectors() {
+        Vector3f[] vectors = new Vector3f[normals.length / 3];
+        for (int i = 0; i < vectors.length; i++) {
+            vectors[i] = new Vector3f(normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]);
+        }
+        return vectors;
     }
 
     /**

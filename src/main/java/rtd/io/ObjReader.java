@@ -9,16 +9,15 @@ import java.util.List;
  * {@code vn x y z} and {@code f} with corners {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, indices
  * from 1 or, negative, back from the last read. Faces of more corners go to {@link EarClipping}; {@code #}
  * starts a comment; other lines, extra numbers on a {@code v} line and texture indices are skipped. Each
- * mistake is located in the OBJ file and reading goes on with the next line, which starts after a LF.
+ * mistake is located in the OBJ file and reading goes on with the next line.
  */
 final class ObjReader {
 
     private static final String CORNER_FORMS = "a corner is written 3, 3/1, 3//2 or 3/1/2";
-    /** The corners of a face of three, which is its own triangle. */
-    private static final int[] ONE_TRIANGLE = {0, 1, 2};
 
     private final SourceText source;
-    private final byte[] bytes;
+    /** The source's bytes, until the file is read. */
+    private byte[] bytes;
     private int pos;
     private int line = 1;
     private int lineStart;
@@ -26,7 +25,7 @@ final class ObjReader {
     /** The vertices and normals read so far, x, y, z each; the triangles' corners, three per triangle. */
     private float[] vertices = new float[3 * 1024];
     private int vertexCount;
-    private float[] normals = new float[3 * 1024];
+    private float[] normals = new float[0];
     private int normalCount;
     private int[] corners = new int[3 * 1024];
     /** The normal of each corner of a triangle, or −1 for a triangle with no normals. */
@@ -39,13 +38,6 @@ final class ObjReader {
 
     private final List<SceneError> errors = new ArrayList<>();
 
-    private ObjReader(SourceText source) {
-        this.source = source;
-        this.bytes = source.bytes();
-        this.pos = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;
-        this.lineStart = pos;
-    }
-
     /**
      * The mesh in {@code source}, or its mistakes (up to one more than {@link SceneParser#MAX_ERRORS}); a
      * NUL byte refuses the file.
@@ -57,9 +49,17 @@ final class ObjReader {
                 throw new SceneException(List.of(TextBytes.inObjFile(source, i)), false);
             }
         }
-        return new ObjReader(source).readAll();
+        return new ObjReader(source, TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
     }
 
+    private ObjReader(SourceText source, int start) {
+        this.source = source;
+        this.bytes = source.bytes();
+        this.pos = start;
+        this.lineStart = start;
+    }
+
+    /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}: the mesh, or its mistakes. */
     private ObjMesh readAll() throws SceneException {
         while (pos < bytes.length && errors.size() <= SceneParser.MAX_ERRORS) {
             try {
@@ -67,12 +67,9 @@ final class ObjReader {
             } catch (StatementError e) {
                 errors.addAll(e.errors());
             }
-            while (pos < bytes.length && bytes[pos++] != '\n') {
-                // to the next line
-            }
-            line++;
-            lineStart = pos;
+            skipToNextLine();
         }
+        bytes = null;
         if (!errors.isEmpty()) {
             throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneParser.MAX_ERRORS + 1)), false);
         }
@@ -80,32 +77,50 @@ final class ObjReader {
                 cornerNormals, triangleCount);
     }
 
-    /** One line: a vertex, a normal or a face; any other line is skipped, whatever it holds. */
     private void readLine() throws StatementError {
         skipBlanks();
         int start = pos;
-        skipWord();
+        while (!atTokenEnd()) {
+            pos++;
+        }
         int length = pos - start;
         if (length == 1 && bytes[start] == 'v') {
-            vertexCount++; // even if the line is wrong: the faces below count it, and would be wrong too
-            vertices = 3 * vertexCount > vertices.length ? Arrays.copyOf(vertices, 2 * vertices.length) : vertices;
-            readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
+            readVertex();
         } else if (length == 2 && bytes[start] == 'v' && bytes[start + 1] == 'n') {
-            normalCount++;
-            normals = 3 * normalCount > normals.length ? Arrays.copyOf(normals, 2 * normals.length) : normals;
-            readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
+            readNormal();
         } else if (length == 1 && bytes[start] == 'f') {
             readFace(start);
         }
+        // any other line is skipped, whatever it holds
+    }
+
+    // ---- v and vn ---------------------------------------------------------------------------
+
+    private void readVertex() throws StatementError {
+        vertexCount++; // even if the line is wrong: the faces below count it, and would be wrong too
+        if (3 * vertexCount > vertices.length) {
+            vertices = Arrays.copyOf(vertices, 2 * vertices.length);
+        }
+        readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
+    }
+
+    private void readNormal() throws StatementError {
+        normalCount++;
+        if (3 * normalCount > normals.length) {
+            normals = Arrays.copyOf(normals, Math.max(3 * 1024, 2 * normals.length));
+        }
+        readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
     }
 
     private void readCoordinates(float[] into, int at, String keyword, String what) throws StatementError {
         for (int k = 0; k < 3; k++) {
             skipBlanks();
             int start = pos;
-            skipWord();
+            while (!atTokenEnd()) {
+                pos++;
+            }
             if (pos == start) {
-                throw error(pos, "expected 3 numbers (x y z) after '" + keyword + "', found " + (k == 0 ? "none" : k),
+                throw error(pos, "expected 3 numbers (x y z) after '" + keyword + "', found " + (k == 0 ? "none" : k == 1 ? "1" : "2"),
                         "a " + what + " is written " + keyword + " 0.5 -1 2");
             }
             float value;
@@ -126,9 +141,15 @@ final class ObjReader {
         }
     }
 
+    // ---- f ------------------------------------------------------------------------------------
+
     private void readFace(int keywordStart) throws StatementError {
         int count = 0;
-        for (skipBlanks(); !TextBytes.endsObjWord(bytes, pos); skipBlanks()) {
+        while (true) {
+            skipBlanks();
+            if (atTokenEnd()) {
+                break;
+            }
             if (count == faceVertices.length) {
                 faceVertices = Arrays.copyOf(faceVertices, 2 * count);
                 faceNormals = Arrays.copyOf(faceNormals, 2 * count);
@@ -138,7 +159,11 @@ final class ObjReader {
         if (count < 3) {
             throw error(keywordStart, "a face needs at least 3 corners, found " + count, CORNER_FORMS);
         }
-        int[] triangles = count == 3 ? ONE_TRIANGLE : EarClipping.triangles(faceVertices, count, vertices);
+        if (count == 3) {
+            addTriangle(0, 1, 2);
+            return;
+        }
+        int[] triangles = EarClipping.triangles(faceVertices, count, vertices);
         for (int t = 0; t < triangles.length; t += 3) {
             addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
         }
@@ -152,15 +177,16 @@ final class ObjReader {
         int normalStart = -1;
         if (at('/')) {
             pos++;
-            while (!TextBytes.endsObjWord(bytes, pos) && bytes[pos] != '/') {
+            while (!atTokenEnd() && bytes[pos] != '/') {
                 pos++; // a texture index, which a flat or smooth triangle does not use
             }
             if (at('/')) {
-                normalStart = ++pos;
+                pos++;
+                normalStart = pos;
                 normal = readIndex(start);
             }
         }
-        if (!TextBytes.endsObjWord(bytes, pos)) {
+        if (!atTokenEnd()) {
             throw cornerError(start);
         }
         faceVertices[k] = resolve(vertex, vertexCount, start, "vertex", "v");
@@ -170,11 +196,14 @@ final class ObjReader {
     /** A whole number at {@link #pos}, with an optional sign; an error at the corner if there is none. */
     private long readIndex(int cornerStart) throws StatementError {
         boolean negative = at('-');
-        pos += negative || at('+') ? 1 : 0;
+        if (negative || at('+')) {
+            pos++;
+        }
         int digitsStart = pos;
         long value = 0;
-        for (; pos < bytes.length && bytes[pos] >= '0' && bytes[pos] <= '9'; pos++) {
+        while (pos < bytes.length && bytes[pos] >= '0' && bytes[pos] <= '9') {
             value = Math.min(value * 10 + (bytes[pos] - '0'), Integer.MAX_VALUE + 1L); // beyond any file
+            pos++;
         }
         if (pos == digitsStart) {
             throw cornerError(cornerStart);
@@ -184,15 +213,16 @@ final class ObjReader {
 
     /** The index from 0 that {@code index} names among the {@code count} read so far. */
     private int resolve(long index, int count, int at, String what, String keyword) throws StatementError {
-        String help = "1 is the first '" + keyword + "' line of the file, -1 the last one above the face";
         if (index == 0) {
-            throw error(at, "a " + what + " index is never 0: they count from 1", help);
+            throw error(at, "a " + what + " index is never 0: they count from 1",
+                    "1 is the first '" + keyword + "' line of the file, -1 the last one above the face");
         }
         long resolved = index > 0 ? index - 1 : count + index;
         if (resolved < 0 || resolved >= count) {
             throw error(at, "the " + what + " index " + index + " is out of range: " + count + " "
                     + (count == 1 ? what + " comes" : (what.equals("vertex") ? "vertices" : what + "s") + " come")
-                    + " before this face", help);
+                    + " before this face",
+                    "1 is the first '" + keyword + "' line of the file, -1 the last one above the face");
         }
         return (int) resolved;
     }
@@ -204,14 +234,12 @@ final class ObjReader {
         }
         boolean smooth = faceNormals[a] >= 0 && faceNormals[b] >= 0 && faceNormals[c] >= 0;
         int at = 3 * triangleCount++;
-        addCorner(at, a, smooth);
-        addCorner(at + 1, b, smooth);
-        addCorner(at + 2, c, smooth);
-    }
-
-    private void addCorner(int at, int k, boolean smooth) {
-        corners[at] = faceVertices[k];
-        cornerNormals[at] = smooth ? faceNormals[k] : -1;
+        corners[at] = faceVertices[a];
+        corners[at + 1] = faceVertices[b];
+        corners[at + 2] = faceVertices[c];
+        cornerNormals[at] = smooth ? faceNormals[a] : -1;
+        cornerNormals[at + 1] = smooth ? faceNormals[b] : -1;
+        cornerNormals[at + 2] = smooth ? faceNormals[c] : -1;
     }
 
     private StatementError cornerError(int start) {
@@ -221,6 +249,13 @@ final class ObjReader {
         }
         return error(start, "expected a corner of the face, found " + (after > start ? "'" + source.text(start, after) + "'"
                 : source.describe(start, lineStart)), CORNER_FORMS);
+    }
+
+    // ---- bytes --------------------------------------------------------------------------------
+
+    /** Whether {@link #pos} is at a blank, a comment, the end of the line or of the file. */
+    private boolean atTokenEnd() {
+        return TextBytes.endsObjWord(bytes, pos);
     }
 
     private boolean at(char c) {
@@ -233,10 +268,14 @@ final class ObjReader {
         }
     }
 
-    /** Goes to the end of the word: a blank, a comment, the end of the line or of the file. */
-    private void skipWord() {
-        while (!TextBytes.endsObjWord(bytes, pos)) {
+    private void skipToNextLine() {
+        while (pos < bytes.length && bytes[pos] != '\n') {
             pos++;
+        }
+        if (pos < bytes.length) {
+            pos++;
+            line++;
+            lineStart = pos;
         }
     }
 
