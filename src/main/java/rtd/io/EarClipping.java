@@ -1,5 +1,7 @@
 package rtd.io;
 
+import java.util.stream.IntStream;
+
 /**
  * Splits a face of an OBJ file into triangles (Part II, "Geometry"), as modelling tools do: a convex face as
  * a fan around its first corner, any other by ear clipping, so that a concave face is covered where it is
@@ -20,15 +22,14 @@ final class EarClipping {
         double[] v = new double[count];
         double sense = project(corners, count, vertices, u, v);
         int[] triangles = new int[3 * (count - 2)];
-        if (sense == 0 || isConvex(u, v, count, sense)) {
-            for (int k = 1; k + 1 < count; k++) {
-                triangles[3 * k - 3] = 0;
-                triangles[3 * k - 2] = k;
-                triangles[3 * k - 1] = k + 1;
-            }
+        if (sense != 0 && !isConvex(u, v, count, sense)) {
+            clipEars(u, v, count, sense, triangles);
             return triangles;
         }
-        clipEars(u, v, count, sense, triangles);
+        for (int k = 1; k + 1 < count; k++) { // a fan around the first corner
+            triangles[3 * k - 2] = k;
+            triangles[3 * k - 1] = k + 1;
+        }
         return triangles;
     }
 
@@ -74,10 +75,7 @@ final class EarClipping {
      * else the first left.
      */
     private static void clipEars(double[] u, double[] v, int count, double sense, int[] triangles) {
-        int[] left = new int[count];
-        for (int i = 0; i < count; i++) {
-            left[i] = i;
-        }
+        int[] left = IntStream.range(0, count).toArray();
         int written = 0;
         for (int n = count; n > 3; n--) {
             int ear = findEar(u, v, left, n, sense);
@@ -86,9 +84,7 @@ final class EarClipping {
             triangles[written++] = left[(ear + 1) % n];
             System.arraycopy(left, ear + 1, left, ear, n - ear - 1);
         }
-        triangles[written++] = left[0];
-        triangles[written++] = left[1];
-        triangles[written] = left[2];
+        System.arraycopy(left, 0, triangles, written, 3);
     }
 
     /** The position in {@code left[0, n)} of the corner to cut off next. */
@@ -119,7 +115,7 @@ final class EarClipping {
             double ab = turn(u, v, a, b, p);
             double bc = turn(u, v, b, c, p);
             double ca = turn(u, v, c, a, p);
-            if ((ab >= 0 && bc >= 0 && ca >= 0) || (ab <= 0 && bc <= 0 && ca <= 0)) {
+            if (ab >= 0 && bc >= 0 && ca >= 0 || ab <= 0 && bc <= 0 && ca <= 0) {
                 return false;
             }
         }

@@ -17,11 +17,7 @@ final class FloatParser {
     private FloatParser() {
     }
 
-    /**
-     * The number in {@code bytes[start, end)}.
-     *
-     * @throws NumberFormatException if the text is not a number
-     */
+    /** The number in {@code bytes[start, end)}; a {@link NumberFormatException} if the text is not one. */
     static float parse(byte[] bytes, int start, int end) {
         int i = start;
         boolean negative = false;
@@ -30,7 +26,7 @@ final class FloatParser {
             i++;
         }
         if (i < end && (bytes[i] == 'N' || bytes[i] == 'I')) {
-            return special(bytes, i, end, negative);
+            return special(new String(bytes, i, end - i, StandardCharsets.US_ASCII), negative);
         }
         long mantissa = 0;
         int digits = 0;
@@ -94,28 +90,21 @@ final class FloatParser {
      * rounding gives the correctly rounded double, and one more the float. NaN when it does not apply.
      */
     private static float fast(long mantissa, int scale) {
-        if (mantissa == 0) {
-            return 0f;
+        if (mantissa == 0 || mantissa >= (1L << 53) || Math.abs(scale) >= POWERS.length) {
+            return mantissa == 0 ? 0f : Float.NaN;
         }
-        if (mantissa < (1L << 53) && Math.abs(scale) < POWERS.length) {
-            double m = mantissa;
-            double value = scale >= 0 ? m * POWERS[scale] : m / POWERS[-scale];
-            // Rounding the double again to float is wrong only when the double lies exactly
-            // halfway between two floats: its lowest 29 bits are then 1 followed by zeros.
-            long lowBits = Double.doubleToRawLongBits(value) & ((1L << 29) - 1);
-            return lowBits == (1L << 28) ? Float.NaN : (float) value;
-        }
-        return Float.NaN;
+        double value = scale >= 0 ? mantissa * POWERS[scale] : mantissa / POWERS[-scale];
+        // Rounding the double again to float is wrong only when the double lies exactly
+        // halfway between two floats: its lowest 29 bits are then 1 followed by zeros.
+        long lowBits = Double.doubleToRawLongBits(value) & ((1L << 29) - 1);
+        return lowBits == (1L << 28) ? Float.NaN : (float) value;
     }
 
-    private static float special(byte[] bytes, int from, int end, boolean negative) {
-        String word = new String(bytes, from, end - from, StandardCharsets.US_ASCII);
-        if (word.equals("NaN")) {
-            return Float.NaN;
+    /** NaN or an infinity, for the caller to refuse: out of {@link #parse}, which stays small for the JIT. */
+    private static float special(String word, boolean negative) {
+        if (!word.equals("NaN") && !word.equals("Infinity")) {
+            throw new NumberFormatException();
         }
-        if (word.equals("Infinity")) {
-            return negative ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY;
-        }
-        throw new NumberFormatException();
+        return word.equals("NaN") ? Float.NaN : negative ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY;
     }
 }

@@ -2,22 +2,26 @@ package rtd.io;
 
 import static rtd.io.Group.name;
 import static rtd.io.Group.numbers;
-import static rtd.io.Group.path;
 import static rtd.io.Group.properties;
 import static rtd.io.Group.view;
+import static rtd.io.Group.word;
 
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.List;
+import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
+import rtd.geometry.Cone;
+import rtd.geometry.Cylinder;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
 import rtd.image.Color;
 import rtd.image.Rgb;
+import rtd.io.Group.Kind;
 import rtd.math.Vector3f;
 import rtd.scene.AreaLight;
 import rtd.scene.Light;
@@ -43,10 +47,10 @@ final class Grammar {
                     (v, out) -> out.ambient(v.colour(0))),
             Statement.setting("orthographic_camera",
                     List.of(numbers("position", "x|y|z"), view("view direction"), numbers("zoom", "zoom")),
-                    (v, out) -> out.camera(orthographic(v))),
+                    (v, out) -> out.camera(camera(v, false))),
             Statement.setting("perspective_camera",
                     List.of(numbers("position", "x|y|z"), view("view direction"), numbers("field of view", "fov")),
-                    (v, out) -> out.camera(perspective(v))),
+                    (v, out) -> out.camera(camera(v, true))),
             Statement.shape("sphere",
                     List.of(numbers("centre", "x|y|z"), numbers("radius", "r"), numbers("colour", "R|G|B")),
                     (v, out) -> out.object(sphere(v, out))),
@@ -64,7 +68,8 @@ final class Grammar {
                             numbers("colour", "R|G|B")),
                     (v, out) -> out.object(box(v))),
             Statement.shape("mesh",
-                    List.of(path("file"), numbers("shift", "x|y|z"), numbers("scale", "s"), numbers("colour", "R|G|B")),
+                    List.of(word("file", Kind.PATH, "path"), numbers("shift", "x|y|z"), numbers("scale", "s"),
+                            numbers("colour", "R|G|B")),
                     (v, out) -> {
                         Vector3f shift = v.vector(1);
                         float scale = v.positive(2);
@@ -80,26 +85,26 @@ final class Grammar {
             Statement.shape("cylinder",
                     List.of(numbers("first end", "x1|y1|z1"), numbers("second end", "x2|y2|z2"), numbers("radius", "r"),
                             numbers("colour", "R|G|B")),
-                    (v, out) -> out.object(SolidShapes.cylinder(v))),
+                    (v, out) -> out.object(cylinder(v))),
             Statement.shape("cone",
                     List.of(numbers("first end", "x1|y1|z1"), numbers("first radius", "r1"),
                             numbers("second end", "x2|y2|z2"), numbers("second radius", "r2"), numbers("colour", "R|G|B")),
-                    (v, out) -> out.object(SolidShapes.cone(v))),
+                    (v, out) -> out.object(cone(v))),
             Statement.setting("area_light",
                     List.of(numbers("corner", "x|y|z"), numbers("first edge", "ux|uy|uz"), numbers("second edge", "vx|vy|vz"),
                             numbers("samples", "n|m"), numbers("intensity", "R|G|B")),
                     (v, out) -> {
                         AreaLight area = new AreaLight(v.vector(0), v.vector(1), v.vector(2),
-                                SolidShapes.samples(v, 3, 0, "number of samples along the first edge"),
-                                SolidShapes.samples(v, 3, 1, "number of samples along the second edge"),
+                                samples(v, 3, 0, "number of samples along the first edge"),
+                                samples(v, 3, 1, "number of samples along the second edge"),
                                 Rgb.of(v.colour(4)));
                         area.samples().forEach(out::light);
                     }),
-            Statement.definition("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
+            new Statement("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
                     numbers("first colour", "R|G|B"), numbers("second colour", "R|G|B")),
                     List.of(name("transform", "transform")), false, Definitions::pattern),
-            Statement.definition("transform", List.of(name("name", "name"), Group.operation("step", "scale s")),
-                    List.of(Group.operation("step", "step")), true, Definitions::transform),
+            new Statement("transform", List.of(name("name", "name"), word("step", Kind.OPERATION, "scale s")),
+                    List.of(word("step", Kind.OPERATION, "step")), true, Definitions::transform),
             Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
                     (v, out) -> Definitions.let(v)));
 
@@ -134,22 +139,17 @@ final class Grammar {
         return Hints.quoted(STATEMENTS.stream().map(Statement::keyword).toList(), "or");
     }
 
-    /** The orthographic camera, looking along its direction or at its point. */
-    private static OrthographicCamera orthographic(StatementValues v) throws StatementError {
+    /** A camera, orthographic or perspective, looking along its direction or at its point. */
+    private static ICamera camera(StatementValues v, boolean perspective) throws StatementError {
         Vector3f pos = v.vector(0);
-        if (v.isTarget(1)) {
-            return OrthographicCamera.lookingAt(pos, Directions.target(v, 1, pos), v.positive(2));
+        boolean atPoint = v.isTarget(1);
+        Vector3f view = atPoint ? Directions.target(v, 1, pos) : Directions.direction(v, 1, VIEW_HELP);
+        if (!perspective) {
+            float zoom = v.positive(2);
+            return atPoint ? OrthographicCamera.lookingAt(pos, view, zoom) : new OrthographicCamera(pos, view, zoom);
         }
-        return new OrthographicCamera(pos, Directions.direction(v, 1, VIEW_HELP), v.positive(2));
-    }
-
-    /** The perspective camera, looking along its direction or at its point. */
-    private static PerspectiveCamera perspective(StatementValues v) throws StatementError {
-        Vector3f pos = v.vector(0);
-        boolean looksAtPoint = v.isTarget(1);
-        Vector3f view = looksAtPoint ? Directions.target(v, 1, pos) : Directions.direction(v, 1, VIEW_HELP);
         float fov = v.between(2, 0, 180, "degrees", "it is the angle the picture's width spans, such as 60");
-        return looksAtPoint ? PerspectiveCamera.lookingAt(pos, view, fov) : new PerspectiveCamera(pos, view, fov);
+        return atPoint ? PerspectiveCamera.lookingAt(pos, view, fov) : new PerspectiveCamera(pos, view, fov);
     }
 
     /**
@@ -190,14 +190,55 @@ final class Grammar {
         Vector3f a = v.vector(0);
         Vector3f b = v.vector(1);
         Color colour = v.colour(2);
-        float[] first = {a.x(), a.y(), a.z()};
-        float[] second = {b.x(), b.y(), b.z()};
         for (int k = 0; k < 3; k++) {
-            if (first[k] == second[k]) {
+            if (v.number(0, k) == v.number(1, k)) {
                 throw v.errorAtValue(1, k, "the box is flat: both corners have " + "xyz".charAt(k) + " = " + v.written(1, k),
                         "a box takes two opposite corners, which differ in x, y and z");
             }
         }
         return Box.between(a, b, colour, v.material());
+    }
+
+    /** A cylinder of radius greater than 0 between two different end points (Part III, "More shapes"). */
+    private static Cylinder cylinder(StatementValues v) throws StatementError {
+        Vector3f first = v.vector(0);
+        Vector3f second = v.vector(1);
+        float radius = v.positive(2);
+        Directions.axis(v, first, second, 1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        return new Cylinder(first, second, radius, v.colour(3), v.material());
+    }
+
+    /** A cone whose radii are at least 0 and not both 0, between two different end points (Part III, "More shapes"). */
+    private static Cone cone(StatementValues v) throws StatementError {
+        Vector3f first = v.vector(0);
+        float firstRadius = atLeastZero(v, 1);
+        Vector3f second = v.vector(2);
+        float secondRadius = atLeastZero(v, 3);
+        if (firstRadius == 0 && secondRadius == 0) {
+            throw v.errorAtValue(3, 0, "the cone's radii are both 0, so it has no volume",
+                    "give one end a radius greater than 0: cone:(0|0|0):(1):(0|2|0):(0) is a cone with its apex up");
+        }
+        Directions.axis(v, first, second, 2, "cone", "a cone runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        return new Cone(first, firstRadius, second, secondRadius, v.colour(4), v.material());
+    }
+
+    /** The one number of group {@code g}, finite and at least 0: a cone's radius. */
+    private static float atLeastZero(StatementValues v, int g) throws StatementError {
+        float value = v.number(g, 0);
+        if (value >= 0) {
+            return value;
+        }
+        throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " must be at least 0, found " + v.written(g, 0),
+                "without its minus sign: " + v.written(g, 0).substring(1));
+    }
+
+    /** Number {@code k} of group {@code g}: an area light's samples along one edge, 1 to {@link AreaLight#MOST_SAMPLES}. */
+    private static int samples(StatementValues v, int g, int k, String name) throws StatementError {
+        float value = v.number(g, k);
+        if (value >= 1 && value <= AreaLight.MOST_SAMPLES && value == Math.rint(value)) {
+            return (int) value;
+        }
+        throw v.errorAtValue(g, k, "the " + name + " must be a whole number from 1 to " + AreaLight.MOST_SAMPLES
+                + ", found " + v.written(g, k), "more samples make a softer shadow and cost more shadow rays; 4|4 is a good start");
     }
 }

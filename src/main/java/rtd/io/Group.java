@@ -7,7 +7,6 @@ import java.util.List;
  * (numbers in the paper; a name, a path or a material's {@code key=value} pairs in Part II).
  *
  * @param meaning what the group is, for messages: "centre", "view direction"
- * @param kind    what it holds
  * @param shape   how it is written, for "write it as …": {@code x|y|z}, {@code path}
  * @param size    how many numbers a {@link Kind#NUMBERS} group holds; 1 for the others
  * @param keys    the keys a {@link Kind#PROPERTIES} group may hold; empty for the others
@@ -40,24 +39,17 @@ record Group(String meaning, Kind kind, String shape, int size, List<String> key
         return new Group(meaning, Kind.NUMBERS, "x|y|z", 3, List.of(), true, false);
     }
 
-    /** A group that holds one name, written as {@code shape} in the statement's usage. */
+    /** A group that holds one name, one path or one step ({@link Kind#OPERATION}), written as {@code shape}. */
+    static Group word(String meaning, Kind kind, String shape) {
+        return new Group(meaning, kind, shape, 1, List.of(), false, false);
+    }
+
     static Group name(String meaning, String shape) {
-        return new Group(meaning, Kind.NAME, shape, 1, List.of(), false, false);
+        return word(meaning, Kind.NAME, shape);
     }
 
-    /** A group that holds one file path. */
-    static Group path(String meaning) {
-        return new Group(meaning, Kind.PATH, "path", 1, List.of(), false, false);
-    }
-
-    /** A group of {@code key=number} pairs with the given keys. */
     static Group properties(String meaning, String... keys) {
         return new Group(meaning, Kind.PROPERTIES, "key=value|key=value...", 1, List.of(keys), false, false);
-    }
-
-    /** A transformation's step, such as {@code (rotate_y 30)}: a word and its numbers. */
-    static Group operation(String meaning, String shape) {
-        return new Group(meaning, Kind.OPERATION, shape, 1, List.of(), false, false);
     }
 
     /** This group, which may hold a pattern's name if it is an object's colour (Part III, "Patterns"). */

@@ -18,7 +18,7 @@ final class GroupReader {
     GroupReader(LineCursor cursor, WrittenGroups written, Names names) {
         this.cursor = cursor;
         this.written = written;
-        this.numbers = new NumberReader(cursor, names);
+        this.numbers = new NumberReader(cursor, names, written);
     }
 
     /** Reads {@code group} of {@code statement}, {@code :(…)}, into the written groups. */
@@ -42,7 +42,7 @@ final class GroupReader {
         }
         if (group.orName() && atLoneName()) {
             readName();
-            written.markNamed();
+            written.named = written.groupCount - 1;
             return;
         }
         switch (group.kind()) {
@@ -54,27 +54,24 @@ final class GroupReader {
         }
     }
 
-    /** The numbers of a group, after its '(' and any blanks, up to and with its ')'. */
+    /** The numbers of a group, after its '(' and any blanks, up to and with its ')'; perhaps {@code (at x|y|z)}. */
     private void readNumbers(int groupStart) throws StatementError {
-        boolean target = group.orAt() && atWordAt();
+        byte[] bytes = cursor.bytes;
+        int p = cursor.pos;
+        boolean target = group.orAt() && p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't'
+                && TextBytes.isSpace(bytes[p + 2]);
         if (target) {
             cursor.pos += 2;
-            written.markTarget();
+            written.target = written.groupCount - 1;
         }
         int found = 0;
-        while (true) {
+        do {
             cursor.skipBlanks();
-            float value = numbers.read();
-            if (found == group.size()) {
+            numbers.readAndKeep(-1);
+            if (++found > group.size()) {
                 throw tooManyNumbers(groupStart);
             }
-            written.add(value, numbers.tokenStart, cursor.pos);
-            numbers.markIfExpression(written);
-            found++;
-            if (groupEndsAfterNumber()) {
-                break;
-            }
-        }
+        } while (!groupEndsAfterNumber());
         if (found < group.size() && target) {
             throw cursor.error(groupStart, "too few numbers in the point that '" + statement.keyword()
                     + "' looks at: it takes 3 numbers (at x|y|z), found " + found, "write the point as (at x|y|z)");
@@ -85,21 +82,13 @@ final class GroupReader {
         }
     }
 
-    /** Whether the cursor is at the word {@code at} and a blank: {@code (at x|y|z)}. */
-    private boolean atWordAt() {
-        byte[] bytes = cursor.bytes;
-        int p = cursor.pos;
-        return p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
-    }
-
     /** Whether the group holds one name from the cursor on: a letter first, then a word, blanks and ')'. */
     private boolean atLoneName() {
         byte[] bytes = cursor.bytes;
-        int p = cursor.pos;
-        if (p >= bytes.length || !Character.isLetter(bytes[p])) {
+        if (cursor.pos >= bytes.length || !Character.isLetter(bytes[cursor.pos])) {
             return false;
         }
-        p = afterName(p);
+        int p = afterName(cursor.pos);
         while (p < bytes.length && TextBytes.isBlank(bytes[p])) {
             p++;
         }
@@ -113,7 +102,7 @@ final class GroupReader {
         if (cursor.pos == start) {
             throw expected("an operation such as 'scale 2' in ");
         }
-        written.add(Float.NaN, start, cursor.pos);
+        written.add(Float.NaN, start, cursor.pos, -1);
         cursor.skipBlanks();
         if (cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
@@ -121,9 +110,7 @@ final class GroupReader {
         }
         do {
             cursor.skipBlanks();
-            float value = numbers.read();
-            written.add(value, numbers.tokenStart, cursor.pos);
-            numbers.markIfExpression(written);
+            numbers.readAndKeep(-1);
         } while (!groupEndsAfterNumber());
     }
 
@@ -134,13 +121,12 @@ final class GroupReader {
         if (cursor.pos == start) {
             throw expected("a name in ");
         }
-        written.add(Float.NaN, start, cursor.pos);
+        written.add(Float.NaN, start, cursor.pos, -1);
         int nameEnd = cursor.pos;
         cursor.skipBlanks();
         if (!cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected ')' after '" + cursor.source.text(start, nameEnd) + "' in "
-                    + group.of(statement) + ", found "
-                    + cursor.describe(cursor.pos), Hints.forName(cursor, group, start));
+                    + group.of(statement) + ", found " + cursor.describe(cursor.pos), Hints.forName(cursor, group, start));
         }
         cursor.pos++;
     }
@@ -166,10 +152,10 @@ final class GroupReader {
             throw expected("')' after the path in ");
         }
         int nameEnd = cursor.pos;
-        while (TextBytes.isBlank(cursor.bytes[nameEnd - 1])) {
+        while (TextBytes.isBlank(bytes[nameEnd - 1])) {
             nameEnd--; // the group is not empty, so a byte that is no blank stands before
         }
-        written.add(Float.NaN, start, nameEnd);
+        written.add(Float.NaN, start, nameEnd, -1);
         cursor.pos++;
     }
 
@@ -179,7 +165,7 @@ final class GroupReader {
             cursor.pos++;
             return;
         }
-        while (true) {
+        do {
             cursor.skipBlanks();
             int key = readKey();
             cursor.skipBlanks();
@@ -188,13 +174,8 @@ final class GroupReader {
             }
             cursor.pos++;
             cursor.skipBlanks();
-            float value = numbers.read();
-            written.addProperty(key, value, numbers.tokenStart, cursor.pos);
-            numbers.markIfExpression(written);
-            if (groupEndsAfterNumber()) {
-                return;
-            }
-        }
+            numbers.readAndKeep(key);
+        } while (!groupEndsAfterNumber());
     }
 
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
@@ -218,8 +199,7 @@ final class GroupReader {
         if (key < 0) {
             String nearest = Hints.nearest(word, group.keys());
             throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
-                    ? "did you mean '" + nearest + "'?"
-                    : "the keys are " + Hints.quoted(group.keys(), "and"));
+                    ? "did you mean '" + nearest + "'?" : "the keys are " + Hints.quoted(group.keys(), "and"));
         }
         if (written.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
@@ -227,10 +207,7 @@ final class GroupReader {
         return key;
     }
 
-    /**
-     * Too many numbers in a group; on a line with too few groups the hint says this group was likely left
-     * out.
-     */
+    /** Too many numbers in a group; on a line with too few groups the hint says this group was likely left out. */
     private StatementError tooManyNumbers(int groupStart) {
         String message = "too many numbers in " + group.of(statement) + ": it takes " + group.contents();
         int g = statement.groups().indexOf(group);
@@ -244,11 +221,12 @@ final class GroupReader {
     /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
     private int groupsOnTheLineFrom(int offset) {
         int groups = 0;
-        for (int i = offset; i < cursor.bytes.length && !TextBytes.isLineBreak(cursor.bytes[i]); i++) {
-            if (cursor.bytes[i] == '/' && i + 1 < cursor.bytes.length && cursor.bytes[i + 1] == '/') {
+        byte[] bytes = cursor.bytes;
+        for (int i = offset; i < bytes.length && !TextBytes.isLineBreak(bytes[i]); i++) {
+            if (bytes[i] == '/' && i + 1 < bytes.length && bytes[i + 1] == '/') {
                 break;
             }
-            groups += cursor.bytes[i] == '(' ? 1 : 0;
+            groups += bytes[i] == '(' ? 1 : 0;
         }
         return groups;
     }
@@ -258,7 +236,6 @@ final class GroupReader {
         return groupError(cursor.pos, "expected " + what + group.of(statement) + ", found " + cursor.describe(cursor.pos));
     }
 
-    /** An error about the group, with the statement's usage as the help. */
     private StatementError groupError(int offset, String message) {
         return cursor.error(offset, message, "write it as " + statement.usage());
     }

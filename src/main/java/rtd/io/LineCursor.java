@@ -1,17 +1,16 @@
 package rtd.io;
 
 /**
- * Where a reader of a scene file stands: the byte being read, the line it is on and where that
- * line starts, with the moves over the bytes that the statement and group readers share (look at
- * a byte, skip blanks, go to the next line) and an error at a place on the line. One cursor is
- * shared by the {@link StatementReader} and its {@link GroupReader}, so that both see one position.
+ * Where a reader of a scene file stands: the byte being read, the line it is on and where that line
+ * starts, with the moves over the bytes that the statement, group and expression readers share (look at
+ * a byte, skip blanks, go to the next line) and an error at a place on the line. One cursor is shared by
+ * them, so that all see one position.
  */
 final class LineCursor {
 
     final SourceText source;
-    /** The source's bytes, until {@link #release}. */
-    byte[] bytes;
-    /** The byte being read. */
+    /** The source's bytes, which it holds until the whole parse is done (its messages quote them). */
+    final byte[] bytes;
     int pos;
     /** The number of the line being read, from 1, and the offset of its first byte. */
     int line = 1;
@@ -25,22 +24,20 @@ final class LineCursor {
         this.lineStart = start;
     }
 
-    /** Lets the bytes go once the file is read, as {@link SourceText#close} does. */
-    void release() {
-        bytes = null;
+    boolean at(char c) {
+        return pos < bytes.length && bytes[pos] == c;
     }
 
     /** Whether the cursor is at ':', blanks and '(': the start of a group. */
     boolean atNextGroup() {
-        if (bytes[pos] != ':') {
-            return false;
-        }
         int after = afterSpaces(pos + 1);
-        return after < bytes.length && bytes[after] == '(';
+        return bytes[pos] == ':' && after < bytes.length && bytes[after] == '(';
     }
 
-    boolean at(char c) {
-        return pos < bytes.length && bytes[pos] == c;
+    /** Whether the cursor is at the end of the file, of the line, or at a {@code //} comment. */
+    boolean atEndOfStatement() {
+        return pos >= bytes.length || TextBytes.isLineBreak(bytes[pos])
+                || pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
     }
 
     /** Skips spaces and tabs, not a carriage return: it ends a line ({@link #skipToNextLine}). */
@@ -66,21 +63,12 @@ final class LineCursor {
         return p;
     }
 
-    /** Whether the cursor is at the end of the file, of the line, or at a {@code //} comment. */
-    boolean atEndOfStatement() {
-        return pos >= bytes.length || TextBytes.isLineBreak(bytes[pos])
-                || pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
-    }
-
     /** Goes past the next line break: LF, CR LF, or a CR alone, as old Mac files end lines. */
     void skipToNextLine() {
-        while (pos < bytes.length && !TextBytes.isLineBreak(bytes[pos])) {
+        while (pos < bytes.length && !TextBytes.endsLine(bytes, pos)) {
             pos++;
         }
         if (pos < bytes.length) {
-            if (bytes[pos] == '\r' && pos + 1 < bytes.length && bytes[pos + 1] == '\n') {
-                pos++;
-            }
             pos++;
             line++;
             lineStart = pos;

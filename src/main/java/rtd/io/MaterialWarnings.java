@@ -20,7 +20,10 @@ final class MaterialWarnings {
     private MaterialWarnings() {
     }
 
-    /** The warnings for the {@code definitions}, in file order, of which objects {@code named} some. */
+    /**
+     * The warnings for the {@code definitions}, in file order, of which objects {@code named} some: at most
+     * {@link SceneParser#MAX_ERRORS} and a last line for the rest, as a library of materials could give thousands.
+     */
     static List<SceneError> of(List<SceneContents.Located<SceneContents.Named>> definitions, Set<String> named, boolean lit) {
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !definitions.isEmpty()) {
@@ -40,14 +43,6 @@ final class MaterialWarnings {
                         + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
-        return atMost(warnings);
-    }
-
-    /**
-     * The first {@link SceneParser#MAX_ERRORS} warnings and a last line for the rest: a library of materials
-     * could print thousands.
-     */
-    private static List<SceneError> atMost(List<SceneError> warnings) {
         int most = SceneParser.MAX_ERRORS;
         if (warnings.size() <= most) {
             return warnings;
@@ -62,10 +57,7 @@ final class MaterialWarnings {
     /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */
     private static SceneError atTheIor(SceneError name) {
         Matcher key = IOR.matcher(name.sourceLine() == null ? "" : name.sourceLine());
-        return key.find(Math.max(0, name.column() - 1)) ? at(name, key.start() + 1) : name;
-    }
-
-    private static SceneError at(SceneError place, int column) {
-        return new SceneError(place.file(), place.line(), column, place.message(), place.sourceLine(), place.help());
+        return key.find(Math.max(0, name.column() - 1))
+                ? new SceneError(name.file(), name.line(), key.start() + 1, name.message(), name.sourceLine(), name.help()) : name;
     }
 }

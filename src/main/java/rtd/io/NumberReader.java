@@ -13,6 +13,7 @@ final class NumberReader {
 
     private final LineCursor cursor;
     private final Names names;
+    private final WrittenGroups written;
     /** Made at the first value that is no plain number: a file of plain numbers never loads the expression reader. */
     private ExpressionParser expressions;
     /** Where the number read last starts. */
@@ -21,23 +22,31 @@ final class NumberReader {
     private Expression tree;
     private double exact;
 
-    NumberReader(LineCursor cursor, Names names) {
+    NumberReader(LineCursor cursor, Names names, WrittenGroups written) {
         this.cursor = cursor;
         this.names = names;
+        this.written = written;
     }
 
     private ExpressionParser expressions() {
-        if (expressions == null) {
-            expressions = new ExpressionParser(cursor, names);
-        }
+        expressions = expressions != null ? expressions : new ExpressionParser(cursor, names);
         return expressions;
     }
 
+    /** Reads one number, or an expression, at the cursor, and keeps it in the written groups with {@code key} (or −1). */
+    void readAndKeep(int key) throws StatementError {
+        float value = read();
+        written.add(value, tokenStart, cursor.pos, key);
+        if (tree != null) {
+            written.markExpression(exact, tree);
+        }
+    }
+
     /**
-     * Reads one number, or an expression, at the cursor; its start is left in {@link #tokenStart}. The common case,
-     * a plain number that ends at '|' or ')', stays a small method, compiled early in a large file's first read.
+     * One number, or an expression, at the cursor; its start is left in {@link #tokenStart}. The common case, a
+     * plain number that ends at '|' or ')', stays a small method, compiled early in a large file's first read.
      */
-    float read() throws StatementError {
+    private float read() throws StatementError {
         tree = null;
         int start = cursor.pos;
         tokenStart = start;
@@ -78,13 +87,6 @@ final class NumberReader {
         return expression();
     }
 
-    /** Marks the value {@code written} kept last as an expression, if the number read last was one. */
-    void markIfExpression(WrittenGroups written) {
-        if (tree != null) {
-            written.markExpression(exact, tree);
-        }
-    }
-
     /** Reads the expression from {@link #tokenStart}: its value at the clock, finite and within a float's range. */
     private float expression() throws StatementError {
         cursor.pos = tokenStart;
@@ -116,10 +118,7 @@ final class NumberReader {
         while (p < bytes.length && TextBytes.isSpace(bytes[p])) {
             p++;
         }
-        if (p >= bytes.length) {
-            return false;
-        }
-        byte b = bytes[p];
+        byte b = p < bytes.length ? bytes[p] : 0;
         boolean comment = b == '/' && p + 1 < bytes.length && bytes[p + 1] == '/';
         return b == '+' || b == '-' || b == '*' || b == '^' || b == '/' && !comment;
     }
@@ -182,33 +181,23 @@ final class NumberReader {
      * else at the token, with a hint.
      */
     private StatementError notANumber() {
-        int invisible = firstInvisible(tokenStart, cursor.pos);
+        int invisible = tokenStart;
+        while (invisible < cursor.pos && !(cursor.bytes[invisible] < 0 && (cursor.bytes[invisible] & 0xC0) != 0x80
+                && Hints.isInvisible(cursor.source.codePointAt(invisible)))) {
+            invisible++; // to the first invisible character (Hints.isInvisible), or the token's end
+        }
         if (invisible == tokenStart) {
             return cursor.error(invisible, "expected a number, found " + cursor.describe(invisible), null);
         }
-        if (invisible > tokenStart && isNumber(tokenStart, invisible)) {
-            return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
+        if (invisible < cursor.pos) {
+            try {
+                FloatParser.parse(cursor.bytes, tokenStart, invisible);
+                return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
+            } catch (NumberFormatException e) {
+                // no number before it: the token's message
+            }
         }
         String token = cursor.source.text(tokenStart, cursor.pos);
         return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
-    }
-
-    private boolean isNumber(int from, int to) {
-        try {
-            FloatParser.parse(cursor.bytes, from, to);
-            return true;
-        } catch (NumberFormatException e) {
-            return false;
-        }
-    }
-
-    /** The offset of the first invisible character ({@link Hints#isInvisible}) in {@code bytes[from, to)}, or −1. */
-    private int firstInvisible(int from, int to) {
-        for (int i = from; i < to; i++) {
-            if (cursor.bytes[i] < 0 && (cursor.bytes[i] & 0xC0) != 0x80 && Hints.isInvisible(cursor.source.codePointAt(i))) {
-                return i;
-            }
-        }
-        return -1;
     }
 }

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
@@ -19,7 +20,8 @@ import rtd.math.Vector3f;
 
 /**
  * The triangles of the OBJ file a {@code mesh} names (Part II, "Geometry"): found and read by {@link #read}
- * through {@link ObjReader}, placed in the scene by {@link #triangles}. The arrays are never changed.
+ * through {@link ObjReader}, placed in the scene by {@link #triangles}. The arrays are never changed, so the
+ * frames of an animation share one mesh.
  *
  * @param vertices      x, y, z of each vertex
  * @param normals       x, y, z of each normal
@@ -34,6 +36,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
      * is not "humongous" (put straight into the old generation).
      */
     private static final int BLOCK = 1 << 12;
+    /** Larger files do not fit in one Java array. */
+    private static final long MAX_FILE_SIZE = Integer.MAX_VALUE - 8;
 
     /**
      * The triangles, in order, each corner p moved to {@code scale·p + shift}; one whose corners all name
@@ -80,11 +84,6 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         return vectors;
     }
 
-    // ---- finding and reading the file ------------------------------------------------------
-
-    /** Larger files do not fit in one Java array. */
-    private static final long MAX_FILE_SIZE = Integer.MAX_VALUE - 8;
-
     /**
      * The mesh in the OBJ file that group {@code g} names, relative to the scene's folder. A file that cannot
      * be read is an error at the path; mistakes inside it are located in it, each naming the scene's line.
@@ -101,10 +100,11 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (InvalidPathException e) {
             throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
         }
-        MeshCache cache = scene.meshes();
-        ObjMesh cached = cache == null ? null : cache.get(file);
-        if (cached != null) {
-            return cached;
+        Map<Path, ObjMesh> cache = scene.meshes();
+        Path key = cache == null ? null : file.toAbsolutePath().normalize();
+        ObjMesh mesh = cache == null ? null : cache.get(key);
+        if (mesh != null) {
+            return mesh;
         }
         byte[] bytes;
         try {
@@ -117,11 +117,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                                             + "folder rtd runs in; or give the full path"
                                     : "a mesh's path is relative to the folder of the scene file");
         }
-        ObjMesh mesh;
-        try {
-            try (SourceText obj = new SourceText(shown, bytes)) {
-                mesh = ObjReader.read(obj);
-            }
+        try (SourceText obj = new SourceText(shown, bytes)) {
+            mesh = ObjReader.read(obj);
         } catch (SceneException e) {
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();
             List<SceneError> errors = e.errors().stream().map(error -> error.saying(error.message(),
@@ -135,7 +132,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                             + "skipped too; a mesh needs at least one face");
         }
         if (cache != null) {
-            cache.put(file, mesh);
+            cache.put(key, mesh);
         }
         return mesh;
     }
@@ -150,26 +147,20 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
     }
 
     private static byte[] readFile(Path file) throws IOException {
-        if (Files.isDirectory(file)) {
-            throw new FileSystemException(file.toString(), null, "it is a folder, not a file");
-        }
-        if (Files.exists(file) && !Files.isRegularFile(file)) {
-            // a device or a pipe: it might never end
-            throw new FileSystemException(file.toString(), null, "it is not a regular file");
-        }
-        if (Files.exists(file) && Files.size(file) > MAX_FILE_SIZE) {
-            throw new FileSystemException(file.toString(), null, "it is larger than 2 GB");
+        String refused = Files.isDirectory(file) ? "it is a folder, not a file"
+                : !Files.exists(file) ? null
+                : !Files.isRegularFile(file) ? "it is not a regular file" // a device or a pipe: it might never end
+                : Files.size(file) > MAX_FILE_SIZE ? "it is larger than 2 GB" : null;
+        if (refused != null) {
+            throw new FileSystemException(file.toString(), null, refused);
         }
         return SceneFileReader.readWhole(file); // not Files.readAllBytes: it keeps a buffer as large as the file
     }
 
     /** Why a file could not be read, in words for a person. */
     private static String reason(IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return "no such file";
-        }
-        if (e instanceof AccessDeniedException) {
-            return "permission denied";
+        if (e instanceof NoSuchFileException || e instanceof AccessDeniedException) {
+            return e instanceof NoSuchFileException ? "no such file" : "permission denied";
         }
         if (e instanceof FileSystemException failure && failure.getReason() != null) {
             return failure.getReason().toLowerCase(Locale.ROOT);

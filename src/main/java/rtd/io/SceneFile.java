@@ -6,6 +6,8 @@ import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import rtd.scene.Scene;
 
 /**
@@ -19,7 +21,7 @@ public final class SceneFile {
     private final String name;
     private final byte[] bytes;
     private final Path folder;
-    private final MeshCache meshes = new MeshCache();
+    private final Map<Path, ObjMesh> meshes = new ConcurrentHashMap<>();
     private volatile boolean usesClock;
 
     private SceneFile(String name, byte[] bytes, Path folder) {

@@ -2,6 +2,7 @@ package rtd.io;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Map;
 
 /**
  * The bytes of a scene (or OBJ) file, its name and the folder its relative paths start from, with what a
@@ -10,17 +11,20 @@ import java.nio.file.Path;
  */
 final class SourceText implements AutoCloseable {
 
+    /** The most bytes of a token quoted in a message; a longer one is cut, with an ellipsis. */
+    static final int MAX_QUOTED_BYTES = 60;
+
     private final String name;
     private byte[] bytes;
     private final Path folder;
-    /** The meshes read for other frames of one animation (Part III), or null: each is read anew. */
-    private final MeshCache meshes;
-
     /**
-     * A text named {@code name} in messages, whose relative paths start from {@code folder}, its meshes kept in
-     * (and taken from) {@code meshes}, if not null.
+     * The OBJ files read for the other frames of one animation (Part III, "Frames on the command line"), by
+     * absolute path, or null: each is read anew. A mesh file is the same at every clock, and only files read
+     * without a mistake are kept.
      */
-    SourceText(String name, byte[] bytes, Path folder, MeshCache meshes) {
+    private final Map<Path, ObjMesh> meshes;
+
+    SourceText(String name, byte[] bytes, Path folder, Map<Path, ObjMesh> meshes) {
         this.name = name;
         this.bytes = bytes;
         this.folder = folder;
@@ -44,8 +48,7 @@ final class SourceText implements AutoCloseable {
         return folder;
     }
 
-    /** Where meshes read once are kept for the other frames, or null. */
-    MeshCache meshes() {
+    Map<Path, ObjMesh> meshes() {
         return meshes;
     }
 
@@ -58,19 +61,16 @@ final class SourceText implements AutoCloseable {
         bytes = null;
     }
 
-    /** The text of the line that starts at byte {@code lineStart}, without its line break. */
+    /** The text of the line that starts at byte {@code lineStart}, without its line break (LF, CR LF or CR). */
     String lineText(int lineStart) {
         int end = lineStart;
         while (end < bytes.length && !TextBytes.isLineBreak(bytes[end])) {
-            end++; // a line ends at LF, CR LF or a CR alone (old Mac files)
+            end++;
         }
         return new String(bytes, lineStart, end - lineStart, StandardCharsets.UTF_8);
     }
 
-    /**
-     * An error at byte {@code offset} of line {@code line}, which starts at byte {@code lineStart}: the place
-     * and the line's text that messages show.
-     */
+    /** An error at byte {@code offset} of line {@code line}, which starts at byte {@code lineStart}. */
     SceneError errorAt(int line, int lineStart, int offset, String message, String help) {
         return new SceneError(name, line, column(lineStart, offset), message, lineText(lineStart), help);
     }
@@ -80,9 +80,6 @@ final class SourceText implements AutoCloseable {
         String before = new String(bytes, lineStart, offset - lineStart, StandardCharsets.UTF_8);
         return before.codePointCount(0, before.length()) + 1;
     }
-
-    /** The most bytes of a token quoted in a message; a longer one is cut, with an ellipsis. */
-    static final int MAX_QUOTED_BYTES = 60;
 
     /**
      * The text of {@code bytes[start, end)}, for a message: a token of 50 MB is quoted by its first
@@ -107,11 +104,9 @@ final class SourceText implements AutoCloseable {
         if (TextBytes.isLineBreak(bytes[offset])) {
             return "the end of the line";
         }
-        if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '/') {
-            return "a comment";
-        }
-        if (offset + 1 < bytes.length && bytes[offset] == '/' && bytes[offset + 1] == '*') {
-            return "'/*'";
+        byte next = offset + 1 < bytes.length ? bytes[offset + 1] : 0;
+        if (bytes[offset] == '/' && (next == '/' || next == '*')) {
+            return next == '/' ? "a comment" : "'/*'";
         }
         int codePoint = codePointAt(offset);
         if (Character.isISOControl(codePoint)) {

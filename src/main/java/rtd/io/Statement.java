@@ -21,20 +21,11 @@ import rtd.scene.Light;
  */
 record Statement(String keyword, List<Group> groups, List<Group> optional, boolean repeatsLast, Builder builder) {
 
-    /** The first optional group of an object: the name of a {@code material:} (or of a {@code transform:}). */
+    /** The optional groups of an object, in either order: the names of a {@code material:} and a {@code transform:}. */
     static final Group MATERIAL = Group.name("material", "material");
-    /** The second optional group of an object: the name of a {@code transform:} (or of a {@code material:}). */
     static final Group TRANSFORM = Group.name("transform", "transform");
 
-    Statement {
-        groups = List.copyOf(groups);
-        optional = List.copyOf(optional);
-    }
-
-    /**
-     * A statement that makes an object, a shape: its colour group may name a pattern, and up to two last
-     * groups may name its material and its transform, in either order.
-     */
+    /** A statement that makes a shape: its colour may name a pattern, and it may name a material and a transform. */
     static Statement shape(String keyword, List<Group> groups, Builder builder) {
         return new Statement(keyword, groups.stream().map(Group::orPatternName).toList(), List.of(MATERIAL, TRANSFORM),
                 false, builder);
@@ -45,12 +36,6 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return new Statement(keyword, groups, List.of(), false, builder);
     }
 
-    /** A definition with optional last groups, the last of which may repeat. */
-    static Statement definition(String keyword, List<Group> groups, List<Group> optional, boolean repeatsLast,
-            Builder builder) {
-        return new Statement(keyword, groups, optional, repeatsLast, builder);
-    }
-
     /**
      * Whether it makes an object, which may name a material and a transform. The group itself, not an equal one:
      * asked of every line, and a record's {@code equals} would compare every field.
@@ -59,7 +44,6 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return !optional.isEmpty() && optional.get(0) == MATERIAL;
     }
 
-    /** How many optional groups may follow at most. */
     int mostOptional() {
         return repeatsLast ? Integer.MAX_VALUE : optional.size();
     }
@@ -69,10 +53,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return optional.get(Math.min(k, optional.size() - 1));
     }
 
-    /**
-     * Checks the values (a broken rule is an error at its value) and gives what the statement makes to
-     * {@code out}.
-     */
+    /** Checks the values (a broken rule is an error at its value) and gives what the statement makes to {@code out}. */
     @FunctionalInterface
     interface Builder {
         void build(StatementValues values, Output out) throws StatementError;
@@ -90,13 +71,11 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         /** Several objects, in order, at the statement's place: a mesh's triangles. */
         void objects(List<IGeometry> objects);
 
-        /** A finish that objects may name, defined under {@code name}. */
         void material(String name, Material material);
 
-        /** A pattern that objects' colour groups may name; its transform's name (or null) is resolved when the file is read. */
+        /** A pattern; its transform's name (or null) is resolved when the file is read. */
         void pattern(String name, Pattern pattern, String transform);
 
-        /** A transformation that objects and patterns may name. */
         void transform(String name, Matrix4 transform);
 
         void light(Light light);
@@ -117,9 +96,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         if (optional.isEmpty()) {
             return String.valueOf(groups.size());
         }
-        if (takesMaterial()) {
-            return groups.size() + ", or up to " + (groups.size() + 2) + " with a material and a transform";
-        }
-        return groups.size() + ", or " + (groups.size() + optional.size()) + " with a " + optional.get(0).meaning();
+        return groups.size() + (takesMaterial() ? ", or up to " + (groups.size() + 2) + " with a material and a transform"
+                : ", or " + (groups.size() + optional.size()) + " with a " + optional.get(0).meaning());
     }
 }

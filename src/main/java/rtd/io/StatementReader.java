@@ -46,7 +46,6 @@ final class StatementReader {
             }
             cursor.skipToNextLine();
         }
-        cursor.release();
     }
 
     // ---- one statement ------------------------------------------------------------------
@@ -84,18 +83,16 @@ final class StatementReader {
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (!statement.takesMaterial() || optional == 0 && values.patternGroup() < 0) {
-            statement.builder().build(values, contents);
-            return;
+        if (statement.takesMaterial() && (optional > 0 || values.patternGroup() >= 0)) {
+            String name = values.name(groups.size());
+            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
+            if (above == null) {
+                contents.addPending(values.copy()); // its names are resolved when the whole file is read
+                return;
+            }
+            contents.namedAtOnce.add(name);
+            values.useNames(DefinedNames.ObjectNames.NONE.with(above));
         }
-        String name = values.name(groups.size());
-        Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
-        if (above == null) {
-            contents.addPending(values.copy()); // its names are resolved when the whole file is read
-            return;
-        }
-        contents.namedAtOnce.add(name);
-        values.useMaterial(above);
         statement.builder().build(values, contents);
     }
 
@@ -126,12 +123,12 @@ final class StatementReader {
         if (statement != null) {
             return statement;
         }
+        String word = cursor.source.text(statementStart, cursor.pos);
         if (afterLineNumber || !atLineNumber()) {
-            throw unknownKeyword(statementStart);
+            throw cursor.error(statementStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
         }
-        String number = cursor.source.text(statementStart, cursor.pos);
-        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + number
-                + "'", Hints.LINE_NUMBERS).place());
+        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + word + "'",
+                Hints.LINE_NUMBERS).place());
         cursor.skipBlanks();
         return cursor.atEndOfStatement() ? null : readKeyword(true);
     }
@@ -146,18 +143,10 @@ final class StatementReader {
         return cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]);
     }
 
-    private StatementError unknownKeyword(int keywordStart) {
-        String word = cursor.source.text(keywordStart, cursor.pos);
-        return cursor.error(keywordStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
-    }
-
     /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
     private StatementError noStatement() {
-        String help = null;
-        if (cursor.at('#') || atBlockComment()) {
-            help = Hints.COMMENTS;
-            openBlockComment();
-        } else if (cursor.at('/')) {
+        String help = commentHelp();
+        if (help == null && cursor.at('/')) {
             help = Hints.COMMENTS + ", two slashes"; // one slash alone: the second was forgotten
         }
         return cursor.error(cursor.pos, "expected a statement (" + Grammar.keywordList() + "), found "
@@ -166,16 +155,11 @@ final class StatementReader {
 
     /** Text after a whole statement: a comment as other languages write it, a ';', a second statement. */
     private StatementError textAfterStatement() {
-        String help;
-        if (cursor.at('#') || atBlockComment()) {
-            help = Hints.COMMENTS;
-            openBlockComment();
-        } else if (cursor.at(';')) {
-            String second = secondStatement(cursor.pos + 1);
-            help = second != null ? second : Hints.SEMICOLON;
-        } else {
-            String second = secondStatement(cursor.pos);
-            help = second != null ? second : "a comment after a statement starts with //";
+        String help = commentHelp();
+        if (help == null) {
+            boolean semicolon = cursor.at(';');
+            String second = secondStatement(semicolon ? cursor.pos + 1 : cursor.pos);
+            help = second != null ? second : semicolon ? Hints.SEMICOLON : "a comment after a statement starts with //";
         }
         return cursor.error(cursor.pos, "expected the end of the line after the statement, found "
                 + cursor.describe(cursor.pos), help);
@@ -193,25 +177,26 @@ final class StatementReader {
 
     // ---- comments as other languages write them ---------------------------------------------
 
-    private boolean atBlockComment() {
-        return cursor.pos + 1 < cursor.bytes.length && cursor.bytes[cursor.pos] == '/' && cursor.bytes[cursor.pos + 1] == '*';
-    }
-
-    /** At a {@code /*}: if the comment does not end on this line, skips the lines up to its end. */
-    private void openBlockComment() {
-        inBlockComment = atBlockComment() && commentEnd(cursor.pos + 2) < 0;
+    /**
+     * The help at a comment as other languages write it, {@code #} or {@code /*}, or null; a {@code /*} that does
+     * not end on this line makes the reader skip the lines up to its end.
+     */
+    private String commentHelp() {
+        boolean block = cursor.pos + 1 < cursor.bytes.length && cursor.bytes[cursor.pos] == '/'
+                && cursor.bytes[cursor.pos + 1] == '*';
+        if (!block && !cursor.at('#')) {
+            return null;
+        }
+        inBlockComment = block && commentEnd(cursor.pos + 2) < 0;
+        return Hints.COMMENTS;
     }
 
     /** On a line inside a block comment: whether the comment ends on it; the cursor is then after the end. */
     private boolean leaveBlockComment() {
         int after = commentEnd(cursor.pos);
-        if (after < 0) {
-            return false;
-        }
-        inBlockComment = false;
-        cursor.pos = after;
-        cursor.skipBlanks();
-        return true;
+        inBlockComment = after < 0;
+        cursor.pos = inBlockComment ? cursor.pos : cursor.afterSpaces(after);
+        return !inBlockComment;
     }
 
     /** The offset after the first {@code *}{@code /} from {@code from} to the end of its line, or −1. */

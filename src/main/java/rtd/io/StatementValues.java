@@ -42,9 +42,14 @@ final class StatementValues {
         groups.clear();
     }
 
-    /** Sets the finish that {@link #material()} gives, once the material's name is known to mean it. */
-    void useMaterial(Material material) {
-        this.names = DefinedNames.ObjectNames.NONE.with(material);
+    /** An independent copy, for an object built when the whole file is read. */
+    StatementValues copy() {
+        StatementValues copy = new StatementValues(source, groups.copy(), expressionNames);
+        copy.statement = statement;
+        copy.line = line;
+        copy.lineStart = lineStart;
+        copy.statementStart = statementStart;
+        return copy;
     }
 
     /** Sets what the object's names mean (Part III: a material, a pattern, a transform). */
@@ -55,6 +60,23 @@ final class StatementValues {
     /** The object as its names make it ({@link DefinedNames.ObjectNames#dress}): every shape's object passes through here. */
     IGeometry dress(IGeometry object) {
         return names.dress(object);
+    }
+
+    /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
+    Material material() {
+        return names.material();
+    }
+
+    Statement statement() {
+        return statement;
+    }
+
+    int line() {
+        return line;
+    }
+
+    SourceText source() {
+        return source;
     }
 
     /** How many groups were read, the optional ones among them. */
@@ -77,6 +99,16 @@ final class StatementValues {
         return groups.anyExpression;
     }
 
+    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
+    boolean hasValue(int g) {
+        return g < groups.groupCount && groups.end(g) > groups.firsts[g];
+    }
+
+    /** Whether group {@code g} was written {@code (at x|y|z)}, a point to look at. */
+    boolean isTarget(int g) {
+        return groups.target == g;
+    }
+
     /** The numbers of group {@code g} as read, unchecked, for the table of the numbers that use the clock. */
     float[] numbers(int g) {
         return Arrays.copyOfRange(groups.values, groups.firsts[g], groups.end(g));
@@ -85,45 +117,6 @@ final class StatementValues {
     /** The expression of number {@code k} of group {@code g}, or null for a plain number. */
     Expression tree(int g, int k) {
         return groups.trees[groups.firsts[g] + k];
-    }
-
-    /** Value {@code k} of group {@code g}, which must be finite. */
-    float number(int g, int k) throws StatementError {
-        return finite(groups.firsts[g] + k, meaning(g));
-    }
-
-    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
-    boolean hasValue(int g) {
-        return groups.hasValue(g);
-    }
-
-    /** An independent copy, for an object built when the whole file is read. */
-    StatementValues copy() {
-        StatementValues copy = new StatementValues(source, groups.copy(), expressionNames);
-        copy.statement = statement;
-        copy.line = line;
-        copy.lineStart = lineStart;
-        copy.statementStart = statementStart;
-        return copy;
-    }
-
-    // ---- asked for by the builders ------------------------------------------------------
-
-    Statement statement() {
-        return statement;
-    }
-
-    int line() {
-        return line;
-    }
-
-    SourceText source() {
-        return source;
-    }
-
-    /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
-    Material material() {
-        return names.material();
     }
 
     /** The name or path that group {@code g} holds, as written. */
@@ -136,9 +129,9 @@ final class StatementValues {
         return written(groups.firsts[g] + k);
     }
 
-    /** Whether group {@code g} was written {@code (at x|y|z)}, a point to look at. */
-    boolean isTarget(int g) {
-        return groups.target == g;
+    String meaning(int g) {
+        int own = statement.groups().size();
+        return g < own ? statement.groups().get(g).meaning() : statement.optional(g - own).meaning();
     }
 
     /** An error at the '(' of group {@code g}. */
@@ -162,6 +155,18 @@ final class StatementValues {
     }
 
     // ---- the rules --------------------------------------------------------------------------
+
+    /** Value {@code k} of group {@code g}, which must be finite. */
+    float number(int g, int k) throws StatementError {
+        return finite(groups.firsts[g] + k, meaning(g));
+    }
+
+    /** The one value of group {@code g}, finite, as an expression: the one written, or the plain number as read. */
+    Expression expression(int g) throws StatementError {
+        int i = groups.firsts[g];
+        float value = finite(i, meaning(g));
+        return groups.trees[i] != null ? groups.trees[i] : new Expression.Number(value, groups.starts[i]);
+    }
 
     /** The one number of group {@code g}, which must be finite and greater than 0 (a radius, a zoom). */
     float positive(int g) throws StatementError {
@@ -255,29 +260,13 @@ final class StatementValues {
         return (int) value;
     }
 
-    String meaning(int g) {
-        int own = statement.groups().size();
-        return g < own ? statement.groups().get(g).meaning() : statement.optional(g - own).meaning();
-    }
-
-    /** Group {@code g} as written, "(0|0|0)"; "(at 0|0|0)" for a point to look at. */
-    String groupText(int g) {
-        StringBuilder text = new StringBuilder(g == groups.target ? "(at " : "(");
-        for (int i = groups.firsts[g]; i < groups.end(g); i++) {
-            text.append(i > groups.firsts[g] ? "|" : "").append(written(i));
-        }
-        return text.append(')').toString();
-    }
-
     /** A number for a message or a hint without a trailing ".0": 180, -0.5. */
     static String plain(float value) {
         return value == Math.rint(value) ? String.valueOf((long) value) : String.valueOf(value);
     }
 
-    /** An error at byte {@code offset} of the statement's line. */
     private StatementError errorAt(int offset, String message, String help) {
-        return new StatementError(new SceneError(source.name(), line, source.column(lineStart, offset), message,
-                source.lineText(lineStart), help));
+        return new StatementError(source.errorAt(line, lineStart, offset, message, help));
     }
 
     /** Value {@code i} (of all groups) as written, for messages; an expression with its value ({@link ClockText#withValue}). */
@@ -285,12 +274,5 @@ final class StatementValues {
         String text = source.text(groups.starts[i], groups.ends[i]);
         Expression tree = groups.trees[i];
         return tree == null ? text : ClockText.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock());
-    }
-
-    /** The one value of group {@code g}, finite, as an expression: the one written, or the plain number as read. */
-    Expression expression(int g) throws StatementError {
-        int i = groups.firsts[g];
-        float value = finite(i, meaning(g));
-        return groups.trees[i] != null ? groups.trees[i] : new Expression.Number(value, groups.starts[i]);
     }
 }

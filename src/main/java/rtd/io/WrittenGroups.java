@@ -18,7 +18,6 @@ final class WrittenGroups {
     /** For a value written as an expression (Part III): its tree and its value in double precision; else null. */
     Expression[] trees;
     double[] exact;
-    /** Whether a value of this statement is an expression. */
     boolean anyExpression;
     int count;
     int[] firsts;
@@ -63,30 +62,15 @@ final class WrittenGroups {
         opens[groupCount++] = offset;
     }
 
-    /** Marks the current group as written {@code (at x|y|z)}. */
-    void markTarget() {
-        target = groupCount - 1;
-    }
-
-    /** Marks the current group as holding a name in the place of its numbers. */
-    void markNamed() {
-        named = groupCount - 1;
-    }
-
-    /** Keeps a number of the current group, written at {@code bytes[start, end)}; a name or path is NaN. */
-    void add(float value, int start, int end) {
+    /** Keeps a value of the current group, written at {@code bytes[start, end)}: a name or path is NaN; its key or −1. */
+    void add(float value, int start, int end, int key) {
         if (count == values.length) {
-            values = Arrays.copyOf(values, 2 * count);
-            starts = Arrays.copyOf(starts, 2 * count);
-            ends = Arrays.copyOf(ends, 2 * count);
-            keys = Arrays.copyOf(keys, 2 * count);
-            trees = Arrays.copyOf(trees, 2 * count);
-            exact = Arrays.copyOf(exact, 2 * count);
+            resize(2 * count);
         }
         values[count] = value;
         starts[count] = start;
         ends[count] = end;
-        keys[count++] = -1;
+        keys[count++] = key;
     }
 
     /** Marks the value kept last as written as the expression {@code tree}, whose value is {@code exactValue}. */
@@ -94,17 +78,6 @@ final class WrittenGroups {
         trees[count - 1] = tree;
         exact[count - 1] = exactValue;
         anyExpression = true;
-    }
-
-    /** Keeps {@code key=value} of the current group: the key's index among the group's keys. */
-    void addProperty(int key, float value, int start, int end) {
-        add(value, start, end);
-        keys[count - 1] = key;
-    }
-
-    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
-    boolean hasValue(int g) {
-        return g < groupCount && end(g) > firsts[g];
     }
 
     /** Whether the current group already holds the key with index {@code key}. */
@@ -125,19 +98,30 @@ final class WrittenGroups {
     /** An independent copy, its arrays just long enough, for an object built when the whole file is read. */
     WrittenGroups copy() {
         WrittenGroups copy = new WrittenGroups(0, 0);
-        copy.values = Arrays.copyOf(values, count);
-        copy.starts = Arrays.copyOf(starts, count);
-        copy.ends = Arrays.copyOf(ends, count);
-        copy.keys = Arrays.copyOf(keys, count);
-        copy.trees = Arrays.copyOf(trees, count);
-        copy.exact = Arrays.copyOf(exact, count);
+        copy.values = values;
+        copy.starts = starts;
+        copy.ends = ends;
+        copy.keys = keys;
+        copy.trees = trees;
+        copy.exact = exact;
+        copy.count = count;
+        copy.resize(count);
         copy.firsts = Arrays.copyOf(firsts, groupCount);
         copy.opens = Arrays.copyOf(opens, groupCount);
-        copy.count = count;
         copy.anyExpression = anyExpression;
         copy.groupCount = groupCount;
         copy.target = target;
         copy.named = named;
         return copy;
+    }
+
+    /** Makes the values' arrays {@code length} long: new arrays, the values kept. */
+    private void resize(int length) {
+        values = Arrays.copyOf(values, length);
+        starts = Arrays.copyOf(starts, length);
+        ends = Arrays.copyOf(ends, length);
+        keys = Arrays.copyOf(keys, length);
+        trees = Arrays.copyOf(trees, length);
+        exact = Arrays.copyOf(exact, length);
     }
 }
