@@ -21,4 +21,9 @@ record RenderOptions(List<Path> scenes, Path output, int width, int height, Scal
     Path scene() {
         return scenes.get(0);
     }
+
+    /** What finds the hits: {@code --accel}, or for {@code --paper} the paper's loop. */
+    Accelerator.Choice engine() {
+        return paper ? Accelerator.Choice.none : accel;
+    }
 }
