@@ -158,7 +158,8 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                 : tracer -> new WhittedShader(scene, tracer);
         List<Tracer> tracers = new CopyOnWriteArrayList<>();
         RenderProgress progress = new RenderProgress();
-        display.show(ProgressDisplay.Phase.rendering(() -> progress.rowsDone() / (double) height, () -> rays(tracers)));
+        display.show(new ProgressDisplay.Phase("rendering", () -> progress.rowsDone() / (double) height,
+                () -> rays(tracers)));
         Supplier<Tracer> counted = () -> {
             Tracer tracer = accelerator.tracers().get();
             tracers.add(tracer);

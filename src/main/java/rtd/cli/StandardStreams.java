@@ -3,7 +3,6 @@ package rtd.cli;
 import java.io.File;
 import java.io.FileDescriptor;
 import java.io.FileOutputStream;
-import java.io.FilterWriter;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -125,7 +124,7 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
      * {@code t ≥ 0}); a terminal without such signs (the C locale of many containers, an old Windows code page)
      * gets {@code x}, {@code -}, {@code >=}, and {@code ?} for any other sign it lacks. UTF-8 is written as it is.
      */
-    private static final class AsciiFallbackWriter extends FilterWriter {
+    private static final class AsciiFallbackWriter extends Writer {
 
         /** How each sign of rtd's text is written without it. */
         private static final Map<Character, String> PLAIN = Map.ofEntries(
@@ -137,35 +136,34 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
                 Map.entry('“', "\""), Map.entry('”', "\""), Map.entry('θ', "theta_"), Map.entry('⁻', "^-"),
                 Map.entry('¹', "1"));
 
+        private final Writer out;
         private final CharsetEncoder encoder;
 
         private AsciiFallbackWriter(Writer out, CharsetEncoder encoder) {
-            super(out);
+            this.out = out;
             this.encoder = encoder;
         }
 
-        @Override
-        public void write(int c) throws IOException {
-            char sign = (char) c;
-            if (encoder.canEncode(sign) || Character.isSurrogate(sign)) {
-                out.write(c);
-            } else {
-                out.write(PLAIN.getOrDefault(sign, "?"));
-            }
-        }
-
+        /** Writer's other writes (of a char, of a String) come here. */
         @Override
         public void write(char[] text, int from, int length) throws IOException {
             for (int i = from; i < from + length; i++) {
-                write(text[i]);
+                if (encoder.canEncode(text[i]) || Character.isSurrogate(text[i])) {
+                    out.write(text[i]);
+                } else {
+                    out.write(PLAIN.getOrDefault(text[i], "?"));
+                }
             }
         }
 
         @Override
-        public void write(String text, int from, int length) throws IOException {
-            for (int i = from; i < from + length; i++) {
-                write(text.charAt(i));
-            }
+        public void flush() throws IOException {
+            out.flush();
+        }
+
+        @Override
+        public void close() throws IOException {
+            out.close();
         }
     }
 }
