@@ -33,10 +33,6 @@ import java.util.concurrent.TimeUnit;
 record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTerminal, OutputStream out,
         boolean outIsTerminal) {
 
-    /** The width assumed when the terminal does not tell. */
-    static final int DEFAULT_COLUMNS = 80;
-
-    /** The process's own. */
     static StandardStreams system() {
         Path devStdin = Path.of("/dev/stdin");
         return new StandardStreams(System.in, Files.exists(devStdin) ? Optional.of(devStdin) : Optional.empty(),
@@ -50,20 +46,17 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
     /** On Linux, whether file descriptor {@code fd} is a terminal device; elsewhere, whether Java sees a console. */
     private static boolean isTerminal(int fd) {
         Path link = Path.of("/proc/self/fd/" + fd);
-        if (Files.exists(link, LinkOption.NOFOLLOW_LINKS)) {
-            try {
-                String target = Files.readSymbolicLink(link).toString();
-                return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty");
-            } catch (IOException | UnsupportedOperationException e) {
-                return false;
-            }
+        try {
+            String target = Files.readSymbolicLink(link).toString();
+            return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty");
+        } catch (IOException | UnsupportedOperationException e) {
+            return !Files.exists(link, LinkOption.NOFOLLOW_LINKS) && System.console() != null;
         }
-        return System.console() != null;
     }
 
     /**
      * The terminal's width: {@code $COLUMNS} if the shell exported it, else what {@code stty size} says of
-     * {@code /dev/tty}, else {@value #DEFAULT_COLUMNS}. It starts a process: call it once, off the main thread.
+     * {@code /dev/tty}, else 80. It starts a process: call it once, off the main thread.
      */
     static int columns() {
         String exported = System.getenv("COLUMNS");
@@ -82,13 +75,10 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        return DEFAULT_COLUMNS;
+        return 80;
     }
 
-    /**
-     * A writer of {@code stream} in {@code charset}, autoflushing as picocli's own is; in plain ASCII where it must be
-     * ({@link AsciiFallbackWriter}).
-     */
+    /** A writer of {@code stream} in {@code charset}, autoflushing as picocli's own; in ASCII where it must be. */
     static PrintWriter printWriter(OutputStream stream, Charset charset) {
         Writer bytes = new OutputStreamWriter(stream, charset);
         CharsetEncoder encoder = charset.newEncoder();
@@ -144,7 +134,6 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
             this.encoder = encoder;
         }
 
-        /** Writer's other writes (of a char, of a String) come here. */
         @Override
         public void write(char[] text, int from, int length) throws IOException {
             for (int i = from; i < from + length; i++) {

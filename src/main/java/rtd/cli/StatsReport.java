@@ -65,7 +65,6 @@ final class StatsReport {
         return count(n, thing, thing + "s");
     }
 
-    /** "1 entry", "2,000 entries". */
     static String count(long n, String one, String many) {
         return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }
