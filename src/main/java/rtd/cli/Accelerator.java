@@ -61,10 +61,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         return build(choose(scene, accel), scene, width, height, samples, threads, new StructureCache());
     }
 
-    /**
-     * Builds {@code kind} for {@code scene}, for a {@code width × height} picture with {@code samples²} rays per
-     * pixel, with {@code threads} threads; the BVH and the light grids from {@code kept} where they still serve.
-     */
+    /** Builds {@code kind} for {@code scene}; the BVH and the light grids from {@code kept} where they still serve. */
     static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads,
             StructureCache kept) {
         switch (kind) {

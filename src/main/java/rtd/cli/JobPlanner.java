@@ -80,10 +80,7 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
         return target;
     }
 
-    /**
-     * Where {@code --export-pov FILE.pov} goes, by the rules of {@code -o}, and only to a name ending in {@code .pov},
-     * also behind a link, so that a slip cannot replace a mesh, a scene or a picture; a misuse or a {@link FileError}.
-     */
+    /** Where {@code --export-pov} goes, as {@code -o}, but only to a .pov name, also behind a link. */
     static OutputTarget exportTarget(Path file, Path scene, CommandLine commandLine) throws FileError {
         String name = file.getFileName() == null ? "" : file.getFileName().toString();
         RtdCommand.refuse(commandLine, file.toString().equals("-"), "--export-pov writes a file, not standard output "

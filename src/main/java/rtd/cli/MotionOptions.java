@@ -38,10 +38,7 @@ public final class MotionOptions {
         return clock == null ? 0 : clock;
     }
 
-    /**
-     * The frames to draw, or null for a single picture; every option that does not go with {@code --frames} (or
-     * needs it) is refused, with {@code replacing} the teaching option that takes the picture's place, or null.
-     */
+    /** The frames to draw, or null for one picture; a misuse for what does not go with {@code --frames}. */
     FramePlan plan(CommandLine commandLine, List<Path> scenes, Path output, String replacing) {
         if (frames == null) {
             String option = subset != null ? "--subset" : "--fps";

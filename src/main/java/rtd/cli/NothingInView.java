@@ -119,10 +119,7 @@ final class NothingInView {
                 + scaleHint(camera, objects, options);
     }
 
-    /**
-     * For {@code --width} and {@code --height} of the default's shape, where the default size would show an
-     * object: the {@code --scale} that shows the default view at the size asked for.
-     */
+    /** For a size of the default's shape, where the default size shows an object: the {@code --scale} that does. */
     private static String scaleHint(OrthographicCamera camera, List<IGeometry> objects, RenderOptions options) {
         int w = RtdCommand.DEFAULT_WIDTH;
         int h = RtdCommand.DEFAULT_HEIGHT;

@@ -70,9 +70,8 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
     }
 
     /**
-     * Where {@code spelt} goes, which {@code option} names ({@code -o}, {@code --export-pov}) for the scene file
-     * {@code scene}, its folder there and writable: a mistake on the command line is thrown as such (exit 2), a
-     * file that may not be written as a {@link FileError}.
+     * Where {@code spelt}, named by {@code option}, goes, its folder there and writable: a misuse of the command line
+     * (exit 2), or a {@link FileError} for a file that may not be written.
      */
     static OutputTarget of(Path spelt, Path scene, String option, CommandLine commandLine) throws FileError {
         OutputTarget target = find(spelt, scene, option, commandLine);

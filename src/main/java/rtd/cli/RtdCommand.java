@@ -247,10 +247,7 @@ public final class RtdCommand implements Callable<Integer> {
         return 1;
     }
 
-    /**
-     * The options, with the sizes after {@code --scale}: if {@code checked}, a misuse where they are no Java image's,
-     * else at least one pixel each way (the teaching options check their own).
-     */
+    /** The options, sizes after {@code --scale}: if {@code checked}, a misuse where no Java image has them. */
     private RenderOptions options(boolean checked) {
         long scaledWidth = scale.times(width);
         long scaledHeight = scale.times(height);

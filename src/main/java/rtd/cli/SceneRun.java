@@ -42,10 +42,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         this(options, streams, err, new StructureCache());
     }
 
-    /**
-     * Renders {@code source} to {@code target} in {@code format}, writing once {@code writerReady} (the warm-up of
-     * {@code javax.imageio}) is done; with the scene for POV-Ray written to {@code export} (or null) first.
-     */
+    /** Renders {@code source} to {@code target} once {@code writerReady}; the POV-Ray twin to {@code export}. */
     void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
             OutputTarget export) throws SceneException, FileError {
         String report;
@@ -84,10 +81,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                 .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
     }
 
-    /**
-     * Reads {@code source} at the size {@code options} ask, its warnings shown on {@code display}, and writes it to
-     * {@code export} (or null) for POV-Ray from this one read; the phases "parse" and "export" timed in {@code stats}.
-     */
+    /** Reads {@code source}, its warnings on {@code display}, and writes its POV-Ray twin to {@code export}. */
     static Scene read(SceneSource source, StandardStreams streams, RenderOptions options, OutputTarget export,
             ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
         display.show(ProgressDisplay.Phase.of("reading " + source.name()));
@@ -178,10 +172,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         }
     }
 
-    /**
-     * Builds what {@code --accel} chose and renders {@code scene}, quietly: one frame of an animation
-     * ({@link FrameRun}), with what the last frame built that does not depend on the camera if it still serves.
-     */
+    /** One frame of an animation, quietly, with what the last frame built if it still serves ({@link #kept}). */
     Picture draw(Scene scene) {
         Accelerator accelerator = Accelerator.build(Accelerator.choose(scene, options.engine()), scene, options.width(),
                 options.height(), options.samples(), options.threads(), kept);

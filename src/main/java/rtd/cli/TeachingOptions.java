@@ -41,10 +41,7 @@ public final class TeachingOptions {
             + "it uses) changes, until Ctrl-C; a broken edit prints its errors and keeps the last good picture")
     private boolean watch;
 
-    /**
-     * Runs what the teaching options ask for instead of the picture ({@code --explain}, {@code --view},
-     * {@code --watch}), the export first if asked for too; or returns {@code null} for the usual render.
-     */
+    /** Runs what takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}); else null. */
     Integer run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
         String option = watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : "--export-pov";
         if (watch || explain != null || view != null || exportPov != null) { // one scene file: one answer, read once

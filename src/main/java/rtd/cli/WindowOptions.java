@@ -47,10 +47,7 @@ public final class WindowOptions {
         return window;
     }
 
-    /**
-     * Opens the window and returns the exit code when it is closed; first a misuse (exit 2) for what makes no sense
-     * in a window: several scenes, standard input, other outputs.
-     */
+    /** Opens the window, once what makes no sense in one is refused; the exit code when it is closed. */
     int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
         RtdCommand.refuse(commandLine, options.scenes().size() > 1, "--window opens one scene file, but "
                 + options.scenes().size() + " were given; open each in a window of its own");
