@@ -16,6 +16,14 @@ final class OptionValues {
     private OptionValues() {
     }
 
+    /** {@code value}, or if it is null the mistake that {@code message} describes. */
+    private static <T> T orRefuse(T value, String message) {
+        if (value == null) {
+            throw new TypeConversionException(message);
+        }
+        return value;
+    }
+
     /** {@code value} as a finite decimal number (no hexadecimal, no "2d" or "2f"), or NaN. */
     private static double finite(String value) {
         try {
@@ -30,15 +38,13 @@ final class OptionValues {
     static final class PositiveWhole implements ITypeConverter<Integer> {
         @Override
         public Integer convert(String value) {
+            int number;
             try {
-                int number = Integer.parseInt(value.trim());
-                if (number > 0) {
-                    return number;
-                }
+                number = Integer.parseInt(value.trim());
             } catch (NumberFormatException e) {
-                // answered below, as 0 and negative numbers are
+                number = 0; // refused as 0 and negative numbers are
             }
-            throw new TypeConversionException("'" + value + "' is not a positive whole number");
+            return orRefuse(number > 0 ? number : null, "'" + value + "' is not a positive whole number");
         }
     }
 
@@ -61,12 +67,9 @@ final class OptionValues {
         @Override
         public Integer convert(String value) {
             int samples = new PositiveWhole().convert(value);
-            if (samples > MOST) {
-                throw new TypeConversionException("'" + value + "' is more than " + MOST + ": --samples N traces N × N "
-                        + "rays through each pixel, so " + MOST + " is " + MOST * MOST + " rays a pixel already; 2 to 4 "
-                        + "smooth the edges well");
-            }
-            return samples;
+            return orRefuse(samples <= MOST ? samples : null, "'" + value + "' is more than " + MOST + ": --samples N "
+                    + "traces N × N rays through each pixel, so " + MOST + " is " + MOST * MOST + " rays a pixel "
+                    + "already; 2 to 4 smooth the edges well");
         }
     }
 
@@ -76,10 +79,8 @@ final class OptionValues {
         public Scale convert(String value) {
             String text = value.trim();
             double factor = text.matches("[0-9]*\\.?[0-9]+([eE][-+]?[0-9]+)?|[0-9]+\\.") ? Double.parseDouble(text) : 0;
-            if (factor > 0 && Double.isFinite(factor)) {
-                return new Scale(factor);
-            }
-            throw new TypeConversionException("'" + value + "' is not a number greater than 0, such as 0.25 or 2");
+            return orRefuse(factor > 0 && Double.isFinite(factor) ? new Scale(factor) : null, "'" + value
+                    + "' is not a number greater than 0, such as 0.25 or 2");
         }
     }
 
@@ -123,10 +124,7 @@ final class OptionValues {
         @Override
         public Double convert(String value) {
             double number = finite(value);
-            if (Double.isNaN(number)) {
-                throw new TypeConversionException("'" + value + "' is not a number, such as 0.5");
-            }
-            return number;
+            return orRefuse(Double.isNaN(number) ? null : number, "'" + value + "' is not a number, such as 0.5");
         }
     }
 
@@ -135,11 +133,9 @@ final class OptionValues {
         @Override
         public Integer convert(String value) {
             int frames = value.strip().matches("[0-9]{1,9}") ? Integer.parseInt(value.strip()) : 0;
-            if (frames < 2 || frames > MOST_FRAMES) {
-                throw new TypeConversionException(String.format(Locale.ROOT, "'%s' is not a whole number of frames "
-                        + "from 2 to %,d (an animation has a first and a last frame)", value, MOST_FRAMES));
-            }
-            return frames;
+            return orRefuse(frames >= 2 && frames <= MOST_FRAMES ? frames : null, String.format(Locale.ROOT, "'%s' is "
+                    + "not a whole number of frames from 2 to %,d (an animation has a first and a last frame)", value,
+                    MOST_FRAMES));
         }
     }
 
@@ -148,11 +144,9 @@ final class OptionValues {
         @Override
         public Double convert(String value) {
             double number = finite(value);
-            if (!(number > 0 && number <= 100)) {
-                throw new TypeConversionException("'" + value + "' is not a number of frames per second above 0 and at "
-                        + "most 100 (a GIF counts its frames' delays in hundredths of a second), such as 24");
-            }
-            return number;
+            return orRefuse(number > 0 && number <= 100 ? number : null, "'" + value + "' is not a number of frames "
+                    + "per second above 0 and at most 100 (a GIF counts its frames' delays in hundredths of a second), "
+                    + "such as 24");
         }
     }
 }

@@ -3,6 +3,7 @@ package rtd.cli;
 import java.awt.image.BufferedImage;
 import java.io.PrintWriter;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -141,9 +142,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             display.show(ProgressDisplay.Phase.of("rendering"));
             BufferedImage image = scene.render(width, height);
             int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
-            for (int i = 0; i < rgb.length; i++) {
-                rgb[i] &= 0xFFFFFF; // getRGB adds an opaque alpha channel
-            }
+            Arrays.setAll(rgb, i -> rgb[i] & 0xFFFFFF); // getRGB adds an opaque alpha channel
             return new RenderResult(new Picture(width, height, rgb), WorkCount.testsOf(scene.objects(),
                     (long) width * height));
         }
