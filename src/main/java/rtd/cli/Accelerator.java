@@ -22,17 +22,8 @@ import rtd.scene.Scene;
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
-    /** The values of {@code --accel}: what the user chose, of which {@link #choose} makes a {@link Kind}. */
-    enum Choice {
-        /** As {@link #grid}; the hierarchy alone where the grid cannot serve the camera. */
-        auto,
-        /** The paper's loop over every object (Listing 4.3). */
-        none,
-        /** The bounding volume hierarchy for every ray. */
-        bvh,
-        /** The view grid for the camera's rays; with lights, the light grids and the BVH for the rest. */
-        grid
-    }
+    /** The values of {@code --accel}, of which {@link #choose} makes a {@link Kind}. */
+    enum Choice { auto, none, bvh, grid }
 
     /** What a run finds its hits with, and how the progress line names its building. */
     enum Kind {
@@ -49,11 +40,10 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
     }
 
     /**
-     * What {@code accel} asks for {@code scene}: {@code auto} and {@code grid} take the view grid
-     * for the camera's rays, and for a scene with lights a grid seen from each light for its
-     * shadow rays and the BVH for the rest; the BVH where the grid cannot serve the camera; and
-     * nothing to build for a scene without objects. The grid serves either camera at any number
-     * of samples.
+     * What {@code accel} asks for {@code scene}: {@code none} the paper's loop (Listing 4.3), as does a scene without
+     * objects; {@code auto} and {@code grid} the view grid for the camera's rays, and for a scene with lights a grid
+     * seen from each light for its shadow rays and the BVH for the rest; {@code bvh}, or a camera the grid cannot
+     * serve, the BVH. The grid serves either camera at any number of samples.
      */
     static Kind choose(Scene scene, Choice accel) {
         if (accel == Choice.none || scene.objects().isEmpty()) {
@@ -71,30 +61,28 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         return build(choose(scene, accel), scene, width, height, samples, threads, new StructureCache());
     }
 
-    /**
-     * Builds {@code kind} for {@code scene}, for a {@code width × height} picture with
-     * {@code samples²} rays per pixel, with {@code threads} threads; the BVH and the light grids
-     * from {@code kept} where they still serve.
-     */
+    /** Builds {@code kind} for {@code scene}; the BVH and the light grids from {@code kept} where they still serve. */
     static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads,
             StructureCache kept) {
         switch (kind) {
             case GRID -> {
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
-                return new Accelerator(grid::newTracer, () -> String.format(Locale.ROOT,
-                        "view grid of %s of %d × %d pixels, %s", StatsReport.count(grid.cellCount(), "cell"),
-                        grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries")), false);
+                return new Accelerator(grid::newTracer, () -> describe(grid), false);
             }
             case GRID_AND_BVH -> {
-                CompletableFuture<Bvh> tree = inBackground(() -> kept.bvh(scene));
+                // the BVH on a thread of its own: each structure has passes on one thread, which the other's fill
+                CompletableFuture<Bvh> tree = CompletableFuture.supplyAsync(() -> kept.bvh(scene), runnable -> {
+                    Thread thread = new Thread(runnable, "rtd-build");
+                    thread.setDaemon(true);
+                    thread.start();
+                });
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
                 LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
-                return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())),
-                        () -> String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s, %s, and BVH of %s",
-                                StatsReport.count(grid.cellCount(), "cell"), grid.cellSide(), grid.cellSide(),
-                                StatsReport.count(grid.entries(), "entry", "entries"), describe(lights),
-                                StatsReport.count(bvh.nodeCount(), "node")), true);
+                return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(grid)
+                        + ", " + (lights.count() == 0 ? "no light grid" : StatsReport.count(lights.count(), "light grid")
+                        + " of " + StatsReport.count(lights.entries(), "entry", "entries")) + ", and BVH of "
+                        + StatsReport.count(bvh.nodeCount(), "node"), true);
             }
             case BVH -> {
                 Bvh bvh = kept.bvh(scene);
@@ -107,24 +95,9 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         }
     }
 
-    /** The lights' grids, for {@code --stats}. */
-    private static String describe(LightGrids lights) {
-        return lights.count() == 0 ? "no light grid"
-                : StatsReport.count(lights.count(), "light grid") + " of "
-                        + StatsReport.count(lights.entries(), "entry", "entries");
-    }
-
-    /**
-     * Starts {@code build} on a thread of its own, so that two structures are built side by side:
-     * each has passes that run on one thread, which the other's fill. Each structure is the same
-     * as built alone.
-     */
-    private static <T> CompletableFuture<T> inBackground(Supplier<T> build) {
-        return CompletableFuture.supplyAsync(build, runnable -> {
-            Thread thread = new Thread(runnable, "rtd-build");
-            thread.setDaemon(true);
-            thread.start();
-        });
+    private static String describe(ViewGrid grid) {
+        return String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s", StatsReport.count(grid.cellCount(),
+                "cell"), grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries"));
     }
 
     /** What {@code built} built, or what it threw. */

@@ -22,22 +22,10 @@ final class FileError extends Exception {
 
     /** Why {@code e} happened, without Java's exception names: "no such file", "permission denied". */
     static String reason(IOException e) {
-        if (e instanceof FileSystemException failure && failure.getReason() != null) {
-            return lowerFirst(failure.getReason()); // the system's "No such file", not rtd's "3.0 GiB"
-        }
-        if (e instanceof NoSuchFileException) {
-            return "no such file";
-        }
-        if (e instanceof AccessDeniedException) {
-            return "permission denied";
-        }
-        if (e instanceof NotDirectoryException) {
-            return "not a folder";
-        }
-        return e.getMessage() != null ? lowerFirst(e.getMessage()) : "an input/output error"; // "No space left on device"
-    }
-
-    private static String lowerFirst(String text) {
-        return text.isEmpty() ? text : text.substring(0, 1).toLowerCase(Locale.ROOT) + text.substring(1);
+        String reason = e instanceof FileSystemException failure && failure.getReason() != null ? failure.getReason()
+                : e instanceof NoSuchFileException ? "no such file" : e instanceof AccessDeniedException
+                ? "permission denied" : e instanceof NotDirectoryException ? "not a folder"
+                : e.getMessage() != null ? e.getMessage() : "an input/output error"; // "No space left on device"
+        return reason.isEmpty() ? reason : reason.substring(0, 1).toLowerCase(Locale.ROOT) + reason.substring(1);
     }
 }

@@ -22,7 +22,6 @@ record FramePlan(int frames, int first, int last, double fps) {
         return i / (double) (frames - 1);
     }
 
-    /** How many frames this run draws. */
     int count() {
         return last - first + 1;
     }
@@ -32,16 +31,11 @@ record FramePlan(int frames, int first, int last, double fps) {
         return (int) Math.max(1, Math.round(100 / fps));
     }
 
-    /** The digits of a frame's number: three, or as many as the last frame's number needs. */
-    int digits() {
-        return Math.max(3, String.valueOf(frames - 1).length());
-    }
-
     /** The numbered picture of frame {@code i}: {@code out.png} gives {@code out-007.png}, {@code out} {@code out-007}. */
     Path frameFile(Path picture, int i) {
         String name = picture.getFileName().toString();
         int dot = name.lastIndexOf('.');
-        String number = String.format(Locale.ROOT, "-%0" + digits() + "d", i);
+        String number = String.format(Locale.ROOT, "-%0" + Math.max(3, String.valueOf(frames - 1).length()) + "d", i);
         String numbered = dot > 0 ? name.substring(0, dot) + number + name.substring(dot) : name + number;
         return picture.resolveSibling(numbered);
     }

@@ -2,9 +2,9 @@ package rtd.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
@@ -12,7 +12,6 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.io.AnimatedGif;
@@ -22,7 +21,6 @@ import rtd.io.SceneError;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
 import rtd.scene.Scene;
-import rtd.scene.SceneWarnings;
 
 /**
  * {@code --frames N}: the frames of an animation in one run (Part III, "Frames on the command line"). The
@@ -53,36 +51,32 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             List<SceneError> warnings = new ArrayList<>();
             Scene first = frame(file, plan.first(), warnings);
             warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
-            checkEveryFrame(file);
+            if (file.usesClock() && file.size() <= CHECKED_AHEAD) { // a mistake at any frame stops the run now
+                for (int i = plan.first() + 1; i <= plan.last(); i++) {
+                    frame(file, i, null);
+                }
+            }
             if (export != null) {
                 display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
-                display.message(PovFrames.export(file, plan, options, export));
+                display.message(PovExport.frames(file, plan, options, export));
             }
-            SceneWarnings.of(first, options.width(), options.height(), !options.paper())
-                    .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
+            SceneRun.warn(first, source, options, display);
             writerReady.exceptionally(failure -> null).join();
-            drawAll(file, first, writer, display);
+            SceneRun renderer = new SceneRun(options, streams, err);
+            Picture picture = null;
+            for (int i = plan.first(); i <= plan.last(); i++) {
+                int done = i - plan.first();
+                display.show(ProgressDisplay.Phase.counted(String.format("frame %d (%d to %d), clock %s", i,
+                        plan.first(), plan.last(), ClockText.format(plan.clock(i))), () -> done / (double) plan.count()));
+                if (picture == null || file.usesClock()) {
+                    picture = renderer.draw(i == plan.first() ? first : frame(file, i, null));
+                }
+                writer.write(i, picture);
+            }
             writer.finish();
             summary = "rtd: wrote " + writer.describe() + "\n";
         }
         err.print(summary);
-    }
-
-    /** Draws each frame and hands it to the writer, which writes it while the next is drawn. */
-    private void drawAll(SceneFile file, Scene first, Writer writer, ProgressDisplay display)
-            throws SceneException, FileError {
-        SceneRun renderer = new SceneRun(options, streams, err);
-        Picture picture = null;
-        for (int i = plan.first(); i <= plan.last(); i++) {
-            int done = i - plan.first();
-            display.show(ProgressDisplay.Phase.counted(String.format("frame %d (%d to %d), clock %s", i,
-                    plan.first(), plan.last(), ClockText.format(plan.clock(i))), () -> done / (double) plan.count()));
-            if (picture == null || file.usesClock()) {
-                Scene scene = i == plan.first() ? first : frame(file, i, null);
-                picture = renderer.draw(scene);
-            }
-            writer.write(i, picture);
-        }
     }
 
     /** The scene at frame {@code i}'s clock, at the size asked; a mistake names the clock if its message does not. */
@@ -91,31 +85,24 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         try {
             return options.scale().of(file.at(clock, warnings));
         } catch (SceneException e) {
-            List<SceneError> named = e.errors().stream().map(error -> error.message().contains("clock =") ? error
+            throw new SceneException(e.errors().stream().map(error -> error.message().contains("clock =") ? error
                     : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
-                            + ", at clock = " + ClockText.format(clock) + ")", error.sourceLine(), error.help())).toList();
-            throw new SceneException(named, false);
-        }
-    }
-
-    /** For a small file that uses the clock, parses it at each frame's clock: a mistake at any frame stops the run now. */
-    private void checkEveryFrame(SceneFile file) throws SceneException {
-        if (file.usesClock() && file.size() <= CHECKED_AHEAD) {
-            for (int i = plan.first() + 1; i <= plan.last(); i++) {
-                frame(file, i, null);
-            }
+                            + ", at clock = " + ClockText.format(clock) + ")", error.sourceLine(), error.help())).toList(),
+                    false);
         }
     }
 
     /** Each numbered picture's target, all checked before anything is drawn. */
     private List<OutputTarget> frameTargets(SceneSource source, OutputTarget target) throws FileError {
-        List<OutputTarget> targets = new ArrayList<>();
-        Path scene = source.stdin() ? streams.inPath().orElse(source.path()) : source.path();
-        for (int i = plan.first(); i <= plan.last(); i++) {
-            targets.add(target.kind() == OutputTarget.Kind.STREAM ? target
-                    : OutputTarget.of(plan.frameFile(target.spelt(), i), scene, "-o", commandLine));
+        if (target.kind() == OutputTarget.Kind.STREAM) {
+            return Collections.nCopies(plan.count(), target);
         }
-        return targets;
+        OutputTarget[] targets = new OutputTarget[plan.count()];
+        for (int i = 0; i < targets.length; i++) {
+            targets[i] = OutputTarget.of(plan.frameFile(target.spelt(), plan.first() + i),
+                    source.stdin() ? streams.inPath().orElse(source.path()) : source.path(), "-o", commandLine);
+        }
+        return List.of(targets);
     }
 
     /**
@@ -125,14 +112,13 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
      */
     private final class Writer implements AutoCloseable {
 
-        private final int writers;
-        private final ExecutorService threads;
         private final OutputTarget gifTarget;
         private final List<OutputTarget> targets;
         private final ImageFormat format;
-        private final ArrayDeque<Future<Void>> pending = new ArrayDeque<>();
+        private final int writers;
+        private final ExecutorService threads;
+        private final ArrayDeque<Future<?>> pending = new ArrayDeque<>();
         private AnimatedGif gif;
-        private final AtomicInteger written = new AtomicInteger();
 
         Writer(OutputTarget gifTarget, List<OutputTarget> targets, ImageFormat format) {
             this.gifTarget = gifTarget;
@@ -140,9 +126,9 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             this.format = format;
             this.writers = gifTarget != null ? 1 : 2;
             this.threads = Executors.newFixedThreadPool(writers, runnable -> {
-                Thread t = new Thread(runnable, "rtd-frame-writer");
-                t.setDaemon(true);
-                return t;
+                Thread thread = new Thread(runnable, "rtd-frame-writer");
+                thread.setDaemon(true);
+                return thread;
             });
         }
 
@@ -152,17 +138,20 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                 waitFor(pending.removeFirst());
             }
             pending.addLast(threads.submit(() -> {
-                if (gifTarget != null) {
+                if (gifTarget == null) {
+                    targets.get(i - plan.first()).write(picture, format, streams.out(), f -> { });
+                    return null;
+                }
+                try { // the GIF's file is opened at the first frame (a FIFO waits for its reader there)
                     if (gif == null) {
                         gif = gifTarget.kind() == OutputTarget.Kind.STREAM
                                 ? AnimatedGif.into(gifTarget.file(), plan.delayHundredths())
                                 : AnimatedGif.replacing(gifTarget.file(), plan.delayHundredths());
                     }
                     gif.add(picture);
-                } else {
-                    targets.get(i - plan.first()).write(picture, format, streams.out(), f -> { });
+                } catch (IOException e) {
+                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", e);
                 }
-                written.incrementAndGet();
                 return null;
             }));
         }
@@ -172,43 +161,36 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             while (!pending.isEmpty()) {
                 waitFor(pending.removeFirst());
             }
-            if (gif != null) {
-                try {
+            try {
+                if (gif != null) {
                     gif.finish();
-                } catch (IOException e) {
-                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", e);
                 }
+            } catch (IOException e) {
+                throw new FileError("cannot write '" + gifTarget.spelt() + "'", e);
             }
         }
 
-        /** What was written: "60 frames, orbit-000.png to orbit-059.png", "1 frame, orbit-003.png", "orbit.gif (60 frames, 24 per second)". */
+        /** What was written, once every frame was: "60 frames, orbit-000.png to orbit-059.png", "1 frame, orbit-003.png". */
         String describe() {
             if (gifTarget != null) {
-                return gifTarget.spelt() + " (" + written.get() + " frames, a delay of " + plan.delayHundredths()
+                return gifTarget.spelt() + " (" + plan.count() + " frames, a delay of " + plan.delayHundredths()
                         + " hundredths of a second each)";
             }
-            if (targets.size() == 1) {
-                return "1 frame, " + targets.get(0).spelt();
-            }
-            return written.get() + " frames, " + targets.get(0).spelt() + " to "
-                    + targets.get(targets.size() - 1).spelt();
+            return targets.size() == 1 ? "1 frame, " + targets.get(0).spelt()
+                    : targets.size() + " frames, " + targets.get(0).spelt() + " to " + targets.get(targets.size() - 1).spelt();
         }
 
-        private void waitFor(Future<Void> frame) throws FileError {
+        private void waitFor(Future<?> frame) throws FileError {
             try {
                 frame.get();
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 throw new FileError("interrupted while writing the frames");
             } catch (ExecutionException e) {
-                Throwable cause = e.getCause();
-                if (cause instanceof FileError fileError) {
-                    throw fileError;
+                if (e.getCause() instanceof FileError error) {
+                    throw error;
                 }
-                if (cause instanceof IOException io) {
-                    throw new FileError("cannot write '" + gifTarget.spelt() + "'", io);
-                }
-                throw cause instanceof RuntimeException runtime ? runtime : new IllegalStateException(cause);
+                throw e.getCause() instanceof RuntimeException runtime ? runtime : new IllegalStateException(e.getCause());
             }
         }
 

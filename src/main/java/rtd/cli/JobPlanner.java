@@ -13,7 +13,6 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Collectors;
 import picocli.CommandLine;
-import picocli.CommandLine.ParameterException;
 import rtd.io.ImageFormat;
 import rtd.view.View;
 
@@ -33,31 +32,25 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
     /** Each scene's job, in order; one picture name cannot serve several scenes. */
     List<Job> jobs(List<Path> scenes) {
         List<SceneSource> sources = scenes.stream().map(SceneSource::of).toList();
-        if (output != null && sources.size() > 1) {
-            throw misuse("-o names one picture, but " + sources.size() + " scenes were given; leave -o out to write "
-                    + "each picture beside its scene");
-        }
-        if (output == null && sources.stream().anyMatch(SceneSource::stdin)) {
-            throw misuse("the scene '-' comes from standard input, which gives no name for the picture; "
-                    + "name it with -o, such as -o out.png, or -o - for standard output");
-        }
+        RtdCommand.refuse(commandLine, output != null && sources.size() > 1, "-o names one picture, but " + sources.size()
+                + " scenes were given; leave -o out to write each picture beside its scene");
+        RtdCommand.refuse(commandLine, output == null && sources.stream().anyMatch(SceneSource::stdin), "the scene '-' "
+                + "comes from standard input, which gives no name for the picture; name it with -o, such as -o out.png, "
+                + "or -o - for standard output");
         List<Job> jobs = new ArrayList<>();
         Map<Path, SceneSource> writers = new HashMap<>();
         Map<Object, SceneSource> files = new HashMap<>();
         for (SceneSource source : sources) {
-            if (!source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null) {
-                throw misuse("the scene '" + source.name() + "' is given twice (or a link to it is); give it once");
-            }
+            RtdCommand.refuse(commandLine, !source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null,
+                    "the scene '" + source.name() + "' is given twice (or a link to it is); give it once");
             try {
                 OutputTarget target = outputTarget(source);
                 // ball.txt and an editor's ball.txt~ both give ball.png: the second would replace the first's
                 SceneSource earlier = target.kind() != OutputTarget.Kind.REPLACE ? null
                         : writers.putIfAbsent(realPlace(target.file()), source);
-                if (earlier != null) {
-                    throw misuse("the scenes '" + earlier.name() + "' and '" + source.name() + "' would both write their "
-                            + "picture to '" + target.spelt() + "', the second replacing the first; render them in "
-                            + "separate runs with -o, or rename one");
-                }
+                RtdCommand.refuse(commandLine, earlier != null, "the scenes '" + (earlier == null ? "" : earlier.name())
+                        + "' and '" + source.name() + "' would both write their picture to '" + target.spelt()
+                        + "', the second replacing the first; render them in separate runs with -o, or rename one");
                 jobs.add(new Job(source, target, format(target, commandLine), null));
             } catch (FileError e) {
                 jobs.add(new Job(source, null, ImageFormat.PNG, e));
@@ -68,49 +61,39 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
 
     /** The format of {@code target}'s extension; one that no writer knows is a mistake on the command line. */
     static ImageFormat format(OutputTarget target, CommandLine commandLine) {
-        return ImageFormat.forOutput(target.spelt()).orElseThrow(() -> new ParameterException(commandLine,
-                "the output '" + target.spelt() + "' ends in '." + ImageFormat.extensionOf(target.spelt()).orElse("")
-                        + "', a format rtd cannot write; give it one of " + ImageFormat.writableExtensions().stream()
-                                .map(e -> "." + e).collect(Collectors.joining(", "))));
+        ImageFormat format = ImageFormat.forOutput(target.spelt()).orElse(null);
+        RtdCommand.refuse(commandLine, format == null, "the output '" + target.spelt() + "' ends in '."
+                + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; give it one of "
+                + ImageFormat.writableExtensions().stream().map(e -> "." + e).collect(Collectors.joining(", ")));
+        return format;
     }
 
     /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
     static OutputTarget viewTarget(View view, RenderOptions options, CommandLine commandLine) throws FileError {
         Path byDefault = defaultOutput(options.scene(), "-" + view);
-        if (OutputTarget.DASH.equals(options.output())) {
-            throw new ParameterException(commandLine, "--view writes its picture to a file; -o - (standard output) "
-                    + "is for the rendered picture only: give a file name, such as " + byDefault.getFileName());
-        }
+        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--view writes its picture to a file; "
+                + "-o - (standard output) is for the rendered picture only: give a file name, such as "
+                + byDefault.getFileName());
         OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
                 "-o", commandLine);
         format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
         return target;
     }
 
-    /**
-     * Where {@code --export-pov FILE.pov} goes, by the rules of {@code -o}, and only to a name ending in {@code .pov},
-     * also behind a link, so that a slip cannot replace a mesh, a scene or a picture; a misuse or a {@link FileError}.
-     */
+    /** Where {@code --export-pov} goes, as {@code -o}, but only to a .pov name, also behind a link. */
     static OutputTarget exportTarget(Path file, Path scene, CommandLine commandLine) throws FileError {
-        if (file.toString().equals("-")) {
-            throw new ParameterException(commandLine, "--export-pov writes a file, not standard output ('-'); give a "
-                    + "name that ends in .pov, such as scene.pov");
-        }
-        if (file.getFileName() != null && file.getFileName().toString().indexOf('"') >= 0) { // the folder is cd's
-            throw new ParameterException(commandLine, "--export-pov '" + file + "': a name with a double quote cannot "
-                    + "be given to POV-Ray; choose one without");
-        }
-        if (!endsInPov(file)) {
-            String name = file.getFileName() == null ? "" : file.getFileName().toString();
-            String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
-            throw new ParameterException(commandLine, "--export-pov writes a POV-Ray scene, and its name must end in "
-                    + ".pov; '" + file + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
-        }
+        String name = file.getFileName() == null ? "" : file.getFileName().toString();
+        RtdCommand.refuse(commandLine, file.toString().equals("-"), "--export-pov writes a file, not standard output "
+                + "('-'); give a name that ends in .pov, such as scene.pov");
+        RtdCommand.refuse(commandLine, name.indexOf('"') >= 0, "--export-pov '" + file + "': a name with a double "
+                + "quote cannot be given to POV-Ray; choose one without"); // the folder is cd's
+        String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
+        RtdCommand.refuse(commandLine, !endsInPov(file), "--export-pov writes a POV-Ray scene, and its name must end in "
+                + ".pov; '" + file + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
         OutputTarget target = OutputTarget.of(file, scene, "--export-pov", commandLine);
-        if (target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file())) {
-            throw new ParameterException(commandLine, "'" + file + "' leads to '" + target.file() + "', whose name does "
-                    + "not end in .pov; --export-pov replaces only a POV-Ray scene");
-        }
+        RtdCommand.refuse(commandLine, target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
+                + file + "' leads to '" + target.file() + "', whose name does not end in .pov; --export-pov replaces "
+                + "only a POV-Ray scene");
         return target;
     }
 
@@ -124,10 +107,9 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
             throw new FileError("cannot read the scene file '" + source.name() + "': it is a folder, not a file");
         }
         if (OutputTarget.DASH.equals(output)) {
-            if (streams.outIsTerminal()) {
-                throw misuse("-o - writes the picture to standard output, which is a terminal here; send it to a file "
-                        + "or a program instead, such as: " + RtdCommand.NAME + " scene.txt -o - > out.png");
-            }
+            RtdCommand.refuse(commandLine, streams.outIsTerminal(), "-o - writes the picture to standard output, which "
+                    + "is a terminal here; send it to a file or a program instead, such as: " + RtdCommand.NAME
+                    + " scene.txt -o - > out.png");
             return OutputTarget.standardOutput();
         }
         if (output == null && !source.stdin() && isPngPicture(source.path())) { // else refused as the scene file
@@ -137,10 +119,6 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
         Path spelt = output != null ? output : defaultOutput(source.path(), "");
         return OutputTarget.of(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path(), "-o",
                 commandLine);
-    }
-
-    private ParameterException misuse(String message) {
-        return new ParameterException(commandLine, message);
     }
 
     /** Where {@code file} is, after the links on the way to its folder (it need not exist yet). */

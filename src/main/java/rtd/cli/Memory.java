@@ -20,19 +20,13 @@ final class Memory {
     private static final long GIB = 1L << 30;
     /** The most pixels of a Java image (an array of ints). */
     private static final long MOST_PIXELS = Integer.MAX_VALUE - 8;
-    /**
-     * Bytes per pixel: the picture's {@code int}, and 6 more for the encoders of {@code javax.imageio} that
-     * convert the whole picture first.
-     */
+    /** Bytes per pixel: the picture's {@code int}, and 6 more for the encoders that convert the whole picture. */
     private static final long BYTES_PER_PIXEL = 4 + 3 + 3;
 
     private Memory() {
     }
 
-    /**
-     * That a {@code width × height} picture (after {@code scale}) fits in a Java image and in the memory left; a
-     * misuse (exit 2) that says what would fit if not.
-     */
+    /** That a {@code width × height} picture fits a Java image and the memory left; else a misuse saying what fits. */
     static void checkImageFits(CommandLine commandLine, int width, int height, Scale scale) {
         long pixels = (long) width * height;
         if (pixels > MOST_PIXELS) {
@@ -66,30 +60,19 @@ final class Memory {
 
     /** The memory of this machine (or of its container), or {@code Long.MAX_VALUE} if Java cannot tell. */
     static long physical() {
-        if (ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os
-                && os.getTotalMemorySize() > 0) {
-            return os.getTotalMemorySize();
-        }
-        return Long.MAX_VALUE;
+        return ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os
+                && os.getTotalMemorySize() > 0 ? os.getTotalMemorySize() : Long.MAX_VALUE;
     }
 
-    /**
-     * The value of {@code -Xmx} for at least {@code bytes}, rounded up (to 64 MiB below 1 GiB, to
-     * whole GiB above): "64m", "23g"; empty if that is more than the machine's {@code physical} memory.
-     */
+    /** {@code -Xmx} for at least {@code bytes}: "64m", "23g", rounded up; empty if more than {@code physical}. */
     static Optional<String> xmx(long bytes, long physical) {
-        long rounded = bytes < GIB ? roundUp(bytes, 64 * MIB) : roundUp(bytes, GIB);
-        if (rounded > physical) {
-            return Optional.empty();
-        }
-        return Optional.of(rounded < GIB ? rounded / MIB + "m" : rounded / GIB + "g");
+        long step = bytes < GIB ? 64 * MIB : GIB;
+        long rounded = Math.max(1, (bytes + step - 1) / step) * step;
+        return rounded > physical ? Optional.empty()
+                : Optional.of(rounded < GIB ? rounded / MIB + "m" : rounded / GIB + "g");
     }
 
-    /**
-     * What to say when Java ran out of memory with a limit of {@code maxHeap} on a machine with
-     * {@code physical} bytes: twice the limit, or 7/8 of the machine's memory if that is less but
-     * still more than the limit; otherwise that the work must be smaller.
-     */
+    /** What to say when Java ran out of {@code maxHeap}: more, up to 7/8 of {@code physical}, or smaller work. */
     static String outOfMemory(long maxHeap, long physical) {
         // Up to 7/8 of the machine, in whole GiB: the system and other programs need the rest.
         long wanted = Math.min(2 * maxHeap, physical / 8 * 7 / GIB * GIB);
@@ -100,9 +83,5 @@ final class Memory {
         }
         return "rtd: out of memory: Java may use " + size(maxHeap) + " here, and this machine has " + size(physical)
                 + " in all; render a smaller image (--width/--height) or a scene with fewer objects";
-    }
-
-    private static long roundUp(long bytes, long step) {
-        return Math.max(1, (bytes + step - 1) / step) * step;
     }
 }

@@ -7,7 +7,6 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.ParameterException;
 
 /**
  * The options of motion, a picocli mixin of {@link RtdCommand} (Part III, "Frames on the command line"):
@@ -39,60 +38,35 @@ public final class MotionOptions {
         return clock == null ? 0 : clock;
     }
 
-    /**
-     * The frames to draw, or null for a single picture; every option that does not go with {@code --frames} (or
-     * needs it) is refused, with {@code replacing} the teaching option that takes the picture's place, or null.
-     */
+    /** The frames to draw, or null for one picture; a misuse for what does not go with {@code --frames}. */
     FramePlan plan(CommandLine commandLine, List<Path> scenes, Path output, String replacing) {
         if (frames == null) {
-            for (String option : new String[] {subset != null ? "--subset" : null, fps != null ? "--fps" : null}) {
-                if (option != null) {
-                    throw misuse(commandLine, option + " belongs to an animation; give --frames N too");
-                }
-            }
+            String option = subset != null ? "--subset" : "--fps";
+            RtdCommand.refuse(commandLine, subset != null || fps != null, option + " belongs to an animation; give "
+                    + "--frames N too");
             return null;
         }
-        if (clock != null) {
-            throw misuse(commandLine, "--frames gives each frame its own clock, from 0 to 1; --clock is for one picture");
-        }
-        if (replacing != null) {
-            throw misuse(commandLine, replacing + " works on one picture, not on --frames; give --clock C for the moment "
-                    + "you want");
-        }
+        RtdCommand.refuse(commandLine, clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock is "
+                + "for one picture");
+        RtdCommand.refuse(commandLine, replacing != null, replacing + " works on one picture, not on --frames; give "
+                + "--clock C for the moment you want");
         RtdCommand.oneSceneFile(commandLine, "--frames", scenes);
-        if (OutputTarget.DASH.equals(output)) {
-            throw misuse(commandLine, "--frames writes several pictures, which standard output (-o -) cannot hold; give "
-                    + "a name such as -o frames.png (numbered frames) or -o movie.gif");
-        }
-        boolean gif = output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif");
-        int[] range = range(commandLine);
-        if (gif && subset != null) {
-            throw misuse(commandLine, "--subset draws frames to be joined later, as numbered pictures; give -o NAME.png, "
-                    + "and join the frames into a GIF or a video when all are drawn");
-        }
-        return new FramePlan(frames, range[0], range[1], fps == null ? 24 : fps);
-    }
-
-    private int[] range(CommandLine commandLine) {
+        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
+                + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or -o movie.gif");
         if (subset == null) {
-            return new int[] {0, frames - 1};
+            return new FramePlan(frames, 0, frames - 1, fps == null ? 24 : fps);
         }
         Matcher matcher = Pattern.compile("\\s*(\\d{1,9})\\s*-\\s*(\\d{1,9})\\s*").matcher(subset);
         String frameRange = "from 0 to " + (frames - 1) + " (--frames " + frames + ")";
-        if (!matcher.matches()) {
-            throw misuse(commandLine, "--subset '" + subset + "': give the frames as A-B, two whole numbers " + frameRange
-                    + ", such as --subset 0-" + (frames - 1) / 2);
-        }
+        RtdCommand.refuse(commandLine, !matcher.matches(), "--subset '" + subset + "': give the frames as A-B, two whole "
+                + "numbers " + frameRange + ", such as --subset 0-" + (frames - 1) / 2);
         int first = Integer.parseInt(matcher.group(1));
         int last = Integer.parseInt(matcher.group(2));
-        if (first > last || last >= frames) {
-            throw misuse(commandLine, "--subset " + first + "-" + last + ": " + (first > last ? "A must not be after B"
-                    : "the frames run " + frameRange));
-        }
-        return new int[] {first, last};
-    }
-
-    private static ParameterException misuse(CommandLine commandLine, String message) {
-        return new ParameterException(commandLine, message);
+        RtdCommand.refuse(commandLine, first > last || last >= frames, "--subset " + first + "-" + last + ": "
+                + (first > last ? "A must not be after B" : "the frames run " + frameRange));
+        RtdCommand.refuse(commandLine, output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif"),
+                "--subset draws frames to be joined later, as numbered pictures; give -o NAME.png, and join the frames "
+                + "into a GIF or a video when all are drawn");
+        return new FramePlan(frames, first, last, fps == null ? 24 : fps);
     }
 }

@@ -5,6 +5,8 @@ import static rtd.scene.SceneWarnings.point;
 
 import java.util.DoubleSummaryStatistics;
 import java.util.List;
+import java.util.function.Supplier;
+import java.util.stream.IntStream;
 import java.util.stream.Stream;
 import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
@@ -13,7 +15,12 @@ import rtd.geometry.BoundingBox;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Plane;
 import rtd.image.Picture;
+import rtd.image.Rgb;
 import rtd.math.Vector3f;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.render.Shader;
+import rtd.render.Tracer;
 import rtd.scene.Scene;
 
 /**
@@ -26,20 +33,24 @@ final class NothingInView {
     private NothingInView() {
     }
 
-    /** Whether some pixel is not the background: then some ray surely hit (the converse fails for camouflage). */
-    static boolean showsSomething(Picture picture, int background) {
-        for (int pixel : picture.rgb()) {
-            if (pixel != background) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether an object may be drawn in the background's colour: any, in a lit scene; else one painted in it. */
-    static boolean someObjectLooksLikeBackground(Scene scene) {
+    /**
+     * Whether some ray of {@code picture} hit an object. A pixel that is not background says so at once; a picture
+     * of background alone only if no object may look like it (any, in a lit scene; else one painted in the
+     * background's colour), else the rays are traced again with {@code tracers} and a shader that marks hits.
+     */
+    static boolean hitSomething(Scene scene, Supplier<Tracer> tracers, Picture picture, int threads) {
         int background = scene.ambient().getRGB();
-        return !scene.lights().isEmpty() || scene.objects().stream().anyMatch(o -> o.isPatterned() || o.color().getRGB() == background);
+        if (IntStream.of(picture.rgb()).anyMatch(pixel -> pixel != background)) {
+            return true;
+        }
+        if (scene.lights().isEmpty()
+                && scene.objects().stream().noneMatch(o -> o.isPatterned() || o.color().getRGB() == background)) {
+            return false;
+        }
+        Shader hitMarks = (rays, hits, i) -> hits.index(i) < 0 ? Rgb.BLACK : new Rgb(1, 1, 1);
+        Picture marks = ParallelRenderer.render(scene.camera(), tracers, tracer -> hitMarks, picture.width(),
+                picture.height(), threads, new RenderProgress()).image();
+        return IntStream.of(marks.rgb()).anyMatch(pixel -> pixel != 0);
     }
 
     /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}, drawn as {@code options} ask. */
@@ -49,17 +60,16 @@ final class NothingInView {
     }
 
     private static String cause(Scene scene, RenderOptions options) {
-        List<IGeometry> objects = scene.objects();
         ICamera camera = scene.camera();
-        if (objects.isEmpty()) {
+        if (scene.objects().isEmpty()) {
             return "the scene has no objects";
         }
         Vector3f forward = camera instanceof OrthographicCamera o ? o.direction()
                 : camera instanceof PerspectiveCamera p ? p.direction() : null;
-        if (forward != null && objects.stream().allMatch(o -> o instanceof Plane)) {
-            return planesMissed(objects.size(), camera, forward);
+        if (forward != null && scene.objects().stream().allMatch(o -> o instanceof Plane)) {
+            return planesMissed(scene.objects().size(), camera, forward);
         }
-        objects = objects.stream().filter(o -> !(o instanceof Plane)).toList(); // no ray met a plane: see planesMissed
+        List<IGeometry> objects = scene.objects().stream().filter(o -> !(o instanceof Plane)).toList(); // no ray met a plane
         long behind = forward == null ? 0 : objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward))
                 .count();
         if (behind == objects.size()) {
@@ -85,13 +95,14 @@ final class NothingInView {
      */
     private static String planesMissed(int planes, ICamera camera, Vector3f forward) {
         String them = planes == 1 ? "the plane" : "all " + planes + " planes";
+        String it = planes == 1 ? "it" : "them";
         String from = " from " + point(camera.position()) + " along " + point(forward);
         if (camera instanceof PerspectiveCamera) {
             return them + (planes == 1 ? " lies" : " lie") + " outside the camera's field of view" + from
-                    + "; turn the camera towards " + (planes == 1 ? "it" : "them");
+                    + "; turn the camera towards " + it;
         }
-        return "the camera's rays" + from + " run parallel to " + them + " or away from " + (planes == 1 ? "it" : "them")
-                + "; tilt the camera towards " + (planes == 1 ? "it" : "them") + ", as (0|-1|-1) looks down onto a floor";
+        return "the camera's rays" + from + " run parallel to " + them + " or away from " + it + "; tilt the camera "
+                + "towards " + it + ", as (0|-1|-1) looks down onto a floor";
     }
 
     private static String orthographicCause(OrthographicCamera camera, List<IGeometry> objects, RenderOptions options) {
@@ -108,10 +119,7 @@ final class NothingInView {
                 + scaleHint(camera, objects, options);
     }
 
-    /**
-     * For {@code --width} and {@code --height} of the default's shape, where the default size would show an
-     * object: the {@code --scale} that shows the default view at the size asked for.
-     */
+    /** For a size of the default's shape, where the default size shows an object: the {@code --scale} that does. */
     private static String scaleHint(OrthographicCamera camera, List<IGeometry> objects, RenderOptions options) {
         int w = RtdCommand.DEFAULT_WIDTH;
         int h = RtdCommand.DEFAULT_HEIGHT;
@@ -134,29 +142,24 @@ final class NothingInView {
             return true;
         }
         double zoom = camera.zoom();
-        double[] u = range(box, camera.position(), camera.widthVector());
-        double[] v = range(box, camera.position(), camera.heightVector());
-        return u[1] >= -(width / 2) / zoom && u[0] <= (width - width / 2) / zoom && v[1] >= -(height / 2) / zoom
-                && v[0] <= (height - height / 2) / zoom && !isBehind(box, camera.position(), camera.direction());
-    }
-
-    /** The least and greatest of the box's corners along {@code axis}, from {@code origin}. */
-    private static double[] range(BoundingBox box, Vector3f origin, Vector3f axis) {
-        DoubleSummaryStatistics along = Stream.of(corners(box)).mapToDouble(c -> c.subtract(origin).dot(axis))
-                .summaryStatistics();
-        return new double[] {along.getMin(), along.getMax()};
+        DoubleSummaryStatistics u = along(box, camera.position(), camera.widthVector());
+        DoubleSummaryStatistics v = along(box, camera.position(), camera.heightVector());
+        return u.getMax() >= -(width / 2) / zoom && u.getMin() <= (width - width / 2) / zoom
+                && v.getMax() >= -(height / 2) / zoom && v.getMin() <= (height - height / 2) / zoom
+                && !isBehind(box, camera.position(), camera.direction());
     }
 
     /** Whether every corner of {@code box} lies behind the plane through {@code position} facing {@code forward}. */
     private static boolean isBehind(BoundingBox box, Vector3f position, Vector3f forward) {
-        return box.isBounded() && Stream.of(corners(box)).noneMatch(c -> c.subtract(position).dot(forward) >= 0);
+        return box.isBounded() && along(box, position, forward).getMax() < 0;
     }
 
-    private static Vector3f[] corners(BoundingBox box) {
+    /** The box's corners along {@code axis}, from {@code origin}. */
+    private static DoubleSummaryStatistics along(BoundingBox box, Vector3f origin, Vector3f axis) {
         Vector3f a = box.min();
         Vector3f b = box.max();
-        return new Vector3f[] {a, new Vector3f(b.x(), a.y(), a.z()), new Vector3f(a.x(), b.y(), a.z()),
-            new Vector3f(a.x(), a.y(), b.z()), new Vector3f(b.x(), b.y(), a.z()), new Vector3f(b.x(), a.y(), b.z()),
-            new Vector3f(a.x(), b.y(), b.z()), b};
+        return Stream.of(a, new Vector3f(b.x(), a.y(), a.z()), new Vector3f(a.x(), b.y(), a.z()),
+                new Vector3f(a.x(), a.y(), b.z()), new Vector3f(b.x(), b.y(), a.z()), new Vector3f(b.x(), a.y(), b.z()),
+                new Vector3f(a.x(), b.y(), b.z()), b).mapToDouble(c -> c.subtract(origin).dot(axis)).summaryStatistics();
     }
 }

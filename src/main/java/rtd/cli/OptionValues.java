@@ -10,19 +10,27 @@ import picocli.CommandLine.TypeConversionException;
 /** How {@link RtdCommand} reads its options' values: each converter gives the value, or says what is wrong with it. */
 final class OptionValues {
 
-    private OptionValues() {
-    }
-
     /** The most frames an animation may have: a slip of a digit is caught, a long film is not refused. */
     static final int MOST_FRAMES = 1_000_000;
 
-    /** {@code value} as a finite decimal number (no hexadecimal, no "2d" or "2f"), or null. */
-    private static Double finite(String value) {
+    private OptionValues() {
+    }
+
+    /** {@code value}, or if it is null the mistake that {@code message} describes. */
+    private static <T> T orRefuse(T value, String message) {
+        if (value == null) {
+            throw new TypeConversionException(message);
+        }
+        return value;
+    }
+
+    /** {@code value} as a finite decimal number (no hexadecimal, no "2d" or "2f"), or NaN. */
+    private static double finite(String value) {
         try {
             double number = Double.parseDouble(value.strip());
-            return Double.isFinite(number) && !value.strip().matches(".*[dDfFxX].*") ? number : null;
+            return Double.isFinite(number) && !value.strip().matches(".*[dDfFxX].*") ? number : Double.NaN;
         } catch (NumberFormatException e) {
-            return null;
+            return Double.NaN;
         }
     }
 
@@ -30,22 +38,17 @@ final class OptionValues {
     static final class PositiveWhole implements ITypeConverter<Integer> {
         @Override
         public Integer convert(String value) {
+            int number;
             try {
-                int number = Integer.parseInt(value.trim());
-                if (number > 0) {
-                    return number;
-                }
+                number = Integer.parseInt(value.trim());
             } catch (NumberFormatException e) {
-                // answered below, as 0 and negative numbers are
+                number = 0; // refused as 0 and negative numbers are
             }
-            throw new TypeConversionException("'" + value + "' is not a positive whole number");
+            return orRefuse(number > 0 ? number : null, "'" + value + "' is not a positive whole number");
         }
     }
 
-    /**
-     * {@code --threads N}, of which rtd uses at most {@link #max()}: more only wait their turn and cost, and over
-     * 32,767 the JVM's fork/join pool (the BVH build) fails.
-     */
+    /** {@code --threads N}, at most {@link #max()}: more only wait their turn, and over 32,767 fork/join fails. */
     static final class Threads implements ITypeConverter<Integer> {
         static int max() {
             return 4 * Runtime.getRuntime().availableProcessors();
@@ -64,12 +67,9 @@ final class OptionValues {
         @Override
         public Integer convert(String value) {
             int samples = new PositiveWhole().convert(value);
-            if (samples > MOST) {
-                throw new TypeConversionException("'" + value + "' is more than " + MOST + ": --samples N traces N × N "
-                        + "rays through each pixel, so " + MOST + " is " + MOST * MOST + " rays a pixel already; 2 to 4 "
-                        + "smooth the edges well");
-            }
-            return samples;
+            return orRefuse(samples <= MOST ? samples : null, "'" + value + "' is more than " + MOST + ": --samples N "
+                    + "traces N × N rays through each pixel, so " + MOST + " is " + MOST * MOST + " rays a pixel "
+                    + "already; 2 to 4 smooth the edges well");
         }
     }
 
@@ -78,13 +78,9 @@ final class OptionValues {
         @Override
         public Scale convert(String value) {
             String text = value.trim();
-            if (text.matches("[0-9]*\\.?[0-9]+([eE][-+]?[0-9]+)?|[0-9]+\\.")) {
-                double factor = Double.parseDouble(text);
-                if (factor > 0 && Double.isFinite(factor)) {
-                    return new Scale(factor);
-                }
-            }
-            throw new TypeConversionException("'" + value + "' is not a number greater than 0, such as 0.25 or 2");
+            double factor = text.matches("[0-9]*\\.?[0-9]+([eE][-+]?[0-9]+)?|[0-9]+\\.") ? Double.parseDouble(text) : 0;
+            return orRefuse(factor > 0 && Double.isFinite(factor) ? new Scale(factor) : null, "'" + value
+                    + "' is not a number greater than 0, such as 0.25 or 2");
         }
     }
 
@@ -93,25 +89,21 @@ final class OptionValues {
      * bytes that do not decode become U+FFFD: such a name would name another file, or none.
      */
     static final class FileName implements ITypeConverter<Path> {
-        private static final char REPLACEMENT = '\uFFFD';
-
         @Override
         public Path convert(String value) {
             try {
-                if (value.indexOf(REPLACEMENT) < 0) {
+                if (value.indexOf('\uFFFD') < 0) {
                     return Path.of(value);
                 }
             } catch (InvalidPathException e) {
                 // answered below
             }
             String encoding = System.getProperty("sun.jnu.encoding", System.getProperty("file.encoding", "?"));
-            String shown = "the name '" + value.replace(REPLACEMENT, '?') + "' cannot be used: ";
-            if (encoding.equalsIgnoreCase("UTF-8") || encoding.equalsIgnoreCase("UTF8")) {
-                throw new TypeConversionException(shown + "it is not valid UTF-8 (each '?' stands for bytes that are "
-                        + "not); rename the file to a UTF-8 name");
-            }
-            throw new TypeConversionException(shown + "it has characters that this system's encoding, " + encoding
-                    + ", cannot represent; run rtd under a UTF-8 locale, such as LC_ALL=C.UTF-8");
+            String shown = "the name '" + value.replace('\uFFFD', '?') + "' cannot be used: ";
+            throw new TypeConversionException(shown + (encoding.equalsIgnoreCase("UTF-8") || encoding.equalsIgnoreCase(
+                    "UTF8") ? "it is not valid UTF-8 (each '?' stands for bytes that are not); rename the file to a UTF-8 "
+                    + "name" : "it has characters that this system's encoding, " + encoding + ", cannot represent; run "
+                    + "rtd under a UTF-8 locale, such as LC_ALL=C.UTF-8"));
         }
     }
 
@@ -131,11 +123,8 @@ final class OptionValues {
     static final class FiniteNumber implements ITypeConverter<Double> {
         @Override
         public Double convert(String value) {
-            Double number = finite(value);
-            if (number == null) {
-                throw new TypeConversionException("'" + value + "' is not a number, such as 0.5");
-            }
-            return number;
+            double number = finite(value);
+            return orRefuse(Double.isNaN(number) ? null : number, "'" + value + "' is not a number, such as 0.5");
         }
     }
 
@@ -143,12 +132,10 @@ final class OptionValues {
     static final class FrameCount implements ITypeConverter<Integer> {
         @Override
         public Integer convert(String value) {
-            Integer frames = value.strip().matches("[0-9]{1,9}") ? Integer.valueOf(value.strip()) : null;
-            if (frames == null || frames < 2 || frames > MOST_FRAMES) {
-                throw new TypeConversionException(String.format(Locale.ROOT, "'%s' is not a whole number of frames "
-                        + "from 2 to %,d (an animation has a first and a last frame)", value, MOST_FRAMES));
-            }
-            return frames;
+            int frames = value.strip().matches("[0-9]{1,9}") ? Integer.parseInt(value.strip()) : 0;
+            return orRefuse(frames >= 2 && frames <= MOST_FRAMES ? frames : null, String.format(Locale.ROOT, "'%s' is "
+                    + "not a whole number of frames from 2 to %,d (an animation has a first and a last frame)", value,
+                    MOST_FRAMES));
         }
     }
 
@@ -156,12 +143,10 @@ final class OptionValues {
     static final class FramesPerSecond implements ITypeConverter<Double> {
         @Override
         public Double convert(String value) {
-            Double number = finite(value);
-            if (number == null || !(number > 0 && number <= 100)) {
-                throw new TypeConversionException("'" + value + "' is not a number of frames per second above 0 and at "
-                        + "most 100 (a GIF counts its frames' delays in hundredths of a second), such as 24");
-            }
-            return number;
+            double number = finite(value);
+            return orRefuse(number > 0 && number <= 100 ? number : null, "'" + value + "' is not a number of frames "
+                    + "per second above 0 and at most 100 (a GIF counts its frames' delays in hundredths of a second), "
+                    + "such as 24");
         }
     }
 }

@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.function.DoubleConsumer;
 import picocli.CommandLine;
-import picocli.CommandLine.ParameterException;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
 import rtd.io.ImageWriting;
@@ -25,17 +24,14 @@ import rtd.io.SceneIO;
  */
 record OutputTarget(Path spelt, Path file, Kind kind) {
 
-    /** How the file reaches the output. */
-    enum Kind {
-        /** A regular file, new or old: written to a temporary file, then moved into place. */
-        REPLACE,
-        /** A FIFO or character device such as /dev/null: written into as it is. */
-        STREAM,
-        /** {@code -o -}: standard output, which must not be a terminal. */
-        STANDARD_OUTPUT
-    }
+    /**
+     * How the file reaches the output: a regular file, new or old, is written to a temporary file, then moved into
+     * place; a FIFO or character device such as /dev/null is written into as it is; and {@code -o -} is standard
+     * output, which must not be a terminal.
+     */
+    enum Kind { REPLACE, STREAM, STANDARD_OUTPUT }
 
-    /** The name by which {@code -o} names standard output. */
+    /** How {@code -o} names standard output. */
     static final Path DASH = Path.of("-");
 
     static OutputTarget standardOutput() {
@@ -74,9 +70,8 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
     }
 
     /**
-     * Where {@code spelt} goes, which {@code option} names ({@code -o}, {@code --export-pov}) for the scene file
-     * {@code scene}, its folder there and writable: a mistake on the command line is thrown as such (exit 2), a
-     * file that may not be written as a {@link FileError}.
+     * Where {@code spelt}, named by {@code option}, goes, its folder there and writable: a misuse of the command line
+     * (exit 2), or a {@link FileError} for a file that may not be written.
      */
     static OutputTarget of(Path spelt, Path scene, String option, CommandLine commandLine) throws FileError {
         OutputTarget target = find(spelt, scene, option, commandLine);
@@ -91,22 +86,19 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             }
         }
         Path real = target.file.getFileName();
-        if (target.kind == Kind.REPLACE && "-o".equals(option) && real != null && !real.equals(spelt.getFileName())
-                && !(ImageFormat.extensionOf(target.file).isPresent()
-                        && ImageFormat.forOutput(target.file).equals(ImageFormat.forOutput(spelt)))) {
-            // a link to a file of another kind, such as a mesh or notes: a slip, and replacing it would destroy it
-            throw new ParameterException(commandLine, "'" + spelt + "' leads to '" + target.file + "', whose name "
-                    + "is not that of a ." + ImageFormat.forOutput(spelt).map(ImageFormat::extension).orElse("png")
-                    + " picture; rtd writes through a link only into a picture of the kind asked for");
-        }
+        // a link to a file of another kind, such as a mesh or notes: a slip, and replacing it would destroy it
+        RtdCommand.refuse(commandLine, target.kind == Kind.REPLACE && "-o".equals(option) && real != null
+                && !real.equals(spelt.getFileName()) && !(ImageFormat.extensionOf(target.file).isPresent()
+                        && ImageFormat.forOutput(target.file).equals(ImageFormat.forOutput(spelt))), "'" + spelt
+                + "' leads to '" + target.file + "', whose name is not that of a ."
+                + ImageFormat.forOutput(spelt).map(ImageFormat::extension).orElse("png")
+                + " picture; rtd writes through a link only into a picture of the kind asked for");
         return target;
     }
 
     private static OutputTarget find(Path output, Path scene, String option, CommandLine commandLine) throws FileError {
-        if (Files.isDirectory(output)) {
-            throw new ParameterException(commandLine, "the output '" + output + "' is a folder; give a file name such "
-                    + "as " + output.resolve("out.png"));
-        }
+        RtdCommand.refuse(commandLine, Files.isDirectory(output), "the output '" + output + "' is a folder; give a "
+                + "file name such as " + output.resolve("out.png"));
         if (!Files.exists(output)) {
             if (Files.isSymbolicLink(output)) {
                 throw new FileError("cannot write '" + output + "': it is a symbolic link to '" + linkTarget(output)
@@ -114,10 +106,8 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             }
             return new OutputTarget(output, output, Kind.REPLACE);
         }
-        if (isSameFile(output, scene)) {
-            throw new ParameterException(commandLine, "the output '" + output + "' is the scene file itself; choose "
-                    + "another with " + option);
-        }
+        RtdCommand.refuse(commandLine, isSameFile(output, scene), "the output '" + output + "' is the scene file "
+                + "itself; choose another with " + option);
         String notAFile = switch (fileType(output)) {
             case 0100000 -> null;
             case 0010000, 0020000 -> "";
@@ -132,11 +122,9 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
                 throw new FileError("cannot write '" + output + "'", e);
             }
         }
-        if (notAFile.isEmpty()) {
-            return new OutputTarget(output, output, Kind.STREAM);
-        }
-        throw new ParameterException(commandLine, "the output '" + output + "' is " + notAFile + "; rtd writes the "
-                + "picture to a file, a FIFO or a character device such as /dev/null");
+        RtdCommand.refuse(commandLine, !notAFile.isEmpty(), "the output '" + output + "' is " + notAFile + "; rtd "
+                + "writes the picture to a file, a FIFO or a character device such as /dev/null");
+        return new OutputTarget(output, output, Kind.STREAM);
     }
 
     /**

@@ -1,7 +1,7 @@
 package rtd.cli;
 
 import java.io.PrintWriter;
-import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
@@ -34,25 +34,20 @@ final class ProgressDisplay implements AutoCloseable {
     private boolean hooked;
     private int columns;
 
-    /**
-     * What the run is doing: its name, the fraction done (NaN if unknown), the rays traced (negative: none), and the
-     * words of its line.
-     */
+    /** What the run is doing: its name, the fraction done (NaN if unknown) and the rays traced (negative: none). */
     record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos, Line line) {
+
+        Phase(String name, DoubleSupplier fraction, LongSupplier rays) {
+            this(name, fraction, rays, System.nanoTime(), new Line());
+        }
 
         /** A phase whose progress is unknown, such as reading the scene. */
         static Phase of(String name) {
             return counted(name, () -> Double.NaN);
         }
 
-        /** A phase that knows the fraction it has done. */
         static Phase counted(String name, DoubleSupplier fraction) {
-            return new Phase(name, fraction, () -> -1, System.nanoTime(), new Line());
-        }
-
-        /** Rendering, with the fraction done and the rays traced so far. */
-        static Phase rendering(DoubleSupplier fraction, LongSupplier rays) {
-            return new Phase("rendering", fraction, rays, System.nanoTime(), new Line());
+            return new Phase(name, fraction, () -> -1);
         }
     }
 
@@ -73,17 +68,14 @@ final class ProgressDisplay implements AutoCloseable {
         return display;
     }
 
-    /** The run now does {@code next}. */
     void show(Phase next) {
         phase = next;
     }
 
     private void run() {
         try {
-            Thread.sleep(delayMillis);
-            while (!done) {
+            for (Thread.sleep(delayMillis); !done; Thread.sleep(PERIOD_MILLIS)) {
                 draw();
-                Thread.sleep(PERIOD_MILLIS);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -100,22 +92,18 @@ final class ProgressDisplay implements AutoCloseable {
                 return;
             }
             if (!hooked) {
-                hooked = addHook();
+                hooked = true;
+                try {
+                    Runtime.getRuntime().addShutdownHook(clearOnExit);
+                } catch (IllegalStateException e) {
+                    // already stopping: close removes nothing then either
+                }
             }
             Phase now = phase;
             err.print("\r" + now.line().update(now.name(), (System.nanoTime() - now.startNanos()) / 1e9,
                     now.fraction().getAsDouble(), now.rays().getAsLong(), columns) + "\033[K");
             err.flush();
             shown = true;
-        }
-    }
-
-    private boolean addHook() {
-        try {
-            Runtime.getRuntime().addShutdownHook(clearOnExit);
-            return true;
-        } catch (IllegalStateException e) {
-            return false; // already stopping
         }
     }
 
@@ -138,7 +126,6 @@ final class ProgressDisplay implements AutoCloseable {
         }
     }
 
-    /** Stops the display and clears its line. */
     @Override
     public void close() {
         clear(); // under the lock that draw adds the hook with: no hook comes after it
@@ -152,7 +139,7 @@ final class ProgressDisplay implements AutoCloseable {
         }
     }
 
-    /** The shutdown hook, once the line has been shown; for tests. */
+    /** The shutdown hook, added once the line has been shown. */
     Thread shutdownHook() {
         return clearOnExit;
     }
@@ -173,25 +160,21 @@ final class ProgressDisplay implements AutoCloseable {
         static final double MIN_FRACTION = 0.05;
 
         /** (seconds, fraction) of the updates within the window, and the last one before it. */
-        private final ArrayDeque<double[]> recent = new ArrayDeque<>(List.of(new double[] {0, 0}));
+        private final List<double[]> recent = new ArrayList<>(List.of(new double[] {0, 0}));
 
         /** The time left after {@code seconds} with {@code fraction} (0 to 1) of the work done; empty if unknown. */
         OptionalDouble timeLeft(double seconds, double fraction) {
-            recent.addLast(new double[] {seconds, fraction});
+            recent.add(new double[] {seconds, fraction});
             double window = Math.max(MIN_WINDOW, seconds / 3);
-            while (recent.size() > 2 && seconds - secondOldest()[0] >= window) {
-                recent.removeFirst();
+            while (recent.size() > 2 && seconds - recent.get(1)[0] >= window) {
+                recent.remove(0);
             }
-            double[] then = recent.peekFirst();
+            double[] then = recent.get(0);
             double rate = (fraction - then[1]) / (seconds - then[0]);
             if (!(fraction > 0) || seconds < MIN_SECONDS && fraction < MIN_FRACTION || !(rate > 0)) {
                 return OptionalDouble.empty();
             }
             return OptionalDouble.of((1 - Math.min(1, fraction)) / rate);
-        }
-
-        private double[] secondOldest() {
-            return recent.stream().skip(1).findFirst().orElseThrow();
         }
 
         /**

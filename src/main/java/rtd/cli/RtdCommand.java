@@ -44,7 +44,6 @@ import rtd.io.SceneException;
             "The scene format and every message: see README.md and docs/errors.md."})
 public final class RtdCommand implements Callable<Integer> {
 
-    /** How the command is started, for the help and its messages. */
     static final String NAME = "java -jar rtd.jar";
     /** The paper's picture size. */
     static final int DEFAULT_WIDTH = 1920;
@@ -108,15 +107,12 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--debug", description = "show the stack trace of an error")
     private boolean debug;
 
-    /** The teaching tools: --explain, --view, --export-pov and --watch. */
     @Mixin
     private TeachingOptions teaching;
 
-    /** --window: the scene in a window instead of a picture. */
     @Mixin
     private WindowOptions window;
 
-    /** Motion: --clock, --frames, --fps and --subset (Part III). */
     @Mixin
     private MotionOptions motion;
 
@@ -130,7 +126,7 @@ public final class RtdCommand implements Callable<Integer> {
         System.exit(commandLine().execute(args));
     }
 
-    /** The command line of rtd, with its error handlers, writing in the terminal's encoding, ready to {@code execute}. */
+    /** The command line of rtd, writing in the terminal's encoding, ready to {@code execute}. */
     public static CommandLine commandLine() {
         CommandLine commandLine = commandLine(StandardStreams.system());
         commandLine.setOut(StandardStreams.printWriter(System.out, StandardStreams.encodingOf("stdout")));
@@ -177,21 +173,22 @@ public final class RtdCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        PrintWriter err = spec.commandLine().getErr();
+        CommandLine commandLine = spec.commandLine();
+        PrintWriter err = commandLine.getErr();
         try {
-            FramePlan frames = motion.plan(spec.commandLine(), scenePaths, output,
+            FramePlan frames = motion.plan(commandLine, scenePaths, output,
                     window.requested() ? "--window" : teaching.replacingOption());
             if (window.requested()) {
-                return window.run(checkedOptions(), spec.commandLine(), err);
+                return window.run(options(true), commandLine, err);
             }
-            Integer taught = teaching.run(options(), spec.commandLine(), err); // null: no teaching option answers
+            Integer taught = teaching.run(options(false), commandLine, err); // null: no teaching option answers
             if (taught != null) {
                 return taught;
             }
-            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, spec.commandLine()).jobs(scenePaths);
-            RenderOptions options = checkedOptions();
-            Memory.checkImageFits(spec.commandLine(), options.width(), options.height(), scale); // before any write
-            OutputTarget export = teaching.planExport(options, spec.commandLine()); // beside the picture: one scene
+            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, commandLine).jobs(scenePaths);
+            RenderOptions options = options(true);
+            Memory.checkImageFits(commandLine, options.width(), options.height(), scale); // before any write
+            OutputTarget export = teaching.planExport(options, commandLine); // beside the picture: one scene
             if (paper && (given("--accel") || given("--threads"))) { // once every misuse has had its say
                 err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
                         + "not used");
@@ -225,8 +222,8 @@ public final class RtdCommand implements Callable<Integer> {
                 err.flush();
             }
             if (frames != null) {
-                new FrameRun(options, streams, err, spec.commandLine(), frames).run(job.source(), job.target(), job.format(),
-                        writerReady, export);
+                new FrameRun(options, streams, err, spec.commandLine(), frames).run(job.source(), job.target(),
+                        job.format(), writerReady, export);
             } else {
                 new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
             }
@@ -250,41 +247,36 @@ public final class RtdCommand implements Callable<Integer> {
         return 1;
     }
 
-    /** The options, with the sizes after {@code --scale} at least one pixel (the teaching options check their own). */
-    private RenderOptions options() {
-        return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scale.times(width))),
-                (int) Math.max(1, Math.min(Integer.MAX_VALUE, scale.times(height))), scale,
+    /** The options, sizes after {@code --scale}: if {@code checked}, a misuse where no Java image has them. */
+    private RenderOptions options(boolean checked) {
+        long scaledWidth = scale.times(width);
+        long scaledHeight = scale.times(height);
+        boolean empty = scaledWidth < 1 || scaledHeight < 1;
+        boolean tooBig = scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE;
+        refuse(spec.commandLine(), checked && (empty || tooBig), String.format(Locale.ROOT,
+                "--scale %s makes the %d×%d image %d×%d pixels; ", scale, width, height, scaledWidth, scaledHeight)
+                + (empty ? "a picture needs at least one pixel each way"
+                        : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
+        return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledWidth)),
+                (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledHeight)), scale,
                 given("--width") || given("--height"), threads, accel, paper, samples, stats,
                 !noProgress && StandardStreams.stderrIsTerminal(), motion.clock());
     }
 
-    /** The options, once the sizes after {@code --scale} are checked. */
-    private RenderOptions checkedOptions() {
-        long scaledWidth = scale.times(width);
-        long scaledHeight = scale.times(height);
-        boolean empty = scaledWidth < 1 || scaledHeight < 1;
-        if (empty || scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE) {
-            throw misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; ", scale, width,
-                    height, scaledWidth, scaledHeight) + (empty ? "a picture needs at least one pixel each way"
-                    : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
+    /** A misuse of the command line (exit code 2), saying {@code message}, if {@code wrong}. */
+    static void refuse(CommandLine commandLine, boolean wrong, String message) {
+        if (wrong) {
+            throw new ParameterException(commandLine, message);
         }
-        return options();
     }
 
     /** That {@code option}, which works on one picture, is given one scene file: a misuse if not. */
     static void oneSceneFile(CommandLine commandLine, String option, List<Path> scenes) {
-        if (scenes.size() > 1) {
-            throw new ParameterException(commandLine, option + " works on one scene file, but " + scenes.size()
-                    + " were given; run rtd once for each");
-        }
+        refuse(commandLine, scenes.size() > 1, option + " works on one scene file, but " + scenes.size()
+                + " were given; run rtd once for each");
     }
 
-    /** Whether the command line gave {@code option} (not its default). */
     private boolean given(String option) {
         return spec.commandLine().getParseResult().hasMatchedOption(option);
-    }
-
-    private ParameterException misuse(String message) {
-        return new ParameterException(spec.commandLine(), message);
     }
 }

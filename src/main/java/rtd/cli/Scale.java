@@ -30,7 +30,6 @@ record Scale(double factor) {
         return new Scene(scene.ambient(), scaled, scene.objects(), scene.lights());
     }
 
-    /** The factor as the user wrote it, without a needless ".0". */
     @Override
     public String toString() {
         return BigDecimal.valueOf(factor).stripTrailingZeros().toPlainString();

@@ -2,8 +2,8 @@ package rtd.cli;
 
 import java.awt.image.BufferedImage;
 import java.io.PrintWriter;
-import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -12,12 +12,9 @@ import java.util.function.Function;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import rtd.image.Picture;
-import rtd.image.Rgb;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
-import rtd.pov.PovScene;
-import rtd.render.LinearTracer;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
 import rtd.render.RenderResult;
@@ -46,10 +43,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         this(options, streams, err, new StructureCache());
     }
 
-    /**
-     * Renders {@code source} to {@code target} in {@code format}, writing once {@code writerReady} (the warm-up of
-     * {@code javax.imageio}) is done; with the scene for POV-Ray written to {@code export} (or null) first.
-     */
+    /** Renders {@code source} to {@code target} once {@code writerReady}; the POV-Ray twin to {@code export}. */
     void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
             OutputTarget export) throws SceneException, FileError {
         String report;
@@ -57,16 +51,16 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             StatsReport stats = new StatsReport();
             Scene scene = read(source, streams, options, export, display, stats);
 
-            Accelerator.Kind kind = options.paper() ? Accelerator.Kind.LOOP : Accelerator.choose(scene, options.accel());
+            Accelerator.Kind kind = Accelerator.choose(scene, options.engine());
             display.show(ProgressDisplay.Phase.of(kind.building));
-            Accelerator accelerator = build(kind, scene);
+            Accelerator accelerator = Accelerator.build(kind, scene, options.width(), options.height(), options.samples(),
+                    options.threads(), kept);
             stats.endPhase("build");
 
-            SceneWarnings.of(scene, options.width(), options.height(), !options.paper()) // --paper: no lights
-                    .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
+            warn(scene, source, options, display);
             RenderResult result = render(scene, accelerator, display);
             stats.endPhase("render");
-            if (!hitSomething(scene, accelerator, result.image())) {
+            if (!NothingInView.hitSomething(scene, accelerator.tracers(), result.image(), options.threads())) {
                 display.message(NothingInView.warning(source.name(), scene, options));
             }
 
@@ -82,10 +76,13 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         err.print(report); // once the progress line is gone
     }
 
-    /**
-     * Reads {@code source} at the size {@code options} ask, its warnings shown on {@code display}, and writes it to
-     * {@code export} (or null) for POV-Ray from this one read; the phases "parse" and "export" timed in {@code stats}.
-     */
+    /** Warns of what in {@code scene} looks wrong ({@link SceneWarnings}); with {@code --paper}, not of lights. */
+    static void warn(Scene scene, SceneSource source, RenderOptions options, ProgressDisplay display) {
+        SceneWarnings.of(scene, options.width(), options.height(), !options.paper())
+                .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
+    }
+
+    /** Reads {@code source}, its warnings on {@code display}, and writes its POV-Ray twin to {@code export}. */
     static Scene read(SceneSource source, StandardStreams streams, RenderOptions options, OutputTarget export,
             ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
         display.show(ProgressDisplay.Phase.of("reading " + source.name()));
@@ -95,30 +92,10 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         stats.endPhase("parse");
         if (export != null) {
             display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
-            display.message(exportPov(scene, export, options.width(), options.height()));
+            display.message(PovExport.still(scene, export, options.width(), options.height()));
             stats.endPhase("export");
         }
         return scene;
-    }
-
-    /**
-     * Writes {@code scene} at {@code width × height} for POV-Ray ({@link PovScene}) to {@code target}, and answers the
-     * lines that say how to render it.
-     */
-    static String exportPov(Scene scene, OutputTarget target, int width, int height) throws FileError {
-        Path file = target.spelt();
-        String name = file.getFileName().toString();
-        String text;
-        try {
-            text = PovScene.of(scene, width, height, name);
-        } catch (IllegalArgumentException e) {
-            throw new FileError("cannot export to POV-Ray: " + e.getMessage());
-        }
-        target.writeText(text);
-        String png = name.replaceAll("(?i)\\.pov$", "") + "-pov.png";
-        return "rtd: wrote " + file + "; render it with POV-Ray (apt-get install povray):\n"
-                + "  cd " + PovScene.shellWord(file.toAbsolutePath().getParent().toString()) + " && "
-                + PovScene.command(name, png, width, height);
     }
 
     /**
@@ -131,11 +108,11 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         if (options.samples() > 1) {
             err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
         }
-        Accelerator accelerator = options.paper() ? null
-                : Accelerator.of(scene, options.accel(), options.width(), options.height(), 1, options.threads());
+        Accelerator accelerator = Accelerator.of(scene, options.engine(), options.width(), options.height(), 1,
+                options.threads());
         stats.endPhase("build");
         ViewShader shader = new ViewShader(view, scene.objects());
-        RenderResult raw = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> shader,
+        RenderResult raw = ParallelRenderer.render(scene.camera(), accelerator.tracers(), tracer -> shader,
                 options.width(), options.height(), 1, options.threads(), new RenderProgress());
         stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
         ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
@@ -157,7 +134,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
     RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
         int width = options.width();
         int height = options.height();
-        if (accelerator == null) {
+        if (options.paper()) {
             if (!scene.lights().isEmpty() || options.samples() > 1) {
                 err.println("rtd: note: --paper draws as the paper does, one ray per pixel in flat colours: "
                         + "the scene's lights and --samples are not used");
@@ -165,9 +142,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             display.show(ProgressDisplay.Phase.of("rendering"));
             BufferedImage image = scene.render(width, height);
             int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
-            for (int i = 0; i < rgb.length; i++) {
-                rgb[i] &= 0xFFFFFF; // getRGB adds an opaque alpha channel
-            }
+            Arrays.setAll(rgb, i -> rgb[i] & 0xFFFFFF); // getRGB adds an opaque alpha channel
             return new RenderResult(new Picture(width, height, rgb), WorkCount.testsOf(scene.objects(),
                     (long) width * height));
         }
@@ -176,7 +151,8 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                 : tracer -> new WhittedShader(scene, tracer);
         List<Tracer> tracers = new CopyOnWriteArrayList<>();
         RenderProgress progress = new RenderProgress();
-        display.show(ProgressDisplay.Phase.rendering(() -> progress.rowsDone() / (double) height, () -> rays(tracers)));
+        display.show(new ProgressDisplay.Phase("rendering", () -> progress.rowsDone() / (double) height,
+                () -> rays(tracers)));
         Supplier<Tracer> counted = () -> {
             Tracer tracer = accelerator.tracers().get();
             tracers.add(tracer);
@@ -188,52 +164,17 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
 
     /** The rays {@code tracers} have traced so far, read while they trace: a count for the eye, not for --stats. */
     private static long rays(List<Tracer> tracers) {
-        long rays = 0;
         try {
-            for (Tracer tracer : tracers) {
-                rays += tracer.work().rays();
-            }
-            return rays;
+            return tracers.stream().mapToLong(tracer -> tracer.work().rays()).sum();
         } catch (RuntimeException e) {
             return -1; // a tracer that cannot tell while it works: no rate, rather than a wrong one
         }
     }
 
-    /**
-     * Builds what {@code --accel} chose and renders {@code scene}, quietly: one frame of an animation
-     * ({@link FrameRun}), with what the last frame built that does not depend on the camera if it still serves.
-     */
+    /** One frame of an animation, quietly, with what the last frame built if it still serves ({@link #kept}). */
     Picture draw(Scene scene) {
-        Accelerator accelerator = build(Accelerator.choose(scene, options.accel()), scene);
+        Accelerator accelerator = Accelerator.build(Accelerator.choose(scene, options.engine()), scene, options.width(),
+                options.height(), options.samples(), options.threads(), kept);
         return render(scene, accelerator, ProgressDisplay.start(false, err)).image();
-    }
-
-    /** {@code kind} built for {@code scene} as the options ask, with what {@link #kept} holds; null for --paper. */
-    private Accelerator build(Accelerator.Kind kind, Scene scene) {
-        return options.paper() ? null : Accelerator.build(kind, scene, options.width(), options.height(),
-                options.samples(), options.threads(), kept);
-    }
-
-    /**
-     * Whether some ray hit an object. A pixel that is not background says so at once; a picture of background
-     * alone only if no object may look like it, else the rays are traced again with a shader that marks hits.
-     */
-    private boolean hitSomething(Scene scene, Accelerator accelerator, Picture picture) {
-        int background = scene.ambient().getRGB();
-        if (NothingInView.showsSomething(picture, background)) {
-            return true;
-        }
-        if (!NothingInView.someObjectLooksLikeBackground(scene)) {
-            return false;
-        }
-        Shader hitMarks = (rays, hits, i) -> hits.index(i) < 0 ? Rgb.BLACK : new Rgb(1, 1, 1);
-        Picture marks = ParallelRenderer.render(scene.camera(), tracers(scene, accelerator), tracer -> hitMarks, options.width(),
-                options.height(), options.threads(), new RenderProgress()).image();
-        return NothingInView.showsSomething(marks, 0);
-    }
-
-    /** The tracers of {@code accelerator}, or of the paper's loop where it is null. */
-    private static Supplier<Tracer> tracers(Scene scene, Accelerator accelerator) {
-        return accelerator == null ? () -> new LinearTracer(scene) : accelerator.tracers();
     }
 }

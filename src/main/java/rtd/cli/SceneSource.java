@@ -31,10 +31,8 @@ record SceneSource(Path path, boolean stdin) {
             return readFile(streams).at(clock, warnings);
         }
         try {
-            if (!stdin) {
-                return SceneIO.readScene(path, warnings);
-            }
-            return streams.inPath().isPresent() ? SceneIO.readScene(streams.inPath().get(), SceneIO.STDIN_NAME, warnings)
+            return !stdin ? SceneIO.readScene(path, warnings) : streams.inPath().isPresent()
+                    ? SceneIO.readScene(streams.inPath().get(), SceneIO.STDIN_NAME, warnings)
                     : SceneIO.readScene(streams.in(), SceneIO.STDIN_NAME, warnings);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);
@@ -44,10 +42,8 @@ record SceneSource(Path path, boolean stdin) {
     /** Reads the scene file once, to be parsed at each clock of an animation (Part III). */
     SceneFile readFile(StandardStreams streams) throws FileError {
         try {
-            if (!stdin) {
-                return SceneFile.read(path);
-            }
-            return streams.inPath().isPresent() ? SceneFile.read(streams.inPath().get(), SceneIO.STDIN_NAME, Path.of(""))
+            return !stdin ? SceneFile.read(path) : streams.inPath().isPresent()
+                    ? SceneFile.read(streams.inPath().get(), SceneIO.STDIN_NAME, Path.of(""))
                     : SceneFile.read(streams.in(), SceneIO.STDIN_NAME);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);

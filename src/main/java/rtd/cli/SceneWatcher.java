@@ -5,11 +5,9 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.function.IntConsumer;
 import java.util.function.IntSupplier;
 import java.util.regex.Matcher;
@@ -30,9 +28,9 @@ import picocli.CommandLine;
 final class SceneWatcher {
 
     static final long POLL_MILLIS = 200;
-    private static final long CHECKSUM_LIMIT = 16L << 20;
     /** Longer than the steps of one save (empty the file, write it), even on a busy machine. */
     static final long SETTLE_MILLIS = 100;
+    private static final long CHECKSUM_LIMIT = 16L << 20;
     private static final Pattern MESH = Pattern.compile("(?m)^[ \\t]*mesh[ \\t]*:[ \\t]*\\(([^)|\\r\\n]+)\\)");
 
     private final Path scene;
@@ -41,7 +39,6 @@ final class SceneWatcher {
     private final long pollMillis;
     private IntConsumer rendered = code -> { };
     private volatile boolean stopped;
-    /** Whether some render of this watch has written its picture. */
     private boolean anyGood;
 
     SceneWatcher(Path scene, IntSupplier render, PrintWriter err, long pollMillis) {
@@ -54,16 +51,14 @@ final class SceneWatcher {
     /** A watcher whose renders run {@code commandLine}'s own arguments again, without {@code --watch}. */
     static SceneWatcher forCommandLine(CommandLine commandLine, Path scene, PrintWriter err) {
         String[] args = withoutWatch(commandLine.getParseResult().originalArgs());
-        IntSupplier once = () -> {
+        return new SceneWatcher(scene, () -> {
             CommandLine fresh = RtdCommand.commandLine();
             fresh.setOut(commandLine.getOut());
             fresh.setErr(commandLine.getErr());
             return fresh.execute(args);
-        };
-        return new SceneWatcher(scene, once, err, POLL_MILLIS);
+        }, err, POLL_MILLIS);
     }
 
-    /** The arguments less {@code --watch}. */
     static String[] withoutWatch(List<String> args) {
         return args.stream().filter(arg -> !arg.equals("--watch")).toArray(String[]::new);
     }
@@ -86,14 +81,21 @@ final class SceneWatcher {
         if (code == 2) {
             return code; // a mistake on the command line: no edit of the scene can mend it
         }
-        err.println("rtd: watching " + describe(seen.keySet()) + " for changes; Ctrl-C stops");
+        int meshes = seen.size() - 1;
+        err.println("rtd: watching " + scene + (meshes == 0 ? "" : " and " + meshes + " mesh file" + (meshes == 1 ? ""
+                : "s")) + " for changes; Ctrl-C stops");
         err.flush();
         try {
             while (!stopped && !Thread.currentThread().isInterrupted()) {
                 Thread.sleep(pollMillis);
                 Map<Path, String> now = fingerprints();
                 if (!now.equals(seen)) {
-                    now = settled(now);
+                    Map<Path, String> before;
+                    do { // until the files look the same twice in a row: a save caught halfway shows errors
+                        before = now;
+                        Thread.sleep(Math.max(pollMillis, SETTLE_MILLIS));
+                        now = fingerprints();
+                    } while (!now.equals(before) && !stopped);
                     err.println("rtd: " + changed(seen, now) + " changed: rendering again");
                     seen = now;
                     err.flush();
@@ -106,15 +108,9 @@ final class SceneWatcher {
         return code;
     }
 
-    /** The files' fingerprints once they look the same twice in a row: a save caught halfway shows errors never written. */
-    private Map<Path, String> settled(Map<Path, String> now) throws InterruptedException {
-        Map<Path, String> before;
-        do {
-            before = now;
-            Thread.sleep(Math.max(pollMillis, SETTLE_MILLIS));
-            now = fingerprints();
-        } while (!now.equals(before) && !stopped);
-        return now;
+    /** The first file whose fingerprint differs; the scene if a mesh statement went away. */
+    private Path changed(Map<Path, String> before, Map<Path, String> now) {
+        return now.keySet().stream().filter(file -> !now.get(file).equals(before.get(file))).findFirst().orElse(scene);
     }
 
     private int renderOnce() {
@@ -129,38 +125,22 @@ final class SceneWatcher {
         return code;
     }
 
-    /** The first file whose fingerprint differs; the scene if a mesh statement went away. */
-    private static Path changed(Map<Path, String> before, Map<Path, String> now) {
-        return now.keySet().stream().filter(file -> !now.get(file).equals(before.get(file))).findFirst()
-                .orElse(now.keySet().iterator().next());
-    }
-
-    /** The scene file and each mesh file it names, with what each looks like now. */
+    /** The scene file and each mesh file of its {@code mesh:(path)…} statements, with what each looks like now. */
     private Map<Path, String> fingerprints() {
         Map<Path, String> prints = new LinkedHashMap<>();
         prints.put(scene, fingerprint(scene));
-        for (Path mesh : meshes()) {
-            prints.put(mesh, fingerprint(mesh));
-        }
-        return prints;
-    }
-
-    /** The files of the scene's {@code mesh:(path)…} statements, relative to its folder. */
-    private List<Path> meshes() {
-        List<Path> meshes = new ArrayList<>();
         try {
-            if (Files.size(scene) > CHECKSUM_LIMIT) {
-                return meshes;
-            }
-            Matcher matcher = MESH.matcher(Files.readString(scene, StandardCharsets.UTF_8));
-            Path folder = scene.toAbsolutePath().getParent();
-            while (matcher.find()) {
-                meshes.add(folder.resolve(matcher.group(1).strip()).normalize());
+            if (Files.size(scene) <= CHECKSUM_LIMIT) {
+                Matcher matcher = MESH.matcher(Files.readString(scene, StandardCharsets.UTF_8));
+                while (matcher.find()) {
+                    Path mesh = scene.toAbsolutePath().getParent().resolve(matcher.group(1).strip()).normalize();
+                    prints.put(mesh, fingerprint(mesh));
+                }
             }
         } catch (IOException | RuntimeException e) {
             // unreadable or not UTF-8: the render says what is wrong; watch the scene alone
         }
-        return meshes;
+        return prints;
     }
 
     private static String fingerprint(Path file) {
@@ -176,11 +156,5 @@ final class SceneWatcher {
         } catch (IOException e) {
             return "missing";
         }
-    }
-
-    private static String describe(Set<Path> files) {
-        Path scene = files.iterator().next();
-        return files.size() == 1 ? scene.toString()
-                : scene + " and " + (files.size() - 1) + " mesh file" + (files.size() == 2 ? "" : "s");
     }
 }

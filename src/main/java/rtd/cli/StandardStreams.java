@@ -3,7 +3,6 @@ package rtd.cli;
 import java.io.File;
 import java.io.FileDescriptor;
 import java.io.FileOutputStream;
-import java.io.FilterWriter;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -34,10 +33,6 @@ import java.util.concurrent.TimeUnit;
 record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTerminal, OutputStream out,
         boolean outIsTerminal) {
 
-    /** The width assumed when the terminal does not tell. */
-    static final int DEFAULT_COLUMNS = 80;
-
-    /** The process's own. */
     static StandardStreams system() {
         Path devStdin = Path.of("/dev/stdin");
         return new StandardStreams(System.in, Files.exists(devStdin) ? Optional.of(devStdin) : Optional.empty(),
@@ -51,20 +46,17 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
     /** On Linux, whether file descriptor {@code fd} is a terminal device; elsewhere, whether Java sees a console. */
     private static boolean isTerminal(int fd) {
         Path link = Path.of("/proc/self/fd/" + fd);
-        if (Files.exists(link, LinkOption.NOFOLLOW_LINKS)) {
-            try {
-                String target = Files.readSymbolicLink(link).toString();
-                return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty");
-            } catch (IOException | UnsupportedOperationException e) {
-                return false;
-            }
+        try {
+            String target = Files.readSymbolicLink(link).toString();
+            return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty");
+        } catch (IOException | UnsupportedOperationException e) {
+            return !Files.exists(link, LinkOption.NOFOLLOW_LINKS) && System.console() != null;
         }
-        return System.console() != null;
     }
 
     /**
      * The terminal's width: {@code $COLUMNS} if the shell exported it, else what {@code stty size} says of
-     * {@code /dev/tty}, else {@value #DEFAULT_COLUMNS}. It starts a process: call it once, off the main thread.
+     * {@code /dev/tty}, else 80. It starts a process: call it once, off the main thread.
      */
     static int columns() {
         String exported = System.getenv("COLUMNS");
@@ -83,13 +75,10 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        return DEFAULT_COLUMNS;
+        return 80;
     }
 
-    /**
-     * A writer of {@code stream} in {@code charset}, autoflushing as picocli's own is; in plain ASCII where it must be
-     * ({@link AsciiFallbackWriter}).
-     */
+    /** A writer of {@code stream} in {@code charset}, autoflushing as picocli's own; in ASCII where it must be. */
     static PrintWriter printWriter(OutputStream stream, Charset charset) {
         Writer bytes = new OutputStreamWriter(stream, charset);
         CharsetEncoder encoder = charset.newEncoder();
@@ -125,7 +114,7 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
      * {@code t ≥ 0}); a terminal without such signs (the C locale of many containers, an old Windows code page)
      * gets {@code x}, {@code -}, {@code >=}, and {@code ?} for any other sign it lacks. UTF-8 is written as it is.
      */
-    private static final class AsciiFallbackWriter extends FilterWriter {
+    private static final class AsciiFallbackWriter extends Writer {
 
         /** How each sign of rtd's text is written without it. */
         private static final Map<Character, String> PLAIN = Map.ofEntries(
@@ -137,35 +126,33 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
                 Map.entry('“', "\""), Map.entry('”', "\""), Map.entry('θ', "theta_"), Map.entry('⁻', "^-"),
                 Map.entry('¹', "1"));
 
+        private final Writer out;
         private final CharsetEncoder encoder;
 
         private AsciiFallbackWriter(Writer out, CharsetEncoder encoder) {
-            super(out);
+            this.out = out;
             this.encoder = encoder;
-        }
-
-        @Override
-        public void write(int c) throws IOException {
-            char sign = (char) c;
-            if (encoder.canEncode(sign) || Character.isSurrogate(sign)) {
-                out.write(c);
-            } else {
-                out.write(PLAIN.getOrDefault(sign, "?"));
-            }
         }
 
         @Override
         public void write(char[] text, int from, int length) throws IOException {
             for (int i = from; i < from + length; i++) {
-                write(text[i]);
+                if (encoder.canEncode(text[i]) || Character.isSurrogate(text[i])) {
+                    out.write(text[i]);
+                } else {
+                    out.write(PLAIN.getOrDefault(text[i], "?"));
+                }
             }
         }
 
         @Override
-        public void write(String text, int from, int length) throws IOException {
-            for (int i = from; i < from + length; i++) {
-                write(text.charAt(i));
-            }
+        public void flush() throws IOException {
+            out.flush();
+        }
+
+        @Override
+        public void close() throws IOException {
+            out.close();
         }
     }
 }

@@ -22,7 +22,7 @@ final class StatsReport {
         phaseStart = now;
     }
 
-    /** The report of the phases so far, for {@code scene} rendered with {@code accelerator} (null: the paper's loop). */
+    /** The report of the phases so far, for {@code scene} rendered with {@code accelerator}. */
     String format(Scene scene, Accelerator accelerator, WorkCount work, int threads, Path output) {
         double renderSeconds = seconds.getOrDefault("render", 0.0);
         StringBuilder text = new StringBuilder();
@@ -30,8 +30,7 @@ final class StatsReport {
         if (seconds.containsKey("export")) {
             line(text, "export", seconds.get("export"), "the scene for POV-Ray (--export-pov)");
         }
-        line(text, "build", seconds.get("build"), accelerator == null
-                ? "no BVH: the paper's loop tests every object" : accelerator.built().get());
+        line(text, "build", seconds.get("build"), accelerator.built().get());
         line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
                 work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
         if (work.answeredBy().values().stream().filter(rays -> rays > 0).count() > 1) {
@@ -41,7 +40,7 @@ final class StatsReport {
         double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
         line(text, "total", total, "from reading the scene to the written picture; the JVM's start is not counted");
         text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests%s", work.testsPerRay(), byKind(work)));
-        text.append(accelerator != null && accelerator.walksTree()
+        text.append(accelerator.walksTree()
                 ? String.format(Locale.ROOT, ", %.2f BVH nodes visited%n", work.nodesPerRay()) : String.format("%n"));
         return text.toString();
     }
@@ -66,7 +65,6 @@ final class StatsReport {
         return count(n, thing, thing + "s");
     }
 
-    /** "1 entry", "2,000 entries". */
     static String count(long n, String one, String many) {
         return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }

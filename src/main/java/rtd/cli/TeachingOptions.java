@@ -8,7 +8,6 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.ParameterException;
 import rtd.explain.PixelExplanation;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
@@ -42,25 +41,26 @@ public final class TeachingOptions {
             + "it uses) changes, until Ctrl-C; a broken edit prints its errors and keeps the last good picture")
     private boolean watch;
 
-    /**
-     * Runs what the teaching options ask for instead of the picture ({@code --explain}, {@code --view},
-     * {@code --watch}), the export first if asked for too; or returns {@code null} for the usual render.
-     */
+    /** Runs what takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}); else null. */
     Integer run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
-        if (watch || explain != null || view != null || exportPov != null) {
-            checkOneSceneFile(options, commandLine);
+        String option = watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : "--export-pov";
+        if (watch || explain != null || view != null || exportPov != null) { // one scene file: one answer, read once
+            Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}") && !Files.exists(p))
+                    .findFirst().orElse(null); // --explain 300 400 reads 400 as a scene
+            RtdCommand.refuse(commandLine, explain != null && explain.matches("\\s*\\d{1,9}\\s*") && number != null,
+                    "--explain takes the pixel as X,Y with a comma, and '" + number + "' was read as a scene file; did "
+                    + "you mean --explain " + (explain == null ? "" : explain.strip()) + "," + number + "?");
+            RtdCommand.oneSceneFile(commandLine, option, options.scenes());
+            RtdCommand.refuse(commandLine, options.scene().toString().equals("-"), option + " needs a scene file; it "
+                    + "cannot work on standard input ('-')");
         }
-        if (watch && OutputTarget.DASH.equals(options.output())) {
-            throw new ParameterException(commandLine, "--watch writes the picture again at each save, which cannot go "
-                    + "to standard output ('-o -'); give a file, such as -o out.png");
-        }
+        RtdCommand.refuse(commandLine, watch && OutputTarget.DASH.equals(options.output()), "--watch writes the picture "
+                + "again at each save, which cannot go to standard output ('-o -'); give a file, such as -o out.png");
         if (watch) {
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
-        if (explain != null && view != null) {
-            throw new ParameterException(commandLine, "--explain and --view each take the place of the picture; give "
-                    + "one of them");
-        }
+        RtdCommand.refuse(commandLine, explain != null && view != null, "--explain and --view each take the place of "
+                + "the picture; give one of them");
         int[] pixel = explain == null ? null : pixel(options, commandLine);
         if (pixel == null && view == null) {
             return null;
@@ -122,16 +122,12 @@ public final class TeachingOptions {
         int height = options.height();
         String range = String.format("0 ≤ X < %d and 0 ≤ Y < %d (the image is %d × %d)", width, height, width, height);
         Matcher matcher = PIXEL.matcher(explain);
-        if (!matcher.matches()) {
-            throw new ParameterException(commandLine, "--explain '" + explain + "': give the pixel as X,Y, two whole "
-                    + "numbers with " + range);
-        }
+        RtdCommand.refuse(commandLine, !matcher.matches(), "--explain '" + explain + "': give the pixel as X,Y, two "
+                + "whole numbers with " + range);
         int x = Integer.parseInt(matcher.group(1));
         int y = Integer.parseInt(matcher.group(2));
-        if (x >= width || y >= height) {
-            throw new ParameterException(commandLine, "--explain " + x + "," + y + ": the pixel lies outside the image; "
-                    + "choose " + range);
-        }
+        RtdCommand.refuse(commandLine, x >= width || y >= height, "--explain " + x + "," + y + ": the pixel lies "
+                + "outside the image; choose " + range);
         return new int[] {x, y};
     }
 
@@ -146,24 +142,5 @@ public final class TeachingOptions {
         out.println();
         out.print(PixelExplanation.of(scene, x, y, options.width(), options.height()));
         out.flush();
-    }
-
-    /**
-     * The teaching options work on one scene file: several would need several answers under one name, and standard
-     * input can be neither watched nor read twice. {@code --explain 300 400} reads 400 as a scene: it says so.
-     */
-    private void checkOneSceneFile(RenderOptions options, CommandLine commandLine) {
-        String option = watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : "--export-pov";
-        Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}") && !Files.exists(p))
-                .findFirst().orElse(null);
-        if (explain != null && explain.matches("\\s*\\d{1,9}\\s*") && number != null) {
-            throw new ParameterException(commandLine, "--explain takes the pixel as X,Y with a comma, and '" + number
-                    + "' was read as a scene file; did you mean --explain " + explain.strip() + "," + number + "?");
-        }
-        RtdCommand.oneSceneFile(commandLine, option, options.scenes());
-        if (options.scene().toString().equals("-")) {
-            throw new ParameterException(commandLine, option + " needs a scene file; it cannot work on standard input "
-                    + "('-')");
-        }
     }
 }

@@ -43,9 +43,8 @@ final class WarmUp {
     static void renderOnce() {
         try {
             Scene scene = SceneIO.parseScene("warm-up", SCENE);
-            FlatShader flat = new FlatShader(scene);
-            ParallelRenderer.render(scene.camera(), ViewGrid.build(scene, 24, 16, 1, 1)::newTracer, tracer -> flat, 24, 16, 1,
-                    new RenderProgress());
+            ParallelRenderer.render(scene.camera(), ViewGrid.build(scene, 24, 16, 1, 1)::newTracer,
+                    tracer -> new FlatShader(scene), 24, 16, 1, new RenderProgress());
         } catch (SceneException | RuntimeException e) {
             // only a warm-up: the run itself reads, builds and renders, and says what fails
         }

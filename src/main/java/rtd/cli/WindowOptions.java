@@ -3,11 +3,9 @@ package rtd.cli;
 import java.io.PrintWriter;
 import java.io.Writer;
 import java.io.IOException;
-import java.util.List;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.ParameterException;
 import rtd.accel.Bvh;
 import rtd.accel.LightGrids;
 import rtd.accel.ViewGrid;
@@ -29,14 +27,10 @@ import rtd.window.WindowSetup;
 public final class WindowOptions {
 
     /** The options that have no meaning in a window, each with what the window does instead. */
-    private static final List<String[]> REFUSED = List.of(
-            new String[] {"--explain", "a click on a pixel explains it"},
-            new String[] {"--view", "keys 2 to 5 show the views"},
-            new String[] {"--watch", "the window renders again whenever the scene is saved"},
-            new String[] {"--export-pov", "export without --window"},
-            new String[] {"--paper", "--accel none traces with the paper's loop"},
-            new String[] {"--frames", "render the frames without --window"},
-            new String[] {"-o", "Ctrl+S saves the picture beside the scene"});
+    private static final String[][] REFUSED = {{"--explain", "a click on a pixel explains it"},
+        {"--view", "keys 2 to 5 show the views"}, {"--watch", "the window renders again whenever the scene is saved"},
+        {"--export-pov", "export without --window"}, {"--paper", "--accel none traces with the paper's loop"},
+        {"--frames", "render the frames without --window"}, {"-o", "Ctrl+S saves the picture beside the scene"}};
 
     /** The window's picture without --width, --height or --scale: half the default picture each way. */
     static final int WIDTH = 960;
@@ -53,16 +47,23 @@ public final class WindowOptions {
         return window;
     }
 
-    /** Opens the window, once the command line is checked, and returns the exit code when it is closed. */
+    /** Opens the window, once what makes no sense in one is refused; the exit code when it is closed. */
     int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
-        check(options, commandLine);
+        RtdCommand.refuse(commandLine, options.scenes().size() > 1, "--window opens one scene file, but "
+                + options.scenes().size() + " were given; open each in a window of its own");
+        RtdCommand.refuse(commandLine, options.scene().toString().equals("-"), "--window needs a scene file to watch; "
+                + "it cannot open standard input ('-')");
+        for (String[] refused : REFUSED) {
+            RtdCommand.refuse(commandLine, commandLine.getParseResult().hasMatchedOption(refused[0]), "--window and "
+                    + refused[0] + " do not go together: " + refused[1]);
+        }
         String missing = Window.missingDisplay();
         if (missing != null) {
             return noDisplay(err, missing);
         }
         RenderOptions sized = windowSize(options, commandLine);
         Memory.checkImageFits(commandLine, sized.width(), sized.height(), sized.scale());
-        WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel(),
+        WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel().name(),
                 sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads(), sized.clock());
         try {
             Window.open(setup);
@@ -74,11 +75,7 @@ public final class WindowOptions {
         }
     }
 
-    /**
-     * The window's size: the command line's {@code --width}, {@code --height} and {@code --scale}; without any of
-     * them {@value #WIDTH} × {@value #HEIGHT}, the default picture at {@code --scale 0.5}, which shows what it shows
-     * and fits a screen.
-     */
+    /** The size given, or {@value #WIDTH} × {@value #HEIGHT}: the default at {@code --scale 0.5}, to fit a screen. */
     private static RenderOptions windowSize(RenderOptions options, CommandLine commandLine) {
         if (options.given() || commandLine.getParseResult().hasMatchedOption("--scale")) {
             return options;
@@ -86,25 +83,6 @@ public final class WindowOptions {
         Scale half = new Scale((double) WIDTH / RtdCommand.DEFAULT_WIDTH);
         return new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, half, false, options.threads(),
                 options.accel(), options.paper(), options.samples(), options.stats(), options.progress(), options.clock());
-    }
-
-    /** A misuse (exit 2) for what makes no sense in a window: several scenes, standard input, other outputs. */
-    private static void check(RenderOptions options, CommandLine commandLine) {
-        if (options.scenes().size() > 1) {
-            throw new ParameterException(commandLine, "--window opens one scene file, but " + options.scenes().size()
-                    + " were given; open each in a window of its own");
-        }
-        if (options.scene().toString().equals("-")) {
-            throw new ParameterException(commandLine, "--window needs a scene file to watch; it cannot open standard "
-                    + "input ('-')");
-        }
-        for (String[] refused : REFUSED) {
-            if (commandLine.getCommandSpec().findOption(refused[0]) != null
-                    && commandLine.getParseResult().hasMatchedOption(refused[0])) {
-                throw new ParameterException(commandLine, "--window and " + refused[0] + " do not go together: "
-                        + refused[1]);
-            }
-        }
     }
 
     /** No screen to open the window on (a server, SSH without X, CI): exit code 2, as for a misuse. */
@@ -129,14 +107,10 @@ public final class WindowOptions {
      * (they see from the lights, whatever the camera) before the BVH, or the paper's loop for {@code none}; for
      * the picture the view grid of its camera before those. Public for the window's benchmark.
      */
-    public static Engine engine(String accel, int threads) {
-        return engine(Accelerator.Choice.valueOf(accel), threads);
-    }
-
-    private static Engine engine(Accelerator.Choice accel, int threads) {
+    public static Engine engine(String choice, int threads) {
+        Accelerator.Choice accel = Accelerator.Choice.valueOf(choice);
         StructureCache kept = new StructureCache(); // a clock that moves only the camera keeps the BVH
         return new Engine() {
-            /** The view grid of this camera's picture where {@code -o} takes one, before what serves any camera. */
             @Override
             public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples,
                     Supplier<Tracer> anyCamera) {

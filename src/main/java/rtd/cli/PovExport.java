@@ -1,0 +1,102 @@
+package rtd.cli;
+
+import java.util.ArrayList;
+import java.util.List;
+import rtd.camera.ICamera;
+import rtd.io.ClockedScene;
+import rtd.io.SceneException;
+import rtd.io.SceneFile;
+import rtd.pov.PovClock;
+import rtd.pov.PovScene;
+import rtd.scene.Scene;
+
+/**
+ * {@code --export-pov}: the scene's POV-Ray twin ({@link PovScene}), written all or nothing, and the lines that say
+ * how to render it. With {@code --frames N}, one file for the whole animation (Part III, "Frames on the command
+ * line"): each number that uses the clock is written with POV-Ray's {@code clock} ({@link PovClock}); a scene with
+ * a number that cannot be written so (a material, a pattern, a transformation that uses the clock) is written frame
+ * by frame instead, each frame as a still, in a {@code #case} of POV-Ray's {@code frame_number}. Either way each of
+ * POV-Ray's frames is the twin of rtd's (the camera's half-pixel shift included), and the file's first lines give
+ * the {@code povray} options that render the same N frames, {@code +KFI0 +KFF(N−1)} with the clock from 0 to 1.
+ */
+final class PovExport {
+
+    private PovExport() {
+    }
+
+    /** Writes {@code scene} at {@code width × height} to {@code target}; answers the lines that say how to render it. */
+    static String still(Scene scene, OutputTarget target, int width, int height) throws FileError {
+        String name = target.spelt().getFileName().toString();
+        try {
+            target.writeText(PovScene.of(scene, width, height, name));
+        } catch (IllegalArgumentException e) {
+            throw cannotExport(e);
+        }
+        return "rtd: wrote " + target.spelt() + "; render it with POV-Ray (apt-get install povray):\n" + cd(target)
+                + PovScene.command(name, name.replaceAll("(?i)\\.pov$", "") + "-pov.png", width, height);
+    }
+
+    /** Writes the animation's POV-Ray twin to {@code target}; answers the lines that say how to render it. */
+    static String frames(SceneFile file, FramePlan plan, RenderOptions options, OutputTarget target)
+            throws SceneException, FileError {
+        String name = target.spelt().getFileName().toString();
+        String command = PovScene.command(name, name.replaceAll("(?i)\\.pov$", "") + "-pov.png", options.width(),
+                options.height()) + " +KFI0 +KFF" + (plan.frames() - 1) + " +KI0 +KF1";
+        String pov = "// An animation of " + plan.frames() + " frames, written by rtd --export-pov --frames "
+                + plan.frames() + ". Render all of them with\n//   " + command + "\n";
+        try {
+            if (!file.usesClock()) {
+                ClockedScene read = file.withClock(0);
+                pov += "// The scene does not use the clock: every frame is the same picture.\n"
+                        + PovScene.of(read.with(options.scale().of(read.scene())), options.width(), options.height());
+            } else {
+                pov += animation(file, plan, options);
+            }
+        } catch (IllegalArgumentException e) {
+            throw cannotExport(e);
+        }
+        target.writeText(pov);
+        return "rtd: wrote " + target.spelt() + "; render its " + plan.frames() + " frames with POV-Ray:\n" + cd(target)
+                + command;
+    }
+
+    private static FileError cannotExport(IllegalArgumentException e) {
+        return new FileError("cannot export to POV-Ray: " + e.getMessage());
+    }
+
+    private static String cd(OutputTarget target) {
+        return "  cd " + PovScene.shellWord(target.spelt().toAbsolutePath().getParent().toString()) + " && ";
+    }
+
+    /**
+     * The animation: one scene whose numbers that use the clock are written with POV-Ray's {@code clock}, or, where
+     * {@link PovClock#whyNot} finds a number it cannot write so, each frame's scene in the {@code #case} of its
+     * {@code frame_number}. Either way the scene is read at every frame's clock first, so that a value that breaks a
+     * rule at some frame stops the export as it stops the frames.
+     */
+    private static String animation(SceneFile file, FramePlan plan, RenderOptions options) throws SceneException {
+        List<ICamera> cameras = new ArrayList<>();
+        for (int i = 0; i < plan.frames(); i++) {
+            cameras.add(file.at(plan.clock(i), null).camera());
+        }
+        ClockedScene read = file.withClock(plan.clock(0));
+        ClockedScene clocked = read.with(options.scale().of(read.scene()));
+        boolean scaled = clocked.scene() != read.scene(); // the orthographic camera's zoom times --scale
+        String why = scaled && !clocked.camera().isEmpty() ? "the orthographic camera at --scale"
+                : PovClock.whyNot(clocked, cameras);
+        if (why == null) {
+            return "// Each number that uses rtd's clock is written with POV-Ray's clock, which runs from 0 to 1 over\n"
+                    + "// the frames as rtd's does.\n" + PovScene.of(clocked, options.width(), options.height());
+        }
+        StringBuilder pov = new StringBuilder("// Each frame is rtd's scene at clock = frame_number/"
+                + (plan.frames() - 1) + ", written out in the #case of its frame_number, since POV-Ray's clock\n"
+                + "// cannot stand for the numbers that use rtd's clock in " + why + ".\n#version 3.7;\n\n"
+                + "#switch (frame_number)\n");
+        for (int i = 0; i < plan.frames(); i++) {
+            Scene scene = options.scale().of(file.at(plan.clock(i), null));
+            pov.append("#case (").append(i).append(")\n").append(PovScene.frame(scene, options.width(), options.height()))
+                    .append("#break\n");
+        }
+        return pov.append("#end\n").toString();
+    }
+}
