@@ -89,7 +89,7 @@ final class ClockControl {
     /** {@code P}: plays the clock or pauses it; the paused clock's picture is drawn in full. */
     void play() {
         if (!source.usesClock()) {
-            display.panel("The scene does not use clock: there is nothing to play.\n\n" + Keys.HELP);
+            display.panel("The scene does not use clock: there is nothing to play.\n\n" + SceneWindow.HELP);
             return;
         }
         playing = !playing;

@@ -1,5 +1,6 @@
 package rtd.window;
 
+import java.io.IOException;
 import java.nio.file.Path;
 
 /**
@@ -18,6 +19,17 @@ import java.nio.file.Path;
  */
 public record WindowSetup(Path scene, SceneLoader loader, FileWatch watch, Engine engine, int width, int height,
         int samples, int threads, double clock) {
+
+    /** Reads the window's scene file, as the command line reads it; again after each save. */
+    @FunctionalInterface
+    public interface SceneLoader {
+
+        /**
+         * The scene file as it is now, read once, to be parsed at any clock; a file that cannot be read throws an
+         * {@link IOException} whose message says so for people ("cannot read the scene file '…': …").
+         */
+        ClockedScene read() throws IOException;
+    }
 
     /** Where {@code Ctrl+S} saves: beside the scene, its name with {@code -window.png} for its extension. */
     Path savedPicture() {
