@@ -1,6 +1,8 @@
 package rtd.pov;
 
+import static rtd.pov.PovNumbers.d;
 import static rtd.pov.PovNumbers.num;
+import static rtd.pov.PovNumbers.times;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -121,14 +123,14 @@ public final class PovClock {
         return camera instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) camera).direction();
     }
 
-    /** Whether a number of the statement that made {@code part} uses the clock. */
-    boolean animates(Object part) {
-        return !clocked.of(part).isEmpty();
+    /** What the statement that made {@code part} reads with the clock. */
+    ClockFields of(Object part) {
+        return clocked.of(part);
     }
 
-    /** The background, {@code ambient}'s colour. */
-    String background(Color ambient) {
-        return rgb(clocked.ambient(), "colour", ambient);
+    /** What {@code ambient} reads with the clock. */
+    ClockFields ambient() {
+        return clocked.ambient();
     }
 
     /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene; null if none uses the clock. */
@@ -147,47 +149,72 @@ public final class PovClock {
         return "rgb <" + sums[0] + ", " + sums[1] + ", " + sums[2] + ">";
     }
 
-    /** A point light. */
-    String light(Light light) {
-        ClockFields f = clocked.of(light);
-        Rgb c = light.intensity();
-        return "light_source { " + vector(f, "position", light.position()) + ", rgb <" + channel(f, "intensity", 0, c.red())
-                + ", " + channel(f, "intensity", 1, c.green()) + ", " + channel(f, "intensity", 2, c.blue()) + "> }\n";
+    /** The camera, if a number of its statement uses the clock; else null. */
+    String camera(ICamera camera, int w, int h) {
+        return clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
+    }
+
+    /**
+     * A point light; {@code f} its numbers that use the clock, or null for a still, whose vectors are written in
+     * double (as {@link #vector} writes them).
+     */
+    static String light(Light light, ClockFields f) {
+        return "light_source { " + vector(f, "position", light.position()) + ", " + rgb(f, "intensity", light.intensity())
+                + " }\n";
     }
 
     /** A shape's colour, as {@code rgb <…>} or, with a share let through ({@code filter > 0}), as {@code rgbt <…>}. */
-    String pigment(Object part, Color colour, float filter) {
-        ClockFields f = clocked.of(part);
+    static String pigment(ClockFields f, Color colour, float filter) {
         Rgb c = Rgb.of(colour);
         String channels = channel(f, "colour", 0, c.red()) + ", " + channel(f, "colour", 1, c.green()) + ", "
                 + channel(f, "colour", 2, c.blue());
         return filter <= 0 ? "pigment { rgb <" + channels + "> }" : "pigment { rgbt <" + channels + ", " + num(filter) + "> }";
     }
 
+    /** {@code colour} as {@code rgb <…>}, its channels from {@code group} where they use the clock. */
+    static String rgb(ClockFields f, String group, Color colour) {
+        return rgb(f, group, Rgb.of(colour));
+    }
+
+    private static String rgb(ClockFields f, String group, Rgb c) {
+        return "rgb <" + channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
+                + channel(f, group, 2, c.blue()) + ">";
+    }
+
     /** Channel {@code k} of a colour group: rtd rounds an expression ½ up to a whole number, then takes 255ths. */
     private static String channel(ClockFields f, String group, int k, float fraction) {
-        Expression e = f.of(group, k);
+        Expression e = f == null ? null : f.of(group, k);
         return e == null ? num(fraction) : "floor(" + PovExpression.of(e) + " + 0.5) / 255";
     }
 
-    /** The shape of {@code part} (the object, or inside its transformation), up to its pigment: {@code sphere { <…>, r}. */
-    String shape(IGeometry shape, Object part) {
-        ClockFields f = clocked.of(part);
+    /**
+     * A shape in POV-Ray's words, up to its pigment: {@code sphere { <…>, r}; {@code f} the numbers of the statement
+     * that made it that use the clock, or null for a still. One method for all shapes, so a new shape cannot be half
+     * added.
+     */
+    static String shape(IGeometry shape, ClockFields f) {
         if (shape instanceof Sphere s) {
             return "sphere { " + vector(f, "centre", s.center()) + ", " + number(f, "radius", 0, s.radius());
         }
         if (shape instanceof Plane p) {
-            String n = "vnormalize(" + vector(f, "normal", p.normal()) + ")";
-            return "plane { " + n + ", vdot(" + vector(f, "point", p.point()) + ", " + n + ")";
+            return f == null ? plane(p) : "plane { vnormalize(" + vector(f, "normal", p.normal()) + "), vdot("
+                    + vector(f, "point", p.point()) + ", vnormalize(" + vector(f, "normal", p.normal()) + "))";
         }
-        if (shape instanceof Triangle t && !t.isSmooth()) {
+        if (shape instanceof Triangle t && t.isSmooth()) {
+            String corners = "";
+            for (int k = 0; k < 3; k++) {
+                corners += (k > 0 ? ", " : "") + PovNumbers.vector(t.corner(k)) + ", " + PovNumbers.vector(t.cornerNormal(k));
+            }
+            return "smooth_triangle { " + corners;
+        }
+        if (shape instanceof Triangle t) {
             return "triangle { " + vector(f, "first corner", t.corner(0)) + ", " + vector(f, "second corner", t.corner(1))
                     + ", " + vector(f, "third corner", t.corner(2));
         }
         if (shape instanceof Box b) {
-            return "box { " + corners(f, b);
+            return "box { " + (f == null ? PovNumbers.vector(b.min()) + ", " + PovNumbers.vector(b.max()) : corners(f, b));
         }
-        if (shape instanceof Cylinder c) {
+        if (shape instanceof Cylinder c) { // closed by its caps, as POV-Ray's is unless it is "open"
             return "cylinder { " + vector(f, "first end", c.first()) + ", " + vector(f, "second end", c.second()) + ", "
                     + number(f, "radius", 0, c.radius());
         }
@@ -195,7 +222,15 @@ public final class PovClock {
             return "cone { " + vector(f, "first end", c.first()) + ", " + number(f, "first radius", 0, c.firstRadius())
                     + ", " + vector(f, "second end", c.second()) + ", " + number(f, "second radius", 0, c.secondRadius());
         }
-        throw new IllegalArgumentException("no POV-Ray shape with the clock for a " + shape.kind());
+        throw new IllegalArgumentException("no POV-Ray shape for a " + shape.kind());
+    }
+
+    /** A still plane: its unit normal and its distance from the origin, worked out in double. */
+    private static String plane(Plane p) {
+        double[] n = d(p.normal());
+        double[] unit = times(n, 1 / Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+        double[] q = d(p.point());
+        return "plane { " + PovNumbers.vector(unit) + ", " + num(q[0] * unit[0] + q[1] * unit[1] + q[2] * unit[2]);
     }
 
     /** A box's smaller corner and its larger, as rtd's box takes them from the two corners written. */
@@ -218,26 +253,18 @@ public final class PovClock {
         return "<" + String.join(", ", low) + ">, <" + String.join(", ", high) + ">";
     }
 
-    /** The camera, if a number of its statement uses the clock; else null. */
-    String camera(ICamera camera, int w, int h) {
-        return clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
-    }
-
     /** Number {@code k} of {@code group}: its expression if it uses the clock, else {@code value}. */
     static String number(ClockFields f, String group, int k, float value) {
-        Expression e = f.of(group, k);
+        Expression e = f == null ? null : f.of(group, k);
         return e == null ? num(value) : PovExpression.of(e);
     }
 
-    /** The three numbers of {@code group}, each its expression if it uses the clock, else {@code v}'s. */
+    /**
+     * The three numbers of {@code group}, each its expression if it uses the clock, else {@code v}'s; for a still
+     * ({@code f} null), {@code v} worked out in double, as the still export writes its vectors.
+     */
     static String vector(ClockFields f, String group, Vector3f v) {
-        return "<" + number(f, group, 0, v.x()) + ", " + number(f, group, 1, v.y()) + ", " + number(f, group, 2, v.z()) + ">";
-    }
-
-    /** {@code colour} as {@code rgb <…>}, its channels from {@code group} where they use the clock. */
-    private static String rgb(ClockFields f, String group, Color colour) {
-        Rgb c = Rgb.of(colour);
-        return "rgb <" + channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
-                + channel(f, group, 2, c.blue()) + ">";
+        return f == null ? PovNumbers.vector(v)
+                : "<" + number(f, group, 0, v.x()) + ", " + number(f, group, 1, v.y()) + ", " + number(f, group, 2, v.z()) + ">";
     }
 }

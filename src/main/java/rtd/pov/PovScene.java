@@ -7,19 +7,13 @@ import static rtd.pov.PovNumbers.rgb;
 import static rtd.pov.PovNumbers.times;
 import static rtd.pov.PovNumbers.vector;
 
-import rtd.geometry.Box;
-import rtd.geometry.Cone;
-import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
 import rtd.geometry.Patterned;
-import rtd.geometry.Plane;
-import rtd.geometry.Sphere;
 import rtd.geometry.Transformed;
-import rtd.geometry.Triangle;
-import rtd.image.Color;
 import rtd.image.Rgb;
+import rtd.io.ClockFields;
 import rtd.io.ClockedScene;
 import rtd.scene.AreaLight;
 import rtd.scene.Light;
@@ -121,24 +115,22 @@ public final class PovScene {
         pov.append("global_settings { assumed_gamma 1.0 ambient_light ")
                 .append(shaded ? lightSum != null ? lightSum : rgb(lightSum(scene)) : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
-        pov.append("background { ").append(clock == null ? rgb(scene.ambient()) : clock.background(scene.ambient()))
+        pov.append("background { ").append(PovClock.rgb(clock == null ? null : clock.ambient(), "colour", scene.ambient()))
                 .append(" }\n\n");
         String moving = clock == null ? null : clock.camera(scene.camera(), w, h);
         pov.append(moving != null ? moving : PovCamera.of(scene.camera(), w, h)).append('\n');
         AreaLight written = null;
         for (Light light : scene.lights()) {
-            if (light.area() == null && clock != null) {
-                pov.append(clock.light(light));
-            } else if (light.area() == null) {
-                pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
-                        .append(" }\n");
+            if (light.area() == null) {
+                pov.append(PovClock.light(light, clock == null ? null : clock.of(light)));
             } else if (light.area() != written) { // its samples follow one another: the first writes it
                 written = light.area();
                 pov.append(areaLight(written));
             }
         }
         for (IGeometry object : scene.objects()) {
-            pov.append(object(object, shaded, clock != null && clock.animates(object) ? clock : null));
+            boolean animated = clock != null && !clock.of(object).isEmpty();
+            pov.append(object(object, shaded, animated ? clock.of(object) : null));
         }
         return pov.toString();
     }
@@ -171,8 +163,8 @@ public final class PovScene {
         return sum;
     }
 
-    /** The object; {@code clock} writes its shape and colour if its numbers use the clock, else null. */
-    private static String object(IGeometry object, boolean shaded, PovClock clock) {
+    /** The object; {@code f} its numbers that use the clock, or null for one that does not. */
+    private static String object(IGeometry object, boolean shaded, ClockFields f) {
         IGeometry shape = object;
         String end = " }";
         if (shape instanceof Transformed transformed) { // the matrix after the pigment moves the pattern too
@@ -182,34 +174,23 @@ public final class PovScene {
         Pattern pattern = shape instanceof Patterned patterned ? patterned.pattern() : null;
         shape = shape instanceof Patterned patterned ? patterned.shape() : shape;
         // "sphere { <x, y, z>, r": the pigment and finish follow
-        String start = clock == null ? shape(shape) : clock.shape(shape, object);
+        String start = PovClock.shape(shape, f);
         if (!shaded) {
-            return start + " " + pigment(object, shape, pattern, 0, clock) + " finish { ambient 1 diffuse 0 }" + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, f) + " finish { ambient 1 diffuse 0 }" + end + "\n";
         }
         Material m = object.material();
         if (m.transparency() <= 0) {
-            return start + " " + pigment(object, shape, pattern, 0, clock) + " " + finish(m, 1) + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, f) + " " + finish(m, 1) + end + "\n";
         }
         float t = Math.min(m.transparency(), 0.999f); // POV-Ray's rgbt of 1 would leave no share to scale by
-        return start + " " + pigment(object, shape, pattern, t, clock) + " " + finish(m, 1 - t) + " interior { ior "
+        return start + " " + pigment(object, shape, pattern, t, f) + " " + finish(m, 1 - t) + " interior { ior "
                 + num(m.ior()) + " } no_shadow" + end + "\n"
                 + start + " pigment { rgb 0 } no_image no_reflection" + end + " // its shadow\n";
     }
 
     /** A flat colour's pigment, or a pattern's; {@code filter} is rgbt's share let through (0: plain rgb). */
-    private static String pigment(IGeometry object, IGeometry shape, Pattern pattern, float filter, PovClock clock) {
-        if (pattern != null) {
-            return PovPaint.pigment(shape, pattern, filter);
-        }
-        Color colour = object.color();
-        if (clock != null) {
-            return clock.pigment(object, colour, filter);
-        }
-        if (filter <= 0) {
-            return "pigment { " + rgb(colour) + " }";
-        }
-        Rgb c = Rgb.of(colour);
-        return "pigment { rgbt <" + num(c.red()) + ", " + num(c.green()) + ", " + num(c.blue()) + ", " + num(filter) + "> }";
+    private static String pigment(IGeometry object, IGeometry shape, Pattern pattern, float filter, ClockFields f) {
+        return pattern != null ? PovPaint.pigment(shape, pattern, filter) : PovClock.pigment(f, object.color(), filter);
     }
 
     /** rtd's finish (The Ray Tracer Challenge's) in POV-Ray's words; ambient and diffuse scaled by {@code 1/share} where rgbt's filter takes a share. */
@@ -235,37 +216,5 @@ public final class PovScene {
         return m.transparency() > 0
                 ? " reflection { 0, " + num(m.reflective()) + " fresnel on } conserve_energy"
                 : " reflection { " + num(m.reflective()) + " }";
-    }
-
-    /** The object in POV-Ray's words, up to its pigment: {@code sphere { <x, y, z>, r}. One method for all shapes, so a new shape cannot be half added. */
-    private static String shape(IGeometry object) {
-        if (object instanceof Sphere s) {
-            return "sphere { " + vector(s.center()) + ", " + num(s.radius());
-        }
-        if (object instanceof Plane p) {
-            double[] n = d(p.normal());
-            double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            double[] unit = times(n, 1 / length);
-            double[] q = d(p.point());
-            return "plane { " + vector(unit) + ", " + num(q[0] * unit[0] + q[1] * unit[1] + q[2] * unit[2]);
-        }
-        if (object instanceof Triangle t && t.isSmooth()) {
-            return "smooth_triangle { " + vector(t.corner(0)) + ", " + vector(t.cornerNormal(0)) + ", " + vector(t.corner(1))
-                    + ", " + vector(t.cornerNormal(1)) + ", " + vector(t.corner(2)) + ", " + vector(t.cornerNormal(2));
-        }
-        if (object instanceof Triangle t) {
-            return "triangle { " + vector(t.corner(0)) + ", " + vector(t.corner(1)) + ", " + vector(t.corner(2));
-        }
-        if (object instanceof Box b) {
-            return "box { " + vector(b.min()) + ", " + vector(b.max());
-        }
-        if (object instanceof Cylinder c) { // closed by its caps, as POV-Ray's is unless it is "open"
-            return "cylinder { " + vector(c.first()) + ", " + vector(c.second()) + ", " + num(c.radius());
-        }
-        if (object instanceof Cone c) {
-            return "cone { " + vector(c.first()) + ", " + num(c.firstRadius()) + ", " + vector(c.second()) + ", "
-                    + num(c.secondRadius());
-        }
-        throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
     }
 }
