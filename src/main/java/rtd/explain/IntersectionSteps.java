@@ -15,12 +15,11 @@ import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
- * Step 2 of an explanation for one object (section 3.2.2): the object's own intersection test, run with this
- * observer, which writes each number the test tells as it computes it: a sphere's (equations 3.5 to 3.8), a
- * plane's, a triangle's plane and edges, a box's slabs near to far, a cylinder's or a cone's side and caps (Part
- * III, "More shapes"), and for a transformed object the ray taken into the shape's space ({@code M⁻¹O + t·M⁻¹R},
- * <i>The Ray Tracer Challenge</i>, chapters 4 and 14) before the shape's own test. A kind of object it does not
- * know shows only its test's answer.
+ * Step 2 of an explanation for one object (section 3.2.2): the object's own intersection test, run with this observer,
+ * which writes each number the test tells as it computes it: a sphere's (equations 3.5 to 3.8), a plane's, a triangle's
+ * plane and edges, a box's slabs near to far, a cylinder's or a cone's side and caps (Part III, "More shapes"), and for
+ * a transformed object the ray taken into the shape's space ({@code M⁻¹O + t·M⁻¹R}, <i>The Ray Tracer Challenge</i>,
+ * chapters 4 and 14) before the shape's own test. A kind of object it does not know shows only its test's answer.
  */
 final class IntersectionSteps implements TestObserver {
 

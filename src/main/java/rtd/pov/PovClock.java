@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.stream.Stream;
 import rtd.camera.ICamera;
 import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
@@ -31,16 +32,16 @@ import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
- * The numbers of an animated scene that use the clock, written as POV-Ray expressions of POV-Ray's own
- * {@code clock} (Part III, "Frames on the command line"), so that one POV-Ray file draws every frame. Each
- * number that uses the clock is written as its expression ({@link PovExpression}); each that does not, as the
- * number rtd holds. What rtd works out from the numbers is worked out the same way in POV-Ray: a colour
- * expression rounded ½ up to a whole number of 255ths, a plane's unit normal and distance, a box's smaller and
- * larger corners, the camera's image axes and its half-pixel shift (as {@link PovScene} writes them).
+ * The numbers of an animated scene that use the clock, written as POV-Ray expressions of POV-Ray's own {@code clock}
+ * (Part III, "Frames on the command line"), so that one POV-Ray file draws every frame. Each number that uses the clock
+ * is written as its expression ({@link PovExpression}); each that does not, as the number rtd holds. What rtd works out
+ * from the numbers is worked out the same way in POV-Ray: a colour expression rounded ½ up to a whole number of 255ths,
+ * a plane's unit normal and distance, a box's smaller and larger corners, the camera's image axes and its half-pixel
+ * shift (as {@link PovScene} writes them).
  *
- * <p>It writes the cameras, {@code ambient}, point lights and every shape but a mesh's; a pattern on a shape
- * whose numbers use the clock, and everything that {@link ClockedScene#unwritten} lists, it does not:
- * {@link #whyNot} tells, and such an animation is written frame by frame.
+ * <p>It writes the cameras, {@code ambient}, point lights and every shape but a mesh's; a pattern on a shape whose
+ * numbers use the clock, and everything that {@link ClockedScene#unwritten} lists, it does not: {@link #whyNot} tells,
+ * and such an animation is written frame by frame.
  */
 public final class PovClock {
 
@@ -63,25 +64,19 @@ public final class PovClock {
     }
 
     /**
-     * The {@code #declare} of each {@code let} name that a number using the clock uses ({@link
-     * PovExpression#declarations}), to stand before the camera.
+     * The {@code #declare} of each {@code let} name that a number using the clock uses
+     * ({@link PovExpression#declarations}), to stand before the camera.
      */
     String declarations() {
-        List<Expression> all = new ArrayList<>(clocked.ambient().expressions());
-        all.addAll(clocked.camera().expressions());
-        for (Light light : clocked.scene().lights()) {
-            all.addAll(clocked.of(light).expressions());
-        }
-        for (IGeometry object : clocked.scene().objects()) {
-            all.addAll(clocked.of(object).expressions());
-        }
-        return PovExpression.declarations(all);
+        Stream<ClockFields> parts = Stream.concat(Stream.of(clocked.ambient(), clocked.camera()),
+                Stream.concat(clocked.scene().lights().stream(), clocked.scene().objects().stream()).map(clocked::of));
+        return PovExpression.declarations(parts.flatMap(fields -> fields.expressions().stream()).toList());
     }
 
     /**
      * Why {@code clocked} cannot be written as one POV-Ray file that follows the clock, or null if it can:
-     * {@code cameras} are the scene's camera at every frame's clock, which must each have image axes that
-     * POV-Ray's {@code vcross} gives (rtd's camera looking straight up or down takes x as its right axis).
+     * {@code cameras} are the scene's camera at every frame's clock, which must each have image axes that POV-Ray's
+     * {@code vcross} gives (rtd's camera looking straight up or down takes x as its right axis).
      */
     public static String whyNot(ClockedScene clocked, List<ICamera> cameras) {
         List<String> reasons = new ArrayList<>(clocked.unwritten());
@@ -99,24 +94,16 @@ public final class PovClock {
             }
             check(reasons, shape.kind(), "a " + shape.kind(), fields);
         }
-        if (!clocked.camera().isEmpty()) {
-            for (ICamera camera : cameras) {
-                if (ImageAxes.looksStraightUpOrDown(direction(camera))) {
-                    reasons.add("the camera, which looks straight up or down at a frame");
-                    break;
-                }
-            }
+        if (!clocked.camera().isEmpty() && cameras.stream().anyMatch(c -> ImageAxes.looksStraightUpOrDown(direction(c)))) {
+            reasons.add("the camera, which looks straight up or down at a frame");
         }
         return reasons.isEmpty() ? null : String.join("; ", reasons);
     }
 
     private static void check(List<String> reasons, String kind, String what, ClockFields fields) {
         Set<String> written = WRITTEN.getOrDefault(kind, Set.of());
-        for (String group : fields.groups()) {
-            if (!written.contains(group)) {
-                reasons.add("the " + group + " of " + what);
-            }
-        }
+        fields.groups().stream().filter(group -> !written.contains(group)).forEach(group -> reasons.add("the " + group
+                + " of " + what));
     }
 
     private static Vector3f direction(ICamera camera) {
@@ -155,8 +142,8 @@ public final class PovClock {
     }
 
     /**
-     * A point light; {@code f} its numbers that use the clock, or null for a still, whose vectors are written in
-     * double (as {@link #vector} writes them).
+     * A point light; {@code f} its numbers that use the clock, or null for a still, whose vectors are written in double
+     * (as {@link #vector} writes them).
      */
     static String light(Light light, ClockFields f) {
         return "light_source { " + vector(f, "position", light.position()) + ", " + rgb(f, "intensity", light.intensity())

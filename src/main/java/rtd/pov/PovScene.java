@@ -20,29 +20,27 @@ import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
- * A scene written as a POV-Ray 3.7 scene that draws the same picture ({@code --export-pov}): a
- * second, independent ray tracer to check rtd against.
+ * A scene written as a POV-Ray 3.7 scene that draws the same picture ({@code --export-pov}): a second, independent ray
+ * tracer to check rtd against.
  *
  * <p>What makes the two agree:
  * <ul>
- * <li>the camera is given by explicit vectors, POV-Ray's {@code right} along rtd's u and its
- *     {@code up} against rtd's v (which points down), so no handedness rule of POV-Ray's
- *     {@code look_at} applies; POV-Ray samples pixel centres and rtd pixel corners (Listing 4.1:
- *     {@code x − w/2} in whole numbers), so the camera is shifted by that difference, half a
- *     pixel for an even size; a camera that looks at a point ({@code (at x|y|z)}) gets POV-Ray's
- *     {@code look_at}: last for the orthographic camera, the point shifted as its location is, which
- *     gives the same vectors again; for the perspective camera as a comment, since POV-Ray's
- *     {@code look_at} would undo the shift, which tilts that camera's direction;</li>
- * <li>flat scenes: {@code finish { ambient 1 diffuse 0 }} and {@code ambient_light 1}, no
- *     lights, so each object shows its colour exactly;</li>
- * <li>shaded scenes: the Phong terms map one to one ({@code phong} is the specular term,
- *     {@code phong_size} the shininess), the ambient light is the sum of the lights'
- *     intensities, and {@code max_trace_level 6} counts the camera's ray as rtd's 5 bounces do
- *     not; transparent objects are drawn with {@code rgbt}, their own shadow left to an opaque,
- *     invisible twin, as rtd's every object casts a full shadow;</li>
+ * <li>the camera is given by explicit vectors, POV-Ray's {@code right} along rtd's u and its {@code up} against rtd's v
+ *     (which points down), so no handedness rule of POV-Ray's {@code look_at} applies; POV-Ray samples pixel centres
+ *     and rtd pixel corners (Listing 4.1: {@code x − w/2} in whole numbers), so the camera is shifted by that
+ *     difference, half a pixel for an even size; a camera that looks at a point ({@code (at x|y|z)}) gets POV-Ray's
+ *     {@code look_at}: last for the orthographic camera, the point shifted as its location is, which gives the same
+ *     vectors again; for the perspective camera as a comment, since POV-Ray's {@code look_at} would undo the shift,
+ *     which tilts that camera's direction;</li>
+ * <li>flat scenes: {@code finish { ambient 1 diffuse 0 }} and {@code ambient_light 1}, no lights, so each object shows
+ *     its colour exactly;</li>
+ * <li>shaded scenes: the Phong terms map one to one ({@code phong} is the specular term, {@code phong_size} the
+ *     shininess), the ambient light is the sum of the lights' intensities, and {@code max_trace_level 6} counts the
+ *     camera's ray as rtd's 5 bounces do not; transparent objects are drawn with {@code rgbt}, their own shadow left to
+ *     an opaque, invisible twin, as rtd's every object casts a full shadow;</li>
  * <li>gamma 1: values are linear, as rtd's;</li>
- * <li>an animation's numbers that use the clock: POV-Ray's {@code clock} in their expressions, and what rtd
- *     works out from them worked out alike in POV-Ray ({@link PovClock}).</li>
+ * <li>an animation's numbers that use the clock: POV-Ray's {@code clock} in their expressions, and what rtd works out
+ *     from them worked out alike in POV-Ray ({@link PovClock}).</li>
  * </ul>
  */
 public final class PovScene {
@@ -57,10 +55,9 @@ public final class PovScene {
     }
 
     /**
-     * A file name as POV-Ray's options take it: in double quotes if it has anything but letters,
-     * digits and {@code _./+:,@%-} (POV-Ray ends an option's name at a space, {@code ;},
-     * {@code #}, a quote, a bracket or {@code =}), else as it is. A name with a double quote in
-     * it cannot be given; {@code --export-pov} refuses one.
+     * A file name as POV-Ray's options take it: in double quotes if it has anything but letters, digits and
+     * {@code _./+:,@%-} (POV-Ray ends an option's name at a space, {@code ;}, {@code #}, a quote, a bracket or
+     * {@code =}), else as it is. A name with a double quote in it cannot be given; {@code --export-pov} refuses one.
      */
     private static String povName(String name) {
         return name.matches("[A-Za-z0-9_./+:,@%-]+") ? name : '"' + name + '"';
@@ -80,8 +77,8 @@ public final class PovScene {
 
     /**
      * As {@link #of(Scene, int, int, String)}, each number that uses the clock written with POV-Ray's {@code clock}
-     * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot}
-     * passes. The command that renders the frames is the caller's to write.
+     * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot} passes.
+     * The command that renders the frames is the caller's to write.
      */
     public static String of(ClockedScene clocked, int w, int h) {
         PovClock clock = new PovClock(clocked);
@@ -136,14 +133,13 @@ public final class PovScene {
     }
 
     /**
-     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples. POV-Ray centres
-     * the rectangle on the light's location and puts its n lights along an axis from one end of it
-     * to the other, rtd at the centres of n equal cells, {@code (i + ½)/n} of the edge: so the
-     * location is {@code C + u/2 + v/2} and the axes are {@code u·(n − 1)/n} and
-     * {@code v·(m − 1)/m}. Without {@code adaptive} POV-Ray tests every one of its lights, and
-     * without {@code jitter} leaves them in place. POV-Ray shades with the light's centre and uses
-     * the array for the shadows only, where rtd sums its samples' shading too: the two agree in
-     * the shadows and differ a little in the light (most where the light is near and large).
+     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples. POV-Ray centres the rectangle on the
+     * light's location and puts its n lights along an axis from one end of it to the other, rtd at the centres of n
+     * equal cells, {@code (i + ½)/n} of the edge: so the location is {@code C + u/2 + v/2} and the axes are
+     * {@code u·(n − 1)/n} and {@code v·(m − 1)/m}. Without {@code adaptive} POV-Ray tests every one of its lights, and
+     * without {@code jitter} leaves them in place. POV-Ray shades with the light's centre and uses the array for the
+     * shadows only, where rtd sums its samples' shading too: the two agree in the shadows and differ a little in the
+     * light (most where the light is near and large).
      */
     private static String areaLight(AreaLight area) {
         double[] u = d(area.u());
@@ -201,13 +197,11 @@ public final class PovScene {
     }
 
     /**
-     * The mirror's share. For glass that also mirrors, rtd mixes the two by Schlick's
-     * approximation of Fresnel (step 6 of the shading); POV-Ray's twin of that is its Fresnel
-     * reflection, from none to {@code reflective}, with {@code conserve_energy} taking from the
-     * light let through what is mirrored. Not the same formula (POV-Ray's is Fresnel's own, not
-     * Schlick's), but for the glass and mirror example the pictures then differ in 0.24 % of the
-     * pixels by more than 8 levels, against 16.5 % with a plain reflection added to the light let
-     * through.
+     * The mirror's share. For glass that also mirrors, rtd mixes the two by Schlick's approximation of Fresnel (step 6
+     * of the shading); POV-Ray's twin of that is its Fresnel reflection, from none to {@code reflective}, with
+     * {@code conserve_energy} taking from the light let through what is mirrored. Not the same formula (POV-Ray's is
+     * Fresnel's own, not Schlick's), but for the glass and mirror example the pictures then differ in 0.24 % of the
+     * pixels by more than 8 levels, against 16.5 % with a plain reflection added to the light let through.
      */
     private static String reflection(Material m) {
         if (m.reflective() <= 0) {

@@ -20,13 +20,12 @@ import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
 
 /**
- * Renders one frame of the window, pass by pass ({@link Refinement}), on all cores with {@link ParallelRenderer}:
- * in the picture's colours as {@code -o} shades them (flat, or {@link WhittedShader} with lights), or a debug view
- * ({@link ViewShader}) with its legend. A coarse pass renders one ray per block ({@link BlockCamera}) with the
- * tracers for any camera; the full pass, with those {@code -o} builds for the camera, its pixels are {@code -o}'s.
+ * Renders one frame of the window, pass by pass ({@link Refinement}), on all cores with {@link ParallelRenderer}: in
+ * the picture's colours as {@code -o} shades them (flat, or {@link WhittedShader} with lights), or a debug view
+ * ({@link ViewShader}) with its legend. A coarse pass renders one ray per block ({@link BlockCamera}) with the tracers
+ * for any camera; the full pass, with those {@code -o} builds for the camera, its pixels are {@code -o}'s.
  *
- * <p>A render is cancelled by interrupting its thread: it then stops at the next band of rows, and shows nothing
- * more.
+ * <p>A render is cancelled by interrupting its thread: it then stops at the next band of rows, and shows nothing more.
  */
 final class FrameRenderer {
 

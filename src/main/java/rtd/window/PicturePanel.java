@@ -22,8 +22,8 @@ import rtd.image.Picture;
 import rtd.math.Vector3f;
 
 /**
- * The picture in the window, scaled to fit ({@link PixelMapping}), with the selected pixel's rays over it; the
- * mouse's drags, wheel and clicks go to the {@link WindowSession}. Runs on Swing's thread only.
+ * The picture in the window, scaled to fit ({@link PixelMapping}), with the selected pixel's rays over it; the mouse's
+ * drags, wheel and clicks go to the {@link WindowSession}. Runs on Swing's thread only.
  */
 final class PicturePanel extends JComponent {
 
@@ -101,8 +101,8 @@ final class PicturePanel extends JComponent {
     }
 
     /**
-     * The rays, each over a dark outline so that it shows on any colour: shadow rays dashed, a dot at each hit,
-     * and a ring round the selected pixel, where the camera's ray starts.
+     * The rays, each over a dark outline so that it shows on any colour: shadow rays dashed, a dot at each hit, and a
+     * ring round the selected pixel, where the camera's ray starts.
      */
     private void drawRays(Graphics2D g, PixelMapping map) {
         for (boolean outline : new boolean[] {true, false}) {

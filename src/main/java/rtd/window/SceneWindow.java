@@ -31,10 +31,10 @@ import rtd.scene.Scene;
 import rtd.view.View;
 
 /**
- * The window itself, thin Swing around a {@link WindowSession}: the picture on the left, the panel of text on the
- * right (the explanation, the copied camera, a scene's mistakes) under the clock slider of a scene that uses
- * {@code clock}, the status line below, and the keys ({@link #HELP}), {@code P}'s timer among them. Made and used on
- * Swing's thread only.
+ * The window itself, thin Swing around a {@link WindowSession}: the picture on the left, the panel of text on the right
+ * (the explanation, the copied camera, a scene's mistakes) under the clock slider of a scene that uses {@code clock},
+ * the status line below, and the keys ({@link #HELP}), {@code P}'s timer among them. Made and used on Swing's thread
+ * only.
  */
 final class SceneWindow implements Display {
 
@@ -150,8 +150,8 @@ final class SceneWindow implements Display {
     }
 
     /**
-     * The picture's size on the screen: its own, or scaled down to fit the screen beside the side panel (nine
-     * tenths of it, for the window's frame and status line); a click still selects a pixel of the picture.
+     * The picture's size on the screen: its own, or scaled down to fit the screen beside the side panel (nine tenths of
+     * it, for the window's frame and status line); a click still selects a pixel of the picture.
      */
     private static Dimension fitted(int width, int height) {
         Rectangle screen = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();

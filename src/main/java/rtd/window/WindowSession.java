@@ -13,10 +13,10 @@ import rtd.scene.Scene;
 import rtd.view.View;
 
 /**
- * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}),
- * the view, the selected pixel, and the renders. It lives on the window's thread (Swing's event thread,
- * {@code ui}); renders run on the {@link RenderLoop}, explanations and saves on a thread of their own
- * ({@link SideJobs}), and what they find comes back through {@code ui} to the {@link Display}.
+ * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}), the
+ * view, the selected pixel, and the renders. It lives on the window's thread (Swing's event thread, {@code ui});
+ * renders run on the {@link RenderLoop}, explanations and saves on a thread of their own ({@link SideJobs}), and what
+ * they find comes back through {@code ui} to the {@link Display}.
  */
 final class WindowSession implements AutoCloseable {
 

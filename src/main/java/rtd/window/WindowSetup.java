@@ -4,8 +4,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 
 /**
- * What the command line gives the window: the scene file, how to read it and watch it, what to trace with, and
- * the picture's size, samples and threads as {@code -o} would render it.
+ * What the command line gives the window: the scene file, how to read it and watch it, what to trace with, and the
+ * picture's size, samples and threads as {@code -o} would render it.
  *
  * @param scene   the scene file, as the user spelt it
  * @param loader  reads it
