@@ -52,7 +52,6 @@ final class CameraController {
                 perspective.fieldOfView()) : new OrthographicCamera(pos, dir, (float) zoom);
     }
 
-    /** Whether the camera differs from the file's. */
     boolean moved() {
         return moved;
     }

@@ -31,12 +31,10 @@ final class ClockControl {
         this.clock = clock;
     }
 
-    /** The clock shown. */
     double clock() {
         return clock;
     }
 
-    /** Whether {@code P} plays the clock now. */
     boolean playing() {
         return playing;
     }

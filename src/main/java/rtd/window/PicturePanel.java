@@ -30,11 +30,6 @@ final class PicturePanel extends JComponent {
     private static final long serialVersionUID = 1L;
     /** How long the mouse must rest before the full picture is rendered. */
     static final int REST_MILLIS = 150;
-    private static final Color CAMERA = new Color(255, 255, 255);
-    private static final Color REFLECTED = new Color(80, 200, 255);
-    private static final Color REFRACTED = new Color(255, 120, 255);
-    private static final Color LIT = new Color(255, 230, 40);
-    private static final Color BLOCKED = new Color(150, 150, 150);
     private static final Color OUTLINE = new Color(0, 0, 0, 160);
 
     private final WindowSession session;
@@ -131,11 +126,11 @@ final class PicturePanel extends JComponent {
 
     private static Color colour(RayTree.Kind kind) {
         return switch (kind) {
-            case CAMERA -> CAMERA;
-            case REFLECTED -> REFLECTED;
-            case REFRACTED -> REFRACTED;
-            case SHADOW_LIT -> LIT;
-            case SHADOW_BLOCKED -> BLOCKED;
+            case CAMERA -> Color.WHITE;
+            case REFLECTED -> new Color(80, 200, 255);
+            case REFRACTED -> new Color(255, 120, 255);
+            case SHADOW_LIT -> new Color(255, 230, 40);
+            case SHADOW_BLOCKED -> new Color(150, 150, 150);
         };
     }
 

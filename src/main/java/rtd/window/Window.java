@@ -7,7 +7,6 @@ import java.io.IOException;
 import java.lang.reflect.InvocationTargetException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
@@ -101,27 +100,22 @@ public final class Window {
     }
 
     /**
-     * The scene file was saved: read it (and its meshes) on the watcher's thread, hand it to the window's, which parses
-     * it at the clock it shows.
+     * The scene file was saved: read it (and its meshes) on the watcher's thread, and hand it to the window's, which
+     * parses it at the clock it shows; a file that cannot be read is a mistake, and the last good picture stays.
      */
     private static void reload(WindowSetup setup, SceneWindow window) {
-        Consumer<WindowSession> reloaded = read(setup);
-        SwingUtilities.invokeLater(() -> reloaded.accept(window.session()));
-    }
-
-    /** What the session is to be told of the file as it is now: read, or unreadable. */
-    private static Consumer<WindowSession> read(WindowSetup setup) {
         ClockedScene source;
         try {
             source = setup.loader().read();
         } catch (IOException e) {
-            return session -> session.mistake("rtd: " + e.getMessage() + "\n", ""); // the last good picture stays
+            SwingUtilities.invokeLater(() -> window.session().mistake("rtd: " + e.getMessage() + "\n", ""));
+            return;
         }
         try {
             source.at(setup.clock()); // its meshes are read here, off the window's thread, and kept for every clock
         } catch (SceneException e) {
             // the window parses the file again at its own clock and shows the mistakes it finds there
         }
-        return session -> session.reloaded(source);
+        SwingUtilities.invokeLater(() -> window.session().reloaded(source));
     }
 }
