@@ -2,7 +2,6 @@ package rtd.pov;
 
 import java.math.BigDecimal;
 import java.util.Locale;
-import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Vector3f;
 
@@ -26,11 +25,6 @@ final class PovNumbers {
             return "0";
         }
         return new BigDecimal(String.format(Locale.ROOT, "%.17g", value)).stripTrailingZeros().toPlainString();
-    }
-
-    /** A colour as {@code rgb <r, g, b>}, its channels {@code c / 255}. */
-    static String rgb(Color c) {
-        return rgb(Rgb.of(c));
     }
 
     static String rgb(Rgb c) {

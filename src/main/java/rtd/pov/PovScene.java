@@ -109,8 +109,10 @@ public final class PovScene {
         boolean shaded = !scene.lights().isEmpty();
         StringBuilder pov = new StringBuilder();
         String lightSum = clock == null ? null : clock.lightSum(scene.lights());
-        pov.append("global_settings { assumed_gamma 1.0 ambient_light ")
-                .append(shaded ? lightSum != null ? lightSum : rgb(lightSum(scene)) : "rgb <1, 1, 1>")
+        if (lightSum == null) { // the sum as rtd adds it, in float
+            lightSum = rgb(scene.lights().stream().map(Light::intensity).reduce(Rgb.BLACK, Rgb::plus));
+        }
+        pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? lightSum : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
         pov.append("background { ").append(PovClock.rgb(clock == null ? null : clock.ambient(), "colour", scene.ambient()))
                 .append(" }\n\n");
@@ -149,14 +151,6 @@ public final class PovScene {
         double[] axis2 = area.m() == 1 ? v : times(v, (area.m() - 1.0) / area.m());
         return "light_source { " + vector(centre) + ", " + rgb(area.intensity()) + " area_light " + vector(axis1) + ", "
                 + vector(axis2) + ", " + area.n() + ", " + area.m() + " }\n";
-    }
-
-    private static Rgb lightSum(Scene scene) {
-        Rgb sum = Rgb.BLACK;
-        for (Light light : scene.lights()) {
-            sum = sum.plus(light.intensity());
-        }
-        return sum;
     }
 
     /** The object; {@code f} its numbers that use the clock, or null for one that does not. */
