@@ -6,10 +6,9 @@ import rtd.image.Rgb;
 import rtd.math.Vector3f;
 
 /**
- * How {@code --explain} writes numbers: each float as the shortest decimal that reads back as
- * the same float (so a student who types it into a calculator starts from rtd's own number),
- * without an exponent where that stays short; points and vectors as the scene file writes them,
- * {@code (x|y|z)}.
+ * How {@code --explain} writes numbers: each float as the shortest decimal that reads back as the same float (so a
+ * student who types it into a calculator starts from rtd's own number), without an exponent where that stays short;
+ * points and vectors as the scene file writes them, {@code (x|y|z)}.
  */
 final class Numbers {
 
@@ -31,7 +30,6 @@ final class Numbers {
         return new BigDecimal(Float.toString(value)).stripTrailingZeros().toPlainString();
     }
 
-    /** {@code (x|y|z)}. */
     static String of(Vector3f v) {
         return "(" + of(v.x()) + "|" + of(v.y()) + "|" + of(v.z()) + ")";
     }
@@ -41,9 +39,8 @@ final class Numbers {
         return "(" + of(c.red()) + "|" + of(c.green()) + "|" + of(c.blue()) + ")";
     }
 
-    /** The paper's 8-bit colour, {@code (R|G|B)}. */
     static String of(Color c) {
-        return c.toString();
+        return c.toString(); // the paper's 8-bit colour, (R|G|B)
     }
 
     /** The pixel's colour as {@code R G B}, the form the issue and the tests read. */

@@ -5,9 +5,8 @@ import rtd.geometry.PatternObserver;
 import rtd.image.Color;
 
 /**
- * How a pattern chose a colour, explained (<i>The Ray Tracer Challenge</i>, chapter 10): the point in the
- * pattern's space and its rule's number, as {@link Pattern#colourAt} tells them: "floor(x) + floor(y) +
- * floor(z) = 3: odd, so b".
+ * How a pattern chose a colour, explained (<i>The Ray Tracer Challenge</i>, chapter 10): the point in the pattern's
+ * space and its rule's number, as {@link Pattern#colourAt} tells them: "floor(x) + floor(y) + floor(z) = 3: odd, so b".
  */
 final class PatternSteps implements PatternObserver {
 

@@ -8,9 +8,9 @@ import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
- * Step 1 of an explanation: how the camera makes the ray of pixel (x, y) (section 3.2.1). The
- * orthographic camera by Listing 4.1, the perspective camera by its own formula; each
- * intermediate number computed with the camera's own float operations, in its order.
+ * Step 1 of an explanation: how the camera makes the ray of pixel (x, y) (section 3.2.1). The orthographic camera by
+ * Listing 4.1, the perspective camera by its own formula; each intermediate number computed with the camera's own float
+ * operations, in its order.
  */
 final class RayGeneration {
 

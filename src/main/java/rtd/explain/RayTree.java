@@ -17,10 +17,10 @@ import rtd.shade.Snell;
 import rtd.shade.WhittedShader;
 
 /**
- * The rays of one pixel as data, for drawing them: the camera's ray to its hit, each shadow ray towards its
- * light (to the light if lit, to the object that blocks it if not), and the reflected and refracted rays to their
- * hits, down to the last bounce. It is the tree {@code --explain} writes out in words (its step 4), taken from the
- * same observer of the renderer's own shader ({@link ShadingObserver}), so every point is the picture's.
+ * The rays of one pixel as data, for drawing them: the camera's ray to its hit, each shadow ray towards its light (to
+ * the light if lit, to the object that blocks it if not), and the reflected and refracted rays to their hits, down to
+ * the last bounce. It is the tree {@code --explain} writes out in words (its step 4), taken from the same observer of
+ * the renderer's own shader ({@link ShadingObserver}), so every point is the picture's.
  *
  * @param segments the rays in the order the shader traces them, the camera's first
  */
@@ -32,8 +32,8 @@ public record RayTree(List<Segment> segments) {
     }
 
     /**
-     * One ray of the tree, from {@code from} to {@code to}; a ray that hits nothing has no end ({@code to} null)
-     * and runs along {@code direction} for ever.
+     * One ray of the tree, from {@code from} to {@code to}; a ray that hits nothing has no end ({@code to} null) and
+     * runs along {@code direction} for ever.
      *
      * @param depth 0 for the camera's ray and its shadow rays, 1 for the rays of its first bounce, and so on
      */

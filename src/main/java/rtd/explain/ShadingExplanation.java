@@ -22,35 +22,30 @@ import rtd.shade.Surface;
 import rtd.shade.WhittedShader;
 
 /**
- * Step 4 of an explanation for a scene with lights (Part II, "Light"; not in the paper, which
- * stops at flat colours): the tree of what {@link WhittedShader} computes for the camera's ray,
- * each light's ambient, diffuse and specular terms, the shadow ray's verdict, and the reflected
- * and refracted rays, indented, down to the last bounce.
+ * Step 4 of an explanation for a scene with lights (Part II, "Light"; not in the paper, which stops at flat colours):
+ * the tree of what {@link WhittedShader} computes for the camera's ray, each light's ambient, diffuse and specular
+ * terms, the shadow ray's verdict, and the reflected and refracted rays, indented, down to the last bounce.
  *
- * <p>It watches the renderer's own shader ({@link ShadingObserver}) with the paper's loop as its
- * tracer, so every number is the picture's.
+ * <p>It watches the renderer's own shader ({@link ShadingObserver}) with the paper's loop as its tracer, so every
+ * number is the picture's.
  */
 final class ShadingExplanation implements ShadingObserver {
 
     /**
-     * What the tree knows of one open ray: its finish (null: it hit nothing), bounces left, what
-     * was said, and the parts of its colour (step 6's sum) as they come.
+     * What the tree knows of one open ray: its finish (null: it hit nothing), whether its surface has a back (no
+     * solid), what was said, and the parts of its colour (step 6's sum) as they come: the lights' terms summed, what
+     * the reflected and refracted rays see (null: none), which of the two the next closed ray is, and Schlick's
+     * reflectance where it mixes them (NaN otherwise).
      */
     private static final class Frame {
         Material material;
-        /** Whether the surface hit is no solid (a plane, a triangle): it has a back, not an inside. */
         boolean hasBack;
-        int remaining;
         boolean reflectionSaid;
         boolean refractionSaid;
-        /** The lights' terms summed: the surface's own colour (step 3). */
         Rgb surface = Rgb.BLACK;
-        /** What the reflected and the refracted ray see, before they are scaled; null if there is none. */
         Rgb reflection;
         Rgb refraction;
-        /** Which of the two the next closed ray is: true for the reflection. */
         boolean childIsReflection;
-        /** Schlick's reflectance, where it mixes the two; NaN otherwise. */
         float reflectance = Float.NaN;
     }
 
@@ -64,8 +59,6 @@ final class ShadingExplanation implements ShadingObserver {
     private int samplesSeen;
     private int samplesLit;
     private Rgb areaSum = Rgb.BLACK;
-    /** The most samples of an area light shown one by one; of more, the count alone. */
-    private static final int SAMPLES_SHOWN = 16;
 
     private ShadingExplanation(Text text) {
         this.text = text;
@@ -88,10 +81,8 @@ final class ShadingExplanation implements ShadingObserver {
     @Override
     public void ray(Ray ray, Hit hit, int remaining) {
         Frame frame = new Frame();
-        frame.remaining = remaining;
         open.push(frame);
-        text.in();
-        text.line("ray O = " + Numbers.of(ray.origin()) + ", R = " + Numbers.of(ray.direction()) + ", " + remaining
+        text.in().line("ray O = " + Numbers.of(ray.origin()) + ", R = " + Numbers.of(ray.direction()) + ", " + remaining
                 + " bounce" + (remaining == 1 ? "" : "s") + " left");
         if (hit == null) {
             text.line("hits nothing: the background (ambient) colour");
@@ -160,10 +151,7 @@ final class ShadingExplanation implements ShadingObserver {
         text.out();
     }
 
-    /**
-     * One sample of an area light: the first opens the area light's lines, each gets a line of its
-     * own if there are at most {@link #SAMPLES_SHOWN}, and the last says how many were lit.
-     */
+    /** One sample of an area light: the first opens its lines, each of at most 16 has a line, the last counts the lit. */
     private void areaSample(Light light, boolean shadowed, LightTerms terms) {
         AreaLight area = light.area();
         if (samplesSeen == 0) {
@@ -177,7 +165,7 @@ final class ShadingExplanation implements ShadingObserver {
         boolean lit = !shadowed && terms.lightFacing() > 0;
         samplesLit += lit ? 1 : 0;
         areaSum = areaSum.plus(terms.sum());
-        if (area.sampleCount() <= SAMPLES_SHOWN) {
+        if (area.sampleCount() <= 16) {
             text.line("sample (" + samplesSeen / area.m() + ", " + samplesSeen % area.m() + ") at "
                     + Numbers.of(light.position()) + ": "
                     + (shadowed ? "in shadow of #" + (blocker.index() + 1) + " " + blocker.object().kind()
@@ -208,10 +196,8 @@ final class ShadingExplanation implements ShadingObserver {
         frame.childIsReflection = false;
         text.line("refraction (× transparency " + Numbers.of(frame.material.transparency()) + ", ior "
                 + Numbers.of(frame.material.ior()) + "):");
-        text.in();
-        text.line(snellNumbers(snell) + ", cos θt = √(1 − sin²θt) = " + Numbers.of(snell.cosTransmitted()));
-        text.line("from under = P − ε·N = " + Numbers.of(ray.origin()) + ", along (n·cos θi − cos θt)·N − n·E:");
-        text.out();
+        text.in().line(snellNumbers(snell) + ", cos θt = √(1 − sin²θt) = " + Numbers.of(snell.cosTransmitted()));
+        text.line("from under = P − ε·N = " + Numbers.of(ray.origin()) + ", along (n·cos θi − cos θt)·N − n·E:").out();
     }
 
     @Override
@@ -241,44 +227,38 @@ final class ShadingExplanation implements ShadingObserver {
         Frame frame = open.pop();
         if (frame.material != null) {
             sayMissing(frame);
-            text.line("colour = " + sum(frame) + " = " + Numbers.of(colour));
-        } else {
-            text.line("colour = " + Numbers.of(colour));
         }
-        text.out();
+        text.line("colour = " + (frame.material != null ? sum(frame) + " = " : "") + Numbers.of(colour)).out();
         Frame parent = open.peek();
-        if (parent != null) {
-            if (parent.childIsReflection) {
-                parent.reflection = colour;
-            } else {
-                parent.refraction = colour;
-            }
+        if (parent != null && parent.childIsReflection) {
+            parent.reflection = colour;
+        } else if (parent != null) {
+            parent.refraction = colour;
         }
     }
 
     /**
-     * Step 6's sum, as the shader adds it: the surface, the reflection times reflective, the
-     * refraction times transparency, these two times R and 1 − R where Schlick mixes them; first
-     * in words, then in numbers.
+     * Step 6's sum, as the shader adds it: the surface, the reflection times reflective, the refraction times
+     * transparency, these two times R and 1 − R where Schlick mixes them; first in words, then in numbers.
      */
     private static String sum(Frame frame) {
+        if (frame.reflection == null && frame.refraction == null) {
+            return "surface (the lights' terms summed)";
+        }
         boolean mixed = !Float.isNaN(frame.reflectance);
-        StringBuilder words = new StringBuilder("surface");
-        StringBuilder numbers = new StringBuilder(Numbers.of(frame.surface));
+        String words = "surface";
+        String numbers = Numbers.of(frame.surface);
         if (frame.reflection != null) {
-            String factor = Numbers.of(frame.material.reflective());
-            words.append(" + reflective·reflection").append(mixed ? "·R" : "");
-            numbers.append(" + ").append(factor).append("·").append(Numbers.of(frame.reflection))
-                    .append(mixed ? "·" + Numbers.of(frame.reflectance) : "");
+            words += " + reflective·reflection" + (mixed ? "·R" : "");
+            numbers += " + " + Numbers.of(frame.material.reflective()) + "·" + Numbers.of(frame.reflection)
+                    + (mixed ? "·" + Numbers.of(frame.reflectance) : "");
         }
         if (frame.refraction != null) {
-            String factor = Numbers.of(frame.material.transparency());
-            words.append(" + transparency·refraction").append(mixed ? "·(1 − R)" : "");
-            numbers.append(" + ").append(factor).append("·").append(Numbers.of(frame.refraction))
-                    .append(mixed ? "·" + Numbers.of(1 - frame.reflectance) : "");
+            words += " + transparency·refraction" + (mixed ? "·(1 − R)" : "");
+            numbers += " + " + Numbers.of(frame.material.transparency()) + "·" + Numbers.of(frame.refraction)
+                    + (mixed ? "·" + Numbers.of(1 - frame.reflectance) : "");
         }
-        return frame.reflection == null && frame.refraction == null ? "surface (the lights' terms summed)"
-                : words + " = " + numbers;
+        return words + " = " + numbers;
     }
 
     private void sayMissing(Frame frame) {

@@ -1,15 +1,14 @@
 package rtd.explain;
 
 /**
- * The text of an explanation, line by line, indented by depth: the steps of a pixel, and the
- * tree of its secondary rays.
+ * The text of an explanation, line by line, indented by depth: the steps of a pixel, and the tree of its secondary
+ * rays.
  */
 final class Text {
 
     private final StringBuilder text = new StringBuilder();
     private int depth;
 
-    /** Adds one line at the current depth. */
     Text line(String line) {
         text.append("   ".repeat(depth)).append(line).append('\n');
         return this;
@@ -21,19 +20,16 @@ final class Text {
         return this;
     }
 
-    /** Adds an empty line. */
     Text blank() {
         text.append('\n');
         return this;
     }
 
-    /** Lines from now on go one step deeper. */
     Text in() {
         depth++;
         return this;
     }
 
-    /** Lines from now on go one step shallower. */
     Text out() {
         depth--;
         return this;

@@ -15,11 +15,11 @@ import rtd.io.ClockFields;
 import rtd.math.Vector3f;
 
 /**
- * rtd's camera in POV-Ray's words: explicit vectors, POV-Ray's {@code right} along rtd's u and its {@code up}
- * against rtd's v, shifted from POV-Ray's pixel centres to rtd's corners ({@link PovScene} tells why). A camera
- * whose numbers use the clock has its position and view direction (or the point it looks at) declared from
- * their expressions, and the image's axes worked out from them in POV-Ray as rtd's camera works them out
- * ({@code u = normalize(dir × (0,1,0))}, {@code v = normalize(dir × u)}, Listing 4.1), then the same shift.
+ * rtd's camera in POV-Ray's words: explicit vectors, POV-Ray's {@code right} along rtd's u and its {@code up} against
+ * rtd's v, shifted from POV-Ray's pixel centres to rtd's corners ({@link PovScene} tells why). A camera whose numbers
+ * use the clock has its position and view direction (or the point it looks at) declared from their expressions, and the
+ * image's axes worked out from them in POV-Ray as rtd's camera works them out ({@code u = normalize(dir × (0,1,0))},
+ * {@code v = normalize(dir × u)}, Listing 4.1), then the same shift.
  */
 final class PovCamera {
 
@@ -27,8 +27,8 @@ final class PovCamera {
     }
 
     /**
-     * The camera, shifted from pixel centres to rtd's corners: {@code x' = x − ⌊w/2⌋} against
-     * POV-Ray's {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w).
+     * The camera, shifted from pixel centres to rtd's corners: {@code x' = x − ⌊w/2⌋} against POV-Ray's
+     * {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w).
      */
     static String of(ICamera camera, int w, int h) {
         double shiftX = w / 2.0 - w / 2 - 0.5;

@@ -1,11 +1,14 @@
 package rtd.pov;
 
+import static rtd.pov.PovNumbers.d;
 import static rtd.pov.PovNumbers.num;
+import static rtd.pov.PovNumbers.times;
 
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.stream.Stream;
 import rtd.camera.ICamera;
 import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
@@ -29,16 +32,16 @@ import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
- * The numbers of an animated scene that use the clock, written as POV-Ray expressions of POV-Ray's own
- * {@code clock} (Part III, "Frames on the command line"), so that one POV-Ray file draws every frame. Each
- * number that uses the clock is written as its expression ({@link PovExpression}); each that does not, as the
- * number rtd holds. What rtd works out from the numbers is worked out the same way in POV-Ray: a colour
- * expression rounded ½ up to a whole number of 255ths, a plane's unit normal and distance, a box's smaller and
- * larger corners, the camera's image axes and its half-pixel shift (as {@link PovScene} writes them).
+ * The numbers of an animated scene that use the clock, written as POV-Ray expressions of POV-Ray's own {@code clock}
+ * (Part III, "Frames on the command line"), so that one POV-Ray file draws every frame. Each number that uses the clock
+ * is written as its expression ({@link PovExpression}); each that does not, as the number rtd holds. What rtd works out
+ * from the numbers is worked out the same way in POV-Ray: a colour expression rounded ½ up to a whole number of 255ths,
+ * a plane's unit normal and distance, a box's smaller and larger corners, the camera's image axes and its half-pixel
+ * shift (as {@link PovScene} writes them).
  *
- * <p>It writes the cameras, {@code ambient}, point lights and every shape but a mesh's; a pattern on a shape
- * whose numbers use the clock, and everything that {@link ClockedScene#unwritten} lists, it does not:
- * {@link #whyNot} tells, and such an animation is written frame by frame.
+ * <p>It writes the cameras, {@code ambient}, point lights and every shape but a mesh's; a pattern on a shape whose
+ * numbers use the clock, and everything that {@link ClockedScene#unwritten} lists, it does not: {@link #whyNot} tells,
+ * and such an animation is written frame by frame.
  */
 public final class PovClock {
 
@@ -61,25 +64,19 @@ public final class PovClock {
     }
 
     /**
-     * The {@code #declare} of each {@code let} name that a number using the clock uses ({@link
-     * PovExpression#declarations}), to stand before the camera.
+     * The {@code #declare} of each {@code let} name that a number using the clock uses
+     * ({@link PovExpression#declarations}), to stand before the camera.
      */
     String declarations() {
-        List<Expression> all = new ArrayList<>(clocked.ambient().expressions());
-        all.addAll(clocked.camera().expressions());
-        for (Light light : clocked.scene().lights()) {
-            all.addAll(clocked.of(light).expressions());
-        }
-        for (IGeometry object : clocked.scene().objects()) {
-            all.addAll(clocked.of(object).expressions());
-        }
-        return PovExpression.declarations(all);
+        Stream<ClockFields> parts = Stream.concat(Stream.of(clocked.ambient(), clocked.camera()),
+                Stream.concat(clocked.scene().lights().stream(), clocked.scene().objects().stream()).map(clocked::of));
+        return PovExpression.declarations(parts.flatMap(fields -> fields.expressions().stream()).toList());
     }
 
     /**
      * Why {@code clocked} cannot be written as one POV-Ray file that follows the clock, or null if it can:
-     * {@code cameras} are the scene's camera at every frame's clock, which must each have image axes that
-     * POV-Ray's {@code vcross} gives (rtd's camera looking straight up or down takes x as its right axis).
+     * {@code cameras} are the scene's camera at every frame's clock, which must each have image axes that POV-Ray's
+     * {@code vcross} gives (rtd's camera looking straight up or down takes x as its right axis).
      */
     public static String whyNot(ClockedScene clocked, List<ICamera> cameras) {
         List<String> reasons = new ArrayList<>(clocked.unwritten());
@@ -97,38 +94,30 @@ public final class PovClock {
             }
             check(reasons, shape.kind(), "a " + shape.kind(), fields);
         }
-        if (!clocked.camera().isEmpty()) {
-            for (ICamera camera : cameras) {
-                if (ImageAxes.looksStraightUpOrDown(direction(camera))) {
-                    reasons.add("the camera, which looks straight up or down at a frame");
-                    break;
-                }
-            }
+        if (!clocked.camera().isEmpty() && cameras.stream().anyMatch(c -> ImageAxes.looksStraightUpOrDown(direction(c)))) {
+            reasons.add("the camera, which looks straight up or down at a frame");
         }
         return reasons.isEmpty() ? null : String.join("; ", reasons);
     }
 
     private static void check(List<String> reasons, String kind, String what, ClockFields fields) {
         Set<String> written = WRITTEN.getOrDefault(kind, Set.of());
-        for (String group : fields.groups()) {
-            if (!written.contains(group)) {
-                reasons.add("the " + group + " of " + what);
-            }
-        }
+        fields.groups().stream().filter(group -> !written.contains(group)).forEach(group -> reasons.add("the " + group
+                + " of " + what));
     }
 
     private static Vector3f direction(ICamera camera) {
         return camera instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) camera).direction();
     }
 
-    /** Whether a number of the statement that made {@code part} uses the clock. */
-    boolean animates(Object part) {
-        return !clocked.of(part).isEmpty();
+    /** What the statement that made {@code part} reads with the clock. */
+    ClockFields of(Object part) {
+        return clocked.of(part);
     }
 
-    /** The background, {@code ambient}'s colour. */
-    String background(Color ambient) {
-        return rgb(clocked.ambient(), "colour", ambient);
+    /** What {@code ambient} reads with the clock. */
+    ClockFields ambient() {
+        return clocked.ambient();
     }
 
     /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene; null if none uses the clock. */
@@ -147,47 +136,72 @@ public final class PovClock {
         return "rgb <" + sums[0] + ", " + sums[1] + ", " + sums[2] + ">";
     }
 
-    /** A point light. */
-    String light(Light light) {
-        ClockFields f = clocked.of(light);
-        Rgb c = light.intensity();
-        return "light_source { " + vector(f, "position", light.position()) + ", rgb <" + channel(f, "intensity", 0, c.red())
-                + ", " + channel(f, "intensity", 1, c.green()) + ", " + channel(f, "intensity", 2, c.blue()) + "> }\n";
+    /** The camera, if a number of its statement uses the clock; else null. */
+    String camera(ICamera camera, int w, int h) {
+        return clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
+    }
+
+    /**
+     * A point light; {@code f} its numbers that use the clock, or null for a still, whose vectors are written in double
+     * (as {@link #vector} writes them).
+     */
+    static String light(Light light, ClockFields f) {
+        return "light_source { " + vector(f, "position", light.position()) + ", " + rgb(f, "intensity", light.intensity())
+                + " }\n";
     }
 
     /** A shape's colour, as {@code rgb <…>} or, with a share let through ({@code filter > 0}), as {@code rgbt <…>}. */
-    String pigment(Object part, Color colour, float filter) {
-        ClockFields f = clocked.of(part);
+    static String pigment(ClockFields f, Color colour, float filter) {
         Rgb c = Rgb.of(colour);
         String channels = channel(f, "colour", 0, c.red()) + ", " + channel(f, "colour", 1, c.green()) + ", "
                 + channel(f, "colour", 2, c.blue());
         return filter <= 0 ? "pigment { rgb <" + channels + "> }" : "pigment { rgbt <" + channels + ", " + num(filter) + "> }";
     }
 
+    /** {@code colour} as {@code rgb <…>}, its channels from {@code group} where they use the clock. */
+    static String rgb(ClockFields f, String group, Color colour) {
+        return rgb(f, group, Rgb.of(colour));
+    }
+
+    private static String rgb(ClockFields f, String group, Rgb c) {
+        return "rgb <" + channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
+                + channel(f, group, 2, c.blue()) + ">";
+    }
+
     /** Channel {@code k} of a colour group: rtd rounds an expression ½ up to a whole number, then takes 255ths. */
     private static String channel(ClockFields f, String group, int k, float fraction) {
-        Expression e = f.of(group, k);
+        Expression e = f == null ? null : f.of(group, k);
         return e == null ? num(fraction) : "floor(" + PovExpression.of(e) + " + 0.5) / 255";
     }
 
-    /** The shape of {@code part} (the object, or inside its transformation), up to its pigment: {@code sphere { <…>, r}. */
-    String shape(IGeometry shape, Object part) {
-        ClockFields f = clocked.of(part);
+    /**
+     * A shape in POV-Ray's words, up to its pigment: {@code sphere { <…>, r}; {@code f} the numbers of the statement
+     * that made it that use the clock, or null for a still. One method for all shapes, so a new shape cannot be half
+     * added.
+     */
+    static String shape(IGeometry shape, ClockFields f) {
         if (shape instanceof Sphere s) {
             return "sphere { " + vector(f, "centre", s.center()) + ", " + number(f, "radius", 0, s.radius());
         }
         if (shape instanceof Plane p) {
-            String n = "vnormalize(" + vector(f, "normal", p.normal()) + ")";
-            return "plane { " + n + ", vdot(" + vector(f, "point", p.point()) + ", " + n + ")";
+            return f == null ? plane(p) : "plane { vnormalize(" + vector(f, "normal", p.normal()) + "), vdot("
+                    + vector(f, "point", p.point()) + ", vnormalize(" + vector(f, "normal", p.normal()) + "))";
         }
-        if (shape instanceof Triangle t && !t.isSmooth()) {
+        if (shape instanceof Triangle t && t.isSmooth()) {
+            String corners = "";
+            for (int k = 0; k < 3; k++) {
+                corners += (k > 0 ? ", " : "") + PovNumbers.vector(t.corner(k)) + ", " + PovNumbers.vector(t.cornerNormal(k));
+            }
+            return "smooth_triangle { " + corners;
+        }
+        if (shape instanceof Triangle t) {
             return "triangle { " + vector(f, "first corner", t.corner(0)) + ", " + vector(f, "second corner", t.corner(1))
                     + ", " + vector(f, "third corner", t.corner(2));
         }
         if (shape instanceof Box b) {
-            return "box { " + corners(f, b);
+            return "box { " + (f == null ? PovNumbers.vector(b.min()) + ", " + PovNumbers.vector(b.max()) : corners(f, b));
         }
-        if (shape instanceof Cylinder c) {
+        if (shape instanceof Cylinder c) { // closed by its caps, as POV-Ray's is unless it is "open"
             return "cylinder { " + vector(f, "first end", c.first()) + ", " + vector(f, "second end", c.second()) + ", "
                     + number(f, "radius", 0, c.radius());
         }
@@ -195,7 +209,15 @@ public final class PovClock {
             return "cone { " + vector(f, "first end", c.first()) + ", " + number(f, "first radius", 0, c.firstRadius())
                     + ", " + vector(f, "second end", c.second()) + ", " + number(f, "second radius", 0, c.secondRadius());
         }
-        throw new IllegalArgumentException("no POV-Ray shape with the clock for a " + shape.kind());
+        throw new IllegalArgumentException("no POV-Ray shape for a " + shape.kind());
+    }
+
+    /** A still plane: its unit normal and its distance from the origin, worked out in double. */
+    private static String plane(Plane p) {
+        double[] n = d(p.normal());
+        double[] unit = times(n, 1 / Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
+        double[] q = d(p.point());
+        return "plane { " + PovNumbers.vector(unit) + ", " + num(q[0] * unit[0] + q[1] * unit[1] + q[2] * unit[2]);
     }
 
     /** A box's smaller corner and its larger, as rtd's box takes them from the two corners written. */
@@ -218,26 +240,18 @@ public final class PovClock {
         return "<" + String.join(", ", low) + ">, <" + String.join(", ", high) + ">";
     }
 
-    /** The camera, if a number of its statement uses the clock; else null. */
-    String camera(ICamera camera, int w, int h) {
-        return clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
-    }
-
     /** Number {@code k} of {@code group}: its expression if it uses the clock, else {@code value}. */
     static String number(ClockFields f, String group, int k, float value) {
-        Expression e = f.of(group, k);
+        Expression e = f == null ? null : f.of(group, k);
         return e == null ? num(value) : PovExpression.of(e);
     }
 
-    /** The three numbers of {@code group}, each its expression if it uses the clock, else {@code v}'s. */
+    /**
+     * The three numbers of {@code group}, each its expression if it uses the clock, else {@code v}'s; for a still
+     * ({@code f} null), {@code v} worked out in double, as the still export writes its vectors.
+     */
     static String vector(ClockFields f, String group, Vector3f v) {
-        return "<" + number(f, group, 0, v.x()) + ", " + number(f, group, 1, v.y()) + ", " + number(f, group, 2, v.z()) + ">";
-    }
-
-    /** {@code colour} as {@code rgb <…>}, its channels from {@code group} where they use the clock. */
-    private static String rgb(ClockFields f, String group, Color colour) {
-        Rgb c = Rgb.of(colour);
-        return "rgb <" + channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
-                + channel(f, group, 2, c.blue()) + ">";
+        return f == null ? PovNumbers.vector(v)
+                : "<" + number(f, group, 0, v.x()) + ", " + number(f, group, 1, v.y()) + ", " + number(f, group, 2, v.z()) + ">";
     }
 }

@@ -6,15 +6,15 @@ import java.util.Map;
 import rtd.io.Expression;
 
 /**
- * An expression of a scene file written in POV-Ray's scene language, for an animation whose numbers follow
- * POV-Ray's {@code clock} (Part III, "Expressions, named values and the clock", and "Frames on the command line"):
- * {@code clock} and {@code pi} as they are; rtd's {@code sin cos tan} take degrees, so their argument goes
- * through {@code radians()}, and {@code asin acos atan atan2} answer in degrees, so they go through
- * {@code degrees()}; {@code a ^ b} is {@code pow(a, b)}; {@code sqrt abs floor min max} are POV-Ray's own. A
- * name that a {@code let} defined is written as POV-Ray's {@code Rtd_name}, {@code #declare}d once
- * ({@link #declarations}): a name defined from names is then written once, not once for each use, which a chain
- * of {@code let}s would double at every line. One method per kind of node; parentheses only where POV-Ray's order of
- * operations would read the text otherwise, and around every minus sign that is not the first thing written.
+ * An expression of a scene file written in POV-Ray's scene language, for an animation whose numbers follow POV-Ray's
+ * {@code clock} (Part III, "Expressions, named values and the clock", and "Frames on the command line"): {@code clock}
+ * and {@code pi} as they are; rtd's {@code sin cos tan} take degrees, so their argument goes through {@code radians()},
+ * and {@code asin acos atan atan2} answer in degrees, so they go through {@code degrees()}; {@code a ^ b} is
+ * {@code pow(a, b)}; {@code sqrt abs floor min max} are POV-Ray's own. A name that a {@code let} defined is written as
+ * POV-Ray's {@code Rtd_name}, {@code #declare}d once ({@link #declarations}): a name defined from names is then written
+ * once, not once for each use, which a chain of {@code let}s would double at every line. Parentheses only where
+ * POV-Ray's order of operations would read the text otherwise, and around every minus sign that is not the first thing
+ * written.
  */
 final class PovExpression {
 
@@ -49,37 +49,31 @@ final class PovExpression {
         return ATOM;
     }
 
+    /** {@code e} written out: an operation left to right ({@code pow(a, b)} for {@code a ^ b}), a sign, a name, an atom. */
     private static String text(Expression e) {
-        if (e instanceof Expression.Operation operation) {
-            return operation(operation);
-        }
-        if (e instanceof Expression.Negation negation) {
-            return negation(negation);
-        }
-        if (e instanceof Expression.Name name) {
-            return name(name);
-        }
-        return atom(e);
-    }
-
-    /** {@code a + b}, {@code a - b}, {@code a * b}, {@code a / b}, each left to right; {@code pow(a, b)} for {@code a ^ b}. */
-    private static String operation(Expression.Operation operation) {
-        char op = operation.op();
-        if (op == '^') {
+        if (e instanceof Expression.Operation operation && operation.op() == '^') {
             return "pow(" + of(operation.left()) + ", " + of(operation.right()) + ")";
         }
-        int level = op == '+' || op == '-' ? SUM : PRODUCT;
-        return within(operation.left(), level) + " " + op + " " + within(operation.right(), level + 1);
-    }
-
-    /** {@code -a}. */
-    private static String negation(Expression.Negation negation) {
-        return "-" + within(negation.operand(), ATOM);
-    }
-
-    /** {@code pi} as POV-Ray's; a {@code let}'s name as the identifier {@link #declarations} declares. */
-    private static String name(Expression.Name name) {
-        return name.name().equals("pi") ? "pi" : identifier(name);
+        if (e instanceof Expression.Operation operation) {
+            int level = operation.op() == '+' || operation.op() == '-' ? SUM : PRODUCT;
+            return within(operation.left(), level) + " " + operation.op() + " " + within(operation.right(), level + 1);
+        }
+        if (e instanceof Expression.Negation negation) {
+            return "-" + within(negation.operand(), ATOM);
+        }
+        if (e instanceof Expression.Name name) {
+            return name.name().equals("pi") ? "pi" : identifier(name); // a let's name, as declarations declares it
+        }
+        if (e instanceof Expression.Number number) {
+            return number(number.number());
+        }
+        if (e instanceof Expression.Clock) {
+            return "clock";
+        }
+        if (e instanceof Expression.Call call) {
+            return call(call);
+        }
+        throw new IllegalArgumentException("no POV-Ray expression for " + e);
     }
 
     private static String identifier(Expression.Name name) {
@@ -117,20 +111,6 @@ final class PovExpression {
         } else if (e instanceof Expression.Call call) {
             call.arguments().forEach(argument -> collect(argument, names));
         }
-    }
-
-    /** A number, the clock, or a function's call. */
-    private static String atom(Expression e) {
-        if (e instanceof Expression.Number number) {
-            return number(number.number());
-        }
-        if (e instanceof Expression.Clock) {
-            return "clock";
-        }
-        if (e instanceof Expression.Call call) {
-            return call(call);
-        }
-        throw new IllegalArgumentException("no POV-Ray expression for " + e);
     }
 
     /** A function: angles in POV-Ray are radians, rtd's are degrees. */

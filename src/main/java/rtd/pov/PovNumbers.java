@@ -2,13 +2,12 @@ package rtd.pov;
 
 import java.math.BigDecimal;
 import java.util.Locale;
-import rtd.image.Color;
 import rtd.image.Rgb;
 import rtd.math.Vector3f;
 
 /**
- * Numbers as POV-Ray's scene files take them: plain decimals that POV-Ray reads as the very numbers rtd holds, and
- * the vectors and colours made of them.
+ * Numbers as POV-Ray's scene files take them: plain decimals that POV-Ray reads as the very numbers rtd holds, and the
+ * vectors and colours made of them.
  */
 final class PovNumbers {
 
@@ -28,17 +27,10 @@ final class PovNumbers {
         return new BigDecimal(String.format(Locale.ROOT, "%.17g", value)).stripTrailingZeros().toPlainString();
     }
 
-    /** A colour as {@code rgb <r, g, b>}, its channels {@code c / 255}. */
-    static String rgb(Color c) {
-        return rgb(Rgb.of(c));
-    }
-
-    /** Channels from 0 to 1 as {@code rgb <r, g, b>}. */
     static String rgb(Rgb c) {
         return "rgb <" + num(c.red()) + ", " + num(c.green()) + ", " + num(c.blue()) + ">";
     }
 
-    /** A vector as {@code <x, y, z>}. */
     static String vector(Vector3f v) {
         return vector(d(v));
     }
@@ -53,12 +45,10 @@ final class PovNumbers {
         return new double[] {v.x(), v.y(), v.z()};
     }
 
-    /** {@code a + b}. */
     static double[] plus(double[] a, double[] b) {
         return new double[] {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
     }
 
-    /** {@code a · f}. */
     static double[] times(double[] a, double f) {
         return new double[] {a[0] * f, a[1] * f, a[2] * f};
     }

@@ -7,48 +7,40 @@ import static rtd.pov.PovNumbers.rgb;
 import static rtd.pov.PovNumbers.times;
 import static rtd.pov.PovNumbers.vector;
 
-import rtd.geometry.Box;
-import rtd.geometry.Cone;
-import rtd.geometry.Cylinder;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
 import rtd.geometry.Patterned;
-import rtd.geometry.Plane;
-import rtd.geometry.Sphere;
 import rtd.geometry.Transformed;
-import rtd.geometry.Triangle;
-import rtd.image.Color;
 import rtd.image.Rgb;
+import rtd.io.ClockFields;
 import rtd.io.ClockedScene;
 import rtd.scene.AreaLight;
 import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
- * A scene written as a POV-Ray 3.7 scene that draws the same picture ({@code --export-pov}): a
- * second, independent ray tracer to check rtd against.
+ * A scene written as a POV-Ray 3.7 scene that draws the same picture ({@code --export-pov}): a second, independent ray
+ * tracer to check rtd against.
  *
  * <p>What makes the two agree:
  * <ul>
- * <li>the camera is given by explicit vectors, POV-Ray's {@code right} along rtd's u and its
- *     {@code up} against rtd's v (which points down), so no handedness rule of POV-Ray's
- *     {@code look_at} applies; POV-Ray samples pixel centres and rtd pixel corners (Listing 4.1:
- *     {@code x − w/2} in whole numbers), so the camera is shifted by that difference, half a
- *     pixel for an even size; a camera that looks at a point ({@code (at x|y|z)}) gets POV-Ray's
- *     {@code look_at}: last for the orthographic camera, the point shifted as its location is, which
- *     gives the same vectors again; for the perspective camera as a comment, since POV-Ray's
- *     {@code look_at} would undo the shift, which tilts that camera's direction;</li>
- * <li>flat scenes: {@code finish { ambient 1 diffuse 0 }} and {@code ambient_light 1}, no
- *     lights, so each object shows its colour exactly;</li>
- * <li>shaded scenes: the Phong terms map one to one ({@code phong} is the specular term,
- *     {@code phong_size} the shininess), the ambient light is the sum of the lights'
- *     intensities, and {@code max_trace_level 6} counts the camera's ray as rtd's 5 bounces do
- *     not; transparent objects are drawn with {@code rgbt}, their own shadow left to an opaque,
- *     invisible twin, as rtd's every object casts a full shadow;</li>
+ * <li>the camera is given by explicit vectors, POV-Ray's {@code right} along rtd's u and its {@code up} against rtd's v
+ *     (which points down), so no handedness rule of POV-Ray's {@code look_at} applies; POV-Ray samples pixel centres
+ *     and rtd pixel corners (Listing 4.1: {@code x − w/2} in whole numbers), so the camera is shifted by that
+ *     difference, half a pixel for an even size; a camera that looks at a point ({@code (at x|y|z)}) gets POV-Ray's
+ *     {@code look_at}: last for the orthographic camera, the point shifted as its location is, which gives the same
+ *     vectors again; for the perspective camera as a comment, since POV-Ray's {@code look_at} would undo the shift,
+ *     which tilts that camera's direction;</li>
+ * <li>flat scenes: {@code finish { ambient 1 diffuse 0 }} and {@code ambient_light 1}, no lights, so each object shows
+ *     its colour exactly;</li>
+ * <li>shaded scenes: the Phong terms map one to one ({@code phong} is the specular term, {@code phong_size} the
+ *     shininess), the ambient light is the sum of the lights' intensities, and {@code max_trace_level 6} counts the
+ *     camera's ray as rtd's 5 bounces do not; transparent objects are drawn with {@code rgbt}, their own shadow left to
+ *     an opaque, invisible twin, as rtd's every object casts a full shadow;</li>
  * <li>gamma 1: values are linear, as rtd's;</li>
- * <li>an animation's numbers that use the clock: POV-Ray's {@code clock} in their expressions, and what rtd
- *     works out from them worked out alike in POV-Ray ({@link PovClock}).</li>
+ * <li>an animation's numbers that use the clock: POV-Ray's {@code clock} in their expressions, and what rtd works out
+ *     from them worked out alike in POV-Ray ({@link PovClock}).</li>
  * </ul>
  */
 public final class PovScene {
@@ -63,10 +55,9 @@ public final class PovScene {
     }
 
     /**
-     * A file name as POV-Ray's options take it: in double quotes if it has anything but letters,
-     * digits and {@code _./+:,@%-} (POV-Ray ends an option's name at a space, {@code ;},
-     * {@code #}, a quote, a bracket or {@code =}), else as it is. A name with a double quote in
-     * it cannot be given; {@code --export-pov} refuses one.
+     * A file name as POV-Ray's options take it: in double quotes if it has anything but letters, digits and
+     * {@code _./+:,@%-} (POV-Ray ends an option's name at a space, {@code ;}, {@code #}, a quote, a bracket or
+     * {@code =}), else as it is. A name with a double quote in it cannot be given; {@code --export-pov} refuses one.
      */
     private static String povName(String name) {
         return name.matches("[A-Za-z0-9_./+:,@%-]+") ? name : '"' + name + '"';
@@ -86,8 +77,8 @@ public final class PovScene {
 
     /**
      * As {@link #of(Scene, int, int, String)}, each number that uses the clock written with POV-Ray's {@code clock}
-     * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot}
-     * passes. The command that renders the frames is the caller's to write.
+     * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot} passes.
+     * The command that renders the frames is the caller's to write.
      */
     public static String of(ClockedScene clocked, int w, int h) {
         PovClock clock = new PovClock(clocked);
@@ -118,40 +109,39 @@ public final class PovScene {
         boolean shaded = !scene.lights().isEmpty();
         StringBuilder pov = new StringBuilder();
         String lightSum = clock == null ? null : clock.lightSum(scene.lights());
-        pov.append("global_settings { assumed_gamma 1.0 ambient_light ")
-                .append(shaded ? lightSum != null ? lightSum : rgb(lightSum(scene)) : "rgb <1, 1, 1>")
+        if (lightSum == null) { // the sum as rtd adds it, in float
+            lightSum = rgb(scene.lights().stream().map(Light::intensity).reduce(Rgb.BLACK, Rgb::plus));
+        }
+        pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? lightSum : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
-        pov.append("background { ").append(clock == null ? rgb(scene.ambient()) : clock.background(scene.ambient()))
+        pov.append("background { ").append(PovClock.rgb(clock == null ? null : clock.ambient(), "colour", scene.ambient()))
                 .append(" }\n\n");
         String moving = clock == null ? null : clock.camera(scene.camera(), w, h);
         pov.append(moving != null ? moving : PovCamera.of(scene.camera(), w, h)).append('\n');
         AreaLight written = null;
         for (Light light : scene.lights()) {
-            if (light.area() == null && clock != null) {
-                pov.append(clock.light(light));
-            } else if (light.area() == null) {
-                pov.append("light_source { ").append(vector(light.position())).append(", ").append(rgb(light.intensity()))
-                        .append(" }\n");
+            if (light.area() == null) {
+                pov.append(PovClock.light(light, clock == null ? null : clock.of(light)));
             } else if (light.area() != written) { // its samples follow one another: the first writes it
                 written = light.area();
                 pov.append(areaLight(written));
             }
         }
         for (IGeometry object : scene.objects()) {
-            pov.append(object(object, shaded, clock != null && clock.animates(object) ? clock : null));
+            boolean animated = clock != null && !clock.of(object).isEmpty();
+            pov.append(object(object, shaded, animated ? clock.of(object) : null));
         }
         return pov.toString();
     }
 
     /**
-     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples. POV-Ray centres
-     * the rectangle on the light's location and puts its n lights along an axis from one end of it
-     * to the other, rtd at the centres of n equal cells, {@code (i + ½)/n} of the edge: so the
-     * location is {@code C + u/2 + v/2} and the axes are {@code u·(n − 1)/n} and
-     * {@code v·(m − 1)/m}. Without {@code adaptive} POV-Ray tests every one of its lights, and
-     * without {@code jitter} leaves them in place. POV-Ray shades with the light's centre and uses
-     * the array for the shadows only, where rtd sums its samples' shading too: the two agree in
-     * the shadows and differ a little in the light (most where the light is near and large).
+     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples. POV-Ray centres the rectangle on the
+     * light's location and puts its n lights along an axis from one end of it to the other, rtd at the centres of n
+     * equal cells, {@code (i + ½)/n} of the edge: so the location is {@code C + u/2 + v/2} and the axes are
+     * {@code u·(n − 1)/n} and {@code v·(m − 1)/m}. Without {@code adaptive} POV-Ray tests every one of its lights, and
+     * without {@code jitter} leaves them in place. POV-Ray shades with the light's centre and uses the array for the
+     * shadows only, where rtd sums its samples' shading too: the two agree in the shadows and differ a little in the
+     * light (most where the light is near and large).
      */
     private static String areaLight(AreaLight area) {
         double[] u = d(area.u());
@@ -163,16 +153,8 @@ public final class PovScene {
                 + vector(axis2) + ", " + area.n() + ", " + area.m() + " }\n";
     }
 
-    private static Rgb lightSum(Scene scene) {
-        Rgb sum = Rgb.BLACK;
-        for (Light light : scene.lights()) {
-            sum = sum.plus(light.intensity());
-        }
-        return sum;
-    }
-
-    /** The object; {@code clock} writes its shape and colour if its numbers use the clock, else null. */
-    private static String object(IGeometry object, boolean shaded, PovClock clock) {
+    /** The object; {@code f} its numbers that use the clock, or null for one that does not. */
+    private static String object(IGeometry object, boolean shaded, ClockFields f) {
         IGeometry shape = object;
         String end = " }";
         if (shape instanceof Transformed transformed) { // the matrix after the pigment moves the pattern too
@@ -182,34 +164,23 @@ public final class PovScene {
         Pattern pattern = shape instanceof Patterned patterned ? patterned.pattern() : null;
         shape = shape instanceof Patterned patterned ? patterned.shape() : shape;
         // "sphere { <x, y, z>, r": the pigment and finish follow
-        String start = clock == null ? shape(shape) : clock.shape(shape, object);
+        String start = PovClock.shape(shape, f);
         if (!shaded) {
-            return start + " " + pigment(object, shape, pattern, 0, clock) + " finish { ambient 1 diffuse 0 }" + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, f) + " finish { ambient 1 diffuse 0 }" + end + "\n";
         }
         Material m = object.material();
         if (m.transparency() <= 0) {
-            return start + " " + pigment(object, shape, pattern, 0, clock) + " " + finish(m, 1) + end + "\n";
+            return start + " " + pigment(object, shape, pattern, 0, f) + " " + finish(m, 1) + end + "\n";
         }
         float t = Math.min(m.transparency(), 0.999f); // POV-Ray's rgbt of 1 would leave no share to scale by
-        return start + " " + pigment(object, shape, pattern, t, clock) + " " + finish(m, 1 - t) + " interior { ior "
+        return start + " " + pigment(object, shape, pattern, t, f) + " " + finish(m, 1 - t) + " interior { ior "
                 + num(m.ior()) + " } no_shadow" + end + "\n"
                 + start + " pigment { rgb 0 } no_image no_reflection" + end + " // its shadow\n";
     }
 
     /** A flat colour's pigment, or a pattern's; {@code filter} is rgbt's share let through (0: plain rgb). */
-    private static String pigment(IGeometry object, IGeometry shape, Pattern pattern, float filter, PovClock clock) {
-        if (pattern != null) {
-            return PovPaint.pigment(shape, pattern, filter);
-        }
-        Color colour = object.color();
-        if (clock != null) {
-            return clock.pigment(object, colour, filter);
-        }
-        if (filter <= 0) {
-            return "pigment { " + rgb(colour) + " }";
-        }
-        Rgb c = Rgb.of(colour);
-        return "pigment { rgbt <" + num(c.red()) + ", " + num(c.green()) + ", " + num(c.blue()) + ", " + num(filter) + "> }";
+    private static String pigment(IGeometry object, IGeometry shape, Pattern pattern, float filter, ClockFields f) {
+        return pattern != null ? PovPaint.pigment(shape, pattern, filter) : PovClock.pigment(f, object.color(), filter);
     }
 
     /** rtd's finish (The Ray Tracer Challenge's) in POV-Ray's words; ambient and diffuse scaled by {@code 1/share} where rgbt's filter takes a share. */
@@ -220,13 +191,11 @@ public final class PovScene {
     }
 
     /**
-     * The mirror's share. For glass that also mirrors, rtd mixes the two by Schlick's
-     * approximation of Fresnel (step 6 of the shading); POV-Ray's twin of that is its Fresnel
-     * reflection, from none to {@code reflective}, with {@code conserve_energy} taking from the
-     * light let through what is mirrored. Not the same formula (POV-Ray's is Fresnel's own, not
-     * Schlick's), but for the glass and mirror example the pictures then differ in 0.24 % of the
-     * pixels by more than 8 levels, against 16.5 % with a plain reflection added to the light let
-     * through.
+     * The mirror's share. For glass that also mirrors, rtd mixes the two by Schlick's approximation of Fresnel (step 6
+     * of the shading); POV-Ray's twin of that is its Fresnel reflection, from none to {@code reflective}, with
+     * {@code conserve_energy} taking from the light let through what is mirrored. Not the same formula (POV-Ray's is
+     * Fresnel's own, not Schlick's), but for the glass and mirror example the pictures then differ in 0.24 % of the
+     * pixels by more than 8 levels, against 16.5 % with a plain reflection added to the light let through.
      */
     private static String reflection(Material m) {
         if (m.reflective() <= 0) {
@@ -235,37 +204,5 @@ public final class PovScene {
         return m.transparency() > 0
                 ? " reflection { 0, " + num(m.reflective()) + " fresnel on } conserve_energy"
                 : " reflection { " + num(m.reflective()) + " }";
-    }
-
-    /** The object in POV-Ray's words, up to its pigment: {@code sphere { <x, y, z>, r}. One method for all shapes, so a new shape cannot be half added. */
-    private static String shape(IGeometry object) {
-        if (object instanceof Sphere s) {
-            return "sphere { " + vector(s.center()) + ", " + num(s.radius());
-        }
-        if (object instanceof Plane p) {
-            double[] n = d(p.normal());
-            double length = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            double[] unit = times(n, 1 / length);
-            double[] q = d(p.point());
-            return "plane { " + vector(unit) + ", " + num(q[0] * unit[0] + q[1] * unit[1] + q[2] * unit[2]);
-        }
-        if (object instanceof Triangle t && t.isSmooth()) {
-            return "smooth_triangle { " + vector(t.corner(0)) + ", " + vector(t.cornerNormal(0)) + ", " + vector(t.corner(1))
-                    + ", " + vector(t.cornerNormal(1)) + ", " + vector(t.corner(2)) + ", " + vector(t.cornerNormal(2));
-        }
-        if (object instanceof Triangle t) {
-            return "triangle { " + vector(t.corner(0)) + ", " + vector(t.corner(1)) + ", " + vector(t.corner(2));
-        }
-        if (object instanceof Box b) {
-            return "box { " + vector(b.min()) + ", " + vector(b.max());
-        }
-        if (object instanceof Cylinder c) { // closed by its caps, as POV-Ray's is unless it is "open"
-            return "cylinder { " + vector(c.first()) + ", " + vector(c.second()) + ", " + num(c.radius());
-        }
-        if (object instanceof Cone c) {
-            return "cone { " + vector(c.first()) + ", " + num(c.firstRadius()) + ", " + vector(c.second()) + ", "
-                    + num(c.secondRadius());
-        }
-        throw new IllegalArgumentException("no POV-Ray shape for a " + object.kind());
     }
 }

@@ -6,14 +6,15 @@ import rtd.camera.PerspectiveCamera;
 import rtd.math.Vector3f;
 
 /**
- * The window's camera as the mouse moves it from the file's camera: orbit around a point, pan across the view,
- * zoom ({@code R} starts a new controller on the file's camera). Both of rtd's cameras: the orthographic camera
- * zooms by its zoom (pixels per world unit), the perspective camera moves along its view. The position and direction are kept in double, so that many small
- * moves add no float error; each camera made from them is the scene file's kind, with float numbers.
+ * The window's camera as the mouse moves it from the file's camera: orbit around a point, pan across the view, zoom
+ * ({@code R} starts a new controller on the file's camera). Both of rtd's cameras: the orthographic camera zooms by its
+ * zoom (pixels per world unit), the perspective camera moves along its view. The position and direction are kept in
+ * double, so that many small moves add no float error; each camera made from them is the scene file's kind, with float
+ * numbers.
  *
- * <p>An orbit turns the position about the point, and the direction with it, first about the world's vertical
- * (yaw), then about the view's horizontal right axis (pitch); the view stays at least
- * {@value #STEEPEST_DEGREES}° from straight up or down, where its right axis would turn over.
+ * <p>An orbit turns the position about the point, and the direction with it, first about the world's vertical (yaw),
+ * then about the view's horizontal right axis (pitch); the view stays at least {@value #STEEPEST_DEGREES}° from
+ * straight up or down, where its right axis would turn over.
  */
 final class CameraController {
 
@@ -51,15 +52,14 @@ final class CameraController {
                 perspective.fieldOfView()) : new OrthographicCamera(pos, dir, (float) zoom);
     }
 
-    /** Whether the camera differs from the file's. */
     boolean moved() {
         return moved;
     }
 
     /**
-     * Turns the camera about {@code pivot} by {@code yaw} radians about the world's vertical and {@code pitch}
-     * radians about the view's right axis (positive: looking down more), the pitch held within
-     * {@value #STEEPEST_DEGREES}° of the horizon.
+     * Turns the camera about {@code pivot} by {@code yaw} radians about the world's vertical and {@code pitch} radians
+     * about the view's right axis (positive: looking down more), the pitch held within {@value #STEEPEST_DEGREES}° of
+     * the horizon.
      */
     void orbit(double yaw, double pitch, Vector3f pivot) {
         Vec3 centre = Vec3.of(pivot);

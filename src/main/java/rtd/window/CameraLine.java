@@ -8,9 +8,9 @@ import rtd.math.Vector3f;
 
 /**
  * The window's camera as a line of a scene file, {@code perspective_camera:(pos):(dir):(fov)} or
- * {@code orthographic_camera:(pos):(dir):(zoom)}, ready to paste in place of the file's camera: each number is
- * written as a plain decimal that reads back as the very same float, so the scene with this line renders the
- * window's picture at the window's size, pixel for pixel.
+ * {@code orthographic_camera:(pos):(dir):(zoom)}, ready to paste in place of the file's camera: each number is written
+ * as a plain decimal that reads back as the very same float, so the scene with this line renders the window's picture
+ * at the window's size, pixel for pixel.
  */
 final class CameraLine {
 

@@ -4,11 +4,11 @@ import rtd.io.SceneException;
 import rtd.scene.Scene;
 
 /**
- * The window's clock: the scene file as read last, parsed again at the clock slider's value or the play key's,
- * each scene handed to its {@link WindowSession}; a value that breaks at a clock (a radius negative at clock = 0.75)
- * is shown as a saved mistake is, and the last good picture stays. The play key runs the clock from where it is
- * towards 1 and wraps round to 0, one pass in {@link #PASS_NANOS}, as the frames of an animation loop: time, not
- * frames, moves it, so a slow scene plays at the same pace in fewer frames. Used on the window's thread only.
+ * The window's clock: the scene file as read last, parsed again at the clock slider's value or the play key's, each
+ * scene handed to its {@link WindowSession}; a value that breaks at a clock (a radius negative at clock = 0.75) is
+ * shown as a saved mistake is, and the last good picture stays. The play key runs the clock from where it is towards 1
+ * and wraps round to 0, one pass in {@link #PASS_NANOS}, as the frames of an animation loop: time, not frames, moves
+ * it, so a slow scene plays at the same pace in fewer frames. Used on the window's thread only.
  */
 final class ClockControl {
 
@@ -31,12 +31,10 @@ final class ClockControl {
         this.clock = clock;
     }
 
-    /** The clock shown. */
     double clock() {
         return clock;
     }
 
-    /** Whether {@code P} plays the clock now. */
     boolean playing() {
         return playing;
     }
@@ -52,8 +50,8 @@ final class ClockControl {
     }
 
     /**
-     * The file saved again ({@code read}), parsed at the clock shown, its slider shown again; a scene without the
-     * clock does not play.
+     * The file saved again ({@code read}), parsed at the clock shown, its slider shown again; a scene without the clock
+     * does not play.
      */
     Scene read(ClockedScene read) throws SceneException {
         source = read;
@@ -64,8 +62,8 @@ final class ClockControl {
     }
 
     /**
-     * The user moved the slider to {@code to}: playing stops (the slider is the user's now), and a frame at the
-     * moving resolution follows while it is dragged ({@code dragging}), the full picture once it is let go.
+     * The user moved the slider to {@code to}: playing stops (the slider is the user's now), and a frame at the moving
+     * resolution follows while it is dragged ({@code dragging}), the full picture once it is let go.
      */
     void slid(double to, boolean dragging) {
         playing = false;
@@ -89,7 +87,7 @@ final class ClockControl {
     /** {@code P}: plays the clock or pauses it; the paused clock's picture is drawn in full. */
     void play() {
         if (!source.usesClock()) {
-            display.panel("The scene does not use clock: there is nothing to play.\n\n" + Keys.HELP);
+            display.panel("The scene does not use clock: there is nothing to play.\n\n" + SceneWindow.HELP);
             return;
         }
         playing = !playing;

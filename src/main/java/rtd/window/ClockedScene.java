@@ -7,9 +7,9 @@ import rtd.io.SceneFile;
 import rtd.scene.Scene;
 
 /**
- * The scene file as the window read it last, parsed at any clock without reading it again (its meshes are read
- * once, by {@link SceneFile}): the clock slider and the play key parse it at each of their values. Each scene
- * parsed is passed through {@code sized}, as the command line sizes it (its {@code --scale}).
+ * The scene file as the window read it last, parsed at any clock without reading it again (its meshes are read once, by
+ * {@link SceneFile}): the clock slider and the play key parse it at each of their values. Each scene parsed is passed
+ * through {@code sized}, as the command line sizes it (its {@code --scale}).
  *
  * @param file  the file's bytes, read once
  * @param sized what the command line does to each scene read (the identity for none)

@@ -3,7 +3,10 @@ package rtd.window;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import rtd.camera.ICamera;
 import rtd.image.Picture;
+import rtd.math.Ray;
+import rtd.math.Vector3f;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
 import rtd.render.RenderResult;
@@ -17,13 +20,12 @@ import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
 
 /**
- * Renders one frame of the window, pass by pass ({@link Refinement}), on all cores with {@link ParallelRenderer}:
- * in the picture's colours as {@code -o} shades them (flat, or {@link WhittedShader} with lights), or a debug view
- * ({@link ViewShader}) with its legend. A coarse pass renders one ray per block ({@link BlockCamera}) with the
- * tracers for any camera; the full pass, with those {@code -o} builds for the camera, its pixels are {@code -o}'s.
+ * Renders one frame of the window, pass by pass ({@link Refinement}), on all cores with {@link ParallelRenderer}: in
+ * the picture's colours as {@code -o} shades them (flat, or {@link WhittedShader} with lights), or a debug view
+ * ({@link ViewShader}) with its legend. A coarse pass renders one ray per block ({@link BlockCamera}) with the tracers
+ * for any camera; the full pass, with those {@code -o} builds for the camera, its pixels are {@code -o}'s.
  *
- * <p>A render is cancelled by interrupting its thread: it then stops at the next band of rows, and shows nothing
- * more.
+ * <p>A render is cancelled by interrupting its thread: it then stops at the next band of rows, and shows nothing more.
  */
 final class FrameRenderer {
 
@@ -33,6 +35,29 @@ final class FrameRenderer {
 
     /** One frame to render: {@code view} null for the picture. */
     record Frame(Scene scene, View view, int width, int height, int samples, int threads, Refinement refinement) {
+    }
+
+    /**
+     * A coarse pass's camera: pixel (x, y) of the small picture of a {@code block}-pixel grid is the ray of pixel
+     * {@code (x·block, y·block)} of the full {@code width × height} picture, made by the scene's camera: so a block
+     * shows the colour its top left pixel will have.
+     */
+    private record BlockCamera(ICamera full, int block, int width, int height) implements ICamera {
+
+        @Override
+        public Ray generateRay(int x, int y, int w, int h) {
+            return full.generateRay(x * block, y * block, width, height);
+        }
+
+        @Override
+        public Ray generateRay(float x, float y, int w, int h) {
+            return full.generateRay(x * block, y * block, width, height);
+        }
+
+        @Override
+        public Vector3f position() {
+            return full.position();
+        }
     }
 
     private final Engine engine;

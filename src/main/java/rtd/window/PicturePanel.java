@@ -22,19 +22,14 @@ import rtd.image.Picture;
 import rtd.math.Vector3f;
 
 /**
- * The picture in the window, scaled to fit ({@link PixelMapping}), with the selected pixel's rays over it; the
- * mouse's drags, wheel and clicks go to the {@link WindowSession}. Runs on Swing's thread only.
+ * The picture in the window, scaled to fit ({@link PixelMapping}), with the selected pixel's rays over it; the mouse's
+ * drags, wheel and clicks go to the {@link WindowSession}. Runs on Swing's thread only.
  */
 final class PicturePanel extends JComponent {
 
     private static final long serialVersionUID = 1L;
     /** How long the mouse must rest before the full picture is rendered. */
     static final int REST_MILLIS = 150;
-    private static final Color CAMERA = new Color(255, 255, 255);
-    private static final Color REFLECTED = new Color(80, 200, 255);
-    private static final Color REFRACTED = new Color(255, 120, 255);
-    private static final Color LIT = new Color(255, 230, 40);
-    private static final Color BLOCKED = new Color(150, 150, 150);
     private static final Color OUTLINE = new Color(0, 0, 0, 160);
 
     private final WindowSession session;
@@ -101,8 +96,8 @@ final class PicturePanel extends JComponent {
     }
 
     /**
-     * The rays, each over a dark outline so that it shows on any colour: shadow rays dashed, a dot at each hit,
-     * and a ring round the selected pixel, where the camera's ray starts.
+     * The rays, each over a dark outline so that it shows on any colour: shadow rays dashed, a dot at each hit, and a
+     * ring round the selected pixel, where the camera's ray starts.
      */
     private void drawRays(Graphics2D g, PixelMapping map) {
         for (boolean outline : new boolean[] {true, false}) {
@@ -131,11 +126,11 @@ final class PicturePanel extends JComponent {
 
     private static Color colour(RayTree.Kind kind) {
         return switch (kind) {
-            case CAMERA -> CAMERA;
-            case REFLECTED -> REFLECTED;
-            case REFRACTED -> REFRACTED;
-            case SHADOW_LIT -> LIT;
-            case SHADOW_BLOCKED -> BLOCKED;
+            case CAMERA -> Color.WHITE;
+            case REFLECTED -> new Color(80, 200, 255);
+            case REFRACTED -> new Color(255, 120, 255);
+            case SHADOW_LIT -> new Color(255, 230, 40);
+            case SHADOW_BLOCKED -> new Color(150, 150, 150);
         };
     }
 

@@ -9,9 +9,9 @@ import rtd.math.Vector3f;
 import rtd.scene.Scene;
 
 /**
- * The point the camera orbits around and pans at: what the centre pixel sees (its nearest hit, by the paper's
- * depth test), or where it sees nothing, the centre of the box around the objects that have one; with none, a
- * point ahead on the centre ray.
+ * The point the camera orbits around and pans at: what the centre pixel sees (its nearest hit, by the paper's depth
+ * test), or where it sees nothing, the centre of the box around the objects that have one; with none, a point ahead on
+ * the centre ray.
  */
 final class Pivot {
 

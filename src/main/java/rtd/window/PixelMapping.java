@@ -1,9 +1,9 @@
 package rtd.window;
 
 /**
- * Where the picture lies in the window's panel, and which pixel a point of the panel shows: the picture is
- * scaled by one factor to fit the panel (up or down, its shape kept) and centred in it. Image coordinates run
- * from (0, 0), the top left corner of pixel (0, 0), to (width, height); pixel (x, y) covers [x, x + 1) × [y, y + 1).
+ * Where the picture lies in the window's panel, and which pixel a point of the panel shows: the picture is scaled by
+ * one factor to fit the panel (up or down, its shape kept) and centred in it. Image coordinates run from (0, 0), the
+ * top left corner of pixel (0, 0), to (width, height); pixel (x, y) covers [x, x + 1) × [y, y + 1).
  *
  * @param imageWidth  the picture's width in pixels
  * @param imageHeight the picture's height in pixels

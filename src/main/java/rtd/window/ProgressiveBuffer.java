@@ -3,10 +3,9 @@ package rtd.window;
 import rtd.image.Picture;
 
 /**
- * The window's picture while it is refined: a coarse pass renders one pixel per block of {@code block × block}
- * pixels (8, then 4, 2 and 1: {@link Refinement}), and each block is filled with its pixel's colour, so the
- * picture shows at once and sharpens. The last pass, blocks of 1, sets every pixel itself: the picture is then
- * the full render's.
+ * The window's picture while it is refined: a coarse pass renders one pixel per block of {@code block × block} pixels
+ * (8, then 4, 2 and 1: {@link Refinement}), and each block is filled with its pixel's colour, so the picture shows at
+ * once and sharpens. The last pass, blocks of 1, sets every pixel itself: the picture is then the full render's.
  */
 final class ProgressiveBuffer {
 

@@ -9,18 +9,18 @@ import rtd.explain.RayTree;
 import rtd.math.Vector3f;
 
 /**
- * A pixel's {@link RayTree} drawn into the picture: each ray as a line of image coordinates, where the camera
- * would show its points. The projection undoes the camera's ray generation (Listing 4.1 and the perspective
- * camera): a ray through image point {@code (x, y)} passes through the world points that project to it.
+ * A pixel's {@link RayTree} drawn into the picture: each ray as a line of image coordinates, where the camera would
+ * show its points. The projection undoes the camera's ray generation (Listing 4.1 and the perspective camera): a ray
+ * through image point {@code (x, y)} passes through the world points that project to it.
  *
  * <ul>
  * <li>orthographic: {@code x = w/2 + zoom·(P − pos)·u}, {@code y = h/2 + zoom·(P − pos)·v};</li>
  * <li>perspective: with {@code d = P − pos} and {@code z = d·forward}, {@code x = w/2 + f·(d·u)/z},
- *     {@code y = h/2 + f·(d·v)/z}; a line is cut where it passes behind the eye ({@code z} below a small
- *     share of the scene's size), which the camera cannot show.</li>
+ *     {@code y = h/2 + f·(d·v)/z}; a line is cut where it passes behind the eye ({@code z} below a small share of the
+ *     scene's size), which the camera cannot show.</li>
  * </ul>
- * ({@code w/2} and {@code h/2} are whole numbers, as the cameras take them.) A ray that hits nothing is drawn far
- * along its direction.
+ * ({@code w/2} and {@code h/2} are whole numbers, as the cameras take them.) A ray that hits nothing is drawn far along
+ * its direction.
  */
 final class RayTreeProjection {
 
@@ -42,8 +42,8 @@ final class RayTreeProjection {
     }
 
     /**
-     * The tree's rays as lines in the picture; a ray wholly behind a perspective camera's eye is left out, and a
-     * camera other than rtd's two shows none.
+     * The tree's rays as lines in the picture; a ray wholly behind a perspective camera's eye is left out, and a camera
+     * other than rtd's two shows none.
      */
     List<Line> lines(RayTree tree) {
         if (!(camera instanceof OrthographicCamera) && !(camera instanceof PerspectiveCamera)) {

@@ -5,8 +5,8 @@ import java.util.List;
 /**
  * The passes of one render, as the sides of their blocks: a new scene or camera starts coarse and is refined
  * ({@link #STILL}: 8, 4, 2, 1 pixels); while the camera moves, each frame renders at the moving resolution alone
- * ({@link #MOVING}: a quarter of the pixels, coarser for a scene too slow for that: {@link #moving}); once the
- * mouse rests, the full picture follows ({@link #RESTED}).
+ * ({@link #MOVING}: a quarter of the pixels, coarser for a scene too slow for that: {@link #moving}); once the mouse
+ * rests, the full picture follows ({@link #RESTED}).
  *
  * @param blocks the sides of the blocks, coarsest first
  */
@@ -26,10 +26,9 @@ record Refinement(List<Integer> blocks) {
     }
 
     /**
-     * The moving frame after one of blocks of {@code block} pixels that took {@code nanos}: blocks of 2 (a quarter
-     * of the pixels, the moving resolution) if their rays would fit in {@link #FRAME_NANOS}, else blocks of 4 if
-     * theirs would, else 8; so a heavy scene still follows the mouse. Before any moving frame ({@code nanos} 0),
-     * blocks of 2.
+     * The moving frame after one of blocks of {@code block} pixels that took {@code nanos}: blocks of 2 (a quarter of
+     * the pixels, the moving resolution) if their rays would fit in {@link #FRAME_NANOS}, else blocks of 4 if theirs
+     * would, else 8; so a heavy scene still follows the mouse. Before any moving frame ({@code nanos} 0), blocks of 2.
      */
     static Refinement moving(int block, long nanos) {
         int next = 2;

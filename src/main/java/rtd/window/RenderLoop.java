@@ -3,9 +3,9 @@ package rtd.window;
 import java.util.function.Consumer;
 
 /**
- * The window's render thread: it runs one job at a time, the newest asked for. Asking for a new job cancels the
- * one in progress (it interrupts the thread, and {@link FrameRenderer} stops at its next band of rows), so the
- * picture always follows the latest camera, and the window's own thread (Swing's) never waits for a render.
+ * The window's render thread: it runs one job at a time, the newest asked for. Asking for a new job cancels the one in
+ * progress (it interrupts the thread, and {@link FrameRenderer} stops at its next band of rows), so the picture always
+ * follows the latest camera, and the window's own thread (Swing's) never waits for a render.
  */
 final class RenderLoop implements AutoCloseable {
 
@@ -24,8 +24,8 @@ final class RenderLoop implements AutoCloseable {
     }
 
     /**
-     * Runs {@code job} next, in place of any job still waiting; {@code cancel} whether it cancels the one running
-     * (a still picture does; a moving frame waits for the one before, so that frames are finished and shown).
+     * Runs {@code job} next, in place of any job still waiting; {@code cancel} whether it cancels the one running (a
+     * still picture does; a moving frame waits for the one before, so that frames are finished and shown).
      */
     synchronized void submit(Runnable job, boolean cancel) {
         pending = job;

@@ -31,12 +31,32 @@ import rtd.scene.Scene;
 import rtd.view.View;
 
 /**
- * The window itself, thin Swing around a {@link WindowSession}: the picture on the left, the panel of text on the
- * right (the explanation, the copied camera, a scene's mistakes) under the clock slider of a scene that uses
- * {@code clock}, the status line below, and the keys ({@link Keys}), {@code P}'s timer among them. Made and used on
- * Swing's thread only.
+ * The window itself, thin Swing around a {@link WindowSession}: the picture on the left, the panel of text on the right
+ * (the explanation, the copied camera, a scene's mistakes) under the clock slider of a scene that uses {@code clock},
+ * the status line below, and the keys ({@link #HELP}), {@code P}'s timer among them. Made and used on Swing's thread
+ * only.
  */
 final class SceneWindow implements Display {
+
+    /** The window's keys and mouse, as its panel shows them before a pixel is selected (and the README's table). */
+    static final String HELP = String.join("\n",
+            "rtd's window: click a pixel to see what rtd does for it.",
+            "",
+            "  drag        orbit around what the centre pixel sees",
+            "  right drag  pan (or Shift + drag)",
+            "  wheel       zoom",
+            "  click       explain the pixel, its rays over the picture",
+            "  1 to 5      picture, cost, depth, normal, id (V: next)",
+            "  R           the file's camera again",
+            "  C           copy the camera as a scene line",
+            "  P           play the clock, 0 to 1 in 5 s, or pause",
+            "  Ctrl+S      save the picture as NAME-window.png",
+            "  Esc         no pixel selected",
+            "  Q           quit",
+            "",
+            "Saving the scene file renders it again. A scene that uses clock",
+            "has a clock slider above this panel.",
+            "");
 
     /** The side panel's width in screen pixels. */
     private static final int SIDE_WIDTH = 460;
@@ -130,8 +150,8 @@ final class SceneWindow implements Display {
     }
 
     /**
-     * The picture's size on the screen: its own, or scaled down to fit the screen beside the side panel (nine
-     * tenths of it, for the window's frame and status line); a click still selects a pixel of the picture.
+     * The picture's size on the screen: its own, or scaled down to fit the screen beside the side panel (nine tenths of
+     * it, for the window's frame and status line); a click still selects a pixel of the picture.
      */
     private static Dimension fitted(int width, int height) {
         Rectangle screen = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();

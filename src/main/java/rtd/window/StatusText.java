@@ -3,8 +3,8 @@ package rtd.window;
 import java.util.Locale;
 
 /**
- * The window's status line: the last frame's render time, its rays per second, the picture's size and the
- * pixel under the mouse, with what the picture shows (and at which clock) and how coarse it is still.
+ * The window's status line: the last frame's render time, its rays per second, the picture's size and the pixel under
+ * the mouse, with what the picture shows (and at which clock) and how coarse it is still.
  */
 final class StatusText {
 

@@ -7,17 +7,15 @@ import java.io.IOException;
 import java.lang.reflect.InvocationTargetException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
 
 /**
- * {@code --window}: opens a window on a scene and waits until it is closed. The picture renders coarse at once
- * and is refined on all cores; the mouse orbits, pans and zooms the camera; a click explains a pixel as
- * {@code --explain} does, with its rays drawn over the picture; keys switch to the debug views of
- * {@code --view}; saving the scene file renders it again, as {@code --watch}; a scene that uses {@code clock} has a
- * clock slider and a play key.
+ * {@code --window}: opens a window on a scene and waits until it is closed. The picture renders coarse at once and is
+ * refined on all cores; the mouse orbits, pans and zooms the camera; a click explains a pixel as {@code --explain}
+ * does, with its rays drawn over the picture; keys switch to the debug views of {@code --view}; saving the scene file
+ * renders it again, as {@code --watch}; a scene that uses {@code clock} has a clock slider and a play key.
  */
 public final class Window {
 
@@ -35,8 +33,8 @@ public final class Window {
 
     /**
      * Why no window can open here, in a few words ("DISPLAY is not set"), or null if one can: Java runs headless
-     * without a display, and a display that cannot be reached fails when the first window would open. Where one
-     * cannot, {@link #open} throws {@link NoDisplay}.
+     * without a display, and a display that cannot be reached fails when the first window would open. Where one cannot,
+     * {@link #open} throws {@link NoDisplay}.
      */
     public static String missingDisplay() {
         String display = System.getenv("DISPLAY");
@@ -52,8 +50,8 @@ public final class Window {
     }
 
     /**
-     * Reads the scene, opens its window and returns once it is closed. A scene with mistakes opens no window: they
-     * are thrown, as for {@code -o}.
+     * Reads the scene, opens its window and returns once it is closed. A scene with mistakes opens no window: they are
+     * thrown, as for {@code -o}.
      */
     public static void open(WindowSetup setup) throws SceneException, IOException, NoDisplay {
         String missing = missingDisplay();
@@ -102,27 +100,22 @@ public final class Window {
     }
 
     /**
-     * The scene file was saved: read it (and its meshes) on the watcher's thread, hand it to the window's, which
-     * parses it at the clock it shows.
+     * The scene file was saved: read it (and its meshes) on the watcher's thread, and hand it to the window's, which
+     * parses it at the clock it shows; a file that cannot be read is a mistake, and the last good picture stays.
      */
     private static void reload(WindowSetup setup, SceneWindow window) {
-        Consumer<WindowSession> reloaded = read(setup);
-        SwingUtilities.invokeLater(() -> reloaded.accept(window.session()));
-    }
-
-    /** What the session is to be told of the file as it is now: read, or unreadable. */
-    private static Consumer<WindowSession> read(WindowSetup setup) {
         ClockedScene source;
         try {
             source = setup.loader().read();
         } catch (IOException e) {
-            return session -> session.mistake("rtd: " + e.getMessage() + "\n", ""); // the last good picture stays
+            SwingUtilities.invokeLater(() -> window.session().mistake("rtd: " + e.getMessage() + "\n", ""));
+            return;
         }
         try {
             source.at(setup.clock()); // its meshes are read here, off the window's thread, and kept for every clock
         } catch (SceneException e) {
             // the window parses the file again at its own clock and shows the mistakes it finds there
         }
-        return session -> session.reloaded(source);
+        SwingUtilities.invokeLater(() -> window.session().reloaded(source));
     }
 }

@@ -1,19 +1,22 @@
 package rtd.window;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import rtd.camera.ICamera;
 import rtd.io.SceneException;
 import rtd.math.Vector3f;
+import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.view.View;
 
 /**
- * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}),
- * the view, the selected pixel, and the renders. It lives on the window's thread (Swing's event thread,
- * {@code ui}); renders run on the {@link RenderLoop}, explanations and saves on a thread of their own
- * ({@link SideJobs}), and what they find comes back through {@code ui} to the {@link Display}.
+ * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}), the
+ * view, the selected pixel, and the renders. It lives on the window's thread (Swing's event thread, {@code ui});
+ * renders run on the {@link RenderLoop}, explanations and saves on a thread of their own ({@link SideJobs}), and what
+ * they find comes back through {@code ui} to the {@link Display}.
  */
 final class WindowSession implements AutoCloseable {
 
@@ -42,7 +45,9 @@ final class WindowSession implements AutoCloseable {
     private Refinement nextMoving = Refinement.MOVING;
     /** Whether the panel is to show the view's scale once its full picture is drawn. */
     private boolean legendWanted;
-    private final AnyCameraTracers anyCamera;
+    /** The tracers for any camera of {@link #tracedScene}, built again only for another scene, on the render thread. */
+    private Scene tracedScene;
+    private Supplier<Tracer> anyCamera;
 
     /** A session on {@code scene}, which is {@code source} parsed at {@code setup}'s clock. */
     WindowSession(WindowSetup setup, ClockedScene source, Scene scene, Display display, Executor ui) {
@@ -52,7 +57,6 @@ final class WindowSession implements AutoCloseable {
         this.renderer = new FrameRenderer(setup.engine());
         this.renders = new RenderLoop(e -> ui.execute(() -> display.panel("rtd: internal error while rendering: " + e
                 + ". This is a bug in rtd; please report it with the scene.")));
-        this.anyCamera = new AnyCameraTracers(setup);
         this.jobs = new SideJobs(ui);
         this.clock = new ClockControl(this, display, source, setup.clock());
         this.file = scene;
@@ -61,7 +65,7 @@ final class WindowSession implements AutoCloseable {
 
     /** The first picture, coarse at once, then refined. */
     void start() {
-        display.panel(Keys.HELP);
+        display.panel(SceneWindow.HELP);
         clock.showSlider();
         render(Refinement.STILL);
     }
@@ -75,7 +79,6 @@ final class WindowSession implements AutoCloseable {
         return camera;
     }
 
-    /** The clock: its slider and play key. */
     ClockControl clock() {
         return clock;
     }
@@ -88,14 +91,21 @@ final class WindowSession implements AutoCloseable {
     /** Renders the scene as it is now in {@code refinement}'s passes, cancelling a still render in progress. */
     void render(Refinement refinement) {
         long frame = ++generation;
-        Scene scene = scene();
         Scene objects = file;
-        FrameRenderer.Frame request = new FrameRenderer.Frame(scene, view, setup.width(), setup.height(),
+        FrameRenderer.Frame request = new FrameRenderer.Frame(scene(), view, setup.width(), setup.height(),
                 setup.samples(), setup.threads(), refinement);
         boolean moving = !refinement.endsFull();
         Consumer<FrameRenderer.Pass> listener = pass -> ui.execute(() -> show(frame, pass, moving));
-        renders.submit(() -> renderer.render(request, anyCamera.of(objects), new ProgressiveBuffer(setup.width(),
+        renders.submit(() -> renderer.render(request, anyCamera(objects), new ProgressiveBuffer(setup.width(),
                 setup.height()), listener), !moving);
+    }
+
+    private Supplier<Tracer> anyCamera(Scene objects) {
+        if (tracedScene != objects) {
+            anyCamera = setup.engine().forAnyCamera(objects, setup.width(), setup.height());
+            tracedScene = objects;
+        }
+        return anyCamera;
     }
 
     private void show(long frame, FrameRenderer.Pass pass, boolean moving) {
@@ -122,7 +132,6 @@ final class WindowSession implements AutoCloseable {
         }
     }
 
-    /** The pixel under the mouse, or null, for the status line. */
     void mouseAt(int[] pixel) {
         underMouse = pixel;
         status();
@@ -192,17 +201,16 @@ final class WindowSession implements AutoCloseable {
     void deselect() {
         selected = null;
         display.rays(List.of());
-        display.panel(Keys.HELP);
+        display.panel(SceneWindow.HELP);
     }
 
     private void explainSelected() {
         if (selected == null) {
             return;
         }
-        int x = selected[0];
-        int y = selected[1];
-        jobs.explain(scene(), setup.scene(), x, y, setup.width(), setup.height(), (text, lines) -> {
-            if (selected != null && selected[0] == x && selected[1] == y) {
+        int[] pixel = selected;
+        jobs.explain(scene(), setup.scene(), pixel[0], pixel[1], setup.width(), setup.height(), (text, lines) -> {
+            if (Arrays.equals(selected, pixel)) {
                 display.panel(text);
                 display.rays(lines);
             }
@@ -226,10 +234,7 @@ final class WindowSession implements AutoCloseable {
         jobs.save(shown.picture(), setup.savedPicture(), display::panel);
     }
 
-    /**
-     * The scene file was saved ({@code read}): it is parsed at the clock shown, or its mistakes are shown while the
-     * last good picture stays. The window's camera stays unless the file's changed.
-     */
+    /** The file saved again: parsed at the clock shown, or its mistakes shown; the file's camera if it changed. */
     void reloaded(ClockedScene read) {
         Scene scene;
         try {
@@ -246,10 +251,7 @@ final class WindowSession implements AutoCloseable {
         panelAgain();
     }
 
-    /**
-     * The scene at a new clock: the window's camera follows the file's if the user has not moved it (an orbiting
-     * camera orbits); a frame at the moving resolution, or the full picture once the clock rests ({@code full}).
-     */
+    /** The scene at a new clock, the camera following the file's if the user has not moved it; {@code full} at rest. */
     void atClock(Scene scene, boolean full) {
         if (sameCamera(camera.camera(), file.camera())) {
             camera = new CameraController(scene.camera()); // not moved by the user: it follows the file's
@@ -282,7 +284,7 @@ final class WindowSession implements AutoCloseable {
         if (selected != null) {
             explainSelected();
         } else {
-            display.panel(Keys.HELP);
+            display.panel(SceneWindow.HELP);
         }
     }
 

@@ -1,10 +1,11 @@
 package rtd.window;
 
+import java.io.IOException;
 import java.nio.file.Path;
 
 /**
- * What the command line gives the window: the scene file, how to read it and watch it, what to trace with, and
- * the picture's size, samples and threads as {@code -o} would render it.
+ * What the command line gives the window: the scene file, how to read it and watch it, what to trace with, and the
+ * picture's size, samples and threads as {@code -o} would render it.
  *
  * @param scene   the scene file, as the user spelt it
  * @param loader  reads it
@@ -18,6 +19,17 @@ import java.nio.file.Path;
  */
 public record WindowSetup(Path scene, SceneLoader loader, FileWatch watch, Engine engine, int width, int height,
         int samples, int threads, double clock) {
+
+    /** Reads the window's scene file, as the command line reads it; again after each save. */
+    @FunctionalInterface
+    public interface SceneLoader {
+
+        /**
+         * The scene file as it is now, read once, to be parsed at any clock; a file that cannot be read throws an
+         * {@link IOException} whose message says so for people ("cannot read the scene file '…': …").
+         */
+        ClockedScene read() throws IOException;
+    }
 
     /** Where {@code Ctrl+S} saves: beside the scene, its name with {@code -window.png} for its extension. */
     Path savedPicture() {

@@ -23,7 +23,7 @@ final class SessionHarness implements AutoCloseable {
     /** A session on the scene file {@code file} at {@code width × height}, started at {@code clock}. */
     static SessionHarness open(Path file, int width, int height, double clock) throws Exception {
         SessionHarness harness = new SessionHarness();
-        SceneLoader loader = () -> new ClockedScene(SceneFile.read(file), scene -> scene);
+        WindowSetup.SceneLoader loader = () -> new ClockedScene(SceneFile.read(file), scene -> scene);
         WindowSetup setup = new WindowSetup(file, loader, changed -> () -> { }, WindowOptions.engine("auto", 2),
                 width, height, 1, 2, clock);
         ClockedScene source = loader.read();

@@ -112,7 +112,7 @@ class WindowClockTest {
         assertThat(window.on(() -> window.session.shown().picture().rgb())).isEqualTo(before.rgb());
 
         window.run(() -> window.session.clock().rested(0.25));
-        assertThat(window.on(() -> window.display.panel)).isEqualTo(Keys.HELP);
+        assertThat(window.on(() -> window.display.panel)).isEqualTo(SceneWindow.HELP);
         int[] smaller = picture(scene, "0.25");
         window.awaitTrue(() -> Arrays.equals(window.session.shown().picture().rgb(), smaller));
     }

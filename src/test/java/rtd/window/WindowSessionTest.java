@@ -39,7 +39,7 @@ class WindowSessionTest {
         assertThat(window.on(() -> window.display.rays)).isNotEmpty();
         window.run(() -> window.session.deselect());
         assertThat(window.on(() -> window.display.rays)).isEmpty();
-        assertThat(window.on(() -> window.display.panel)).isEqualTo(Keys.HELP);
+        assertThat(window.on(() -> window.display.panel)).isEqualTo(SceneWindow.HELP);
     }
 
     @Test
