@@ -9,12 +9,10 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Collectors;
 import picocli.CommandLine;
 import rtd.io.ImageFormat;
-import rtd.view.View;
 
 /**
  * Where each scene's picture goes and in which format, and where {@code --view} and {@code --export-pov} write, all
@@ -66,39 +64,6 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
                 + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; give it one of "
                 + ImageFormat.writableExtensions().stream().map(e -> "." + e).collect(Collectors.joining(", ")));
         return format;
-    }
-
-    /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
-    static OutputTarget viewTarget(View view, RenderOptions options, CommandLine commandLine) throws FileError {
-        Path byDefault = defaultOutput(options.scene(), "-" + view);
-        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--view writes its picture to a file; "
-                + "-o - (standard output) is for the rendered picture only: give a file name, such as "
-                + byDefault.getFileName());
-        OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
-                "-o", commandLine);
-        format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
-        return target;
-    }
-
-    /** Where {@code --export-pov} goes, as {@code -o}, but only to a .pov name, also behind a link. */
-    static OutputTarget exportTarget(Path file, Path scene, CommandLine commandLine) throws FileError {
-        String name = file.getFileName() == null ? "" : file.getFileName().toString();
-        RtdCommand.refuse(commandLine, file.toString().equals("-"), "--export-pov writes a file, not standard output "
-                + "('-'); give a name that ends in .pov, such as scene.pov");
-        RtdCommand.refuse(commandLine, name.indexOf('"') >= 0, "--export-pov '" + file + "': a name with a double "
-                + "quote cannot be given to POV-Ray; choose one without"); // the folder is cd's
-        String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
-        RtdCommand.refuse(commandLine, !endsInPov(file), "--export-pov writes a POV-Ray scene, and its name must end in "
-                + ".pov; '" + file + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
-        OutputTarget target = OutputTarget.of(file, scene, "--export-pov", commandLine);
-        RtdCommand.refuse(commandLine, target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
-                + file + "' leads to '" + target.file() + "', whose name does not end in .pov; --export-pov replaces "
-                + "only a POV-Ray scene");
-        return target;
-    }
-
-    private static boolean endsInPov(Path file) {
-        return file.getFileName() != null && file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pov");
     }
 
     /** Where the picture goes: {@code -o}, or the scene's name with {@code .png}. */

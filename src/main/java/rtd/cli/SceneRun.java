@@ -10,7 +10,6 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
-import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
@@ -25,15 +24,11 @@ import rtd.scene.Scene;
 import rtd.scene.SceneWarnings;
 import rtd.shade.FlatShader;
 import rtd.shade.WhittedShader;
-import rtd.view.View;
-import rtd.view.ViewPicture;
-import rtd.view.ViewShader;
 
 /**
  * One scene from file to picture: read, write the {@code --export-pov} file if asked, build what {@code --accel}
  * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
- * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete. Also
- * {@code --view}, which draws what the rays did instead.
+ * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete.
  *
  * @param kept what one frame built that the next may use again
  */
@@ -96,34 +91,6 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             stats.endPhase("export");
         }
         return scene;
-    }
-
-    /**
-     * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
-     * paper's loop or what {@code --accel} chose, all threads), written to {@code target} as a picture is, with its
-     * scale on standard error; the exit code, 0.
-     */
-    static int view(Scene scene, View view, OutputTarget target, RenderOptions options, StatsReport stats,
-            PrintWriter err, CommandLine commandLine) throws FileError {
-        if (options.samples() > 1) {
-            err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
-        }
-        Accelerator accelerator = Accelerator.of(scene, options.engine(), options.width(), options.height(), 1,
-                options.threads());
-        stats.endPhase("build");
-        ViewShader shader = new ViewShader(view, scene.objects());
-        RenderResult raw = ParallelRenderer.render(scene.camera(), accelerator.tracers(), tracer -> shader,
-                options.width(), options.height(), 1, options.threads(), new RenderProgress());
-        stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
-        ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
-        target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
-        err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
-        stats.endPhase("write");
-        if (options.stats()) { // a view runs on every thread, also the paper's loop
-            err.print(stats.format(scene, accelerator, raw.work(), options.threads(), target.spelt()));
-            err.flush();
-        }
-        return 0;
     }
 
     /**

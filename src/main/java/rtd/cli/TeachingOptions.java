@@ -4,14 +4,20 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
 import rtd.explain.PixelExplanation;
 import rtd.io.SceneException;
+import rtd.render.ParallelRenderer;
+import rtd.render.RenderProgress;
+import rtd.render.RenderResult;
 import rtd.scene.Scene;
 import rtd.view.View;
+import rtd.view.ViewPicture;
+import rtd.view.ViewShader;
 
 /**
  * The teaching options, a picocli mixin of {@link RtdCommand}: {@code --explain X,Y} prints what rtd does for one
@@ -78,7 +84,7 @@ public final class TeachingOptions {
             refused = e;
         }
         try {
-            viewTarget = pixel == null ? JobPlanner.viewTarget(view, options, commandLine) : null;
+            viewTarget = pixel == null ? viewTarget(options, commandLine) : null;
         } catch (FileError e) {
             refused = refused == null ? e : refused;
         }
@@ -95,7 +101,7 @@ public final class TeachingOptions {
         Scene scene = SceneRun.read(SceneSource.of(options.scene()), null, options, povTarget,
                 ProgressDisplay.start(false, err), stats);
         if (pixel == null) {
-            return SceneRun.view(scene, view, viewTarget, options, stats, err, commandLine);
+            return view(scene, viewTarget, options, stats, err, commandLine);
         }
         if (options.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
             err.println("rtd: note: --paper draws as the paper does, in flat colours: the scene's lights are not used, "
@@ -111,9 +117,69 @@ public final class TeachingOptions {
         return watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : null;
     }
 
-    /** Where {@code --export-pov} goes, planned before anything is read or written; null without it. */
+    /** Where {@code --export-pov} goes, as {@code -o}, but only to a .pov name, also behind a link; null without it. */
     OutputTarget planExport(RenderOptions options, CommandLine commandLine) throws FileError {
-        return exportPov == null ? null : JobPlanner.exportTarget(exportPov, options.scene(), commandLine);
+        if (exportPov == null) {
+            return null;
+        }
+        String name = exportPov.getFileName() == null ? "" : exportPov.getFileName().toString();
+        RtdCommand.refuse(commandLine, exportPov.toString().equals("-"), "--export-pov writes a file, not standard "
+                + "output ('-'); give a name that ends in .pov, such as scene.pov");
+        RtdCommand.refuse(commandLine, name.indexOf('"') >= 0, "--export-pov '" + exportPov + "': a name with a double "
+                + "quote cannot be given to POV-Ray; choose one without"); // the folder is cd's
+        String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
+        RtdCommand.refuse(commandLine, !endsInPov(exportPov), "--export-pov writes a POV-Ray scene, and its name must "
+                + "end in .pov; '" + exportPov + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base)
+                + ".pov");
+        OutputTarget target = OutputTarget.of(exportPov, options.scene(), "--export-pov", commandLine);
+        RtdCommand.refuse(commandLine, target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
+                + exportPov + "' leads to '" + target.file() + "', whose name does not end in .pov; --export-pov "
+                + "replaces only a POV-Ray scene");
+        return target;
+    }
+
+    private static boolean endsInPov(Path file) {
+        return file.getFileName() != null && file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".pov");
+    }
+
+    /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
+    private OutputTarget viewTarget(RenderOptions options, CommandLine commandLine) throws FileError {
+        Path byDefault = JobPlanner.defaultOutput(options.scene(), "-" + view);
+        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--view writes its picture to a file; "
+                + "-o - (standard output) is for the rendered picture only: give a file name, such as "
+                + byDefault.getFileName());
+        OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
+                "-o", commandLine);
+        JobPlanner.format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
+        return target;
+    }
+
+    /**
+     * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
+     * paper's loop or what {@code --accel} chose, all threads), written to {@code target} as a picture is, with its
+     * scale on standard error; the exit code, 0.
+     */
+    private int view(Scene scene, OutputTarget target, RenderOptions options, StatsReport stats, PrintWriter err,
+            CommandLine commandLine) throws FileError {
+        if (options.samples() > 1) {
+            err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
+        }
+        Accelerator accelerator = Accelerator.of(scene, options.engine(), options.width(), options.height(), 1,
+                options.threads());
+        stats.endPhase("build");
+        ViewShader shader = new ViewShader(view, scene.objects());
+        RenderResult raw = ParallelRenderer.render(scene.camera(), accelerator.tracers(), tracer -> shader,
+                options.width(), options.height(), 1, options.threads(), new RenderProgress());
+        stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
+        ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
+        target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
+        err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
+        stats.endPhase("write");
+        if (options.stats()) { // a view runs on every thread, also the paper's loop
+            err.print(stats.format(scene, accelerator, raw.work(), options.threads(), target.spelt()));
+            err.flush();
+        }
+        return 0;
     }
 
     /** The pixel of {@code --explain X,Y} in the picture; a misuse (exit 2) that names the image's size if none. */

@@ -10,7 +10,6 @@ import rtd.accel.Bvh;
 import rtd.accel.LightGrids;
 import rtd.accel.ViewGrid;
 import rtd.io.SceneException;
-import rtd.render.LinearTracer;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.window.ClockedScene;
@@ -125,13 +124,11 @@ public final class WindowOptions {
             @Override
             public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
                 Accelerator.Kind kind = Accelerator.choose(scene, accel);
-                if (kind == Accelerator.Kind.LOOP) {
-                    return () -> new LinearTracer(scene);
+                if (kind != Accelerator.Kind.GRID_AND_BVH) { // the picture's view grid comes in forPicture
+                    return Accelerator.build(kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH, scene, width,
+                            height, 1, threads, kept).tracers();
                 }
                 Bvh bvh = kept.bvh(scene);
-                if (kind != Accelerator.Kind.GRID_AND_BVH) {
-                    return bvh::newTracer;
-                }
                 LightGrids lights = kept.lightGrids(scene, width, height, 1, threads);
                 return () -> lights.newTracer(bvh.newTracer());
             }
