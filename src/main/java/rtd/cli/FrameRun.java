@@ -134,9 +134,7 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
 
         /** Writes frame {@code i}, once fewer frames than there are writers wait to be written. */
         void write(int i, Picture picture) throws FileError {
-            while (pending.size() >= writers) {
-                waitFor(pending.removeFirst());
-            }
+            waitUntilPending(writers - 1);
             pending.addLast(threads.submit(() -> {
                 if (gifTarget == null) {
                     targets.get(i - plan.first()).write(picture, format, streams.out(), f -> { });
@@ -149,18 +147,16 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                                 : AnimatedGif.replacing(gifTarget.file(), plan.delayHundredths());
                     }
                     gif.add(picture);
+                    return null;
                 } catch (IOException e) {
                     throw new FileError("cannot write '" + gifTarget.spelt() + "'", e);
                 }
-                return null;
             }));
         }
 
         /** Waits for the last frame, and ends the GIF. */
         void finish() throws FileError {
-            while (!pending.isEmpty()) {
-                waitFor(pending.removeFirst());
-            }
+            waitUntilPending(0);
             try {
                 if (gif != null) {
                     gif.finish();
@@ -180,17 +176,20 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                     : targets.size() + " frames, " + targets.get(0).spelt() + " to " + targets.get(targets.size() - 1).spelt();
         }
 
-        private void waitFor(Future<?> frame) throws FileError {
-            try {
-                frame.get();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new FileError("interrupted while writing the frames");
-            } catch (ExecutionException e) {
-                if (e.getCause() instanceof FileError error) {
-                    throw error;
+        /** Waits, oldest first, until at most {@code most} frames wait to be written. */
+        private void waitUntilPending(int most) throws FileError {
+            while (pending.size() > most) {
+                try {
+                    pending.removeFirst().get();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw new FileError("interrupted while writing the frames");
+                } catch (ExecutionException e) {
+                    if (e.getCause() instanceof FileError error) {
+                        throw error;
+                    }
+                    throw e.getCause() instanceof RuntimeException runtime ? runtime : new IllegalStateException(e.getCause());
                 }
-                throw e.getCause() instanceof RuntimeException runtime ? runtime : new IllegalStateException(e.getCause());
             }
         }
 
