@@ -229,7 +229,7 @@ final class SceneWindow implements Display {
             clockBar.setVisible(false);
             return;
         }
-        clockLabel.setText(StatusText.clock(clock));
+        clockLabel.setText(ClockControl.label(clock));
         settingSlider = true;
         slider.setValue((int) Math.round(Math.max(0, Math.min(1, clock)) * SLIDER_STEPS));
         settingSlider = false;

@@ -11,6 +11,7 @@ import rtd.math.Vector3f;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.view.View;
+import rtd.window.FrameRenderer.Refinement;
 
 /**
  * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}), the
@@ -96,8 +97,7 @@ final class WindowSession implements AutoCloseable {
                 setup.samples(), setup.threads(), refinement);
         boolean moving = !refinement.endsFull();
         Consumer<FrameRenderer.Pass> listener = pass -> ui.execute(() -> show(frame, pass, moving));
-        renders.submit(() -> renderer.render(request, anyCamera(objects), new ProgressiveBuffer(setup.width(),
-                setup.height()), listener), !moving);
+        renders.submit(() -> renderer.render(request, anyCamera(objects), listener), !moving);
     }
 
     private Supplier<Tracer> anyCamera(Scene objects) {
@@ -127,8 +127,8 @@ final class WindowSession implements AutoCloseable {
 
     void status() {
         if (shown != null) {
-            display.status(StatusText.of(setup.width(), setup.height(), shown.nanos(), shown.rays(), shown.block(),
-                    underMouse, (view == null ? "picture" : view.name()) + clock.status()));
+            display.status(shown.status(setup.width(), setup.height(), underMouse,
+                    (view == null ? "picture" : view.name()) + clock.status()));
         }
     }
 
