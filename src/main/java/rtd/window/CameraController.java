@@ -103,7 +103,6 @@ final class CameraController {
         moved = true;
     }
 
-    /** World units per pixel at {@code pivot}'s depth. */
     private double worldPerPixel(Vector3f pivot, int width) {
         if (original instanceof PerspectiveCamera perspective) {
             return depth(pivot) / perspective.focalLength(width);

@@ -18,7 +18,6 @@ final class Pivot {
     private Pivot() {
     }
 
-    /** The pivot of {@code scene}'s {@code width × height} picture. */
     static Vector3f of(Scene scene, int width, int height) {
         Ray centre = scene.camera().generateRay(width / 2, height / 2, width, height);
         Hit hit = scene.nearestHit(centre);

@@ -160,7 +160,6 @@ final class SceneWindow implements Display {
         return new Dimension(Math.max(1, (int) (width * scale)), Math.max(1, (int) (height * scale)));
     }
 
-    /** Shows the window and starts the first render. */
     void open() {
         frame.setVisible(true);
         picture.requestFocusInWindow();

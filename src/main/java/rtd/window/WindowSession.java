@@ -64,7 +64,6 @@ final class WindowSession implements AutoCloseable {
         this.camera = new CameraController(scene.camera());
     }
 
-    /** The first picture, coarse at once, then refined. */
     void start() {
         display.panel(SceneWindow.HELP);
         clock.showSlider();
@@ -84,7 +83,6 @@ final class WindowSession implements AutoCloseable {
         return clock;
     }
 
-    /** The last pass shown, or null. */
     FrameRenderer.Pass shown() {
         return shown;
     }
@@ -137,7 +135,6 @@ final class WindowSession implements AutoCloseable {
         status();
     }
 
-    /** The point to orbit around and pan at ({@link Pivot}). */
     Vector3f pivot() {
         return Pivot.of(scene(), setup.width(), setup.height());
     }
