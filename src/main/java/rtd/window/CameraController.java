@@ -29,11 +29,8 @@ final class CameraController {
     private double zoom;
     private boolean moved;
 
+    /** A controller on {@code original}, one of rtd's two cameras: a scene file makes no other. */
     CameraController(ICamera original) {
-        if (!(original instanceof OrthographicCamera) && !(original instanceof PerspectiveCamera)) {
-            throw new IllegalArgumentException("the window moves rtd's two cameras only, not a "
-                    + original.getClass().getSimpleName());
-        }
         this.original = original;
         position = Vec3.of(original.position());
         direction = Vec3.of(original instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) original)
