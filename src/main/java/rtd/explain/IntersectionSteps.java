@@ -33,7 +33,6 @@ final class IntersectionSteps implements TestObserver {
     private final Text text;
     /** The shape whose test is told: the object, or once the ray is in its space, the shape it transforms. */
     private IGeometry shape;
-    /** Whether this class knows {@link #shape}'s steps. */
     private boolean known;
     /** The transformations the ray has been taken through: each indents the steps of what it holds. */
     private int transforms;
@@ -47,7 +46,7 @@ final class IntersectionSteps implements TestObserver {
         this.text = text;
     }
 
-    /** Runs the test of {@code object}, writing it into {@code text}, its first line after {@code head}; returns its t (NaN: no hit). */
+    /** Runs {@code object}'s test into {@code text}, its first line after {@code head}; returns its t (NaN: no hit). */
     static float explain(Text text, String head, IGeometry object, Ray ray) {
         IntersectionSteps steps = new IntersectionSteps(text);
         steps.start(head, object);
@@ -105,7 +104,8 @@ final class IntersectionSteps implements TestObserver {
         } else if (shape instanceof Triangle && pointFound && !outside) {
             text.line("P lies inside the triangle (or on an edge): a hit at t = " + Numbers.of(t));
         } else if (!known) {
-            text.hanging(head + shape.kind() + ": its test gives t = " + Numbers.of(t) + (t >= 0 ? ": a hit" : ": no hit"));
+            text.hanging(head + shape.kind() + ": its test gives t = " + Numbers.of(t)
+                    + (t >= 0 ? ": a hit" : ": no hit"));
         }
         for (; transforms > 0; transforms--) {
             text.out();
@@ -184,9 +184,11 @@ final class IntersectionSteps implements TestObserver {
             text.line("R·n = 0: the ray runs parallel to the plane, no hit");
             return;
         }
-        String verdict = t == Float.POSITIVE_INFINITY ? ": the ray runs so nearly parallel that it never meets it, no hit"
+        String verdict = t == Float.POSITIVE_INFINITY
+                ? ": the ray runs so nearly parallel that it never meets it, no hit"
                 : t >= 0 ? " ≥ 0: a hit" : ": the plane lies behind O, no hit";
-        text.line("t = ((Q − O)·n) / (R·n) = " + Numbers.of(along) + " / " + Numbers.of(facing) + " = " + Numbers.of(t) + verdict);
+        text.line("t = ((Q − O)·n) / (R·n) = " + Numbers.of(along) + " / " + Numbers.of(facing) + " = " + Numbers.of(t)
+                + verdict);
     }
 
     @Override
@@ -227,8 +229,8 @@ final class IntersectionSteps implements TestObserver {
     public void slabs(float enter, float exit) {
         this.enter = enter;
         this.exit = exit;
-        text.line("in all three slabs: t from " + Numbers.of(enter) + " (enter, the largest start) to " + Numbers.of(exit)
-                + " (exit, the smallest end)");
+        text.line("in all three slabs: t from " + Numbers.of(enter) + " (enter, the largest start) to "
+                + Numbers.of(exit) + " (exit, the smallest end)");
     }
 
     private void boxVerdict(float t) {
@@ -236,12 +238,14 @@ final class IntersectionSteps implements TestObserver {
             return; // a parallel slab the ray is outside of: already said
         }
         if (enter > exit || exit < 0) {
-            text.line(enter > exit ? "enter > exit: the intervals do not overlap, no hit" : "exit < 0: the box lies behind O, no hit");
+            text.line(enter > exit ? "enter > exit: the intervals do not overlap, no hit"
+                    : "exit < 0: the box lies behind O, no hit");
         } else if (!(t >= 0)) {
             text.line("t = " + Numbers.of(enter >= 0 ? enter : exit)
                     + " is not finite: the ray's direction is too short to reach the box, no hit");
         } else {
-            text.line(enter >= 0 ? "t = enter = " + Numbers.of(t) + ": a hit" : "enter < 0: O is inside, t = exit = " + Numbers.of(t) + ": a hit");
+            String which = enter >= 0 ? "t = enter = " : "enter < 0: O is inside, t = exit = ";
+            text.line(which + Numbers.of(t) + ": a hit");
         }
     }
 
@@ -249,7 +253,8 @@ final class IntersectionSteps implements TestObserver {
     @Override
     public void side(float t0, float a, float b, float c, float discriminant) {
         String[] formulas = shape instanceof Cone ? CONE_SIDE : CYLINDER_SIDE;
-        text.line("side, from O' = O + t0·R nearest the axis's middle M, t0 = (M − O)·R/(R·R) = " + Numbers.of(t0) + ":");
+        text.line("side, from O' = O + t0·R nearest the axis's middle M, t0 = (M − O)·R/(R·R) = " + Numbers.of(t0)
+                + ":");
         text.line("  a·t'² + b·t' + c = 0 with w = O' − A, h the unit axis, and t = t0 + t'");
         text.line("  a = " + formulas[0] + " = " + Numbers.of(a));
         text.line("  b = " + formulas[1] + " = " + Numbers.of(b));

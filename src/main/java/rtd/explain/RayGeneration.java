@@ -33,7 +33,8 @@ final class RayGeneration {
                     + " = " + Numbers.of(ray.origin()) + "   (zoom " + Numbers.of(zoom) + ")");
             text.line(orthographic.target() == null ? "R = dir, as the scene file gives it = " + Numbers.of(ray.direction())
                     : "R = dir = at − pos = " + lookAt(orthographic.target(), orthographic.position(), ray.direction()));
-        } else if (camera instanceof PerspectiveCamera perspective) {
+        } else { // the only other camera a scene file makes
+            PerspectiveCamera perspective = (PerspectiveCamera) camera;
             text.line("1. Ray generation (section 3.2.1; rtd's perspective camera: PerspectiveCamera.generateRay)").in();
             offsets(text, x, y, w, h, offsetX, offsetY);
             if (perspective.target() != null) {
@@ -46,10 +47,6 @@ final class RayGeneration {
             text.line("O = pos = " + Numbers.of(ray.origin()));
             text.line("R = normalize(dir)·f + u·x' + v·y' = " + Numbers.of(perspective.direction().normalize()) + "·"
                     + Numbers.of(f) + " + u·" + offsetX + " + v·" + offsetY + " = " + Numbers.of(ray.direction()));
-        } else {
-            text.line("1. Ray generation (section 3.2.1: " + camera.getClass().getSimpleName() + ".generateRay)").in();
-            text.line("O = " + Numbers.of(ray.origin()));
-            text.line("R = " + Numbers.of(ray.direction()));
         }
         text.out();
     }

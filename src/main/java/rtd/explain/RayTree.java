@@ -26,7 +26,6 @@ import rtd.shade.WhittedShader;
  */
 public record RayTree(List<Segment> segments) {
 
-    /** What a segment of the tree is. */
     public enum Kind {
         CAMERA, REFLECTED, REFRACTED, SHADOW_LIT, SHADOW_BLOCKED
     }

@@ -44,18 +44,16 @@ final class PovCamera {
                     + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
                     + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + lookAt + "\n}\n";
         }
-        if (camera instanceof PerspectiveCamera perspective) {
-            double f = w / 2.0 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2);
-            double[] forward = d(perspective.direction().normalize());
-            double[] direction = plus(plus(times(forward, f), times(d(perspective.widthVector()), shiftX)),
-                    times(d(perspective.heightVector()), shiftY));
-            String lookAt = perspective.target() == null ? "" : "\n  // look_at " + vector(d(perspective.target()))
-                    + ", written out: POV-Ray's look_at would undo the half-pixel shift in direction";
-            return "camera {\n  perspective\n  location " + vector(d(perspective.position())) + lookAt + "\n  direction "
-                    + vector(direction) + "\n  right " + vector(times(d(perspective.widthVector()), w))
-                    + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
-        }
-        throw new IllegalArgumentException("the export knows the orthographic and the perspective camera only");
+        PerspectiveCamera perspective = (PerspectiveCamera) camera; // the only other camera a scene file makes
+        double f = w / 2.0 / Math.tan(Math.toRadians(perspective.fieldOfView()) / 2);
+        double[] forward = d(perspective.direction().normalize());
+        double[] direction = plus(plus(times(forward, f), times(d(perspective.widthVector()), shiftX)),
+                times(d(perspective.heightVector()), shiftY));
+        String lookAt = perspective.target() == null ? "" : "\n  // look_at " + vector(d(perspective.target()))
+                + ", written out: POV-Ray's look_at would undo the half-pixel shift in direction";
+        return "camera {\n  perspective\n  location " + vector(d(perspective.position())) + lookAt + "\n  direction "
+                + vector(direction) + "\n  right " + vector(times(d(perspective.widthVector()), w))
+                + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
     }
 
     /** The declarations and the camera; {@code camera} is the camera at the reading's clock, for its kind and its fixed numbers. */

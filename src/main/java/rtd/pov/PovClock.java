@@ -110,12 +110,10 @@ public final class PovClock {
         return camera instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) camera).direction();
     }
 
-    /** What the statement that made {@code part} reads with the clock. */
     ClockFields of(Object part) {
         return clocked.of(part);
     }
 
-    /** What {@code ambient} reads with the clock. */
     ClockFields ambient() {
         return clocked.ambient();
     }
@@ -146,26 +144,24 @@ public final class PovClock {
      * (as {@link #vector} writes them).
      */
     static String light(Light light, ClockFields f) {
-        return "light_source { " + vector(f, "position", light.position()) + ", " + rgb(f, "intensity", light.intensity())
-                + " }\n";
+        return "light_source { " + vector(f, "position", light.position()) + ", rgb <"
+                + channels(f, "intensity", light.intensity()) + "> }\n";
     }
 
     /** A shape's colour, as {@code rgb <…>} or, with a share let through ({@code filter > 0}), as {@code rgbt <…>}. */
     static String pigment(ClockFields f, Color colour, float filter) {
-        Rgb c = Rgb.of(colour);
-        String channels = channel(f, "colour", 0, c.red()) + ", " + channel(f, "colour", 1, c.green()) + ", "
-                + channel(f, "colour", 2, c.blue());
+        String channels = channels(f, "colour", Rgb.of(colour));
         return filter <= 0 ? "pigment { rgb <" + channels + "> }" : "pigment { rgbt <" + channels + ", " + num(filter) + "> }";
     }
 
     /** {@code colour} as {@code rgb <…>}, its channels from {@code group} where they use the clock. */
     static String rgb(ClockFields f, String group, Color colour) {
-        return rgb(f, group, Rgb.of(colour));
+        return "rgb <" + channels(f, group, Rgb.of(colour)) + ">";
     }
 
-    private static String rgb(ClockFields f, String group, Rgb c) {
-        return "rgb <" + channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
-                + channel(f, group, 2, c.blue()) + ">";
+    private static String channels(ClockFields f, String group, Rgb c) {
+        return channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
+                + channel(f, group, 2, c.blue());
     }
 
     /** Channel {@code k} of a colour group: rtd rounds an expression ½ up to a whole number, then takes 255ths. */

@@ -3,6 +3,7 @@ package rtd.pov;
 import java.math.BigDecimal;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.stream.Collectors;
 import rtd.io.Expression;
 
 /**
@@ -86,14 +87,9 @@ final class PovExpression {
      */
     static String declarations(Iterable<Expression> expressions) {
         Map<String, Expression.Name> names = new LinkedHashMap<>();
-        for (Expression e : expressions) {
-            collect(e, names);
-        }
-        StringBuilder text = new StringBuilder();
-        for (Expression.Name name : names.values()) {
-            text.append("#declare ").append(identifier(name)).append(" = ").append(of(name.definition())).append(";\n");
-        }
-        return text.toString();
+        expressions.forEach(e -> collect(e, names));
+        return names.values().stream().map(name -> "#declare " + identifier(name) + " = " + of(name.definition()) + ";\n")
+                .collect(Collectors.joining());
     }
 
     /** Adds the names {@code e} uses to {@code names}, each after those its definition uses. */

@@ -110,32 +110,26 @@ public final class RayBundle {
 
     // The square of pixels whose rays these are, for a tracer that knows the camera; only for a camera's square.
 
-    /** The first column of the square. */
     public int left() {
         return left;
     }
 
-    /** The first row of the square. */
     public int top() {
         return top;
     }
 
-    /** The column after the square's last. */
     public int right() {
         return right;
     }
 
-    /** The row after the square's last. */
     public int bottom() {
         return bottom;
     }
 
-    /** The width of the picture. */
     public int width() {
         return width;
     }
 
-    /** The height of the picture. */
     public int height() {
         return height;
     }
@@ -158,7 +152,6 @@ public final class RayBundle {
         return camera.generateRay(x + sampleX, y + sampleY, width, height);
     }
 
-    /** Ray i from {@link #numbers}. */
     private void store(int i) {
         originX[i] = numbers[0];
         originY[i] = numbers[1];
@@ -179,7 +172,6 @@ public final class RayBundle {
         directionZ[i] = direction.z();
     }
 
-    /** The number of rays. */
     public int count() {
         return count;
     }

@@ -61,6 +61,5 @@ public interface Tracer {
         return hit != null && hit.distance() < distance;
     }
 
-    /** The work this tracer has done so far. */
     WorkCount work();
 }

@@ -50,27 +50,19 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
 
     /** The rays the camera made: all rays traced but the secondary ones. */
     public long cameraRays() {
-        long secondary = 0;
-        for (long count : secondaryRays.values()) {
-            secondary += count;
-        }
-        return rays - secondary;
+        return rays - secondaryRays.values().stream().mapToLong(Long::longValue).sum();
     }
 
     private static Map<String, Long> sum(Map<String, Long> a, Map<String, Long> b) {
         Map<String, Long> sum = new TreeMap<>(a);
-        for (Map.Entry<String, Long> entry : b.entrySet()) {
-            sum.put(entry.getKey(), sum.getOrDefault(entry.getKey(), 0L) + entry.getValue());
-        }
+        b.forEach((key, count) -> sum.merge(key, count, Long::sum));
         return sum;
     }
 
     /** One ray's work in the paper's loop: a test of each of {@code objects}, times {@code rays}. */
     public static WorkCount testsOf(List<IGeometry> objects, long rays) {
         Map<String, Long> tests = new TreeMap<>();
-        for (IGeometry object : objects) {
-            tests.put(object.kind(), tests.getOrDefault(object.kind(), 0L) + 1);
-        }
+        objects.forEach(object -> tests.merge(object.kind(), 1L, Long::sum));
         return new WorkCount(1, tests, 0).times(rays);
     }
 
@@ -94,11 +86,7 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
 
     /** Intersection tests of every kind. */
     public long intersectionTests() {
-        long sum = 0;
-        for (long tests : testsByKind.values()) {
-            sum += tests;
-        }
-        return sum;
+        return testsByKind.values().stream().mapToLong(Long::longValue).sum();
     }
 
     /** Intersection tests per ray. */

@@ -5,6 +5,7 @@ import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.stream.IntStream;
 import rtd.geometry.BoundingBox;
 import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
@@ -100,10 +101,8 @@ public final class SceneWarnings {
             return Optional.empty();
         }
         BoundingBox box = objects.get(room).bounds();
-        for (int i = 0; i < objects.size(); i++) {
-            if (i != room && overlap(objects.get(i).bounds(), box)) {
-                return Optional.empty();
-            }
+        if (IntStream.range(0, objects.size()).anyMatch(i -> i != room && overlap(objects.get(i).bounds(), box))) {
+            return Optional.empty();
         }
         return Optional.of("the camera is inside " + describe(objects.get(room), room) + ": every ray starts inside it, "
                 + "so the picture shows its inside" + (shaded ? "" : ", all in one colour") + "; move the camera out of it");
@@ -129,12 +128,7 @@ public final class SceneWarnings {
 
     /** The first object that every corner ray starts in, or −1. */
     private static int enclosing(List<IGeometry> objects, List<Ray> corners) {
-        for (int i = 0; i < objects.size(); i++) {
-            if (holdsAll(objects.get(i), corners)) {
-                return i;
-            }
-        }
-        return -1;
+        return IntStream.range(0, objects.size()).filter(i -> holdsAll(objects.get(i), corners)).findFirst().orElse(-1);
     }
 
     /** Whether {@code a} (unbounded: a plane, which may cross anything) and {@code b} share a point. */

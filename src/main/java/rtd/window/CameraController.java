@@ -29,11 +29,8 @@ final class CameraController {
     private double zoom;
     private boolean moved;
 
+    /** A controller on {@code original}, one of rtd's two cameras: a scene file makes no other. */
     CameraController(ICamera original) {
-        if (!(original instanceof OrthographicCamera) && !(original instanceof PerspectiveCamera)) {
-            throw new IllegalArgumentException("the window moves rtd's two cameras only, not a "
-                    + original.getClass().getSimpleName());
-        }
         this.original = original;
         position = Vec3.of(original.position());
         direction = Vec3.of(original instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) original)
@@ -103,7 +100,6 @@ final class CameraController {
         moved = true;
     }
 
-    /** World units per pixel at {@code pivot}'s depth. */
     private double worldPerPixel(Vector3f pivot, int width) {
         if (original instanceof PerspectiveCamera perspective) {
             return depth(pivot) / perspective.focalLength(width);

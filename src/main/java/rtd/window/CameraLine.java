@@ -17,7 +17,6 @@ final class CameraLine {
     private CameraLine() {
     }
 
-    /** The scene line of {@code camera}. */
     static String of(ICamera camera) {
         if (camera instanceof PerspectiveCamera p) {
             return line("perspective_camera", p.position(), p.direction(), p.fieldOfView());

@@ -1,5 +1,6 @@
 package rtd.window;
 
+import java.util.Locale;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
 
@@ -46,7 +47,12 @@ final class ClockControl {
 
     /** The status line's part for the clock, {@code " · clock 0.250"}, or nothing for a scene without one. */
     String status() {
-        return source.usesClock() ? " · " + StatusText.clock(clock) : "";
+        return source.usesClock() ? " · " + label(clock) : "";
+    }
+
+    /** The clock as the status line and the slider's label write it: {@code clock 0.250}. */
+    static String label(double clock) {
+        return String.format(Locale.ROOT, "clock %.3f", clock);
     }
 
     /**

@@ -15,12 +15,10 @@ interface Display {
     /** The side panel's text: the explanation, the copied camera, a scene's mistakes, the keys. */
     void panel(String text);
 
-    /** The status line. */
     void status(String text);
 
     /** The clock slider at {@code clock}, or hidden for null: the scene does not use {@code clock}. */
     void clock(Double clock);
 
-    /** Puts {@code text} on the clipboard. */
     void copy(String text);
 }

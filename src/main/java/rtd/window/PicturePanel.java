@@ -66,12 +66,10 @@ final class PicturePanel extends JComponent {
         return session;
     }
 
-    /** The picture as it lies in this panel now. */
     PixelMapping mapping() {
         return image == null ? null : new PixelMapping(image.getWidth(), image.getHeight(), getWidth(), getHeight());
     }
 
-    /** The rays drawn now. */
     List<RayTreeProjection.Line> rays() {
         return rays;
     }

@@ -1,5 +1,6 @@
 package rtd.window;
 
+import java.util.List;
 import java.util.function.BinaryOperator;
 import rtd.geometry.BoundingBox;
 import rtd.geometry.Hit;
@@ -18,23 +19,19 @@ final class Pivot {
     private Pivot() {
     }
 
-    /** The pivot of {@code scene}'s {@code width × height} picture. */
     static Vector3f of(Scene scene, int width, int height) {
         Ray centre = scene.camera().generateRay(width / 2, height / 2, width, height);
         Hit hit = scene.nearestHit(centre);
         if (hit != null) {
             return hit.point();
         }
-        Vector3f min = null;
-        Vector3f max = null;
-        for (IGeometry object : scene.objects()) {
-            BoundingBox box = object.bounds();
-            if (box.isBounded()) {
-                min = min == null ? box.min() : each(min, box.min(), Math::min);
-                max = max == null ? box.max() : each(max, box.max(), Math::max);
-            }
+        List<BoundingBox> boxes = scene.objects().stream().map(IGeometry::bounds).filter(BoundingBox::isBounded).toList();
+        if (boxes.isEmpty()) {
+            return centre.pointAt(10);
         }
-        return min != null ? new BoundingBox(min, max).centre() : centre.pointAt(10);
+        Vector3f min = boxes.stream().map(BoundingBox::min).reduce((a, b) -> each(a, b, Math::min)).orElseThrow();
+        Vector3f max = boxes.stream().map(BoundingBox::max).reduce((a, b) -> each(a, b, Math::max)).orElseThrow();
+        return new BoundingBox(min, max).centre();
     }
 
     /** {@code a} and {@code b} taken together coordinate by coordinate: the lowest or highest of each. */

@@ -20,12 +20,10 @@ record PixelMapping(int imageWidth, int imageHeight, int panelWidth, int panelHe
         return Math.min(panelWidth / (double) imageWidth, panelHeight / (double) imageHeight);
     }
 
-    /** The panel's x of the picture's left edge. */
     double left() {
         return (panelWidth - imageWidth * scale()) / 2;
     }
 
-    /** The panel's y of the picture's top edge. */
     double top() {
         return (panelHeight - imageHeight * scale()) / 2;
     }

@@ -41,20 +41,10 @@ final class RayTreeProjection {
         this.height = height;
     }
 
-    /**
-     * The tree's rays as lines in the picture; a ray wholly behind a perspective camera's eye is left out, and a camera
-     * other than rtd's two shows none.
-     */
+    /** The tree's rays as lines in the picture; a ray wholly behind a perspective camera's eye is left out. */
     List<Line> lines(RayTree tree) {
-        if (!(camera instanceof OrthographicCamera) && !(camera instanceof PerspectiveCamera)) {
-            return List.of();
-        }
-        float size = 1;
-        for (RayTree.Segment segment : tree.segments()) {
-            if (segment.to() != null) {
-                size = Math.max(size, segment.to().subtract(camera.position()).magnitude());
-            }
-        }
+        float size = (float) tree.segments().stream().filter(segment -> segment.to() != null)
+                .mapToDouble(segment -> segment.to().subtract(camera.position()).magnitude()).reduce(1, Math::max);
         List<Line> lines = new ArrayList<>();
         for (RayTree.Segment segment : tree.segments()) {
             Vector3f from = segment.from();

@@ -160,7 +160,6 @@ final class SceneWindow implements Display {
         return new Dimension(Math.max(1, (int) (width * scale)), Math.max(1, (int) (height * scale)));
     }
 
-    /** Shows the window and starts the first render. */
     void open() {
         frame.setVisible(true);
         picture.requestFocusInWindow();
@@ -229,7 +228,7 @@ final class SceneWindow implements Display {
             clockBar.setVisible(false);
             return;
         }
-        clockLabel.setText(StatusText.clock(clock));
+        clockLabel.setText(ClockControl.label(clock));
         settingSlider = true;
         slider.setValue((int) Math.round(Math.max(0, Math.min(1, clock)) * SLIDER_STEPS));
         settingSlider = false;

@@ -11,6 +11,7 @@ import rtd.math.Vector3f;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.view.View;
+import rtd.window.FrameRenderer.Refinement;
 
 /**
  * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}), the
@@ -63,7 +64,6 @@ final class WindowSession implements AutoCloseable {
         this.camera = new CameraController(scene.camera());
     }
 
-    /** The first picture, coarse at once, then refined. */
     void start() {
         display.panel(SceneWindow.HELP);
         clock.showSlider();
@@ -83,7 +83,6 @@ final class WindowSession implements AutoCloseable {
         return clock;
     }
 
-    /** The last pass shown, or null. */
     FrameRenderer.Pass shown() {
         return shown;
     }
@@ -96,8 +95,7 @@ final class WindowSession implements AutoCloseable {
                 setup.samples(), setup.threads(), refinement);
         boolean moving = !refinement.endsFull();
         Consumer<FrameRenderer.Pass> listener = pass -> ui.execute(() -> show(frame, pass, moving));
-        renders.submit(() -> renderer.render(request, anyCamera(objects), new ProgressiveBuffer(setup.width(),
-                setup.height()), listener), !moving);
+        renders.submit(() -> renderer.render(request, anyCamera(objects), listener), !moving);
     }
 
     private Supplier<Tracer> anyCamera(Scene objects) {
@@ -127,8 +125,8 @@ final class WindowSession implements AutoCloseable {
 
     void status() {
         if (shown != null) {
-            display.status(StatusText.of(setup.width(), setup.height(), shown.nanos(), shown.rays(), shown.block(),
-                    underMouse, (view == null ? "picture" : view.name()) + clock.status()));
+            display.status(shown.status(setup.width(), setup.height(), underMouse,
+                    (view == null ? "picture" : view.name()) + clock.status()));
         }
     }
 
@@ -137,7 +135,6 @@ final class WindowSession implements AutoCloseable {
         status();
     }
 
-    /** The point to orbit around and pan at ({@link Pivot}). */
     Vector3f pivot() {
         return Pivot.of(scene(), setup.width(), setup.height());
     }

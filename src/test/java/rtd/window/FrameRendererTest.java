@@ -22,6 +22,7 @@ import rtd.scene.Scene;
 import rtd.testing.Cli;
 import rtd.testing.Scenes;
 import rtd.view.View;
+import rtd.window.FrameRenderer.Refinement;
 
 @DisplayName("The window's renders: passes of 8, 4, 2 and 1, the last -o's own pixels, and cancelled by a newer one")
 class FrameRendererTest {
@@ -54,8 +55,7 @@ class FrameRendererTest {
                 paper.objects(), paper.lights());
         List<FrameRenderer.Pass> passes = new ArrayList<>();
         Supplier<Tracer> any = ENGINE.forAnyCamera(scaled, 240, 135);
-        new FrameRenderer(ENGINE).render(new FrameRenderer.Frame(scaled, null, 240, 135, 1, 2, Refinement.STILL), any,
-                new ProgressiveBuffer(240, 135), passes::add);
+        new FrameRenderer(ENGINE).render(new FrameRenderer.Frame(scaled, null, 240, 135, 1, 2, Refinement.STILL), any, passes::add);
         Path out = dir.resolve("paper.png");
         assertThat(Cli.run("examples/input_rtd.txt", "--scale", "0.125", "-o", out.toString()).exitCode()).isZero();
         assertThat(passes.get(3).picture().rgb()).isEqualTo(rgb(ImageIO.read(out.toFile())))
@@ -114,7 +114,7 @@ class FrameRendererTest {
     private static boolean render(Scene scene, View view, Refinement refinement, Consumer<FrameRenderer.Pass> listener) {
         Supplier<Tracer> any = ENGINE.forAnyCamera(scene, 160, 90);
         FrameRenderer.Frame frame = new FrameRenderer.Frame(scene, view, 160, 90, 1, 2, refinement);
-        return new FrameRenderer(ENGINE).render(frame, any, new ProgressiveBuffer(160, 90), listener);
+        return new FrameRenderer(ENGINE).render(frame, any, listener);
     }
 
     private int[] written(String scene) throws Exception {

@@ -15,6 +15,7 @@ import rtd.io.SceneIO;
 import rtd.math.Vector3f;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
+import rtd.window.FrameRenderer.Refinement;
 
 /**
  * The window's speed, warm, without a screen: frames rendered as the window renders them ({@link FrameRenderer})
@@ -95,7 +96,7 @@ public final class WindowFrames {
     private static void render(FrameRenderer renderer, Supplier<Tracer> any, Scene scene, Refinement refinement,
             BufferedImage screen, int threads) {
         FrameRenderer.Frame frame = new FrameRenderer.Frame(scene, null, WIDTH, HEIGHT, 1, threads, refinement);
-        renderer.render(frame, any, new ProgressiveBuffer(WIDTH, HEIGHT), pass -> paint(pass.picture(), screen));
+        renderer.render(frame, any, pass -> paint(pass.picture(), screen));
     }
 
     /** Into the window's image, as {@link PicturePanel#picture} does. */

@@ -1,14 +1,14 @@
 package rtd.window;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.image.Picture;
+import rtd.window.FrameRenderer.Refinement;
 
-@DisplayName("The progressive buffer: coarse blocks, refined")
-class ProgressiveBufferTest {
+@DisplayName("The window's passes: coarse blocks, refined")
+class RefinementTest {
 
     @Test
     void aStillPictureIsRefinedInBlocksOfEightFourTwoAndOne() {
@@ -35,17 +35,16 @@ class ProgressiveBufferTest {
     @Test
     void theBlocksCoverThePictureTheLastOneCutOff() {
         // 5 pixels in blocks of 2: [0, 2), [2, 4), [4, 5)
-        assertThat(ProgressiveBuffer.blocks(5, 2)).isEqualTo(3);
-        assertThat(ProgressiveBuffer.blocks(960, 8)).isEqualTo(120);
-        assertThat(ProgressiveBuffer.blocks(90, 8)).isEqualTo(12);
+        assertThat(FrameRenderer.blocks(5, 2)).isEqualTo(3);
+        assertThat(FrameRenderer.blocks(960, 8)).isEqualTo(120);
+        assertThat(FrameRenderer.blocks(90, 8)).isEqualTo(12);
     }
 
     @Test
     void eachBlockTakesItsOnePixelsColour() {
-        ProgressiveBuffer buffer = new ProgressiveBuffer(5, 3);
         // 3 × 2 coarse pixels for blocks of 2: a, b, c on top, d, e, f below
-        buffer.put(2, new Picture(3, 2, new int[] {0xA, 0xB, 0xC, 0xD, 0xE, 0xF}));
-        assertThat(buffer.picture().rgb()).containsExactly(
+        Picture coarse = new Picture(3, 2, new int[] {0xA, 0xB, 0xC, 0xD, 0xE, 0xF});
+        assertThat(FrameRenderer.filled(2, coarse, 5, 3).rgb()).containsExactly(
                 0xA, 0xA, 0xB, 0xB, 0xC,
                 0xA, 0xA, 0xB, 0xB, 0xC,
                 0xD, 0xD, 0xE, 0xE, 0xF);
@@ -53,16 +52,7 @@ class ProgressiveBufferTest {
 
     @Test
     void theLastPassSetsEveryPixelItself() {
-        ProgressiveBuffer buffer = new ProgressiveBuffer(2, 2);
-        buffer.put(8, new Picture(1, 1, new int[] {7}));
-        buffer.put(1, new Picture(2, 2, new int[] {1, 2, 3, 4}));
-        assertThat(buffer.picture().rgb()).containsExactly(1, 2, 3, 4);
-    }
-
-    @Test
-    void aPassOfTheWrongSizeIsRefused() {
-        ProgressiveBuffer buffer = new ProgressiveBuffer(5, 3);
-        assertThatThrownBy(() -> buffer.put(2, new Picture(2, 2, new int[4])))
-                .hasMessageContaining("has 3 × 2 pixels, not 2 × 2");
+        assertThat(FrameRenderer.filled(1, new Picture(2, 2, new int[] {1, 2, 3, 4}), 2, 2).rgb())
+                .containsExactly(1, 2, 3, 4);
     }
 }
