@@ -12,7 +12,6 @@ public final class ClockText {
     private ClockText() {
     }
 
-    /** {@code clock} written short. */
     public static String format(double clock) {
         if (clock == 0) {
             return "0";

@@ -42,7 +42,6 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         return parts.getOrDefault(part, ClockFields.NONE);
     }
 
-    /** Whether any number of the scene uses the clock. */
     public boolean usesClock() {
         return !ambient.isEmpty() || !camera.isEmpty() || !parts.isEmpty() || !unwritten.isEmpty();
     }

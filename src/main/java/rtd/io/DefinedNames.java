@@ -32,7 +32,6 @@ final class DefinedNames {
         /** An object that names nothing: the default finish, its own colour, not transformed. */
         static final ObjectNames NONE = new ObjectNames(Material.DEFAULT, null, null, List.of());
 
-        /** These names with {@code material} as the finish. */
         ObjectNames with(Material material) {
             return new ObjectNames(material, pattern, transform, names);
         }
@@ -60,7 +59,6 @@ final class DefinedNames {
     /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
     private final boolean onlyMaterials;
     private final List<Definition> definitions;
-    /** The transforms that patterns name. */
     private final Set<String> namedByPatterns = new HashSet<>();
 
     /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */

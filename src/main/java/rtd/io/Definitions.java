@@ -16,7 +16,6 @@ import rtd.math.Matrix4;
  */
 final class Definitions {
 
-    /** The steps a transform may take. */
     private static final List<String> OPERATIONS = List.of("scale", "rotate_x", "rotate_y", "rotate_z", "translate");
     static final String STEP_HELP = "write a step as (scale 2), (scale 1|2|1), (rotate_y 30) or (translate 0|1|0)";
 

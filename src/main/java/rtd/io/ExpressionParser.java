@@ -215,14 +215,13 @@ final class ExpressionParser {
 
     private StatementError unknownName(String word, int start) {
         if (names.isBroken(word)) { // its let's mistake is reported there: this statement is only left out
-            return new StatementError(cursor.error(start, "", null).place(), List.of());
+            return new StatementError(cursor.error(start, "", null).place, List.of());
         }
         String nearest = nearestName(word);
         return cursor.error(start, "unknown name '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
                 : "define it above this line with let:(" + word + "):(1), or use clock or pi");
     }
 
-    /** The known name or function nearest {@code word}, or null. */
     String nearestName(String word) {
         List<String> candidates = new ArrayList<>(names.known());
         candidates.addAll(ExpressionFunction.NAMES);

@@ -124,7 +124,6 @@ final class Grammar {
     private Grammar() {
     }
 
-    /** The statement whose keyword is {@code bytes[start, end)}, or null. */
     static Statement find(byte[] bytes, int start, int end) {
         for (int k = 0; k < ALL.length; k++) { // no Iterator for each line of a large file
             if (Arrays.equals(KEYWORDS[k], 0, KEYWORDS[k].length, bytes, start, end)) {
@@ -162,7 +161,7 @@ final class Grammar {
         if (sphere.radius() >= FLOOR_RADIUS) {
             out.warningIfLit(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
                     + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
-                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0").place());
+                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0").place);
         }
         return sphere;
     }

@@ -194,23 +194,10 @@ final class SceneContents implements Statement.Output {
         return null;
     }
 
-    /** Keeps an object that names a material, at its place among the objects. */
-    void addPending(StatementValues pendingValues) {
-        pending.add(new Pending(objects.size(), pendingValues));
-    }
-
-    /** Notes a line that starts with a line number; {@code error} is the mistake if it is the first. */
-    void noteLineNumber(SceneError error) {
-        if (firstLineNumber == null) {
-            firstLineNumber = error;
-        }
-        lineNumbers++;
-    }
-
     /** Keeps the errors of a statement, ordered by its place. */
     void addErrors(StatementError e) {
-        for (SceneError error : e.errors()) {
-            errors.add(new Found(e.place().line(), e.place().column(), error));
+        for (SceneError error : e.errors) {
+            errors.add(new Found(e.place.line(), e.place.column(), error));
         }
     }
 }

@@ -53,7 +53,6 @@ public final class SceneFile {
         return new SceneFile(name, bytes, folder);
     }
 
-    /** The size of the file in bytes. */
     public int size() {
         return bytes.length;
     }

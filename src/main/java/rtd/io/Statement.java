@@ -48,7 +48,6 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return repeatsLast ? Integer.MAX_VALUE : optional.size();
     }
 
-    /** The {@code k}-th optional group read (from 0). */
     Group optional(int k) {
         return optional.get(Math.min(k, optional.size() - 1));
     }

@@ -17,7 +17,6 @@ final class StatementReader {
     private final SceneContents contents;
     /** Where the statement being read starts, for a later message about it. */
     private int statementStart;
-    /** The statement being read, once its keyword is known; null before. */
     private Statement current;
     /** Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
     private boolean inBlockComment;
@@ -87,7 +86,8 @@ final class StatementReader {
             String name = values.name(groups.size());
             Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
             if (above == null) {
-                contents.addPending(values.copy()); // its names are resolved when the whole file is read
+                // its names are resolved when the whole file is read
+                contents.pending.add(new SceneContents.Pending(contents.objects.size(), values.copy()));
                 return;
             }
             contents.namedAtOnce.add(name);
@@ -127,8 +127,10 @@ final class StatementReader {
         if (afterLineNumber || !atLineNumber()) {
             throw cursor.error(statementStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
         }
-        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + word + "'",
-                Hints.LINE_NUMBERS).place());
+        if (contents.lineNumbers++ == 0) {
+            contents.firstLineNumber = cursor.error(statementStart, "the line starts with a line number, '" + word + "'",
+                    Hints.LINE_NUMBERS).place;
+        }
         cursor.skipBlanks();
         return cursor.atEndOfStatement() ? null : readKeyword(true);
     }
