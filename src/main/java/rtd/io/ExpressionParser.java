@@ -75,7 +75,10 @@ final class ExpressionParser {
     /** A minus sign binds looser than {@code ^}: {@code -2^2} is {@code -(2^2)}. */
     private Expression unary() throws StatementError {
         cursor.skipBlanks();
-        enter();
+        if (++depth > MAX_DEPTH) {
+            throw cursor.error(cursor.pos, "the expression is nested too deeply: more than " + MAX_DEPTH + " levels",
+                    "split it with let:(name):(expression) lines");
+        }
         try {
             if (cursor.at('-')) {
                 int at = operator();
@@ -115,8 +118,9 @@ final class ExpressionParser {
         if (isLetter(next())) {
             return nameOrCall();
         }
+        boolean atGroupEnd = cursor.at('|') || cursor.at(')') || cursor.atEndOfStatement();
         throw cursor.error(cursor.pos, "expected a number, a name or '(' in an expression, found "
-                + cursor.describe(cursor.pos), atGroupEnd() ? "an operator needs a number on either side" : null);
+                + cursor.describe(cursor.pos), atGroupEnd ? "an operator needs a number on either side" : null);
     }
 
     /** Digits with an optional point and exponent, read as a double. */
@@ -243,20 +247,9 @@ final class ExpressionParser {
         return cursor.pos++;
     }
 
-    private void enter() throws StatementError {
-        if (++depth > MAX_DEPTH) {
-            throw cursor.error(cursor.pos, "the expression is nested too deeply: more than " + MAX_DEPTH + " levels",
-                    "split it with let:(name):(expression) lines");
-        }
-    }
-
     /** The byte at the cursor; 0, which starts nothing, at the end of the file. */
     private byte next() {
         return cursor.pos < cursor.bytes.length ? cursor.bytes[cursor.pos] : 0;
-    }
-
-    private boolean atGroupEnd() {
-        return cursor.at('|') || cursor.at(')') || cursor.atEndOfStatement();
     }
 
     /** The end of the expression read so far, before the blanks after it. */

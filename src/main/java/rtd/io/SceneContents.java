@@ -25,10 +25,6 @@ final class SceneContents implements Statement.Output {
     record Located<T>(T value, SceneError place) {
     }
 
-    /** A material and the name it is defined under, as {@link MaterialWarnings} reads it. */
-    record Named(String name, Material material) {
-    }
-
     /**
      * A name's definition at {@code place} (its name's): a {@link Material}, {@link Pattern} or {@link Matrix4}
      * as {@code kind} says; a pattern may name its {@code transform} (else null) at {@code transformPlace}.
@@ -166,12 +162,6 @@ final class SceneContents implements Statement.Output {
         SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
         definitions.add(new Definition(name, kind, value, values.placeOfValue(0, 0), transform, transformPlace));
         recorder().unwritten(values);
-    }
-
-    /** The materials, as {@link MaterialWarnings} reads them. */
-    List<Located<Named>> materials() {
-        return definitions.stream().filter(d -> d.value() instanceof Material)
-                .map(d -> new Located<>(new Named(d.name(), (Material) d.value()), d.place())).toList();
     }
 
     /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */

@@ -91,7 +91,7 @@ final class StatementReader {
                 return;
             }
             contents.namedAtOnce.add(name);
-            values.useNames(DefinedNames.ObjectNames.NONE.with(above));
+            values.useNames(new DefinedNames.ObjectNames(above, null, null, List.of()));
         }
         statement.builder().build(values, contents);
     }
@@ -174,7 +174,7 @@ final class StatementReader {
         Statement statement = Grammar.find(cursor.bytes, start, end);
         int after = cursor.afterSpaces(end);
         return statement != null && after < cursor.bytes.length && cursor.bytes[after] == ':'
-                ? Hints.oneStatementPerLine(statement.keyword()) : null;
+                ? "one statement per line: start a new line before '" + statement.keyword() + "'" : null;
     }
 
     // ---- comments as other languages write them ---------------------------------------------
