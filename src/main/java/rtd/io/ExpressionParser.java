@@ -173,9 +173,7 @@ final class ExpressionParser {
         if (name == null) {
             throw unknownName(word, start);
         }
-        if (name.usesClock()) {
-            names.noteClockUse();
-        }
+        names.clockUsed |= name.usesClock();
         return name;
     }
 

@@ -156,7 +156,7 @@ final class Grammar {
      * large float rounds hit points by more than a shadow ray's lift, so it shows shadow acne (a radius of
      * 1000, as <i>Ray Tracing in One Weekend</i> uses, draws clean).
      */
-    private static Sphere sphere(StatementValues v, Statement.Output out) throws StatementError {
+    private static Sphere sphere(StatementValues v, SceneContents out) throws StatementError {
         Sphere sphere = new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material());
         if (sphere.radius() >= FLOOR_RADIUS) {
             out.warningIfLit(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)

@@ -81,7 +81,7 @@ public final class SceneFile {
         try (SourceText source = new SourceText(name, bytes, folder, meshes)) {
             return SceneParser.parse(source, names, warnings);
         } finally { // a failed parse tells too: a value may break its rule at some clocks only
-            usesClock |= names.clockUsed();
+            usesClock |= names.clockUsed;
         }
     }
 
