@@ -35,7 +35,7 @@ public final class SceneFile {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
-        return new SceneFile(name, SceneFileReader.read(path), folder);
+        return new SceneFile(name, SceneFileReader.read(path, SceneIO.MAX_SCENE_BYTES), folder);
     }
 
     /** The scene file at {@code path}, its meshes found from its folder. */

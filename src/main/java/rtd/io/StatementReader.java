@@ -1,6 +1,7 @@
 package rtd.io;
 
 import java.util.List;
+import java.util.stream.IntStream;
 import rtd.geometry.Material;
 
 /**
@@ -21,10 +22,7 @@ final class StatementReader {
     /** Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
     private boolean inBlockComment;
 
-    /**
-     * A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}; its
-     * expressions use {@code names}.
-     */
+    /** A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}. */
     StatementReader(SourceText source, int start, SceneContents contents, Names names) {
         this.cursor = new LineCursor(source, start);
         WrittenGroups written = new WrittenGroups(16, 8);
@@ -137,12 +135,8 @@ final class StatementReader {
 
     /** Whether the word from {@link #statementStart} to the cursor is a line number: digits, then a blank or the end. */
     private boolean atLineNumber() {
-        for (int i = statementStart; i < cursor.pos; i++) {
-            if (cursor.bytes[i] < '0' || cursor.bytes[i] > '9') {
-                return false;
-            }
-        }
-        return cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]);
+        boolean digits = IntStream.range(statementStart, cursor.pos).allMatch(i -> Character.isDigit(cursor.bytes[i]));
+        return digits && (cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]));
     }
 
     /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
