@@ -29,10 +29,7 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         unwritten = List.copyOf(unwritten);
     }
 
-    /**
-     * The same table beside {@code other}, a scene with the same objects and lights, such as this one at another
-     * size (its orthographic camera's zoom scaled).
-     */
+    /** The same table beside {@code other}, a scene with the same objects and lights, such as this one resized. */
     public ClockedScene with(Scene other) {
         return new ClockedScene(other, ambient, camera, parts, unwritten);
     }

@@ -204,10 +204,7 @@ final class DefinedNames {
         return new ObjectNames(material == null ? Material.DEFAULT : material, pattern, transform, used);
     }
 
-    /**
-     * The pattern or transform {@code name} (as {@code kind} says) for a use at {@code place}; null, with an
-     * error, if it is unknown or something else.
-     */
+    /** The pattern or transform ({@code kind}) {@code name} used at {@code place}; else null, with an error. */
     @SuppressWarnings("unchecked")
     private <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
         String is = kinds.get(name);
