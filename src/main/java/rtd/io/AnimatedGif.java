@@ -66,7 +66,6 @@ public final class AnimatedGif implements AutoCloseable {
         return new AnimatedGif(Files.newOutputStream(device, StandardOpenOption.WRITE), delay, null);
     }
 
-    /** Adds the next frame. */
     public void add(Picture picture) throws IOException {
         BufferedImage image = ImageWriting.asImage(picture);
         ImageWriteParam param = writer.getDefaultWriteParam();

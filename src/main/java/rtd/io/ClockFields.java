@@ -79,7 +79,6 @@ public final class ClockFields {
         return clocked.values().stream().flatMap(Arrays::stream).filter(Objects::nonNull).toList();
     }
 
-    /** Whether no number of the statement uses the clock. */
     public boolean isEmpty() {
         return clocked.isEmpty();
     }

@@ -12,7 +12,6 @@ public final class ClockText {
     private ClockText() {
     }
 
-    /** {@code clock} written short. */
     public static String format(double clock) {
         if (clock == 0) {
             return "0";
@@ -20,10 +19,7 @@ public final class ClockText {
         return new BigDecimal(clock).round(new MathContext(6)).stripTrailingZeros().toPlainString();
     }
 
-    /**
-     * An expression as written with its value, and the clock if it uses it, for messages: "1-2*clock, which is
-     * -0.5 at clock = 0.75".
-     */
+    /** An expression as written, its value, and the clock if it uses it: "1-2*clock, which is -0.5 at clock = 0.75". */
     static String withValue(String text, float value, boolean usesClock, double clock) {
         String number = value == Math.rint(value) && Math.abs(value) < 1e9 ? String.valueOf((long) value)
                 : String.valueOf(value);

@@ -29,10 +29,7 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         unwritten = List.copyOf(unwritten);
     }
 
-    /**
-     * The same table beside {@code other}, a scene with the same objects and lights, such as this one at another
-     * size (its orthographic camera's zoom scaled).
-     */
+    /** The same table beside {@code other}, a scene with the same objects and lights, such as this one resized. */
     public ClockedScene with(Scene other) {
         return new ClockedScene(other, ambient, camera, parts, unwritten);
     }
@@ -42,7 +39,6 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         return parts.getOrDefault(part, ClockFields.NONE);
     }
 
-    /** Whether any number of the scene uses the clock. */
     public boolean usesClock() {
         return !ambient.isEmpty() || !camera.isEmpty() || !parts.isEmpty() || !unwritten.isEmpty();
     }

@@ -6,6 +6,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Matcher;
 import rtd.io.SceneContents.Definition;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
@@ -18,9 +19,15 @@ import rtd.math.Matrix4;
 /**
  * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each
  * name is defined once, by one of them, above or below the lines that use it. It resolves an object's names
- * ({@link #of}) and a pattern's transform, and words each mistake at the name that makes it.
+ * ({@link #of}) and a pattern's transform, and words each mistake at the name that makes it. Its warnings are
+ * the slips with definitions that change nothing in the picture: a material, pattern or transform nothing names;
+ * an {@code ior} without {@code transparency}; materials in a scene without a light, drawn in flat colours.
  */
 final class DefinedNames {
+
+    /** The key {@code ior} in a material's properties: after a '(' or '|' and blanks, before blanks and '='. */
+    private static final java.util.regex.Pattern IOR_KEY =
+            java.util.regex.Pattern.compile("(?<=[(|][ \\t]{0,1000})ior(?=[ \\t]*=)");
 
     /**
      * What an object's names mean (Part III, "Transformations" and "Patterns"): the finish its last groups name
@@ -31,11 +38,6 @@ final class DefinedNames {
 
         /** An object that names nothing: the default finish, its own colour, not transformed. */
         static final ObjectNames NONE = new ObjectNames(Material.DEFAULT, null, null, List.of());
-
-        /** These names with {@code material} as the finish. */
-        ObjectNames with(Material material) {
-            return new ObjectNames(material, pattern, transform, names);
-        }
 
         /**
          * The object as its names make it: patterned if its colour group names a pattern, then transformed if
@@ -60,7 +62,6 @@ final class DefinedNames {
     /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
     private final boolean onlyMaterials;
     private final List<Definition> definitions;
-    /** The transforms that patterns name. */
     private final Set<String> namedByPatterns = new HashSet<>();
 
     /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
@@ -100,16 +101,13 @@ final class DefinedNames {
         }
     }
 
-    /**
-     * A warning at each pattern and transform that nothing names ({@code named}: the names objects used), at
-     * most {@code most}: a slip that changes nothing in the picture, as an unused material is.
-     */
-    List<SceneError> unused(Set<String> named, int most) {
+    /** A warning at each pattern and transform that nothing names ({@code named}: the names objects used). */
+    List<SceneError> unused(Set<String> named) {
         List<SceneError> warnings = new ArrayList<>();
         for (Definition definition : definitions) {
             String name = definition.name();
             boolean unnamed = !named.contains(name) && !namedByPatterns.contains(name);
-            if (!definition.kind().equals("material") && unnamed && warnings.size() < most) {
+            if (!definition.kind().equals("material") && unnamed && warnings.size() < SceneParser.MAX_ERRORS) {
                 boolean pattern = definition.kind().equals("pattern");
                 warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
                         + (pattern ? "no object names it" : "no object or pattern names it"), pattern
@@ -119,6 +117,48 @@ final class DefinedNames {
             }
         }
         return warnings;
+    }
+
+    /**
+     * The warnings about the materials, in file order, of which objects {@code named} some: at most
+     * {@link SceneParser#MAX_ERRORS} and a last line for the rest, as a library of materials could give thousands.
+     */
+    List<SceneError> materialWarnings(Set<String> named, boolean lit) {
+        List<Definition> materials = definitions.stream().filter(d -> d.value() instanceof Material).toList();
+        List<SceneError> warnings = new ArrayList<>();
+        if (!lit && !materials.isEmpty()) {
+            warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so it is "
+                    + "drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
+        }
+        for (Definition definition : materials) {
+            String name = definition.name();
+            Material material = (Material) definition.value();
+            if (!named.contains(name)) {
+                warnings.add(definition.place().saying("material '" + name + "' is defined, but no object names it",
+                        "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):(" + name
+                                + ")"));
+            }
+            if (lit && material.ior() != 1 && material.transparency() <= 0) { // without a light, nothing is bent anyway
+                warnings.add(atTheIor(definition.place()).saying("the ior of material '" + name + "' bends nothing: its transparency "
+                        + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
+            }
+        }
+        int most = SceneParser.MAX_ERRORS;
+        if (warnings.size() <= most) {
+            return warnings;
+        }
+        SceneError next = warnings.get(most);
+        List<SceneError> shown = new ArrayList<>(warnings.subList(0, most));
+        shown.add(new SceneError(next.file(), next.line(), next.column(), "and " + (warnings.size() - most)
+                + " more warnings like these, the first of them here", null, null));
+        return shown;
+    }
+
+    /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */
+    private static SceneError atTheIor(SceneError name) {
+        Matcher key = IOR_KEY.matcher(name.sourceLine() == null ? "" : name.sourceLine());
+        return key.find(Math.max(0, name.column() - 1))
+                ? new SceneError(name.file(), name.line(), key.start() + 1, name.message(), name.sourceLine(), name.help()) : name;
     }
 
     /**
@@ -164,10 +204,7 @@ final class DefinedNames {
         return new ObjectNames(material == null ? Material.DEFAULT : material, pattern, transform, used);
     }
 
-    /**
-     * The pattern or transform {@code name} (as {@code kind} says) for a use at {@code place}; null, with an
-     * error, if it is unknown or something else.
-     */
+    /** The pattern or transform ({@code kind}) {@code name} used at {@code place}; else null, with an error. */
     @SuppressWarnings("unchecked")
     private <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
         String is = kinds.get(name);

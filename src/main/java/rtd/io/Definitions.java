@@ -16,7 +16,6 @@ import rtd.math.Matrix4;
  */
 final class Definitions {
 
-    /** The steps a transform may take. */
     private static final List<String> OPERATIONS = List.of("scale", "rotate_x", "rotate_y", "rotate_z", "translate");
     static final String STEP_HELP = "write a step as (scale 2), (scale 1|2|1), (rotate_y 30) or (translate 0|1|0)";
 
@@ -24,7 +23,7 @@ final class Definitions {
     }
 
     /** {@code pattern:(name):(kind):(R|G|B):(R|G|B)[:(transform)]}; the transform's name is resolved later. */
-    static void pattern(StatementValues v, Statement.Output out) throws StatementError {
+    static void pattern(StatementValues v, SceneContents out) throws StatementError {
         String word = v.name(1);
         Pattern.Kind kind = Arrays.stream(Pattern.Kind.values()).filter(k -> k.word().equals(word)).findFirst().orElse(null);
         if (kind == null) {
@@ -38,7 +37,7 @@ final class Definitions {
     }
 
     /** {@code transform:(name):(step)[:(step)…]}: the steps composed in the order written. */
-    static void transform(StatementValues v, Statement.Output out) throws StatementError {
+    static void transform(StatementValues v, SceneContents out) throws StatementError {
         Matrix4 m = Matrix4.IDENTITY;
         for (int g = 1; g < v.groupCount(); g++) {
             m = m.then(step(v, g));

@@ -58,7 +58,6 @@ public sealed interface Expression {
         }
     }
 
-    /** {@code -operand}. */
     record Negation(Expression operand, int start) implements Expression {
         @Override
         public double value(double clock) throws NotFinite {
@@ -98,7 +97,6 @@ public sealed interface Expression {
         }
     }
 
-    /** {@code function(arguments)}. */
     record Call(ExpressionFunction function, List<Expression> arguments, int start) implements Expression {
         public Call {
             arguments = List.copyOf(arguments);
@@ -113,7 +111,6 @@ public sealed interface Expression {
             return NotFinite.check(function.apply(args), this, null);
         }
 
-        /** The function's name as a scene writes it: {@code sin}, {@code atan2}. */
         public String functionName() {
             return function.spelling();
         }

@@ -50,7 +50,6 @@ enum ExpressionFunction {
         return Arrays.stream(values()).filter(function -> function.spelling().equals(name)).findFirst().orElse(null);
     }
 
-    /** The name as a scene writes it: {@code sin}, {@code atan2}. */
     String spelling() {
         return name().toLowerCase(Locale.ROOT);
     }

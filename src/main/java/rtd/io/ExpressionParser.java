@@ -75,7 +75,10 @@ final class ExpressionParser {
     /** A minus sign binds looser than {@code ^}: {@code -2^2} is {@code -(2^2)}. */
     private Expression unary() throws StatementError {
         cursor.skipBlanks();
-        enter();
+        if (++depth > MAX_DEPTH) {
+            throw cursor.error(cursor.pos, "the expression is nested too deeply: more than " + MAX_DEPTH + " levels",
+                    "split it with let:(name):(expression) lines");
+        }
         try {
             if (cursor.at('-')) {
                 int at = operator();
@@ -115,8 +118,9 @@ final class ExpressionParser {
         if (isLetter(next())) {
             return nameOrCall();
         }
+        boolean atGroupEnd = cursor.at('|') || cursor.at(')') || cursor.atEndOfStatement();
         throw cursor.error(cursor.pos, "expected a number, a name or '(' in an expression, found "
-                + cursor.describe(cursor.pos), atGroupEnd() ? "an operator needs a number on either side" : null);
+                + cursor.describe(cursor.pos), atGroupEnd ? "an operator needs a number on either side" : null);
     }
 
     /** Digits with an optional point and exponent, read as a double. */
@@ -169,9 +173,7 @@ final class ExpressionParser {
         if (name == null) {
             throw unknownName(word, start);
         }
-        if (name.usesClock()) {
-            names.noteClockUse();
-        }
+        names.clockUsed |= name.usesClock();
         return name;
     }
 
@@ -215,14 +217,13 @@ final class ExpressionParser {
 
     private StatementError unknownName(String word, int start) {
         if (names.isBroken(word)) { // its let's mistake is reported there: this statement is only left out
-            return new StatementError(cursor.error(start, "", null).place(), List.of());
+            return new StatementError(cursor.error(start, "", null).place, List.of());
         }
         String nearest = nearestName(word);
         return cursor.error(start, "unknown name '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
                 : "define it above this line with let:(" + word + "):(1), or use clock or pi");
     }
 
-    /** The known name or function nearest {@code word}, or null. */
     String nearestName(String word) {
         List<String> candidates = new ArrayList<>(names.known());
         candidates.addAll(ExpressionFunction.NAMES);
@@ -244,20 +245,9 @@ final class ExpressionParser {
         return cursor.pos++;
     }
 
-    private void enter() throws StatementError {
-        if (++depth > MAX_DEPTH) {
-            throw cursor.error(cursor.pos, "the expression is nested too deeply: more than " + MAX_DEPTH + " levels",
-                    "split it with let:(name):(expression) lines");
-        }
-    }
-
     /** The byte at the cursor; 0, which starts nothing, at the end of the file. */
     private byte next() {
         return cursor.pos < cursor.bytes.length ? cursor.bytes[cursor.pos] : 0;
-    }
-
-    private boolean atGroupEnd() {
-        return cursor.at('|') || cursor.at(')') || cursor.atEndOfStatement();
     }
 
     /** The end of the expression read so far, before the blanks after it. */

@@ -124,7 +124,6 @@ final class Grammar {
     private Grammar() {
     }
 
-    /** The statement whose keyword is {@code bytes[start, end)}, or null. */
     static Statement find(byte[] bytes, int start, int end) {
         for (int k = 0; k < ALL.length; k++) { // no Iterator for each line of a large file
             if (Arrays.equals(KEYWORDS[k], 0, KEYWORDS[k].length, bytes, start, end)) {
@@ -157,12 +156,12 @@ final class Grammar {
      * large float rounds hit points by more than a shadow ray's lift, so it shows shadow acne (a radius of
      * 1000, as <i>Ray Tracing in One Weekend</i> uses, draws clean).
      */
-    private static Sphere sphere(StatementValues v, Statement.Output out) throws StatementError {
+    private static Sphere sphere(StatementValues v, SceneContents out) throws StatementError {
         Sphere sphere = new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material());
         if (sphere.radius() >= FLOOR_RADIUS) {
             out.warningIfLit(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
                     + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
-                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0").place());
+                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0").place);
         }
         return sphere;
     }

@@ -15,7 +15,6 @@ import java.util.List;
  */
 record Group(String meaning, Kind kind, String shape, int size, List<String> keys, boolean orAt, boolean orName) {
 
-    /** What a group holds. */
     enum Kind {
         /** A fixed count of numbers separated by {@code |}. */
         NUMBERS,

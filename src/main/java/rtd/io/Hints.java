@@ -32,14 +32,9 @@ final class Hints {
     private Hints() {
     }
 
-    static String oneStatementPerLine(String keyword) {
-        return "one statement per line: start a new line before '" + keyword + "'";
-    }
-
     /** A token that begins as {@code (at x|y|z)} does, misspelt: {@code at0}, {@code AT}, {@code At-1}. */
     private static final Pattern LOOK_AT = Pattern.compile("(?i)at[-+.0-9]*");
 
-    /** For a token that is no number. */
     static String forNumber(String token) {
         if (token.indexOf('\u2212') >= 0) {
             return "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead";

@@ -15,11 +15,12 @@ import java.util.stream.Stream;
  */
 final class Names {
 
-    private final double clock;
+    final double clock;
     private final Map<String, Expression> defined = new HashMap<>();
     /** The line of each name's {@code let}, those with a mistake among them (a broken name is not in {@link #defined}). */
     private final Map<String, Integer> lines = new HashMap<>();
-    private boolean clockUsed;
+    /** Whether some number of the file used the clock, directly or through a {@code let}. */
+    boolean clockUsed;
     /** Where the reading notes each statement's numbers that use the clock, for {@link SceneFile#withClock}. */
     final ClockedScene.Recorder recorder;
 
@@ -36,19 +37,6 @@ final class Names {
     private static final class Reserved {
         static final Set<String> WORDS = Set.copyOf(Stream.concat(ExpressionFunction.NAMES.stream(),
                 Stream.of("clock", "pi", "at", "NaN", "Infinity")).toList());
-    }
-
-    double clock() {
-        return clock;
-    }
-
-    /** Whether some number of the file used the clock, directly or through a {@code let}. */
-    boolean clockUsed() {
-        return clockUsed;
-    }
-
-    void noteClockUse() {
-        clockUsed = true;
     }
 
     /** The name {@code word} written at byte {@code start}, or null if it is not known (yet). */

@@ -92,9 +92,9 @@ final class NumberReader {
         cursor.pos = tokenStart;
         Expression read = expressions().read();
         String text = cursor.source.text(tokenStart, cursor.pos);
-        String at = read.usesClock() ? " at clock = " + ClockText.format(names.clock()) : "";
+        String at = read.usesClock() ? " at clock = " + ClockText.format(names.clock) : "";
         try {
-            exact = read.value(names.clock());
+            exact = read.value(names.clock);
         } catch (Expression.NotFinite e) {
             String part = e.why != null ? e.why : "is " + (Double.isNaN(e.value) ? "not a number (NaN)" : "infinite");
             int place = e.part instanceof Expression.Operation operation ? operation.opOffset() : e.part.start();

@@ -65,7 +65,7 @@ final class ObjReader {
             try {
                 readLine();
             } catch (StatementError e) {
-                errors.addAll(e.errors());
+                errors.addAll(e.errors);
             }
             skipToNextLine();
         }

@@ -13,20 +13,16 @@ import rtd.math.Matrix4;
 import rtd.scene.Light;
 
 /**
- * What the statements of a scene file make, as {@link StatementReader} reads them (it is their
- * {@link Statement.Output}), before {@link SceneParser} checks what only the whole file can tell:
+ * What the statements of a scene file make, as {@link StatementReader} reads them (each builder of the
+ * {@link Grammar} gives its values here), before {@link SceneParser} checks what only the whole file can tell:
  * the objects, each {@code ambient}, camera and definition of a name with its place (a scene may have
  * only one of each, or one per name), the objects that wait for a name defined further down, and the
  * mistakes found.
  */
-final class SceneContents implements Statement.Output {
+final class SceneContents {
 
     /** A value with the place of the statement that gave it. */
     record Located<T>(T value, SceneError place) {
-    }
-
-    /** A material and the name it is defined under, as {@link MaterialWarnings} reads it. */
-    record Named(String name, Material material) {
     }
 
     /**
@@ -110,20 +106,17 @@ final class SceneContents implements Statement.Output {
         return all;
     }
 
-    @Override
-    public void ambient(Color colour) {
+    void ambient(Color colour) {
         ambients.add(new Located<>(colour, values.placeOfStatement()));
         recorder().ambient(values);
     }
 
-    @Override
-    public void camera(ICamera camera) {
+    void camera(ICamera camera) {
         cameras.add(new Located<>(camera, values.placeOfStatement()));
         recorder().camera(values);
     }
 
-    @Override
-    public void light(Light light) {
+    void light(Light light) {
         lights.add(light);
         if (light.area() == null) {
             recorder().part(light, values);
@@ -132,33 +125,31 @@ final class SceneContents implements Statement.Output {
         }
     }
 
-    @Override
-    public void object(IGeometry object) {
+    /** One object, at the statement's place among the objects. */
+    void object(IGeometry object) {
         IGeometry dressed = values.dress(object);
         into.add(dressed);
         recorder().part(dressed, values);
     }
 
-    @Override
-    public void objects(List<IGeometry> more) {
+    /** Several objects, in order, at the statement's place: a mesh's triangles. */
+    void objects(List<IGeometry> more) {
         for (IGeometry object : more) {
             into.add(values.dress(object));
         }
         recorder().unwritten(values);
     }
 
-    @Override
-    public void material(String name, Material material) {
+    void material(String name, Material material) {
         define(name, "material", material, null);
     }
 
-    @Override
-    public void pattern(String name, Pattern pattern, String transform) {
+    /** A pattern; its transform's name (or null) is resolved when the file is read. */
+    void pattern(String name, Pattern pattern, String transform) {
         define(name, "pattern", pattern, transform);
     }
 
-    @Override
-    public void transform(String name, Matrix4 transform) {
+    void transform(String name, Matrix4 transform) {
         define(name, "transform", transform, null);
     }
 
@@ -168,19 +159,12 @@ final class SceneContents implements Statement.Output {
         recorder().unwritten(values);
     }
 
-    /** The materials, as {@link MaterialWarnings} reads them. */
-    List<Located<Named>> materials() {
-        return definitions.stream().filter(d -> d.value() instanceof Material)
-                .map(d -> new Located<>(new Named(d.name(), (Material) d.value()), d.place())).toList();
-    }
-
     /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */
     private ClockedScene.Recorder recorder() {
         return values.expressionNames.recorder;
     }
 
-    @Override
-    public void warningIfLit(SceneError warning) {
+    void warningIfLit(SceneError warning) {
         litWarnings.add(warning);
     }
 
@@ -194,23 +178,10 @@ final class SceneContents implements Statement.Output {
         return null;
     }
 
-    /** Keeps an object that names a material, at its place among the objects. */
-    void addPending(StatementValues pendingValues) {
-        pending.add(new Pending(objects.size(), pendingValues));
-    }
-
-    /** Notes a line that starts with a line number; {@code error} is the mistake if it is the first. */
-    void noteLineNumber(SceneError error) {
-        if (firstLineNumber == null) {
-            firstLineNumber = error;
-        }
-        lineNumbers++;
-    }
-
     /** Keeps the errors of a statement, ordered by its place. */
     void addErrors(StatementError e) {
-        for (SceneError error : e.errors()) {
-            errors.add(new Found(e.place().line(), e.place().column(), error));
+        for (SceneError error : e.errors) {
+            errors.add(new Found(e.place.line(), e.place.column(), error));
         }
     }
 }

@@ -25,7 +25,6 @@ public final class SceneException extends Exception {
         return errors;
     }
 
-    /** Every error, formatted, one after the other. */
     public String report() {
         String all = errors.stream().map(SceneError::format).collect(Collectors.joining("\n"));
         String count = errors.size() == 1 ? "1 error" : errors.size() + " errors";

@@ -35,7 +35,7 @@ public final class SceneFile {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
-        return new SceneFile(name, SceneFileReader.read(path), folder);
+        return new SceneFile(name, SceneFileReader.read(path, SceneIO.MAX_SCENE_BYTES), folder);
     }
 
     /** The scene file at {@code path}, its meshes found from its folder. */
@@ -53,7 +53,6 @@ public final class SceneFile {
         return new SceneFile(name, bytes, folder);
     }
 
-    /** The size of the file in bytes. */
     public int size() {
         return bytes.length;
     }
@@ -82,7 +81,7 @@ public final class SceneFile {
         try (SourceText source = new SourceText(name, bytes, folder, meshes)) {
             return SceneParser.parse(source, names, warnings);
         } finally { // a failed parse tells too: a value may break its rule at some clocks only
-            usesClock |= names.clockUsed();
+            usesClock |= names.clockUsed;
         }
     }
 

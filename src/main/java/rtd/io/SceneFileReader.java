@@ -22,12 +22,10 @@ final class SceneFileReader {
     private SceneFileReader() {
     }
 
-    /** The bytes of {@code path}: all of them, or up to and including the chunk of the first non-text byte. */
-    static byte[] read(Path path) throws IOException {
-        return read(path, SceneIO.MAX_SCENE_BYTES);
-    }
-
-    /** As {@link #read(Path)}, with a limit of {@code limit} bytes (at most {@link SceneIO#MAX_SCENE_BYTES}). */
+    /**
+     * The bytes of {@code path}, at most {@code limit}: all of them, or up to and including the chunk of the first
+     * non-text byte.
+     */
     static byte[] read(Path path, long limit) throws IOException {
         if (!Files.isRegularFile(path)) { // devices, FIFOs: of unknown length
             try (InputStream in = Files.newInputStream(path)) {

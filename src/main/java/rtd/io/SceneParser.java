@@ -81,8 +81,8 @@ final class SceneParser {
         }
         if (warnings != null) {
             boolean lit = !contents.lights.isEmpty();
-            warnings.addAll(MaterialWarnings.of(contents.materials(), named, lit));
-            warnings.addAll(names.unused(named, MAX_ERRORS));
+            warnings.addAll(names.materialWarnings(named, lit));
+            warnings.addAll(names.unused(named));
             if (lit) {
                 List<SceneError> acne = new ArrayList<>(contents.litWarnings);
                 acne.sort(Comparator.comparingInt(SceneError::line));

@@ -96,7 +96,6 @@ final class SourceText implements AutoCloseable {
         return new String(bytes, start, cut - start, StandardCharsets.UTF_8) + "\u2026";
     }
 
-    /** What stands at {@code offset}, for "found …" in a message. */
     String describe(int offset, int lineStart) {
         if (offset >= bytes.length) {
             return offset > lineStart ? "the end of the line" : "the end of the file";

@@ -2,13 +2,6 @@ package rtd.io;
 
 import java.util.List;
 import java.util.stream.Collectors;
-import rtd.camera.ICamera;
-import rtd.geometry.IGeometry;
-import rtd.geometry.Material;
-import rtd.geometry.Pattern;
-import rtd.image.Color;
-import rtd.math.Matrix4;
-import rtd.scene.Light;
 
 /**
  * One statement of the {@link Grammar}: its keyword, its groups, the optional groups that may follow them
@@ -48,7 +41,6 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return repeatsLast ? Integer.MAX_VALUE : optional.size();
     }
 
-    /** The {@code k}-th optional group read (from 0). */
     Group optional(int k) {
         return optional.get(Math.min(k, optional.size() - 1));
     }
@@ -56,32 +48,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
     /** Checks the values (a broken rule is an error at its value) and gives what the statement makes to {@code out}. */
     @FunctionalInterface
     interface Builder {
-        void build(StatementValues values, Output out) throws StatementError;
-    }
-
-    /** Where the values that statements make go: the scene being read. */
-    interface Output {
-        void ambient(Color colour);
-
-        void camera(ICamera camera);
-
-        /** One object, at the statement's place among the objects. */
-        void object(IGeometry object);
-
-        /** Several objects, in order, at the statement's place: a mesh's triangles. */
-        void objects(List<IGeometry> objects);
-
-        void material(String name, Material material);
-
-        /** A pattern; its transform's name (or null) is resolved when the file is read. */
-        void pattern(String name, Pattern pattern, String transform);
-
-        void transform(String name, Matrix4 transform);
-
-        void light(Light light);
-
-        /** A warning about the statement that holds only if the scene has a light (a shaded scene). */
-        void warningIfLit(SceneError warning);
+        void build(StatementValues values, SceneContents out) throws StatementError;
     }
 
     /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)[:(material)][:(transform)]}. */

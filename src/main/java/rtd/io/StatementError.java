@@ -9,8 +9,8 @@ import java.util.List;
 final class StatementError extends Exception {
 
     private static final long serialVersionUID = 1L;
-    private final transient SceneError place;
-    private final transient List<SceneError> errors;
+    final transient SceneError place;
+    final transient List<SceneError> errors;
 
     /** One error, which is also where it is ordered. */
     StatementError(SceneError error) {
@@ -25,13 +25,5 @@ final class StatementError extends Exception {
         super(errors.isEmpty() ? place.message() : errors.get(0).message(), null, false, false);
         this.place = place;
         this.errors = List.copyOf(errors);
-    }
-
-    SceneError place() {
-        return place;
-    }
-
-    List<SceneError> errors() {
-        return errors;
     }
 }

@@ -1,6 +1,7 @@
 package rtd.io;
 
 import java.util.List;
+import java.util.stream.IntStream;
 import rtd.geometry.Material;
 
 /**
@@ -17,15 +18,11 @@ final class StatementReader {
     private final SceneContents contents;
     /** Where the statement being read starts, for a later message about it. */
     private int statementStart;
-    /** The statement being read, once its keyword is known; null before. */
     private Statement current;
     /** Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
     private boolean inBlockComment;
 
-    /**
-     * A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}; its
-     * expressions use {@code names}.
-     */
+    /** A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}. */
     StatementReader(SourceText source, int start, SceneContents contents, Names names) {
         this.cursor = new LineCursor(source, start);
         WrittenGroups written = new WrittenGroups(16, 8);
@@ -87,11 +84,12 @@ final class StatementReader {
             String name = values.name(groups.size());
             Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
             if (above == null) {
-                contents.addPending(values.copy()); // its names are resolved when the whole file is read
+                // its names are resolved when the whole file is read
+                contents.pending.add(new SceneContents.Pending(contents.objects.size(), values.copy()));
                 return;
             }
             contents.namedAtOnce.add(name);
-            values.useNames(DefinedNames.ObjectNames.NONE.with(above));
+            values.useNames(new DefinedNames.ObjectNames(above, null, null, List.of()));
         }
         statement.builder().build(values, contents);
     }
@@ -127,20 +125,18 @@ final class StatementReader {
         if (afterLineNumber || !atLineNumber()) {
             throw cursor.error(statementStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
         }
-        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + word + "'",
-                Hints.LINE_NUMBERS).place());
+        if (contents.lineNumbers++ == 0) {
+            contents.firstLineNumber = cursor.error(statementStart, "the line starts with a line number, '" + word + "'",
+                    Hints.LINE_NUMBERS).place;
+        }
         cursor.skipBlanks();
         return cursor.atEndOfStatement() ? null : readKeyword(true);
     }
 
     /** Whether the word from {@link #statementStart} to the cursor is a line number: digits, then a blank or the end. */
     private boolean atLineNumber() {
-        for (int i = statementStart; i < cursor.pos; i++) {
-            if (cursor.bytes[i] < '0' || cursor.bytes[i] > '9') {
-                return false;
-            }
-        }
-        return cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]);
+        boolean digits = IntStream.range(statementStart, cursor.pos).allMatch(i -> Character.isDigit(cursor.bytes[i]));
+        return digits && (cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]));
     }
 
     /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
@@ -172,7 +168,7 @@ final class StatementReader {
         Statement statement = Grammar.find(cursor.bytes, start, end);
         int after = cursor.afterSpaces(end);
         return statement != null && after < cursor.bytes.length && cursor.bytes[after] == ':'
-                ? Hints.oneStatementPerLine(statement.keyword()) : null;
+                ? "one statement per line: start a new line before '" + statement.keyword() + "'" : null;
     }
 
     // ---- comments as other languages write them ---------------------------------------------

@@ -52,7 +52,6 @@ final class StatementValues {
         return copy;
     }
 
-    /** Sets what the object's names mean (Part III: a material, a pattern, a transform). */
     void useNames(DefinedNames.ObjectNames names) {
         this.names = names;
     }
@@ -94,7 +93,6 @@ final class StatementValues {
         return groups.named;
     }
 
-    /** Whether a value of this statement is an expression (Part III). */
     boolean anyExpression() {
         return groups.anyExpression;
     }
@@ -119,7 +117,6 @@ final class StatementValues {
         return groups.trees[groups.firsts[g] + k];
     }
 
-    /** The name or path that group {@code g} holds, as written. */
     String name(int g) {
         return written(groups.firsts[g]);
     }
@@ -146,12 +143,12 @@ final class StatementValues {
 
     /** Where value {@code k} of group {@code g} stands, as an error with no message yet. */
     SceneError placeOfValue(int g, int k) {
-        return errorAtValue(g, k, "", null).place();
+        return errorAtValue(g, k, "", null).place;
     }
 
     /** Where the statement's keyword stands, as an error with no message yet. */
     SceneError placeOfStatement() {
-        return errorAt(statementStart, "", null).place();
+        return errorAt(statementStart, "", null).place;
     }
 
     // ---- the rules --------------------------------------------------------------------------
@@ -192,7 +189,6 @@ final class StatementValues {
                 + plain(high) + " " + unit + ", found " + written(i), help);
     }
 
-    /** The three numbers of group {@code g} as a vector of finite numbers. */
     Vector3f vector(int g) throws StatementError {
         int i = groups.firsts[g];
         for (int k = 0; k < 3; k++) {
@@ -273,6 +269,6 @@ final class StatementValues {
     private String written(int i) {
         String text = source.text(groups.starts[i], groups.ends[i]);
         Expression tree = groups.trees[i];
-        return tree == null ? text : ClockText.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock());
+        return tree == null ? text : ClockText.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock);
     }
 }

@@ -40,7 +40,6 @@ final class WrittenGroups {
         opens = new int[groups];
     }
 
-    /** Forgets the groups of the last statement. */
     void clear() {
         if (anyExpression) { // only then does a tree need forgetting: a plain number's stays null
             Arrays.fill(trees, 0, count, null);
@@ -80,7 +79,6 @@ final class WrittenGroups {
         anyExpression = true;
     }
 
-    /** Whether the current group already holds the key with index {@code key}. */
     boolean lastHasKey(int key) {
         for (int i = firsts[groupCount - 1]; i < count; i++) {
             if (keys[i] == key) {
