@@ -1,8 +1,10 @@
 package rtd.io;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
@@ -47,6 +49,8 @@ final class SceneContents {
     final List<Located<ICamera>> cameras = new ArrayList<>();
     /** The materials, patterns and transforms, in file order. */
     final List<Definition> definitions = new ArrayList<>();
+    /** Each material's first definition by name, asked for each object: a file may define many transforms too. */
+    private final Map<String, Material> materials = new HashMap<>();
     final List<Light> lights = new ArrayList<>();
     final List<Found> errors = new ArrayList<>();
     /** Warnings that hold only if the scene has a light, in the order their statements were built. */
@@ -156,6 +160,9 @@ final class SceneContents {
     private void define(String name, String kind, Object value, String transform) {
         SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
         definitions.add(new Definition(name, kind, value, values.placeOfValue(0, 0), transform, transformPlace));
+        if (value instanceof Material material) {
+            materials.putIfAbsent(name, material);
+        }
         recorder().unwritten(values);
     }
 
@@ -170,12 +177,7 @@ final class SceneContents {
 
     /** The material {@code name} if it is defined above the line being read, else null. */
     Material materialAbove(String name) {
-        for (Definition definition : definitions) { // a loop: asked for each object of a large file
-            if (definition.value() instanceof Material material && definition.name().equals(name)) {
-                return material;
-            }
-        }
-        return null;
+        return materials.get(name);
     }
 
     /** Keeps the errors of a statement, ordered by its place. */
