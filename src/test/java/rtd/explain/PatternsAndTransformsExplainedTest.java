@@ -52,4 +52,18 @@ class PatternsAndTransformsExplainedTest {
         assertThat(text).contains("colour from its pattern, at under = P − ε·N", "stripes pattern, a = (255|255|255)",
                 "floor(x) = 0: even, so a = (255|255|255)");
     }
+
+    @Test
+    void aMovedCylinderShowsItsOwnSideTestInItsSpace() throws SceneException {
+        // pixel (12, 10) of 20 × 20 at zoom 1: O = (2|0|20), R = (0|0|-1); translate 2|0|0 gives M⁻¹O = (0|0|20).
+        // The axis is y from A = (0|-1|0), its middle (0|0|0): t0 = 20, O' = (0|0|0), w = (0|1|0), h = (0|1|0):
+        // a = 1 − 0 = 1, b = 2·(0 − 1·0) = 0, c = 1 − 1 − 1 = -1, b² − 4ac = 4, t = 20 ± 1
+        Scene scene = scene("orthographic_camera:(0|0|20):(0|0|-1):(1)", "transform:(right):(translate 2|0|0)",
+                "cylinder:(0|-1|0):(0|1|0):(1):(255|0|0):(right)");
+        String text = PixelExplanation.of(scene, 12, 10, 20, 20);
+        assertThat(text).contains("#1 cylinder, transformed by M = [1 0 0 2; 0 1 0 0; 0 0 1 0; 0 0 0 1]",
+                "M⁻¹O = (0|0|20)", "t0 = (M − O)·R/(R·R) = 20", "a = R·R − (h·R)² = 1", "c = w·w − (h·w)² − r² = -1",
+                "discriminant b² − 4ac = 4 ≥ 0", "root t = t0 + t' = 19", "root t = t0 + t' = 21",
+                "nearest: t = 19 on the side: a hit", "P = O + t·R on the world's ray, at the same t = 19");
+    }
 }
