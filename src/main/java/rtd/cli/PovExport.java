@@ -27,11 +27,13 @@ final class PovExport {
     /** Writes {@code scene} at {@code width × height} to {@code target}; answers the lines that say how to render it. */
     static String still(Scene scene, OutputTarget target, int width, int height) throws FileError {
         String name = target.spelt().getFileName().toString();
+        String pov;
         try {
-            target.writeText(PovScene.of(scene, width, height, name));
+            pov = PovScene.of(scene, width, height, name);
         } catch (IllegalArgumentException e) {
             throw cannotExport(e);
         }
+        target.writeText(pov); // outside the catch: a failed write is not a scene POV-Ray cannot show
         return "rtd: wrote " + target.spelt() + "; render it with POV-Ray (apt-get install povray):\n" + cd(target)
                 + PovScene.command(name, name.replaceAll("(?i)\\.pov$", "") + "-pov.png", width, height);
     }
