@@ -4,6 +4,8 @@ import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -87,7 +89,12 @@ public final class SceneIO {
 
     /** Writes {@code text} in UTF-8 to {@code output} as {@link #writeImage} writes a picture: whole, or not at all. */
     public static void writeText(String text, Path output) throws IOException {
-        TemporaryFiles.replace(output, out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
+        // Encoded as it is written, not as one array: the export of a large scene is tens of megabytes.
+        TemporaryFiles.replace(output, out -> {
+            Writer writer = new OutputStreamWriter(out, StandardCharsets.UTF_8);
+            writer.write(text);
+            writer.flush();
+        });
     }
 
     /**
