@@ -80,8 +80,9 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                 LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
                 Bvh bvh = join(tree);
                 return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(grid)
-                        + ", " + (lights.count() == 0 ? "no light grid" : StatsReport.count(lights.count(), "light grid")
-                        + " of " + StatsReport.count(lights.entries(), "entry", "entries")) + ", and BVH of "
+                        + ", " + (lights.count() == 0 ? "no light grid"
+                                : StatsReport.count(lights.count(), "light grid") + " of "
+                                + StatsReport.count(lights.entries(), "entry", "entries")) + ", and BVH of "
                         + StatsReport.count(bvh.nodeCount(), "node"), true);
             }
             case BVH -> {

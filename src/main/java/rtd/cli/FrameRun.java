@@ -67,7 +67,8 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             for (int i = plan.first(); i <= plan.last(); i++) {
                 int done = i - plan.first();
                 display.show(ProgressDisplay.Phase.counted(String.format("frame %d (%d to %d), clock %s", i,
-                        plan.first(), plan.last(), ClockText.format(plan.clock(i))), () -> done / (double) plan.count()));
+                        plan.first(), plan.last(), ClockText.format(plan.clock(i))),
+                        () -> done / (double) plan.count()));
                 if (picture == null || file.usesClock()) {
                     picture = renderer.draw(i == plan.first() ? first : frame(file, i, null));
                 }
@@ -87,8 +88,8 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         } catch (SceneException e) {
             throw new SceneException(e.errors().stream().map(error -> error.message().contains("clock =") ? error
                     : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
-                            + ", at clock = " + ClockText.format(clock) + ")", error.sourceLine(), error.help())).toList(),
-                    false);
+                            + ", at clock = " + ClockText.format(clock) + ")", error.sourceLine(), error.help()))
+                    .toList(), false);
         }
     }
 
@@ -166,14 +167,18 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             }
         }
 
-        /** What was written, once every frame was: "60 frames, orbit-000.png to orbit-059.png", "1 frame, orbit-003.png". */
+        /**
+         * What was written, once every frame was: "60 frames, orbit-000.png to orbit-059.png", "1 frame,
+         * orbit-003.png".
+         */
         String describe() {
             if (gifTarget != null) {
                 return gifTarget.spelt() + " (" + plan.count() + " frames, a delay of " + plan.delayHundredths()
                         + " hundredths of a second each)";
             }
             return targets.size() == 1 ? "1 frame, " + targets.get(0).spelt()
-                    : targets.size() + " frames, " + targets.get(0).spelt() + " to " + targets.get(targets.size() - 1).spelt();
+                    : targets.size() + " frames, " + targets.get(0).spelt() + " to "
+                            + targets.get(targets.size() - 1).spelt();
         }
 
         /** Waits, oldest first, until at most {@code most} frames wait to be written. */
@@ -188,7 +193,8 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                     if (e.getCause() instanceof FileError error) {
                         throw error;
                     }
-                    throw e.getCause() instanceof RuntimeException runtime ? runtime : new IllegalStateException(e.getCause());
+                    throw e.getCause() instanceof RuntimeException runtime ? runtime
+                            : new IllegalStateException(e.getCause());
                 }
             }
         }

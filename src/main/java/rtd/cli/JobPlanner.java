@@ -30,11 +30,11 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
     /** Each scene's job, in order; one picture name cannot serve several scenes. */
     List<Job> jobs(List<Path> scenes) {
         List<SceneSource> sources = scenes.stream().map(SceneSource::of).toList();
-        RtdCommand.refuse(commandLine, output != null && sources.size() > 1, "-o names one picture, but " + sources.size()
-                + " scenes were given; leave -o out to write each picture beside its scene");
+        RtdCommand.refuse(commandLine, output != null && sources.size() > 1, "-o names one picture, but "
+                + sources.size() + " scenes were given; leave -o out to write each picture beside its scene");
         RtdCommand.refuse(commandLine, output == null && sources.stream().anyMatch(SceneSource::stdin), "the scene '-' "
-                + "comes from standard input, which gives no name for the picture; name it with -o, such as -o out.png, "
-                + "or -o - for standard output");
+                + "comes from standard input, which gives no name for the picture; name it with -o, such as "
+                + "-o out.png, or -o - for standard output");
         List<Job> jobs = new ArrayList<>();
         Map<Path, SceneSource> writers = new HashMap<>();
         Map<Object, SceneSource> files = new HashMap<>();

@@ -46,20 +46,21 @@ public final class MotionOptions {
                     + "--frames N too");
             return null;
         }
-        RtdCommand.refuse(commandLine, clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock is "
-                + "for one picture");
+        RtdCommand.refuse(commandLine, clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock "
+                + "is for one picture");
         RtdCommand.refuse(commandLine, replacing != null, replacing + " works on one picture, not on --frames; give "
                 + "--clock C for the moment you want");
         RtdCommand.oneSceneFile(commandLine, "--frames", scenes);
         RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
-                + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or -o movie.gif");
+                + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or "
+                + "-o movie.gif");
         if (subset == null) {
             return new FramePlan(frames, 0, frames - 1, fps == null ? 24 : fps);
         }
         Matcher matcher = Pattern.compile("\\s*(\\d{1,9})\\s*-\\s*(\\d{1,9})\\s*").matcher(subset);
         String frameRange = "from 0 to " + (frames - 1) + " (--frames " + frames + ")";
-        RtdCommand.refuse(commandLine, !matcher.matches(), "--subset '" + subset + "': give the frames as A-B, two whole "
-                + "numbers " + frameRange + ", such as --subset 0-" + (frames - 1) / 2);
+        RtdCommand.refuse(commandLine, !matcher.matches(), "--subset '" + subset + "': give the frames as A-B, two "
+                + "whole numbers " + frameRange + ", such as --subset 0-" + (frames - 1) / 2);
         int first = Integer.parseInt(matcher.group(1));
         int last = Integer.parseInt(matcher.group(2));
         RtdCommand.refuse(commandLine, first > last || last >= frames, "--subset " + first + "-" + last + ": "

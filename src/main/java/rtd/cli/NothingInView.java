@@ -69,7 +69,8 @@ final class NothingInView {
         if (forward != null && scene.objects().stream().allMatch(o -> o instanceof Plane)) {
             return planesMissed(scene.objects().size(), camera, forward);
         }
-        List<IGeometry> objects = scene.objects().stream().filter(o -> !(o instanceof Plane)).toList(); // no ray met a plane
+        // no ray met a plane
+        List<IGeometry> objects = scene.objects().stream().filter(o -> !(o instanceof Plane)).toList();
         long behind = forward == null ? 0 : objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward))
                 .count();
         if (behind == objects.size()) {
@@ -160,6 +161,7 @@ final class NothingInView {
         Vector3f b = box.max();
         return Stream.of(a, new Vector3f(b.x(), a.y(), a.z()), new Vector3f(a.x(), b.y(), a.z()),
                 new Vector3f(a.x(), a.y(), b.z()), new Vector3f(b.x(), b.y(), a.z()), new Vector3f(b.x(), a.y(), b.z()),
-                new Vector3f(a.x(), b.y(), b.z()), b).mapToDouble(c -> c.subtract(origin).dot(axis)).summaryStatistics();
+                new Vector3f(a.x(), b.y(), b.z()), b).mapToDouble(c -> c.subtract(origin).dot(axis))
+                .summaryStatistics();
     }
 }

@@ -101,9 +101,9 @@ final class OptionValues {
             String encoding = System.getProperty("sun.jnu.encoding", System.getProperty("file.encoding", "?"));
             String shown = "the name '" + value.replace('\uFFFD', '?') + "' cannot be used: ";
             throw new TypeConversionException(shown + (encoding.equalsIgnoreCase("UTF-8") || encoding.equalsIgnoreCase(
-                    "UTF8") ? "it is not valid UTF-8 (each '?' stands for bytes that are not); rename the file to a UTF-8 "
-                    + "name" : "it has characters that this system's encoding, " + encoding + ", cannot represent; run "
-                    + "rtd under a UTF-8 locale, such as LC_ALL=C.UTF-8"));
+                    "UTF8") ? "it is not valid UTF-8 (each '?' stands for bytes that are not); rename the file to a "
+                    + "UTF-8 name" : "it has characters that this system's encoding, " + encoding + ", cannot "
+                    + "represent; run rtd under a UTF-8 locale, such as LC_ALL=C.UTF-8"));
         }
     }
 

@@ -24,7 +24,9 @@ final class PovExport {
     private PovExport() {
     }
 
-    /** Writes {@code scene} at {@code width × height} to {@code target}; answers the lines that say how to render it. */
+    /**
+     * Writes {@code scene} at {@code width × height} to {@code target}; answers the lines that say how to render it.
+     */
     static String still(Scene scene, OutputTarget target, int width, int height) throws FileError {
         String name = target.spelt().getFileName().toString();
         String pov;

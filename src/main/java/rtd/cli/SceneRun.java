@@ -48,8 +48,8 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
 
             Accelerator.Kind kind = Accelerator.choose(scene, options.engine());
             display.show(ProgressDisplay.Phase.of(kind.building));
-            Accelerator accelerator = Accelerator.build(kind, scene, options.width(), options.height(), options.samples(),
-                    options.threads(), kept);
+            Accelerator accelerator = Accelerator.build(kind, scene, options.width(), options.height(),
+                    options.samples(), options.threads(), kept);
             stats.endPhase("build");
 
             warn(scene, source, options, display);

@@ -60,8 +60,9 @@ public final class TeachingOptions {
             RtdCommand.refuse(commandLine, options.scene().toString().equals("-"), option + " needs a scene file; it "
                     + "cannot work on standard input ('-')");
         }
-        RtdCommand.refuse(commandLine, watch && OutputTarget.DASH.equals(options.output()), "--watch writes the picture "
-                + "again at each save, which cannot go to standard output ('-o -'); give a file, such as -o out.png");
+        RtdCommand.refuse(commandLine, watch && OutputTarget.DASH.equals(options.output()),
+                "--watch writes the picture again at each save, which cannot go to standard output ('-o -'); give a "
+                + "file, such as -o out.png");
         if (watch) {
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
@@ -145,8 +146,8 @@ public final class TeachingOptions {
     /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
     private OutputTarget viewTarget(RenderOptions options, CommandLine commandLine) throws FileError {
         Path byDefault = JobPlanner.defaultOutput(options.scene(), "-" + view);
-        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--view writes its picture to a file; "
-                + "-o - (standard output) is for the rendered picture only: give a file name, such as "
+        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--view writes its picture to a "
+                + "file; -o - (standard output) is for the rendered picture only: give a file name, such as "
                 + byDefault.getFileName());
         OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
                 "-o", commandLine);

@@ -151,7 +151,9 @@ final class ShadingExplanation implements ShadingObserver {
         text.out();
     }
 
-    /** One sample of an area light: the first opens its lines, each of at most 16 has a line, the last counts the lit. */
+    /**
+     * One sample of an area light: the first opens its lines, each of at most 16 has a line, the last counts the lit.
+     */
     private void areaSample(Light light, boolean shadowed, LightTerms terms) {
         AreaLight area = light.area();
         if (samplesSeen == 0) {

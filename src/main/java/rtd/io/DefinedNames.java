@@ -78,7 +78,8 @@ final class DefinedNames {
             if (definition.value() instanceof Pattern p && defined.get(definition.name()) == p) {
                 Matrix4 matrix = definition.transform() == null ? Matrix4.IDENTITY
                         : lookUp(definition.transform(), "transform", definition.transformPlace(), errors);
-                defined.put(definition.name(), new Pattern(p.kind(), p.a(), p.b(), matrix == null ? Matrix4.IDENTITY : matrix));
+                defined.put(definition.name(), new Pattern(p.kind(), p.a(), p.b(),
+                        matrix == null ? Matrix4.IDENTITY : matrix));
             }
         }
     }
@@ -127,8 +128,9 @@ final class DefinedNames {
         List<Definition> materials = definitions.stream().filter(d -> d.value() instanceof Material).toList();
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !materials.isEmpty()) {
-            warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so it is "
-                    + "drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
+            warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so it "
+                    + "is drawn in flat colours, as in the paper",
+                    "add a light, such as light:(0|10|10):(255|255|255)"));
         }
         for (Definition definition : materials) {
             String name = definition.name();
@@ -158,7 +160,9 @@ final class DefinedNames {
     private static SceneError atTheIor(SceneError name) {
         Matcher key = IOR_KEY.matcher(name.sourceLine() == null ? "" : name.sourceLine());
         return key.find(Math.max(0, name.column() - 1))
-                ? new SceneError(name.file(), name.line(), key.start() + 1, name.message(), name.sourceLine(), name.help()) : name;
+                ? new SceneError(name.file(), name.line(), key.start() + 1, name.message(), name.sourceLine(),
+                        name.help())
+                : name;
     }
 
     /**

@@ -41,7 +41,8 @@ final class Directions {
                             + ") looks along -z");
         }
         if (!computable(direction)) {
-            throw v.errorAtValue(g, 0, "the point " + groupText(v, g) + " is too " + (tooLong(direction) ? "far from" : "near")
+            throw v.errorAtValue(g, 0, "the point " + groupText(v, g) + " is too "
+                    + (tooLong(direction) ? "far from" : "near")
                     + " the camera's position to compute the view direction in float",
                     "give a point at a distance near 1 to 1000 from the camera");
         }
@@ -57,7 +58,8 @@ final class Directions {
         }
         if (!computable(axis)) {
             throw v.errorAtGroup(g, "the " + shape + "'s end points are too " + (tooLong(axis) ? "far apart"
-                    : "close together") + " to compute with in float", "give end points a distance of about 1e-15 to 1e15 apart");
+                    : "close together") + " to compute with in float",
+                    "give end points a distance of about 1e-15 to 1e15 apart");
         }
     }
 

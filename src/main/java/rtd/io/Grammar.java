@@ -161,7 +161,8 @@ final class Grammar {
         if (sphere.radius() >= FLOOR_RADIUS) {
             out.warningIfLit(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
                     + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
-                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at y = 0").place);
+                    "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at "
+                    + "y = 0").place);
         }
         return sphere;
     }
@@ -231,7 +232,9 @@ final class Grammar {
                 "without its minus sign: " + v.written(g, 0).substring(1));
     }
 
-    /** Number {@code k} of group {@code g}: an area light's samples along one edge, 1 to {@link AreaLight#MOST_SAMPLES}. */
+    /**
+     * Number {@code k} of group {@code g}: an area light's samples along one edge, 1 to {@link AreaLight#MOST_SAMPLES}.
+     */
     private static int samples(StatementValues v, int g, int k, String name) throws StatementError {
         float value = v.number(g, k);
         if (value >= 1 && value <= AreaLight.MOST_SAMPLES && value == Math.rint(value)) {

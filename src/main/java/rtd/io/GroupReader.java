@@ -126,7 +126,8 @@ final class GroupReader {
         cursor.skipBlanks();
         if (!cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected ')' after '" + cursor.source.text(start, nameEnd) + "' in "
-                    + group.of(statement) + ", found " + cursor.describe(cursor.pos), Hints.forName(cursor, group, start));
+                    + group.of(statement) + ", found " + cursor.describe(cursor.pos),
+                    Hints.forName(cursor, group, start));
         }
         cursor.pos++;
     }

@@ -86,7 +86,8 @@ final class Hints {
                     + "delete it";
         }
         boolean looksLikeSpace = Character.isSpaceChar(codePoint) && !Character.getName(codePoint).contains("ZERO WIDTH");
-        return String.format("U+%04X", codePoint) + (looksLikeSpace ? " looks like a space but is not one: type a plain space instead"
+        return String.format("U+%04X", codePoint) + (looksLikeSpace
+                ? " looks like a space but is not one: type a plain space instead"
                 : " cannot be seen but is there: delete it") + " (text copied from a PDF or a web page brings it)";
     }
 

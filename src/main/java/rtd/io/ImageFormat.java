@@ -40,7 +40,8 @@ public record ImageFormat(String extension) {
     /** The extensions (lower case, sorted) whose format {@code javax.imageio} can write an RGB picture in. */
     public static List<String> writableExtensions() {
         return Arrays.stream(ImageIO.getWriterFileSuffixes()).map(suffix -> suffix.toLowerCase(Locale.ROOT))
-                .filter(extension -> !extension.isEmpty() && writerFor(extension).isPresent()).distinct().sorted().toList();
+                .filter(extension -> !extension.isEmpty() && writerFor(extension).isPresent())
+                .distinct().sorted().toList();
     }
 
     /** The extension of the last name of {@code path} ("a.b.PNG" gives "png"); none for "a" and ".hidden". */

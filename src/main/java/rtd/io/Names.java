@@ -17,7 +17,9 @@ final class Names {
 
     final double clock;
     private final Map<String, Expression> defined = new HashMap<>();
-    /** The line of each name's {@code let}, those with a mistake among them (a broken name is not in {@link #defined}). */
+    /**
+     * The line of each name's {@code let}, those with a mistake among them (a broken name is not in {@link #defined}).
+     */
     private final Map<String, Integer> lines = new HashMap<>();
     /** Whether some number of the file used the clock, directly or through a {@code let}. */
     boolean clockUsed;

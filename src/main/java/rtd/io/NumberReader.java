@@ -33,7 +33,9 @@ final class NumberReader {
         return expressions;
     }
 
-    /** Reads one number, or an expression, at the cursor, and keeps it in the written groups with {@code key} (or −1). */
+    /**
+     * Reads one number, or an expression, at the cursor, and keeps it in the written groups with {@code key} (or −1).
+     */
     void readAndKeep(int key) throws StatementError {
         float value = read();
         written.add(value, tokenStart, cursor.pos, key);

@@ -99,7 +99,8 @@ final class SceneContents {
             named.addAll(resolved.names());
             values = object.values();
             values.useNames(resolved);
-            into = errors.size() > before ? new ArrayList<>() : all; // with a name not right, the object is only checked
+            // with a name not right, the object is only checked
+            into = errors.size() > before ? new ArrayList<>() : all;
             try {
                 values.statement().builder().build(values, this);
             } catch (StatementError e) {

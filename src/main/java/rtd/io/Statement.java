@@ -63,7 +63,8 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         if (optional.isEmpty()) {
             return String.valueOf(groups.size());
         }
-        return groups.size() + (takesMaterial() ? ", or up to " + (groups.size() + 2) + " with a material and a transform"
+        return groups.size() + (takesMaterial()
+                ? ", or up to " + (groups.size() + 2) + " with a material and a transform"
                 : ", or " + (groups.size() + optional.size()) + " with a " + optional.get(0).meaning());
     }
 }

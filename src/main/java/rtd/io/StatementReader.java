@@ -126,8 +126,8 @@ final class StatementReader {
             throw cursor.error(statementStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
         }
         if (contents.lineNumbers++ == 0) {
-            contents.firstLineNumber = cursor.error(statementStart, "the line starts with a line number, '" + word + "'",
-                    Hints.LINE_NUMBERS).place;
+            contents.firstLineNumber = cursor.error(statementStart,
+                    "the line starts with a line number, '" + word + "'", Hints.LINE_NUMBERS).place;
         }
         cursor.skipBlanks();
         return cursor.atEndOfStatement() ? null : readKeyword(true);

@@ -269,6 +269,7 @@ final class StatementValues {
     private String written(int i) {
         String text = source.text(groups.starts[i], groups.ends[i]);
         Expression tree = groups.trees[i];
-        return tree == null ? text : ClockText.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock);
+        return tree == null ? text
+                : ClockText.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock);
     }
 }

@@ -72,7 +72,9 @@ final class TemporaryFiles {
         return new Replacement(temporary, output, out);
     }
 
-    /** A temporary file at {@code path} being written by {@code out}, and the {@code output} it replaces once complete. */
+    /**
+     * A temporary file at {@code path} being written by {@code out}, and the {@code output} it replaces once complete.
+     */
     record Replacement(Path path, Path output, OutputStream out) {
 
         /** Moves the written file over the output (atomically where the file system can). */

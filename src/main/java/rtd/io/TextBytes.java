@@ -116,7 +116,8 @@ final class TextBytes {
         if (pairs > 0 && 2 * oddZeros > pairs && 4 * evenZeros < pairs) {
             return "little-endian, without a byte-order mark";
         }
-        return pairs > 0 && 2 * evenZeros > pairs && 4 * oddZeros < pairs ? "big-endian, without a byte-order mark" : null;
+        return pairs > 0 && 2 * evenZeros > pairs && 4 * oddZeros < pairs ? "big-endian, without a byte-order mark"
+                : null;
     }
 
     /** Whether the file holds no NUL and no control character but tab, line breaks and form feed: text, if not UTF-8. */
@@ -179,7 +180,10 @@ final class TextBytes {
         return DELIMITERS[b & 0xFF];
     }
 
-    /** Whether an OBJ file's word (a keyword, a number, a corner) ends at {@code bytes[i]}: a blank, {@code #}, LF, the end. */
+    /**
+     * Whether an OBJ file's word (a keyword, a number, a corner) ends at {@code bytes[i]}: a blank, {@code #}, LF, the
+     * end.
+     */
     static boolean endsObjWord(byte[] bytes, int i) {
         return i >= bytes.length || OBJ_WORD_ENDS[bytes[i] & 0xFF];
     }
@@ -193,7 +197,9 @@ final class TextBytes {
         return table;
     }
 
-    /** Whether a line ends just after {@code bytes[i]}: a LF, or a CR not followed by a LF (CR LF ends after its LF). */
+    /**
+     * Whether a line ends just after {@code bytes[i]}: a LF, or a CR not followed by a LF (CR LF ends after its LF).
+     */
     static boolean endsLine(byte[] bytes, int i) {
         return bytes[i] == '\n' || bytes[i] == '\r' && (i + 1 == bytes.length || bytes[i + 1] != '\n');
     }

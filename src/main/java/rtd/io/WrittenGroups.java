@@ -61,7 +61,9 @@ final class WrittenGroups {
         opens[groupCount++] = offset;
     }
 
-    /** Keeps a value of the current group, written at {@code bytes[start, end)}: a name or path is NaN; its key or −1. */
+    /**
+     * Keeps a value of the current group, written at {@code bytes[start, end)}: a name or path is NaN; its key or −1.
+     */
     void add(float value, int start, int end, int key) {
         if (count == values.length) {
             resize(2 * count);

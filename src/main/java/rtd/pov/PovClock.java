@@ -94,7 +94,8 @@ public final class PovClock {
             }
             check(reasons, shape.kind(), "a " + shape.kind(), fields);
         }
-        if (!clocked.camera().isEmpty() && cameras.stream().anyMatch(c -> ImageAxes.looksStraightUpOrDown(direction(c)))) {
+        if (!clocked.camera().isEmpty()
+                && cameras.stream().anyMatch(c -> ImageAxes.looksStraightUpOrDown(direction(c)))) {
             reasons.add("the camera, which looks straight up or down at a frame");
         }
         return reasons.isEmpty() ? null : String.join("; ", reasons);
@@ -186,7 +187,8 @@ public final class PovClock {
         if (shape instanceof Triangle t && t.isSmooth()) {
             String corners = "";
             for (int k = 0; k < 3; k++) {
-                corners += (k > 0 ? ", " : "") + PovNumbers.vector(t.corner(k)) + ", " + PovNumbers.vector(t.cornerNormal(k));
+                corners += (k > 0 ? ", " : "") + PovNumbers.vector(t.corner(k)) + ", "
+                        + PovNumbers.vector(t.cornerNormal(k));
             }
             return "smooth_triangle { " + corners;
         }
@@ -195,7 +197,8 @@ public final class PovClock {
                     + ", " + vector(f, "third corner", t.corner(2));
         }
         if (shape instanceof Box b) {
-            return "box { " + (f == null ? PovNumbers.vector(b.min()) + ", " + PovNumbers.vector(b.max()) : corners(f, b));
+            return "box { " + (f == null ? PovNumbers.vector(b.min()) + ", " + PovNumbers.vector(b.max())
+                    : corners(f, b));
         }
         if (shape instanceof Cylinder c) { // closed by its caps, as POV-Ray's is unless it is "open"
             return "cylinder { " + vector(f, "first end", c.first()) + ", " + vector(f, "second end", c.second()) + ", "
@@ -248,6 +251,7 @@ public final class PovClock {
      */
     static String vector(ClockFields f, String group, Vector3f v) {
         return f == null ? PovNumbers.vector(v)
-                : "<" + number(f, group, 0, v.x()) + ", " + number(f, group, 1, v.y()) + ", " + number(f, group, 2, v.z()) + ">";
+                : "<" + number(f, group, 0, v.x()) + ", " + number(f, group, 1, v.y()) + ", "
+                        + number(f, group, 2, v.z()) + ">";
     }
 }

@@ -50,7 +50,9 @@ final class PovExpression {
         return ATOM;
     }
 
-    /** {@code e} written out: an operation left to right ({@code pow(a, b)} for {@code a ^ b}), a sign, a name, an atom. */
+    /**
+     * {@code e} written out: an operation left to right ({@code pow(a, b)} for {@code a ^ b}), a sign, a name, an atom.
+     */
     private static String text(Expression e) {
         if (e instanceof Expression.Operation operation && operation.op() == '^') {
             return "pow(" + of(operation.left()) + ", " + of(operation.right()) + ")";
@@ -88,7 +90,8 @@ final class PovExpression {
     static String declarations(Iterable<Expression> expressions) {
         Map<String, Expression.Name> names = new LinkedHashMap<>();
         expressions.forEach(e -> collect(e, names));
-        return names.values().stream().map(name -> "#declare " + identifier(name) + " = " + of(name.definition()) + ";\n")
+        return names.values().stream()
+                .map(name -> "#declare " + identifier(name) + " = " + of(name.definition()) + ";\n")
                 .collect(Collectors.joining());
     }
 

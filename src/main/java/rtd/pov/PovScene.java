@@ -114,7 +114,8 @@ public final class PovScene {
         }
         pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? lightSum : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
-        pov.append("background { ").append(PovClock.rgb(clock == null ? null : clock.ambient(), "colour", scene.ambient()))
+        pov.append("background { ")
+                .append(PovClock.rgb(clock == null ? null : clock.ambient(), "colour", scene.ambient()))
                 .append(" }\n\n");
         String moving = clock == null ? null : clock.camera(scene.camera(), w, h);
         pov.append(moving != null ? moving : PovCamera.of(scene.camera(), w, h)).append('\n');

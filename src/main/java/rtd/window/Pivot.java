@@ -25,7 +25,8 @@ final class Pivot {
         if (hit != null) {
             return hit.point();
         }
-        List<BoundingBox> boxes = scene.objects().stream().map(IGeometry::bounds).filter(BoundingBox::isBounded).toList();
+        List<BoundingBox> boxes = scene.objects().stream().map(IGeometry::bounds).filter(BoundingBox::isBounded)
+                .toList();
         if (boxes.isEmpty()) {
             return centre.pointAt(10);
         }
