@@ -9,8 +9,8 @@ package rtd.io;
 final class LineCursor {
 
     final SourceText source;
-    /** The source's bytes, which it holds until the whole parse is done (its messages quote them). */
-    final byte[] bytes;
+    /** The source's bytes, until {@link #release}. */
+    byte[] bytes;
     int pos;
     /** The number of the line being read, from 1, and the offset of its first byte. */
     int line = 1;
@@ -22,6 +22,11 @@ final class LineCursor {
         this.bytes = source.bytes();
         this.pos = start;
         this.lineStart = start;
+    }
+
+    /** Lets the bytes go once the file is read, as {@link SourceText#close} does. */
+    void release() {
+        bytes = null;
     }
 
     boolean at(char c) {

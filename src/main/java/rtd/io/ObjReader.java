@@ -16,7 +16,7 @@ final class ObjReader {
     private static final String CORNER_FORMS = "a corner is written 3, 3/1, 3//2 or 3/1/2";
 
     private final SourceText source;
-    /** The source's bytes, until the file is read. */
+    /** The source's bytes, until the file is read (see {@link LineCursor#release}). */
     private byte[] bytes;
     private int pos;
     private int line = 1;

@@ -43,6 +43,7 @@ final class StatementReader {
             }
             cursor.skipToNextLine();
         }
+        cursor.release();
     }
 
     // ---- one statement ------------------------------------------------------------------
