@@ -19,7 +19,8 @@ import rtd.scene.Scene;
 public final class SceneFile {
 
     private final String name;
-    private final byte[] bytes;
+    /** The file's bytes; null once {@link #once} has parsed them. */
+    private byte[] bytes;
     private final Path folder;
     private final Map<Path, ObjMesh> meshes = new ConcurrentHashMap<>();
     private volatile boolean usesClock;
@@ -77,12 +78,31 @@ public final class SceneFile {
         return recorder.scene(parse(new Names(clock, recorder), null));
     }
 
+    /**
+     * The scene at clock 0, for a file read to be parsed once: this file lets its bytes go as the parse starts, so
+     * that they go with the parse's own ({@link SourceText#close}), before the render of a large scene.
+     */
+    Scene once(List<SceneError> warnings) throws SceneException {
+        return parse(new Names(0, new ClockedScene.Recorder()), warnings, true);
+    }
+
     private Scene parse(Names names, List<SceneError> warnings) throws SceneException {
-        try (SourceText source = new SourceText(name, bytes, folder, meshes)) {
+        return parse(names, warnings, false);
+    }
+
+    private Scene parse(Names names, List<SceneError> warnings, boolean once) throws SceneException {
+        // Taken from the field, not kept in a local variable, which would hold them to the end of the parse.
+        try (SourceText source = new SourceText(name, once ? takeBytes() : bytes, folder, meshes)) {
             return SceneParser.parse(source, names, warnings);
         } finally { // a failed parse tells too: a value may break its rule at some clocks only
             usesClock |= names.clockUsed;
         }
+    }
+
+    private byte[] takeBytes() {
+        byte[] taken = bytes;
+        bytes = null;
+        return taken;
     }
 
     /** Whether a number of the file used the clock, in a parse so far. */

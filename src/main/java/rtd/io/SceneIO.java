@@ -43,17 +43,17 @@ public final class SceneIO {
 
     /** As {@link #readScene(Path)}, adding to {@code warnings} the likely slips that are no mistakes. */
     public static Scene readScene(Path path, List<SceneError> warnings) throws SceneException, IOException {
-        return SceneFile.read(path).at(0, warnings);
+        return SceneFile.read(path).once(warnings);
     }
 
     /** As {@link #readScene(Path, List)}, named {@code name} in messages: {@code <stdin>} for {@code /dev/stdin}. */
     public static Scene readScene(Path path, String name, List<SceneError> warnings) throws SceneException, IOException {
-        return SceneFile.read(path, name, Path.of("")).at(0, warnings);
+        return SceneFile.read(path, name, Path.of("")).once(warnings);
     }
 
     /** Reads a scene from {@code in} (all of it, up to {@link #MAX_SCENE_BYTES}), where there is no {@code /dev/stdin}. */
     public static Scene readScene(InputStream in, String name, List<SceneError> warnings) throws SceneException, IOException {
-        return SceneFile.read(in, name).at(0, warnings);
+        return SceneFile.read(in, name).once(warnings);
     }
 
     /** Reads a scene from {@code text}, named {@code name} in messages; meshes are found from the current directory. */
@@ -74,7 +74,7 @@ public final class SceneIO {
     /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}. */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
-        return SceneFile.of(name, bytes, meshFolder).at(0, warnings);
+        return SceneFile.of(name, bytes, meshFolder).once(warnings);
     }
 
     /**
