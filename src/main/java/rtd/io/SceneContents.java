@@ -79,6 +79,18 @@ final class SceneContents {
         this.values = values;
     }
 
+    /** Keeps an object that names a material not known yet, at its place among the objects, for {@link #allObjects}. */
+    void addPending(StatementValues objectValues) {
+        pending.add(new Pending(objects.size(), objectValues.copy()));
+    }
+
+    /** Notes a line that starts with a line number: the first is kept, the others counted. */
+    void noteLineNumber(SceneError place) {
+        if (lineNumbers++ == 0) {
+            firstLineNumber = place;
+        }
+    }
+
     /**
      * Once every line is read: every object in file order, those that name a material, pattern or transform
      * built now with {@code names}; the names they use go to {@code named}. A name that is unknown or of the

@@ -85,8 +85,7 @@ final class StatementReader {
             String name = values.name(groups.size());
             Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
             if (above == null) {
-                // its names are resolved when the whole file is read
-                contents.pending.add(new SceneContents.Pending(contents.objects.size(), values.copy()));
+                contents.addPending(values); // its names are resolved when the whole file is read
                 return;
             }
             contents.namedAtOnce.add(name);
@@ -126,10 +125,8 @@ final class StatementReader {
         if (afterLineNumber || !atLineNumber()) {
             throw cursor.error(statementStart, "unknown statement '" + word + "'", Hints.keywordHelp(word));
         }
-        if (contents.lineNumbers++ == 0) {
-            contents.firstLineNumber = cursor.error(statementStart,
-                    "the line starts with a line number, '" + word + "'", Hints.LINE_NUMBERS).place;
-        }
+        contents.noteLineNumber(cursor.error(statementStart, "the line starts with a line number, '" + word + "'",
+                Hints.LINE_NUMBERS).place);
         cursor.skipBlanks();
         return cursor.atEndOfStatement() ? null : readKeyword(true);
     }

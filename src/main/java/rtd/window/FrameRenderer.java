@@ -27,7 +27,7 @@ import rtd.view.ViewShader;
  * ({@link ViewShader}) with its legend. A coarse pass renders one ray per block ({@link BlockCamera}) with the tracers
  * for any camera; the full pass, with those {@code -o} builds for the camera, its pixels are {@code -o}'s.
  *
- * A coarse pass's pixel fills its whole block, so the picture shows at once and sharpens; the last pass, blocks of 1,
+ * <p>A coarse pass's pixel fills its whole block, so the picture shows at once and sharpens; the last pass, blocks of 1,
  * sets every pixel itself.
  *
  * <p>A render is cancelled by interrupting its thread: it then stops at the next band of rows, and shows nothing more.
@@ -183,6 +183,9 @@ final class FrameRenderer {
 
     /** The {@code width × height} picture whose every block of {@code block × block} pixels has its pixel of coarse. */
     static Picture filled(int block, Picture coarse, int width, int height) {
+        if (block == 1) {
+            return coarse; // the full pass: every pixel its own already
+        }
         int[] rgb = new int[width * height];
         for (int y = 0; y < height; y++) {
             int row = y / block * coarse.width();
