@@ -124,9 +124,10 @@ public final class WindowOptions {
             @Override
             public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
                 Accelerator.Kind kind = Accelerator.choose(scene, accel);
-                if (kind != Accelerator.Kind.GRID_AND_BVH) { // the picture's view grid comes in forPicture
-                    return Accelerator.build(kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH, scene, width,
-                            height, 1, threads, kept).tracers();
+                if (kind != Accelerator.Kind.GRID_AND_BVH) {
+                    // a view grid answers only the camera's own rays (forPicture): any camera's take the loop or the BVH
+                    Accelerator.Kind any = kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH;
+                    return Accelerator.build(any, scene, width, height, 1, threads, kept).tracers();
                 }
                 Bvh bvh = kept.bvh(scene);
                 LightGrids lights = kept.lightGrids(scene, width, height, 1, threads);
