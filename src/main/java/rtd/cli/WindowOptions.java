@@ -125,7 +125,7 @@ public final class WindowOptions {
             public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
                 Accelerator.Kind kind = Accelerator.choose(scene, accel);
                 if (kind != Accelerator.Kind.GRID_AND_BVH) {
-                    // a view grid answers only the camera's own rays (forPicture): any camera's take the loop or the BVH
+                    // a view grid answers only the camera's own rays (forPicture): others take the loop or the BVH
                     Accelerator.Kind any = kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH;
                     return Accelerator.build(any, scene, width, height, 1, threads, kept).tracers();
                 }
