@@ -1,16 +1,24 @@
 package rtd.window;
 
+import java.math.BigDecimal;
+import java.util.List;
+import java.util.function.BinaryOperator;
 import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
+import rtd.geometry.BoundingBox;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.math.Ray;
 import rtd.math.Vector3f;
+import rtd.scene.Scene;
 
 /**
- * The window's camera as the mouse moves it from the file's camera: orbit around a point, pan across the view, zoom
- * ({@code R} starts a new controller on the file's camera). Both of rtd's cameras: the orthographic camera zooms by its
- * zoom (pixels per world unit), the perspective camera moves along its view. The position and direction are kept in
- * double, so that many small moves add no float error; each camera made from them is the scene file's kind, with float
- * numbers.
+ * The window's camera as the mouse moves it from the file's camera: orbit around what the centre pixel sees
+ * ({@link #pivot}), pan across the view, zoom ({@code R} starts a new controller on the file's camera); and the camera
+ * written back as a scene line ({@link #line}). Both of rtd's cameras: the orthographic camera zooms by its zoom
+ * (pixels per world unit), the perspective camera moves along its view. The position and direction are kept in
+ * double, so that many small moves add no float error; each camera made from them is the file's kind, in float.
  *
  * <p>An orbit turns the position about the point, and the direction with it, first about the world's vertical (yaw),
  * then about the view's horizontal right axis (pitch); the view stays at least {@value #STEEPEST_DEGREES}° from
@@ -77,7 +85,7 @@ final class CameraController {
      * {@code width} pixels wide, at the depth of {@code pivot} (the perspective camera's pixels grow with depth).
      */
     void pan(double dx, double dy, Vector3f pivot, int width) {
-        double perPixel = worldPerPixel(pivot, width);
+        double perPixel = original instanceof PerspectiveCamera p ? depth(pivot) / p.focalLength(width) : 1 / zoom;
         Vec3 right = rightAxis();
         Vec3 down = direction.cross(right).unit();
         position = position.minus(right.times(dx * perPixel)).minus(down.times(dy * perPixel));
@@ -94,17 +102,9 @@ final class CameraController {
         if (original instanceof OrthographicCamera) {
             zoom *= factor;
         } else {
-            double depth = depth(pivot);
-            position = position.plus(direction.times(depth * (1 - 1 / factor)));
+            position = position.plus(direction.times(depth(pivot) * (1 - 1 / factor)));
         }
         moved = true;
-    }
-
-    private double worldPerPixel(Vector3f pivot, int width) {
-        if (original instanceof PerspectiveCamera perspective) {
-            return depth(pivot) / perspective.focalLength(width);
-        }
-        return 1 / zoom;
     }
 
     /** How far ahead {@code pivot} lies along the view; 1 if it lies behind. */
@@ -117,6 +117,56 @@ final class CameraController {
     private Vec3 rightAxis() {
         Vec3 right = direction.cross(UP);
         return right.length() > 1e-12 ? right.unit() : new Vec3(1, 0, 0);
+    }
+
+    /**
+     * The point the camera orbits around and pans at: what the centre pixel of the {@code width × height} picture sees
+     * (its nearest hit, by the paper's depth test), or where it sees nothing, the centre of the box around the objects
+     * that have one; with none, a point ahead on the centre ray.
+     */
+    static Vector3f pivot(Scene scene, int width, int height) {
+        Ray centre = scene.camera().generateRay(width / 2, height / 2, width, height);
+        Hit hit = scene.nearestHit(centre);
+        if (hit != null) {
+            return hit.point();
+        }
+        List<BoundingBox> boxes = scene.objects().stream().map(IGeometry::bounds).filter(BoundingBox::isBounded)
+                .toList();
+        if (boxes.isEmpty()) {
+            return centre.pointAt(10);
+        }
+        Vector3f min = boxes.stream().map(BoundingBox::min).reduce((a, b) -> each(a, b, Math::min)).orElseThrow();
+        Vector3f max = boxes.stream().map(BoundingBox::max).reduce((a, b) -> each(a, b, Math::max)).orElseThrow();
+        return new BoundingBox(min, max).centre();
+    }
+
+    private static Vector3f each(Vector3f a, Vector3f b, BinaryOperator<Float> pick) {
+        return new Vector3f(pick.apply(a.x(), b.x()), pick.apply(a.y(), b.y()), pick.apply(a.z(), b.z()));
+    }
+
+    /**
+     * The camera as a line of a scene file, {@code perspective_camera:(pos):(dir):(fov)} or
+     * {@code orthographic_camera:(pos):(dir):(zoom)}, ready to paste in place of the file's camera: each number is the
+     * plain decimal that reads back as the very same float, so the scene with this line renders the window's picture
+     * at the window's size, pixel for pixel.
+     */
+    static String line(ICamera camera) {
+        if (camera instanceof PerspectiveCamera p) {
+            return "perspective_camera:" + vector(p.position()) + ":" + vector(p.direction()) + ":("
+                    + number(p.fieldOfView()) + ")";
+        }
+        OrthographicCamera o = (OrthographicCamera) camera;
+        return "orthographic_camera:" + vector(o.position()) + ":" + vector(o.direction()) + ":(" + number(o.zoom())
+                + ")";
+    }
+
+    private static String vector(Vector3f v) {
+        return "(" + number(v.x()) + "|" + number(v.y()) + "|" + number(v.z()) + ")";
+    }
+
+    /** The shortest decimal that reads back as {@code value} (Java's own), without an exponent. */
+    static String number(float value) {
+        return new BigDecimal(Float.toString(value)).stripTrailingZeros().toPlainString();
     }
 
     /** A point or direction in double, for the controller's sums. */

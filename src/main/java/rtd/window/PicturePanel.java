@@ -22,8 +22,8 @@ import rtd.image.Picture;
 import rtd.math.Vector3f;
 
 /**
- * The picture in the window, scaled to fit ({@link PixelMapping}), with the selected pixel's rays over it; the mouse's
- * drags, wheel and clicks go to the {@link WindowSession}. Runs on Swing's thread only.
+ * The picture in the window, scaled to fit and centred ({@link PixelMapping}), with the selected pixel's rays over it;
+ * the mouse's drags, wheel and clicks go to the {@link WindowSession}. Runs on Swing's thread only.
  */
 final class PicturePanel extends JComponent {
 
@@ -190,6 +190,45 @@ final class PicturePanel extends JComponent {
         public void mouseWheelMoved(MouseWheelEvent e) {
             session.wheel(e.getPreciseWheelRotation());
             rest.restart();
+        }
+    }
+
+    /**
+     * Where the picture lies in the panel, and which pixel a point of the panel shows: the picture is scaled by one
+     * factor to fit the panel (up or down, its shape kept) and centred in it. Image coordinates run from (0, 0), the top
+     * left corner of pixel (0, 0), to (width, height); pixel (x, y) covers [x, x + 1) × [y, y + 1).
+     */
+    record PixelMapping(int imageWidth, int imageHeight, int panelWidth, int panelHeight) {
+
+        /** Screen pixels per image pixel. */
+        double scale() {
+            if (panelWidth <= 0 || panelHeight <= 0) {
+                return 1;
+            }
+            return Math.min(panelWidth / (double) imageWidth, panelHeight / (double) imageHeight);
+        }
+
+        double left() {
+            return (panelWidth - imageWidth * scale()) / 2;
+        }
+
+        double top() {
+            return (panelHeight - imageHeight * scale()) / 2;
+        }
+
+        /** The pixel {@code [x, y]} of the picture under the panel's point, or null outside the picture. */
+        int[] pixelAt(double panelX, double panelY) {
+            double x = Math.floor((panelX - left()) / scale());
+            double y = Math.floor((panelY - top()) / scale());
+            return x < 0 || y < 0 || x >= imageWidth || y >= imageHeight ? null : new int[] {(int) x, (int) y};
+        }
+
+        double panelX(double imageX) {
+            return left() + imageX * scale();
+        }
+
+        double panelY(double imageY) {
+            return top() + imageY * scale();
         }
     }
 }

@@ -136,7 +136,7 @@ final class WindowSession implements AutoCloseable {
     }
 
     Vector3f pivot() {
-        return Pivot.of(scene(), setup.width(), setup.height());
+        return CameraController.pivot(scene(), setup.width(), setup.height());
     }
 
     /** The mouse dragged by {@code dx, dy} pixels of the picture: an orbit about {@code pivot}, or a pan. */
@@ -216,7 +216,7 @@ final class WindowSession implements AutoCloseable {
 
     /** {@code C}: the camera as a scene line, on the clipboard and in the panel. */
     void copyCamera() {
-        String line = CameraLine.of(camera.camera());
+        String line = CameraController.line(camera.camera());
         display.copy(line);
         display.panel("The camera, copied to the clipboard: paste it in place of the scene's camera line; the scene "
                 + "then renders this picture at " + setup.width() + " × " + setup.height() + ":\n\n" + line + "\n");
@@ -266,7 +266,7 @@ final class WindowSession implements AutoCloseable {
 
     /** Whether two cameras write the same scene line, and so draw the same picture. */
     private static boolean sameCamera(ICamera a, ICamera b) {
-        return CameraLine.of(a).equals(CameraLine.of(b));
+        return CameraController.line(a).equals(CameraController.line(b));
     }
 
     /** A mistake's {@code report} in the panel, the last good picture kept; {@code orClock} adds a way out. */

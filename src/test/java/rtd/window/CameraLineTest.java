@@ -20,12 +20,12 @@ class CameraLineTest {
 
     @Test
     void itIsTheSceneFilesStatementWithPlainNumbers() {
-        assertThat(CameraLine.of(new PerspectiveCamera(new Vector3f(0, 2.5f, 9), new Vector3f(0, -0.3f, -1), 60)))
+        assertThat(CameraController.line(new PerspectiveCamera(new Vector3f(0, 2.5f, 9), new Vector3f(0, -0.3f, -1), 60)))
                 .isEqualTo("perspective_camera:(0|2.5|9):(0|-0.3|-1):(60)");
-        assertThat(CameraLine.of(new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50)))
+        assertThat(CameraController.line(new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50)))
                 .isEqualTo("orthographic_camera:(0|0|20):(0|0|-1):(50)");
-        assertThat(CameraLine.number(1e-9f)).isEqualTo("0.000000001");
-        assertThat(CameraLine.number(0.1f)).isEqualTo("0.1");
+        assertThat(CameraController.number(1e-9f)).isEqualTo("0.000000001");
+        assertThat(CameraController.number(0.1f)).isEqualTo("0.1");
     }
 
     @Test
@@ -38,7 +38,7 @@ class CameraLineTest {
             controller.pan(7, -3, Vector3f.ZERO, 160);
             controller.zoom(1.5, Vector3f.ZERO);
             Scene moved = new Scene(scene.ambient(), controller.camera(), scene.objects(), scene.lights());
-            String line = CameraLine.of(moved.camera());
+            String line = CameraController.line(moved.camera());
             String pasted = text.replaceAll("(?m)^(perspective|orthographic)_camera:.*$", line);
             Scene fromFile = SceneIO.parseScene(name, pasted);
             assertThat(render(fromFile)).as(line).isEqualTo(render(moved));

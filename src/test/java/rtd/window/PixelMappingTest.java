@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import rtd.window.PicturePanel.PixelMapping;
 
 @DisplayName("The mapping from the window's panel to the picture's pixels")
 class PixelMappingTest {

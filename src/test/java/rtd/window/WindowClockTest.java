@@ -123,7 +123,7 @@ class WindowClockTest {
     }
 
     private static String fileCamera(Path scene, double clock) throws Exception {
-        return CameraLine.of(SceneFile.read(scene).at(clock, null).camera());
+        return CameraController.line(SceneFile.read(scene).at(clock, null).camera());
     }
 
     /** The pixels {@code -o} writes for {@code scene} at the window's size with {@code --clock clock}. */

@@ -31,6 +31,7 @@ import rtd.explain.PixelExplanation;
 import rtd.io.SceneIO;
 import rtd.scene.Scene;
 import rtd.testing.Cli;
+import rtd.window.PicturePanel.PixelMapping;
 
 /**
  * The window on a real screen (an X server, Xvfb on CI), driven through the command line and

@@ -55,7 +55,7 @@ public final class WindowFrames {
         Supplier<Tracer> any = engine.forAnyCamera(file, WIDTH, HEIGHT);
         CameraController camera = new CameraController(file.camera());
         BufferedImage screen = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
-        Vector3f pivot = Pivot.of(file, WIDTH, HEIGHT);
+        Vector3f pivot = CameraController.pivot(file, WIDTH, HEIGHT);
         frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING); // warming
         double fps = frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING);
         Refinement four = new Refinement(List.of(4));
