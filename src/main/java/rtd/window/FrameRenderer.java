@@ -22,17 +22,23 @@ import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
 
 /**
- * Renders one frame of the window, pass by pass ({@link Refinement}), on all cores with {@link ParallelRenderer}: in
- * the picture's colours as {@code -o} shades them (flat, or {@link WhittedShader} with lights), or a debug view
- * ({@link ViewShader}) with its legend. A coarse pass renders one ray per block ({@link BlockCamera}) with the tracers
- * for any camera; the full pass, with those {@code -o} builds for the camera, its pixels are {@code -o}'s.
- *
- * <p>A coarse pass's pixel fills its whole block, so the picture shows at once and sharpens; the last pass, blocks of 1,
- * sets every pixel itself.
+ * Renders the window's frames pass by pass on all cores with {@link ParallelRenderer}: in the picture's colours as
+ * {@code -o} shades them (flat, or {@link WhittedShader} with lights), or a debug view ({@link ViewShader}) with its
+ * legend. A pass is the side of its blocks: a new scene or camera starts coarse and is refined ({@link #STILL}: 8, 4,
+ * 2, 1 pixels); while the camera moves, each frame renders at the moving resolution alone ({@link #moving}); once the
+ * mouse rests, the full picture follows ({@link #RESTED}). A coarse pass traces one ray per block, its top left pixel's
+ * own ({@link BlockCamera}), with the tracers for any camera, and that colour fills the block, so the picture shows at
+ * once and sharpens; the full pass, with the tracers {@code -o} builds for the camera, is {@code -o}'s picture.
  *
  * <p>A render is cancelled by interrupting its thread: it then stops at the next band of rows, and shows nothing more.
  */
 final class FrameRenderer {
+
+    static final List<Integer> STILL = List.of(8, 4, 2, 1);
+    static final List<Integer> MOVING = List.of(2);
+    static final List<Integer> RESTED = List.of(1);
+    /** The time a moving frame may take: 15 frames per second, smooth enough to follow the mouse. */
+    static final long FRAME_NANOS = 1_000_000_000L / 15;
 
     /** What a pass shows: the picture (or the view with its legend), how long the pass took and its rays. */
     record Pass(Picture picture, int block, long nanos, long rays, String legend) {
@@ -53,51 +59,8 @@ final class FrameRenderer {
     }
 
     /**
-     * The passes of one render, as the sides of their blocks: a new scene or camera starts coarse and is refined
-     * ({@link #STILL}: 8, 4, 2, 1 pixels); while the camera moves, each frame renders at the moving resolution alone
-     * ({@link #MOVING}: a quarter of the pixels, coarser for a scene too slow for that: {@link #moving}); once the
-     * mouse rests, the full picture follows ({@link #RESTED}).
-     *
-     * @param blocks the sides of the blocks, coarsest first
-     */
-    record Refinement(List<Integer> blocks) {
-
-        /** The time a moving frame may take: 15 frames per second, smooth enough to follow the mouse. */
-        static final long FRAME_NANOS = 1_000_000_000L / 15;
-        static final Refinement STILL = new Refinement(List.of(8, 4, 2, 1));
-        static final Refinement MOVING = new Refinement(List.of(2));
-        static final Refinement RESTED = new Refinement(List.of(1));
-
-        Refinement {
-            blocks = List.copyOf(blocks);
-        }
-
-        /**
-         * The moving frame after one of blocks of {@code block} pixels that took {@code nanos}: blocks of 2 if their
-         * rays would fit in {@link #FRAME_NANOS}, else blocks of 4 if theirs would, else 8; so a heavy scene still
-         * follows the mouse. Before any moving frame ({@code nanos} 0), blocks of 2.
-         */
-        static Refinement moving(int block, long nanos) {
-            int next = 2;
-            while (next < 8 && nanos * ((double) block * block) / (next * next) > FRAME_NANOS) {
-                next *= 2; // a quarter of the rays, about a quarter of the time
-            }
-            return next == 2 ? MOVING : new Refinement(List.of(next));
-        }
-
-        boolean endsFull() {
-            return blocks.get(blocks.size() - 1) == 1;
-        }
-    }
-
-    /** One frame to render: {@code view} null for the picture. */
-    record Frame(Scene scene, View view, int width, int height, int samples, int threads, Refinement refinement) {
-    }
-
-    /**
      * A coarse pass's camera: pixel (x, y) of the small picture of a {@code block}-pixel grid is the ray of pixel
-     * {@code (x·block, y·block)} of the full {@code width × height} picture, made by the scene's camera: so a block
-     * shows the colour its top left pixel will have.
+     * {@code (x·block, y·block)} of the full {@code width × height} picture, made by the scene's camera.
      */
     private record BlockCamera(ICamera full, int block, int width, int height) implements ICamera {
 
@@ -118,49 +81,65 @@ final class FrameRenderer {
     }
 
     private final Engine engine;
+    private final int width;
+    private final int height;
+    private final int samples;
+    private final int threads;
+    /** The tracers for any camera in {@link #traced}'s objects and lights, built again only for another scene. */
+    private Scene traced;
+    private Supplier<Tracer> anyCamera;
 
-    FrameRenderer(Engine engine) {
+    /** Frames of {@code width × height} pixels, {@code samples × samples} rays each in full, on {@code threads}. */
+    FrameRenderer(Engine engine, int width, int height, int samples, int threads) {
         this.engine = engine;
+        this.width = width;
+        this.height = height;
+        this.samples = samples;
+        this.threads = threads;
     }
 
     /**
-     * Renders {@code frame}'s passes, handing each to {@code listener} as it is done, with {@code anyCamera}'s tracers
-     * for the coarse passes; returns false if it was cancelled.
+     * Renders {@code file}'s objects and lights seen by {@code camera} ({@code view} null for the picture) in passes
+     * of {@code blocks}, handing each to {@code listener} as it is done. On one thread at a time; interrupted, it stops.
      */
-    boolean render(Frame frame, Supplier<Tracer> anyCamera, Consumer<Pass> listener) {
-        for (int block : frame.refinement().blocks()) {
-            long start = System.nanoTime();
-            RenderResult result;
-            try {
-                result = pass(frame, block, anyCamera);
-            } catch (IllegalStateException e) {
-                if (Thread.currentThread().isInterrupted()) {
-                    return false; // cancelled by a newer render
-                }
-                throw e;
-            }
-            if (Thread.currentThread().isInterrupted()) {
-                return false; // one thread stops at the next band and returns what it has: not to be shown
-            }
-            Picture picture = filled(block, result.image(), frame.width(), frame.height());
-            listener.accept(shown(frame, picture, block, System.nanoTime() - start, result.work().rays()));
+    void render(Scene file, ICamera camera, View view, List<Integer> blocks, Consumer<Pass> listener) {
+        if (traced != file) {
+            anyCamera = engine.forAnyCamera(file, width, height);
+            traced = file;
         }
-        return true;
+        Scene scene = new Scene(file.ambient(), camera, file.objects(), file.lights());
+        for (int block : blocks) {
+            long start = System.nanoTime();
+            RenderResult result = pass(scene, view, block); // interrupted, it throws or returns what it has
+            if (Thread.currentThread().isInterrupted()) {
+                return; // cancelled by a newer render: nothing more to show
+            }
+            Picture picture = filled(block, result.image(), width, height);
+            listener.accept(shown(scene, view, picture, block, System.nanoTime() - start, result.work().rays()));
+        }
     }
 
-    private RenderResult pass(Frame frame, int block, Supplier<Tracer> anyCamera) {
-        Scene scene = frame.scene();
-        int w = blocks(frame.width(), block);
-        int h = blocks(frame.height(), block);
+    private RenderResult pass(Scene scene, View view, int block) {
         if (block == 1) {
-            int samples = frame.view() == null ? frame.samples() : 1; // a view takes one ray per pixel
-            Supplier<Tracer> tracers = engine.forPicture(scene, frame.width(), frame.height(), samples, anyCamera);
-            return ParallelRenderer.render(scene.camera(), tracers, shaders(scene, frame.view()), w, h, samples,
-                    frame.threads(), new RenderProgress());
+            int rays = view == null ? samples : 1; // a view takes one ray per pixel
+            return ParallelRenderer.render(scene.camera(), engine.forPicture(scene, width, height, rays, anyCamera),
+                    shaders(scene, view), width, height, rays, threads, new RenderProgress());
         }
-        BlockCamera camera = new BlockCamera(scene.camera(), block, frame.width(), frame.height());
-        return ParallelRenderer.render(camera, anyCamera, shaders(scene, frame.view()), w, h, 1, frame.threads(),
-                new RenderProgress());
+        return ParallelRenderer.render(new BlockCamera(scene.camera(), block, width, height), anyCamera,
+                shaders(scene, view), blocks(width, block), blocks(height, block), 1, threads, new RenderProgress());
+    }
+
+    /**
+     * The moving frame after one of blocks of {@code block} pixels that took {@code nanos}: blocks of 2 if their rays
+     * would fit in {@link #FRAME_NANOS}, else blocks of 4 if theirs would, else 8; so a heavy scene still follows the
+     * mouse. Before any moving frame ({@code nanos} 0), blocks of 2.
+     */
+    static List<Integer> moving(int block, long nanos) {
+        int next = 2;
+        while (next < 8 && nanos * ((double) block * block) / (next * next) > FRAME_NANOS) {
+            next *= 2; // a quarter of the rays, about a quarter of the time
+        }
+        return List.of(next);
     }
 
     /** The shaders {@code -o} (or {@code --view}) takes for {@code scene}: one for each tracer. */
@@ -197,11 +176,11 @@ final class FrameRenderer {
     }
 
     /** The pass as the window shows it: a view's numbers turned into colours, with its legend below. */
-    private static Pass shown(Frame frame, Picture picture, int block, long nanos, long rays) {
-        if (frame.view() == null) {
+    private static Pass shown(Scene scene, View view, Picture picture, int block, long nanos, long rays) {
+        if (view == null) {
             return new Pass(picture, block, nanos, rays, "");
         }
-        ViewPicture view = ViewPicture.of(frame.view(), picture, frame.scene());
-        return new Pass(view.picture(), block, nanos, rays, view.report());
+        ViewPicture shown = ViewPicture.of(view, picture, scene);
+        return new Pass(shown.picture(), block, nanos, rays, shown.report());
     }
 }

@@ -1,26 +1,27 @@
 package rtd.window;
 
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.FutureTask;
 import java.util.function.Consumer;
 
 /**
- * The window's render thread: it runs one job at a time, the newest asked for. Asking for a new job cancels the one in
- * progress (it interrupts the thread, and {@link FrameRenderer} stops at its next band of rows), so the picture always
- * follows the latest camera, and the window's own thread (Swing's) never waits for a render.
+ * The window's render thread: it runs one job at a time, the newest asked for; a job still waiting is dropped for a
+ * newer one. A job that cancels interrupts the one in progress ({@link FrameRenderer} stops at its next band of rows),
+ * so the picture always follows the latest camera, and the window's own thread (Swing's) never waits for a render.
  */
 final class RenderLoop implements AutoCloseable {
 
-    private final Thread thread;
+    private final ExecutorService thread = Executors.newSingleThreadExecutor(job -> daemon(job, "rtd-window-render"));
     private final Consumer<RuntimeException> failed;
-    private Runnable pending;
-    private boolean running;
-    private boolean closed;
+    /** Counts the jobs asked for: one that is not the newest when its turn comes is dropped. */
+    private long asked;
+    private Future<?> running = new FutureTask<>(() -> null);
 
     /** A loop whose jobs' failures (bugs, not cancels) go to {@code failed}, on the render thread. */
     RenderLoop(Consumer<RuntimeException> failed) {
         this.failed = failed;
-        thread = new Thread(this::work, "rtd-window-render");
-        thread.setDaemon(true);
-        thread.start();
     }
 
     /**
@@ -28,53 +29,47 @@ final class RenderLoop implements AutoCloseable {
      * still picture does; a moving frame waits for the one before, so that frames are finished and shown).
      */
     synchronized void submit(Runnable job, boolean cancel) {
-        pending = job;
-        if (running && cancel) {
-            thread.interrupt();
+        if (thread.isShutdown()) {
+            return; // the window is closed
         }
-        notifyAll();
+        long mine = ++asked;
+        if (cancel) {
+            running.cancel(true);
+        }
+        thread.execute(() -> run(mine, job));
     }
 
-    /** Stops the thread: the job in progress is cancelled, and no other runs. */
-    @Override
-    public synchronized void close() {
-        closed = true;
-        pending = null;
-        thread.interrupt();
-        notifyAll();
-    }
-
-    private void work() {
-        while (true) {
-            Runnable job;
-            synchronized (this) {
-                while (pending == null && !closed) {
-                    try {
-                        wait();
-                    } catch (InterruptedException e) {
-                        // close() wakes us: the loop's condition decides
-                    }
-                }
-                if (closed) {
-                    return;
-                }
-                job = pending;
-                pending = null;
-                running = true;
-                Thread.interrupted(); // a cancel meant for the job before
-            }
+    private void run(long mine, Runnable job) {
+        FutureTask<Void> task = new FutureTask<>(() -> {
             try {
                 job.run();
             } catch (RuntimeException e) {
                 if (!Thread.currentThread().isInterrupted()) {
                     failed.accept(e); // a bug; the loop goes on with the next job
                 }
-            } finally {
-                synchronized (this) {
-                    running = false;
-                }
-                Thread.interrupted();
             }
+        }, null);
+        synchronized (this) {
+            if (mine != asked) {
+                return; // a newer job waits
+            }
+            running = task; // a cancel interrupts this thread only while the task runs
         }
+        task.run();
+    }
+
+    /** Stops the thread: the job in progress is cancelled, and no other runs. */
+    @Override
+    public synchronized void close() {
+        asked++;
+        running.cancel(true);
+        thread.shutdownNow();
+    }
+
+    /** A daemon thread named {@code name} that runs {@code job}: the window's threads never keep Java running. */
+    static Thread daemon(Runnable job, String name) {
+        Thread thread = new Thread(job, name);
+        thread.setDaemon(true);
+        return thread;
     }
 }

@@ -4,14 +4,11 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.function.Consumer;
-import java.util.function.Supplier;
 import rtd.camera.ICamera;
 import rtd.io.SceneException;
 import rtd.math.Vector3f;
-import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.view.View;
-import rtd.window.FrameRenderer.Refinement;
 
 /**
  * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}), the
@@ -43,19 +40,16 @@ final class WindowSession implements AutoCloseable {
     private long generation;
     private long shownGeneration = -1;
     /** The next moving frame's blocks, from the blocks and time of the last moving frame shown. */
-    private Refinement nextMoving = Refinement.MOVING;
+    private List<Integer> nextMoving = FrameRenderer.MOVING;
     /** Whether the panel is to show the view's scale once its full picture is drawn. */
     private boolean legendWanted;
-    /** The tracers for any camera of {@link #tracedScene}, built again only for another scene, on the render thread. */
-    private Scene tracedScene;
-    private Supplier<Tracer> anyCamera;
 
     /** A session on {@code scene}, which is {@code source} parsed at {@code setup}'s clock. */
     WindowSession(WindowSetup setup, ClockedScene source, Scene scene, Display display, Executor ui) {
         this.setup = setup;
         this.display = display;
         this.ui = ui;
-        this.renderer = new FrameRenderer(setup.engine());
+        this.renderer = new FrameRenderer(setup.engine(), setup.width(), setup.height(), setup.samples(), setup.threads());
         this.renders = new RenderLoop(e -> ui.execute(() -> display.panel("rtd: internal error while rendering: " + e
                 + ". This is a bug in rtd; please report it with the scene.")));
         this.jobs = new SideJobs(ui);
@@ -67,7 +61,7 @@ final class WindowSession implements AutoCloseable {
     void start() {
         display.panel(SceneWindow.HELP);
         clock.showSlider();
-        render(Refinement.STILL);
+        render(FrameRenderer.STILL);
     }
 
     /** The scene with the window's camera. */
@@ -87,23 +81,15 @@ final class WindowSession implements AutoCloseable {
         return shown;
     }
 
-    /** Renders the scene as it is now in {@code refinement}'s passes, cancelling a still render in progress. */
-    void render(Refinement refinement) {
+    /** Renders the scene as it is now in passes of {@code blocks}, cancelling a still render in progress. */
+    void render(List<Integer> blocks) {
         long frame = ++generation;
         Scene objects = file;
-        FrameRenderer.Frame request = new FrameRenderer.Frame(scene(), view, setup.width(), setup.height(),
-                setup.samples(), setup.threads(), refinement);
-        boolean moving = !refinement.endsFull();
+        ICamera eye = camera.camera();
+        View shownView = view;
+        boolean moving = !blocks.contains(1);
         Consumer<FrameRenderer.Pass> listener = pass -> ui.execute(() -> show(frame, pass, moving));
-        renders.submit(() -> renderer.render(request, anyCamera(objects), listener), !moving);
-    }
-
-    private Supplier<Tracer> anyCamera(Scene objects) {
-        if (tracedScene != objects) {
-            anyCamera = setup.engine().forAnyCamera(objects, setup.width(), setup.height());
-            tracedScene = objects;
-        }
-        return anyCamera;
+        renders.submit(() -> renderer.render(objects, eye, shownView, blocks, listener), !moving);
     }
 
     private void show(long frame, FrameRenderer.Pass pass, boolean moving) {
@@ -111,7 +97,7 @@ final class WindowSession implements AutoCloseable {
             return; // a newer frame is already on screen
         }
         if (moving) {
-            nextMoving = Refinement.moving(pass.block(), pass.nanos());
+            nextMoving = FrameRenderer.moving(pass.block(), pass.nanos());
         }
         shownGeneration = frame;
         shown = pass;
@@ -162,14 +148,14 @@ final class WindowSession implements AutoCloseable {
 
     /** The mouse rests after moving the camera: the full picture, and the selected pixel's rays again. */
     void rested() {
-        render(Refinement.RESTED);
+        render(FrameRenderer.RESTED);
         explainSelected();
     }
 
     /** {@code R}: the file's camera at the clock shown. */
     void resetCamera() {
         camera = new CameraController(file.camera());
-        render(Refinement.STILL);
+        render(FrameRenderer.STILL);
         explainSelected();
     }
 
@@ -177,7 +163,7 @@ final class WindowSession implements AutoCloseable {
     void show(View shownView) {
         view = shownView;
         legendWanted = view != null;
-        render(Refinement.STILL);
+        render(FrameRenderer.STILL);
     }
 
     /** {@code V}: the next view, after the last the picture. */
@@ -244,7 +230,7 @@ final class WindowSession implements AutoCloseable {
             camera = new CameraController(scene.camera()); // the file's new camera
         }
         file = scene;
-        render(Refinement.STILL);
+        render(FrameRenderer.STILL);
         panelAgain();
     }
 

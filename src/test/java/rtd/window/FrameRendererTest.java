@@ -1,6 +1,7 @@
 package rtd.window;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.catchThrowable;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
@@ -10,19 +11,16 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
-import java.util.function.Supplier;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import rtd.camera.OrthographicCamera;
 import rtd.cli.WindowOptions;
-import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.testing.Cli;
 import rtd.testing.Scenes;
 import rtd.view.View;
-import rtd.window.FrameRenderer.Refinement;
 
 @DisplayName("The window's renders: passes of 8, 4, 2 and 1, the last -o's own pixels, and cancelled by a newer one")
 class FrameRendererTest {
@@ -36,8 +34,7 @@ class FrameRendererTest {
     void aStillPictureComesInPassesOf8421AndEndsWithThePixelsOfO() throws Exception {
         Scene scene = Scenes.example("glass_and_mirror");
         List<FrameRenderer.Pass> passes = new ArrayList<>();
-        boolean done = render(scene, null, Refinement.STILL, passes::add);
-        assertThat(done).isTrue();
+        render(scene, null, FrameRenderer.STILL, passes::add);
         assertThat(passes).extracting(FrameRenderer.Pass::block).containsExactly(8, 4, 2, 1);
         assertThat(passes.get(3).picture().rgb()).isEqualTo(written("examples/glass_and_mirror.txt"));
         // a coarse pass shows the colour of each block's top left pixel of the final picture
@@ -54,8 +51,7 @@ class FrameRendererTest {
         Scene scaled = new Scene(paper.ambient(), new OrthographicCamera(camera.position(), camera.direction(), 6.25f),
                 paper.objects(), paper.lights());
         List<FrameRenderer.Pass> passes = new ArrayList<>();
-        Supplier<Tracer> any = ENGINE.forAnyCamera(scaled, 240, 135);
-        new FrameRenderer(ENGINE).render(new FrameRenderer.Frame(scaled, null, 240, 135, 1, 2, Refinement.STILL), any, passes::add);
+        new FrameRenderer(ENGINE, 240, 135, 1, 2).render(scaled, scaled.camera(), null, FrameRenderer.STILL, passes::add);
         Path out = dir.resolve("paper.png");
         assertThat(Cli.run("examples/input_rtd.txt", "--scale", "0.125", "-o", out.toString()).exitCode()).isZero();
         assertThat(passes.get(3).picture().rgb()).isEqualTo(rgb(ImageIO.read(out.toFile())))
@@ -66,7 +62,7 @@ class FrameRendererTest {
     void aViewIsDrawnWithItsLegendAsViewDrawsIt() throws Exception {
         Scene scene = Scenes.example("glass_and_mirror");
         List<FrameRenderer.Pass> passes = new ArrayList<>();
-        render(scene, View.cost, Refinement.RESTED, passes::add);
+        render(scene, View.cost, FrameRenderer.RESTED, passes::add);
         Path out = dir.resolve("cost.png");
         assertThat(Cli.run("examples/glass_and_mirror.txt", "--width", "160", "--height", "90", "--view", "cost", "-o",
                 out.toString()).exitCode()).isZero();
@@ -104,17 +100,15 @@ class FrameRendererTest {
         List<FrameRenderer.Pass> passes = new ArrayList<>();
         Thread.currentThread().interrupt();
         try {
-            assertThat(render(scene, null, Refinement.STILL, passes::add)).isFalse();
+            catchThrowable(() -> render(scene, null, FrameRenderer.STILL, passes::add)); // cancelled: it may throw
         } finally {
             Thread.interrupted();
         }
         assertThat(passes).isEmpty();
     }
 
-    private static boolean render(Scene scene, View view, Refinement refinement, Consumer<FrameRenderer.Pass> listener) {
-        Supplier<Tracer> any = ENGINE.forAnyCamera(scene, 160, 90);
-        FrameRenderer.Frame frame = new FrameRenderer.Frame(scene, view, 160, 90, 1, 2, refinement);
-        return new FrameRenderer(ENGINE).render(frame, any, listener);
+    private static void render(Scene scene, View view, List<Integer> blocks, Consumer<FrameRenderer.Pass> listener) {
+        new FrameRenderer(ENGINE, 160, 90, 1, 2).render(scene, scene.camera(), view, blocks, listener);
     }
 
     private int[] written(String scene) throws Exception {

@@ -5,31 +5,28 @@ import static org.assertj.core.api.Assertions.assertThat;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.image.Picture;
-import rtd.window.FrameRenderer.Refinement;
 
 @DisplayName("The window's passes: coarse blocks, refined")
 class RefinementTest {
 
     @Test
     void aStillPictureIsRefinedInBlocksOfEightFourTwoAndOne() {
-        assertThat(Refinement.STILL.blocks()).containsExactly(8, 4, 2, 1);
-        assertThat(Refinement.MOVING.blocks()).containsExactly(2);
-        assertThat(Refinement.RESTED.blocks()).containsExactly(1);
-        assertThat(Refinement.MOVING.endsFull()).isFalse();
-        assertThat(Refinement.STILL.endsFull()).isTrue();
+        assertThat(FrameRenderer.STILL).containsExactly(8, 4, 2, 1);
+        assertThat(FrameRenderer.MOVING).containsExactly(2);
+        assertThat(FrameRenderer.RESTED).containsExactly(1);
     }
 
     @Test
     void aSceneTooSlowForMovingFramesOfBlocksOf2TakesCoarserBlocks() {
-        long frame = Refinement.FRAME_NANOS;
-        assertThat(Refinement.moving(2, 0).blocks()).containsExactly(2); // the first moving frame
-        assertThat(Refinement.moving(2, frame).blocks()).containsExactly(2);
+        long frame = FrameRenderer.FRAME_NANOS;
+        assertThat(FrameRenderer.moving(2, 0)).containsExactly(2); // the first moving frame
+        assertThat(FrameRenderer.moving(2, frame)).containsExactly(2);
         // twice too slow at blocks of 2: blocks of 4 take a quarter of the rays
-        assertThat(Refinement.moving(2, 2 * frame).blocks()).containsExactly(4);
+        assertThat(FrameRenderer.moving(2, 2 * frame)).containsExactly(4);
         // a frame of blocks of 4 in a third of the time: blocks of 2 would take 4/3 of it, too long; stay at 4
-        assertThat(Refinement.moving(4, frame / 3).blocks()).containsExactly(4);
-        assertThat(Refinement.moving(4, frame / 5).blocks()).containsExactly(2);
-        assertThat(Refinement.moving(2, 100 * frame).blocks()).containsExactly(8);
+        assertThat(FrameRenderer.moving(4, frame / 3)).containsExactly(4);
+        assertThat(FrameRenderer.moving(4, frame / 5)).containsExactly(2);
+        assertThat(FrameRenderer.moving(2, 100 * frame)).containsExactly(8);
     }
 
     @Test

@@ -6,16 +6,13 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Supplier;
 import rtd.accel.ViewGrid;
 import rtd.camera.OrthographicCamera;
 import rtd.cli.WindowOptions;
 import rtd.image.Picture;
 import rtd.io.SceneIO;
 import rtd.math.Vector3f;
-import rtd.render.Tracer;
 import rtd.scene.Scene;
-import rtd.window.FrameRenderer.Refinement;
 
 /**
  * The window's speed, warm, without a screen: frames rendered as the window renders them ({@link FrameRenderer})
@@ -51,22 +48,20 @@ public final class WindowFrames {
     }
 
     private static void measure(String name, Scene file, Engine engine, int threads, double seconds) {
-        FrameRenderer renderer = new FrameRenderer(engine);
-        Supplier<Tracer> any = engine.forAnyCamera(file, WIDTH, HEIGHT);
+        FrameRenderer renderer = new FrameRenderer(engine, WIDTH, HEIGHT, 1, threads);
         CameraController camera = new CameraController(file.camera());
         BufferedImage screen = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
         Vector3f pivot = CameraController.pivot(file, WIDTH, HEIGHT);
-        frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING); // warming
-        double fps = frames(renderer, any, camera, file, pivot, screen, threads, seconds, Refinement.MOVING);
-        Refinement four = new Refinement(List.of(4));
-        double fps4 = frames(renderer, any, camera, file, pivot, screen, threads, seconds, four);
+        frames(renderer, camera, file, pivot, screen, seconds, FrameRenderer.MOVING); // warming
+        double fps = frames(renderer, camera, file, pivot, screen, seconds, FrameRenderer.MOVING);
+        double fps4 = frames(renderer, camera, file, pivot, screen, seconds, List.of(4));
         List<Double> full = new ArrayList<>();
         List<Double> grids = new ArrayList<>();
         for (int i = 0; i < 9; i++) {
             camera.orbit(0.05, 0, pivot);
             Scene moved = new Scene(file.ambient(), camera.camera(), file.objects(), file.lights());
             long start = System.nanoTime();
-            render(renderer, any, moved, Refinement.RESTED, screen, threads);
+            renderer.render(file, camera.camera(), null, FrameRenderer.RESTED, pass -> paint(pass.picture(), screen));
             full.add((System.nanoTime() - start) / 1e9);
             start = System.nanoTime();
             ViewGrid.build(moved, WIDTH, HEIGHT, 1, threads);
@@ -79,24 +74,17 @@ public final class WindowFrames {
     }
 
     /** Frames per second while the camera orbits a little each frame, for {@code seconds}. */
-    private static double frames(FrameRenderer renderer, Supplier<Tracer> any, CameraController camera, Scene file,
-            Vector3f pivot, BufferedImage screen, int threads, double seconds, Refinement moving) {
+    private static double frames(FrameRenderer renderer, CameraController camera, Scene file, Vector3f pivot,
+            BufferedImage screen, double seconds, List<Integer> moving) {
         long start = System.nanoTime();
         long end = start + (long) (seconds * 1e9);
         int frames = 0;
         while (System.nanoTime() < end) {
             camera.orbit(0.02, 0.002 * Math.sin(frames / 10.0), pivot);
-            Scene moved = new Scene(file.ambient(), camera.camera(), file.objects(), file.lights());
-            render(renderer, any, moved, moving, screen, threads);
+            renderer.render(file, camera.camera(), null, moving, pass -> paint(pass.picture(), screen));
             frames++;
         }
         return frames / ((System.nanoTime() - start) / 1e9);
-    }
-
-    private static void render(FrameRenderer renderer, Supplier<Tracer> any, Scene scene, Refinement refinement,
-            BufferedImage screen, int threads) {
-        FrameRenderer.Frame frame = new FrameRenderer.Frame(scene, null, WIDTH, HEIGHT, 1, threads, refinement);
-        renderer.render(frame, any, pass -> paint(pass.picture(), screen));
     }
 
     /** Into the window's image, as {@link PicturePanel#picture} does. */
