@@ -12,11 +12,11 @@ import rtd.accel.ViewGrid;
 import rtd.io.SceneException;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
-import rtd.window.ClockedScene;
-import rtd.window.Engine;
-import rtd.window.FileWatch;
 import rtd.window.Window;
 import rtd.window.WindowSetup;
+import rtd.window.WindowSetup.ClockedScene;
+import rtd.window.WindowSetup.Engine;
+import rtd.window.WindowSetup.FileWatch;
 
 /**
  * {@code --window}, a picocli mixin of {@link RtdCommand}: opens the scene in a window ({@link Window}) instead of

@@ -3,6 +3,7 @@ package rtd.window;
 import java.util.Locale;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
+import rtd.window.WindowSetup.ClockedScene;
 
 /**
  * The window's clock: the scene file as read last, parsed again at the clock slider's value or the play key's, each
@@ -42,12 +43,12 @@ final class ClockControl {
 
     /** Shows the slider at the clock, or hides it for a scene that does not use {@code clock}. */
     void showSlider() {
-        display.clock(source.usesClock() ? clock : null);
+        display.clock(source.file().usesClock() ? clock : null);
     }
 
     /** The status line's part for the clock, {@code " · clock 0.250"}, or nothing for a scene without one. */
     String status() {
-        return source.usesClock() ? " · " + label(clock) : "";
+        return source.file().usesClock() ? " · " + label(clock) : "";
     }
 
     /** The clock as the status line and the slider's label write it: {@code clock 0.250}. */
@@ -62,7 +63,7 @@ final class ClockControl {
     Scene read(ClockedScene read) throws SceneException {
         source = read;
         Scene scene = read.at(clock);
-        playing &= read.usesClock();
+        playing &= read.file().usesClock();
         showSlider();
         return scene;
     }
@@ -92,7 +93,7 @@ final class ClockControl {
 
     /** {@code P}: plays the clock or pauses it; the paused clock's picture is drawn in full. */
     void play() {
-        if (!source.usesClock()) {
+        if (!source.file().usesClock()) {
             display.panel("The scene does not use clock: there is nothing to play.\n\n" + SceneWindow.HELP);
             return;
         }

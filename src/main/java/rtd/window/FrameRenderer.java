@@ -20,6 +20,7 @@ import rtd.shade.WhittedShader;
 import rtd.view.View;
 import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
+import rtd.window.WindowSetup.Engine;
 
 /**
  * Renders the window's frames pass by pass on all cores with {@link ParallelRenderer}: in the picture's colours as

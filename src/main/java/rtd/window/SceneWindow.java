@@ -29,6 +29,7 @@ import javax.swing.WindowConstants;
 import rtd.image.Picture;
 import rtd.scene.Scene;
 import rtd.view.View;
+import rtd.window.WindowSetup.ClockedScene;
 
 /**
  * The window itself, thin Swing around a {@link WindowSession}: the picture on the left, the panel of text on the right

@@ -10,6 +10,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import rtd.io.SceneException;
 import rtd.scene.Scene;
+import rtd.window.WindowSetup.ClockedScene;
 
 /**
  * {@code --window}: opens a window on a scene and waits until it is closed. The picture renders coarse at once and is

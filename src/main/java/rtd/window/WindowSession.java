@@ -9,6 +9,7 @@ import rtd.io.SceneException;
 import rtd.math.Vector3f;
 import rtd.scene.Scene;
 import rtd.view.View;
+import rtd.window.WindowSetup.ClockedScene;
 
 /**
  * What the window does, without its Swing parts: the scene and its moved camera, the clock ({@link ClockControl}), the

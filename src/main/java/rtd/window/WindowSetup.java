@@ -2,40 +2,71 @@ package rtd.window;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.function.Supplier;
+import java.util.function.UnaryOperator;
+import rtd.io.SceneException;
+import rtd.io.SceneFile;
+import rtd.render.Tracer;
+import rtd.scene.Scene;
 
 /**
  * What the command line gives the window: the scene file, how to read it and watch it, what to trace with, and the
- * picture's size, samples and threads as {@code -o} would render it.
- *
- * @param scene   the scene file, as the user spelt it
- * @param loader  reads it
- * @param watch   tells of each save
- * @param engine  the tracers {@code --accel} chose
- * @param width   the picture's width in pixels
- * @param height  the picture's height in pixels
- * @param samples {@code --samples}: rays per pixel, each way, of the full picture
- * @param threads {@code --threads}
- * @param clock   {@code --clock}: the clock the window starts at, between 0 and 1 for its slider
+ * picture's size, {@code --samples} and {@code --threads} as {@code -o} would render it; {@code clock} is
+ * {@code --clock}, where the window's clock starts, between 0 and 1 for its slider.
  */
 public record WindowSetup(Path scene, SceneLoader loader, FileWatch watch, Engine engine, int width, int height,
         int samples, int threads, double clock) {
 
-    /** Reads the window's scene file, as the command line reads it; again after each save. */
+    /**
+     * Reads the window's scene file as the command line reads it, again after each save; a file that cannot be read
+     * throws an {@link IOException} whose message says so for people ("cannot read the scene file '…': …").
+     */
     @FunctionalInterface
     public interface SceneLoader {
-
-        /**
-         * The scene file as it is now, read once, to be parsed at any clock; a file that cannot be read throws an
-         * {@link IOException} whose message says so for people ("cannot read the scene file '…': …").
-         */
         ClockedScene read() throws IOException;
+    }
+
+    /**
+     * The command line's watcher, the one {@code --watch} renders again with: once started, {@code changed} runs on its
+     * thread after each save of the scene file or a mesh it uses, until the result is closed.
+     */
+    @FunctionalInterface
+    public interface FileWatch {
+        AutoCloseable start(Runnable changed);
+    }
+
+    /**
+     * What the window finds its hits with, as {@code --accel} chose: every choice finds the same hits, and so draws the
+     * same pixels. {@code forAnyCamera} gives tracers for rays of any camera in a scene's objects and lights, for
+     * pictures of about {@code width × height}, built once for a scene and kept while the camera moves;
+     * {@code forPicture} those {@code -o} takes for the full picture by the scene's camera with {@code samples ×
+     * samples} rays per pixel, built from {@code anyCamera} so that only what serves this camera alone is built again.
+     * Each supplier gives a new tracer for each thread.
+     */
+    public interface Engine {
+        Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples, Supplier<Tracer> anyCamera);
+
+        Supplier<Tracer> forAnyCamera(Scene scene, int width, int height);
+    }
+
+    /**
+     * The scene file as the window read it last, parsed at any clock without reading it again (its meshes are read
+     * once, by {@link SceneFile}), each scene passed through {@code sized} as the command line sizes it
+     * ({@code --scale}; the identity for none).
+     */
+    public record ClockedScene(SceneFile file, UnaryOperator<Scene> sized) {
+
+        /** The file's scene at {@code clock} (its warnings are not shown), or its located mistakes at that clock. */
+        Scene at(double clock) throws SceneException {
+            return sized.apply(file.at(clock, new ArrayList<>()));
+        }
     }
 
     /** Where {@code Ctrl+S} saves: beside the scene, its name with {@code -window.png} for its extension. */
     Path savedPicture() {
         String name = scene.getFileName().toString();
         int dot = name.lastIndexOf('.');
-        String stem = dot > 0 ? name.substring(0, dot) : name;
-        return scene.resolveSibling(stem + "-window.png");
+        return scene.resolveSibling((dot > 0 ? name.substring(0, dot) : name) + "-window.png");
     }
 }

@@ -21,6 +21,7 @@ import rtd.scene.Scene;
 import rtd.testing.Cli;
 import rtd.testing.Scenes;
 import rtd.view.View;
+import rtd.window.WindowSetup.Engine;
 
 @DisplayName("The window's renders: passes of 8, 4, 2 and 1, the last -o's own pixels, and cancelled by a newer one")
 class FrameRendererTest {

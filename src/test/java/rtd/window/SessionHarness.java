@@ -9,6 +9,7 @@ import java.util.concurrent.TimeUnit;
 import rtd.cli.WindowOptions;
 import rtd.image.Picture;
 import rtd.io.SceneFile;
+import rtd.window.WindowSetup.ClockedScene;
 
 /**
  * A {@link WindowSession} without a screen, for tests: its window's thread is a single thread of its own, as

@@ -15,6 +15,7 @@ import rtd.image.Picture;
 import rtd.io.SceneFile;
 import rtd.io.SceneIO;
 import rtd.scene.Scene;
+import rtd.window.WindowSetup.ClockedScene;
 
 @DisplayName("What the window does, without a screen: explain, copy the camera, save, a broken edit")
 class WindowSessionTest {

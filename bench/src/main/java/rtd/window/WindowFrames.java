@@ -13,6 +13,7 @@ import rtd.image.Picture;
 import rtd.io.SceneIO;
 import rtd.math.Vector3f;
 import rtd.scene.Scene;
+import rtd.window.WindowSetup.Engine;
 
 /**
  * The window's speed, warm, without a screen: frames rendered as the window renders them ({@link FrameRenderer})
