@@ -21,11 +21,8 @@ import rtd.scene.Scene;
  */
 final class SideJobs implements AutoCloseable {
 
-    private final ExecutorService helper = Executors.newSingleThreadExecutor(runnable -> {
-        Thread thread = new Thread(runnable, "rtd-window-explain");
-        thread.setDaemon(true);
-        return thread;
-    });
+    private final ExecutorService helper = Executors.newSingleThreadExecutor(job -> RenderLoop.daemon(job,
+            "rtd-window-explain"));
     private final Executor ui;
 
     SideJobs(Executor ui) {

@@ -23,8 +23,8 @@ class StatusLineTest {
 
     @Test
     void theClockIsWrittenWithThreeDecimals() {
-        assertThat(ClockControl.label(0.25)).isEqualTo("clock 0.250");
-        assertThat(ClockControl.label(1.0 / 3)).isEqualTo("clock 0.333");
+        assertThat(WindowSession.label(0.25)).isEqualTo("clock 0.250");
+        assertThat(WindowSession.label(1.0 / 3)).isEqualTo("clock 0.333");
     }
 
     private static FrameRenderer.Pass pass(long nanos, long rays, int block) {

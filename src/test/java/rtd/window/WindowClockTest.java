@@ -43,8 +43,8 @@ class WindowClockTest {
         int[] expected = picture(orbit, "0.25");
         assertThat(window.on(() -> window.session.shown().picture().rgb())).isNotEqualTo(expected);
 
-        window.run(() -> window.session.clock().moved(0.2));
-        window.run(() -> window.session.clock().rested(0.25));
+        window.run(() -> window.session.atClock(0.2, false));
+        window.run(() -> window.session.atClock(0.25, true));
         window.awaitTrue(() -> Arrays.equals(window.session.shown().picture().rgb(), expected));
         assertThat(window.on(() -> window.display.clock)).isEqualTo(0.25);
         assertThat(window.on(() -> window.display.status)).startsWith("picture · clock 0.250 · 160 × 90");
@@ -56,13 +56,13 @@ class WindowClockTest {
         window = SessionHarness.open(orbit, W, H, 0.5);
         assertThat(window.awaitFull().rgb()).isEqualTo(picture(orbit, "0.5"));
 
-        window.run(() -> window.session.clock().rested(0.25));
+        window.run(() -> window.session.atClock(0.25, true));
         assertThat(copied()).isEqualTo(fileCamera(orbit, 0.25));
 
         window.run(() -> window.session.drag(30, 10, false, window.session.pivot()));
         String moved = copied();
         assertThat(moved).isNotEqualTo(fileCamera(orbit, 0.25));
-        window.run(() -> window.session.clock().rested(0.75));
+        window.run(() -> window.session.atClock(0.75, true));
         assertThat(copied()).isEqualTo(moved);
 
         window.run(() -> window.session.resetCamera());
@@ -72,28 +72,28 @@ class WindowClockTest {
     @Test
     void playAdvancesTheClockWithTimeAndWrapsRoundTo0() throws Exception {
         // one pass in 5 s: 1.25 s is a quarter; 0.75 and a further 1.5 s is 1.05, which wraps to 0.05
-        assertThat(ClockControl.next(0, 1_250_000_000L)).isEqualTo(0.25);
-        assertThat(ClockControl.next(0.75, 1_500_000_000L)).isCloseTo(0.05, within(1e-12));
-        assertThat(ClockControl.next(1, 0)).isZero();
+        assertThat(WindowSession.next(0, 1_250_000_000L)).isEqualTo(0.25);
+        assertThat(WindowSession.next(0.75, 1_500_000_000L)).isCloseTo(0.05, within(1e-12));
+        assertThat(WindowSession.next(1, 0)).isZero();
 
         window = SessionHarness.open(Path.of("examples", "orbit.txt"), W, H, 0);
         window.awaitFull();
-        window.run(() -> window.session.clock().tick(1_000_000_000L));
-        assertThat(window.on(() -> window.session.clock().clock())).isZero(); // not playing yet
-        window.run(() -> window.session.clock().play());
-        window.run(() -> window.session.clock().tick(1_250_000_000L));
+        window.run(() -> window.session.tick(1_000_000_000L));
+        assertThat(window.on(() -> window.session.clock())).isZero(); // not playing yet
+        window.run(() -> window.session.play());
+        window.run(() -> window.session.tick(1_250_000_000L));
         assertThat(window.on(() -> window.display.clock)).isEqualTo(0.25);
-        window.run(() -> window.session.clock().tick(4_000_000_000L));
-        assertThat(window.on(() -> window.session.clock().clock())).isCloseTo(0.05, within(1e-12));
-        window.run(() -> window.session.clock().play());
-        assertThat(window.on(() -> window.session.clock().playing())).isFalse();
+        window.run(() -> window.session.tick(4_000_000_000L));
+        assertThat(window.on(() -> window.session.clock())).isCloseTo(0.05, within(1e-12));
+        window.run(() -> window.session.play());
+        assertThat(window.on(() -> window.session.playing())).isFalse();
         window.awaitTrue(() -> window.display.status.startsWith("picture · clock 0.050 · 160 × 90 · last frame"));
 
-        window.run(() -> window.session.clock().play());
-        window.run(() -> window.session.clock().slid(0.5, true)); // the user takes the slider: playing stops
-        assertThat(window.on(() -> window.session.clock().playing())).isFalse();
-        window.run(() -> window.session.clock().tick(1_000_000_000L));
-        assertThat(window.on(() -> window.session.clock().clock())).isEqualTo(0.5);
+        window.run(() -> window.session.play());
+        window.run(() -> window.session.slid(0.5, true)); // the user takes the slider: playing stops
+        assertThat(window.on(() -> window.session.playing())).isFalse();
+        window.run(() -> window.session.tick(1_000_000_000L));
+        assertThat(window.on(() -> window.session.clock())).isEqualTo(0.5);
     }
 
     @Test
@@ -103,7 +103,7 @@ class WindowClockTest {
         window = SessionHarness.open(scene, W, H, 0);
         Picture before = window.awaitFull();
 
-        window.run(() -> window.session.clock().rested(0.75));
+        window.run(() -> window.session.atClock(0.75, true));
         String panel = window.on(() -> window.display.panel);
         assertThat(panel).contains("scene.txt:2:").contains("at clock = 0.75")
                 .endsWith("The last good picture stays; fix the scene and save it again, or move the clock.");
@@ -111,8 +111,8 @@ class WindowClockTest {
         Thread.sleep(200);
         assertThat(window.on(() -> window.session.shown().picture().rgb())).isEqualTo(before.rgb());
 
-        window.run(() -> window.session.clock().rested(0.25));
-        assertThat(window.on(() -> window.display.panel)).isEqualTo(SceneWindow.HELP);
+        window.run(() -> window.session.atClock(0.25, true));
+        assertThat(window.on(() -> window.display.panel)).isEqualTo(Window.HELP);
         int[] smaller = picture(scene, "0.25");
         window.awaitTrue(() -> Arrays.equals(window.session.shown().picture().rgb(), smaller));
     }

@@ -129,11 +129,11 @@ class WindowOnScreenTest {
             Robot robot = new Robot();
             robot.keyPress(KeyEvent.VK_P);
             robot.keyRelease(KeyEvent.VK_P);
-            await(() -> onEdt(() -> session.clock().playing() && session.clock().clock() > 0.3 ? true : null),
+            await(() -> onEdt(() -> session.playing() && session.clock() > 0.3 ? true : null),
                     "the clock playing");
             robot.keyPress(KeyEvent.VK_P);
             robot.keyRelease(KeyEvent.VK_P);
-            double paused = await(() -> onEdt(() -> session.clock().playing() ? null : session.clock().clock()),
+            double paused = await(() -> onEdt(() -> session.playing() ? null : session.clock()),
                     "the clock paused");
             int[] expected = picture(orbit, "paused.png", 160, 90, Double.toString(paused));
             await(() -> onEdt(() -> session.shown().block() == 1

@@ -40,7 +40,7 @@ class WindowSessionTest {
         assertThat(window.on(() -> window.display.rays)).isNotEmpty();
         window.run(() -> window.session.deselect());
         assertThat(window.on(() -> window.display.rays)).isEmpty();
-        assertThat(window.on(() -> window.display.panel)).isEqualTo(SceneWindow.HELP);
+        assertThat(window.on(() -> window.display.panel)).isEqualTo(Window.HELP);
     }
 
     @Test
@@ -91,8 +91,8 @@ class WindowSessionTest {
         window.awaitFull();
         assertThat(window.on(() -> window.display.clock)).isNull();
         assertThat(window.on(() -> window.display.status)).doesNotContain("clock");
-        window.run(() -> window.session.clock().play());
-        assertThat(window.on(() -> window.session.clock().playing())).isFalse();
+        window.run(() -> window.session.play());
+        assertThat(window.on(() -> window.session.playing())).isFalse();
         assertThat(window.on(() -> window.display.panel)).startsWith("The scene does not use clock");
     }
 
