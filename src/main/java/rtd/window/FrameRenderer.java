@@ -2,6 +2,12 @@ package rtd.window;
 
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.Executor;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.FutureTask;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -31,9 +37,12 @@ import rtd.window.WindowSetup.Engine;
  * own ({@link BlockCamera}), with the tracers for any camera, and that colour fills the block, so the picture shows at
  * once and sharpens; the full pass, with the tracers {@code -o} builds for the camera, is {@code -o}'s picture.
  *
- * <p>A render is cancelled by interrupting its thread: it then stops at the next band of rows, and shows nothing more.
+ * <p>Frames render on a thread of their own, one at a time, the newest asked for: one still waiting is dropped for a
+ * newer one, and a frame that ends in full cancels the one in progress (it interrupts the thread, and the render stops
+ * at its next band of rows and shows nothing more), so the picture follows the latest camera and the window's own
+ * thread never waits for a render. A moving frame waits for the one before, so that frames are finished and shown.
  */
-final class FrameRenderer {
+final class FrameRenderer implements AutoCloseable {
 
     static final List<Integer> STILL = List.of(8, 4, 2, 1);
     static final List<Integer> MOVING = List.of(2);
@@ -86,17 +95,106 @@ final class FrameRenderer {
     private final int height;
     private final int samples;
     private final int threads;
+    private final Executor ui;
+    private final BiConsumer<Pass, Boolean> shown;
+    private final Consumer<RuntimeException> failed;
+    private final ExecutorService thread = Executors.newSingleThreadExecutor(job -> daemon(job, "rtd-window-render"));
+    /** Counts the frames asked for: one not the newest when its turn comes is dropped, a pass older than shown too. */
+    private long asked;
+    private Future<?> running = new FutureTask<>(() -> null);
+    private long shownFrame = -1;
+    /** The next moving frame's blocks, from the blocks and time of the last moving frame shown. */
+    private List<Integer> nextMoving = MOVING;
     /** The tracers for any camera in {@link #traced}'s objects and lights, built again only for another scene. */
     private Scene traced;
     private Supplier<Tracer> anyCamera;
 
-    /** Frames of {@code width × height} pixels, {@code samples × samples} rays each in full, on {@code threads}. */
-    FrameRenderer(Engine engine, int width, int height, int samples, int threads) {
-        this.engine = engine;
-        this.width = width;
-        this.height = height;
-        this.samples = samples;
-        this.threads = threads;
+    /**
+     * Frames of {@code setup}'s size, samples and threads, each pass handed to {@code shown} on {@code ui} with whether
+     * its frame is the newest asked for; a render's failure (a bug, not a cancel) goes to {@code failed}.
+     */
+    FrameRenderer(WindowSetup setup, Executor ui, BiConsumer<Pass, Boolean> shown, Consumer<RuntimeException> failed) {
+        this.engine = setup.engine();
+        this.width = setup.width();
+        this.height = setup.height();
+        this.samples = setup.samples();
+        this.threads = setup.threads();
+        this.ui = ui;
+        this.shown = shown;
+        this.failed = failed;
+    }
+
+    /**
+     * Asks for a frame of {@code file}'s objects and lights seen by {@code camera} ({@code view} null for the picture)
+     * in passes of {@code blocks}, or for a moving frame ({@code blocks} null), coarser if the last was too slow.
+     */
+    synchronized void frame(Scene file, ICamera camera, View view, List<Integer> blocks) {
+        boolean moving = blocks == null;
+        List<Integer> passes = moving ? nextMoving : blocks;
+        long frame = asked + 1;
+        submit(() -> render(file, camera, view, passes, pass -> ui.execute(() -> show(frame, pass, moving))), !moving);
+    }
+
+    private void show(long frame, Pass pass, boolean moving) {
+        if (frame < shownFrame) {
+            return; // a newer frame is already on screen
+        }
+        if (moving) {
+            nextMoving = moving(pass.block(), pass.nanos());
+        }
+        shownFrame = frame;
+        shown.accept(pass, newest());
+    }
+
+    /** Whether the frame shown last is the newest asked for. */
+    synchronized boolean newest() {
+        return shownFrame == asked;
+    }
+
+    /** Runs {@code job} next on the render thread, in place of any job still waiting; {@code cancel}: the one running. */
+    synchronized void submit(Runnable job, boolean cancel) {
+        if (thread.isShutdown()) {
+            return; // the window is closed
+        }
+        long mine = ++asked;
+        if (cancel) {
+            running.cancel(true);
+        }
+        thread.execute(() -> run(mine, job));
+    }
+
+    private void run(long mine, Runnable job) {
+        FutureTask<Void> task = new FutureTask<>(() -> {
+            try {
+                job.run();
+            } catch (RuntimeException e) {
+                if (!Thread.currentThread().isInterrupted()) {
+                    failed.accept(e); // a bug; the next frame renders as usual
+                }
+            }
+        }, null);
+        synchronized (this) {
+            if (mine != asked) {
+                return; // a newer job waits
+            }
+            running = task; // a cancel interrupts this thread only while the task runs
+        }
+        task.run();
+    }
+
+    /** Stops the render thread: the frame in progress is cancelled, and no other renders. */
+    @Override
+    public synchronized void close() {
+        asked++;
+        running.cancel(true);
+        thread.shutdownNow();
+    }
+
+    /** A daemon thread named {@code name} that runs {@code job}: the window's threads never keep Java running. */
+    static Thread daemon(Runnable job, String name) {
+        Thread thread = new Thread(job, name);
+        thread.setDaemon(true);
+        return thread;
     }
 
     /**

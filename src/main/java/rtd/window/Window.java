@@ -42,7 +42,7 @@ import rtd.window.WindowSetup.ClockedScene;
  * of {@code --view}; saving the scene file renders it again, as {@code --watch}; a scene that uses {@code clock} has a
  * clock slider above the panel of text and a play key. Its Swing parts are made and used on Swing's thread only.
  */
-public final class Window implements WindowSession.Display {
+public final class Window implements Display {
 
     /** The window's keys and mouse, as its panel shows them before a pixel is selected (and the README's table). */
     static final String HELP = String.join("\n",

@@ -1,12 +1,9 @@
 package rtd.window;
 
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Executor;
-import java.util.function.Consumer;
 import rtd.camera.ICamera;
-import rtd.image.Picture;
 import rtd.io.SceneException;
 import rtd.math.Vector3f;
 import rtd.scene.Scene;
@@ -16,8 +13,8 @@ import rtd.window.WindowSetup.ClockedScene;
 /**
  * What the window does, without its Swing parts: the scene file at the clock shown, the camera as the mouse moved it,
  * the view, the selected pixel, and the renders. It lives on the window's thread (Swing's event thread, {@code ui});
- * renders run on the {@link RenderLoop}, explanations and saves on their own thread ({@link SideJobs}), and what they
- * find comes back through {@code ui} to the {@link Display}.
+ * renders run on the {@link FrameRenderer}'s thread, and what they find comes back through {@code ui} to the {@link Display}; the
+ * panel of text is its {@link SidePanel}'s.
  *
  * <p>The clock slider and {@code P} parse the file read at the last save again at each clock; a value that breaks at a
  * clock (a radius negative at clock = 0.75) shows as a saved mistake does, and the last good picture stays. Playing
@@ -30,49 +27,20 @@ final class WindowSession implements AutoCloseable {
     /** One pass of the played clock from 0 to 1: 5 seconds. */
     static final long PASS_NANOS = 5_000_000_000L;
 
-    /** What the window shows, told by its session; called on the window's thread only. */
-    interface Display {
-
-        /** The picture, or a view with its legend below it. */
-        void picture(Picture picture);
-
-        /** The selected pixel's ray tree, in image coordinates; empty for none. */
-        void rays(List<RayTreeProjection.Line> lines);
-
-        /** The side panel's text: the explanation, the copied camera, a scene's mistakes, the keys. */
-        void panel(String text);
-
-        void status(String text);
-
-        /** The clock slider at {@code clock}, or hidden for null: the scene does not use {@code clock}. */
-        void clock(Double clock);
-
-        void copy(String text);
-    }
-
     private final WindowSetup setup;
     private final Display display;
     private final Executor ui;
-    private final RenderLoop renders;
     private final FrameRenderer renderer;
-    private final SideJobs jobs;
+    private final SidePanel panel;
     /** The file as read at the last save, and its last good scene, {@code file}, at the clock shown. */
     private ClockedScene source;
     private Scene file;
     private double clock;
     private boolean playing;
-    /** Whether the panel shows a mistake, to give way to the keys or the explanation once the scene is good. */
-    private boolean showsMistake;
     private CameraController camera;
     private View view;
-    private int[] selected;
     private int[] underMouse;
     private FrameRenderer.Pass shown;
-    /** Counts the frames asked for: a pass of an older one is not shown. */
-    private long generation;
-    private long shownGeneration = -1;
-    /** The next moving frame's blocks, from the blocks and time of the last moving frame shown. */
-    private List<Integer> nextMoving = FrameRenderer.MOVING;
     /** Whether the panel is to show the view's scale once its full picture is drawn. */
     private boolean legendWanted;
 
@@ -81,11 +49,9 @@ final class WindowSession implements AutoCloseable {
         this.setup = setup;
         this.display = display;
         this.ui = ui;
-        this.renders = new RenderLoop(e -> ui.execute(() -> display.panel("rtd: internal error while rendering: " + e
-                + ". This is a bug in rtd; please report it with the scene.")));
-        this.renderer = new FrameRenderer(setup.engine(), setup.width(), setup.height(), setup.samples(),
-                setup.threads());
-        this.jobs = new SideJobs(ui);
+        this.renderer = new FrameRenderer(setup, ui, this::show, e -> ui.execute(() -> display.panel("rtd: internal "
+                + "error while rendering: " + e + ". This is a bug in rtd; please report it with the scene.")));
+        this.panel = new SidePanel(setup, display, ui);
         this.source = source;
         this.file = scene;
         this.clock = setup.clock();
@@ -119,27 +85,14 @@ final class WindowSession implements AutoCloseable {
         return playing;
     }
 
-    /** Renders the scene as it is now in passes of {@code blocks}; one ending full cancels a render in progress. */
-    void render(List<Integer> blocks) {
-        long frame = ++generation;
-        Scene objects = file;
-        ICamera eye = camera.camera();
-        View shownView = view;
-        boolean moving = !blocks.contains(1);
-        Consumer<FrameRenderer.Pass> listener = pass -> ui.execute(() -> show(frame, pass, moving));
-        renders.submit(() -> renderer.render(objects, eye, shownView, blocks, listener), !moving);
+    /** Renders the scene as it is now in passes of {@code blocks}, or a moving frame for null. */
+    private void render(List<Integer> blocks) {
+        renderer.frame(file, camera.camera(), view, blocks);
     }
 
-    private void show(long frame, FrameRenderer.Pass pass, boolean moving) {
-        if (frame < shownGeneration) {
-            return; // a newer frame is already on screen
-        }
-        if (moving) {
-            nextMoving = FrameRenderer.moving(pass.block(), pass.nanos());
-        }
-        shownGeneration = frame;
+    private void show(FrameRenderer.Pass pass, boolean newest) {
         shown = pass;
-        if (legendWanted && pass.block() == 1 && frame == generation && selected == null) {
+        if (legendWanted && pass.block() == 1 && newest && !panel.selected()) {
             legendWanted = false;
             display.panel(pass.legend());
         }
@@ -187,20 +140,20 @@ final class WindowSession implements AutoCloseable {
 
     private void moved() {
         display.rays(List.of()); // the selected pixel's rays follow once the camera rests
-        render(nextMoving);
+        render(null);
     }
 
     /** The mouse rests after moving the camera: the full picture, and the selected pixel's rays again. */
     void rested() {
         render(FrameRenderer.RESTED);
-        explainSelected();
+        panel.explain(scene());
     }
 
     /** {@code R}: the file's camera at the clock shown. */
     void resetCamera() {
         camera = new CameraController(file.camera());
         render(FrameRenderer.STILL);
-        explainSelected();
+        panel.explain(scene());
     }
 
     /** Keys 1 to 5: the picture (null) or a view, whose scale the panel shows once it is drawn. */
@@ -218,46 +171,22 @@ final class WindowSession implements AutoCloseable {
 
     /** A click on pixel (x, y): its explanation in the panel and its rays over the picture. */
     void select(int[] pixel) {
-        if (pixel != null && pixel[1] < setup.height()) { // not outside the picture, nor on a view's legend
-            selected = pixel;
-            explainSelected();
-        }
+        panel.select(pixel, scene());
     }
 
     /** {@code Esc}: no pixel selected. */
     void deselect() {
-        selected = null;
-        display.rays(List.of());
-        display.panel(Window.HELP);
-    }
-
-    private void explainSelected() {
-        int[] pixel = selected;
-        if (pixel != null) {
-            jobs.explain(scene(), setup.scene(), pixel[0], pixel[1], setup.width(), setup.height(), (text, lines) -> {
-                if (Arrays.equals(selected, pixel)) {
-                    display.panel(text);
-                    display.rays(lines);
-                }
-            });
-        }
+        panel.deselect();
     }
 
     /** {@code C}: the camera as a scene line, on the clipboard and in the panel. */
     void copyCamera() {
-        String line = CameraController.line(camera.camera());
-        display.copy(line);
-        display.panel("The camera, copied to the clipboard: paste it in place of the scene's camera line; the scene "
-                + "then renders this picture at " + setup.width() + " × " + setup.height() + ":\n\n" + line + "\n");
+        panel.copy(camera.camera());
     }
 
     /** {@code Ctrl+S}: the full picture (or view) as shown, written as {@code -o} writes, beside the scene. */
     void save() {
-        if (shown == null || shown.block() != 1 || shownGeneration != generation) {
-            display.panel("The picture is still being rendered; save again once the status line shows no blocks.");
-        } else {
-            jobs.save(shown.picture(), setup.savedPicture(), display::panel);
-        }
+        panel.save(shown, renderer.newest());
     }
 
     /** The file saved again: parsed at the clock shown, or its mistakes shown; the file's camera if it changed. */
@@ -267,7 +196,7 @@ final class WindowSession implements AutoCloseable {
         try {
             scene = read.at(clock);
         } catch (SceneException e) {
-            mistake(e.report(), "");
+            panel.mistake(e.report(), "");
             return;
         }
         playing &= read.file().usesClock(); // known once the file is parsed
@@ -277,7 +206,7 @@ final class WindowSession implements AutoCloseable {
         }
         file = scene;
         render(FrameRenderer.STILL);
-        panelAgain();
+        panel.fixed(scene(), true);
     }
 
     /**
@@ -323,7 +252,7 @@ final class WindowSession implements AutoCloseable {
         try {
             scene = source.at(to);
         } catch (SceneException e) {
-            mistake(e.report(), ", or move the clock");
+            panel.mistake(e.report(), ", or move the clock");
             status();
             return;
         }
@@ -331,9 +260,7 @@ final class WindowSession implements AutoCloseable {
             camera = new CameraController(scene.camera()); // not moved by the user: it follows the file's
         }
         file = scene;
-        if (showsMistake) {
-            panelAgain();
-        }
+        panel.fixed(scene(), false);
         if (full) {
             rested();
         } else {
@@ -352,23 +279,12 @@ final class WindowSession implements AutoCloseable {
 
     /** A mistake's {@code report} in the panel, the last good picture kept; {@code orClock} adds a way out. */
     void mistake(String report, String orClock) {
-        showsMistake = true;
-        display.panel(report + "\nThe last good picture stays; fix the scene and save it again" + orClock + ".");
-    }
-
-    /** The panel's keys, or the selected pixel's explanation, again, in place of a mistake. */
-    private void panelAgain() {
-        showsMistake = false;
-        if (selected != null) {
-            explainSelected();
-        } else {
-            display.panel(Window.HELP);
-        }
+        panel.mistake(report, orClock);
     }
 
     @Override
     public void close() {
-        renders.close();
-        jobs.close();
+        renderer.close();
+        panel.close();
     }
 }

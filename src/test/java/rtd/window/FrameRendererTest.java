@@ -52,7 +52,7 @@ class FrameRendererTest {
         Scene scaled = new Scene(paper.ambient(), new OrthographicCamera(camera.position(), camera.direction(), 6.25f),
                 paper.objects(), paper.lights());
         List<FrameRenderer.Pass> passes = new ArrayList<>();
-        new FrameRenderer(ENGINE, 240, 135, 1, 2).render(scaled, scaled.camera(), null, FrameRenderer.STILL, passes::add);
+        renderer(240, 135).render(scaled, scaled.camera(), null, FrameRenderer.STILL, passes::add);
         Path out = dir.resolve("paper.png");
         assertThat(Cli.run("examples/input_rtd.txt", "--scale", "0.125", "-o", out.toString()).exitCode()).isZero();
         assertThat(passes.get(3).picture().rgb()).isEqualTo(rgb(ImageIO.read(out.toFile())))
@@ -78,7 +78,7 @@ class FrameRendererTest {
         CountDownLatch started = new CountDownLatch(1);
         AtomicBoolean finished = new AtomicBoolean();
         CountDownLatch second = new CountDownLatch(1);
-        try (RenderLoop loop = new RenderLoop(e -> { })) {
+        try (FrameRenderer loop = renderer(160, 90)) {
             loop.submit(() -> {
                 started.countDown();
                 try {
@@ -109,7 +109,13 @@ class FrameRendererTest {
     }
 
     private static void render(Scene scene, View view, List<Integer> blocks, Consumer<FrameRenderer.Pass> listener) {
-        new FrameRenderer(ENGINE, 160, 90, 1, 2).render(scene, scene.camera(), view, blocks, listener);
+        renderer(160, 90).render(scene, scene.camera(), view, blocks, listener);
+    }
+
+    /** A renderer of {@code w × h} pictures with one ray per pixel on 2 threads, its frames shown nowhere. */
+    private static FrameRenderer renderer(int w, int h) {
+        return new FrameRenderer(new WindowSetup(null, null, null, ENGINE, w, h, 1, 2, 0), Runnable::run,
+                (pass, newest) -> { }, e -> { });
     }
 
     private int[] written(String scene) throws Exception {

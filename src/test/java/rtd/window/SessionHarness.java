@@ -74,7 +74,7 @@ final class SessionHarness implements AutoCloseable {
     }
 
     /** What the window would show. */
-    static final class Shown implements WindowSession.Display {
+    static final class Shown implements Display {
         String panel = "";
         String status = "";
         String copied;
