@@ -99,7 +99,7 @@ final class FrameRenderer implements AutoCloseable {
     private final BiConsumer<Pass, Boolean> shown;
     private final Consumer<RuntimeException> failed;
     private final ExecutorService thread = Executors.newSingleThreadExecutor(job -> daemon(job, "rtd-window-render"));
-    /** Counts the frames asked for: one not the newest when its turn comes is dropped, a pass older than shown too. */
+    /** Counts the frames asked for: one that is not the newest when its turn comes is dropped. */
     private long asked;
     private Future<?> running = new FutureTask<>(() -> null);
     private long shownFrame = -1;
@@ -135,10 +135,8 @@ final class FrameRenderer implements AutoCloseable {
         submit(() -> render(file, camera, view, passes, pass -> ui.execute(() -> show(frame, pass, moving))), !moving);
     }
 
+    /** A pass on the window's thread; passes come in the order they were rendered, so none is older than the last. */
     private void show(long frame, Pass pass, boolean moving) {
-        if (frame < shownFrame) {
-            return; // a newer frame is already on screen
-        }
         if (moving) {
             nextMoving = moving(pass.block(), pass.nanos());
         }
@@ -151,7 +149,7 @@ final class FrameRenderer implements AutoCloseable {
         return shownFrame == asked;
     }
 
-    /** Runs {@code job} next on the render thread, in place of any job still waiting; {@code cancel}: the one running. */
+    /** Runs {@code job} next on the render thread, in place of any job still waiting; {@code cancel}s the running one. */
     synchronized void submit(Runnable job, boolean cancel) {
         if (thread.isShutdown()) {
             return; // the window is closed
@@ -199,7 +197,7 @@ final class FrameRenderer implements AutoCloseable {
 
     /**
      * Renders {@code file}'s objects and lights seen by {@code camera} ({@code view} null for the picture) in passes
-     * of {@code blocks}, handing each to {@code listener} as it is done. On one thread at a time; interrupted, it stops.
+     * of {@code blocks}, handing each to {@code listener} as it is done; interrupted, it stops. One thread at a time.
      */
     void render(Scene file, ICamera camera, View view, List<Integer> blocks, Consumer<Pass> listener) {
         if (traced != file) {

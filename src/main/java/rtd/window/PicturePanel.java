@@ -67,7 +67,7 @@ final class PicturePanel extends JComponent {
     }
 
     PixelMapping mapping() {
-        return image == null ? null : new PixelMapping(image.getWidth(), image.getHeight(), getWidth(), getHeight());
+        return image == null ? null : PixelMapping.of(image.getWidth(), image.getHeight(), getWidth(), getHeight());
     }
 
     List<RayTreeProjection.Line> rays() {
@@ -195,40 +195,33 @@ final class PicturePanel extends JComponent {
 
     /**
      * Where the picture lies in the panel, and which pixel a point of the panel shows: the picture is scaled by one
-     * factor to fit the panel (up or down, its shape kept) and centred in it. Image coordinates run from (0, 0), the top
-     * left corner of pixel (0, 0), to (width, height); pixel (x, y) covers [x, x + 1) × [y, y + 1).
+     * factor to fit the panel (up or down, its shape kept) and centred in it. Image coordinates run from (0, 0), the
+     * top left corner of pixel (0, 0), to (width, height); pixel (x, y) covers [x, x + 1) × [y, y + 1).
+     *
+     * @param scale screen pixels per image pixel
      */
-    record PixelMapping(int imageWidth, int imageHeight, int panelWidth, int panelHeight) {
+    record PixelMapping(int imageWidth, int imageHeight, double scale, double left, double top) {
 
-        /** Screen pixels per image pixel. */
-        double scale() {
-            if (panelWidth <= 0 || panelHeight <= 0) {
-                return 1;
-            }
-            return Math.min(panelWidth / (double) imageWidth, panelHeight / (double) imageHeight);
-        }
-
-        double left() {
-            return (panelWidth - imageWidth * scale()) / 2;
-        }
-
-        double top() {
-            return (panelHeight - imageHeight * scale()) / 2;
+        static PixelMapping of(int imageWidth, int imageHeight, int panelWidth, int panelHeight) {
+            double scale = panelWidth <= 0 || panelHeight <= 0 ? 1
+                    : Math.min(panelWidth / (double) imageWidth, panelHeight / (double) imageHeight);
+            return new PixelMapping(imageWidth, imageHeight, scale, (panelWidth - imageWidth * scale) / 2,
+                    (panelHeight - imageHeight * scale) / 2);
         }
 
         /** The pixel {@code [x, y]} of the picture under the panel's point, or null outside the picture. */
         int[] pixelAt(double panelX, double panelY) {
-            double x = Math.floor((panelX - left()) / scale());
-            double y = Math.floor((panelY - top()) / scale());
+            double x = Math.floor((panelX - left) / scale);
+            double y = Math.floor((panelY - top) / scale);
             return x < 0 || y < 0 || x >= imageWidth || y >= imageHeight ? null : new int[] {(int) x, (int) y};
         }
 
         double panelX(double imageX) {
-            return left() + imageX * scale();
+            return left + imageX * scale;
         }
 
         double panelY(double imageY) {
-            return top() + imageY * scale();
+            return top + imageY * scale;
         }
     }
 }

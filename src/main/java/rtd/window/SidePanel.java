@@ -16,13 +16,33 @@ import rtd.io.SceneIO;
 import rtd.scene.Scene;
 
 /**
- * The window's panel of text, without Swing: the keys ({@link Window#HELP}), a selected pixel's explanation as
+ * The window's panel of text, without Swing: the keys ({@link #HELP}), a selected pixel's explanation as
  * {@code --explain} tells it with its rays over the picture, the copied camera, a saved picture, a scene's mistakes.
  * The slower answers, an explanation and a save, run on a thread of their own, so that neither the window nor its
  * renders wait; each comes back through {@code ui}, and an explanation shows only if its pixel is still selected. Used
  * on the window's thread.
  */
 final class SidePanel implements AutoCloseable {
+
+    /** The window's keys and mouse, as its panel shows them before a pixel is selected (and the README's table). */
+    static final String HELP = String.join("\n",
+            "rtd's window: click a pixel to see what rtd does for it.",
+            "",
+            "  drag        orbit around what the centre pixel sees",
+            "  right drag  pan (or Shift + drag)",
+            "  wheel       zoom",
+            "  click       explain the pixel, its rays over the picture",
+            "  1 to 5      picture, cost, depth, normal, id (V: next)",
+            "  R           the file's camera again",
+            "  C           copy the camera as a scene line",
+            "  P           play the clock, 0 to 1 in 5 s, or pause",
+            "  Ctrl+S      save the picture as NAME-window.png",
+            "  Esc         no pixel selected",
+            "  Q           quit",
+            "",
+            "Saving the scene file renders it again. A scene that uses clock",
+            "has a clock slider above this panel.",
+            "");
 
     private final ExecutorService helper = Executors.newSingleThreadExecutor(job -> FrameRenderer.daemon(job,
             "rtd-window-explain"));
@@ -79,7 +99,7 @@ final class SidePanel implements AutoCloseable {
     void deselect() {
         selected = null;
         display.rays(List.of());
-        display.panel(Window.HELP);
+        display.panel(HELP);
     }
 
     /** {@code camera} as a scene line, on the clipboard and in the panel. */
@@ -90,7 +110,7 @@ final class SidePanel implements AutoCloseable {
                 + "then renders this picture at " + setup.width() + " × " + setup.height() + ":\n\n" + line + "\n");
     }
 
-    /** The picture {@code shown} written as {@code -o} writes it, beside the scene, if it is the newest frame in full. */
+    /** The picture {@code shown} written as {@code -o} writes it, beside the scene, if it is the newest in full. */
     void save(FrameRenderer.Pass shown, boolean newest) {
         if (shown == null || shown.block() != 1 || !newest) {
             display.panel("The picture is still being rendered; save again once the status line shows no blocks.");
@@ -124,7 +144,7 @@ final class SidePanel implements AutoCloseable {
             if (selected != null) {
                 explain(scene);
             } else {
-                display.panel(Window.HELP);
+                display.panel(HELP);
             }
         }
     }

@@ -36,35 +36,14 @@ import rtd.view.View;
 import rtd.window.WindowSetup.ClockedScene;
 
 /**
- * {@code --window}: a window on a scene, thin Swing around its {@link WindowSession}. The picture ({@link PicturePanel})
- * renders coarse at once and is refined on all cores; the mouse orbits, pans and zooms the camera; a click explains a
- * pixel as {@code --explain} does, with its rays drawn over the picture; the keys ({@link #HELP}) switch to the views
- * of {@code --view}; saving the scene file renders it again, as {@code --watch}; a scene that uses {@code clock} has a
- * clock slider above the panel of text and a play key. Its Swing parts are made and used on Swing's thread only.
+ * {@code --window}: opens a window on a scene, thin Swing around its {@link WindowSession}, and waits until it is
+ * closed: the picture ({@link PicturePanel}) beside the panel of text, under it the status line, above it the
+ * clock slider of a scene that uses {@code clock}; the keys of {@link SidePanel#HELP}, {@code P}'s timer among them.
+ * Its Swing parts are made and used on Swing's thread only.
  */
 public final class Window implements Display {
 
-    /** The window's keys and mouse, as its panel shows them before a pixel is selected (and the README's table). */
-    static final String HELP = String.join("\n",
-            "rtd's window: click a pixel to see what rtd does for it.",
-            "",
-            "  drag        orbit around what the centre pixel sees",
-            "  right drag  pan (or Shift + drag)",
-            "  wheel       zoom",
-            "  click       explain the pixel, its rays over the picture",
-            "  1 to 5      picture, cost, depth, normal, id (V: next)",
-            "  R           the file's camera again",
-            "  C           copy the camera as a scene line",
-            "  P           play the clock, 0 to 1 in 5 s, or pause",
-            "  Ctrl+S      save the picture as NAME-window.png",
-            "  Esc         no pixel selected",
-            "  Q           quit",
-            "",
-            "Saving the scene file renders it again. A scene that uses clock",
-            "has a clock slider above this panel.",
-            "");
-
-    /** The side panel's width in screen pixels. */
+    /** The panel of text's width in screen pixels. */
     private static final int SIDE_WIDTH = 460;
     private static final int SLIDER_STEPS = 1000;
     /** How often the window asks for the next frame while playing: 25 times a second at most. */
@@ -94,10 +73,7 @@ public final class Window implements Display {
         }
     }
 
-    /**
-     * Why no window can open here, in a few words ("DISPLAY is not set"), or null if one can: Java runs headless
-     * without a display, and a display that cannot be reached fails when the first window would open.
-     */
+    /** Why no window can open here, in a few words ("DISPLAY is not set"), or null if one can. */
     public static String missingDisplay() {
         String display = System.getenv("DISPLAY");
         if (GraphicsEnvironment.isHeadless()) {

@@ -12,9 +12,9 @@ import rtd.window.WindowSetup.ClockedScene;
 
 /**
  * What the window does, without its Swing parts: the scene file at the clock shown, the camera as the mouse moved it,
- * the view, the selected pixel, and the renders. It lives on the window's thread (Swing's event thread, {@code ui});
- * renders run on the {@link FrameRenderer}'s thread, and what they find comes back through {@code ui} to the {@link Display}; the
- * panel of text is its {@link SidePanel}'s.
+ * the view, and the renders; the panel of text is its {@link SidePanel}'s. It lives on the window's thread (Swing's
+ * event thread, {@code ui}); renders run on the {@link FrameRenderer}'s thread, and what they find comes back through
+ * {@code ui} to the {@link Display}.
  *
  * <p>The clock slider and {@code P} parse the file read at the last save again at each clock; a value that breaks at a
  * clock (a radius negative at clock = 0.75) shows as a saved mistake does, and the last good picture stays. Playing
@@ -59,7 +59,7 @@ final class WindowSession implements AutoCloseable {
     }
 
     void start() {
-        display.panel(Window.HELP);
+        display.panel(SidePanel.HELP);
         showSlider();
         render(FrameRenderer.STILL);
     }
@@ -221,7 +221,7 @@ final class WindowSession implements AutoCloseable {
     /** {@code P}: plays the clock or pauses it; the paused clock's picture is drawn in full. */
     void play() {
         if (!source.file().usesClock()) {
-            display.panel("The scene does not use clock: there is nothing to play.\n\n" + Window.HELP);
+            display.panel("The scene does not use clock: there is nothing to play.\n\n" + SidePanel.HELP);
             return;
         }
         playing = !playing;

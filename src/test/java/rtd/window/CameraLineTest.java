@@ -20,7 +20,8 @@ class CameraLineTest {
 
     @Test
     void itIsTheSceneFilesStatementWithPlainNumbers() {
-        assertThat(CameraController.line(new PerspectiveCamera(new Vector3f(0, 2.5f, 9), new Vector3f(0, -0.3f, -1), 60)))
+        assertThat(CameraController.line(new PerspectiveCamera(new Vector3f(0, 2.5f, 9), new Vector3f(0, -0.3f, -1),
+                60)))
                 .isEqualTo("perspective_camera:(0|2.5|9):(0|-0.3|-1):(60)");
         assertThat(CameraController.line(new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50)))
                 .isEqualTo("orthographic_camera:(0|0|20):(0|0|-1):(50)");

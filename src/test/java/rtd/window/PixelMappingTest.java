@@ -11,7 +11,7 @@ class PixelMappingTest {
 
     @Test
     void aPanelOfThePicturesSizeShowsEachPixelAtItsPlace() {
-        PixelMapping same = new PixelMapping(160, 90, 160, 90);
+        PixelMapping same = PixelMapping.of(160, 90, 160, 90);
         assertThat(same.pixelAt(0, 0)).containsExactly(0, 0);
         assertThat(same.pixelAt(12.7, 40.2)).containsExactly(12, 40);
         assertThat(same.pixelAt(159.9, 89.9)).containsExactly(159, 89);
@@ -21,7 +21,7 @@ class PixelMappingTest {
     @Test
     void aLargerPanelScalesThePictureToFitAndCentresIt() {
         // 320 × 200 holds 160 × 90 twice as large, 320 × 180, with (200 − 180) / 2 = 10 rows above and below
-        PixelMapping larger = new PixelMapping(160, 90, 320, 200);
+        PixelMapping larger = PixelMapping.of(160, 90, 320, 200);
         assertThat(larger.scale()).isEqualTo(2.0);
         assertThat(larger.left()).isEqualTo(0.0);
         assertThat(larger.top()).isEqualTo(10.0);
@@ -35,7 +35,7 @@ class PixelMappingTest {
     @Test
     void aSmallerPanelShrinksThePictureAndMapsBack() {
         // 80 × 60 holds 160 × 90 at half size, 80 × 45, with 7.5 rows above
-        PixelMapping smaller = new PixelMapping(160, 90, 80, 60);
+        PixelMapping smaller = PixelMapping.of(160, 90, 80, 60);
         assertThat(smaller.scale()).isEqualTo(0.5);
         assertThat(smaller.pixelAt(10, 7.5 + 10)).containsExactly(20, 20);
         assertThat(smaller.panelX(20)).isEqualTo(10.0);

@@ -112,7 +112,7 @@ class WindowClockTest {
         assertThat(window.on(() -> window.session.shown().picture().rgb())).isEqualTo(before.rgb());
 
         window.run(() -> window.session.atClock(0.25, true));
-        assertThat(window.on(() -> window.display.panel)).isEqualTo(Window.HELP);
+        assertThat(window.on(() -> window.display.panel)).isEqualTo(SidePanel.HELP);
         int[] smaller = picture(scene, "0.25");
         window.awaitTrue(() -> Arrays.equals(window.session.shown().picture().rgb(), smaller));
     }

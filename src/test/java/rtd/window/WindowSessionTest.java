@@ -40,7 +40,7 @@ class WindowSessionTest {
         assertThat(window.on(() -> window.display.rays)).isNotEmpty();
         window.run(() -> window.session.deselect());
         assertThat(window.on(() -> window.display.rays)).isEmpty();
-        assertThat(window.on(() -> window.display.panel)).isEqualTo(Window.HELP);
+        assertThat(window.on(() -> window.display.panel)).isEqualTo(SidePanel.HELP);
     }
 
     @Test

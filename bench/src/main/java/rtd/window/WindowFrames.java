@@ -49,8 +49,8 @@ public final class WindowFrames {
     }
 
     private static void measure(String name, Scene file, Engine engine, int threads, double seconds) {
-        FrameRenderer renderer = new FrameRenderer(new WindowSetup(null, null, null, engine, WIDTH, HEIGHT, 1, threads, 0),
-                Runnable::run, (pass, newest) -> { }, e -> { });
+        WindowSetup setup = new WindowSetup(null, null, null, engine, WIDTH, HEIGHT, 1, threads, 0);
+        FrameRenderer renderer = new FrameRenderer(setup, Runnable::run, (pass, newest) -> { }, e -> { });
         CameraController camera = new CameraController(file.camera());
         BufferedImage screen = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
         Vector3f pivot = CameraController.pivot(file, WIDTH, HEIGHT);
