@@ -26,7 +26,6 @@ import rtd.shade.WhittedShader;
 import rtd.view.View;
 import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
-import rtd.window.WindowSetup.Engine;
 
 /**
  * Renders the window's frames pass by pass on all cores with {@link ParallelRenderer}: in the picture's colours as
@@ -90,11 +89,7 @@ final class FrameRenderer implements AutoCloseable {
         }
     }
 
-    private final Engine engine;
-    private final int width;
-    private final int height;
-    private final int samples;
-    private final int threads;
+    private final WindowSetup setup;
     private final Executor ui;
     private final BiConsumer<Pass, Boolean> shown;
     private final Consumer<RuntimeException> failed;
@@ -114,11 +109,7 @@ final class FrameRenderer implements AutoCloseable {
      * its frame is the newest asked for; a render's failure (a bug, not a cancel) goes to {@code failed}.
      */
     FrameRenderer(WindowSetup setup, Executor ui, BiConsumer<Pass, Boolean> shown, Consumer<RuntimeException> failed) {
-        this.engine = setup.engine();
-        this.width = setup.width();
-        this.height = setup.height();
-        this.samples = setup.samples();
-        this.threads = setup.threads();
+        this.setup = setup;
         this.ui = ui;
         this.shown = shown;
         this.failed = failed;
@@ -180,11 +171,9 @@ final class FrameRenderer implements AutoCloseable {
         task.run();
     }
 
-    /** Stops the render thread: the frame in progress is cancelled, and no other renders. */
+    /** Stops the render thread: the frame in progress is interrupted, and no other renders. */
     @Override
-    public synchronized void close() {
-        asked++;
-        running.cancel(true);
+    public void close() {
         thread.shutdownNow();
     }
 
@@ -201,7 +190,7 @@ final class FrameRenderer implements AutoCloseable {
      */
     void render(Scene file, ICamera camera, View view, List<Integer> blocks, Consumer<Pass> listener) {
         if (traced != file) {
-            anyCamera = engine.forAnyCamera(file, width, height);
+            anyCamera = setup.engine().forAnyCamera(file, setup.width(), setup.height());
             traced = file;
         }
         Scene scene = new Scene(file.ambient(), camera, file.objects(), file.lights());
@@ -211,19 +200,21 @@ final class FrameRenderer implements AutoCloseable {
             if (Thread.currentThread().isInterrupted()) {
                 return; // cancelled by a newer render: nothing more to show
             }
-            Picture picture = filled(block, result.image(), width, height);
+            Picture picture = filled(block, result.image(), setup.width(), setup.height());
             listener.accept(shown(scene, view, picture, block, System.nanoTime() - start, result.work().rays()));
         }
     }
 
     private RenderResult pass(Scene scene, View view, int block) {
+        int w = setup.width();
+        int h = setup.height();
         if (block == 1) {
-            int rays = view == null ? samples : 1; // a view takes one ray per pixel
-            return ParallelRenderer.render(scene.camera(), engine.forPicture(scene, width, height, rays, anyCamera),
-                    shaders(scene, view), width, height, rays, threads, new RenderProgress());
+            int rays = view == null ? setup.samples() : 1; // a view takes one ray per pixel
+            return ParallelRenderer.render(scene.camera(), setup.engine().forPicture(scene, w, h, rays, anyCamera),
+                    shaders(scene, view), w, h, rays, setup.threads(), new RenderProgress());
         }
-        return ParallelRenderer.render(new BlockCamera(scene.camera(), block, width, height), anyCamera,
-                shaders(scene, view), blocks(width, block), blocks(height, block), 1, threads, new RenderProgress());
+        return ParallelRenderer.render(new BlockCamera(scene.camera(), block, w, h), anyCamera, shaders(scene, view),
+                blocks(w, block), blocks(h, block), 1, setup.threads(), new RenderProgress());
     }
 
     /**

@@ -22,24 +22,14 @@ import rtd.math.Vector3f;
  * ({@code w/2} and {@code h/2} are whole numbers, as the cameras take them.) A ray that hits nothing is drawn far along
  * its direction.
  */
-final class RayTreeProjection {
+record RayTreeProjection(ICamera camera, int width, int height) {
 
     /** One ray of the tree in the picture, from (x0, y0) to (x1, y1); {@code ends} whether it ends at a point. */
-    record Line(RayTree.Kind kind, double x0, double y0, double x1, double y1, boolean ends, int depth) {
+    record Line(RayTree.Kind kind, double x0, double y0, double x1, double y1, boolean ends) {
     }
 
     /** How far, in lengths of the scene around the camera, a ray that hits nothing is drawn. */
     private static final float FAR = 1e4f;
-
-    private final ICamera camera;
-    private final int width;
-    private final int height;
-
-    RayTreeProjection(ICamera camera, int width, int height) {
-        this.camera = camera;
-        this.width = width;
-        this.height = height;
-    }
 
     /** The tree's rays as lines in the picture; a ray wholly behind a perspective camera's eye is left out. */
     List<Line> lines(RayTree tree) {
@@ -92,6 +82,6 @@ final class RayTreeProjection {
         }
         double[] a = project(from);
         double[] b = project(to);
-        return new Line(segment.kind(), a[0], a[1], b[0], b[1], ends, segment.depth());
+        return new Line(segment.kind(), a[0], a[1], b[0], b[1], ends);
     }
 }
