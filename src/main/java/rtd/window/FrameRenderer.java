@@ -28,18 +28,17 @@ import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
 
 /**
- * Renders the window's frames pass by pass on all cores with {@link ParallelRenderer}: in the picture's colours as
- * {@code -o} shades them (flat, or {@link WhittedShader} with lights), or a debug view ({@link ViewShader}) with its
- * legend. A pass is the side of its blocks: a new scene or camera starts coarse and is refined ({@link #STILL}: 8, 4,
- * 2, 1 pixels); while the camera moves, each frame renders at the moving resolution alone ({@link #moving}); once the
- * mouse rests, the full picture follows ({@link #RESTED}). A coarse pass traces one ray per block, its top left pixel's
- * own ({@link BlockCamera}), with the tracers for any camera, and that colour fills the block, so the picture shows at
- * once and sharpens; the full pass, with the tracers {@code -o} builds for the camera, is {@code -o}'s picture.
+ * Renders the window's frames pass by pass on all cores with {@link ParallelRenderer}, shaded as {@code -o} (flat, or
+ * {@link WhittedShader} with lights) or as a view ({@link ViewShader}) with its legend. A pass is the side of its
+ * blocks: a new scene or camera starts coarse and is refined ({@link #STILL}), a moving camera's frames take one coarse
+ * pass ({@link #moving}), a resting one the full picture ({@link #RESTED}). A coarse pass traces each block's top left
+ * pixel's own ray ({@link BlockCamera}) with the tracers for any camera and fills the block with it; the full pass,
+ * with the tracers {@code -o} builds for the camera, is {@code -o}'s picture.
  *
- * <p>Frames render on a thread of their own, one at a time, the newest asked for: one still waiting is dropped for a
- * newer one, and a frame that ends in full cancels the one in progress (it interrupts the thread, and the render stops
- * at its next band of rows and shows nothing more), so the picture follows the latest camera and the window's own
- * thread never waits for a render. A moving frame waits for the one before, so that frames are finished and shown.
+ * <p>Frames render on a thread of their own, the newest asked for: one still waiting is dropped for a newer one, and a
+ * frame that ends in full cancels the one in progress (its render stops at the next band of rows and shows nothing
+ * more), so the picture follows the latest camera and the window's thread never waits; a moving frame waits for the
+ * one before, so that frames are finished and shown.
  */
 final class FrameRenderer implements AutoCloseable {
 

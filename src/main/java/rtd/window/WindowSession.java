@@ -16,11 +16,10 @@ import rtd.window.WindowSetup.ClockedScene;
  * event thread, {@code ui}); renders run on the {@link FrameRenderer}'s thread, and what they find comes back through
  * {@code ui} to the {@link Display}.
  *
- * <p>The clock slider and {@code P} parse the file read at the last save again at each clock; a value that breaks at a
- * clock (a radius negative at clock = 0.75) shows as a saved mistake does, and the last good picture stays. Playing
- * runs the clock from where it is towards 1 and round to 0, one pass in {@link #PASS_NANOS}, as an animation loops:
- * time, not frames, moves it, so a slow scene plays at the same pace in fewer frames. A camera the user has not moved
- * follows the file's at each clock.
+ * <p>The clock slider and {@code P} parse the file read at the last save again at each clock; a value broken at a clock
+ * (a radius negative at clock = 0.75) shows as a saved mistake does, and the last good picture stays. Playing runs the
+ * clock towards 1 and round to 0, one pass in {@link #PASS_NANOS}: time, not frames, moves it, so a slow scene plays
+ * at the same pace in fewer frames. A camera the user has not moved follows the file's at each clock.
  */
 final class WindowSession implements AutoCloseable {
 

@@ -27,22 +27,17 @@ public record WindowSetup(Path scene, SceneLoader loader, FileWatch watch, Engin
         ClockedScene read() throws IOException;
     }
 
-    /**
-     * The command line's watcher, the one {@code --watch} renders again with: once started, {@code changed} runs on its
-     * thread after each save of the scene file or a mesh it uses, until the result is closed.
-     */
+    /** {@code --watch}'s watcher: {@code changed} runs after each save of the scene or its meshes, until closed. */
     @FunctionalInterface
     public interface FileWatch {
         AutoCloseable start(Runnable changed);
     }
 
     /**
-     * What the window finds its hits with, as {@code --accel} chose: every choice finds the same hits, and so draws the
-     * same pixels. {@code forAnyCamera} gives tracers for rays of any camera in a scene's objects and lights, for
-     * pictures of about {@code width × height}, built once for a scene and kept while the camera moves;
-     * {@code forPicture} those {@code -o} takes for the full picture by the scene's camera with {@code samples ×
-     * samples} rays per pixel, built from {@code anyCamera} so that only what serves this camera alone is built again.
-     * Each supplier gives a new tracer for each thread.
+     * What the window finds its hits with, as {@code --accel} chose (every choice draws the same pixels):
+     * {@code forAnyCamera} the tracers for rays of any camera in a scene, built once and kept while the camera moves;
+     * {@code forPicture} those {@code -o} takes for the full picture by the scene's camera, built from
+     * {@code anyCamera} so that only what serves this camera alone is built again. A new tracer for each thread.
      */
     public interface Engine {
         Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples, Supplier<Tracer> anyCamera);
