@@ -96,6 +96,27 @@ class FrameRendererTest {
     }
 
     @Test
+    void aFrameStillWaitingIsDroppedForANewerOne() throws Exception {
+        CountDownLatch release = new CountDownLatch(1);
+        AtomicBoolean dropped = new AtomicBoolean();
+        CountDownLatch newer = new CountDownLatch(1);
+        try (FrameRenderer loop = renderer(160, 90)) {
+            loop.submit(() -> {
+                try {
+                    release.await(); // a moving frame in progress
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, false);
+            loop.submit(() -> dropped.set(true), false);
+            loop.submit(newer::countDown, false);
+            release.countDown();
+            assertThat(newer.await(10, TimeUnit.SECONDS)).isTrue();
+        }
+        assertThat(dropped).isFalse();
+    }
+
+    @Test
     void anInterruptedRenderShowsNoFurtherPass() {
         Scene scene = Scenes.example("glass_and_mirror");
         List<FrameRenderer.Pass> passes = new ArrayList<>();
