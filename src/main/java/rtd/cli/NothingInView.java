@@ -55,33 +55,26 @@ final class NothingInView {
     }
 
     private static String cause(Scene scene, RenderOptions options) {
-        ICamera camera = scene.camera();
+        ICamera camera = scene.camera(); // a scene file's: orthographic or perspective
+        OrthographicCamera orthographic = camera instanceof OrthographicCamera o ? o : null;
+        Vector3f forward = orthographic != null ? orthographic.direction() : ((PerspectiveCamera) camera).direction();
+        List<IGeometry> objects = scene.objects().stream().filter(o -> !(o instanceof Plane)).toList();
         if (scene.objects().isEmpty()) {
             return "the scene has no objects";
-        }
-        Vector3f forward = camera instanceof OrthographicCamera o ? o.direction()
-                : camera instanceof PerspectiveCamera p ? p.direction() : null;
-        if (forward != null && scene.objects().stream().allMatch(o -> o instanceof Plane)) {
+        } else if (objects.isEmpty()) {
             return planesMissed(scene.objects().size(), camera, forward);
         }
         // no ray met a plane
-        List<IGeometry> objects = scene.objects().stream().filter(o -> !(o instanceof Plane)).toList();
-        long behind = forward == null ? 0 : objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward))
-                .count();
+        long behind = objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward)).count();
         if (behind == objects.size()) {
             return (objects.size() == 1 ? "the one object is" : "all " + objects.size() + " objects are")
                     + " behind the camera, which looks along " + point(forward) + " from " + point(camera.position());
         }
         String someBehind = behind == 0 ? "" : " (" + behind + " of the " + objects.size() + " objects "
                 + (behind == 1 ? "is" : "are") + " behind it)";
-        if (camera instanceof OrthographicCamera orthographic) {
-            return orthographicCause(orthographic, objects, options) + someBehind;
-        }
-        if (camera instanceof PerspectiveCamera perspective) {
-            return "no object is within the camera's " + number(perspective.fieldOfView()) + "° field of view from "
-                    + point(camera.position()) + " along " + point(perspective.direction()) + someBehind;
-        }
-        return "no object is in the camera's view" + someBehind;
+        return (orthographic != null ? orthographicCause(orthographic, objects, options) : "no object is within the "
+                + "camera's " + number(((PerspectiveCamera) camera).fieldOfView()) + "° field of view from "
+                + point(camera.position()) + " along " + point(forward)) + someBehind;
     }
 
     /** Why no ray meets the planes, the only objects: each is met by every ray not parallel to it that runs towards it. */

@@ -113,13 +113,11 @@ final class ProgressDisplay implements AutoCloseable {
 
     /**
      * What the run is doing: its name, the fraction done (NaN if unknown) and the rays traced (negative: none); and
-     * the words of its progress line, fitted to a terminal of any width: percent done, for a render the rays traced
-     * per second as {@code --stats} counts them (all rays, over the render so far), and the time left.
+     * its line: percent done, for a render the rays per second as {@code --stats} counts them, and the time left.
      *
      * <p>The time left is the work left over the rate of the last third of the time so far (at least the last
-     * second): rays get cheaper as the JIT compiles, so the rate since the start would promise too long, while the
-     * rate of a longer stretch does not swing with the cost of the last few rows. It says nothing until 1.5 s or 5 %
-     * of the work have given it something to go on.
+     * second): rays get cheaper as the JIT compiles, so the rate since the start would promise too long, while a
+     * longer stretch does not swing with the cost of the last few rows. It waits for 1.5 s or 5 % of the work.
      *
      * @param recent (seconds, fraction) of the updates within that window, and the last one before it
      */

@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.IntConsumer;
 import java.util.function.IntSupplier;
-import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.CRC32;
 import picocli.CommandLine;
@@ -128,11 +127,9 @@ final class SceneWatcher {
         prints.put(scene, fingerprint(scene));
         try {
             if (Files.size(scene) <= CHECKSUM_LIMIT) {
-                Matcher matcher = MESH.matcher(Files.readString(scene, StandardCharsets.UTF_8));
-                while (matcher.find()) {
-                    Path mesh = scene.toAbsolutePath().getParent().resolve(matcher.group(1).strip()).normalize();
-                    prints.put(mesh, fingerprint(mesh));
-                }
+                MESH.matcher(Files.readString(scene, StandardCharsets.UTF_8)).results()
+                        .map(mesh -> scene.toAbsolutePath().getParent().resolve(mesh.group(1).strip()).normalize())
+                        .forEach(mesh -> prints.put(mesh, fingerprint(mesh)));
             }
         } catch (IOException | RuntimeException e) {
             // unreadable or not UTF-8: the render says what is wrong; watch the scene alone
