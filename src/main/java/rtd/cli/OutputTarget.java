@@ -66,10 +66,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         }
     }
 
-    /**
-     * Where {@code spelt}, named by {@code option}, goes, its folder there and writable: a misuse of the command line
-     * (exit 2), or a {@link FileError} for a file that may not be written.
-     */
+    /** Where {@code spelt}, named by {@code option}, goes; else a misuse (exit 2) or a file that may not be written. */
     static OutputTarget of(Path spelt, Path scene, String option, CommandLine commandLine) throws FileError {
         OutputTarget target = find(spelt, scene, option, commandLine);
         Path folder = target.file.toAbsolutePath().getParent();

@@ -32,7 +32,7 @@ final class ProgressDisplay implements AutoCloseable {
     private boolean shown;
     private int columns;
 
-    /** A display that draws only when asked ({@link #draw}); {@link #start} draws on a thread of its own. */
+    /** A display that draws only when asked; {@link #start} draws on a thread of its own. */
     ProgressDisplay(PrintWriter err, IntSupplier columnsOfTerminal) {
         this.err = err;
         this.columnsOfTerminal = columnsOfTerminal;

@@ -22,11 +22,9 @@ import java.util.concurrent.TimeUnit;
 /**
  * Standard input and output as bytes, for the scene {@code -} and {@code -o -}, and whether each standard stream
  * is a terminal: a person types the scene there, a picture never goes there, a progress line only there, and fits
- * its width; and the writers of rtd's text in the terminal's encoding. Tests give their own.
- *
- * <p>Messages and {@code --explain} write as a student's notes would ({@code 1920 × 1080}, {@code x − w/2},
+ * its width. Tests give their own. rtd's text is written as a student's notes would ({@code 1920 × 1080},
  * {@code t ≥ 0}); a terminal without such signs (the C locale of many containers, an old Windows code page) gets
- * them in plain ASCII ({@link #PLAIN}), and {@code ?} for any other sign it lacks. UTF-8 is written as it is.
+ * them in plain ASCII ({@link #PLAIN}), and {@code ?} for any other sign it lacks.
  *
  * @param inPath a name that reads standard input as a file ({@code /dev/stdin}) where the system has one: read
  *               through it, a scene is checked as it arrives, so that an endless stream of non-text ends at once
