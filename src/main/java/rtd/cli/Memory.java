@@ -15,36 +15,29 @@ import picocli.CommandLine.ParameterException;
  */
 final class Memory {
 
-    private static final long KIB = 1L << 10;
     private static final long MIB = 1L << 20;
     private static final long GIB = 1L << 30;
     /** The most pixels of a Java image (an array of ints). */
     private static final long MOST_PIXELS = Integer.MAX_VALUE - 8;
-    /** Bytes per pixel: the picture's {@code int}, and 6 more for the encoders that convert the whole picture. */
-    private static final long BYTES_PER_PIXEL = 4 + 3 + 3;
-
-    private Memory() {
-    }
 
     /** That a {@code width × height} picture fits a Java image and the memory left; else a misuse saying what fits. */
     static void checkImageFits(CommandLine commandLine, int width, int height, Scale scale) {
         long pixels = (long) width * height;
         if (pixels > MOST_PIXELS) {
             double shrink = Math.sqrt(MOST_PIXELS / (double) pixels);
-            long w = (long) (width * shrink);
-            long h = (long) (height * shrink);
             String factor = BigDecimal.valueOf(scale.factor() * shrink).round(new MathContext(3, RoundingMode.DOWN))
                     .stripTrailingZeros().toPlainString();
             throw new ParameterException(commandLine, String.format(Locale.ROOT, "a %d×%d image has %,d pixels; Java "
                     + "images hold at most %,d: the largest of that shape is %d×%d, or keep the view with --scale %s",
-                    width, height, pixels, MOST_PIXELS, w, h, factor));
+                    width, height, pixels, MOST_PIXELS, (long) (width * shrink), (long) (height * shrink), factor));
         }
         Runtime runtime = Runtime.getRuntime();
         long available = runtime.maxMemory() - (runtime.totalMemory() - runtime.freeMemory());
-        long needed = pixels * BYTES_PER_PIXEL;
+        long needed = pixels * (4 + 3 + 3); // the picture's ints, and 6 bytes for the encoders' copy of it
         if (needed > available) {
             String advice = xmx(needed + runtime.maxMemory(), physical())
-                    .map(xmx -> "choose a smaller --width/--height, or raise the limit: java -Xmx" + xmx + " -jar rtd.jar ...")
+                    .map(xmx -> "choose a smaller --width/--height, or raise the limit: java -Xmx" + xmx
+                            + " -jar rtd.jar ...")
                     .orElse("choose a smaller --width/--height: this machine has " + size(physical()) + " in all");
             throw new ParameterException(commandLine, String.format(Locale.ROOT,
                     "a %d×%d image needs %s of memory, but Java may use only %s more here (limit %s); %s",
@@ -54,8 +47,8 @@ final class Memory {
 
     /** {@code bytes} in a unit that shows the difference between small amounts: "16.0 MiB", not "0.0 GiB". */
     static String size(long bytes) {
-        long unit = bytes >= GIB ? GIB : bytes >= MIB ? MIB : KIB;
-        return String.format(Locale.ROOT, "%.1f %s", bytes / (double) unit, unit == GIB ? "GiB" : unit == MIB ? "MiB" : "KiB");
+        int unit = bytes >= GIB ? 3 : bytes >= MIB ? 2 : 1;
+        return String.format(Locale.ROOT, "%.1f %ciB", bytes / Math.pow(1024, unit), " KMG".charAt(unit));
     }
 
     /** The memory of this machine (or of its container), or {@code Long.MAX_VALUE} if Java cannot tell. */
@@ -76,12 +69,11 @@ final class Memory {
     static String outOfMemory(long maxHeap, long physical) {
         // Up to 7/8 of the machine, in whole GiB: the system and other programs need the rest.
         long wanted = Math.min(2 * maxHeap, physical / 8 * 7 / GIB * GIB);
-        Optional<String> advice = wanted > maxHeap ? xmx(wanted, physical) : Optional.empty();
-        if (advice.isPresent()) {
-            return "rtd: out of memory: Java may use only " + size(maxHeap) + " here; give it more, for example: java -Xmx"
-                    + advice.get() + " -jar rtd.jar ...";
-        }
-        return "rtd: out of memory: Java may use " + size(maxHeap) + " here, and this machine has " + size(physical)
-                + " in all; render a smaller image (--width/--height) or a scene with fewer objects";
+        return (wanted > maxHeap ? xmx(wanted, physical) : Optional.<String>empty())
+                .map(xmx -> "rtd: out of memory: Java may use only " + size(maxHeap) + " here; give it more, for "
+                        + "example: java -Xmx" + xmx + " -jar rtd.jar ...")
+                .orElse("rtd: out of memory: Java may use " + size(maxHeap) + " here, and this machine has "
+                        + size(physical) + " in all; render a smaller image (--width/--height) or a scene with fewer "
+                        + "objects");
     }
 }

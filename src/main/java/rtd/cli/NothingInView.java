@@ -7,7 +7,6 @@ import java.util.DoubleSummaryStatistics;
 import java.util.List;
 import java.util.function.Supplier;
 import java.util.stream.IntStream;
-import java.util.stream.Stream;
 import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
@@ -30,13 +29,9 @@ import rtd.scene.Scene;
  */
 final class NothingInView {
 
-    private NothingInView() {
-    }
-
     /**
-     * Whether some ray of {@code picture} hit an object. A pixel that is not background says so at once; a picture
-     * of background alone only if no object may look like it (any, in a lit scene; else one painted in the
-     * background's colour), else the rays are traced again with {@code tracers} and a shader that marks hits.
+     * Whether some ray of {@code picture} hit an object: a pixel that is not background says so; if an object may
+     * look like background (any, in a lit scene), the rays are traced again with a shader that marks hits.
      */
     static boolean hitSomething(Scene scene, Supplier<Tracer> tracers, Picture picture, int threads) {
         int background = scene.ambient().getRGB();
@@ -60,40 +55,29 @@ final class NothingInView {
     }
 
     private static String cause(Scene scene, RenderOptions options) {
-        ICamera camera = scene.camera();
+        ICamera camera = scene.camera(); // a scene file's: orthographic or perspective
+        OrthographicCamera orthographic = camera instanceof OrthographicCamera o ? o : null;
+        Vector3f forward = orthographic != null ? orthographic.direction() : ((PerspectiveCamera) camera).direction();
+        List<IGeometry> objects = scene.objects().stream().filter(o -> !(o instanceof Plane)).toList();
         if (scene.objects().isEmpty()) {
             return "the scene has no objects";
-        }
-        Vector3f forward = camera instanceof OrthographicCamera o ? o.direction()
-                : camera instanceof PerspectiveCamera p ? p.direction() : null;
-        if (forward != null && scene.objects().stream().allMatch(o -> o instanceof Plane)) {
+        } else if (objects.isEmpty()) {
             return planesMissed(scene.objects().size(), camera, forward);
         }
         // no ray met a plane
-        List<IGeometry> objects = scene.objects().stream().filter(o -> !(o instanceof Plane)).toList();
-        long behind = forward == null ? 0 : objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward))
-                .count();
+        long behind = objects.stream().filter(o -> isBehind(o.bounds(), camera.position(), forward)).count();
         if (behind == objects.size()) {
             return (objects.size() == 1 ? "the one object is" : "all " + objects.size() + " objects are")
                     + " behind the camera, which looks along " + point(forward) + " from " + point(camera.position());
         }
         String someBehind = behind == 0 ? "" : " (" + behind + " of the " + objects.size() + " objects "
                 + (behind == 1 ? "is" : "are") + " behind it)";
-        if (camera instanceof OrthographicCamera orthographic) {
-            return orthographicCause(orthographic, objects, options) + someBehind;
-        }
-        if (camera instanceof PerspectiveCamera perspective) {
-            return "no object is within the camera's " + number(perspective.fieldOfView()) + "° field of view from "
-                    + point(camera.position()) + " along " + point(perspective.direction()) + someBehind;
-        }
-        return "no object is in the camera's view" + someBehind;
+        return (orthographic != null ? orthographicCause(orthographic, objects, options) : "no object is within the "
+                + "camera's " + number(((PerspectiveCamera) camera).fieldOfView()) + "° field of view from "
+                + point(camera.position()) + " along " + point(forward)) + someBehind;
     }
 
-    /**
-     * Why no ray meets the scene's planes, its only objects: a plane is met by every ray that is not parallel to
-     * it and runs towards it, so the orthographic camera's rays run along the planes or away from them, and the
-     * perspective camera's field of view holds none of their half of the world.
-     */
+    /** Why no ray meets the planes, the only objects: each is met by every ray not parallel to it that runs towards it. */
     private static String planesMissed(int planes, ICamera camera, Vector3f forward) {
         String them = planes == 1 ? "the plane" : "all " + planes + " planes";
         String it = planes == 1 ? "it" : "them";
@@ -155,13 +139,11 @@ final class NothingInView {
         return box.isBounded() && along(box, position, forward).getMax() < 0;
     }
 
-    /** The box's corners along {@code axis}, from {@code origin}. */
+    /** The box's eight corners along {@code axis}, from {@code origin}. */
     private static DoubleSummaryStatistics along(BoundingBox box, Vector3f origin, Vector3f axis) {
         Vector3f a = box.min();
         Vector3f b = box.max();
-        return Stream.of(a, new Vector3f(b.x(), a.y(), a.z()), new Vector3f(a.x(), b.y(), a.z()),
-                new Vector3f(a.x(), a.y(), b.z()), new Vector3f(b.x(), b.y(), a.z()), new Vector3f(b.x(), a.y(), b.z()),
-                new Vector3f(a.x(), b.y(), b.z()), b).mapToDouble(c -> c.subtract(origin).dot(axis))
-                .summaryStatistics();
+        return IntStream.range(0, 8).mapToObj(i -> new Vector3f((i & 1) == 0 ? a.x() : b.x(), (i & 2) == 0 ? a.y()
+                : b.y(), (i & 4) == 0 ? a.z() : b.z())).mapToDouble(c -> c.subtract(origin).dot(axis)).summaryStatistics();
     }
 }

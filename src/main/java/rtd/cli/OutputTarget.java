@@ -24,11 +24,7 @@ import rtd.io.SceneIO;
  */
 record OutputTarget(Path spelt, Path file, Kind kind) {
 
-    /**
-     * How the file reaches the output: a regular file, new or old, is written to a temporary file, then moved into
-     * place; a FIFO or character device such as /dev/null is written into as it is; and {@code -o -} is standard
-     * output, which must not be a terminal.
-     */
+    /** A regular file, new or old, replaced by a complete new one; a FIFO or character device; {@code -o -}. */
     enum Kind { REPLACE, STREAM, STANDARD_OUTPUT }
 
     /** How {@code -o} names standard output. */
@@ -38,8 +34,9 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         return new OutputTarget(DASH, DASH, Kind.STANDARD_OUTPUT);
     }
 
-    /** Writes {@code picture} here in {@code format}, telling {@code progress} the fraction done; a regular file only whole. */
-    void write(Picture picture, ImageFormat format, OutputStream standardOutput, DoubleConsumer progress) throws FileError {
+    /** Writes {@code picture} here in {@code format}, telling {@code progress} the fraction done. */
+    void write(Picture picture, ImageFormat format, OutputStream standardOutput, DoubleConsumer progress)
+            throws FileError {
         try {
             switch (kind) {
                 case STREAM -> SceneIO.writeImageInto(picture, format, file, progress);
@@ -56,7 +53,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         }
     }
 
-    /** Writes {@code text} here in UTF-8; a regular file only whole. */
+    /** Writes {@code text} here in UTF-8. */
     void writeText(String text) throws FileError {
         try {
             if (kind == Kind.STREAM) {
@@ -69,21 +66,14 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         }
     }
 
-    /**
-     * Where {@code spelt}, named by {@code option}, goes, its folder there and writable: a misuse of the command line
-     * (exit 2), or a {@link FileError} for a file that may not be written.
-     */
+    /** Where {@code spelt}, named by {@code option}, goes; else a misuse (exit 2) or a file that may not be written. */
     static OutputTarget of(Path spelt, Path scene, String option, CommandLine commandLine) throws FileError {
         OutputTarget target = find(spelt, scene, option, commandLine);
-        if (target.kind == Kind.REPLACE) {
-            Path folder = target.file.toAbsolutePath().getParent();
-            if (!Files.isDirectory(folder)) {
-                throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' "
-                        + (Files.exists(folder) ? "is a file, not a folder" : "does not exist"));
-            }
-            if (!Files.isWritable(folder)) {
-                throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' is not writable");
-            }
+        Path folder = target.file.toAbsolutePath().getParent();
+        String wrong = target.kind != Kind.REPLACE ? null : !Files.isDirectory(folder) ? (Files.exists(folder)
+                ? "is a file, not a folder" : "does not exist") : !Files.isWritable(folder) ? "is not writable" : null;
+        if (wrong != null) {
+            throw new FileError("cannot write '" + spelt + "': the folder '" + folder + "' " + wrong);
         }
         Path real = target.file.getFileName();
         // a link to a file of another kind, such as a mesh or notes: a slip, and replacing it would destroy it
@@ -127,10 +117,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         return new OutputTarget(output, output, Kind.STREAM);
     }
 
-    /**
-     * The file-type bits of the mode (Linux, macOS): regular file, FIFO, character or block device, socket. Without a
-     * "unix" view (Windows) a regular file is still told apart, and anything else is refused.
-     */
+    /** The file-type bits of the mode (Linux, macOS); without a "unix" view (Windows), regular file or not. */
     private static int fileType(Path path) {
         try {
             return (Integer) Files.getAttribute(path, "unix:mode") & 0170000;

@@ -13,56 +13,41 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
- * A one-line progress display on standard error, redrawn in place four times a second ({@link Line}):
- * what the run is doing ("reading scene.txt", "rendering", "writing out.png"), how much is done and how long it
- * has left. It shows only on a terminal, once a run has taken a second; it ends short of the last column (a full
- * line would wrap, and each {@code \r} redraw add a line); and it is cleared when the run ends, also by Ctrl-C.
+ * A one-line progress display on standard error, redrawn in place four times a second: what the run is doing
+ * ("reading scene.txt", "rendering", "writing out.png"), how much is done and how long it has left. It shows only
+ * on a terminal, once a run has taken a second; it ends short of the last column (a full line would wrap, and each
+ * {@code \r} redraw add a line); and it is cleared when the run ends, also by Ctrl-C.
  */
 final class ProgressDisplay implements AutoCloseable {
 
-    private static final long PERIOD_MILLIS = 250;
     private static final String CLEAR = "\r\033[K";
 
     private final PrintWriter err;
     private final IntSupplier columnsOfTerminal;
-    private final long delayMillis;
-    private final Thread thread;
-    private final Thread clearOnExit = new Thread(this::clear, "rtd: clear the progress line");
+    private final Thread thread = new Thread(this::run, "rtd-progress");
+    /** The shutdown hook that Ctrl-C runs. */
+    final Thread clearOnExit = new Thread(this::clear, "rtd: clear the progress line");
     private volatile Phase phase = Phase.of("starting");
     private volatile boolean done;
     private boolean shown;
-    private boolean hooked;
     private int columns;
 
-    /** What the run is doing: its name, the fraction done (NaN if unknown) and the rays traced (negative: none). */
-    record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos, Line line) {
-
-        Phase(String name, DoubleSupplier fraction, LongSupplier rays) {
-            this(name, fraction, rays, System.nanoTime(), new Line());
-        }
-
-        /** A phase whose progress is unknown, such as reading the scene. */
-        static Phase of(String name) {
-            return counted(name, () -> Double.NaN);
-        }
-
-        static Phase counted(String name, DoubleSupplier fraction) {
-            return new Phase(name, fraction, () -> -1);
-        }
-    }
-
-    ProgressDisplay(PrintWriter err, IntSupplier columnsOfTerminal, long delayMillis) {
+    /** A display that draws only when asked; {@link #start} draws on a thread of its own. */
+    ProgressDisplay(PrintWriter err, IntSupplier columnsOfTerminal) {
         this.err = err;
         this.columnsOfTerminal = columnsOfTerminal;
-        this.delayMillis = delayMillis;
-        this.thread = new Thread(this::run, "rtd-progress");
         thread.setDaemon(true);
     }
 
     /** Starts a display on {@code err}, a terminal; if not {@code enabled}, one that never shows anything. */
     static ProgressDisplay start(boolean enabled, PrintWriter err) {
-        ProgressDisplay display = new ProgressDisplay(err, StandardStreams::columns, 1000);
+        ProgressDisplay display = new ProgressDisplay(err, StandardStreams::columns);
         if (enabled) {
+            try {
+                Runtime.getRuntime().addShutdownHook(display.clearOnExit);
+            } catch (IllegalStateException e) {
+                return display; // already stopping (Ctrl-C during --watch): no line to clear then
+            }
             display.thread.start();
         }
         return display;
@@ -74,7 +59,7 @@ final class ProgressDisplay implements AutoCloseable {
 
     private void run() {
         try {
-            for (Thread.sleep(delayMillis); !done; Thread.sleep(PERIOD_MILLIS)) {
+            for (Thread.sleep(1000); !done; Thread.sleep(250)) {
                 draw();
             }
         } catch (InterruptedException e) {
@@ -82,28 +67,18 @@ final class ProgressDisplay implements AutoCloseable {
         }
     }
 
-    /** Draws the line for the phase now running; package-private so that tests need not wait. */
+    /** Draws the line for the phase now running. */
     void draw() {
         if (columns == 0) {
             columns = columnsOfTerminal.getAsInt(); // starts a process: once, and not under the lock
         }
         synchronized (this) {
-            if (done) {
-                return;
+            if (!done) {
+                Phase now = phase;
+                err.print("\r" + now.line((System.nanoTime() - now.startNanos()) / 1e9, columns) + "\033[K");
+                err.flush();
+                shown = true;
             }
-            if (!hooked) {
-                hooked = true;
-                try {
-                    Runtime.getRuntime().addShutdownHook(clearOnExit);
-                } catch (IllegalStateException e) {
-                    // already stopping: close removes nothing then either
-                }
-            }
-            Phase now = phase;
-            err.print("\r" + now.line().update(now.name(), (System.nanoTime() - now.startNanos()) / 1e9,
-                    now.fraction().getAsDouble(), now.rays().getAsLong(), columns) + "\033[K");
-            err.flush();
-            shown = true;
         }
     }
 
@@ -116,7 +91,6 @@ final class ProgressDisplay implements AutoCloseable {
         err.flush();
     }
 
-    /** Clears the line if it was shown; the shutdown hook's work. */
     private synchronized void clear() {
         done = true;
         if (shown) {
@@ -128,87 +102,84 @@ final class ProgressDisplay implements AutoCloseable {
 
     @Override
     public void close() {
-        clear(); // under the lock that draw adds the hook with: no hook comes after it
+        clear();
         thread.interrupt();
-        if (hooked) {
-            try {
-                Runtime.getRuntime().removeShutdownHook(clearOnExit);
-            } catch (IllegalStateException e) {
-                // the JVM is stopping, and the hook clears the line anyway
-            }
+        try {
+            Runtime.getRuntime().removeShutdownHook(clearOnExit); // false, and harmless, if never added
+        } catch (IllegalStateException e) {
+            // the JVM is stopping, and the hook clears the line anyway
         }
     }
 
-    /** The shutdown hook, added once the line has been shown. */
-    Thread shutdownHook() {
-        return clearOnExit;
-    }
-
     /**
-     * The words of the progress line for one phase, fitted to a terminal of any width: percent done, for a render
-     * the rays traced per second as {@code --stats} counts them (all rays, over the render so far), and the time left.
+     * What the run is doing: its name, the fraction done (NaN if unknown) and the rays traced (negative: none); and
+     * its line: percent done, for a render the rays per second as {@code --stats} counts them, and the time left.
      *
      * <p>The time left is the work left over the rate of the last third of the time so far (at least the last
-     * second): rays get cheaper as the JIT compiles, so the rate since the start would promise too long, while the
-     * rate of a longer stretch does not swing with the cost of the last few rows. It says nothing until
-     * {@value #MIN_SECONDS} s or {@value #MIN_FRACTION} of the work have given it something to go on.
+     * second): rays get cheaper as the JIT compiles, so the rate since the start would promise too long, while a
+     * longer stretch does not swing with the cost of the last few rows. It waits for 1.5 s or 5 % of the work.
+     *
+     * @param recent (seconds, fraction) of the updates within that window, and the last one before it
      */
-    static final class Line {
+    record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos, List<double[]> recent) {
 
-        static final double MIN_WINDOW = 1.0;
-        static final double MIN_SECONDS = 1.5;
-        static final double MIN_FRACTION = 0.05;
+        Phase(String name, DoubleSupplier fraction, LongSupplier rays) {
+            this(name, fraction, rays, System.nanoTime(), new ArrayList<>(List.of(new double[] {0, 0})));
+        }
 
-        /** (seconds, fraction) of the updates within the window, and the last one before it. */
-        private final List<double[]> recent = new ArrayList<>(List.of(new double[] {0, 0}));
+        /** A phase whose progress is unknown, such as reading the scene. */
+        static Phase of(String name) {
+            return counted(name, () -> Double.NaN);
+        }
+
+        static Phase counted(String name, DoubleSupplier fraction) {
+            return new Phase(name, fraction, () -> -1);
+        }
+
+        /** The line after {@code seconds} of this phase, at most {@code columns − 1} characters long. */
+        String line(double seconds, int columns) {
+            double done = fraction.getAsDouble();
+            long traced = rays.getAsLong();
+            String rate = traced >= 0 && seconds > 0 ? String.format(Locale.ROOT, "%.2f Mrays/s", traced / seconds / 1e6)
+                    : null;
+            OptionalDouble left = Double.isNaN(done) ? OptionalDouble.empty() : timeLeft(seconds, done);
+            return fit(name, done, rate, left, seconds, columns);
+        }
 
         /** The time left after {@code seconds} with {@code fraction} (0 to 1) of the work done; empty if unknown. */
         OptionalDouble timeLeft(double seconds, double fraction) {
             recent.add(new double[] {seconds, fraction});
-            double window = Math.max(MIN_WINDOW, seconds / 3);
+            double window = Math.max(1.0, seconds / 3);
             while (recent.size() > 2 && seconds - recent.get(1)[0] >= window) {
                 recent.remove(0);
             }
             double[] then = recent.get(0);
             double rate = (fraction - then[1]) / (seconds - then[0]);
-            if (!(fraction > 0) || seconds < MIN_SECONDS && fraction < MIN_FRACTION || !(rate > 0)) {
+            if (!(fraction > 0) || seconds < 1.5 && fraction < 0.05 || !(rate > 0)) {
                 return OptionalDouble.empty();
             }
             return OptionalDouble.of((1 - Math.min(1, fraction)) / rate);
         }
 
         /**
-         * The line for phase {@code name} after {@code seconds}, with {@code fraction} done (NaN if unknown) and
-         * {@code rays} traced (negative if it traces none), at most {@code columns − 1} characters long.
-         */
-        String update(String name, double seconds, double fraction, long rays, int columns) {
-            String rate = rays >= 0 && seconds > 0 ? String.format(Locale.ROOT, "%.2f Mrays/s", rays / seconds / 1e6) : null;
-            OptionalDouble left = Double.isNaN(fraction) ? OptionalDouble.empty() : timeLeft(seconds, fraction);
-            return fit(name, fraction, rate, left, seconds, columns);
-        }
-
-        /**
          * The line of percent done, {@code rate} (or null) and time {@code left} (or, for a phase of unknown length,
          * the {@code seconds} it has run), in {@code columns − 1}: what does not fit goes first, the rate, then
-         * "about", then the start of the name.
+         * "about", then "left" and the start of the name.
          */
         static String fit(String name, double fraction, String rate, OptionalDouble left, double seconds, int columns) {
             int room = Math.max(1, columns - 1);
-            String percent = Double.isNaN(fraction) ? null
+            boolean unknown = Double.isNaN(fraction);
+            String percent = unknown ? null
                     : String.format(Locale.ROOT, "%3d%%", Math.round(100 * Math.max(0, Math.min(1, fraction)) - 0.5));
-            String time = left.isPresent() ? "about " + duration(left.getAsDouble()) + " left"
-                    : Double.isNaN(fraction) ? duration(seconds) : null;
-            String full = join(name + (Double.isNaN(fraction) ? "…" : ""), percent, rate, time);
-            if (full.length() <= room) {
-                return full;
-            }
-            String shorter = join(name, percent, null, time == null ? null : time.replace("about ", ""));
-            if (shorter.length() <= room) {
-                return shorter;
-            }
-            String tail = join(percent, time == null ? null : time.replace("about ", "").replace(" left", ""));
+            String span = left.isPresent() ? duration(left.getAsDouble()) : unknown ? duration(seconds) : null;
+            String full = join(name + (unknown ? "…" : ""), percent, rate, left.isPresent() ? "about " + span + " left"
+                    : span);
+            String shorter = join(name, percent, left.isPresent() ? span + " left" : span);
+            String tail = join(percent, span);
             int nameRoom = room - tail.length() - 2;
-            if (nameRoom >= 4) {
+            if (full.length() <= room || shorter.length() <= room) {
+                return full.length() <= room ? full : shorter;
+            } else if (nameRoom >= 4) {
                 String cut = name.length() <= nameRoom ? name : "…" + name.substring(name.length() - nameRoom + 1);
                 return tail.isEmpty() ? cut : cut + "  " + tail;
             }
@@ -222,7 +193,6 @@ final class ProgressDisplay implements AutoCloseable {
             return s < 60 ? s + " s" : minutes < 60 ? minutes + " min" : minutes / 60 + " h " + minutes % 60 + " min";
         }
 
-        /** The parts that are there, two spaces apart. */
         private static String join(String... parts) {
             return Stream.of(parts).filter(Objects::nonNull).collect(Collectors.joining("  "));
         }

@@ -27,19 +27,16 @@ record SceneSource(Path path, boolean stdin) {
 
     /** Reads the scene at {@code clock}; its warnings (slips that are no mistakes) go to {@code warnings}. */
     Scene read(StandardStreams streams, double clock, List<SceneError> warnings) throws SceneException, FileError {
-        if (clock != 0) {
-            return readFile(streams).at(clock, warnings);
-        }
-        try {
-            return !stdin ? SceneIO.readScene(path, warnings) : streams.inPath().isPresent()
-                    ? SceneIO.readScene(streams.inPath().get(), SceneIO.STDIN_NAME, warnings)
-                    : SceneIO.readScene(streams.in(), SceneIO.STDIN_NAME, warnings);
+        try { // at clock 0, read to be parsed once: its bytes let go as the parse goes on
+            return clock != 0 ? readFile(streams).at(clock, warnings) : !stdin ? SceneIO.readScene(path, warnings)
+                    : streams.inPath().isPresent() ? SceneIO.readScene(streams.inPath().get(), SceneIO.STDIN_NAME,
+                            warnings) : SceneIO.readScene(streams.in(), SceneIO.STDIN_NAME, warnings);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);
         }
     }
 
-    /** Reads the scene file once, to be parsed at each clock of an animation (Part III). */
+    /** Reads the scene file once, to be parsed at each clock of an animation. */
     SceneFile readFile(StandardStreams streams) throws FileError {
         try {
             return !stdin ? SceneFile.read(path) : streams.inPath().isPresent()

@@ -10,20 +10,17 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.IntConsumer;
 import java.util.function.IntSupplier;
-import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.CRC32;
 import picocli.CommandLine;
 
 /**
- * {@code --watch}: renders, then again whenever the scene file or a mesh it names changes, until Ctrl-C; for a
- * teacher who edits a scene while the projector shows the picture. Each render is a whole run of rtd without
- * {@code --watch}, so a broken edit fails as that run fails: it prints its errors and leaves the last good
- * picture in place.
+ * {@code --watch}: renders, then again whenever the scene file or a mesh it names changes, until Ctrl-C. Each render
+ * is a whole run of rtd without {@code --watch}, so a broken edit prints its errors and leaves the last good picture.
  *
- * <p>Every {@value #POLL_MILLIS} ms it asks the files for their size, time and (up to 16 MiB) a checksum: a
- * second save within the file system's clock tick is seen, a save without a change renders nothing. A change is
- * rendered once the files have looked the same for {@value #SETTLE_MILLIS} ms at least, not caught halfway.
+ * <p>Every {@value #POLL_MILLIS} ms it asks the files for their size, time and (up to 16 MiB) a checksum: a second
+ * save within the file system's clock tick is seen, a save without a change renders nothing. A change is rendered
+ * once the files have looked the same for {@value #SETTLE_MILLIS} ms at least, not caught halfway.
  */
 final class SceneWatcher {
 
@@ -69,7 +66,6 @@ final class SceneWatcher {
         return this;
     }
 
-    /** Ends {@link #run} at its next look at the files. */
     void stop() {
         stopped = true;
     }
@@ -108,7 +104,7 @@ final class SceneWatcher {
         return code;
     }
 
-    /** The first file whose fingerprint differs; the scene if a mesh statement went away. */
+    /** The first file that changed; the scene if a mesh statement went away. */
     private Path changed(Map<Path, String> before, Map<Path, String> now) {
         return now.keySet().stream().filter(file -> !now.get(file).equals(before.get(file))).findFirst().orElse(scene);
     }
@@ -131,11 +127,9 @@ final class SceneWatcher {
         prints.put(scene, fingerprint(scene));
         try {
             if (Files.size(scene) <= CHECKSUM_LIMIT) {
-                Matcher matcher = MESH.matcher(Files.readString(scene, StandardCharsets.UTF_8));
-                while (matcher.find()) {
-                    Path mesh = scene.toAbsolutePath().getParent().resolve(matcher.group(1).strip()).normalize();
-                    prints.put(mesh, fingerprint(mesh));
-                }
+                MESH.matcher(Files.readString(scene, StandardCharsets.UTF_8)).results()
+                        .map(mesh -> scene.toAbsolutePath().getParent().resolve(mesh.group(1).strip()).normalize())
+                        .forEach(mesh -> prints.put(mesh, fingerprint(mesh)));
             }
         } catch (IOException | RuntimeException e) {
             // unreadable or not UTF-8: the render says what is wrong; watch the scene alone

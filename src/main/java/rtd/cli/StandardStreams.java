@@ -11,9 +11,7 @@ import java.io.PrintWriter;
 import java.io.Writer;
 import java.nio.charset.Charset;
 import java.nio.charset.CharsetEncoder;
-import java.nio.charset.IllegalCharsetNameException;
 import java.nio.charset.StandardCharsets;
-import java.nio.charset.UnsupportedCharsetException;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
@@ -24,7 +22,9 @@ import java.util.concurrent.TimeUnit;
 /**
  * Standard input and output as bytes, for the scene {@code -} and {@code -o -}, and whether each standard stream
  * is a terminal: a person types the scene there, a picture never goes there, a progress line only there, and fits
- * its width; and the writers of rtd's text in the terminal's encoding. Tests give their own.
+ * its width. Tests give their own. rtd's text is written as a student's notes would ({@code 1920 × 1080},
+ * {@code t ≥ 0}); a terminal without such signs (the C locale of many containers, an old Windows code page) gets
+ * them in plain ASCII ({@link #PLAIN}), and {@code ?} for any other sign it lacks.
  *
  * @param inPath a name that reads standard input as a file ({@code /dev/stdin}) where the system has one: read
  *               through it, a scene is checked as it arrives, so that an endless stream of non-text ends at once
@@ -32,6 +32,16 @@ import java.util.concurrent.TimeUnit;
  */
 record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTerminal, OutputStream out,
         boolean outIsTerminal) {
+
+    /** How each sign of rtd's text is written without it. */
+    private static final Map<Character, String> PLAIN = Map.ofEntries(
+            Map.entry('×', "x"), Map.entry('−', "-"), Map.entry('·', "*"), Map.entry('…', "..."),
+            Map.entry('≥', ">="), Map.entry('≤', "<="), Map.entry('√', "sqrt"), Map.entry('→', "->"),
+            Map.entry('²', "^2"), Map.entry('⊙', "*"), Map.entry('∞', "inf"), Map.entry('°', " degrees"),
+            Map.entry('ε', "eps"), Map.entry('½', "1/2"), Map.entry('ö', "oe"), Map.entry('‖', "|"),
+            Map.entry('—', "--"), Map.entry('–', "-"), Map.entry('‘', "'"), Map.entry('’', "'"),
+            Map.entry('“', "\""), Map.entry('”', "\""), Map.entry('θ', "theta_"), Map.entry('⁻', "^-"),
+            Map.entry('¹', "1"));
 
     static StandardStreams system() {
         Path devStdin = Path.of("/dev/stdin");
@@ -82,9 +92,30 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
     static PrintWriter printWriter(OutputStream stream, Charset charset) {
         Writer bytes = new OutputStreamWriter(stream, charset);
         CharsetEncoder encoder = charset.newEncoder();
-        for (char sign : AsciiFallbackWriter.PLAIN.keySet()) { // a loop, not a stream: no lambda to set up on every run's way
+        for (char sign : PLAIN.keySet()) { // a loop, not a stream: no lambda to set up on every run's way
             if (!encoder.canEncode(sign)) {
-                return new PrintWriter(new AsciiFallbackWriter(bytes, encoder), true);
+                return new PrintWriter(new Writer() {
+                    @Override
+                    public void write(char[] text, int from, int length) throws IOException {
+                        for (int i = from; i < from + length; i++) {
+                            if (encoder.canEncode(text[i]) || Character.isSurrogate(text[i])) {
+                                bytes.write(text[i]);
+                            } else {
+                                bytes.write(PLAIN.getOrDefault(text[i], "?"));
+                            }
+                        }
+                    }
+
+                    @Override
+                    public void flush() throws IOException {
+                        bytes.flush();
+                    }
+
+                    @Override
+                    public void close() throws IOException {
+                        bytes.close();
+                    }
+                }, true);
             }
         }
         return new PrintWriter(bytes, true);
@@ -92,67 +123,16 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
 
     /**
      * The encoding {@code System.out} (or {@code err}) writes in: {@code stdout.encoding} (Java 19 on), else
-     * {@code sun.stdout.encoding} (a Windows console), else {@code native.encoding}, else the default.
+     * {@code sun.stdout.encoding} (a Windows console), else {@code native.encoding}, else the default; a name the
+     * JDK does not know is passed over, as the JDK itself does.
      */
     static Charset encodingOf(String stream) {
         for (String property : new String[] {stream + ".encoding", "sun." + stream + ".encoding", "native.encoding"}) {
-            String name = System.getProperty(property);
-            if (name != null) {
-                try {
-                    return Charset.forName(name);
-                } catch (IllegalCharsetNameException | UnsupportedCharsetException unknown) {
-                    // as the JDK itself does with a name it does not know: the next, or the default
-                }
+            try {
+                return Charset.forName(System.getProperty(property));
+            } catch (IllegalArgumentException missingOrUnknown) { // null, illegal or unsupported: the next
             }
         }
         return Charset.defaultCharset();
-    }
-
-    /**
-     * A writer of rtd's text in the terminal's encoding that spells the signs the encoding lacks in plain ASCII.
-     * Messages and {@code --explain} write as a student's notes would ({@code 1920 × 1080}, {@code x − w/2},
-     * {@code t ≥ 0}); a terminal without such signs (the C locale of many containers, an old Windows code page)
-     * gets {@code x}, {@code -}, {@code >=}, and {@code ?} for any other sign it lacks. UTF-8 is written as it is.
-     */
-    private static final class AsciiFallbackWriter extends Writer {
-
-        /** How each sign of rtd's text is written without it. */
-        private static final Map<Character, String> PLAIN = Map.ofEntries(
-                Map.entry('×', "x"), Map.entry('−', "-"), Map.entry('·', "*"), Map.entry('…', "..."),
-                Map.entry('≥', ">="), Map.entry('≤', "<="), Map.entry('√', "sqrt"), Map.entry('→', "->"),
-                Map.entry('²', "^2"), Map.entry('⊙', "*"), Map.entry('∞', "inf"), Map.entry('°', " degrees"),
-                Map.entry('ε', "eps"), Map.entry('½', "1/2"), Map.entry('ö', "oe"), Map.entry('‖', "|"),
-                Map.entry('—', "--"), Map.entry('–', "-"), Map.entry('‘', "'"), Map.entry('’', "'"),
-                Map.entry('“', "\""), Map.entry('”', "\""), Map.entry('θ', "theta_"), Map.entry('⁻', "^-"),
-                Map.entry('¹', "1"));
-
-        private final Writer out;
-        private final CharsetEncoder encoder;
-
-        private AsciiFallbackWriter(Writer out, CharsetEncoder encoder) {
-            this.out = out;
-            this.encoder = encoder;
-        }
-
-        @Override
-        public void write(char[] text, int from, int length) throws IOException {
-            for (int i = from; i < from + length; i++) {
-                if (encoder.canEncode(text[i]) || Character.isSurrogate(text[i])) {
-                    out.write(text[i]);
-                } else {
-                    out.write(PLAIN.getOrDefault(text[i], "?"));
-                }
-            }
-        }
-
-        @Override
-        public void flush() throws IOException {
-            out.flush();
-        }
-
-        @Override
-        public void close() throws IOException {
-            out.close();
-        }
     }
 }

@@ -1,6 +1,7 @@
 package rtd.cli;
 
 import java.nio.file.Path;
+import java.util.Formatter;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
@@ -11,6 +12,8 @@ import rtd.scene.Scene;
 
 /** {@code --stats}: the wall time of each phase of a run, one after the other, and the report of them and of the work per ray. */
 final class StatsReport {
+
+    private static final String LINE = "%-7s %8.3f s  %s%n";
 
     private final Map<String, Double> seconds = new LinkedHashMap<>();
     private long phaseStart = System.nanoTime();
@@ -24,25 +27,23 @@ final class StatsReport {
 
     /** The report of the phases so far, for {@code scene} rendered with {@code accelerator}. */
     String format(Scene scene, Accelerator accelerator, WorkCount work, int threads, Path output) {
-        double renderSeconds = seconds.getOrDefault("render", 0.0);
-        StringBuilder text = new StringBuilder();
-        line(text, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));
+        double render = seconds.getOrDefault("render", 0.0);
+        Formatter text = new Formatter(Locale.ROOT);
+        text.format(LINE, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));
         if (seconds.containsKey("export")) {
-            line(text, "export", seconds.get("export"), "the scene for POV-Ray (--export-pov)");
+            text.format(LINE, "export", seconds.get("export"), "the scene for POV-Ray (--export-pov)");
         }
-        line(text, "build", seconds.get("build"), accelerator.built().get());
-        line(text, "render", renderSeconds, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
-                work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / renderSeconds / 1e6));
+        text.format(LINE, "build", seconds.get("build"), accelerator.built().get());
+        text.format(LINE, "render", render, String.format(Locale.ROOT, "%,d rays%s on %d thread%s, %.2f Mrays/s",
+                work.rays(), raysByKind(work), threads, threads == 1 ? "" : "s", work.rays() / render / 1e6));
         if (work.answeredBy().values().stream().filter(rays -> rays > 0).count() > 1) {
-            text.append(String.format(Locale.ROOT, "           %s%n", answeredBy(work)));
+            text.format("           %s%n", answeredBy(work));
         }
-        line(text, "write", seconds.get("write"), output.toString());
-        double total = seconds.values().stream().mapToDouble(Double::doubleValue).sum();
-        line(text, "total", total, "from reading the scene to the written picture; the JVM's start is not counted");
-        text.append(String.format(Locale.ROOT, "per ray: %.2f intersection tests%s", work.testsPerRay(), byKind(work)));
-        text.append(accelerator.walksTree()
-                ? String.format(Locale.ROOT, ", %.2f BVH nodes visited%n", work.nodesPerRay()) : String.format("%n"));
-        return text.toString();
+        text.format(LINE, "write", seconds.get("write"), output);
+        text.format(LINE, "total", seconds.values().stream().mapToDouble(Double::doubleValue).sum(),
+                "from reading the scene to the written picture; the JVM's start is not counted");
+        text.format("per ray: %.2f intersection tests%s", work.testsPerRay(), byKind(work));
+        return text.format(accelerator.walksTree() ? ", %.2f BVH nodes visited%n" : "%n", work.nodesPerRay()).toString();
     }
 
     /** " (2,073,600 camera, 1,234 shadow, ...)" when secondary rays were followed. */
@@ -60,15 +61,6 @@ final class StatsReport {
                 .collect(Collectors.joining(", ")).replaceFirst(" by ", " answered by ");
     }
 
-    /** "1 object", "2,000 objects". */
-    static String count(long n, String thing) {
-        return count(n, thing, thing + "s");
-    }
-
-    static String count(long n, String one, String many) {
-        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
-    }
-
     /** " (12.50 sphere, 1.00 plane)" when the scene has more than one kind of object. */
     private static String byKind(WorkCount work) {
         return work.testsByKind().size() < 2 ? "" : work.testsByKind().keySet().stream()
@@ -76,7 +68,12 @@ final class StatsReport {
                 .collect(Collectors.joining(", ", " (", ")"));
     }
 
-    private static void line(StringBuilder text, String phase, double seconds, String detail) {
-        text.append(String.format(Locale.ROOT, "%-7s %8.3f s  %s%n", phase, seconds, detail));
+    /** "1 object", "2,000 objects". */
+    static String count(long n, String thing) {
+        return count(n, thing, thing + "s");
+    }
+
+    static String count(long n, String one, String many) {
+        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }
 }

@@ -12,10 +12,9 @@ import rtd.scene.Scene;
 import rtd.shade.FlatShader;
 
 /**
- * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}) and then of the reader, the view grid
- * and the renderer on a tiny scene: {@link RtdCommand#main} starts it before the command line is parsed, so that
- * classes are loaded on a spare core while picocli starts and the scene is read. Nothing it makes is kept; it is
- * per JVM, as what it loads is, and so the one piece of state that outlives a run.
+ * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}), then of the reader, the view grid
+ * and the renderer on a tiny scene, started before the command line is parsed: classes load on a spare core while
+ * picocli starts and the scene is read. Nothing it makes is kept; it is per JVM, as what it loads is.
  */
 final class WarmUp {
 
@@ -27,9 +26,6 @@ final class WarmUp {
             """;
 
     private static CompletableFuture<Void> started;
-
-    private WarmUp() {
-    }
 
     /** Starts the warm-up for {@code format}, unless one has started: the writers share most of what they load. */
     static synchronized CompletableFuture<Void> start(ImageFormat format) {

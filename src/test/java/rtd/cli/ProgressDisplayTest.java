@@ -18,10 +18,10 @@ class ProgressDisplayTest {
     @ValueSource(ints = {80, 41, 40, 30, 20, 12, 5, 1})
     void neverReachesTheLastColumnSoThatARedrawCannotWrapIntoANewLine(int columns) {
         String[] lines = {
-            ProgressDisplay.Line.fit("rendering", 0.42, "123.45 Mrays/s", OptionalDouble.of(3725), 12, columns),
-            ProgressDisplay.Line.fit("reading /home/student/scenes/a_very_long_name_of_a_scene_file.txt", Double.NaN, null,
+            ProgressDisplay.Phase.fit("rendering", 0.42, "123.45 Mrays/s", OptionalDouble.of(3725), 12, columns),
+            ProgressDisplay.Phase.fit("reading /home/student/scenes/a_very_long_name_of_a_scene_file.txt", Double.NaN, null,
                     OptionalDouble.empty(), 75, columns),
-            ProgressDisplay.Line.fit("writing out.png", 0.5, null, OptionalDouble.of(4), 2, columns)};
+            ProgressDisplay.Phase.fit("writing out.png", 0.5, null, OptionalDouble.of(4), 2, columns)};
         for (String line : lines) {
             assertThat(line.length()).as(line).isLessThanOrEqualTo(Math.max(1, columns - 1));
             assertThat(line).doesNotContain("\n");
@@ -30,11 +30,11 @@ class ProgressDisplayTest {
 
     @Test
     void showsPercentRateAndTimeLeftWhereThereIsRoom() {
-        assertThat(ProgressDisplay.Line.fit("rendering", 0.42, "3.21 Mrays/s", OptionalDouble.of(5.2), 3, 80))
+        assertThat(ProgressDisplay.Phase.fit("rendering", 0.42, "3.21 Mrays/s", OptionalDouble.of(5.2), 3, 80))
                 .isEqualTo("rendering   42%  3.21 Mrays/s  about 5 s left");
-        assertThat(ProgressDisplay.Line.fit("rendering", 0.42, "3.21 Mrays/s", OptionalDouble.of(5.2), 3, 30))
+        assertThat(ProgressDisplay.Phase.fit("rendering", 0.42, "3.21 Mrays/s", OptionalDouble.of(5.2), 3, 30))
                 .isEqualTo("rendering   42%  5 s left");
-        assertThat(ProgressDisplay.Line.fit("reading big.txt", Double.NaN, null, OptionalDouble.empty(), 3.4, 80))
+        assertThat(ProgressDisplay.Phase.fit("reading big.txt", Double.NaN, null, OptionalDouble.empty(), 3.4, 80))
                 .isEqualTo("reading big.txt…  3 s");
     }
 
@@ -43,7 +43,7 @@ class ProgressDisplayTest {
             + "the JIT compiles is not promised too long")
     void timeLeftFollowsTheRecentRate() {
         // a fake clock: an update every 0.25 s; 5 % of the rows a second for 2 s, then 20 % a second
-        ProgressDisplay.Line line = new ProgressDisplay.Line();
+        ProgressDisplay.Phase line = ProgressDisplay.Phase.of("rendering");
         OptionalDouble atThree = OptionalDouble.empty();
         OptionalDouble atFour = OptionalDouble.empty();
         for (int tick = 1; tick <= 16; tick++) {
@@ -64,15 +64,15 @@ class ProgressDisplayTest {
     @DisplayName("The rate is the rays traced, as --stats counts them, over the seconds of the render so far")
     void rateCountsRays() {
         // 2.5 s into the render, 40 % of the rows done, 19,525,000 rays traced (camera, shadow and mirror rays)
-        assertThat(new ProgressDisplay.Line().update("rendering", 2.5, 0.4, 19_525_000, 80))
+        assertThat(new ProgressDisplay.Phase("rendering", () -> 0.4, () -> 19_525_000).line(2.5, 80))
                 .isEqualTo("rendering   40%  7.81 Mrays/s  about 4 s left");
     }
 
     @Test
     void saysNothingAboutTimeLeftBeforeItHasSomethingToGoOn() {
-        assertThat(new ProgressDisplay.Line().timeLeft(1.0, 0.01)).isEmpty();
-        assertThat(new ProgressDisplay.Line().timeLeft(0.5, 0.2)).isPresent();
-        ProgressDisplay.Line stalled = new ProgressDisplay.Line();
+        assertThat(ProgressDisplay.Phase.of("rendering").timeLeft(1.0, 0.01)).isEmpty();
+        assertThat(ProgressDisplay.Phase.of("rendering").timeLeft(0.5, 0.2)).isPresent();
+        ProgressDisplay.Phase stalled = ProgressDisplay.Phase.of("rendering");
         stalled.timeLeft(2, 0.3);
         assertThat(stalled.timeLeft(3.5, 0.3)).as("no rows done in the last second").isEmpty();
     }
@@ -80,11 +80,11 @@ class ProgressDisplayTest {
     @Test
     void isClearedByTheShutdownHookThatCtrlCRuns() {
         StringWriter err = new StringWriter();
-        ProgressDisplay display = new ProgressDisplay(new PrintWriter(err, true), () -> 40, 0);
+        ProgressDisplay display = new ProgressDisplay(new PrintWriter(err, true), () -> 40);
         display.show(ProgressDisplay.Phase.counted("rendering", () -> 0.5));
         display.draw();
         assertThat(err.toString()).startsWith("\rrendering").doesNotContain("\n");
-        display.shutdownHook().run(); // what the JVM runs on SIGINT
+        display.clearOnExit.run(); // what the JVM runs on SIGINT
         assertThat(err.toString()).endsWith("\r\033[K");
         display.close();
     }
@@ -92,7 +92,7 @@ class ProgressDisplayTest {
     @Test
     void movesOutOfTheWayOfAWarning() {
         StringWriter err = new StringWriter();
-        ProgressDisplay display = new ProgressDisplay(new PrintWriter(err, true), () -> 80, 0);
+        ProgressDisplay display = new ProgressDisplay(new PrintWriter(err, true), () -> 80);
         display.show(ProgressDisplay.Phase.of("reading scene.txt"));
         display.draw();
         display.message("rtd: warning: ...");
