@@ -3,7 +3,6 @@ package rtd.cli;
 import java.util.concurrent.CompletableFuture;
 import rtd.accel.ViewGrid;
 import rtd.io.ImageFormat;
-import rtd.io.ImageWriting;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.render.ParallelRenderer;
@@ -12,7 +11,7 @@ import rtd.scene.Scene;
 import rtd.shade.FlatShader;
 
 /**
- * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}) and then of the reader, the view grid
+ * The one warm-up per JVM of {@code javax.imageio} ({@link ImageFormat#warmUp}) and then of the reader, the view grid
  * and the renderer on a tiny scene: {@link RtdCommand#main} starts it before the command line is parsed, so that
  * classes are loaded on a spare core while picocli starts and the scene is read. Nothing it makes is kept; it is
  * per JVM, as what it loads is, and so the one piece of state that outlives a run.
@@ -34,7 +33,7 @@ final class WarmUp {
     /** Starts the warm-up for {@code format}, unless one has started: the writers share most of what they load. */
     static synchronized CompletableFuture<Void> start(ImageFormat format) {
         if (started == null) {
-            started = ImageWriting.warmUp(format, WarmUp::renderOnce);
+            started = format.warmUp(WarmUp::renderOnce);
         }
         return started;
     }
