@@ -43,7 +43,8 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             switch (kind) {
                 case STREAM -> SceneIO.writeImageInto(picture, format, file, progress);
                 case REPLACE -> SceneIO.writeImage(picture, format, file, progress);
-                case STANDARD_OUTPUT -> format.write(picture, new BufferedOutputStream(standardOutput, 1 << 16), progress);
+                case STANDARD_OUTPUT -> format.write(picture, new BufferedOutputStream(standardOutput, 1 << 16),
+                        progress);
             }
         } catch (IOException e) {
             if (kind == Kind.STANDARD_OUTPUT && "broken pipe".equalsIgnoreCase(String.valueOf(e.getMessage()))) {

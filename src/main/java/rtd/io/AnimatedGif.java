@@ -71,8 +71,9 @@ public final class AnimatedGif implements AutoCloseable {
         ImageWriteParam param = writer.getDefaultWriteParam();
         IIOMetadata metadata = writer.getDefaultImageMetadata(new ImageTypeSpecifier(image), param);
         IIOMetadataNode root = (IIOMetadataNode) metadata.getAsTree(FORMAT);
+        IIOMetadataNode control = child(root, "GraphicControlExtension");
         Map.of("disposalMethod", "none", "userInputFlag", "FALSE", "transparentColorFlag", "FALSE", "delayTime",
-                Integer.toString(delay), "transparentColorIndex", "0").forEach(child(root, "GraphicControlExtension")::setAttribute);
+                Integer.toString(delay), "transparentColorIndex", "0").forEach(control::setAttribute);
         if (!started) {
             IIOMetadataNode loop = new IIOMetadataNode("ApplicationExtension");
             loop.setAttribute("applicationID", "NETSCAPE");

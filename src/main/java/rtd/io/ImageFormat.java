@@ -7,6 +7,7 @@ import java.awt.image.DirectColorModel;
 import java.awt.image.Raster;
 import java.awt.image.SampleModel;
 import java.awt.image.SinglePixelPackedSampleModel;
+import java.awt.image.WritableRaster;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Path;
@@ -105,7 +106,8 @@ public record ImageFormat(String extension) {
 
     /** Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction written. */
     public void write(Picture picture, OutputStream out, DoubleConsumer progress) throws IOException {
-        ImageWriter writer = writerFor(extension).orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
+        ImageWriter writer = writerFor(extension)
+                .orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
         // In memory, not javax.imageio's default cache file in the system's temporary folder:
         // the writer seeks back only within the chunk it writes, which the cache keeps.
         try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {
@@ -129,12 +131,13 @@ public record ImageFormat(String extension) {
         out.flush();
     }
 
-    /** The picture as an RGB image that shares its array, laid out so that the writer reads it fast ({@link PackedRgbSamples}). */
+    /** The picture as an RGB image that shares its array, laid out so that the writer reads it fast. */
     static BufferedImage asImage(Picture picture) {
         DirectColorModel rgb = new DirectColorModel(24, RGB_MASKS[0], RGB_MASKS[1], RGB_MASKS[2]);
         DataBufferInt data = new DataBufferInt(picture.rgb(), picture.rgb().length);
-        return new BufferedImage(rgb, Raster.createWritableRaster(new PackedRgbSamples(picture.width(), picture.height()),
-                data, null), false, null);
+        WritableRaster raster = Raster.createWritableRaster(new PackedRgbSamples(picture.width(), picture.height()),
+                data, null);
+        return new BufferedImage(rgb, raster, false, null);
     }
 
     /** Passes the writer's percentage on as a fraction. */
