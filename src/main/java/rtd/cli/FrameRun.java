@@ -15,7 +15,7 @@ import java.util.concurrent.TimeUnit;
 import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.io.AnimatedGif;
-import rtd.io.ClockText;
+import rtd.io.ClockedScene;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
@@ -67,7 +67,7 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             for (int i = plan.first(); i <= plan.last(); i++) {
                 int done = i - plan.first();
                 display.show(ProgressDisplay.Phase.counted(String.format("frame %d (%d to %d), clock %s", i,
-                        plan.first(), plan.last(), ClockText.format(plan.clock(i))),
+                        plan.first(), plan.last(), ClockedScene.clockText(plan.clock(i))),
                         () -> done / (double) plan.count()));
                 if (picture == null || file.usesClock()) {
                     picture = renderer.draw(i == plan.first() ? first : frame(file, i, null));
@@ -88,7 +88,7 @@ record FrameRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         } catch (SceneException e) {
             throw new SceneException(e.errors().stream().map(error -> error.message().contains("clock =") ? error
                     : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
-                            + ", at clock = " + ClockText.format(clock) + ")", error.sourceLine(), error.help()))
+                            + ", at clock = " + ClockedScene.clockText(clock) + ")", error.sourceLine(), error.help()))
                     .toList(), false);
         }
     }

@@ -11,7 +11,6 @@ import java.util.function.DoubleConsumer;
 import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
-import rtd.io.ImageWriting;
 import rtd.io.SceneIO;
 
 /**
@@ -41,8 +40,8 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             switch (kind) {
                 case STREAM -> SceneIO.writeImageInto(picture, format, file, progress);
                 case REPLACE -> SceneIO.writeImage(picture, format, file, progress);
-                case STANDARD_OUTPUT -> ImageWriting.write(picture, format,
-                        new BufferedOutputStream(standardOutput, 1 << 16), progress);
+                case STANDARD_OUTPUT -> format.write(picture, new BufferedOutputStream(standardOutput, 1 << 16),
+                        progress);
             }
         } catch (IOException e) {
             if (kind == Kind.STANDARD_OUTPUT && "broken pipe".equalsIgnoreCase(String.valueOf(e.getMessage()))) {

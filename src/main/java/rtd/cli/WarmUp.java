@@ -3,7 +3,6 @@ package rtd.cli;
 import java.util.concurrent.CompletableFuture;
 import rtd.accel.ViewGrid;
 import rtd.io.ImageFormat;
-import rtd.io.ImageWriting;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
 import rtd.render.ParallelRenderer;
@@ -12,7 +11,7 @@ import rtd.scene.Scene;
 import rtd.shade.FlatShader;
 
 /**
- * The one warm-up per JVM of {@code javax.imageio} ({@link ImageWriting#warmUp}), then of the reader, the view grid
+ * The one warm-up per JVM of {@code javax.imageio} ({@link ImageFormat#warmUp}), then of the reader, the view grid
  * and the renderer on a tiny scene, started before the command line is parsed: classes load on a spare core while
  * picocli starts and the scene is read. Nothing it makes is kept; it is per JVM, as what it loads is.
  */
@@ -30,7 +29,7 @@ final class WarmUp {
     /** Starts the warm-up for {@code format}, unless one has started: the writers share most of what they load. */
     static synchronized CompletableFuture<Void> start(ImageFormat format) {
         if (started == null) {
-            started = ImageWriting.warmUp(format, WarmUp::renderOnce);
+            started = format.warmUp(WarmUp::renderOnce);
         }
         return started;
     }

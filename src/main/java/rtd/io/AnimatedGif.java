@@ -7,6 +7,7 @@ import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.Map;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageTypeSpecifier;
@@ -31,20 +32,19 @@ public final class AnimatedGif implements AutoCloseable {
 
     private static final String FORMAT = "javax_imageio_gif_image_1.0";
 
-    private final ImageWriter writer;
-    private final ImageOutputStream stream;
     private final OutputStream out;
     private final int delay;
     /** The temporary file that replaces the output, or null when written into a device as it is. */
     private final TemporaryFiles.Replacement temporary;
-    private int frames;
+    private final ImageWriter writer = ImageIO.getImageWritersByFormatName("gif").next();
+    private final ImageOutputStream stream;
+    private boolean started;
     private boolean finished;
 
     private AnimatedGif(OutputStream out, int delay, TemporaryFiles.Replacement temporary) throws IOException {
         this.out = new BufferedOutputStream(out, 1 << 16);
         this.delay = delay;
         this.temporary = temporary;
-        this.writer = ImageIO.getImageWritersByFormatName("gif").next();
         this.stream = new MemoryCacheImageOutputStream(this.out);
         writer.setOutput(stream);
         writer.prepareWriteSequence(null);
@@ -67,17 +67,14 @@ public final class AnimatedGif implements AutoCloseable {
     }
 
     public void add(Picture picture) throws IOException {
-        BufferedImage image = ImageWriting.asImage(picture);
+        BufferedImage image = ImageFormat.asImage(picture);
         ImageWriteParam param = writer.getDefaultWriteParam();
         IIOMetadata metadata = writer.getDefaultImageMetadata(new ImageTypeSpecifier(image), param);
         IIOMetadataNode root = (IIOMetadataNode) metadata.getAsTree(FORMAT);
         IIOMetadataNode control = child(root, "GraphicControlExtension");
-        control.setAttribute("disposalMethod", "none");
-        control.setAttribute("userInputFlag", "FALSE");
-        control.setAttribute("transparentColorFlag", "FALSE");
-        control.setAttribute("delayTime", Integer.toString(delay));
-        control.setAttribute("transparentColorIndex", "0");
-        if (frames == 0) {
+        Map.of("disposalMethod", "none", "userInputFlag", "FALSE", "transparentColorFlag", "FALSE", "delayTime",
+                Integer.toString(delay), "transparentColorIndex", "0").forEach(control::setAttribute);
+        if (!started) {
             IIOMetadataNode loop = new IIOMetadataNode("ApplicationExtension");
             loop.setAttribute("applicationID", "NETSCAPE");
             loop.setAttribute("authenticationCode", "2.0");
@@ -86,7 +83,7 @@ public final class AnimatedGif implements AutoCloseable {
         }
         metadata.setFromTree(FORMAT, root);
         writer.writeToSequence(new IIOImage(image, null, metadata), param);
-        frames++;
+        started = true;
     }
 
     /** Ends the GIF and moves it into place. */
@@ -114,10 +111,8 @@ public final class AnimatedGif implements AutoCloseable {
 
     /** The child of {@code root} named {@code name}, added if it has none. */
     private static IIOMetadataNode child(IIOMetadataNode root, String name) {
-        for (int i = 0; i < root.getLength(); i++) {
-            if (root.item(i).getNodeName().equalsIgnoreCase(name)) {
-                return (IIOMetadataNode) root.item(i);
-            }
+        if (root.getElementsByTagName(name).getLength() > 0) {
+            return (IIOMetadataNode) root.getElementsByTagName(name).item(0);
         }
         IIOMetadataNode node = new IIOMetadataNode(name);
         root.appendChild(node);

@@ -1,10 +1,16 @@
 package rtd.io;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
 import rtd.scene.Scene;
 
 /**
@@ -39,8 +45,72 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         return parts.getOrDefault(part, ClockFields.NONE);
     }
 
-    public boolean usesClock() {
-        return !ambient.isEmpty() || !camera.isEmpty() || !parts.isEmpty() || !unwritten.isEmpty();
+    /**
+     * The numbers of one statement that use the clock, each as the expression written, found by its group's
+     * meaning as the {@link Grammar} names it and its place in the group: {@code of("centre", 1)} is the y of a
+     * sphere's centre. Every other number of the statement is the same at every clock.
+     *
+     * @param clocked group meaning → its numbers' expressions, null where a number does not use the clock
+     * @param values  group meaning → its numbers as read at the reading's clock, for every group (never changed)
+     */
+    public record ClockFields(Map<String, Expression[]> clocked, Map<String, float[]> values) {
+
+        /** A statement none of whose numbers uses the clock. */
+        public static final ClockFields NONE = new ClockFields(Map.of(), Map.of());
+
+        /** The numbers of {@code v}'s statement that use the clock; {@link #NONE} if none does. */
+        static ClockFields of(StatementValues v) {
+            if (!v.anyExpression()) {
+                return NONE;
+            }
+            Map<String, Expression[]> found = new HashMap<>();
+            Map<String, float[]> numbers = new HashMap<>();
+            for (int g = 0; g < v.groupCount(); g++) {
+                int size = v.size(g);
+                String key = v.meaning(g);
+                for (int n = 2; numbers.containsKey(key); n++) { // a meaning that repeats (a transform's steps), "step 2"
+                    key = v.meaning(g) + " " + n;
+                }
+                numbers.put(key, v.numbers(g));
+                for (int k = 0; k < size; k++) {
+                    Expression tree = v.tree(g, k);
+                    if (tree != null && tree.usesClock()) {
+                        found.computeIfAbsent(key, meaning -> new Expression[size])[k] = tree;
+                    }
+                }
+            }
+            return found.isEmpty() ? NONE : new ClockFields(Map.copyOf(found), Map.copyOf(numbers));
+        }
+
+        /** Number {@code k} of the group that means {@code group} if it uses the clock, else null. */
+        public Expression of(String group, int k) {
+            Expression[] numbers = clocked.get(group);
+            return numbers == null || k >= numbers.length ? null : numbers[k];
+        }
+
+        /** Number {@code k} of the group that means {@code group} as read (NaN if there is none). */
+        public float value(String group, int k) {
+            float[] numbers = values.get(group);
+            return numbers == null || k >= numbers.length ? Float.NaN : numbers[k];
+        }
+
+        public boolean has(String group) {
+            return clocked.containsKey(group);
+        }
+
+        /** The meanings of the groups with a number that uses the clock. */
+        public Set<String> groups() {
+            return clocked.keySet();
+        }
+
+        /** Every number's expression that uses the clock, in no particular order. */
+        public List<Expression> expressions() {
+            return clocked.values().stream().flatMap(Arrays::stream).filter(Objects::nonNull).toList();
+        }
+
+        public boolean isEmpty() {
+            return clocked.isEmpty();
+        }
     }
 
     /**
@@ -79,9 +149,20 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
             }
         }
 
-        /** The table for {@code scene}, the scene that was read. */
         ClockedScene scene(Scene scene) {
             return new ClockedScene(scene, ambient, camera, parts, unwritten);
         }
+    }
+
+    /** A clock value as messages and the progress line write it: six significant digits at most, 0.75, 0.333333, 1. */
+    public static String clockText(double clock) {
+        return clock == 0 ? "0" : new BigDecimal(clock).round(new MathContext(6)).stripTrailingZeros().toPlainString();
+    }
+
+    /** An expression as written, its value, and the clock if it uses it: "1-2*clock, which is -0.5 at clock = 0.75". */
+    static String withValue(String text, float value, boolean usesClock, double clock) {
+        String number = value == Math.rint(value) && Math.abs(value) < 1e9 ? String.valueOf((long) value)
+                : String.valueOf(value);
+        return text + ", which is " + number + (usesClock ? " at clock = " + clockText(clock) : "");
     }
 }

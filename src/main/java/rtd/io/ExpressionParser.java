@@ -157,7 +157,7 @@ final class ExpressionParser {
         int end = cursor.afterWord(start);
         String word = cursor.source.text(start, end);
         cursor.pos = cursor.afterSpaces(end);
-        ExpressionFunction function = ExpressionFunction.named(word);
+        Expression.Function function = Expression.Function.named(word);
         if (cursor.at('(')) {
             if (function == null) {
                 throw unknownFunction(word, start);
@@ -178,17 +178,17 @@ final class ExpressionParser {
     }
 
     /** The arguments of {@code function}, from its '(' to its ')': as many as it takes. */
-    private Expression call(ExpressionFunction function, int start) throws StatementError {
+    private Expression call(Expression.Function function, int start) throws StatementError {
         int open = cursor.pos++;
         List<Expression> arguments = new ArrayList<>(List.of(sum()));
         for (cursor.skipBlanks(); cursor.at(','); cursor.skipBlanks()) {
             cursor.pos++;
             arguments.add(sum());
         }
-        expectClosing(open, "'" + function.spelling() + "('");
+        expectClosing(open, "'" + function.name() + "('");
         if (arguments.size() != function.arity()) {
             String takes = function.arity() == 1 ? "1 argument" : function.arity() + " arguments";
-            throw cursor.error(start, "'" + function.spelling() + "' takes " + takes + ", found " + arguments.size(),
+            throw cursor.error(start, "'" + function.name() + "' takes " + takes + ", found " + arguments.size(),
                     "write it as " + function.usage());
         }
         return new Expression.Call(function, arguments, start);
@@ -209,9 +209,9 @@ final class ExpressionParser {
     }
 
     private StatementError unknownFunction(String word, int start) {
-        String nearest = near(word, Hints.nearest(word, ExpressionFunction.NAMES));
+        String nearest = near(word, Hints.nearest(word, Expression.Function.NAMES));
         return cursor.error(start, "unknown function '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
-                : "the functions are " + String.join(", ", ExpressionFunction.NAMES)
+                : "the functions are " + String.join(", ", Expression.Function.NAMES)
                         + (names.lookUp(word, start) != null ? "; a product is written with '*', such as " + word + "*(…)" : ""));
     }
 
@@ -226,7 +226,7 @@ final class ExpressionParser {
 
     String nearestName(String word) {
         List<String> candidates = new ArrayList<>(names.known());
-        candidates.addAll(ExpressionFunction.NAMES);
+        candidates.addAll(Expression.Function.NAMES);
         return near(word, Hints.nearest(word, candidates));
     }
 

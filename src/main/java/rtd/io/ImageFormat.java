@@ -1,20 +1,40 @@
 package rtd.io;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBuffer;
+import java.awt.image.DataBufferInt;
+import java.awt.image.DirectColorModel;
+import java.awt.image.Raster;
+import java.awt.image.SampleModel;
+import java.awt.image.SinglePixelPackedSampleModel;
+import java.awt.image.WritableRaster;
+import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.DoubleConsumer;
+import javax.imageio.IIOException;
+import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageTypeSpecifier;
+import javax.imageio.ImageWriteParam;
 import javax.imageio.ImageWriter;
+import javax.imageio.event.IIOWriteProgressListener;
+import javax.imageio.stream.ImageOutputStream;
+import javax.imageio.stream.MemoryCacheImageOutputStream;
+import rtd.image.Picture;
 
 /**
- * The picture's file format, by the output's extension: {@code .png}, {@code .jpg}, {@code .bmp}, whatever
- * {@code javax.imageio} writes for RGB. PNG is known without starting {@code javax.imageio} (slower than a
- * small render); any other is looked up at once, so that one it cannot write is a command-line mistake.
+ * The picture's file format, by the output's extension ({@code .png}, {@code .jpg}, {@code .bmp}, whatever
+ * {@code javax.imageio} writes for RGB), and its encoding of a {@link Picture} through {@code javax.imageio},
+ * handing over the picture's array without a copy as RGB without alpha. PNG is known without starting
+ * {@code javax.imageio} (slower than a small render); any other is looked up at once, so that one it cannot
+ * write is a command-line mistake.
  *
  * @param extension the extension in lower case, without the dot ("png", "jpg")
  */
@@ -22,6 +42,7 @@ public record ImageFormat(String extension) {
 
     /** PNG: lossless, and what a name without extension, standard output and the default output get. */
     public static final ImageFormat PNG = new ImageFormat("png");
+    private static final int[] RGB_MASKS = {0xFF0000, 0xFF00, 0xFF};
 
     /** The format for {@code output}: by its extension, PNG if it has none; empty if none can be written. */
     public static Optional<ImageFormat> forOutput(Path output) {
@@ -30,11 +51,6 @@ public record ImageFormat(String extension) {
             return Optional.of(PNG);
         }
         return writerFor(extension.get()).isPresent() ? Optional.of(new ImageFormat(extension.get())) : Optional.empty();
-    }
-
-    /** Whether this is {@link #PNG}, by the extension: the record's first {@code equals} sets up method handles. */
-    public boolean isPng() {
-        return extension.equals(PNG.extension);
     }
 
     /** The extensions (lower case, sorted) whose format {@code javax.imageio} can write an RGB picture in. */
@@ -53,11 +69,6 @@ public record ImageFormat(String extension) {
                 : Optional.empty();
     }
 
-    /** A new writer of this format for an RGB picture. */
-    ImageWriter newWriter() {
-        return writerFor(extension).orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
-    }
-
     /** A writer for {@code extension} that encodes RGB without alpha (not WBMP's, black and white only). */
     private static Optional<ImageWriter> writerFor(String extension) {
         ImageTypeSpecifier rgb = ImageTypeSpecifier.createFromBufferedImageType(BufferedImage.TYPE_INT_RGB);
@@ -69,5 +80,138 @@ public record ImageFormat(String extension) {
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * Starts {@code javax.imageio} and this format's writer on a daemon thread (loading it takes longer than a
+     * small render) by writing one pixel into nothing, then runs {@code then} on that thread. Wait for the
+     * result (which does not wait for {@code then}) before writing, so that two threads never load the same
+     * classes.
+     */
+    public CompletableFuture<Void> warmUp(Runnable then) {
+        CompletableFuture<Void> done = new CompletableFuture<>();
+        Thread thread = new Thread(() -> {
+            try {
+                write(new Picture(1, 1, new int[1]), OutputStream.nullOutputStream(), fraction -> { });
+                done.complete(null);
+            } catch (IOException | RuntimeException | Error e) {
+                done.completeExceptionally(e); // the real write will meet it again, and say so
+            }
+            then.run();
+        }, "rtd-warm-up");
+        thread.setDaemon(true);
+        thread.start();
+        return done;
+    }
+
+    /** Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction written. */
+    public void write(Picture picture, OutputStream out, DoubleConsumer progress) throws IOException {
+        ImageWriter writer = writerFor(extension)
+                .orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
+        // In memory, not javax.imageio's default cache file in the system's temporary folder:
+        // the writer seeks back only within the chunk it writes, which the cache keeps.
+        try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {
+            writer.setOutput(stream);
+            writer.addIIOWriteProgressListener(new Progress(progress));
+            ImageWriteParam parameters = writer.getDefaultWriteParam();
+            // PNG at a low deflate level (quality 0.9), still lossless: half the time, a little larger
+            if (extension.equals(PNG.extension) && parameters.canWriteCompressed()) {
+                parameters.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
+                parameters.setCompressionQuality(0.9f);
+            }
+            writer.write(null, new IIOImage(asImage(picture), null, null), parameters);
+            stream.flush();
+        } catch (IIOException e) {
+            // javax.imageio wraps a failed write ("I/O error writing PNG file!"); the system's reason
+            // ("No space left on device") is what a person needs
+            throw e.getCause() instanceof IOException cause ? cause : e;
+        } finally {
+            writer.dispose();
+        }
+        out.flush();
+    }
+
+    /** The picture as an RGB image that shares its array, laid out so that the writer reads it fast. */
+    static BufferedImage asImage(Picture picture) {
+        DirectColorModel rgb = new DirectColorModel(24, RGB_MASKS[0], RGB_MASKS[1], RGB_MASKS[2]);
+        DataBufferInt data = new DataBufferInt(picture.rgb(), picture.rgb().length);
+        WritableRaster raster = Raster.createWritableRaster(new PackedRgbSamples(picture.width(), picture.height()),
+                data, null);
+        return new BufferedImage(rgb, raster, false, null);
+    }
+
+    /** Passes the writer's percentage on as a fraction. */
+    private record Progress(DoubleConsumer fraction) implements IIOWriteProgressListener {
+        @Override
+        public void imageProgress(ImageWriter source, float percentageDone) {
+            fraction.accept(percentageDone / 100.0);
+        }
+
+        @Override
+        public void imageStarted(ImageWriter source, int imageIndex) {
+            fraction.accept(0);
+        }
+
+        @Override
+        public void imageComplete(ImageWriter source) {
+            fraction.accept(1);
+        }
+
+        @Override
+        public void thumbnailStarted(ImageWriter source, int imageIndex, int thumbnailIndex) {
+        }
+
+        @Override
+        public void thumbnailProgress(ImageWriter source, float percentageDone) {
+        }
+
+        @Override
+        public void thumbnailComplete(ImageWriter source) {
+        }
+
+        @Override
+        public void writeAborted(ImageWriter source) {
+        }
+    }
+
+    /**
+     * A {@link Picture}'s layout, one int {@code 0xRRGGBB} a pixel, row by row, whose {@link #getPixels}
+     * reads the array directly: the JDK's goes through the data buffer's methods, slow before the JIT
+     * compiles them. The samples are the same.
+     */
+    static final class PackedRgbSamples extends SinglePixelPackedSampleModel {
+
+        PackedRgbSamples(int width, int height) {
+            super(DataBuffer.TYPE_INT, width, height, RGB_MASKS);
+        }
+
+        /** The same layout at another size: the PNG writer copies each row into a raster of its own first. */
+        @Override
+        public SampleModel createCompatibleSampleModel(int width, int height) {
+            return new PackedRgbSamples(width, height);
+        }
+
+        @Override
+        public int[] getPixels(int x, int y, int w, int h, int[] samples, DataBuffer data) {
+            if (!(data instanceof DataBufferInt ints) || ints.getNumBanks() != 1 || x < 0 || y < 0 || w < 0 || h < 0
+                    || x + w > getWidth() || y + h > getHeight()) {
+                return super.getPixels(x, y, w, h, samples, data); // as the JDK does it, with its checks
+            }
+            int[] into = samples != null ? samples : new int[3 * w * h];
+            int[] rgb = ints.getData();
+            int width = getScanlineStride();
+            int k = 0;
+            for (int row = y; row < y + h; row++) {
+                int from = ints.getOffset() + row * width + x;
+                for (int i = from; i < from + w; i++) {
+                    int pixel = rgb[i];
+                    into[k] = pixel >>> 16 & 0xFF;
+                    into[k + 1] = pixel >>> 8 & 0xFF;
+                    into[k + 2] = pixel & 0xFF;
+                    k += 3;
+                }
+            }
+            return into;
+        }
     }
 }

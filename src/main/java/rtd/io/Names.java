@@ -37,7 +37,7 @@ final class Names {
      * of {@code (at x|y|z)}; made when a name is first checked, so a file of plain numbers never needs them.
      */
     private static final class Reserved {
-        static final Set<String> WORDS = Set.copyOf(Stream.concat(ExpressionFunction.NAMES.stream(),
+        static final Set<String> WORDS = Set.copyOf(Stream.concat(Expression.Function.NAMES.stream(),
                 Stream.of("clock", "pi", "at", "NaN", "Infinity")).toList());
     }
 

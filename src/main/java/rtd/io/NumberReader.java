@@ -94,7 +94,7 @@ final class NumberReader {
         cursor.pos = tokenStart;
         Expression read = expressions().read();
         String text = cursor.source.text(tokenStart, cursor.pos);
-        String at = read.usesClock() ? " at clock = " + ClockText.format(names.clock) : "";
+        String at = read.usesClock() ? " at clock = " + ClockedScene.clockText(names.clock) : "";
         try {
             exact = read.value(names.clock);
         } catch (Expression.NotFinite e) {

@@ -159,12 +159,9 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
 
     /** Why a file could not be read, in words for a person. */
     private static String reason(IOException e) {
-        if (e instanceof NoSuchFileException || e instanceof AccessDeniedException) {
-            return e instanceof NoSuchFileException ? "no such file" : "permission denied";
-        }
-        if (e instanceof FileSystemException failure && failure.getReason() != null) {
-            return failure.getReason().toLowerCase(Locale.ROOT);
-        }
-        return e.getMessage() != null ? e.getMessage() : "an input error";
+        return e instanceof NoSuchFileException ? "no such file" : e instanceof AccessDeniedException ? "permission denied"
+                : e instanceof FileSystemException failure && failure.getReason() != null
+                        ? failure.getReason().toLowerCase(Locale.ROOT)
+                : e.getMessage() != null ? e.getMessage() : "an input error";
     }
 }

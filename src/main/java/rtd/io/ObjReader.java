@@ -85,31 +85,20 @@ final class ObjReader {
         }
         int length = pos - start;
         if (length == 1 && bytes[start] == 'v') {
-            readVertex();
+            vertices = room(vertices, 3 * ++vertexCount); // even if the line is wrong: the faces below count it
+            readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
         } else if (length == 2 && bytes[start] == 'v' && bytes[start + 1] == 'n') {
-            readNormal();
+            normals = room(normals, 3 * ++normalCount);
+            readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
         } else if (length == 1 && bytes[start] == 'f') {
             readFace(start);
         }
         // any other line is skipped, whatever it holds
     }
 
-    // ---- v and vn ---------------------------------------------------------------------------
-
-    private void readVertex() throws StatementError {
-        vertexCount++; // even if the line is wrong: the faces below count it, and would be wrong too
-        if (3 * vertexCount > vertices.length) {
-            vertices = Arrays.copyOf(vertices, 2 * vertices.length);
-        }
-        readCoordinates(vertices, 3 * vertexCount - 3, "v", "vertex"); // anything after z (w, colours) is skipped
-    }
-
-    private void readNormal() throws StatementError {
-        normalCount++;
-        if (3 * normalCount > normals.length) {
-            normals = Arrays.copyOf(normals, Math.max(3 * 1024, 2 * normals.length));
-        }
-        readCoordinates(normals, 3 * normalCount - 3, "vn", "normal");
+    /** {@code numbers}, or a copy twice as long (3072 at least) if it is shorter than {@code size}. */
+    private static float[] room(float[] numbers, int size) {
+        return size <= numbers.length ? numbers : Arrays.copyOf(numbers, Math.max(3 * 1024, 2 * numbers.length));
     }
 
     private void readCoordinates(float[] into, int at, String keyword, String what) throws StatementError {
@@ -120,7 +109,7 @@ final class ObjReader {
                 pos++;
             }
             if (pos == start) {
-                throw error(pos, "expected 3 numbers (x y z) after '" + keyword + "', found " + (k == 0 ? "none" : k == 1 ? "1" : "2"),
+                throw error(pos, "expected 3 numbers (x y z) after '" + keyword + "', found " + (k == 0 ? "none" : k),
                         "a " + what + " is written " + keyword + " 0.5 -1 2");
             }
             float value;
@@ -140,8 +129,6 @@ final class ObjReader {
             into[at + k] = value;
         }
     }
-
-    // ---- f ------------------------------------------------------------------------------------
 
     private void readFace(int keywordStart) throws StatementError {
         int count = 0;
@@ -250,8 +237,6 @@ final class ObjReader {
         return error(start, "expected a corner of the face, found " + (after > start ? "'" + source.text(start, after) + "'"
                 : source.describe(start, lineStart)), CORNER_FORMS);
     }
-
-    // ---- bytes --------------------------------------------------------------------------------
 
     /** Whether {@link #pos} is at a blank, a comment, the end of the line or of the file. */
     private boolean atTokenEnd() {

@@ -18,7 +18,7 @@ import rtd.scene.Scene;
 /**
  * Input and output (paper, sections 4.1 and 4.3): reads a scene file at clock 0 (a {@link SceneFile} read
  * once), writes the picture as a PNG, or in another format that {@code javax.imageio} writes
- * ({@link ImageWriting}). Every warning list may be null: the warnings are dropped.
+ * ({@link ImageFormat#write}). Every warning list may be null: the warnings are dropped.
  */
 public final class SceneIO {
 
@@ -84,7 +84,7 @@ public final class SceneIO {
      */
     public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
             throws IOException {
-        TemporaryFiles.replace(output, out -> ImageWriting.write(picture, format, out, progress));
+        TemporaryFiles.replace(output, out -> format.write(picture, out, progress));
     }
 
     /** Writes {@code text} in UTF-8 to {@code output} as {@link #writeImage} writes a picture: whole, or not at all. */
@@ -104,7 +104,7 @@ public final class SceneIO {
     public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
             throws IOException {
         try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), 1 << 16)) {
-            ImageWriting.write(picture, format, out, progress);
+            format.write(picture, out, progress);
         }
     }
 }

@@ -265,11 +265,11 @@ final class StatementValues {
         return new StatementError(source.errorAt(line, lineStart, offset, message, help));
     }
 
-    /** Value {@code i} (of all groups) as written, for messages; an expression with its value ({@link ClockText#withValue}). */
+    /** Value {@code i} (of all groups) as written, for messages; an expression with its value ({@link ClockedScene#withValue}). */
     private String written(int i) {
         String text = source.text(groups.starts[i], groups.ends[i]);
         Expression tree = groups.trees[i];
         return tree == null ? text
-                : ClockText.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock);
+                : ClockedScene.withValue(text, groups.values[i], tree.usesClock(), expressionNames.clock);
     }
 }

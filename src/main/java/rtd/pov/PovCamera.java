@@ -11,7 +11,7 @@ import rtd.camera.ICamera;
 import rtd.camera.ImageAxes;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
-import rtd.io.ClockFields;
+import rtd.io.ClockedScene.ClockFields;
 import rtd.math.Vector3f;
 
 /**

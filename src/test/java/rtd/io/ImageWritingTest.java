@@ -33,7 +33,7 @@ class ImageWritingTest {
 
     static byte[] encode(Picture picture, String extension) throws IOException {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ImageWriting.write(picture, new ImageFormat(extension), out, fraction -> { });
+        new ImageFormat(extension).write(picture, out, fraction -> { });
         return out.toByteArray();
     }
 
@@ -78,13 +78,13 @@ class ImageWritingTest {
     @Test
     void tellsTheFractionWrittenUpToTheWhole() throws IOException {
         List<Double> fractions = new ArrayList<>();
-        ImageWriting.write(picture(50, 40, 1), ImageFormat.PNG, new ByteArrayOutputStream(), fractions::add);
+        ImageFormat.PNG.write(picture(50, 40, 1), new ByteArrayOutputStream(), fractions::add);
         assertThat(fractions).isNotEmpty().isSorted().last().isEqualTo(1.0);
     }
 
     @Test
     void theWarmUpLoadsTheWriterWithoutError() {
-        assertThat(ImageWriting.warmUp(ImageFormat.PNG, () -> { })).succeedsWithin(java.time.Duration.ofSeconds(30));
+        assertThat(ImageFormat.PNG.warmUp(() -> { })).succeedsWithin(java.time.Duration.ofSeconds(30));
     }
 
     @Test

@@ -29,7 +29,7 @@ class PackedRgbSamplesTest {
     @Test
     void handsOutTheSameSamplesAsTheJdksOwnLayoutForEveryRectangle() {
         DataBufferInt data = randomPixels(7);
-        ImageWriting.PackedRgbSamples ours = new ImageWriting.PackedRgbSamples(WIDTH, HEIGHT);
+        ImageFormat.PackedRgbSamples ours = new ImageFormat.PackedRgbSamples(WIDTH, HEIGHT);
         SinglePixelPackedSampleModel jdks = new SinglePixelPackedSampleModel(DataBuffer.TYPE_INT, WIDTH, HEIGHT,
                 new int[] {0xFF0000, 0xFF00, 0xFF});
         SplittableRandom random = new SplittableRandom(3);
@@ -52,7 +52,7 @@ class PackedRgbSamplesTest {
         int[] rgb = new int[WIDTH * HEIGHT];
         rgb[WIDTH + 2] = 0x123456;
 
-        int[] samples = new ImageWriting.PackedRgbSamples(WIDTH, HEIGHT).getPixels(2, 1, 1, 1, (int[]) null,
+        int[] samples = new ImageFormat.PackedRgbSamples(WIDTH, HEIGHT).getPixels(2, 1, 1, 1, (int[]) null,
                 new DataBufferInt(rgb, rgb.length));
 
         assertThat(samples).containsExactly(0x12, 0x34, 0x56);
@@ -60,7 +60,7 @@ class PackedRgbSamplesTest {
 
     @Test
     void refusesARectangleOutsideThePictureAsTheJdkDoes() {
-        ImageWriting.PackedRgbSamples ours = new ImageWriting.PackedRgbSamples(WIDTH, HEIGHT);
+        ImageFormat.PackedRgbSamples ours = new ImageFormat.PackedRgbSamples(WIDTH, HEIGHT);
         DataBufferInt data = randomPixels(1);
 
         assertThatThrownBy(() -> ours.getPixels(WIDTH - 3, 0, 4, 1, (int[]) null, data))
@@ -69,7 +69,7 @@ class PackedRgbSamplesTest {
 
     @Test
     void aLayoutOfAnotherSizeIsOfTheSameKind() {
-        assertThat(new ImageWriting.PackedRgbSamples(WIDTH, HEIGHT).createCompatibleSampleModel(5, 1))
-                .isInstanceOf(ImageWriting.PackedRgbSamples.class).returns(5, s -> s.getWidth()).returns(1, s -> s.getHeight());
+        assertThat(new ImageFormat.PackedRgbSamples(WIDTH, HEIGHT).createCompatibleSampleModel(5, 1))
+                .isInstanceOf(ImageFormat.PackedRgbSamples.class).returns(5, s -> s.getWidth()).returns(1, s -> s.getHeight());
     }
 }
