@@ -11,11 +11,10 @@ import javax.imageio.stream.ImageOutputStream;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
-import rtd.io.ImageWriting;
 
 /**
  * Where the write phase's time goes: writes one picture several times in one JVM into memory, as
- * rtd writes it ({@link ImageWriting}), and then with no compression at all (the JDK's PNG writer at
+ * rtd writes it ({@link ImageFormat#write}), and then with no compression at all (the JDK's PNG writer at
  * compression quality 1.0, which stores its rows without deflating them). What is left in the
  * second is the writer turning rows into bytes and choosing each row's filter.
  *
@@ -38,7 +37,7 @@ public final class PngWriteTimes {
         for (int k = 1; k <= times; k++) {
             CountingStream out = new CountingStream();
             long start = System.nanoTime();
-            ImageWriting.write(picture, ImageFormat.PNG, out, fraction -> { });
+            ImageFormat.PNG.write(picture, out, fraction -> { });
             report("as rtd writes it", k, start, out.count);
         }
         BufferedImage image = picture.toBufferedImage();
