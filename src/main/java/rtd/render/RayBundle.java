@@ -5,16 +5,12 @@ import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
- * The rays of one small square of pixels, kept as numbers: the origin and direction of ray
- * {@code i} of equation 3.1 at index {@code i}, row by row. Not in the paper:
- * {@link ParallelRenderer} fills one per thread and hands it to a {@link Tracer}, which may use
- * what the rays share (a view grid: the pixels they pass through).
- *
- * <p>The rays are made only when a tracer first asks for their numbers ({@link #make}): a
- * tracer that can tell from the square's pixels that no ray reaches any object never needs
- * them. Numbers, not {@link Ray} objects: a {@code Ray} stored in an array lives on the heap,
- * 48 bytes a pixel; here the camera writes each ray's numbers ({@link ICamera#putRay}, exactly
- * {@link ICamera#generateRay}'s), so no object is made per pixel.
+ * The rays of one small square of pixels, kept as numbers: the origin and direction of ray {@code i} of equation 3.1
+ * at index {@code i}, row by row. {@link ParallelRenderer} fills one per thread and hands it to a {@link Tracer}, which
+ * may use what the rays share (a view grid: the pixels they pass through). The rays are made only when a tracer first
+ * asks for their numbers ({@link #make}), so a tracer that can tell from the pixels that no ray reaches any object
+ * never needs them; as numbers the camera writes ({@link ICamera#putRay}, exactly {@link ICamera#generateRay}'s), not
+ * as a {@link Ray} of 48 bytes on the heap per pixel.
  */
 public final class RayBundle {
 
@@ -40,7 +36,6 @@ public final class RayBundle {
     private float sampleX;
     private float sampleY;
 
-    /** An empty bundle with room for {@code capacity} rays. */
     public RayBundle(int capacity) {
         originX = new float[capacity];
         originY = new float[capacity];
@@ -50,19 +45,12 @@ public final class RayBundle {
         directionZ = new float[capacity];
     }
 
-    /**
-     * Replaces the rays with the camera's rays (Listing 4.1) for the pixels
-     * {@code [left, right) × [top, bottom)} of a {@code width × height} image, row by row; they
-     * are made on first use.
-     */
+    /** The camera's rays (Listing 4.1) of pixels {@code [left, right) × [top, bottom)} of a {@code width × height} image. */
     public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height) {
         fill(camera, left, top, right, bottom, width, height, 0, 0);
     }
 
-    /**
-     * As {@link #fill(ICamera, int, int, int, int, int, int)}, with each ray through the point
-     * {@code (x + sampleX, y + sampleY)} of its pixel instead of the corner (anti-aliasing).
-     */
+    /** As above, each ray through the point {@code (x + sampleX, y + sampleY)} of its pixel (anti-aliasing). */
     public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height, float sampleX,
             float sampleY) {
         this.sampleX = sampleX;
@@ -78,17 +66,20 @@ public final class RayBundle {
         made = false;
     }
 
-    /** Replaces the rays with these (for tests and benchmarks that choose their own rays). */
+    /** These rays, for tests that choose their own. */
     public void fill(Ray... rays) {
         camera = null;
         count = 0;
         for (Ray ray : rays) {
-            store(count++, ray);
+            Vector3f o = ray.origin();
+            Vector3f d = ray.direction();
+            System.arraycopy(new float[] {o.x(), o.y(), o.z(), d.x(), d.y(), d.z()}, 0, numbers, 0, 6);
+            store(count++);
         }
         made = true;
     }
 
-    /** Makes the rays with the camera, if not done yet; call it before reading a ray's numbers. */
+    /** Makes the rays with the camera, if not done yet: before reading a ray's numbers. */
     public void make() {
         if (made) {
             return;
@@ -161,25 +152,11 @@ public final class RayBundle {
         directionZ[i] = numbers[5];
     }
 
-    private void store(int i, Ray ray) {
-        Vector3f origin = ray.origin();
-        Vector3f direction = ray.direction();
-        originX[i] = origin.x();
-        originY[i] = origin.y();
-        originZ[i] = origin.z();
-        directionX[i] = direction.x();
-        directionY[i] = direction.y();
-        directionZ[i] = direction.z();
-    }
-
     public int count() {
         return count;
     }
 
-    /**
-     * Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time: straight from the
-     * camera (it need not be {@linkplain #make made}), or as it was given.
-     */
+    /** Ray {@code i} for tracers that take one ray at a time: straight from the camera (unmade), or as it was given. */
     public Ray ray(int i) {
         if (camera != null && !made) {
             int squareWidth = right - left;
