@@ -7,10 +7,9 @@ import rtd.math.Vector3f;
 import rtd.scene.Scene;
 
 /**
- * The rays of one pixel as data, for drawing them: the camera's ray to its hit, each shadow ray towards its light (to
- * the light if lit, to the object that blocks it if not), and the reflected and refracted rays to their hits, down to
- * the last bounce: the tree {@code --explain} writes out in words (its step 4), from the same observer of the
- * renderer's own shader ({@link ShadingExplanation}), so every point is the picture's.
+ * The rays of one pixel as data, for drawing them: the camera's ray to its hit, each shadow ray to its light if lit or
+ * to its blocker, the reflected and refracted rays to their hits: the tree {@code --explain} writes out in words,
+ * seen by the same observer of the renderer's own shader ({@link ShadingExplanation}), so every point is the picture's.
  *
  * @param segments the rays in the order the shader traces them, the camera's first
  */
@@ -21,8 +20,7 @@ public record RayTree(List<Segment> segments) {
     }
 
     /**
-     * One ray of the tree, from {@code from} to {@code to}; a ray that hits nothing has no end ({@code to} null) and
-     * runs along {@code direction} for ever.
+     * One ray, from {@code from} to {@code to} (null: it hits nothing, and runs along {@code direction} for ever).
      *
      * @param depth 0 for the camera's ray and its shadow rays, 1 for the rays of its first bounce, and so on
      */
@@ -33,10 +31,7 @@ public record RayTree(List<Segment> segments) {
         segments = List.copyOf(segments);
     }
 
-    /**
-     * The tree of pixel (x, y) of a {@code w × h} picture of {@code scene}: with lights, as the shader follows it;
-     * without, the camera's ray alone, as the paper's flat colours need no other.
-     */
+    /** The tree of pixel (x, y) of a {@code w × h} picture: without lights, the camera's ray alone, as flat colours need. */
     public static RayTree of(Scene scene, int x, int y, int w, int h) {
         Ray ray = scene.camera().generateRay(x, y, w, h);
         return new RayTree(scene.lights().isEmpty() ? List.of(segment(Kind.CAMERA, ray, scene.nearestHit(ray), 0))

@@ -119,8 +119,8 @@ final class ShadingExplanation implements ShadingObserver {
             float[] w = triangle.cornerWeights(surface.hit().point());
             text.line("smooth: N = normalize(w1·n1 + w2·n2 + w3·n3), the corners' normals n1 = "
                     + Numbers.of(triangle.cornerNormal(0)) + ", n2 = " + Numbers.of(triangle.cornerNormal(1)) + ", n3 = "
-                    + Numbers.of(triangle.cornerNormal(2)) + " by P's weights (the area across from each corner) w = ("
-                    + Numbers.of(w[0]) + "|" + Numbers.of(w[1]) + "|" + Numbers.of(w[2]) + ")");
+                    + Numbers.of(triangle.cornerNormal(2)) + " by P's weights (the area across from each corner) w = "
+                    + Numbers.of(w[0], w[1], w[2]));
         }
         text.line("N = " + Numbers.of(surface.normal()) + (surface.inside() ? turned : "")
                 + ", E = −R/|R| = " + Numbers.of(surface.eye()) + ", over = P + ε·N = " + Numbers.of(surface.over()));

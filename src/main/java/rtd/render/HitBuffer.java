@@ -68,10 +68,7 @@ public final class HitBuffer {
         pending = count;
     }
 
-    /**
-     * Whether a tracer said at once that no ray of the bundle hit anything ({@link #setMisses}); {@code false} does not
-     * say that one hit. A shader may then colour the whole bundle at once.
-     */
+    /** Whether a tracer said at once that no ray hit anything ({@link #setMisses}); {@code false} says nothing. */
     public boolean missedAll() {
         return missedAll;
     }
@@ -92,12 +89,6 @@ public final class HitBuffer {
     public int index(int i) {
         writePending();
         return index[i];
-    }
-
-    /** The t of ray {@code i}'s hit, NaN if none. */
-    public float t(int i) {
-        writePending();
-        return t[i];
     }
 
     /** The distance {@code |P − O|} of ray {@code i}'s hit, infinite if none. */

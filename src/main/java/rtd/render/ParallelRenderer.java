@@ -178,11 +178,8 @@ public final class ParallelRenderer {
 
     /** Runs the workers, the first on the calling thread, and rethrows what any threw. */
     private static void runAll(List<Runnable> workers) {
-        if (workers.size() == 1) {
-            workers.get(0).run();
-            return;
-        }
-        ExecutorService pool = Executors.newFixedThreadPool(workers.size() - 1, runnable -> {
+        // a thread is made at a worker's submission only: none for a single worker
+        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, workers.size() - 1), runnable -> {
             Thread thread = new Thread(runnable, "rtd-render");
             thread.setDaemon(true);
             return thread;
