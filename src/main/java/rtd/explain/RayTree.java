@@ -31,7 +31,7 @@ public record RayTree(List<Segment> segments) {
         segments = List.copyOf(segments);
     }
 
-    /** The tree of pixel (x, y) of a {@code w × h} picture: without lights, the camera's ray alone, as flat colours need. */
+    /** The tree of pixel (x, y) of a {@code w × h} picture; without lights, the camera's ray alone. */
     public static RayTree of(Scene scene, int x, int y, int w, int h) {
         Ray ray = scene.camera().generateRay(x, y, w, h);
         return new RayTree(scene.lights().isEmpty() ? List.of(segment(Kind.CAMERA, ray, scene.nearestHit(ray), 0))

@@ -67,7 +67,7 @@ final class ShadingExplanation implements ShadingObserver {
         this.text = text;
     }
 
-    /** The rays the shader follows for {@code ray} in {@code scene}, in the order it traces them, the camera's first. */
+    /** The rays the shader follows for {@code ray} in {@code scene}, in the order it traces them. */
     static List<Segment> rays(Scene scene, Ray ray) {
         ShadingExplanation tree = new ShadingExplanation(new Text());
         tree.shade(scene, ray);

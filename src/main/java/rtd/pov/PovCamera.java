@@ -18,7 +18,7 @@ import rtd.math.Vector3f;
  * rtd's camera in POV-Ray's words: explicit vectors, POV-Ray's {@code right} along rtd's u and its {@code up} against
  * rtd's v, so no handedness rule of POV-Ray's {@code look_at} applies, shifted from POV-Ray's pixel centres to rtd's
  * corners. A camera whose numbers use the clock has its position and view direction (or the point it looks at)
- * declared from their expressions, and its axes worked out from them as rtd's are ({@code u = normalize(dir × (0,1,0))},
+ * declared from their expressions, and its axes worked out as rtd's are ({@code u = normalize(dir × (0,1,0))},
  * {@code v = normalize(dir × u)}, Listing 4.1).
  */
 final class PovCamera {
@@ -29,7 +29,7 @@ final class PovCamera {
     /**
      * The camera, shifted from pixel centres to rtd's corners: {@code x' = x − ⌊w/2⌋} against POV-Ray's
      * {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w). A camera that looks at a point
-     * gets POV-Ray's {@code look_at}: the orthographic one last, which gives the same vectors again, the perspective one
+     * gets POV-Ray's {@code look_at}: the orthographic one last, giving the same vectors again, the perspective one
      * as a comment, since there it would undo the shift.
      */
     static String of(ICamera camera, int w, int h) {

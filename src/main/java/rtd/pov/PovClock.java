@@ -37,10 +37,10 @@ import rtd.scene.Scene;
  * The writer of each shape, light and colour of {@link PovScene}, and of an animated scene's numbers that use the clock
  * as POV-Ray expressions of its own {@code clock} (Part III, "Frames on the command line"), so that one file draws
  * every frame: each such number as its expression ({@link PovExpression}), each other as the number rtd holds, and
- * what rtd works out from them worked out alike in POV-Ray (a colour rounded ½ up to whole 255ths, a plane's unit normal
- * and distance, a box's smaller and larger corners, the camera's axes and half-pixel shift). It writes the cameras,
- * {@code ambient}, point lights and every shape but a mesh's; {@link #whyNot} tells what else keeps an animation to be
- * written frame by frame.
+ * what rtd works out from them worked out alike in POV-Ray (a colour rounded ½ up to whole 255ths, a plane's unit
+ * normal and distance, a box's smaller and larger corners, the camera's axes and half-pixel shift). It writes the
+ * cameras, {@code ambient}, point lights and every shape but a mesh's; {@link #whyNot} tells what else keeps an
+ * animation to be written frame by frame.
  */
 public final class PovClock {
 
@@ -74,8 +74,8 @@ public final class PovClock {
 
     /**
      * Why {@code clocked} cannot be written as one POV-Ray file that follows the clock, or null if it can;
-     * {@code cameras}, the camera at every frame, must have image axes that POV-Ray's {@code vcross} gives (rtd's camera
-     * looking straight up or down takes x as its right axis).
+     * {@code cameras}, the camera at every frame, must have image axes that POV-Ray's {@code vcross} gives (rtd's
+     * camera looking straight up or down takes x as its right axis).
      */
     public static String whyNot(ClockedScene clocked, List<ICamera> cameras) {
         List<String> reasons = new ArrayList<>(clocked.unwritten());
@@ -131,7 +131,8 @@ public final class PovClock {
 
     /** The camera, if a number of its statement uses the clock; else null. */
     String camera(ICamera camera, int w, int h) {
-        return clocked == null || clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
+        ClockFields f = clocked == null ? ClockFields.NONE : clocked.camera();
+        return f.isEmpty() ? null : PovCamera.withClock(f, camera, w, h);
     }
 
     /** A point light; {@code f} its numbers that use the clock, or null for a still (its vectors in double). */

@@ -15,11 +15,11 @@ import rtd.image.Rgb;
 import rtd.image.Picture;
 
 /**
- * Listing 4.2 on all cores: the same ray per pixel as {@link rtd.scene.Scene#render}, bands of {@value #TILE} rows shared
- * out among threads; a {@link Tracer} finds each ray's nearest hit, a {@link Shader} turns it into a colour. Every pixel
- * depends only on its own rays, so the picture is the same for any number of threads. A thread takes the next band not
- * yet taken (a slow band holds no other back) and hands its tracer one {@value #TILE} × {@value #TILE} square of
- * pixels at a time, whose neighbouring rays a tracer may trace together.
+ * Listing 4.2 on all cores: the same ray per pixel as {@link rtd.scene.Scene#render}, bands of {@value #TILE} rows
+ * shared out among threads; a {@link Tracer} finds each ray's nearest hit, a {@link Shader} turns it into a colour.
+ * Every pixel depends only on its own rays, so the picture is the same for any number of threads. A thread takes the
+ * next band not yet taken (a slow band holds no other back) and hands its tracer one {@value #TILE} × {@value #TILE}
+ * square of pixels at a time, whose neighbouring rays a tracer may trace together.
  */
 public final class ParallelRenderer {
 

@@ -9,7 +9,7 @@ import rtd.image.Rgb;
  */
 public interface Shader {
 
-    /** Ray {@code i}'s colour as light (channels from 0 to 1, or beyond), its nearest hit entry {@code i} of {@code hits}. */
+    /** Ray {@code i}'s colour as light (channels from 0 to 1, or beyond), its nearest hit in {@code hits}. */
     Rgb colour(RayBundle rays, HitBuffer hits, int i);
 
     /** {@link #colour} as the picture stores it, {@code 0xRRGGBB}: clamped and rounded ({@link Rgb#toColor}). */
@@ -17,7 +17,7 @@ public interface Shader {
         return colour(rays, hits, i).toColor().getRGB();
     }
 
-    /** {@link #rgb} of rays 0 to {@code count − 1}; a bundle whose rays all missed ({@link HitBuffer#missedAll}) at once. */
+    /** {@link #rgb} of rays 0 to {@code count − 1}; may colour at once a bundle that {@link HitBuffer#missedAll}. */
     default void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
         for (int i = 0; i < count; i++) {
             rgb[i] = rgb(rays, hits, i);

@@ -35,7 +35,7 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
         return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary, 1), answeredBy);
     }
 
-    /** This work, all its rays answered by {@code structure}: a tracer labels its own work so, before adding another's. */
+    /** This work, all its rays answered by {@code structure}: a tracer labels its own so, before adding another's. */
     public WorkCount answeredBy(String structure) {
         return new WorkCount(rays, testsByKind, nodesVisited, secondaryRays, Map.of(structure, rays));
     }
