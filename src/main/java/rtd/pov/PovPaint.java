@@ -2,6 +2,7 @@ package rtd.pov;
 
 import static rtd.pov.PovNumbers.num;
 
+import java.util.stream.Stream;
 import rtd.geometry.BoundingBox;
 import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
@@ -93,13 +94,10 @@ final class PovPaint {
     /** The largest coordinate of the shape's box (or of a plane's point): how large its ε is. */
     private static double largest(IGeometry shape) {
         BoundingBox box = shape.bounds();
-        Vector3f[] corners = shape instanceof Plane plane ? new Vector3f[] {plane.point()}
-                : box.isBounded() ? new Vector3f[] {box.min(), box.max()} : new Vector3f[0];
-        double largest = 0;
-        for (Vector3f c : corners) {
-            largest = Math.max(largest, Math.max(Math.abs(c.x()), Math.max(Math.abs(c.y()), Math.abs(c.z()))));
-        }
-        return largest;
+        Stream<Vector3f> corners = shape instanceof Plane plane ? Stream.of(plane.point())
+                : box.isBounded() ? Stream.of(box.min(), box.max()) : Stream.empty();
+        return corners.mapToDouble(c -> Math.max(Math.abs(c.x()), Math.max(Math.abs(c.y()), Math.abs(c.z())))).max()
+                .orElse(0);
     }
 
     private static String colour(int r, int g, int b, float filter) {
