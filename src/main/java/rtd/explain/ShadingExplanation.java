@@ -170,9 +170,7 @@ final class ShadingExplanation implements ShadingObserver {
         text.out();
     }
 
-    /**
-     * One sample of an area light: the first opens its lines, each of at most 16 has a line, the last counts the lit.
-     */
+    /** One sample of an area light: the first opens its lines, each of at most 16 has one, the last counts the lit. */
     private void areaSample(Light light, boolean shadowed, LightTerms terms) {
         AreaLight area = light.area();
         if (samplesSeen == 0) {
@@ -229,7 +227,6 @@ final class ShadingExplanation implements ShadingObserver {
         text.line("refraction: none, total internal reflection (black): " + snellNumbers(snell) + " > 1");
     }
 
-    /** Snell's numbers: n1/n2, cos θi and sin²θt. */
     private static String snellNumbers(Snell snell) {
         return "n = n1/n2 = " + Numbers.of(snell.from()) + "/" + Numbers.of(snell.to()) + ", cos θi = E·N = "
                 + Numbers.of(snell.cosIncidence()) + ", sin²θt = n²(1 − cos²θi) = " + Numbers.of(snell.sin2Transmitted());
@@ -258,10 +255,7 @@ final class ShadingExplanation implements ShadingObserver {
         }
     }
 
-    /**
-     * Step 6's sum, as the shader adds it: the surface, the reflection times reflective, the refraction times
-     * transparency, these two times R and 1 − R where Schlick mixes them; first in words, then in numbers.
-     */
+    /** Step 6's sum as the shader adds it (R and 1 − R where Schlick mixes), first in words, then in numbers. */
     private static String sum(Frame frame) {
         if (frame.reflection == null && frame.refraction == null) {
             return "surface (the lights' terms summed)";
