@@ -74,10 +74,11 @@ public final class ViewGridTracer implements Tracer {
             return;
         }
         bundle.make();
-        int squareWidth = bundle.right() - bundle.left();
+        RayBundle.Pixels pixels = bundle.pixels();
+        int squareWidth = pixels.right() - pixels.left();
         int[] cellStart = grid.cellStart;
         for (int i = 0; i < bundle.count(); i++) {
-            int cell = grid.cellOf(bundle.left() + i % squareWidth, bundle.top() + i / squareWidth);
+            int cell = grid.cellOf(pixels.left() + i % squareWidth, pixels.top() + i / squareWidth);
             rays++;
             long before = hit.testsRun();
             hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
@@ -95,7 +96,8 @@ public final class ViewGridTracer implements Tracer {
         if (!serves(bundle)) {
             return others != null && others.traceAtOnce(bundle, hits);
         }
-        if (objects.unbounded.length > 0 || !grid.emptyOver(bundle.left(), bundle.top(), bundle.right(), bundle.bottom())) {
+        RayBundle.Pixels p = bundle.pixels();
+        if (objects.unbounded.length > 0 || !grid.emptyOver(p.left(), p.top(), p.right(), p.bottom())) {
             return false;
         }
         rays += bundle.count();
@@ -108,11 +110,12 @@ public final class ViewGridTracer implements Tracer {
      * through points of their pixels the grid allows for.
      */
     private boolean serves(RayBundle bundle) {
-        return bundle.camera() == grid.camera && bundle.width() == grid.width && bundle.height() == grid.height
-                && bundle.left() >= 0 && bundle.top() >= 0 && bundle.right() <= grid.width
-                && bundle.bottom() <= grid.height
-                && bundle.sampleX() >= 0 && bundle.sampleX() <= grid.latestOffset
-                && bundle.sampleY() >= 0 && bundle.sampleY() <= grid.latestOffset;
+        RayBundle.Pixels p = bundle.pixels();
+        return p != null && p.camera() == grid.camera && p.width() == grid.width && p.height() == grid.height
+                && p.left() >= 0 && p.top() >= 0 && p.right() <= grid.width
+                && p.bottom() <= grid.height
+                && p.sampleX() >= 0 && p.sampleX() <= grid.latestOffset
+                && p.sampleY() >= 0 && p.sampleY() <= grid.latestOffset;
     }
 
     @Override

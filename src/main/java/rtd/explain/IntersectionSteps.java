@@ -1,5 +1,7 @@
 package rtd.explain;
 
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
 import rtd.geometry.Box;
 import rtd.geometry.Cone;
 import rtd.geometry.Cylinder;
@@ -12,14 +14,13 @@ import rtd.geometry.Transformed;
 import rtd.geometry.Triangle;
 import rtd.math.Matrix4;
 import rtd.math.Ray;
-import rtd.math.Vector3f;
 
 /**
  * Step 2 of an explanation for one object (section 3.2.2): the object's own intersection test, run with this observer,
  * which writes each number the test tells as it computes it: a sphere's (equations 3.5 to 3.8), a plane's, a triangle's
- * plane and edges, a box's slabs near to far, a cylinder's or a cone's side and caps (Part III, "More shapes"), and for
- * a transformed object the ray taken into the shape's space ({@code M⁻¹O + t·M⁻¹R}, <i>The Ray Tracer Challenge</i>,
- * chapters 4 and 14) before the shape's own test. A kind of object it does not know shows only its test's answer.
+ * plane and edges, a box's slabs, a cylinder's or a cone's side and caps (Part III, "More shapes"), and for a
+ * transformed object the ray in the shape's space ({@code M⁻¹O + t·M⁻¹R}, <i>The Ray Tracer Challenge</i>, chapters 4
+ * and 14). A kind of object it does not know shows only its test's answer.
  */
 final class IntersectionSteps implements TestObserver {
 
@@ -34,7 +35,7 @@ final class IntersectionSteps implements TestObserver {
     /** The shape whose test is told: the object, or once the ray is in its space, the shape it transforms. */
     private IGeometry shape;
     private boolean known;
-    /** The transformations the ray has been taken through: each indents the steps of what it holds. */
+    /** The transformations the ray has been taken through, each indenting the steps of what it holds. */
     private int transforms;
     private float discriminant;
     private float enter = Float.NaN;
@@ -132,20 +133,16 @@ final class IntersectionSteps implements TestObserver {
 
     /** The matrix row by row, each entry to 6 decimals at most: [a b c d; …]. */
     static String matrix(Matrix4 m) {
-        StringBuilder text = new StringBuilder("[");
-        for (int row = 0; row < 3; row++) {
-            for (int col = 0; col < 4; col++) {
-                double v = Math.round(m.get(row, col) * 1e6) / 1e6;
-                text.append(col > 0 ? " " : row > 0 ? "; " : "").append(Numbers.of((float) (v == 0 ? 0 : v)));
-            }
-        }
-        return text.append("; 0 0 0 1]").toString();
+        return "[" + IntStream.range(0, 3).mapToObj(row -> IntStream.range(0, 4).mapToObj(col -> {
+            double v = Math.round(m.get(row, col) * 1e6) / 1e6;
+            return Numbers.of((float) (v == 0 ? 0 : v));
+        }).collect(Collectors.joining(" "))).collect(Collectors.joining("; ")) + "; 0 0 0 1]";
     }
 
     @Override
     public void sphere(float cx, float cy, float cz, float a, float b, float c, float discriminant) {
         this.discriminant = discriminant;
-        text.line("O − M = " + Numbers.of(new Vector3f(cx, cy, cz)));
+        text.line("O − M = " + Numbers.of(cx, cy, cz));
         text.line("a = R·R = " + Numbers.of(a) + "   (equation 3.6)");
         text.line("b = 2·R·(O − M) = " + Numbers.of(b) + "   (equation 3.7)");
         text.line("c = (O − M)·(O − M) − r² = " + Numbers.of(c) + "   (equation 3.8)");
@@ -194,7 +191,7 @@ final class IntersectionSteps implements TestObserver {
     @Override
     public void trianglePoint(float px, float py, float pz, float loose, boolean nearTheCorners) {
         pointFound = nearTheCorners;
-        text.line("P = O + t·R = " + Numbers.of(new Vector3f(px, py, pz)));
+        text.line("P = O + t·R = " + Numbers.of(px, py, pz));
         text.line("rounding allowed for P and t: " + Numbers.of(loose) + " (so that a ray through an edge two"
                 + " triangles share hits one of them)");
         if (!nearTheCorners) {

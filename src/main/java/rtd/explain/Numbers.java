@@ -31,12 +31,16 @@ final class Numbers {
     }
 
     static String of(Vector3f v) {
-        return "(" + of(v.x()) + "|" + of(v.y()) + "|" + of(v.z()) + ")";
+        return of(v.x(), v.y(), v.z());
     }
 
     /** A colour as light, {@code (r|g|b)} from 0 to 1. */
     static String of(Rgb c) {
-        return "(" + of(c.red()) + "|" + of(c.green()) + "|" + of(c.blue()) + ")";
+        return of(c.red(), c.green(), c.blue());
+    }
+
+    static String of(float x, float y, float z) {
+        return "(" + of(x) + "|" + of(y) + "|" + of(z) + ")";
     }
 
     static String of(Color c) {

@@ -12,13 +12,9 @@ import rtd.scene.Scene;
 /**
  * What rtd does for one pixel, in the paper's terms and order ({@code --explain X,Y}): ray generation (section 3.2.1,
  * Listing 4.1), the intersection test with every object in file order (section 3.2.2; spelt out for the first
- * {@value #LISTED} objects and every object the ray hits, the other misses counted), the depth test (section 3.2.3,
- * Listing 4.3) and the pixel's colour.
- *
- * <p>Every number is the renderer's own: each object's test tells its numbers as it computes them
- * ({@link rtd.geometry.TestObserver}), and the depth test is {@link DepthTest}, as in {@link Scene#nearestHit}: the
- * explanation of a pixel agrees with its colour in the picture. A scene with lights adds the tree of its shading
- * ({@link ShadingExplanation}).
+ * {@value #LISTED} objects and every object the ray hits), the depth test (section 3.2.3, Listing 4.3) and the colour,
+ * or with lights the tree of its shading. Every number is the renderer's own, told by each object's test as it
+ * computes it ({@link rtd.geometry.TestObserver}), and the depth test is {@link Scene#nearestHit}'s {@link DepthTest}.
  */
 public final class PixelExplanation {
 
@@ -28,7 +24,6 @@ public final class PixelExplanation {
     private PixelExplanation() {
     }
 
-    /** The explanation of pixel (x, y) of a {@code w × h} picture of {@code scene}. */
     public static String of(Scene scene, int x, int y, int w, int h) {
         Text text = new Text();
         Ray ray = scene.camera().generateRay(x, y, w, h);

@@ -1,10 +1,14 @@
 package rtd.explain;
 
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Deque;
 import java.util.IdentityHashMap;
+import java.util.List;
 import java.util.Set;
+import rtd.explain.RayTree.Kind;
+import rtd.explain.RayTree.Segment;
 import rtd.geometry.Hit;
 import rtd.geometry.Material;
 import rtd.geometry.PatternObserver;
@@ -22,20 +26,18 @@ import rtd.shade.Surface;
 import rtd.shade.WhittedShader;
 
 /**
- * Step 4 of an explanation for a scene with lights (Part II, "Light"; not in the paper, which stops at flat colours):
- * the tree of what {@link WhittedShader} computes for the camera's ray, each light's ambient, diffuse and specular
- * terms, the shadow ray's verdict, and the reflected and refracted rays, indented, down to the last bounce.
- *
- * <p>It watches the renderer's own shader ({@link ShadingObserver}) with the paper's loop as its tracer, so every
- * number is the picture's.
+ * Step 4 of an explanation for a scene with lights (Part II, "Light"; beyond the paper's flat colours): the tree of
+ * what {@link WhittedShader} computes for the camera's ray, each light's ambient, diffuse and specular terms, the
+ * shadow ray's verdict, and the reflected and refracted rays, indented, down to the last bounce; and the same tree as
+ * the {@link RayTree} of its rays. It watches the renderer's own shader ({@link ShadingObserver}) with the paper's
+ * loop as its tracer, so every number and point is the picture's.
  */
 final class ShadingExplanation implements ShadingObserver {
 
     /**
-     * What the tree knows of one open ray: its finish (null: it hit nothing), whether its surface has a back (no
-     * solid), what was said, and the parts of its colour (step 6's sum) as they come: the lights' terms summed, what
-     * the reflected and refracted rays see (null: none), which of the two the next closed ray is, and Schlick's
-     * reflectance where it mixes them (NaN otherwise).
+     * One open ray: its finish (null: it hit nothing), whether its surface has a back, what was said, and the parts of
+     * its colour (step 6's sum) as they come: the lights' terms, what the reflected and refracted rays see (null:
+     * none), which of the two the next ray is, and Schlick's reflectance where it mixes them (NaN otherwise).
      */
     private static final class Frame {
         Material material;
@@ -51,6 +53,7 @@ final class ShadingExplanation implements ShadingObserver {
 
     private final Text text;
     private final Deque<Frame> open = new ArrayDeque<>();
+    private final List<Segment> segments = new ArrayList<>();
     private Ray shadowRay;
     private Hit blocker;
     private float lightDistance;
@@ -64,6 +67,17 @@ final class ShadingExplanation implements ShadingObserver {
         this.text = text;
     }
 
+    /** The rays the shader follows for {@code ray} in {@code scene}, in the order it traces them. */
+    static List<Segment> rays(Scene scene, Ray ray) {
+        ShadingExplanation tree = new ShadingExplanation(new Text());
+        tree.shade(scene, ray);
+        return tree.segments;
+    }
+
+    private Rgb shade(Scene scene, Ray ray) {
+        return new WhittedShader(scene, new LinearTracer(scene), this).colourAt(ray, WhittedShader.BOUNCES);
+    }
+
     /** Writes the shading of {@code ray} in {@code scene} into {@code text}, ending with the pixel's colour. */
     static void explain(Text text, Scene scene, Ray ray) {
         text.line("4. Result, shaded (beyond the paper, which stops at flat colours: WhittedShader.shade)").in();
@@ -72,14 +86,16 @@ final class ShadingExplanation implements ShadingObserver {
         text.line(lights + " light" + (lights == 1 ? "" : "s") + (lights == scene.lights().size() ? ""
                 : " (" + scene.lights().size() + " point lights: each area light is its samples)") + ", at most "
                 + WhittedShader.BOUNCES + " bounces; the camera's ray:");
-        ShadingExplanation tree = new ShadingExplanation(text);
-        Rgb colour = new WhittedShader(scene, new LinearTracer(scene), tree).colourAt(ray, WhittedShader.BOUNCES);
+        Rgb colour = new ShadingExplanation(text).shade(scene, ray);
         text.line("pixel colour: each channel clamped to [0, 1], then floor(255·c + ½): " + Numbers.rgb(colour.toColor()));
         text.out();
     }
 
     @Override
     public void ray(Ray ray, Hit hit, int remaining) {
+        Frame parent = open.peek();
+        Kind kind = parent == null ? Kind.CAMERA : parent.childIsReflection ? Kind.REFLECTED : Kind.REFRACTED;
+        segments.add(RayTree.segment(kind, ray, hit, open.size()));
         Frame frame = new Frame();
         open.push(frame);
         text.in().line("ray O = " + Numbers.of(ray.origin()) + ", R = " + Numbers.of(ray.direction()) + ", " + remaining
@@ -103,8 +119,8 @@ final class ShadingExplanation implements ShadingObserver {
             float[] w = triangle.cornerWeights(surface.hit().point());
             text.line("smooth: N = normalize(w1·n1 + w2·n2 + w3·n3), the corners' normals n1 = "
                     + Numbers.of(triangle.cornerNormal(0)) + ", n2 = " + Numbers.of(triangle.cornerNormal(1)) + ", n3 = "
-                    + Numbers.of(triangle.cornerNormal(2)) + " by P's weights (the area across from each corner) w = ("
-                    + Numbers.of(w[0]) + "|" + Numbers.of(w[1]) + "|" + Numbers.of(w[2]) + ")");
+                    + Numbers.of(triangle.cornerNormal(2)) + " by P's weights (the area across from each corner) w = "
+                    + Numbers.of(w[0], w[1], w[2]));
         }
         text.line("N = " + Numbers.of(surface.normal()) + (surface.inside() ? turned : "")
                 + ", E = −R/|R| = " + Numbers.of(surface.eye()) + ", over = P + ε·N = " + Numbers.of(surface.over()));
@@ -130,6 +146,9 @@ final class ShadingExplanation implements ShadingObserver {
     public void light(Light light, boolean shadowed, LightTerms terms) {
         Frame frame = open.peek();
         frame.surface = frame.surface.plus(terms.sum());
+        // while explaining, the shader sends a shadow ray towards every light
+        segments.add(new Segment(shadowed ? Kind.SHADOW_BLOCKED : Kind.SHADOW_LIT, shadowRay.origin(),
+                shadowed ? blocker.point() : light.position(), shadowRay.direction(), open.size() - 1));
         if (light.area() != null) {
             areaSample(light, shadowed, terms);
             return;
@@ -151,9 +170,7 @@ final class ShadingExplanation implements ShadingObserver {
         text.out();
     }
 
-    /**
-     * One sample of an area light: the first opens its lines, each of at most 16 has a line, the last counts the lit.
-     */
+    /** One sample of an area light: the first opens its lines, each of at most 16 has one, the last counts the lit. */
     private void areaSample(Light light, boolean shadowed, LightTerms terms) {
         AreaLight area = light.area();
         if (samplesSeen == 0) {
@@ -210,7 +227,6 @@ final class ShadingExplanation implements ShadingObserver {
         text.line("refraction: none, total internal reflection (black): " + snellNumbers(snell) + " > 1");
     }
 
-    /** Snell's numbers: n1/n2, cos θi and sin²θt. */
     private static String snellNumbers(Snell snell) {
         return "n = n1/n2 = " + Numbers.of(snell.from()) + "/" + Numbers.of(snell.to()) + ", cos θi = E·N = "
                 + Numbers.of(snell.cosIncidence()) + ", sin²θt = n²(1 − cos²θi) = " + Numbers.of(snell.sin2Transmitted());
@@ -239,10 +255,7 @@ final class ShadingExplanation implements ShadingObserver {
         }
     }
 
-    /**
-     * Step 6's sum, as the shader adds it: the surface, the reflection times reflective, the refraction times
-     * transparency, these two times R and 1 − R where Schlick mixes them; first in words, then in numbers.
-     */
+    /** Step 6's sum as the shader adds it (R and 1 − R where Schlick mixes), first in words, then in numbers. */
     private static String sum(Frame frame) {
         if (frame.reflection == null && frame.refraction == null) {
             return "surface (the lights' terms summed)";

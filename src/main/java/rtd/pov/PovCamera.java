@@ -16,10 +16,10 @@ import rtd.math.Vector3f;
 
 /**
  * rtd's camera in POV-Ray's words: explicit vectors, POV-Ray's {@code right} along rtd's u and its {@code up} against
- * rtd's v, shifted from POV-Ray's pixel centres to rtd's corners ({@link PovScene} tells why). A camera whose numbers
- * use the clock has its position and view direction (or the point it looks at) declared from their expressions, and the
- * image's axes worked out from them in POV-Ray as rtd's camera works them out ({@code u = normalize(dir × (0,1,0))},
- * {@code v = normalize(dir × u)}, Listing 4.1), then the same shift.
+ * rtd's v, so no handedness rule of POV-Ray's {@code look_at} applies, shifted from POV-Ray's pixel centres to rtd's
+ * corners. A camera whose numbers use the clock has its position and view direction (or the point it looks at)
+ * declared from their expressions, and its axes worked out as rtd's are ({@code u = normalize(dir × (0,1,0))},
+ * {@code v = normalize(dir × u)}, Listing 4.1).
  */
 final class PovCamera {
 
@@ -28,7 +28,9 @@ final class PovCamera {
 
     /**
      * The camera, shifted from pixel centres to rtd's corners: {@code x' = x − ⌊w/2⌋} against POV-Ray's
-     * {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w).
+     * {@code x + ½ − w/2}, a shift of {@code w/2 − ⌊w/2⌋ − ½} pixels (−½ for even w). A camera that looks at a point
+     * gets POV-Ray's {@code look_at}: the orthographic one last, giving the same vectors again, the perspective one
+     * as a comment, since there it would undo the shift.
      */
     static String of(ICamera camera, int w, int h) {
         double shiftX = w / 2.0 - w / 2 - 0.5;
@@ -56,7 +58,7 @@ final class PovCamera {
                 + "\n  up " + vector(times(d(perspective.heightVector()), -h)) + "\n}\n";
     }
 
-    /** The declarations and the camera; {@code camera} is the camera at the reading's clock, for its kind and its fixed numbers. */
+    /** The declarations and the camera; {@code camera} is the camera at the reading's clock, for its fixed numbers. */
     static String withClock(ClockFields f, ICamera camera, int w, int h) {
         String shiftX = factor(w / 2.0 - w / 2 - 0.5);
         String shiftY = factor(h / 2.0 - h / 2 - 0.5);
@@ -75,7 +77,7 @@ final class PovCamera {
                 + "\n  right Rtd_right * " + w + "\n  up Rtd_down * " + factor(-h) + "\n}\n";
     }
 
-    /** The camera's position, view direction and image axes u (right) and v (down), declared for POV-Ray's clock. */
+    /** The camera's position, view direction and image axes u (right) and v (down), declared. */
     private static String axes(ClockFields f, Vector3f position, Vector3f direction, Vector3f target) {
         String view = target != null ? PovClock.vector(f, "view direction", target) + " - Rtd_position"
                 : PovClock.vector(f, "view direction", direction);

@@ -8,6 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
 import java.util.stream.Stream;
 import rtd.camera.ICamera;
 import rtd.camera.ImageAxes;
@@ -32,16 +34,13 @@ import rtd.scene.Light;
 import rtd.scene.Scene;
 
 /**
- * The numbers of an animated scene that use the clock, written as POV-Ray expressions of POV-Ray's own {@code clock}
- * (Part III, "Frames on the command line"), so that one POV-Ray file draws every frame. Each number that uses the clock
- * is written as its expression ({@link PovExpression}); each that does not, as the number rtd holds. What rtd works out
- * from the numbers is worked out the same way in POV-Ray: a colour expression rounded ½ up to a whole number of 255ths,
- * a plane's unit normal and distance, a box's smaller and larger corners, the camera's image axes and its half-pixel
- * shift (as {@link PovScene} writes them).
- *
- * <p>It writes the cameras, {@code ambient}, point lights and every shape but a mesh's; a pattern on a shape whose
- * numbers use the clock, and everything that {@link ClockedScene#unwritten} lists, it does not: {@link #whyNot} tells,
- * and such an animation is written frame by frame.
+ * The writer of each shape, light and colour of {@link PovScene}, and of an animated scene's numbers that use the clock
+ * as POV-Ray expressions of its own {@code clock} (Part III, "Frames on the command line"), so that one file draws
+ * every frame: each such number as its expression ({@link PovExpression}), each other as the number rtd holds, and
+ * what rtd works out from them worked out alike in POV-Ray (a colour rounded ½ up to whole 255ths, a plane's unit
+ * normal and distance, a box's smaller and larger corners, the camera's axes and half-pixel shift). It writes the
+ * cameras, {@code ambient}, point lights and every shape but a mesh's; {@link #whyNot} tells what else keeps an
+ * animation to be written frame by frame.
  */
 public final class PovClock {
 
@@ -57,16 +56,16 @@ public final class PovClock {
             "camera", Set.of("position", "view direction", "field of view", "zoom"),
             "ambient", Set.of("colour"));
 
+    /** A still: no number uses the clock. */
+    static final PovClock STILL = new PovClock(null);
+
     private final ClockedScene clocked;
 
     PovClock(ClockedScene clocked) {
         this.clocked = clocked;
     }
 
-    /**
-     * The {@code #declare} of each {@code let} name that a number using the clock uses
-     * ({@link PovExpression#declarations}), to stand before the camera.
-     */
+    /** The {@code #declare} of each {@code let} name that a number using the clock uses, to stand before the camera. */
     String declarations() {
         Stream<ClockFields> parts = Stream.concat(Stream.of(clocked.ambient(), clocked.camera()),
                 Stream.concat(clocked.scene().lights().stream(), clocked.scene().objects().stream()).map(clocked::of));
@@ -74,9 +73,9 @@ public final class PovClock {
     }
 
     /**
-     * Why {@code clocked} cannot be written as one POV-Ray file that follows the clock, or null if it can:
-     * {@code cameras} are the scene's camera at every frame's clock, which must each have image axes that POV-Ray's
-     * {@code vcross} gives (rtd's camera looking straight up or down takes x as its right axis).
+     * Why {@code clocked} cannot be written as one POV-Ray file that follows the clock, or null if it can;
+     * {@code cameras}, the camera at every frame, must have image axes that POV-Ray's {@code vcross} gives (rtd's
+     * camera looking straight up or down takes x as its right axis).
      */
     public static String whyNot(ClockedScene clocked, List<ICamera> cameras) {
         List<String> reasons = new ArrayList<>(clocked.unwritten());
@@ -111,39 +110,32 @@ public final class PovClock {
         return camera instanceof PerspectiveCamera p ? p.direction() : ((OrthographicCamera) camera).direction();
     }
 
+    /** The numbers of {@code part}'s statement that use the clock; null for a still. */
     ClockFields of(Object part) {
-        return clocked.of(part);
+        return clocked == null ? null : clocked.of(part);
     }
 
     ClockFields ambient() {
-        return clocked.ambient();
+        return clocked == null ? null : clocked.ambient();
     }
 
     /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene; null if none uses the clock. */
     String lightSum(List<Light> lights) {
-        if (lights.stream().noneMatch(light -> clocked.of(light).has("intensity"))) {
+        if (clocked == null || lights.stream().noneMatch(light -> clocked.of(light).has("intensity"))) {
             return null; // the sum as rtd adds it, in float
         }
-        StringBuilder[] sums = {new StringBuilder(), new StringBuilder(), new StringBuilder()};
-        for (Light light : lights) {
-            Rgb intensity = light.intensity();
-            float[] channels = {intensity.red(), intensity.green(), intensity.blue()};
-            for (int k = 0; k < 3; k++) {
-                sums[k].append(sums[k].length() > 0 ? " + " : "").append(channel(clocked.of(light), "intensity", k, channels[k]));
-            }
-        }
-        return "rgb <" + sums[0] + ", " + sums[1] + ", " + sums[2] + ">";
+        return "rgb <" + IntStream.range(0, 3).mapToObj(k -> lights.stream()
+                .map(light -> channel(clocked.of(light), "intensity", k, part(light.intensity(), k)))
+                .collect(Collectors.joining(" + "))).collect(Collectors.joining(", ")) + ">";
     }
 
     /** The camera, if a number of its statement uses the clock; else null. */
     String camera(ICamera camera, int w, int h) {
-        return clocked.camera().isEmpty() ? null : PovCamera.withClock(clocked.camera(), camera, w, h);
+        ClockFields f = clocked == null ? ClockFields.NONE : clocked.camera();
+        return f.isEmpty() ? null : PovCamera.withClock(f, camera, w, h);
     }
 
-    /**
-     * A point light; {@code f} its numbers that use the clock, or null for a still, whose vectors are written in double
-     * (as {@link #vector} writes them).
-     */
+    /** A point light; {@code f} its numbers that use the clock, or null for a still (its vectors in double). */
     static String light(Light light, ClockFields f) {
         return "light_source { " + vector(f, "position", light.position()) + ", rgb <"
                 + channels(f, "intensity", light.intensity()) + "> }\n";
@@ -161,8 +153,11 @@ public final class PovClock {
     }
 
     private static String channels(ClockFields f, String group, Rgb c) {
-        return channel(f, group, 0, c.red()) + ", " + channel(f, group, 1, c.green()) + ", "
-                + channel(f, group, 2, c.blue());
+        return IntStream.range(0, 3).mapToObj(k -> channel(f, group, k, part(c, k))).collect(Collectors.joining(", "));
+    }
+
+    private static float part(Rgb c, int k) {
+        return k == 0 ? c.red() : k == 1 ? c.green() : c.blue();
     }
 
     /** Channel {@code k} of a colour group: rtd rounds an expression ½ up to a whole number, then takes 255ths. */
@@ -172,9 +167,8 @@ public final class PovClock {
     }
 
     /**
-     * A shape in POV-Ray's words, up to its pigment: {@code sphere { <…>, r}; {@code f} the numbers of the statement
-     * that made it that use the clock, or null for a still. One method for all shapes, so a new shape cannot be half
-     * added.
+     * A shape up to its pigment, {@code sphere { <…>, r}; {@code f} its statement's numbers that use the clock, or null
+     * for a still. One method for all shapes, so a new shape cannot be half added.
      */
     static String shape(IGeometry shape, ClockFields f) {
         if (shape instanceof Sphere s) {

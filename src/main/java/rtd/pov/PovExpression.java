@@ -7,15 +7,11 @@ import java.util.stream.Collectors;
 import rtd.io.Expression;
 
 /**
- * An expression of a scene file written in POV-Ray's scene language, for an animation whose numbers follow POV-Ray's
- * {@code clock} (Part III, "Expressions, named values and the clock", and "Frames on the command line"): {@code clock}
- * and {@code pi} as they are; rtd's {@code sin cos tan} take degrees, so their argument goes through {@code radians()},
- * and {@code asin acos atan atan2} answer in degrees, so they go through {@code degrees()}; {@code a ^ b} is
- * {@code pow(a, b)}; {@code sqrt abs floor min max} are POV-Ray's own. A name that a {@code let} defined is written as
- * POV-Ray's {@code Rtd_name}, {@code #declare}d once ({@link #declarations}): a name defined from names is then written
- * once, not once for each use, which a chain of {@code let}s would double at every line. Parentheses only where
- * POV-Ray's order of operations would read the text otherwise, and around every minus sign that is not the first thing
- * written.
+ * An expression of a scene file in POV-Ray's scene language, for an animation that follows POV-Ray's {@code clock}
+ * (Part III, "Expressions, named values and the clock"): rtd's trigonometry is in degrees, so {@code radians()} and
+ * {@code degrees()} go round it; {@code a ^ b} is {@code pow(a, b)}. A {@code let} name is POV-Ray's {@code Rtd_name},
+ * {@code #declare}d once, so that a chain of {@code let}s is not doubled at every line. Parentheses only where
+ * POV-Ray's order of operations would read the text otherwise, and around every minus sign not written first.
  */
 final class PovExpression {
 
@@ -50,9 +46,7 @@ final class PovExpression {
         return ATOM;
     }
 
-    /**
-     * {@code e} written out: an operation left to right ({@code pow(a, b)} for {@code a ^ b}), a sign, a name, an atom.
-     */
+    /** {@code e} written out: an operation left to right, a sign, a name, an atom. */
     private static String text(Expression e) {
         if (e instanceof Expression.Operation operation && operation.op() == '^') {
             return "pow(" + of(operation.left()) + ", " + of(operation.right()) + ")";
@@ -125,10 +119,7 @@ final class PovExpression {
         };
     }
 
-    /**
-     * A number in its shortest decimal, plain; a let's plain number, a float as a statement reads it, in the float's
-     * shortest decimal, as the export writes every number rtd holds.
-     */
+    /** A number in its shortest decimal, plain; one that is a float (as a statement reads it), in the float's. */
     static String number(double value) {
         if (value == (float) value) {
             return PovNumbers.num((float) value);

@@ -2,6 +2,7 @@ package rtd.pov;
 
 import static rtd.pov.PovNumbers.num;
 
+import java.util.stream.Stream;
 import rtd.geometry.BoundingBox;
 import rtd.geometry.Box;
 import rtd.geometry.IGeometry;
@@ -13,19 +14,14 @@ import rtd.math.Matrix4;
 import rtd.math.Vector3f;
 
 /**
- * Patterns and transformations in POV-Ray's words, for {@link PovScene}.
- *
- * <p>A transformation is POV-Ray's {@code matrix <…>}, the twelve numbers of M (POV-Ray multiplies row vectors, so they
- * are M's columns); written after the pigment, it moves the pattern with the object, as rtd does. A matrix needs no
- * care for POV-Ray's left-handed {@code rotate}: the numbers are the same.
- *
- * <p>A pattern is POV-Ray's {@code function} pattern, which draws each of rtd's rules exactly: POV-Ray's own
- * {@code checker} and {@code gradient x} agree in the rule, but POV-Ray looks at the hit point P and rtd at
- * {@code P − ε·N}, just beneath the surface, so a floor at y = 0 would swap its colours or show noise; its
- * {@code onion} is spherical, where rtd's rings are rings about the y axis. So the function first moves the point a
- * little into the shape, as rtd's {@code under} does (along a plane's or a triangle's normal, towards a sphere's
- * centre, into a box; not for a shape the export does not know), then takes it into the pattern's space and applies the
- * rule. A gradient's colour is blended by POV-Ray, not rounded per channel: at most half a level apart.
+ * Patterns and transformations in POV-Ray's words, for {@link PovScene}. A transformation is POV-Ray's
+ * {@code matrix <…>}, M's twelve numbers column by column (POV-Ray multiplies row vectors), written after the pigment
+ * so that it moves the pattern with the object, as rtd does. A pattern is a {@code function} pattern that draws rtd's
+ * rule exactly: POV-Ray's own {@code checker} looks at the hit point P, rtd at {@code P − ε·N} just beneath the surface
+ * (a floor at y = 0 would swap its colours), and its {@code onion} is spherical where rtd's rings are about the y axis.
+ * So the function moves the point into the shape as rtd's {@code under} does (along a plane's or a triangle's normal,
+ * towards a sphere's centre, into a box), takes it into the pattern's space and applies the rule. POV-Ray blends a
+ * gradient where rtd rounds each channel: at most half a level apart.
  */
 final class PovPaint {
 
@@ -98,13 +94,10 @@ final class PovPaint {
     /** The largest coordinate of the shape's box (or of a plane's point): how large its ε is. */
     private static double largest(IGeometry shape) {
         BoundingBox box = shape.bounds();
-        Vector3f[] corners = shape instanceof Plane plane ? new Vector3f[] {plane.point()}
-                : box.isBounded() ? new Vector3f[] {box.min(), box.max()} : new Vector3f[0];
-        double largest = 0;
-        for (Vector3f c : corners) {
-            largest = Math.max(largest, Math.max(Math.abs(c.x()), Math.max(Math.abs(c.y()), Math.abs(c.z()))));
-        }
-        return largest;
+        Stream<Vector3f> corners = shape instanceof Plane plane ? Stream.of(plane.point())
+                : box.isBounded() ? Stream.of(box.min(), box.max()) : Stream.empty();
+        return corners.mapToDouble(c -> Math.max(Math.abs(c.x()), Math.max(Math.abs(c.y()), Math.abs(c.z())))).max()
+                .orElse(0);
     }
 
     private static String colour(int r, int g, int b, float filter) {

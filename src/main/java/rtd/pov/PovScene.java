@@ -21,26 +21,18 @@ import rtd.scene.Scene;
 
 /**
  * A scene written as a POV-Ray 3.7 scene that draws the same picture ({@code --export-pov}): a second, independent ray
- * tracer to check rtd against.
- *
- * <p>What makes the two agree:
+ * tracer to check rtd against. What makes the two agree:
  * <ul>
- * <li>the camera is given by explicit vectors, POV-Ray's {@code right} along rtd's u and its {@code up} against rtd's v
- *     (which points down), so no handedness rule of POV-Ray's {@code look_at} applies; POV-Ray samples pixel centres
- *     and rtd pixel corners (Listing 4.1: {@code x − w/2} in whole numbers), so the camera is shifted by that
- *     difference, half a pixel for an even size; a camera that looks at a point ({@code (at x|y|z)}) gets POV-Ray's
- *     {@code look_at}: last for the orthographic camera, the point shifted as its location is, which gives the same
- *     vectors again; for the perspective camera as a comment, since POV-Ray's {@code look_at} would undo the shift,
- *     which tilts that camera's direction;</li>
+ * <li>the camera as explicit vectors ({@link PovCamera}): POV-Ray's {@code right} along rtd's u, its {@code up} against
+ *     rtd's v (which points down), shifted from POV-Ray's pixel centres to rtd's corners (Listing 4.1);</li>
  * <li>flat scenes: {@code finish { ambient 1 diffuse 0 }} and {@code ambient_light 1}, no lights, so each object shows
  *     its colour exactly;</li>
- * <li>shaded scenes: the Phong terms map one to one ({@code phong} is the specular term, {@code phong_size} the
- *     shininess), the ambient light is the sum of the lights' intensities, and {@code max_trace_level 6} counts the
- *     camera's ray as rtd's 5 bounces do not; transparent objects are drawn with {@code rgbt}, their own shadow left to
- *     an opaque, invisible twin, as rtd's every object casts a full shadow;</li>
- * <li>gamma 1: values are linear, as rtd's;</li>
- * <li>an animation's numbers that use the clock: POV-Ray's {@code clock} in their expressions, and what rtd works out
- *     from them worked out alike in POV-Ray ({@link PovClock}).</li>
+ * <li>shaded scenes: {@code phong} is the specular term, {@code phong_size} the shininess, the ambient light the sum of
+ *     the lights' intensities, {@code max_trace_level 6} counts the camera's ray as rtd's 5 bounces do not;
+ *     transparent objects use {@code rgbt}, their shadow left to an opaque, invisible twin, as every object of rtd's
+ *     casts a full shadow;</li>
+ * <li>gamma 1: values are linear, as rtd's; an animation's numbers that use the clock in POV-Ray's {@code clock}
+ *     ({@link PovClock}).</li>
  * </ul>
  */
 public final class PovScene {
@@ -56,8 +48,7 @@ public final class PovScene {
 
     /**
      * A file name as POV-Ray's options take it: in double quotes if it has anything but letters, digits and
-     * {@code _./+:,@%-} (POV-Ray ends an option's name at a space, {@code ;}, {@code #}, a quote, a bracket or
-     * {@code =}), else as it is. A name with a double quote in it cannot be given; {@code --export-pov} refuses one.
+     * {@code _./+:,@%-} (where POV-Ray may end an option's name); {@code --export-pov} refuses a name with a quote.
      */
     private static String povName(String name) {
         return name.matches("[A-Za-z0-9_./+:,@%-]+") ? name : '"' + name + '"';
@@ -72,22 +63,22 @@ public final class PovScene {
     public static String of(Scene scene, int w, int h, String povFile) {
         return "// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n//   "
                 + command(povFile, povFile.replaceAll("(?i)\\.pov$", "") + "-pov.png", w, h) + "\n" + notes(scene, "// and compare")
-                + "#version 3.7;\n\n" + body(scene, w, h, null);
+                + "#version 3.7;\n\n" + body(scene, w, h, PovClock.STILL);
     }
 
     /**
-     * As {@link #of(Scene, int, int, String)}, each number that uses the clock written with POV-Ray's {@code clock}
-     * ({@link PovClock}), so that the one file draws every frame; only for a scene that {@link PovClock#whyNot} passes.
-     * The command that renders the frames is the caller's to write.
+     * As above, each number that uses the clock written with POV-Ray's {@code clock}, so that the one file draws every
+     * frame; only for a scene that {@link PovClock#whyNot} passes. The command that renders it is the caller's.
      */
     public static String of(ClockedScene clocked, int w, int h) {
         PovClock clock = new PovClock(clocked);
-        return notes(clocked.scene(), "// Compare") + "#version 3.7;\n\n" + clock.declarations() + body(clocked.scene(), w, h, clock);
+        return notes(clocked.scene(), "// Compare") + "#version 3.7;\n\n" + clock.declarations()
+                + body(clocked.scene(), w, h, clock);
     }
 
     /** The scene alone, without the comments and the {@code #version} of a file: one frame among others. */
     public static String frame(Scene scene, int w, int h) {
-        return body(scene, w, h, null);
+        return body(scene, w, h, PovClock.STILL);
     }
 
     /** What to expect when comparing the pictures, after {@code opening}. */
@@ -104,45 +95,39 @@ public final class PovScene {
         return notes;
     }
 
-    /** The settings, camera, lights and objects, the numbers that use the clock written by {@code clock} (null: a still). */
+    /** The settings, camera, lights and objects, the numbers that use the clock written by {@code clock}. */
     private static String body(Scene scene, int w, int h, PovClock clock) {
         boolean shaded = !scene.lights().isEmpty();
         StringBuilder pov = new StringBuilder();
-        String lightSum = clock == null ? null : clock.lightSum(scene.lights());
+        String lightSum = clock.lightSum(scene.lights());
         if (lightSum == null) { // the sum as rtd adds it, in float
             lightSum = rgb(scene.lights().stream().map(Light::intensity).reduce(Rgb.BLACK, Rgb::plus));
         }
         pov.append("global_settings { assumed_gamma 1.0 ambient_light ").append(shaded ? lightSum : "rgb <1, 1, 1>")
                 .append(shaded ? " max_trace_level " + 6 + " adc_bailout 0" : "").append(" }\n");
-        pov.append("background { ")
-                .append(PovClock.rgb(clock == null ? null : clock.ambient(), "colour", scene.ambient()))
-                .append(" }\n\n");
-        String moving = clock == null ? null : clock.camera(scene.camera(), w, h);
+        pov.append("background { ").append(PovClock.rgb(clock.ambient(), "colour", scene.ambient())).append(" }\n\n");
+        String moving = clock.camera(scene.camera(), w, h);
         pov.append(moving != null ? moving : PovCamera.of(scene.camera(), w, h)).append('\n');
         AreaLight written = null;
         for (Light light : scene.lights()) {
             if (light.area() == null) {
-                pov.append(PovClock.light(light, clock == null ? null : clock.of(light)));
+                pov.append(PovClock.light(light, clock.of(light)));
             } else if (light.area() != written) { // its samples follow one another: the first writes it
                 written = light.area();
                 pov.append(areaLight(written));
             }
         }
         for (IGeometry object : scene.objects()) {
-            boolean animated = clock != null && !clock.of(object).isEmpty();
-            pov.append(object(object, shaded, animated ? clock.of(object) : null));
+            pov.append(object(object, shaded, clock.of(object)));
         }
         return pov.toString();
     }
 
     /**
-     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples. POV-Ray centres the rectangle on the
-     * light's location and puts its n lights along an axis from one end of it to the other, rtd at the centres of n
-     * equal cells, {@code (i + ½)/n} of the edge: so the location is {@code C + u/2 + v/2} and the axes are
-     * {@code u·(n − 1)/n} and {@code v·(m − 1)/m}. Without {@code adaptive} POV-Ray tests every one of its lights, and
-     * without {@code jitter} leaves them in place. POV-Ray shades with the light's centre and uses the array for the
-     * shadows only, where rtd sums its samples' shading too: the two agree in the shadows and differ a little in the
-     * light (most where the light is near and large).
+     * An area light as POV-Ray's {@code area_light}, its lights on rtd's samples: POV-Ray centres the rectangle on its
+     * location and spreads its n lights from one end of an axis to the other, rtd puts them at {@code (i + ½)/n} of the
+     * edge, so the location is {@code C + u/2 + v/2} and the axes {@code u·(n − 1)/n} and {@code v·(m − 1)/m}; without
+     * {@code adaptive} or {@code jitter}, every light is tested where it is.
      */
     private static String areaLight(AreaLight area) {
         double[] u = d(area.u());
@@ -154,7 +139,7 @@ public final class PovScene {
                 + vector(axis2) + ", " + area.n() + ", " + area.m() + " }\n";
     }
 
-    /** The object; {@code f} its numbers that use the clock, or null for one that does not. */
+    /** The object; {@code f} its numbers that use the clock, or null or none for one that does not. */
     private static String object(IGeometry object, boolean shaded, ClockFields f) {
         IGeometry shape = object;
         String end = " }";
@@ -164,8 +149,8 @@ public final class PovScene {
         }
         Pattern pattern = shape instanceof Patterned patterned ? patterned.pattern() : null;
         shape = shape instanceof Patterned patterned ? patterned.shape() : shape;
-        // "sphere { <x, y, z>, r": the pigment and finish follow
-        String start = PovClock.shape(shape, f);
+        f = f == null || f.isEmpty() ? null : f;
+        String start = PovClock.shape(shape, f); // "sphere { <x, y, z>, r"
         if (!shaded) {
             return start + " " + pigment(object, shape, pattern, 0, f) + " finish { ambient 1 diffuse 0 }" + end + "\n";
         }
@@ -184,7 +169,7 @@ public final class PovScene {
         return pattern != null ? PovPaint.pigment(shape, pattern, filter) : PovClock.pigment(f, object.color(), filter);
     }
 
-    /** rtd's finish (The Ray Tracer Challenge's) in POV-Ray's words; ambient and diffuse scaled by {@code 1/share} where rgbt's filter takes a share. */
+    /** rtd's finish (The Ray Tracer Challenge's), ambient and diffuse scaled by {@code 1/share} where rgbt filters. */
     private static String finish(Material m, float share) {
         return "finish { ambient " + num(m.ambient() / share) + " diffuse " + num(m.diffuse() / share) + " phong "
                 + num(m.specular()) + " phong_size " + num(m.shininess())
@@ -192,11 +177,9 @@ public final class PovScene {
     }
 
     /**
-     * The mirror's share. For glass that also mirrors, rtd mixes the two by Schlick's approximation of Fresnel (step 6
-     * of the shading); POV-Ray's twin of that is its Fresnel reflection, from none to {@code reflective}, with
-     * {@code conserve_energy} taking from the light let through what is mirrored. Not the same formula (POV-Ray's is
-     * Fresnel's own, not Schlick's), but for the glass and mirror example the pictures then differ in 0.24 % of the
-     * pixels by more than 8 levels, against 16.5 % with a plain reflection added to the light let through.
+     * The mirror's share. Where glass also mirrors, rtd mixes the two by Schlick's approximation of Fresnel; POV-Ray's
+     * twin is its own Fresnel reflection with {@code conserve_energy}: not the same formula, but far nearer than a
+     * plain reflection added to the light let through.
      */
     private static String reflection(Material m) {
         if (m.reflective() <= 0) {

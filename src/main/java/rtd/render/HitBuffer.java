@@ -7,11 +7,10 @@ import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 
 /**
- * The nearest hits of the rays of a {@link RayBundle}, kept as numbers: for ray {@code i} the
- * place of the object hit among the scene's objects (−1: none), t and the distance
- * {@code |P − O|}, and how many intersection tests the tracer ran to find it (for
- * {@code --view cost}). A {@link Tracer} fills it; a {@link Shader} reads it. A {@link Hit}
- * record is made only where a shader asks for one.
+ * The nearest hits of the rays of a {@link RayBundle}, kept as numbers: for ray {@code i} the place of the object hit
+ * among the scene's objects (−1: none), t, the distance {@code |P − O|}, and the intersection tests the tracer ran to
+ * find it ({@code --view cost}). A {@link Tracer} fills it, a {@link Shader} reads it; a {@link Hit} record is made
+ * only where a shader asks for one.
  */
 public final class HitBuffer {
 
@@ -22,14 +21,11 @@ public final class HitBuffer {
     /** Whether the last {@link #setMisses} has not been followed by a {@link #set}: every ray missed. */
     private boolean missedAll;
     /**
-     * How many rays' entries {@link #setMisses} answered at once and has not yet written into the
-     * arrays: they are written when first read ({@link #writePending}). Most of the paper's
-     * picture is answered so, and a shader of flat colours colours such a bundle at once without
-     * reading an entry, so the four passes over the arrays are saved.
+     * The entries {@link #setMisses} answered at once and not yet written: most of the paper's picture is answered so,
+     * and a flat shader colours such a bundle without reading an entry, which saves four passes over the arrays.
      */
     private int pending;
 
-    /** Room for {@code capacity} hits. */
     public HitBuffer(int capacity) {
         index = new int[capacity];
         t = new float[capacity];
@@ -43,13 +39,12 @@ public final class HitBuffer {
         tests[i] = (int) Math.min(Integer.MAX_VALUE, count);
     }
 
-    /** The intersection tests the tracer ran for ray {@code i}. */
     public int tests(int i) {
         writePending();
         return tests[i];
     }
 
-    /** Ray {@code i} hits object {@code object} (its place in the scene) at {@code t}, at {@code distance} from its origin. */
+    /** Ray {@code i} hits object {@code object} (its place in the scene) at {@code t}, at {@code distance} from O. */
     public void set(int i, int object, float t, float distance) {
         writePending();
         missedAll = false;
@@ -61,15 +56,10 @@ public final class HitBuffer {
     /** Ray {@code i} hits {@code hit}, or nothing if it is {@code null}. */
     public void set(int i, Hit hit) {
         if (hit == null) {
-            setMiss(i);
+            set(i, -1, Float.NaN, Float.POSITIVE_INFINITY);
         } else {
             set(i, hit.index(), hit.t(), hit.distance());
         }
-    }
-
-    /** Ray {@code i} hits nothing. */
-    public void setMiss(int i) {
-        set(i, -1, Float.NaN, Float.POSITIVE_INFINITY);
     }
 
     /** Rays 0 to {@code count − 1} hit nothing, and took no intersection test. */
@@ -78,16 +68,11 @@ public final class HitBuffer {
         pending = count;
     }
 
-    /**
-     * Whether no ray of the bundle hit anything, as a tracer said at once for all of them
-     * ({@link #setMisses}, as for pixels where no object shows); {@code false} does not say that
-     * one hit. A shader may then colour the whole bundle at once.
-     */
+    /** Whether a tracer said at once that no ray hit anything ({@link #setMisses}); {@code false} says nothing. */
     public boolean missedAll() {
         return missedAll;
     }
 
-    /** Writes the entries that {@link #setMisses} answered at once: no test, no object, no t, an infinite distance. */
     private void writePending() {
         if (pending == 0) {
             return;
@@ -106,24 +91,17 @@ public final class HitBuffer {
         return index[i];
     }
 
-    /** The t of ray {@code i}'s hit, NaN if none. */
-    public float t(int i) {
-        writePending();
-        return t[i];
-    }
-
     /** The distance {@code |P − O|} of ray {@code i}'s hit, infinite if none. */
     public float distance(int i) {
         writePending();
         return distance[i];
     }
 
-    /** Ray {@code i}'s hit as a record, with the hit point as the intersection test computes it; {@code null} if none. */
     public Hit hit(int i, RayBundle rays, List<IGeometry> objects) {
         return hit(i, rays.ray(i), objects);
     }
 
-    /** As {@link #hit(int, RayBundle, List)}, for a caller that has made ray {@code i} already. */
+    /** Ray {@code i}'s hit as a record, its point as the intersection test computes it; {@code null} if none. */
     public Hit hit(int i, Ray ray, List<IGeometry> objects) {
         writePending();
         if (index[i] < 0) {

@@ -4,10 +4,7 @@ import rtd.geometry.Hit;
 import rtd.math.Ray;
 import rtd.scene.Scene;
 
-/**
- * The paper's tracer: {@link Scene#nearestHit} tests every object for every ray (Listing 4.3).
- * This class only counts that work for {@code --stats}.
- */
+/** The paper's tracer: {@link Scene#nearestHit} tests every object for every ray (Listing 4.3), counted for --stats. */
 public final class LinearTracer implements Tracer {
 
     private final Scene scene;
@@ -15,7 +12,6 @@ public final class LinearTracer implements Tracer {
     private final int objects;
     private long rays;
 
-    /** A tracer for {@code scene}. */
     public LinearTracer(Scene scene) {
         this.scene = scene;
         this.perRay = WorkCount.testsOf(scene.objects(), 1);
@@ -28,13 +24,11 @@ public final class LinearTracer implements Tracer {
         return scene.nearestHit(ray);
     }
 
-    /** Every ray is tested against every object. */
     @Override
     public WorkCount work() {
         return perRay.times(rays);
     }
 
-    /** N tests for each ray. */
     @Override
     public long testsRun() {
         return rays * objects;

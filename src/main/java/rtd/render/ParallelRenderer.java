@@ -15,16 +15,11 @@ import rtd.image.Rgb;
 import rtd.image.Picture;
 
 /**
- * Listing 4.2 on all cores: the same ray per pixel as {@link rtd.scene.Scene#render}, with
- * bands of rows shared out among threads. A {@link Tracer} finds each ray's nearest hit, a
- * {@link Shader} turns it into a colour.
- *
- * <p>Every pixel depends only on its own ray, so the picture is the same for any number of
- * threads: the threads only change which pixel is done when. A thread takes the next band of
- * {@value #TILE} rows not yet taken, so a slow band does not hold the others back, and hands
- * its tracer the rays of one {@value #TILE} × {@value #TILE} square of pixels at a time:
- * neighbouring rays take similar paths, which a tracer may use. The bands are taken not from
- * the top down but scattered over the picture ({@link #bandTaken}), for the JIT's sake.
+ * Listing 4.2 on all cores: the same ray per pixel as {@link rtd.scene.Scene#render}, bands of {@value #TILE} rows
+ * shared out among threads; a {@link Tracer} finds each ray's nearest hit, a {@link Shader} turns it into a colour.
+ * Every pixel depends only on its own rays, so the picture is the same for any number of threads. A thread takes the
+ * next band not yet taken (a slow band holds no other back) and hands its tracer one {@value #TILE} × {@value #TILE}
+ * square of pixels at a time, whose neighbouring rays a tracer may trace together.
  */
 public final class ParallelRenderer {
 
@@ -32,19 +27,15 @@ public final class ParallelRenderer {
     static final int TILE = 8;
     /** How many squares side by side the renderer asks about at once first ({@link Tracer#traceAtOnce}). */
     static final int RUN = 64;
-    /**
-     * The golden section's smaller part, {@code (3 − √5) / 2}: steps of this share of a circle
-     * put each next point in the largest gap left, so any first few bands lie far apart.
-     */
+    /** The golden section's smaller part, {@code (3 − √5) / 2}: each step of it lands in the largest gap left. */
     private static final double GOLDEN_SECTION = (3 - Math.sqrt(5)) / 2;
 
     private ParallelRenderer() {
     }
 
     /**
-     * Renders a {@code width × height} image with {@code threads} threads, each with its own
-     * tracer from {@code tracers} and a shader for it from {@code shaders}, and counts finished
-     * rows in {@code progress}.
+     * Renders a {@code width × height} image with {@code threads} threads, each with its own tracer from
+     * {@code tracers} and a shader for it from {@code shaders}, counting finished rows in {@code progress}.
      */
     public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, Function<Tracer, Shader> shaders,
             int width, int height, int threads, RenderProgress progress) {
@@ -52,72 +43,57 @@ public final class ParallelRenderer {
     }
 
     /**
-     * As {@link #render(ICamera, Supplier, Function, int, int, int, RenderProgress)}, with
-     * {@code samples × samples} rays per pixel (Part II, "Anti-aliasing"): ray (i, j) passes through
-     * the point {@code (x + (i + ½)/samples, y + (j + ½)/samples)}, and the pixel is the mean of
-     * their colours, each clamped to [0, 1] first. One sample is the ray through the corner.
+     * As above, with {@code samples × samples} rays per pixel (Part II, "Anti-aliasing"): ray (i, j) passes through
+     * {@code (x + (i + ½)/samples, y + (j + ½)/samples)}, and the pixel is the mean of their colours, each clamped to
+     * [0, 1] first. One sample is the ray through the corner.
      */
     public static RenderResult render(ICamera camera, Supplier<Tracer> tracers, Function<Tracer, Shader> shaders,
             int width, int height, int samples, int threads, RenderProgress progress) {
         int[] pixels = new int[width * height];
         AtomicInteger nextBand = new AtomicInteger();
-        List<Tracer> used = new ArrayList<>();
         List<Square> squares = new ArrayList<>();
-        List<Runnable> workers = new ArrayList<>();
         int bands = (height + TILE - 1) / TILE;
         for (int i = 0; i < Math.max(1, Math.min(threads, bands)); i++) { // more threads than bands would idle
             Tracer tracer = tracers.get();
-            Shader shader = shaders.apply(tracer);
-            used.add(tracer);
-            Square square = new Square(camera, tracer, shader, width, height, samples);
-            squares.add(square);
-            workers.add(() -> renderBands(square, pixels, bands, nextBand, progress));
+            squares.add(new Square(camera, tracer, shaders.apply(tracer), width, height, samples));
         }
-        runAll(workers);
+        runAll(squares.stream().<Runnable>map(square -> () -> renderBands(square, pixels, bands, nextBand, progress))
+                .toList());
         WorkCount work = WorkCount.NONE;
-        for (Tracer tracer : used) {
-            work = work.plus(tracer.work());
-        }
         for (Square square : squares) {
-            work = work.plusSecondary(square.shader.secondaryRays());
+            work = work.plus(square.tracer.work()).plusSecondary(square.shader.secondaryRays());
         }
         return new RenderResult(new Picture(width, height, pixels), work);
     }
 
     private static void renderBands(Square square, int[] pixels, int bands, AtomicInteger nextBand,
             RenderProgress progress) {
-        int width = square.width;
-        int height = square.height;
         for (int taken = nextBand.getAndIncrement(); taken < bands; taken = nextBand.getAndIncrement()) {
             if (Thread.currentThread().isInterrupted()) {
                 return; // another thread failed, and the picture will not be used
             }
             int top = bandTaken(taken, bands) * TILE;
-            int bottom = Math.min(height, top + TILE);
-            for (int left = 0; left < width; left += RUN * TILE) {
-                square.renderRun(left, Math.min(width, left + RUN * TILE), top, bottom, pixels);
+            int bottom = Math.min(square.height, top + TILE);
+            for (int left = 0; left < square.width; left += RUN * TILE) {
+                square.renderRun(left, Math.min(square.width, left + RUN * TILE), top, bottom, pixels);
             }
             progress.rowsDone(bottom - top);
         }
     }
 
     /**
-     * The band taken {@code taken}-th of {@code bands}: {@code taken · step mod bands}, each band
-     * once, as the step is coprime to their number ({@link #scatteringStep}). Why not from the top
-     * down: the JIT compiles the hot methods for what the first few thousand rays did. After a top
-     * band of sky or of far spheres alone, the floor's mirror rays or the glass further down would
-     * make it throw compiled methods away and compile them again, and the render runs slower
-     * meanwhile. Scattered, the first bands show the JIT the whole picture. The picture is the
-     * same, as every pixel depends only on its own rays.
+     * The band taken {@code taken}-th of {@code bands}: {@code taken · step mod bands}, each band once, as the step is
+     * coprime to their number. Not from the top down, for the JIT's sake: it compiles the hot methods for what the
+     * first few thousand rays did, and after a top band of sky, the floor's mirror rays further down would make it
+     * compile them again. Scattered, the first bands show it the whole picture.
      */
     static int bandTaken(int taken, int bands) {
         return (int) ((long) taken * scatteringStep(bands) % bands);
     }
 
     /**
-     * The step between bands taken one after the other: the whole number nearest to the golden
-     * section of {@code bands}, or the next one above it that has no common factor with
-     * {@code bands}; 52 of 135 bands (1080 rows), so they come 0, 52, 104, 21, 73, 125, ...
+     * The whole number nearest to the golden section of {@code bands}, or the next above it coprime to {@code bands};
+     * 52 of 135 bands (1080 rows), so they come 0, 52, 104, 21, 73, 125, ...
      */
     static int scatteringStep(int bands) {
         int step = Math.max(1, (int) Math.round(bands * GOLDEN_SECTION));
@@ -131,37 +107,18 @@ public final class ParallelRenderer {
         return b == 0 ? a : gcd(b, a % b);
     }
 
-    /**
-     * One thread's means to render squares of pixels, and runs of them: its tracer, its shader,
-     * and room for the rays, hits and colours of a run.
-     */
-    private static final class Square {
-        private final ICamera camera;
-        private final Tracer tracer;
-        private final Shader shader;
-        private final int width;
-        private final int height;
-        private final int samples;
-        private final RayBundle rays = new RayBundle(RUN * TILE * TILE);
-        private final HitBuffer hits = new HitBuffer(RUN * TILE * TILE);
-        private final int[] rgb = new int[RUN * TILE * TILE];
-        private final float[] sum = new float[3 * TILE * TILE];
+    /** One thread's means to render squares of pixels and runs of them: its tracer, its shader, and their buffers. */
+    private record Square(ICamera camera, Tracer tracer, Shader shader, int width, int height, int samples,
+            RayBundle rays, HitBuffer hits, int[] rgb, float[] sum) {
 
         Square(ICamera camera, Tracer tracer, Shader shader, int width, int height, int samples) {
-            this.camera = camera;
-            this.tracer = tracer;
-            this.shader = shader;
-            this.width = width;
-            this.height = height;
-            this.samples = samples;
+            this(camera, tracer, shader, width, height, samples, new RayBundle(RUN * TILE * TILE),
+                    new HitBuffer(RUN * TILE * TILE), new int[RUN * TILE * TILE], new float[3 * TILE * TILE]);
         }
 
         /**
-         * The pixels {@code [left, right) × [top, bottom)} of a band into {@code pixels}: all at
-         * once if the tracer can tell that none of their rays hits anything, else each half in
-         * the same way, down to the squares. Much of the paper's picture is sky, which a few
-         * questions about long runs settle, instead of one for each square. The tracer answers so only
-         * what each ray would find alone, so the picture is the same.
+         * The pixels {@code [left, right) × [top, bottom)} of a band: all at once if the tracer can tell that none of
+         * their rays hits anything (much of the paper's picture is sky), else each half so, down to the squares.
          */
         void renderRun(int left, int right, int top, int bottom, int[] pixels) {
             if (right - left <= TILE || samples > 1) {
@@ -204,8 +161,7 @@ public final class ParallelRenderer {
                     rays.fill(camera, left, top, right, bottom, width, height, (i + 0.5f) / samples, (j + 0.5f) / samples);
                     tracer.traceAll(rays, hits);
                     for (int k = 0; k < rays.count(); k++) {
-                        Rgb colour = shader.colour(rays, hits, k);
-                        Rgb clamped = colour.clamped();
+                        Rgb clamped = shader.colour(rays, hits, k).clamped();
                         sum[3 * k] += clamped.red();
                         sum[3 * k + 1] += clamped.green();
                         sum[3 * k + 2] += clamped.blue();
@@ -218,25 +174,18 @@ public final class ParallelRenderer {
             }
             return rgb;
         }
-
     }
 
-    /** Runs the workers, the last one on the calling thread, and rethrows what any threw. */
+    /** Runs the workers, the first on the calling thread, and rethrows what any threw. */
     private static void runAll(List<Runnable> workers) {
-        if (workers.size() == 1) {
-            workers.get(0).run();
-            return;
-        }
-        ExecutorService pool = Executors.newFixedThreadPool(workers.size() - 1, runnable -> {
+        // a thread is made at a worker's submission only: none for a single worker
+        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, workers.size() - 1), runnable -> {
             Thread thread = new Thread(runnable, "rtd-render");
             thread.setDaemon(true);
             return thread;
         });
         try {
-            List<Future<?>> futures = new ArrayList<>();
-            for (Runnable worker : workers.subList(1, workers.size())) {
-                futures.add(pool.submit(worker));
-            }
+            List<Future<?>> futures = workers.subList(1, workers.size()).stream().<Future<?>>map(pool::submit).toList();
             workers.get(0).run();
             for (Future<?> future : futures) {
                 future.get();

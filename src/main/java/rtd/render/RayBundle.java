@@ -5,16 +5,12 @@ import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
- * The rays of one small square of pixels, kept as numbers: the origin and direction of ray
- * {@code i} of equation 3.1 at index {@code i}, row by row. Not in the paper:
- * {@link ParallelRenderer} fills one per thread and hands it to a {@link Tracer}, which may use
- * what the rays share (a view grid: the pixels they pass through).
- *
- * <p>The rays are made only when a tracer first asks for their numbers ({@link #make}): a
- * tracer that can tell from the square's pixels that no ray reaches any object never needs
- * them. Numbers, not {@link Ray} objects: a {@code Ray} stored in an array lives on the heap,
- * 48 bytes a pixel; here the camera writes each ray's numbers ({@link ICamera#putRay}, exactly
- * {@link ICamera#generateRay}'s), so no object is made per pixel.
+ * The rays of one small square of pixels, kept as numbers: the origin and direction of ray {@code i} of equation 3.1
+ * at index {@code i}, row by row. {@link ParallelRenderer} fills one per thread and hands it to a {@link Tracer}, which
+ * may use what the rays share (a view grid: the pixels they pass through). The rays are made only when a tracer first
+ * asks for their numbers ({@link #make}), so a tracer that can tell from the pixels that no ray reaches any object
+ * never needs them; as numbers the camera writes ({@link ICamera#putRay}, exactly {@link ICamera#generateRay}'s), not
+ * as a {@link Ray} of 48 bytes on the heap per pixel.
  */
 public final class RayBundle {
 
@@ -27,20 +23,29 @@ public final class RayBundle {
     private int count;
     /** One ray's numbers as the camera writes them ({@link ICamera#putRay}), before they are stored. */
     private final float[] numbers = new float[6];
-    /** The square whose rays these are, or no camera if the rays were given one by one. */
-    private ICamera camera;
-    private int left;
-    private int top;
-    private int right;
-    private int bottom;
-    private int width;
-    private int height;
+    /** The pixels whose rays these are, or null if the rays were given one by one. */
+    private Pixels pixels;
     private boolean made;
-    /** Where in each pixel the rays pass: 0 is the corner (Listing 4.1), else a sample's offset. */
-    private float sampleX;
-    private float sampleY;
 
-    /** An empty bundle with room for {@code capacity} rays. */
+    /**
+     * The pixels {@code [left, right) × [top, bottom)} of a {@code width × height} picture whose camera's rays a bundle
+     * holds, each ray through the point {@code (x + sampleX, y + sampleY)} of its pixel: (0, 0) is the corner (Listing
+     * 4.1), else a sample's offset.
+     */
+    public record Pixels(ICamera camera, int left, int top, int right, int bottom, int width, int height, float sampleX,
+            float sampleY) {
+
+        /** The camera's ray {@code i}, row by row: through its pixel's corner, as Listing 4.1, or the sample's point. */
+        Ray ray(int i) {
+            int x = left + i % (right - left);
+            int y = top + i / (right - left);
+            if (sampleX == 0 && sampleY == 0) {
+                return camera.generateRay(x, y, width, height);
+            }
+            return camera.generateRay(x + sampleX, y + sampleY, width, height);
+        }
+    }
+
     public RayBundle(int capacity) {
         originX = new float[capacity];
         originY = new float[capacity];
@@ -50,106 +55,56 @@ public final class RayBundle {
         directionZ = new float[capacity];
     }
 
-    /**
-     * Replaces the rays with the camera's rays (Listing 4.1) for the pixels
-     * {@code [left, right) × [top, bottom)} of a {@code width × height} image, row by row; they
-     * are made on first use.
-     */
+    /** The camera's rays (Listing 4.1) of pixels {@code [left, right) × [top, bottom)}. */
     public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height) {
         fill(camera, left, top, right, bottom, width, height, 0, 0);
     }
 
-    /**
-     * As {@link #fill(ICamera, int, int, int, int, int, int)}, with each ray through the point
-     * {@code (x + sampleX, y + sampleY)} of its pixel instead of the corner (anti-aliasing).
-     */
+    /** As above, each ray through the point {@code (x + sampleX, y + sampleY)} of its pixel (anti-aliasing). */
     public void fill(ICamera camera, int left, int top, int right, int bottom, int width, int height, float sampleX,
             float sampleY) {
-        this.sampleX = sampleX;
-        this.sampleY = sampleY;
-        this.camera = camera;
-        this.left = left;
-        this.top = top;
-        this.right = right;
-        this.bottom = bottom;
-        this.width = width;
-        this.height = height;
+        pixels = new Pixels(camera, left, top, right, bottom, width, height, sampleX, sampleY);
         count = (right - left) * (bottom - top);
         made = false;
     }
 
-    /** Replaces the rays with these (for tests and benchmarks that choose their own rays). */
+    /** These rays, for tests that choose their own. */
     public void fill(Ray... rays) {
-        camera = null;
+        pixels = null;
         count = 0;
         for (Ray ray : rays) {
-            store(count++, ray);
+            Vector3f o = ray.origin();
+            Vector3f d = ray.direction();
+            System.arraycopy(new float[] {o.x(), o.y(), o.z(), d.x(), d.y(), d.z()}, 0, numbers, 0, 6);
+            store(count++);
         }
         made = true;
     }
 
-    /** Makes the rays with the camera, if not done yet; call it before reading a ray's numbers. */
+    /** Makes the rays with the camera, if not done yet: before reading a ray's numbers. */
     public void make() {
         if (made) {
             return;
         }
+        Pixels p = pixels;
         int i = 0;
-        for (int y = top; y < bottom; y++) {
-            for (int x = left; x < right; x++) {
-                camera.putRay(x + sampleX, y + sampleY, width, height, numbers, 0);
+        for (int y = p.top; y < p.bottom; y++) {
+            for (int x = p.left; x < p.right; x++) {
+                p.camera.putRay(x + p.sampleX, y + p.sampleY, p.width, p.height, numbers, 0);
                 store(i++);
             }
         }
         made = true;
     }
 
-    /** The camera whose square of pixels these rays are, or {@code null} if they were given one by one. */
+    /** The camera whose pixels these rays are, or {@code null} if they were given one by one. */
     public ICamera camera() {
-        return camera;
+        return pixels == null ? null : pixels.camera;
     }
 
-    // The square of pixels whose rays these are, for a tracer that knows the camera; only for a camera's square.
-
-    public int left() {
-        return left;
-    }
-
-    public int top() {
-        return top;
-    }
-
-    public int right() {
-        return right;
-    }
-
-    public int bottom() {
-        return bottom;
-    }
-
-    public int width() {
-        return width;
-    }
-
-    public int height() {
-        return height;
-    }
-
-    /** Where across its pixel each ray passes, 0 at the corner. */
-    public float sampleX() {
-        return sampleX;
-    }
-
-    /** Where down its pixel each ray passes, 0 at the corner. */
-    public float sampleY() {
-        return sampleY;
-    }
-
-    /** The camera's ray of pixel (x, y): through its corner, as Listing 4.1, or through the sample's point. */
-    private Ray rayOf(int x, int y) {
-        if (sampleX == 0 && sampleY == 0) {
-            return camera.generateRay(x, y, width, height);
-        }
-        return camera.generateRay(x + sampleX, y + sampleY, width, height);
+    /** The pixels whose rays these are, for a tracer that knows the camera; null if the rays were given one by one. */
+    public Pixels pixels() {
+        return pixels;
     }
 
     private void store(int i) {
@@ -161,29 +116,14 @@ public final class RayBundle {
         directionZ[i] = numbers[5];
     }
 
-    private void store(int i, Ray ray) {
-        Vector3f origin = ray.origin();
-        Vector3f direction = ray.direction();
-        originX[i] = origin.x();
-        originY[i] = origin.y();
-        originZ[i] = origin.z();
-        directionX[i] = direction.x();
-        directionY[i] = direction.y();
-        directionZ[i] = direction.z();
-    }
-
     public int count() {
         return count;
     }
 
-    /**
-     * Ray {@code i} as a {@link Ray}, for tracers that take one ray at a time: straight from the
-     * camera (it need not be {@linkplain #make made}), or as it was given.
-     */
+    /** Ray {@code i} for tracers that take one ray at a time: straight from the camera (unmade), or as it was given. */
     public Ray ray(int i) {
-        if (camera != null && !made) {
-            int squareWidth = right - left;
-            return rayOf(left + i % squareWidth, top + i / squareWidth);
+        if (pixels != null && !made) {
+            return pixels.ray(i);
         }
         return new Ray(new Vector3f(originX[i], originY[i], originZ[i]),
                 new Vector3f(directionX[i], directionY[i], directionZ[i]));

@@ -2,10 +2,7 @@ package rtd.render;
 
 import java.util.concurrent.atomic.AtomicInteger;
 
-/**
- * How many image rows are finished: {@link ParallelRenderer} counts them up while another
- * thread (the command line's progress display) reads them.
- */
+/** How many image rows are finished: {@link ParallelRenderer} counts them while the progress display reads them. */
 public final class RenderProgress {
 
     private final AtomicInteger rowsDone = new AtomicInteger();
@@ -14,7 +11,6 @@ public final class RenderProgress {
         rowsDone.addAndGet(rows);
     }
 
-    /** The number of finished rows. */
     public int rowsDone() {
         return rowsDone.get();
     }

@@ -4,16 +4,12 @@ import java.util.Map;
 import rtd.image.Rgb;
 
 /**
- * Decides the colour a ray sees from what it hit: the paper's flat colours
- * ({@code rtd.shade.FlatShader}), shading with lights ({@code rtd.shade.WhittedShader}), or a
- * debug view. It sits above the hit query: a {@link Tracer} has found the hit already, and a
- * shader that follows secondary rays asks its own tracer for theirs.
- *
- * <p>One per thread, with that thread's tracer: a shader may count its work.
+ * The colour a ray sees from what a {@link Tracer} found it hits: the paper's flat colours, shading with lights, or a
+ * debug view. A shader that follows secondary rays asks its thread's tracer for theirs, and may count its work.
  */
 public interface Shader {
 
-    /** The colour, as light (channels from 0 to 1, or beyond), of ray {@code i} of {@code rays}, whose nearest hit is entry {@code i} of {@code hits}. */
+    /** Ray {@code i}'s colour as light (channels from 0 to 1, or beyond), its nearest hit in {@code hits}. */
     Rgb colour(RayBundle rays, HitBuffer hits, int i);
 
     /** {@link #colour} as the picture stores it, {@code 0xRRGGBB}: clamped and rounded ({@link Rgb#toColor}). */
@@ -21,10 +17,7 @@ public interface Shader {
         return colour(rays, hits, i).toColor().getRGB();
     }
 
-    /**
-     * {@link #rgb} of rays {@code 0} to {@code count − 1}, into {@code rgb}. A shader may colour
-     * a bundle whose rays all missed ({@link HitBuffer#missedAll}) at once.
-     */
+    /** {@link #rgb} of rays 0 to {@code count − 1}; may colour at once a bundle that {@link HitBuffer#missedAll}. */
     default void rgbAll(RayBundle rays, HitBuffer hits, int count, int[] rgb) {
         for (int i = 0; i < count; i++) {
             rgb[i] = rgb(rays, hits, i);

@@ -4,14 +4,9 @@ import rtd.geometry.Hit;
 import rtd.math.Ray;
 
 /**
- * Answers "what does this ray hit?": the intersection and depth tests of Listing 3.1, lines
- * 3–5, for any ray, a camera's or not. It finds hits, not colours; a {@link Shader} decides the
- * colour (line 6).
- *
- * <p>{@link LinearTracer} is the paper's loop over all objects; {@code rtd.accel.BvhTracer}
- * gets the same hits from a bounding volume hierarchy, {@code rtd.accel.ViewGridTracer} for the
- * camera's rays from a grid on the image, and {@code rtd.accel.LightGridTracer} for shadow rays
- * from a grid seen from each light. A tracer counts its work and so is not
+ * Answers "what does this ray hit?" for any ray: the intersection and depth tests of Listing 3.1, lines 3–5; a
+ * {@link Shader} decides the colour (line 6). {@link LinearTracer} is the paper's loop over all objects; rtd.accel's
+ * tracers get the same hits from a bounding volume hierarchy and grids. A tracer counts its work, so it is not
  * thread-safe: {@link ParallelRenderer} gives each thread its own.
  */
 public interface Tracer {
@@ -20,9 +15,8 @@ public interface Tracer {
     Hit nearestHit(Ray ray);
 
     /**
-     * The nearest hits of the bundle's rays into {@code hits}. The rays come from a small square
-     * of neighbouring pixels; a tracer may use what they share to go faster. By default it
-     * traces them one by one. Each ray's count of intersection tests goes into {@code hits} too.
+     * The nearest hits of the bundle's rays, and each one's count of intersection tests, into {@code hits}; the rays
+     * of neighbouring pixels, whose likeness a tracer may use. By default one by one.
      */
     default void traceAll(RayBundle rays, HitBuffer hits) {
         for (int i = 0; i < rays.count(); i++) {
@@ -33,28 +27,22 @@ public interface Tracer {
     }
 
     /**
-     * Whether the tracer can tell at once, without following them one by one, that none of the
-     * bundle's rays hits anything ({@link HitBuffer#setMisses}): then they count as traced, with
-     * no intersection test, their answer is in {@code hits}, and the answer is true. False, with
-     * nothing traced, if some ray may hit or if the tracer cannot tell; by default it cannot. The bundle may be larger than a square:
-     * {@link ParallelRenderer} asks this of a run of squares before it traces them.
+     * Whether the tracer can tell at once that none of the bundle's rays (maybe a run of squares) hits anything: then
+     * they count as traced with no test, answered in {@code hits} ({@link HitBuffer#setMisses}). False, with nothing
+     * traced, if some ray may hit or the tracer cannot tell, as by default.
      */
     default boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
         return false;
     }
 
-    /**
-     * The intersection tests this tracer has run so far: {@link #work}'s, which a tracer may
-     * count faster ({@code --view cost} asks before and after every ray).
-     */
+    /** The intersection tests run so far, as {@link #work} counts them; faster ({@code --view cost} asks per ray). */
     default long testsRun() {
         return work().intersectionTests();
     }
 
     /**
-     * Whether the ray hits any object nearer than {@code distance} ({@code |P − O| < distance}):
-     * the question of a shadow ray. The answer is the same as {@code nearestHit}'s distance
-     * compared with {@code distance}; a tracer may find it sooner, at the first such hit.
+     * A shadow ray's question: whether the ray hits an object at {@code |P − O| < distance}, as {@code nearestHit}
+     * would say; a tracer may answer at the first such hit.
      */
     default boolean blocked(Ray ray, float distance) {
         Hit hit = nearestHit(ray);

@@ -7,43 +7,35 @@ import java.util.TreeMap;
 import rtd.geometry.IGeometry;
 
 /**
- * How much work tracing took: rays, intersection tests by kind of object, and bounding-volume
- * nodes visited. {@code --stats} prints it per ray, so a student sees N tests per ray without
- * the hierarchy and about log N with it.
+ * How much work tracing took, which {@code --stats} prints per ray, so a student sees N tests per ray without the
+ * hierarchy and about log N with it. The counts by name are kept sorted and unmodifiable.
  *
- * @param rays         the rays traced
- * @param testsByKind  intersection tests per kind of object ("sphere", "triangle", ...)
- * @param nodesVisited bounding-volume nodes visited
+ * @param testsByKind   intersection tests per kind of object ("sphere", "triangle", ...)
+ * @param nodesVisited  bounding-volume nodes visited
  * @param secondaryRays the shader's rays by kind ("shadow", "reflected", ...), which {@code rays} counts too
- * @param answeredBy   the rays by what found their hits ("view grid", "BVH", ...), where a tracer says
+ * @param answeredBy    the rays by what found their hits ("view grid", "BVH", ...), where a tracer says
  */
 public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited, Map<String, Long> secondaryRays,
         Map<String, Long> answeredBy) {
 
-    /** No work at all. */
     public static final WorkCount NONE = new WorkCount(0, Map.of(), 0);
 
-    /** Keeps unmodifiable, sorted copies of the counts. */
     public WorkCount {
         testsByKind = Collections.unmodifiableMap(new TreeMap<>(testsByKind));
         secondaryRays = Collections.unmodifiableMap(new TreeMap<>(secondaryRays));
         answeredBy = Collections.unmodifiableMap(new TreeMap<>(answeredBy));
     }
 
-    /** Work without secondary rays counted apart. */
     public WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisited) {
         this(rays, testsByKind, nodesVisited, Map.of(), Map.of());
     }
 
     /** This work, and {@code secondary} rays more by kind (which {@link #rays} already counts: the tracer traced them). */
     public WorkCount plusSecondary(Map<String, Long> secondary) {
-        return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary), answeredBy);
+        return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary, 1), answeredBy);
     }
 
-    /**
-     * This work, with all its rays answered by {@code structure} ("view grid", "BVH", ...): a
-     * tracer labels its own work so, before it adds another's.
-     */
+    /** This work, all its rays answered by {@code structure}: a tracer labels its own so, before adding another's. */
     public WorkCount answeredBy(String structure) {
         return new WorkCount(rays, testsByKind, nodesVisited, secondaryRays, Map.of(structure, rays));
     }
@@ -53,53 +45,43 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
         return rays - secondaryRays.values().stream().mapToLong(Long::longValue).sum();
     }
 
-    private static Map<String, Long> sum(Map<String, Long> a, Map<String, Long> b) {
+    /** {@code a} plus {@code b} times {@code factor}, by name. */
+    private static Map<String, Long> sum(Map<String, Long> a, Map<String, Long> b, long factor) {
         Map<String, Long> sum = new TreeMap<>(a);
-        b.forEach((key, count) -> sum.merge(key, count, Long::sum));
+        b.forEach((key, count) -> sum.merge(key, count * factor, Long::sum));
         return sum;
     }
 
-    /** One ray's work in the paper's loop: a test of each of {@code objects}, times {@code rays}. */
+    /** The paper's loop's work for {@code rays} rays: each a test of each of {@code objects}. */
     public static WorkCount testsOf(List<IGeometry> objects, long rays) {
         Map<String, Long> tests = new TreeMap<>();
         objects.forEach(object -> tests.merge(object.kind(), 1L, Long::sum));
         return new WorkCount(1, tests, 0).times(rays);
     }
 
-    /** This work done {@code factor} times. */
     public WorkCount times(long factor) {
-        return new WorkCount(rays * factor, scaled(testsByKind, factor), nodesVisited * factor,
-                scaled(secondaryRays, factor), scaled(answeredBy, factor));
+        return new WorkCount(rays * factor, sum(Map.of(), testsByKind, factor), nodesVisited * factor,
+                sum(Map.of(), secondaryRays, factor), sum(Map.of(), answeredBy, factor));
     }
 
-    private static Map<String, Long> scaled(Map<String, Long> counts, long factor) {
-        Map<String, Long> scaled = new TreeMap<>();
-        counts.forEach((key, count) -> scaled.put(key, count * factor));
-        return scaled;
-    }
-
-    /** The sum of this and {@code other}. */
     public WorkCount plus(WorkCount other) {
-        return new WorkCount(rays + other.rays, sum(testsByKind, other.testsByKind), nodesVisited + other.nodesVisited,
-                sum(secondaryRays, other.secondaryRays), sum(answeredBy, other.answeredBy));
+        return new WorkCount(rays + other.rays, sum(testsByKind, other.testsByKind, 1),
+                nodesVisited + other.nodesVisited, sum(secondaryRays, other.secondaryRays, 1),
+                sum(answeredBy, other.answeredBy, 1));
     }
 
-    /** Intersection tests of every kind. */
     public long intersectionTests() {
         return testsByKind.values().stream().mapToLong(Long::longValue).sum();
     }
 
-    /** Intersection tests per ray. */
     public double testsPerRay() {
         return rays == 0 ? 0 : (double) intersectionTests() / rays;
     }
 
-    /** Intersection tests of one kind per ray. */
     public double testsPerRay(String kind) {
         return rays == 0 ? 0 : (double) testsByKind.getOrDefault(kind, 0L) / rays;
     }
 
-    /** Bounding-volume nodes visited per ray. */
     public double nodesPerRay() {
         return rays == 0 ? 0 : (double) nodesVisited / rays;
     }

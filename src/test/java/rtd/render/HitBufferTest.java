@@ -6,6 +6,8 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.geometry.IGeometry;
+import rtd.geometry.Sphere;
+import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
@@ -27,7 +29,6 @@ class HitBufferTest {
         assertThat(hits.missedAll()).isTrue();
         for (int i = 0; i < 6; i++) {
             assertThat(hits.index(i)).isEqualTo(-1);
-            assertThat(hits.t(i)).isNaN();
             assertThat(hits.distance(i)).isEqualTo(Float.POSITIVE_INFINITY);
             assertThat(hits.tests(i)).isZero();
             assertThat(hits.hit(i, RAY, List.<IGeometry>of())).isNull();
@@ -48,7 +49,8 @@ class HitBufferTest {
         assertThat(hits.missedAll()).isFalse();
         assertThat(new int[] {hits.index(0), hits.index(1), hits.index(2), hits.index(3)}).containsExactly(-1, -1, 1,
                 -1);
-        assertThat(hits.t(2)).isEqualTo(3f);
+        Sphere sphere = new Sphere(new Vector3f(0, 0, 5), 1, new Color(1, 2, 3));
+        assertThat(hits.hit(2, RAY, List.of(sphere, sphere)).t()).isEqualTo(3f);
         assertThat(hits.distance(2)).isEqualTo(4f);
         assertThat(hits.distance(3)).isEqualTo(Float.POSITIVE_INFINITY);
         assertThat(new int[] {hits.tests(0), hits.tests(2)}).containsExactly(0, 9);
