@@ -33,6 +33,37 @@ public final class MotionOptions {
             + "inclusive), with the clocks and names they have in the whole animation")
     private String subset;
 
+    /**
+     * Which frames of an animation a run draws and what each is called: frames 0 … N−1, frame i at
+     * {@code clock = i/(N−1)}, from 0 to 1 inclusive as POV-Ray's clock runs; {@code --subset A-B} draws frames
+     * {@code first} to {@code last} of them with the clocks and names they have in the whole animation, so that
+     * machines can share the work. Numbered pictures are {@code NAME-000.png}, …: three digits, or as many as N−1
+     * needs.
+     */
+    record FramePlan(int frames, int first, int last, double fps) {
+
+        double clock(int i) {
+            return i / (double) (frames - 1);
+        }
+
+        int count() {
+            return last - first + 1;
+        }
+
+        /** The GIF's delay between frames, in hundredths of a second: round(100/F), at least 1. */
+        int delayHundredths() {
+            return (int) Math.max(1, Math.round(100 / fps));
+        }
+
+        /** The picture of frame {@code i}: {@code out.png} gives {@code out-007.png}, {@code out} {@code out-007}. */
+        Path frameFile(Path picture, int i) {
+            String name = picture.getFileName().toString();
+            int dot = name.lastIndexOf('.');
+            String number = String.format(Locale.ROOT, "-%0" + Math.max(3, String.valueOf(frames - 1).length()) + "d", i);
+            return picture.resolveSibling(dot > 0 ? name.substring(0, dot) + number + name.substring(dot) : name + number);
+        }
+    }
+
     /** The clock of a single picture: {@code --clock}, or 0. */
     double clock() {
         return clock == null ? 0 : clock;
@@ -41,9 +72,8 @@ public final class MotionOptions {
     /** The frames to draw, or null for one picture; a misuse for what does not go with {@code --frames}. */
     FramePlan plan(CommandLine commandLine, List<Path> scenes, Path output, String replacing) {
         if (frames == null) {
-            String option = subset != null ? "--subset" : "--fps";
-            RtdCommand.refuse(commandLine, subset != null || fps != null, option + " belongs to an animation; give "
-                    + "--frames N too");
+            RtdCommand.refuse(commandLine, subset != null || fps != null, (subset != null ? "--subset" : "--fps")
+                    + " belongs to an animation; give --frames N too");
             return null;
         }
         RtdCommand.refuse(commandLine, clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock "
@@ -54,8 +84,9 @@ public final class MotionOptions {
         RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
                 + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or "
                 + "-o movie.gif");
+        double speed = fps == null ? 24 : fps;
         if (subset == null) {
-            return new FramePlan(frames, 0, frames - 1, fps == null ? 24 : fps);
+            return new FramePlan(frames, 0, frames - 1, speed);
         }
         Matcher matcher = Pattern.compile("\\s*(\\d{1,9})\\s*-\\s*(\\d{1,9})\\s*").matcher(subset);
         String frameRange = "from 0 to " + (frames - 1) + " (--frames " + frames + ")";
@@ -68,6 +99,6 @@ public final class MotionOptions {
         RtdCommand.refuse(commandLine, output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif"),
                 "--subset draws frames to be joined later, as numbered pictures; give -o NAME.png, and join the frames "
                 + "into a GIF or a video when all are drawn");
-        return new FramePlan(frames, first, last, fps == null ? 24 : fps);
+        return new FramePlan(frames, first, last, speed);
     }
 }

@@ -17,6 +17,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.UnmatchedArgumentException;
+import rtd.cli.MotionOptions.FramePlan;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 
@@ -222,10 +223,9 @@ public final class RtdCommand implements Callable<Integer> {
                 err.flush();
             }
             if (frames != null) {
-                new FrameRun(options, streams, err, spec.commandLine(), frames).run(job.source(), job.target(),
-                        job.format(), writerReady, export);
+                new FrameRun(options, streams, err, frames).run(job, writerReady, export, spec.commandLine());
             } else {
-                new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
+                new SceneRun(options, streams, err).run(job, writerReady, export);
             }
             return 0;
         } catch (SceneException | FileError e) {

@@ -10,8 +10,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import rtd.cli.Accelerator.StructureCache;
 import rtd.image.Picture;
-import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
 import rtd.render.ParallelRenderer;
@@ -29,8 +29,7 @@ import rtd.shade.WhittedShader;
  * One scene from file to picture: read, write the {@code --export-pov} file if asked, build what {@code --accel}
  * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
  * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete.
- *
- * @param kept what one frame built that the next may use again
+ * {@code kept} holds what one frame built that the next may use again.
  */
 record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, StructureCache kept) {
 
@@ -38,9 +37,11 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         this(options, streams, err, new StructureCache());
     }
 
-    /** Renders {@code source} to {@code target} once {@code writerReady}; the POV-Ray twin to {@code export}. */
-    void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
-            OutputTarget export) throws SceneException, FileError {
+    /** Renders the job's scene once {@code writerReady}; the POV-Ray twin to {@code export}. */
+    void run(JobPlanner.Job job, CompletableFuture<Void> writerReady, OutputTarget export)
+            throws SceneException, FileError {
+        SceneSource source = job.source();
+        OutputTarget target = job.target();
         String report;
         try (ProgressDisplay display = ProgressDisplay.start(options.progress(), err)) {
             StatsReport stats = new StatsReport();
@@ -63,7 +64,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             display.show(ProgressDisplay.Phase.counted("writing " + target.spelt(),
                     () -> Double.longBitsToDouble(written.get())));
             writerReady.exceptionally(failure -> null).join(); // a failed warm-up: the write says why
-            target.write(result.image(), format, streams.out(), f -> written.set(Double.doubleToLongBits(f)));
+            target.write(result.image(), job.format(), streams.out(), f -> written.set(Double.doubleToLongBits(f)));
             stats.endPhase("write");
             report = options.stats() ? stats.format(scene, accelerator, result.work(),
                     options.paper() ? 1 : options.threads(), target.spelt()) : "";

@@ -9,6 +9,7 @@ import picocli.CommandLine.Option;
 import rtd.accel.Bvh;
 import rtd.accel.LightGrids;
 import rtd.accel.ViewGrid;
+import rtd.cli.Accelerator.StructureCache;
 import rtd.io.SceneException;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
