@@ -1,12 +1,19 @@
 package rtd.cli;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
+import rtd.io.ClockText;
+import rtd.io.SceneError;
+import rtd.io.SceneException;
+import rtd.io.SceneFile;
+import rtd.scene.Scene;
 
 /**
  * The options of motion, a picocli mixin of {@link RtdCommand} (Part III, "Frames on the command line"):
@@ -59,8 +66,34 @@ public final class MotionOptions {
         Path frameFile(Path picture, int i) {
             String name = picture.getFileName().toString();
             int dot = name.lastIndexOf('.');
-            String number = String.format(Locale.ROOT, "-%0" + Math.max(3, String.valueOf(frames - 1).length()) + "d", i);
-            return picture.resolveSibling(dot > 0 ? name.substring(0, dot) + number + name.substring(dot) : name + number);
+            String number = String.format(Locale.ROOT, "-%0" + Math.max(3, String.valueOf(frames - 1).length()) + "d",
+                    i);
+            return picture.resolveSibling(dot > 0 ? name.substring(0, dot) + number + name.substring(dot)
+                    : name + number);
+        }
+
+        /** Each numbered picture's target beside {@code target}, all checked before anything is drawn. */
+        List<OutputTarget> targets(OutputTarget target, Path scene, CommandLine commandLine) throws FileError {
+            if (target.kind() == OutputTarget.Kind.STREAM) {
+                return Collections.nCopies(count(), target);
+            }
+            List<OutputTarget> targets = new ArrayList<>();
+            for (int i = first; i <= last; i++) {
+                targets.add(OutputTarget.of(frameFile(target.spelt(), i), scene, "-o", commandLine));
+            }
+            return targets;
+        }
+
+        /** The scene at frame {@code i}'s clock, {@code scale}d; a mistake names the clock if its message does not. */
+        Scene frame(SceneFile file, Scale scale, int i, List<SceneError> warnings) throws SceneException {
+            try {
+                return scale.of(file.at(clock(i), warnings));
+            } catch (SceneException e) {
+                throw new SceneException(e.errors().stream().map(error -> error.message().contains("clock =") ? error
+                        : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
+                                + ", at clock = " + ClockText.format(clock(i)) + ")", error.sourceLine(), error.help()))
+                        .toList(), false);
+            }
         }
     }
 

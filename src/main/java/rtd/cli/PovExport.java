@@ -25,7 +25,7 @@ final class PovExport {
     private PovExport() {
     }
 
-    /** Writes {@code scene} at {@code width × height} to {@code target}; answers the lines that say how to render it. */
+    /** Writes {@code scene} at {@code width × height} to {@code target}; answers the lines saying how to render it. */
     static String still(Scene scene, OutputTarget target, int width, int height) throws SceneException, FileError {
         String name = target.spelt().getFileName().toString();
         write(target, () -> PovScene.of(scene, width, height, name));

@@ -222,11 +222,7 @@ public final class RtdCommand implements Callable<Integer> {
                 err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
                 err.flush();
             }
-            if (frames != null) {
-                new FrameRun(options, streams, err, frames).run(job, writerReady, export, spec.commandLine());
-            } else {
-                new SceneRun(options, streams, err).run(job, writerReady, export);
-            }
+            new SceneRun(options, streams, err, frames).run(job, writerReady, export, spec.commandLine());
             return 0;
         } catch (SceneException | FileError e) {
             return failed(err, e);

@@ -55,8 +55,8 @@ public final class TeachingOptions {
                 Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}")
                         && !Files.exists(p)).findFirst().orElse(null);
                 RtdCommand.refuse(commandLine, number != null, "--explain takes the pixel as X,Y with a comma, and '"
-                        + number + "' was read as a scene file; did you mean --explain " + explain.strip() + "," + number
-                        + "?");
+                        + number + "' was read as a scene file; did you mean --explain " + explain.strip() + ","
+                        + number + "?");
             }
             String option = replacing != null ? replacing : "--export-pov";
             RtdCommand.oneSceneFile(commandLine, option, options.scenes());
@@ -65,7 +65,8 @@ public final class TeachingOptions {
         }
         if (watch) {
             RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--watch writes the picture "
-                    + "again at each save, which cannot go to standard output ('-o -'); give a file, such as -o out.png");
+                    + "again at each save, which cannot go to standard output ('-o -'); give a file, such as "
+                    + "-o out.png");
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
         RtdCommand.refuse(commandLine, explain != null && view != null, "--explain and --view each take the place of "
