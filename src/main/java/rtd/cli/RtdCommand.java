@@ -199,11 +199,7 @@ public final class RtdCommand implements Callable<Integer> {
                         + "it separates folders with '/'");
             }
             CompletableFuture<Void> writerReady = WarmUp.start(jobs.get(0).format());
-            int exitCode = 0;
-            for (JobPlanner.Job job : jobs) {
-                exitCode = Math.max(exitCode, run(job, options, writerReady, export, frames, err));
-            }
-            return exitCode;
+            return jobs.stream().mapToInt(job -> run(job, options, writerReady, export, frames, err)).max().orElse(0);
         } catch (SceneException | FileError e) {
             return failed(err, e);
         } finally {
