@@ -1,5 +1,6 @@
 package rtd.cli;
 
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
@@ -12,13 +13,9 @@ import rtd.render.Tracer;
 import rtd.scene.Scene;
 
 /**
- * What a run finds its hits with, as {@code --accel} chose it and built it: the tracers (one per
- * thread) and the line {@code --stats} gives the build.
- *
- * @param tracers   a new tracer for each thread
- * @param built     what was built, for {@code --stats}: made only if asked, as formatting numbers
- *                  the first time is slow
- * @param walksTree whether the tracers walk a tree, so that nodes per ray mean something
+ * What a run finds its hits with, as {@code --accel} chose it and built it: a new tracer for each thread, what was
+ * built for {@code --stats} (made only if asked, as formatting numbers the first time is slow), and whether the
+ * tracers walk a tree, so that nodes per ray mean something.
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
@@ -49,11 +46,10 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         if (accel == Choice.none || scene.objects().isEmpty()) {
             return Kind.LOOP;
         }
-        boolean gridFits = ViewGrid.fits(scene); // both cameras: false only for a camera added later
-        if (accel != Choice.bvh && gridFits) {
-            return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
+        if (accel == Choice.bvh || !ViewGrid.fits(scene)) { // fits both cameras: false only for a camera added later
+            return Kind.BVH;
         }
-        return Kind.BVH;
+        return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
     }
 
     /** {@link #build} of what {@code accel} asks ({@link #choose}), from nothing. */
@@ -64,36 +60,31 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
     /** Builds {@code kind} for {@code scene}; the BVH and the light grids from {@code kept} where they still serve. */
     static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads,
             StructureCache kept) {
-        switch (kind) {
-            case GRID -> {
-                ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
-                return new Accelerator(grid::newTracer, () -> describe(grid), false);
-            }
-            case GRID_AND_BVH -> {
-                // the BVH on a thread of its own: each structure has passes on one thread, which the other's fill
-                CompletableFuture<Bvh> tree = CompletableFuture.supplyAsync(() -> kept.bvh(scene), runnable -> {
+        if (kind == Kind.LOOP) {
+            return new Accelerator(() -> new LinearTracer(scene), () -> "no BVH: the paper's loop tests every object",
+                    false);
+        }
+        if (kind == Kind.BVH) {
+            Bvh bvh = kept.bvh(scene);
+            return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+        }
+        // the BVH on a thread of its own: each structure has passes on one thread, which the other's fill
+        CompletableFuture<Bvh> tree = kind == Kind.GRID ? null : CompletableFuture.supplyAsync(() -> kept.bvh(scene),
+                runnable -> {
                     Thread thread = new Thread(runnable, "rtd-build");
                     thread.setDaemon(true);
                     thread.start();
                 });
-                ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
-                LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
-                Bvh bvh = join(tree);
-                return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(grid)
-                        + ", " + (lights.count() == 0 ? "no light grid"
-                                : StatsReport.count(lights.count(), "light grid") + " of "
-                                + StatsReport.count(lights.entries(), "entry", "entries")) + ", and BVH of "
-                        + StatsReport.count(bvh.nodeCount(), "node"), true);
-            }
-            case BVH -> {
-                Bvh bvh = kept.bvh(scene);
-                return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
-            }
-            default -> {
-                return new Accelerator(() -> new LinearTracer(scene), () -> "no BVH: the paper's loop tests every object",
-                        false);
-            }
+        ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
+        if (tree == null) {
+            return new Accelerator(grid::newTracer, () -> describe(grid), false);
         }
+        LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
+        Bvh bvh = join(tree);
+        return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(grid) + ", "
+                + (lights.count() == 0 ? "no light grid" : StatsReport.count(lights.count(), "light grid") + " of "
+                        + StatsReport.count(lights.entries(), "entry", "entries")) + ", and BVH of "
+                + StatsReport.count(bvh.nodeCount(), "node"), true);
     }
 
     private static String describe(ViewGrid grid) {
@@ -106,13 +97,50 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         try {
             return built.join();
         } catch (CompletionException e) {
-            if (e.getCause() instanceof RuntimeException runtime) {
-                throw runtime;
-            }
             if (e.getCause() instanceof Error error) {
                 throw error;
             }
-            throw e;
+            throw e.getCause() instanceof RuntimeException runtime ? runtime : e;
+        }
+    }
+
+    /**
+     * The structures of a run's frames that do not depend on the camera, kept from one frame to the next: the BVH
+     * while the frame's objects equal the last frame's, the light grids while its objects and lights do. Records
+     * compare by value; a shape that is no record (a mesh's triangle) equals only itself, so a shape made anew is
+     * built anew. A camera that moves over still objects rebuilds only the view grid, and every pixel is the one a
+     * build from nothing gives.
+     */
+    static final class StructureCache {
+
+        private final Last<Bvh> bvh = new Last<>();
+        private final Last<LightGrids> lightGrids = new Last<>();
+
+        /** The BVH of {@code scene}'s objects: the last one if they are equal to its objects. */
+        Bvh bvh(Scene scene) {
+            return bvh.get(scene.objects(), () -> Bvh.build(scene));
+        }
+
+        /** The light grids of {@code scene}'s objects and lights: the last ones if both, and the size, are equal. */
+        LightGrids lightGrids(Scene scene, int width, int height, int samples, int threads) {
+            return lightGrids.get(List.of(scene.objects(), scene.lights(), width, height, samples),
+                    () -> LightGrids.build(scene, width, height, samples, threads));
+        }
+
+        /** The last value built and what it was built for; its own lock, so that two structures build side by side. */
+        private static final class Last<V> {
+            private List<?> key;
+            private V value;
+
+            synchronized V get(List<?> wanted, Supplier<V> build) {
+                if (value == null || !wanted.equals(key)) {
+                    key = null;
+                    value = null; // the old structure and its objects may go before the new one is built
+                    value = build.get();
+                    key = wanted;
+                }
+                return value;
+            }
         }
     }
 }

@@ -1,12 +1,19 @@
 package rtd.cli;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
 import picocli.CommandLine.Option;
+import rtd.io.ClockedScene;
+import rtd.io.SceneError;
+import rtd.io.SceneException;
+import rtd.io.SceneFile;
+import rtd.scene.Scene;
 
 /**
  * The options of motion, a picocli mixin of {@link RtdCommand} (Part III, "Frames on the command line"):
@@ -33,6 +40,63 @@ public final class MotionOptions {
             + "inclusive), with the clocks and names they have in the whole animation")
     private String subset;
 
+    /**
+     * Which frames of an animation a run draws and what each is called: frames 0 … N−1, frame i at
+     * {@code clock = i/(N−1)}, from 0 to 1 inclusive as POV-Ray's clock runs; {@code --subset A-B} draws frames
+     * {@code first} to {@code last} of them with the clocks and names they have in the whole animation, so that
+     * machines can share the work. Numbered pictures are {@code NAME-000.png}, …: three digits, or as many as N−1
+     * needs.
+     */
+    record FramePlan(int frames, int first, int last, double fps) {
+
+        double clock(int i) {
+            return i / (double) (frames - 1);
+        }
+
+        int count() {
+            return last - first + 1;
+        }
+
+        /** The GIF's delay between frames, in hundredths of a second: round(100/F), at least 1. */
+        int delayHundredths() {
+            return (int) Math.max(1, Math.round(100 / fps));
+        }
+
+        /** The picture of frame {@code i}: {@code out.png} gives {@code out-007.png}, {@code out} {@code out-007}. */
+        Path frameFile(Path picture, int i) {
+            String name = picture.getFileName().toString();
+            int dot = name.lastIndexOf('.');
+            String number = String.format(Locale.ROOT, "-%0" + Math.max(3, String.valueOf(frames - 1).length()) + "d",
+                    i);
+            return picture.resolveSibling(dot > 0 ? name.substring(0, dot) + number + name.substring(dot)
+                    : name + number);
+        }
+
+        /** Each numbered picture's target beside {@code target}, all checked before anything is drawn. */
+        List<OutputTarget> targets(OutputTarget target, Path scene, CommandLine commandLine) throws FileError {
+            if (target.kind() == OutputTarget.Kind.STREAM) {
+                return Collections.nCopies(count(), target);
+            }
+            List<OutputTarget> targets = new ArrayList<>();
+            for (int i = first; i <= last; i++) {
+                targets.add(OutputTarget.of(frameFile(target.spelt(), i), scene, "-o", commandLine));
+            }
+            return targets;
+        }
+
+        /** The scene at frame {@code i}'s clock, {@code scale}d; a mistake names the clock if its message does not. */
+        Scene frame(SceneFile file, Scale scale, int i, List<SceneError> warnings) throws SceneException {
+            try {
+                return scale.of(file.at(clock(i), warnings));
+            } catch (SceneException e) {
+                throw new SceneException(e.errors().stream().map(error -> error.message().contains("clock =") ? error
+                        : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
+                                + ", at clock = " + ClockedScene.clockText(clock(i)) + ")", error.sourceLine(), error.help()))
+                        .toList(), false);
+            }
+        }
+    }
+
     /** The clock of a single picture: {@code --clock}, or 0. */
     double clock() {
         return clock == null ? 0 : clock;
@@ -41,9 +105,8 @@ public final class MotionOptions {
     /** The frames to draw, or null for one picture; a misuse for what does not go with {@code --frames}. */
     FramePlan plan(CommandLine commandLine, List<Path> scenes, Path output, String replacing) {
         if (frames == null) {
-            String option = subset != null ? "--subset" : "--fps";
-            RtdCommand.refuse(commandLine, subset != null || fps != null, option + " belongs to an animation; give "
-                    + "--frames N too");
+            RtdCommand.refuse(commandLine, subset != null || fps != null, (subset != null ? "--subset" : "--fps")
+                    + " belongs to an animation; give --frames N too");
             return null;
         }
         RtdCommand.refuse(commandLine, clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock "
@@ -54,8 +117,9 @@ public final class MotionOptions {
         RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
                 + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or "
                 + "-o movie.gif");
+        double speed = fps == null ? 24 : fps;
         if (subset == null) {
-            return new FramePlan(frames, 0, frames - 1, fps == null ? 24 : fps);
+            return new FramePlan(frames, 0, frames - 1, speed);
         }
         Matcher matcher = Pattern.compile("\\s*(\\d{1,9})\\s*-\\s*(\\d{1,9})\\s*").matcher(subset);
         String frameRange = "from 0 to " + (frames - 1) + " (--frames " + frames + ")";
@@ -68,6 +132,6 @@ public final class MotionOptions {
         RtdCommand.refuse(commandLine, output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif"),
                 "--subset draws frames to be joined later, as numbered pictures; give -o NAME.png, and join the frames "
                 + "into a GIF or a video when all are drawn");
-        return new FramePlan(frames, first, last, fps == null ? 24 : fps);
+        return new FramePlan(frames, first, last, speed);
     }
 }

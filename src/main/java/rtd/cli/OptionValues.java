@@ -48,15 +48,11 @@ final class OptionValues {
         }
     }
 
-    /** {@code --threads N}, at most {@link #max()}: more only wait their turn, and over 32,767 fork/join fails. */
+    /** {@code --threads N}, at most 4 a core: more only wait their turn, and over 32,767 fork/join fails. */
     static final class Threads implements ITypeConverter<Integer> {
-        static int max() {
-            return 4 * Runtime.getRuntime().availableProcessors();
-        }
-
         @Override
         public Integer convert(String value) {
-            return Math.min(new PositiveWhole().convert(value), max());
+            return Math.min(new PositiveWhole().convert(value), 4 * Runtime.getRuntime().availableProcessors());
         }
     }
 

@@ -3,6 +3,7 @@ package rtd.cli;
 import java.util.ArrayList;
 import java.util.List;
 import rtd.camera.ICamera;
+import rtd.cli.MotionOptions.FramePlan;
 import rtd.io.ClockedScene;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
@@ -24,48 +25,50 @@ final class PovExport {
     private PovExport() {
     }
 
-    /**
-     * Writes {@code scene} at {@code width × height} to {@code target}; answers the lines that say how to render it.
-     */
-    static String still(Scene scene, OutputTarget target, int width, int height) throws FileError {
+    /** Writes {@code scene} at {@code width × height} to {@code target}; answers the lines saying how to render it. */
+    static String still(Scene scene, OutputTarget target, int width, int height) throws SceneException, FileError {
         String name = target.spelt().getFileName().toString();
-        String pov;
-        try {
-            pov = PovScene.of(scene, width, height, name);
-        } catch (IllegalArgumentException e) {
-            throw cannotExport(e);
-        }
-        target.writeText(pov); // outside the catch: a failed write is not a scene POV-Ray cannot show
+        write(target, () -> PovScene.of(scene, width, height, name));
         return "rtd: wrote " + target.spelt() + "; render it with POV-Ray (apt-get install povray):\n" + cd(target)
-                + PovScene.command(name, name.replaceAll("(?i)\\.pov$", "") + "-pov.png", width, height);
+                + command(name, width, height);
     }
 
     /** Writes the animation's POV-Ray twin to {@code target}; answers the lines that say how to render it. */
     static String frames(SceneFile file, FramePlan plan, RenderOptions options, OutputTarget target)
             throws SceneException, FileError {
-        String name = target.spelt().getFileName().toString();
-        String command = PovScene.command(name, name.replaceAll("(?i)\\.pov$", "") + "-pov.png", options.width(),
-                options.height()) + " +KFI0 +KFF" + (plan.frames() - 1) + " +KI0 +KF1";
-        String pov = "// An animation of " + plan.frames() + " frames, written by rtd --export-pov --frames "
+        String command = command(target.spelt().getFileName().toString(), options.width(), options.height())
+                + " +KFI0 +KFF" + (plan.frames() - 1) + " +KI0 +KF1";
+        String header = "// An animation of " + plan.frames() + " frames, written by rtd --export-pov --frames "
                 + plan.frames() + ". Render all of them with\n//   " + command + "\n";
-        try {
-            if (!file.usesClock()) {
-                ClockedScene read = file.withClock(0);
-                pov += "// The scene does not use the clock: every frame is the same picture.\n"
-                        + PovScene.of(read.with(options.scale().of(read.scene())), options.width(), options.height());
-            } else {
-                pov += animation(file, plan, options);
+        write(target, () -> {
+            if (file.usesClock()) {
+                return header + animation(file, plan, options);
             }
-        } catch (IllegalArgumentException e) {
-            throw cannotExport(e);
-        }
-        target.writeText(pov);
+            ClockedScene read = file.withClock(0);
+            return header + "// The scene does not use the clock: every frame is the same picture.\n"
+                    + PovScene.of(read.with(options.scale().of(read.scene())), options.width(), options.height());
+        });
         return "rtd: wrote " + target.spelt() + "; render its " + plan.frames() + " frames with POV-Ray:\n" + cd(target)
                 + command;
     }
 
-    private static FileError cannotExport(IllegalArgumentException e) {
-        return new FileError("cannot export to POV-Ray: " + e.getMessage());
+    /** The text {@code pov} makes, written to {@code target}; a scene POV-Ray cannot show is a file error. */
+    private static void write(OutputTarget target, PovText pov) throws SceneException, FileError {
+        String text;
+        try {
+            text = pov.text();
+        } catch (IllegalArgumentException e) {
+            throw new FileError("cannot export to POV-Ray: " + e.getMessage());
+        }
+        target.writeText(text); // outside the catch: a failed write is not a scene POV-Ray cannot show
+    }
+
+    private interface PovText {
+        String text() throws SceneException;
+    }
+
+    private static String command(String name, int width, int height) {
+        return PovScene.command(name, name.replaceAll("(?i)\\.pov$", "") + "-pov.png", width, height);
     }
 
     private static String cd(OutputTarget target) {

@@ -17,6 +17,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.UnmatchedArgumentException;
+import rtd.cli.MotionOptions.FramePlan;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 
@@ -198,11 +199,7 @@ public final class RtdCommand implements Callable<Integer> {
                         + "it separates folders with '/'");
             }
             CompletableFuture<Void> writerReady = WarmUp.start(jobs.get(0).format());
-            int exitCode = 0;
-            for (JobPlanner.Job job : jobs) {
-                exitCode = Math.max(exitCode, run(job, options, writerReady, export, frames, err));
-            }
-            return exitCode;
+            return jobs.stream().mapToInt(job -> run(job, options, writerReady, export, frames, err)).max().orElse(0);
         } catch (SceneException | FileError e) {
             return failed(err, e);
         } finally {
@@ -221,12 +218,7 @@ public final class RtdCommand implements Callable<Integer> {
                 err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
                 err.flush();
             }
-            if (frames != null) {
-                new FrameRun(options, streams, err, spec.commandLine(), frames).run(job.source(), job.target(),
-                        job.format(), writerReady, export);
-            } else {
-                new SceneRun(options, streams, err).run(job.source(), job.target(), job.format(), writerReady, export);
-            }
+            new SceneRun(options, streams, err, frames).run(job, writerReady, export, spec.commandLine());
             return 0;
         } catch (SceneException | FileError e) {
             return failed(err, e);

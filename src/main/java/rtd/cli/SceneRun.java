@@ -1,19 +1,32 @@
 package rtd.cli;
 
 import java.awt.image.BufferedImage;
+import java.io.IOException;
 import java.io.PrintWriter;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import picocli.CommandLine;
+import rtd.cli.Accelerator.StructureCache;
+import rtd.cli.MotionOptions.FramePlan;
 import rtd.image.Picture;
+import rtd.io.AnimatedGif;
+import rtd.io.ClockedScene;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
+import rtd.io.SceneFile;
 import rtd.render.ParallelRenderer;
 import rtd.render.RenderProgress;
 import rtd.render.RenderResult;
@@ -28,19 +41,43 @@ import rtd.shade.WhittedShader;
 /**
  * One scene from file to picture: read, write the {@code --export-pov} file if asked, build what {@code --accel}
  * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
- * {@code --stats} and shown on the progress line. The picture replaces its file only once it is complete.
- *
- * @param kept what one frame built that the next may use again
+ * {@code --stats} and shown on the progress line. With {@code --frames N} (Part III, "Frames on the command line")
+ * the file is read once and parsed at each frame's clock, and what one frame built that the next may use is kept;
+ * a scene that never uses the clock is drawn once. A small file is first parsed at every clock, so that a value
+ * breaking a rule at some frame stops the run before any drawing. While a frame is written the next is drawn:
+ * numbered pictures on two threads, each a frame behind, or a GIF's frames in order on one. Each picture replaces
+ * its file only once it is complete; a GIF as a whole.
  */
-record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, StructureCache kept) {
+final class SceneRun {
 
-    SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err) {
-        this(options, streams, err, new StructureCache());
+    /** Files up to this size are parsed at every clock before the first frame is drawn. */
+    private static final int CHECKED_AHEAD = 1 << 20;
+
+    private final RenderOptions options;
+    private final StandardStreams streams;
+    private final PrintWriter err;
+    private final FramePlan plan;
+    private final StructureCache kept = new StructureCache();
+    private final ArrayDeque<Future<?>> pending = new ArrayDeque<>();
+    private AnimatedGif gif;
+
+    /** A run of one picture, or for a {@code plan} not null of its frames. */
+    SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, FramePlan plan) {
+        this.options = options;
+        this.streams = streams;
+        this.err = err;
+        this.plan = plan;
     }
 
-    /** Renders {@code source} to {@code target} once {@code writerReady}; the POV-Ray twin to {@code export}. */
-    void run(SceneSource source, OutputTarget target, ImageFormat format, CompletableFuture<Void> writerReady,
-            OutputTarget export) throws SceneException, FileError {
+    /** Renders the job's scene once {@code writerReady}; the POV-Ray twin to {@code export}. */
+    void run(JobPlanner.Job job, CompletableFuture<Void> writerReady, OutputTarget export, CommandLine commandLine)
+            throws SceneException, FileError {
+        if (plan != null) {
+            frames(job, writerReady, export, commandLine);
+            return;
+        }
+        SceneSource source = job.source();
+        OutputTarget target = job.target();
         String report;
         try (ProgressDisplay display = ProgressDisplay.start(options.progress(), err)) {
             StatsReport stats = new StatsReport();
@@ -52,7 +89,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
                     options.samples(), options.threads(), kept);
             stats.endPhase("build");
 
-            warn(scene, source, options, display);
+            warn(scene, source, display);
             RenderResult result = render(scene, accelerator, display);
             stats.endPhase("render");
             if (!NothingInView.hitSomething(scene, accelerator.tracers(), result.image(), options.threads())) {
@@ -63,7 +100,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
             display.show(ProgressDisplay.Phase.counted("writing " + target.spelt(),
                     () -> Double.longBitsToDouble(written.get())));
             writerReady.exceptionally(failure -> null).join(); // a failed warm-up: the write says why
-            target.write(result.image(), format, streams.out(), f -> written.set(Double.doubleToLongBits(f)));
+            target.write(result.image(), job.format(), streams.out(), f -> written.set(Double.doubleToLongBits(f)));
             stats.endPhase("write");
             report = options.stats() ? stats.format(scene, accelerator, result.work(),
                     options.paper() ? 1 : options.threads(), target.spelt()) : "";
@@ -72,7 +109,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
     }
 
     /** Warns of what in {@code scene} looks wrong ({@link SceneWarnings}); with {@code --paper}, not of lights. */
-    static void warn(Scene scene, SceneSource source, RenderOptions options, ProgressDisplay display) {
+    private void warn(Scene scene, SceneSource source, ProgressDisplay display) {
         SceneWarnings.of(scene, options.width(), options.height(), !options.paper())
                 .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
     }
@@ -98,7 +135,7 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
      * the scene has lights; for {@code --paper}, the paper's own {@link Scene#render}, one ray a pixel on this
      * thread, in flat colours. The progress line counts the rays as the tracers do, which {@code --stats} sums.
      */
-    RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
+    private RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
         int width = options.width();
         int height = options.height();
         if (options.paper()) {
@@ -138,10 +175,123 @@ record SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err,
         }
     }
 
-    /** One frame of an animation, quietly, with what the last frame built if it still serves ({@link #kept}). */
-    Picture draw(Scene scene) {
-        Accelerator accelerator = Accelerator.build(Accelerator.choose(scene, options.engine()), scene, options.width(),
-                options.height(), options.samples(), options.threads(), kept);
-        return render(scene, accelerator, ProgressDisplay.start(false, err)).image();
+    /** Draws the plan's frames of the job's scene (numbered pictures, one GIF); the POV-Ray twin to {@code export}. */
+    private void frames(JobPlanner.Job job, CompletableFuture<Void> writerReady, OutputTarget export,
+            CommandLine commandLine) throws SceneException, FileError {
+        boolean isGif = job.format().extension().equals("gif");
+        if (options.stats()) {
+            err.println("rtd: note: --stats times the phases of one picture; with --frames it is not used");
+        }
+        List<OutputTarget> targets = isGif ? List.of(job.target()) : plan.targets(job.target(), job.source().stdin()
+                ? streams.inPath().orElse(job.source().path()) : job.source().path(), commandLine);
+        SceneFile file = job.source().readFile(streams);
+        ExecutorService writers = Executors.newFixedThreadPool(isGif ? 1 : 2, runnable -> {
+            Thread thread = new Thread(runnable, "rtd-frame-writer");
+            thread.setDaemon(true);
+            return thread;
+        });
+        try (ProgressDisplay display = ProgressDisplay.start(options.progress(), err)) {
+            display.show(ProgressDisplay.Phase.of("reading " + job.source().name()));
+            List<SceneError> warnings = new ArrayList<>();
+            Scene first = plan.frame(file, options.scale(), plan.first(), warnings);
+            warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
+            if (file.usesClock() && file.size() <= CHECKED_AHEAD) { // a mistake at any frame stops the run now
+                for (int i = plan.first() + 1; i <= plan.last(); i++) {
+                    plan.frame(file, options.scale(), i, null);
+                }
+            }
+            if (export != null) {
+                display.show(ProgressDisplay.Phase.of("writing " + export.spelt()));
+                display.message(PovExport.frames(file, plan, options, export));
+            }
+            warn(first, job.source(), display);
+            writerReady.exceptionally(failure -> null).join();
+            Picture picture = null;
+            for (int i = plan.first(); i <= plan.last(); i++) {
+                int done = i - plan.first();
+                String name = String.format("frame %d (%d to %d), clock %s", i, plan.first(), plan.last(),
+                        ClockedScene.clockText(plan.clock(i)));
+                display.show(ProgressDisplay.Phase.counted(name, () -> done / (double) plan.count()));
+                if (picture == null || file.usesClock()) { // quietly, with what the last frame built if it serves
+                    Scene scene = i == plan.first() ? first : plan.frame(file, options.scale(), i, null);
+                    picture = render(scene, Accelerator.build(Accelerator.choose(scene, options.engine()), scene,
+                            options.width(), options.height(), options.samples(), options.threads(), kept),
+                            ProgressDisplay.start(false, err)).image();
+                }
+                Picture drawn = picture;
+                OutputTarget target = targets.get(isGif ? 0 : done);
+                waitUntilPending(isGif ? 0 : 1);
+                pending.addLast(writers.submit(() -> write(drawn, target, job.format(), isGif)));
+            }
+            waitUntilPending(0);
+            if (isGif) { // once every frame is in: a GIF that failed midway never replaces the file
+                pending.addLast(writers.submit(() -> write(null, targets.get(0), job.format(), true)));
+                waitUntilPending(0);
+            }
+        } finally {
+            stop(writers);
+        }
+        err.print("rtd: wrote " + (isGif ? targets.get(0).spelt() + " (" + plan.count() + " frames, a delay of "
+                + plan.delayHundredths() + " hundredths of a second each)" : targets.size() == 1 ? "1 frame, "
+                + targets.get(0).spelt() : targets.size() + " frames, " + targets.get(0).spelt() + " to "
+                + targets.get(targets.size() - 1).spelt()) + "\n");
+    }
+
+    /** Writes one frame, on a writer's thread: a numbered picture, or the GIF's next frame (null: its end). */
+    private Void write(Picture picture, OutputTarget target, ImageFormat format, boolean isGif) throws FileError {
+        if (!isGif) {
+            target.write(picture, format, streams.out(), f -> { });
+            return null;
+        }
+        try { // the GIF's file is opened at the first frame (a FIFO waits for its reader there)
+            if (gif == null) {
+                int delay = plan.delayHundredths();
+                gif = target.kind() == OutputTarget.Kind.STREAM ? AnimatedGif.into(target.file(), delay)
+                        : AnimatedGif.replacing(target.file(), delay);
+            }
+            if (picture == null) {
+                gif.finish();
+            } else {
+                gif.add(picture);
+            }
+            return null;
+        } catch (IOException e) {
+            throw new FileError("cannot write '" + target.spelt() + "'", e);
+        }
+    }
+
+    /** Waits, oldest first, until at most {@code most} frames wait to be written; a failed write is thrown. */
+    private void waitUntilPending(int most) throws FileError {
+        while (pending.size() > most) {
+            try {
+                pending.removeFirst().get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new FileError("interrupted while writing the frames");
+            } catch (ExecutionException e) {
+                if (e.getCause() instanceof FileError error) {
+                    throw error;
+                }
+                throw e.getCause() instanceof RuntimeException runtime ? runtime
+                        : new IllegalStateException(e.getCause());
+            }
+        }
+    }
+
+    /** Stops the writers, then lets an unfinished GIF's file go. */
+    private void stop(ExecutorService writers) {
+        writers.shutdownNow();
+        try {
+            writers.awaitTermination(1, TimeUnit.MINUTES); // the GIF is closed once no frame is being added
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        try {
+            if (gif != null) {
+                gif.close();
+            }
+        } catch (IOException e) {
+            // the run has failed already, or the GIF is in place: nothing to add
+        }
     }
 }

@@ -49,49 +49,50 @@ public final class TeachingOptions {
 
     /** Runs what takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}); else null. */
     Integer run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
-        String option = watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : "--export-pov";
-        if (watch || explain != null || view != null || exportPov != null) { // one scene file: one answer, read once
-            Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}") && !Files.exists(p))
-                    .findFirst().orElse(null); // --explain 300 400 reads 400 as a scene
-            RtdCommand.refuse(commandLine, explain != null && explain.matches("\\s*\\d{1,9}\\s*") && number != null,
-                    "--explain takes the pixel as X,Y with a comma, and '" + number + "' was read as a scene file; did "
-                    + "you mean --explain " + (explain == null ? "" : explain.strip()) + "," + number + "?");
+        String replacing = replacingOption();
+        if (replacing != null || exportPov != null) { // one scene file: one answer, read once
+            if (explain != null && explain.matches("\\s*\\d{1,9}\\s*")) { // --explain 300 400 reads 400 as a scene
+                Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}")
+                        && !Files.exists(p)).findFirst().orElse(null);
+                RtdCommand.refuse(commandLine, number != null, "--explain takes the pixel as X,Y with a comma, and '"
+                        + number + "' was read as a scene file; did you mean --explain " + explain.strip() + ","
+                        + number + "?");
+            }
+            String option = replacing != null ? replacing : "--export-pov";
             RtdCommand.oneSceneFile(commandLine, option, options.scenes());
             RtdCommand.refuse(commandLine, options.scene().toString().equals("-"), option + " needs a scene file; it "
                     + "cannot work on standard input ('-')");
         }
-        RtdCommand.refuse(commandLine, watch && OutputTarget.DASH.equals(options.output()),
-                "--watch writes the picture again at each save, which cannot go to standard output ('-o -'); give a "
-                + "file, such as -o out.png");
         if (watch) {
+            RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--watch writes the picture "
+                    + "again at each save, which cannot go to standard output ('-o -'); give a file, such as "
+                    + "-o out.png");
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
         RtdCommand.refuse(commandLine, explain != null && view != null, "--explain and --view each take the place of "
                 + "the picture; give one of them");
-        int[] pixel = explain == null ? null : pixel(options, commandLine);
-        if (pixel == null && view == null) {
+        if (explain == null && view == null) {
             return null;
         }
+        int[] pixel = explain == null ? null : pixel(options, commandLine);
         if (view != null) {
             Memory.checkImageFits(commandLine, options.width(), options.height(), options.scale());
         }
         // every file is planned before the scene is read and anything is written, every misuse before a file's problem
-        FileError refused = null;
-        OutputTarget povTarget = null;
-        OutputTarget viewTarget = null;
+        OutputTarget povTarget;
         try {
             povTarget = planExport(options, commandLine);
         } catch (FileError e) {
-            refused = e;
+            try {
+                if (view != null) {
+                    viewTarget(options, commandLine);
+                }
+            } catch (FileError later) {
+                // the export's comes first
+            }
+            throw e;
         }
-        try {
-            viewTarget = pixel == null ? viewTarget(options, commandLine) : null;
-        } catch (FileError e) {
-            refused = refused == null ? e : refused;
-        }
-        if (refused != null) {
-            throw refused;
-        }
+        OutputTarget viewTarget = view != null ? viewTarget(options, commandLine) : null;
         if (pixel != null && options.output() != null) {
             err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
         }

@@ -9,6 +9,7 @@ import picocli.CommandLine.Option;
 import rtd.accel.Bvh;
 import rtd.accel.LightGrids;
 import rtd.accel.ViewGrid;
+import rtd.cli.Accelerator.StructureCache;
 import rtd.io.SceneException;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
@@ -31,9 +32,8 @@ public final class WindowOptions {
         {"--export-pov", "export without --window"}, {"--paper", "--accel none traces with the paper's loop"},
         {"--frames", "render the frames without --window"}, {"-o", "Ctrl+S saves the picture beside the scene"}};
 
-    /** The window's picture without --width, --height or --scale: half the default picture each way. */
-    static final int WIDTH = 960;
-    static final int HEIGHT = 540;
+    private static final int WIDTH = 960;
+    private static final int HEIGHT = 540;
 
     @Option(names = "--window", description = "instead of writing the picture, open the scene in a window (960x540 "
             + "unless --width, --height or --scale say otherwise): it renders coarse at once and refines; drag to "
@@ -60,7 +60,11 @@ public final class WindowOptions {
         if (missing != null) {
             return noDisplay(err, missing);
         }
-        RenderOptions sized = windowSize(options, commandLine);
+        // without a size given, half the default each way (the default at --scale 0.5), to fit a screen
+        RenderOptions sized = options.given() || commandLine.getParseResult().hasMatchedOption("--scale") ? options
+                : new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, new Scale((double) WIDTH
+                / RtdCommand.DEFAULT_WIDTH), false, options.threads(), options.accel(), options.paper(),
+                options.samples(), options.stats(), options.progress(), options.clock());
         Memory.checkImageFits(commandLine, sized.width(), sized.height(), sized.scale());
         WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel().name(),
                 sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads(), sized.clock());
@@ -72,16 +76,6 @@ public final class WindowOptions {
         } catch (IOException e) {
             throw e.getCause() instanceof FileError error ? error : new FileError(e.getMessage());
         }
-    }
-
-    /** The size given, or {@value #WIDTH} × {@value #HEIGHT}: the default at {@code --scale 0.5}, to fit a screen. */
-    private static RenderOptions windowSize(RenderOptions options, CommandLine commandLine) {
-        if (options.given() || commandLine.getParseResult().hasMatchedOption("--scale")) {
-            return options;
-        }
-        Scale half = new Scale((double) WIDTH / RtdCommand.DEFAULT_WIDTH);
-        return new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, half, false, options.threads(),
-                options.accel(), options.paper(), options.samples(), options.stats(), options.progress(), options.clock());
     }
 
     /** No screen to open the window on (a server, SSH without X, CI): exit code 2, as for a misuse. */
@@ -124,10 +118,9 @@ public final class WindowOptions {
             @Override
             public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
                 Accelerator.Kind kind = Accelerator.choose(scene, accel);
-                if (kind != Accelerator.Kind.GRID_AND_BVH) {
-                    // a view grid answers only the camera's own rays (forPicture): others take the loop or the BVH
-                    Accelerator.Kind any = kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH;
-                    return Accelerator.build(any, scene, width, height, 1, threads, kept).tracers();
+                if (kind != Accelerator.Kind.GRID_AND_BVH) { // a view grid answers only its camera's rays (forPicture)
+                    return Accelerator.build(kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH, scene, width,
+                            height, 1, threads, kept).tracers();
                 }
                 Bvh bvh = kept.bvh(scene);
                 LightGrids lights = kept.lightGrids(scene, width, height, 1, threads);

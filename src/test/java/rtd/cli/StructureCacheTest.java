@@ -7,6 +7,7 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.camera.PerspectiveCamera;
+import rtd.cli.Accelerator.StructureCache;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Sphere;
