@@ -108,7 +108,7 @@ final class DefinedNames {
         for (Definition definition : definitions) {
             String name = definition.name();
             boolean unnamed = !named.contains(name) && !namedByPatterns.contains(name);
-            if (!definition.kind().equals("material") && unnamed && warnings.size() < SceneParser.MAX_ERRORS) {
+            if (!definition.kind().equals("material") && unnamed && warnings.size() < SceneException.MAX_ERRORS) {
                 boolean pattern = definition.kind().equals("pattern");
                 warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
                         + (pattern ? "no object names it" : "no object or pattern names it"), pattern
@@ -122,7 +122,7 @@ final class DefinedNames {
 
     /**
      * The warnings about the materials, in file order, of which objects {@code named} some: at most
-     * {@link SceneParser#MAX_ERRORS} and a last line for the rest, as a library of materials could give thousands.
+     * {@link SceneException#MAX_ERRORS} and a last line for the rest, as a library of materials could give thousands.
      */
     List<SceneError> materialWarnings(Set<String> named, boolean lit) {
         List<Definition> materials = definitions.stream().filter(d -> d.value() instanceof Material).toList();
@@ -145,7 +145,7 @@ final class DefinedNames {
                         + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
-        int most = SceneParser.MAX_ERRORS;
+        int most = SceneException.MAX_ERRORS;
         if (warnings.size() <= most) {
             return warnings;
         }

@@ -9,6 +9,8 @@ import java.util.stream.Collectors;
  */
 public final class SceneException extends Exception {
 
+    /** After this many errors reading stops; more would only scroll the first ones away. */
+    public static final int MAX_ERRORS = 20;
     private static final long serialVersionUID = 1L;
 
     private final transient List<SceneError> errors;

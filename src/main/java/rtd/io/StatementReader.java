@@ -32,9 +32,9 @@ final class StatementReader {
         contents.readFrom(values);
     }
 
-    /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}. */
+    /** Reads every line, until the end or one error past {@link SceneException#MAX_ERRORS}. */
     void readAll() {
-        while (cursor.pos < cursor.bytes.length && contents.errors.size() <= SceneParser.MAX_ERRORS) {
+        while (cursor.pos < cursor.bytes.length && contents.errors.size() <= SceneException.MAX_ERRORS) {
             try {
                 readStatement();
             } catch (StatementError e) {
