@@ -46,7 +46,7 @@ final class ObjReader {
         byte[] bytes = source.bytes();
         for (int i = 0; i < bytes.length; i++) {
             if (bytes[i] == 0) {
-                throw new SceneException(List.of(TextBytes.inObjFile(source, i)), false);
+                throw new SceneException(List.of(source.nulInObj(i)), false);
             }
         }
         return new ObjReader(source, TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();

@@ -123,9 +123,9 @@ public final class SceneFile {
                 plain &= bytes[i] > 0;
             }
         }
-        int bad = plain ? -1 : TextBytes.firstBadByte(bytes, start, bytes.length);
+        int bad = plain ? -1 : SourceText.firstBadByte(bytes, start, bytes.length);
         if (bad >= 0) {
-            throw new SceneException(List.of(TextBytes.error(source, start, bad)), false);
+            throw new SceneException(List.of(source.notUtf8(start, bad)), false);
         }
         // Most lines of a large file make one object, so the list is made that long at once: grown
         // line by line, its large arrays would go to the old generation, and stay there long.

@@ -168,7 +168,7 @@ public final class SceneIO {
             }
             filled += read;
             int whole = wholeCharacters(bytes, checked, filled);
-            if (TextBytes.firstBadByte(bytes, checked, whole) >= 0) {
+            if (SourceText.firstBadByte(bytes, checked, whole) >= 0) {
                 break; // the rest cannot change the verdict: not a scene
             }
             checked = whole;
