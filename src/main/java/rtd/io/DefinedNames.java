@@ -1,48 +1,51 @@
 package rtd.io;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
-import rtd.io.SceneContents.Definition;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
 import rtd.geometry.Patterned;
 import rtd.geometry.Transformed;
 import rtd.image.Color;
+import rtd.io.SceneContents.Definition;
+import rtd.io.SceneContents.Found;
 import rtd.math.Matrix4;
 
 /**
- * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each
- * name is defined once, by one of them, above or below the lines that use it. It resolves an object's names
- * ({@link #of}) and a pattern's transform, and words each mistake at the name that makes it. Its warnings are
- * the slips with definitions that change nothing in the picture: a material, pattern or transform nothing names;
- * an {@code ior} without {@code transparency}; materials in a scene without a light, drawn in flat colours.
+ * The one set of names that materials, patterns and transforms share (Part III, "Transformations"), and the
+ * builders of {@code pattern:} (<i>The Ray Tracer Challenge</i>, chapter 10) and {@code transform:} (chapters 4
+ * and 14). Each name is defined once, by one of them, above or below the lines that use it; a transform's steps
+ * apply in the order written, {@code M = T_k ⋯ T_2·T_1}. It resolves an object's names ({@link #of}) and a
+ * pattern's transform, and words each mistake at the name that makes it. Its warnings are the slips that change
+ * nothing in the picture: a definition nothing names; an {@code ior} without {@code transparency}; materials in
+ * a scene without a light, drawn in flat colours.
  */
 final class DefinedNames {
 
+    static final String STEP_HELP = "write a step as (scale 2), (scale 1|2|1), (rotate_y 30) or (translate 0|1|0)";
+    private static final List<String> OPERATIONS = List.of("scale", "rotate_x", "rotate_y", "rotate_z", "translate");
     /** The key {@code ior} in a material's properties: after a '(' or '|' and blanks, before blanks and '='. */
     private static final java.util.regex.Pattern IOR_KEY =
             java.util.regex.Pattern.compile("(?<=[(|][ \\t]{0,1000})ior(?=[ \\t]*=)");
 
     /**
      * What an object's names mean (Part III, "Transformations" and "Patterns"): the finish its last groups name
-     * ({@link Material#DEFAULT} if none), the transform (or null), the pattern its colour group names (or null),
-     * and the names used, for the warnings about definitions that no object names.
+     * ({@link Material#DEFAULT} if none), the pattern its colour group names and the transform (or null), and the
+     * names used, for the warnings about definitions that no object names.
      */
     record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<String> names) {
 
-        /** An object that names nothing: the default finish, its own colour, not transformed. */
         static final ObjectNames NONE = new ObjectNames(Material.DEFAULT, null, null, List.of());
 
-        /**
-         * The object as its names make it: patterned if its colour group names a pattern, then transformed if
-         * it names a transform, so that the pattern lies in the object's own space and moves with it.
-         */
+        /** The object patterned, then transformed: the pattern lies in the object's own space and moves with it. */
         IGeometry dress(IGeometry object) {
             IGeometry painted = pattern == null ? object : new Patterned(object, pattern);
             return transform == null ? painted : new Transformed(painted, transform);
@@ -54,9 +57,10 @@ final class DefinedNames {
         }
     }
 
-    /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}. */
-    private final Map<String, Object> defined = new HashMap<>();
-    private final Map<String, String> kinds = new HashMap<>();
+    /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}, by its first definition. */
+    private final Map<String, Definition> first = new HashMap<>();
+    /** Each pattern with its transform resolved, by name. */
+    private final Map<String, Pattern> patterns = new HashMap<>();
     /** The names whose definitions have mistakes: not unknown, only broken. */
     private final Set<String> broken;
     /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
@@ -65,40 +69,35 @@ final class DefinedNames {
     private final Set<String> namedByPatterns = new HashSet<>();
 
     /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
-    DefinedNames(SceneContents contents, List<SceneContents.Found> errors) {
+    DefinedNames(SceneContents contents, List<Found> errors) {
         broken = contents.brokenDefinitions;
         definitions = contents.definitions;
         onlyMaterials = definitions.stream().allMatch(definition -> definition.kind().equals("material"));
-        Map<String, SceneError> first = new HashMap<>();
-        definitions.forEach(definition -> define(definition, first, errors));
+        definitions.forEach(definition -> define(definition, errors));
         for (Definition definition : definitions) { // a pattern's transform may be defined below it
             if (definition.transform() != null) {
                 namedByPatterns.add(definition.transform());
             }
-            if (definition.value() instanceof Pattern p && defined.get(definition.name()) == p) {
-                Matrix4 matrix = definition.transform() == null ? Matrix4.IDENTITY
+            if (definition.value() instanceof Pattern p && first.get(definition.name()) == definition) {
+                Matrix4 matrix = definition.transform() == null ? null
                         : lookUp(definition.transform(), "transform", definition.transformPlace(), errors);
-                defined.put(definition.name(), new Pattern(p.kind(), p.a(), p.b(),
+                patterns.put(definition.name(), new Pattern(p.kind(), p.a(), p.b(),
                         matrix == null ? Matrix4.IDENTITY : matrix));
             }
         }
     }
 
-    private void define(Definition definition, Map<String, SceneError> first, List<SceneContents.Found> errors) {
+    private void define(Definition definition, List<Found> errors) {
         String name = definition.name();
         String kind = definition.kind();
-        SceneError place = definition.place();
-        SceneError earlier = first.putIfAbsent(name, place);
-        if (earlier == null) {
-            defined.put(name, definition.value());
-            kinds.put(name, kind);
-        } else if (kinds.get(name).equals(kind)) {
-            errors.add(place.saying("a second " + kind + " '" + name + "': each name is defined once",
-                    "the first '" + name + "' is at line " + earlier.line()).found());
-        } else {
-            errors.add(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
-                    + earlier.line() + ": materials, patterns and transforms share one set of names",
-                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'").found());
+        Definition earlier = first.putIfAbsent(name, definition);
+        if (earlier != null && earlier.kind().equals(kind)) {
+            errors.add(definition.place().saying("a second " + kind + " '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier.place().line()).found());
+        } else if (earlier != null) {
+            errors.add(definition.place().saying("'" + name + "' is defined already, as a " + earlier.kind()
+                    + " at line " + earlier.place().line() + ": materials, patterns and transforms share one set of "
+                    + "names", "give the " + kind + " another name, such as '" + name + "_" + kind + "'").found());
         }
     }
 
@@ -113,8 +112,8 @@ final class DefinedNames {
                 warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
                         + (pattern ? "no object names it" : "no object or pattern names it"), pattern
                         ? "an object names its pattern in its colour group, such as sphere:(0|0|0):(1):(" + name + ")"
-                        : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):(" + name
-                                + ")"));
+                        : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):("
+                                + name + ")"));
             }
         }
         return warnings;
@@ -122,27 +121,28 @@ final class DefinedNames {
 
     /**
      * The warnings about the materials, in file order, of which objects {@code named} some: at most
-     * {@link SceneException#MAX_ERRORS} and a last line for the rest, as a library of materials could give thousands.
+     * {@link SceneException#MAX_ERRORS} and a last line for the rest, as a library of materials could give
+     * thousands.
      */
     List<SceneError> materialWarnings(Set<String> named, boolean lit) {
         List<Definition> materials = definitions.stream().filter(d -> d.value() instanceof Material).toList();
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !materials.isEmpty()) {
-            warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so it "
-                    + "is drawn in flat colours, as in the paper",
-                    "add a light, such as light:(0|10|10):(255|255|255)"));
+            warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so "
+                    + "it is drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
         }
         for (Definition definition : materials) {
             String name = definition.name();
             Material material = (Material) definition.value();
             if (!named.contains(name)) {
                 warnings.add(definition.place().saying("material '" + name + "' is defined, but no object names it",
-                        "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):(" + name
-                                + ")"));
+                        "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):("
+                                + name + ")"));
             }
             if (lit && material.ior() != 1 && material.transparency() <= 0) { // without a light, nothing is bent anyway
-                warnings.add(atTheIor(definition.place()).saying("the ior of material '" + name + "' bends nothing: its transparency "
-                        + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
+                warnings.add(atTheIor(definition.place()).saying("the ior of material '" + name + "' bends nothing: "
+                        + "its transparency is 0, so no light goes through it",
+                        "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
         int most = SceneException.MAX_ERRORS;
@@ -159,18 +159,15 @@ final class DefinedNames {
     /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */
     private static SceneError atTheIor(SceneError name) {
         Matcher key = IOR_KEY.matcher(name.sourceLine() == null ? "" : name.sourceLine());
-        return key.find(Math.max(0, name.column() - 1))
-                ? new SceneError(name.file(), name.line(), key.start() + 1, name.message(), name.sourceLine(),
-                        name.help())
-                : name;
+        return key.find(Math.max(0, name.column() - 1)) ? new SceneError(name.file(), name.line(), key.start() + 1,
+                name.message(), name.sourceLine(), name.help()) : name;
     }
 
     /**
      * What the names of the object whose values are {@code values} mean: its last groups name a material and a
-     * transform, in either order, each at most once; its colour group may name a pattern. Each mistake goes to
-     * {@code errors}.
+     * transform, in either order, each at most once; its colour group may name a pattern.
      */
-    ObjectNames of(StatementValues values, List<SceneContents.Found> errors) {
+    ObjectNames of(StatementValues values, List<Found> errors) {
         Material material = null;
         Matrix4 transform = null;
         List<String> used = new ArrayList<>();
@@ -178,7 +175,7 @@ final class DefinedNames {
         for (int g = values.statement().groups().size(); g < values.groupCount(); g++) {
             String name = values.name(g);
             used.add(name);
-            String kind = kinds.get(name);
+            String kind = kindOf(name);
             SceneError place = values.placeOfValue(g, 0);
             if (kind == null) {
                 if (!broken.contains(name)) {
@@ -190,12 +187,12 @@ final class DefinedNames {
                         .found());
             } else if (kind.equals("material") ? material != null : transform != null) {
                 errors.add(place.saying("a second " + kind + " for one object: it takes at most one material and one "
-                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform")
-                        .found());
+                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one "
+                        + "transform").found());
             } else if (kind.equals("material")) {
-                material = (Material) defined.get(name);
+                material = (Material) first.get(name).value();
             } else {
-                transform = (Matrix4) defined.get(name);
+                transform = (Matrix4) first.get(name).value();
             }
         }
         Pattern pattern = null;
@@ -208,12 +205,17 @@ final class DefinedNames {
         return new ObjectNames(material == null ? Material.DEFAULT : material, pattern, transform, used);
     }
 
+    private String kindOf(String name) {
+        Definition definition = first.get(name);
+        return definition == null ? null : definition.kind();
+    }
+
     /** The pattern or transform ({@code kind}) {@code name} used at {@code place}; else null, with an error. */
     @SuppressWarnings("unchecked")
-    private <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
-        String is = kinds.get(name);
+    private <T> T lookUp(String name, String kind, SceneError place, List<Found> errors) {
+        String is = kindOf(name);
         if (kind.equals(is)) {
-            return (T) defined.get(name);
+            return (T) (is.equals("pattern") ? patterns.get(name) : first.get(name).value());
         }
         if (is != null) {
             errors.add(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is)).found());
@@ -225,9 +227,8 @@ final class DefinedNames {
 
     /** "did you mean …?" among the names of {@code kind}, or how to define one. */
     private String didYouMean(String name, String kind) {
-        List<String> candidates = kinds.entrySet().stream().filter(e -> kind.contains(e.getValue()))
-                .map(Map.Entry::getKey).toList();
-        String nearest = Hints.nearest(name, candidates);
+        String nearest = Hints.nearest(name, first.values().stream().filter(d -> kind.contains(d.kind()))
+                .map(Definition::name).toList());
         if (nearest != null) {
             return "did you mean '" + nearest + "'?";
         }
@@ -244,9 +245,72 @@ final class DefinedNames {
     private static String whereItGoes(String kind) {
         return switch (kind) {
             case "pattern" -> "a pattern's name goes in the object's colour group: sphere:(0|0|0):(1):(checks)";
-            case "material" -> "a material's name goes in one of the object's last groups: sphere:(0|0|0):(1):(255|0|0):(shiny)";
+            case "material" -> "a material's name goes in one of the object's last groups: "
+                    + "sphere:(0|0|0):(1):(255|0|0):(shiny)";
             default -> "a transform's name goes in one of an object's last groups, or a pattern's: "
                     + "sphere:(0|0|0):(1):(255|0|0):(stretched)";
         };
+    }
+
+    /** {@code pattern:(name):(kind):(R|G|B):(R|G|B)[:(transform)]}; the transform's name is resolved later. */
+    static void pattern(StatementValues v, SceneContents out) throws StatementError {
+        String word = v.name(1);
+        Pattern.Kind kind = Arrays.stream(Pattern.Kind.values()).filter(k -> k.word().equals(word)).findFirst()
+                .orElse(null);
+        if (kind == null) {
+            throw unknown(v, 1, "unknown kind of pattern '" + word + "'", "kinds",
+                    Arrays.stream(Pattern.Kind.values()).map(Pattern.Kind::word).toList(), word);
+        }
+        out.pattern(v.name(0), new Pattern(kind, v.colour(2), v.colour(3), Matrix4.IDENTITY),
+                v.groupCount() > 4 ? v.name(4) : null);
+    }
+
+    /** {@code transform:(name):(step)[:(step)…]}: the steps composed in the order written. */
+    static void transform(StatementValues v, SceneContents out) throws StatementError {
+        Matrix4 m = Matrix4.IDENTITY;
+        for (int g = 1; g < v.groupCount(); g++) {
+            m = m.then(step(v, g));
+        }
+        out.transform(v.name(0), m);
+    }
+
+    /** The step of group {@code g}: its word, then its numbers, each checked where it is written. */
+    private static Matrix4 step(StatementValues v, int g) throws StatementError {
+        String word = v.name(g);
+        int count = v.size(g) - 1; // the word, then its numbers
+        if (!OPERATIONS.contains(word)) {
+            throw unknown(v, g, "unknown step '" + word + "' in a transform", "steps", OPERATIONS,
+                    word.toLowerCase(Locale.ROOT));
+        }
+        boolean scale = word.equals("scale");
+        int wanted = word.startsWith("rotate") ? 1 : 3;
+        if (!(count == wanted || scale && count == 1)) {
+            String takes = scale ? "1 number (s) or 3 (sx|sy|sz)"
+                    : wanted == 1 ? "1 number, an angle in degrees" : "3 numbers (x|y|z)";
+            throw v.errorAtValue(g, 0, "'" + word + "' takes " + takes + ", found " + count, STEP_HELP);
+        }
+        double[] n = new double[3];
+        for (int k = 0; k < count; k++) {
+            n[k] = v.number(g, 1 + k);
+            if (scale && n[k] == 0) {
+                throw v.errorAtValue(g, 1 + k, "a scale of 0 flattens the object to nothing",
+                        "scale by a number other than 0, such as 1 to leave that axis as it is");
+            }
+        }
+        return switch (word) {
+            case "scale" -> count == 1 ? Matrix4.scale(n[0], n[0], n[0]) : Matrix4.scale(n[0], n[1], n[2]);
+            case "rotate_x" -> Matrix4.rotateX(n[0]);
+            case "rotate_y" -> Matrix4.rotateY(n[0]);
+            case "rotate_z" -> Matrix4.rotateZ(n[0]);
+            default -> Matrix4.translate(n[0], n[1], n[2]);
+        };
+    }
+
+    /** The error for an unknown word of group {@code g}: "did you mean …?" among {@code words}, else their list. */
+    private static StatementError unknown(StatementValues v, int g, String message, String plural, List<String> words,
+            String word) {
+        String nearest = Hints.nearest(word, words);
+        return v.errorAtValue(g, 0, message, nearest != null ? "did you mean '" + nearest + "'?"
+                : "the " + plural + " are " + Hints.quoted(words, "and"));
     }
 }

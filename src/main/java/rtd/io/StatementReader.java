@@ -100,7 +100,7 @@ final class StatementReader {
      */
     private void keepNameOfBrokenDefinition() {
         if (current != null && current.keyword().equals(Grammar.LET)) {
-            Definitions.brokenLet(values);
+            Names.brokenLet(values);
         } else if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
                 && values.hasValue(0)) {
             contents.brokenDefinitions.add(values.name(0));
