@@ -101,30 +101,12 @@ final class DefinedNames {
         }
     }
 
-    /** A warning at each pattern and transform that nothing names ({@code named}: the names objects used). */
-    List<SceneError> unused(Set<String> named) {
-        List<SceneError> warnings = new ArrayList<>();
-        for (Definition definition : definitions) {
-            String name = definition.name();
-            boolean unnamed = !named.contains(name) && !namedByPatterns.contains(name);
-            if (!definition.kind().equals("material") && unnamed && warnings.size() < SceneException.MAX_ERRORS) {
-                boolean pattern = definition.kind().equals("pattern");
-                warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
-                        + (pattern ? "no object names it" : "no object or pattern names it"), pattern
-                        ? "an object names its pattern in its colour group, such as sphere:(0|0|0):(1):(" + name + ")"
-                        : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):("
-                                + name + ")"));
-            }
-        }
-        return warnings;
-    }
-
     /**
-     * The warnings about the materials, in file order, of which objects {@code named} some: at most
+     * The warnings, in file order, about the materials, of which objects {@code named} some (at most
      * {@link SceneException#MAX_ERRORS} and a last line for the rest, as a library of materials could give
-     * thousands.
+     * thousands), then about each pattern and transform that nothing names.
      */
-    List<SceneError> materialWarnings(Set<String> named, boolean lit) {
+    List<SceneError> warnings(Set<String> named, boolean lit) {
         List<Definition> materials = definitions.stream().filter(d -> d.value() instanceof Material).toList();
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !materials.isEmpty()) {
@@ -146,14 +128,23 @@ final class DefinedNames {
             }
         }
         int most = SceneException.MAX_ERRORS;
-        if (warnings.size() <= most) {
-            return warnings;
+        if (warnings.size() > most) {
+            SceneError next = warnings.get(most);
+            int more = warnings.size() - most;
+            warnings.subList(most, warnings.size()).clear();
+            warnings.add(new SceneError(next.file(), next.line(), next.column(), "and " + more
+                    + " more warnings like these, the first of them here", null, null));
         }
-        SceneError next = warnings.get(most);
-        List<SceneError> shown = new ArrayList<>(warnings.subList(0, most));
-        shown.add(new SceneError(next.file(), next.line(), next.column(), "and " + (warnings.size() - most)
-                + " more warnings like these, the first of them here", null, null));
-        return shown;
+        for (Definition d : definitions.stream().filter(d -> !d.kind().equals("material") && !named.contains(d.name())
+                && !namedByPatterns.contains(d.name())).limit(most).toList()) {
+            boolean pattern = d.kind().equals("pattern");
+            warnings.add(d.place().saying(d.kind() + " '" + d.name() + "' is defined, but "
+                    + (pattern ? "no object names it" : "no object or pattern names it"), pattern
+                    ? "an object names its pattern in its colour group, such as sphere:(0|0|0):(1):(" + d.name() + ")"
+                    : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):("
+                            + d.name() + ")"));
+        }
+        return warnings;
     }
 
     /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */

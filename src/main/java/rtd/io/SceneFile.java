@@ -164,8 +164,7 @@ public final class SceneFile {
         }
         if (warnings != null) {
             boolean lit = !contents.lights.isEmpty();
-            warnings.addAll(names.materialWarnings(named, lit));
-            warnings.addAll(names.unused(named));
+            warnings.addAll(names.warnings(named, lit));
             if (lit) {
                 contents.litWarnings.stream().sorted(Comparator.comparingInt(SceneError::line))
                         .limit(SceneException.MAX_ERRORS).forEach(warnings::add);
