@@ -102,9 +102,9 @@ final class Grammar {
                     }),
             new Statement("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
                     numbers("first colour", "R|G|B"), numbers("second colour", "R|G|B")),
-                    List.of(name("transform", "transform")), false, DefinedNames::pattern),
+                    List.of(name("transform", "transform")), false, Names::pattern),
             new Statement("transform", List.of(name("name", "name"), word("step", Kind.OPERATION, "scale s")),
-                    List.of(word("step", Kind.OPERATION, "step")), true, DefinedNames::transform),
+                    List.of(word("step", Kind.OPERATION, "step")), true, Names::transform),
             Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
                     (v, out) -> Names.let(v)));
 
