@@ -57,7 +57,7 @@ final class DefinedNames {
     private final Map<String, Pattern> patterns = new HashMap<>();
     /** The names whose definitions have mistakes: not unknown, only broken. */
     private final Set<String> broken;
-    /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
+    /** Whether the file defines no pattern or transform: then an unknown name is an unknown material. */
     private final boolean onlyMaterials;
     private final List<Definition> definitions;
     private final Set<String> namedByPatterns = new HashSet<>();

@@ -21,10 +21,9 @@ import rtd.scene.Scene;
 /**
  * Input and output (paper, sections 4.1 and 4.3): reads a scene file at clock 0 (a {@link SceneFile} read
  * once), writes the picture as a PNG, or in another format that {@code javax.imageio} writes
- * ({@link ImageWriting}). Every warning list may be null: the warnings are dropped. A file is read in bounded
- * time and memory: one over {@link #MAX_SCENE_BYTES} is refused before it is read, and a stream that never
- * ends ({@code /dev/zero}, a pipe) is read in chunks, each checked as it arrives, up to the first byte that is
- * not text or the limit.
+ * ({@link ImageWriting}); a null warning list drops the warnings. A file is read in bounded time and memory:
+ * one over {@link #MAX_SCENE_BYTES} is refused before it is read, and a stream that never ends
+ * ({@code /dev/zero}, a pipe) is read in chunks, each checked as it arrives, up to the first non-text byte.
  */
 public final class SceneIO {
 
@@ -39,13 +38,7 @@ public final class SceneIO {
     private SceneIO() {
     }
 
-    /**
-     * Reads the scene file at {@code path} (UTF-8) in bounded memory and time; its meshes' OBJ files are found
-     * from its folder.
-     *
-     * @throws SceneException if the file has mistakes; it lists them all
-     * @throws IOException    if the file cannot be read
-     */
+    /** Reads the scene file at {@code path} (UTF-8); its meshes' OBJ files are found from its folder. */
     public static Scene readScene(Path path) throws SceneException, IOException {
         return readScene(path, null);
     }
@@ -85,10 +78,7 @@ public final class SceneIO {
         return SceneFile.of(name, bytes, meshFolder).once(warnings);
     }
 
-    /**
-     * Writes {@code picture} to {@code output} all or nothing: into a temporary file beside it
-     * ({@link TemporaryFiles}), which replaces {@code output} only when complete and is removed on failure.
-     */
+    /** Writes {@code picture} to {@code output} all or nothing, through a temporary file ({@link TemporaryFiles}). */
     public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
             throws IOException {
         TemporaryFiles.replace(output, out -> ImageWriting.write(picture, format, out, progress));
@@ -123,7 +113,7 @@ public final class SceneIO {
         if (size > limit) {
             throw tooLarge(path.toString(), "is " + bytes(size), limit);
         }
-        // Bounded already: read whole; the parse checks its text before reading any statement.
+        // Bounded already: read whole; the parse checks its text.
         byte[] bytes = readWhole(path);
         if (bytes.length > limit) { // it grew while we read it
             throw tooLarge(path.toString(), "is larger than " + bytes(limit), limit);
@@ -150,7 +140,7 @@ public final class SceneIO {
         }
     }
 
-    /** A stream of unknown length, read in chunks up to the first with a byte that is not text, or past {@code limit}. */
+    /** A stream of unknown length, read in chunks up to the first with a non-text byte, or past {@code limit}. */
     static byte[] readBytes(InputStream in, String name, int limit) throws IOException {
         byte[] bytes = new byte[Math.min(limit + 1, CHUNK)];
         int filled = 0;
