@@ -1,6 +1,5 @@
 package rtd.io;
 
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
@@ -65,9 +64,7 @@ final class Names {
 
     /** The names known now, those of broken lets among them, for "did you mean …?". */
     List<String> known() {
-        List<String> known = new ArrayList<>(List.of("clock", "pi"));
-        known.addAll(lines.keySet());
-        return known;
+        return Stream.concat(Stream.of("clock", "pi"), lines.keySet().stream()).toList();
     }
 
     /** {@code let:(name):(expression)}: defines the name of group 0 as the expression of group 1. */
