@@ -7,21 +7,22 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
-import rtd.io.SceneContents.Definition;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Pattern;
 import rtd.geometry.Patterned;
 import rtd.geometry.Transformed;
 import rtd.image.Color;
+import rtd.io.SceneContents.Definition;
+import rtd.io.SceneContents.Found;
 import rtd.math.Matrix4;
 
 /**
- * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each
- * name is defined once, by one of them, above or below the lines that use it. It resolves an object's names
- * ({@link #of}) and a pattern's transform, and words each mistake at the name that makes it. Its warnings are
- * the slips with definitions that change nothing in the picture: a material, pattern or transform nothing names;
- * an {@code ior} without {@code transparency}; materials in a scene without a light, drawn in flat colours.
+ * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each name is
+ * defined once, by one of them, above or below the lines that use it. It resolves an object's names ({@link #of})
+ * and a pattern's transform, and words each mistake at the name that makes it. Its warnings are the slips that
+ * change nothing in the picture: a definition nothing names; an {@code ior} without {@code transparency};
+ * materials in a scene without a light, drawn in flat colours.
  */
 final class DefinedNames {
 
@@ -31,18 +32,14 @@ final class DefinedNames {
 
     /**
      * What an object's names mean (Part III, "Transformations" and "Patterns"): the finish its last groups name
-     * ({@link Material#DEFAULT} if none), the transform (or null), the pattern its colour group names (or null),
-     * and the names used, for the warnings about definitions that no object names.
+     * ({@link Material#DEFAULT} if none), the pattern its colour group names and the transform (or null), and the
+     * names used, for the warnings about definitions that no object names.
      */
     record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<String> names) {
 
-        /** An object that names nothing: the default finish, its own colour, not transformed. */
         static final ObjectNames NONE = new ObjectNames(Material.DEFAULT, null, null, List.of());
 
-        /**
-         * The object as its names make it: patterned if its colour group names a pattern, then transformed if
-         * it names a transform, so that the pattern lies in the object's own space and moves with it.
-         */
+        /** The object patterned, then transformed: the pattern lies in the object's own space and moves with it. */
         IGeometry dress(IGeometry object) {
             IGeometry painted = pattern == null ? object : new Patterned(object, pattern);
             return transform == null ? painted : new Transformed(painted, transform);
@@ -54,123 +51,108 @@ final class DefinedNames {
         }
     }
 
-    /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}. */
-    private final Map<String, Object> defined = new HashMap<>();
-    private final Map<String, String> kinds = new HashMap<>();
+    /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}, by its first definition. */
+    private final Map<String, Definition> first = new HashMap<>();
+    /** Each pattern with its transform resolved, by name. */
+    private final Map<String, Pattern> patterns = new HashMap<>();
     /** The names whose definitions have mistakes: not unknown, only broken. */
     private final Set<String> broken;
-    /** Whether the file defines any pattern or transform: if not, an unknown name is an unknown material, as ever. */
+    /** Whether the file defines no pattern or transform: then an unknown name is an unknown material. */
     private final boolean onlyMaterials;
     private final List<Definition> definitions;
     private final Set<String> namedByPatterns = new HashSet<>();
 
     /** The names {@code contents} defines; a name defined twice is an error at the second definition, in file order. */
-    DefinedNames(SceneContents contents, List<SceneContents.Found> errors) {
+    DefinedNames(SceneContents contents, List<Found> errors) {
         broken = contents.brokenDefinitions;
         definitions = contents.definitions;
         onlyMaterials = definitions.stream().allMatch(definition -> definition.kind().equals("material"));
-        Map<String, SceneError> first = new HashMap<>();
-        definitions.forEach(definition -> define(definition, first, errors));
+        definitions.forEach(definition -> define(definition, errors));
         for (Definition definition : definitions) { // a pattern's transform may be defined below it
             if (definition.transform() != null) {
                 namedByPatterns.add(definition.transform());
             }
-            if (definition.value() instanceof Pattern p && defined.get(definition.name()) == p) {
-                Matrix4 matrix = definition.transform() == null ? Matrix4.IDENTITY
+            if (definition.value() instanceof Pattern p && first.get(definition.name()) == definition) {
+                Matrix4 matrix = definition.transform() == null ? null
                         : lookUp(definition.transform(), "transform", definition.transformPlace(), errors);
-                defined.put(definition.name(), new Pattern(p.kind(), p.a(), p.b(),
+                patterns.put(definition.name(), new Pattern(p.kind(), p.a(), p.b(),
                         matrix == null ? Matrix4.IDENTITY : matrix));
             }
         }
     }
 
-    private void define(Definition definition, Map<String, SceneError> first, List<SceneContents.Found> errors) {
+    private void define(Definition definition, List<Found> errors) {
         String name = definition.name();
         String kind = definition.kind();
-        SceneError place = definition.place();
-        SceneError earlier = first.putIfAbsent(name, place);
-        if (earlier == null) {
-            defined.put(name, definition.value());
-            kinds.put(name, kind);
-        } else if (kinds.get(name).equals(kind)) {
-            errors.add(place.saying("a second " + kind + " '" + name + "': each name is defined once",
-                    "the first '" + name + "' is at line " + earlier.line()).found());
-        } else {
-            errors.add(place.saying("'" + name + "' is defined already, as a " + kinds.get(name) + " at line "
-                    + earlier.line() + ": materials, patterns and transforms share one set of names",
-                    "give the " + kind + " another name, such as '" + name + "_" + kind + "'").found());
+        Definition earlier = first.putIfAbsent(name, definition);
+        if (earlier != null && earlier.kind().equals(kind)) {
+            errors.add(definition.place().saying("a second " + kind + " '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier.place().line()).found());
+        } else if (earlier != null) {
+            errors.add(definition.place().saying("'" + name + "' is defined already, as a " + earlier.kind()
+                    + " at line " + earlier.place().line() + ": materials, patterns and transforms share one set of "
+                    + "names", "give the " + kind + " another name, such as '" + name + "_" + kind + "'").found());
         }
-    }
-
-    /** A warning at each pattern and transform that nothing names ({@code named}: the names objects used). */
-    List<SceneError> unused(Set<String> named) {
-        List<SceneError> warnings = new ArrayList<>();
-        for (Definition definition : definitions) {
-            String name = definition.name();
-            boolean unnamed = !named.contains(name) && !namedByPatterns.contains(name);
-            if (!definition.kind().equals("material") && unnamed && warnings.size() < SceneParser.MAX_ERRORS) {
-                boolean pattern = definition.kind().equals("pattern");
-                warnings.add(definition.place().saying(definition.kind() + " '" + name + "' is defined, but "
-                        + (pattern ? "no object names it" : "no object or pattern names it"), pattern
-                        ? "an object names its pattern in its colour group, such as sphere:(0|0|0):(1):(" + name + ")"
-                        : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):(" + name
-                                + ")"));
-            }
-        }
-        return warnings;
     }
 
     /**
-     * The warnings about the materials, in file order, of which objects {@code named} some: at most
-     * {@link SceneParser#MAX_ERRORS} and a last line for the rest, as a library of materials could give thousands.
+     * The warnings, in file order, about the materials, of which objects {@code named} some (at most
+     * {@link SceneException#MAX_ERRORS} and a last line for the rest, as a library of materials could give
+     * thousands), then about each pattern and transform that nothing names.
      */
-    List<SceneError> materialWarnings(Set<String> named, boolean lit) {
+    List<SceneError> warnings(Set<String> named, boolean lit) {
         List<Definition> materials = definitions.stream().filter(d -> d.value() instanceof Material).toList();
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !materials.isEmpty()) {
-            warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so it "
-                    + "is drawn in flat colours, as in the paper",
-                    "add a light, such as light:(0|10|10):(255|255|255)"));
+            warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so "
+                    + "it is drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
         }
         for (Definition definition : materials) {
             String name = definition.name();
             Material material = (Material) definition.value();
             if (!named.contains(name)) {
                 warnings.add(definition.place().saying("material '" + name + "' is defined, but no object names it",
-                        "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):(" + name
-                                + ")"));
+                        "an object names its material in its last group, such as sphere:(0|0|0):(1):(255|255|255):("
+                                + name + ")"));
             }
             if (lit && material.ior() != 1 && material.transparency() <= 0) { // without a light, nothing is bent anyway
-                warnings.add(atTheIor(definition.place()).saying("the ior of material '" + name + "' bends nothing: its transparency "
-                        + "is 0, so no light goes through it", "let light through, such as transparency=0.9, or leave ior out"));
+                warnings.add(atTheIor(definition.place()).saying("the ior of material '" + name + "' bends nothing: "
+                        + "its transparency is 0, so no light goes through it",
+                        "let light through, such as transparency=0.9, or leave ior out"));
             }
         }
-        int most = SceneParser.MAX_ERRORS;
-        if (warnings.size() <= most) {
-            return warnings;
+        int most = SceneException.MAX_ERRORS;
+        if (warnings.size() > most) {
+            SceneError next = warnings.get(most);
+            int more = warnings.size() - most;
+            warnings.subList(most, warnings.size()).clear();
+            warnings.add(new SceneError(next.file(), next.line(), next.column(), "and " + more
+                    + " more warnings like these, the first of them here", null, null));
         }
-        SceneError next = warnings.get(most);
-        List<SceneError> shown = new ArrayList<>(warnings.subList(0, most));
-        shown.add(new SceneError(next.file(), next.line(), next.column(), "and " + (warnings.size() - most)
-                + " more warnings like these, the first of them here", null, null));
-        return shown;
+        for (Definition d : definitions.stream().filter(d -> !d.kind().equals("material") && !named.contains(d.name())
+                && !namedByPatterns.contains(d.name())).limit(most).toList()) {
+            boolean pattern = d.kind().equals("pattern");
+            warnings.add(d.place().saying(d.kind() + " '" + d.name() + "' is defined, but "
+                    + (pattern ? "no object names it" : "no object or pattern names it"), pattern
+                    ? "an object names its pattern in its colour group, such as sphere:(0|0|0):(1):(" + d.name() + ")"
+                    : "an object names its transform after its colour, such as sphere:(0|0|0):(1):(255|255|255):("
+                            + d.name() + ")"));
+        }
+        return warnings;
     }
 
     /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */
     private static SceneError atTheIor(SceneError name) {
         Matcher key = IOR_KEY.matcher(name.sourceLine() == null ? "" : name.sourceLine());
-        return key.find(Math.max(0, name.column() - 1))
-                ? new SceneError(name.file(), name.line(), key.start() + 1, name.message(), name.sourceLine(),
-                        name.help())
-                : name;
+        return key.find(Math.max(0, name.column() - 1)) ? new SceneError(name.file(), name.line(), key.start() + 1,
+                name.message(), name.sourceLine(), name.help()) : name;
     }
 
     /**
      * What the names of the object whose values are {@code values} mean: its last groups name a material and a
-     * transform, in either order, each at most once; its colour group may name a pattern. Each mistake goes to
-     * {@code errors}.
+     * transform, in either order, each at most once; its colour group may name a pattern.
      */
-    ObjectNames of(StatementValues values, List<SceneContents.Found> errors) {
+    ObjectNames of(StatementValues values, List<Found> errors) {
         Material material = null;
         Matrix4 transform = null;
         List<String> used = new ArrayList<>();
@@ -178,7 +160,7 @@ final class DefinedNames {
         for (int g = values.statement().groups().size(); g < values.groupCount(); g++) {
             String name = values.name(g);
             used.add(name);
-            String kind = kinds.get(name);
+            String kind = kindOf(name);
             SceneError place = values.placeOfValue(g, 0);
             if (kind == null) {
                 if (!broken.contains(name)) {
@@ -190,12 +172,12 @@ final class DefinedNames {
                         .found());
             } else if (kind.equals("material") ? material != null : transform != null) {
                 errors.add(place.saying("a second " + kind + " for one object: it takes at most one material and one "
-                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one transform")
-                        .found());
+                        + "transform", "give one " + kind + "; to combine transformations, list their steps in one "
+                        + "transform").found());
             } else if (kind.equals("material")) {
-                material = (Material) defined.get(name);
+                material = (Material) first.get(name).value();
             } else {
-                transform = (Matrix4) defined.get(name);
+                transform = (Matrix4) first.get(name).value();
             }
         }
         Pattern pattern = null;
@@ -208,12 +190,17 @@ final class DefinedNames {
         return new ObjectNames(material == null ? Material.DEFAULT : material, pattern, transform, used);
     }
 
+    private String kindOf(String name) {
+        Definition definition = first.get(name);
+        return definition == null ? null : definition.kind();
+    }
+
     /** The pattern or transform ({@code kind}) {@code name} used at {@code place}; else null, with an error. */
     @SuppressWarnings("unchecked")
-    private <T> T lookUp(String name, String kind, SceneError place, List<SceneContents.Found> errors) {
-        String is = kinds.get(name);
+    private <T> T lookUp(String name, String kind, SceneError place, List<Found> errors) {
+        String is = kindOf(name);
         if (kind.equals(is)) {
-            return (T) defined.get(name);
+            return (T) (is.equals("pattern") ? patterns.get(name) : first.get(name).value());
         }
         if (is != null) {
             errors.add(place.saying("'" + name + "' is a " + is + ", not a " + kind, whereItGoes(is)).found());
@@ -225,9 +212,8 @@ final class DefinedNames {
 
     /** "did you mean …?" among the names of {@code kind}, or how to define one. */
     private String didYouMean(String name, String kind) {
-        List<String> candidates = kinds.entrySet().stream().filter(e -> kind.contains(e.getValue()))
-                .map(Map.Entry::getKey).toList();
-        String nearest = Hints.nearest(name, candidates);
+        String nearest = Hints.nearest(name, first.values().stream().filter(d -> kind.contains(d.kind()))
+                .map(Definition::name).toList());
         if (nearest != null) {
             return "did you mean '" + nearest + "'?";
         }
@@ -244,7 +230,8 @@ final class DefinedNames {
     private static String whereItGoes(String kind) {
         return switch (kind) {
             case "pattern" -> "a pattern's name goes in the object's colour group: sphere:(0|0|0):(1):(checks)";
-            case "material" -> "a material's name goes in one of the object's last groups: sphere:(0|0|0):(1):(255|0|0):(shiny)";
+            case "material" -> "a material's name goes in one of the object's last groups: "
+                    + "sphere:(0|0|0):(1):(255|0|0):(shiny)";
             default -> "a transform's name goes in one of an object's last groups, or a pattern's: "
                     + "sphere:(0|0|0):(1):(255|0|0):(stretched)";
         };

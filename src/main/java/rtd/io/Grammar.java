@@ -102,11 +102,11 @@ final class Grammar {
                     }),
             new Statement("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
                     numbers("first colour", "R|G|B"), numbers("second colour", "R|G|B")),
-                    List.of(name("transform", "transform")), false, Definitions::pattern),
+                    List.of(name("transform", "transform")), false, Names::pattern),
             new Statement("transform", List.of(name("name", "name"), word("step", Kind.OPERATION, "scale s")),
-                    List.of(word("step", Kind.OPERATION, "step")), true, Definitions::transform),
+                    List.of(word("step", Kind.OPERATION, "step")), true, Names::transform),
             Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
-                    (v, out) -> Definitions.let(v)));
+                    (v, out) -> Names.let(v)));
 
     /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
     private static Material material(StatementValues v) throws StatementError {

@@ -106,7 +106,7 @@ final class GroupReader {
         cursor.skipBlanks();
         if (cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
-                    + "' in " + group.of(statement) + ", found ')'", Definitions.STEP_HELP);
+                    + "' in " + group.of(statement) + ", found ')'", Names.STEP_HELP);
         }
         do {
             cursor.skipBlanks();

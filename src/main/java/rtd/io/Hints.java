@@ -1,13 +1,15 @@
 package rtd.io;
 
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Function;
 import java.util.function.ToIntFunction;
 import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 
 /**
  * The {@code = help:} lines for the mistakes people really make in a scene file (a decimal comma, another
@@ -17,7 +19,6 @@ import java.util.regex.Pattern;
  */
 final class Hints {
 
-    /** For a line or text that starts as a comment does in another language: {@code #}, {@code /*}. */
     static final String COMMENTS = "comments start with //";
     /** The forms of a number; "or" between them, since a comma would read as a decimal comma. */
     static final String NUMBER_FORMS = "numbers are written like 3 or -0.5 or .5 or 1. or 2e3";
@@ -28,12 +29,37 @@ final class Hints {
 
     /** One number, with a comma where the point should be: 2,5 or -0,5 or 1,5e3. */
     private static final Pattern DECIMAL_COMMA = Pattern.compile("[+-]?[0-9]*,[0-9]+([eE][+-]?[0-9]+)?");
+    /** A token that begins as {@code (at x|y|z)} does, misspelt: {@code at0}, {@code AT}, {@code At-1}. */
+    private static final Pattern LOOK_AT = Pattern.compile("(?i)at[-+.0-9]*");
+
+    /**
+     * Words people write for a statement, in English, in German (the paper's language) and from other tools,
+     * too far from its keyword for {@link #nearest} to find it; looked up before the spelling, as "bg" is two
+     * edits from "box" but means the background. Each line: the words, then after '=' the keywords they suggest.
+     */
+    static final Map<String, List<String>> SYNONYMS = """
+            camera cam kamera view eye = orthographic_camera perspective_camera
+            ortho orthographic orthocamera = orthographic_camera
+            perspective persp perspectivecamera = perspective_camera
+            ball kugel circle kreis globe = sphere
+            background hintergrund bg color colour farbe backgroundcolor sky = ambient
+            lamp licht lichtquelle pointlight point_light lightsource light_source sun = light
+            floor ground boden ebene wall = plane
+            cube cuboid quader wuerfel aabb = box
+            tri dreieck face = triangle
+            obj model modell = mesh
+            mat finish surface = material
+            texture textur pigment muster checkerboard checkers stripe ring = pattern
+            matrix transformation scale rotate translate move = transform
+            cyl zylinder tube pipe rod = cylinder
+            kegel = cone
+            arealight area softlight soft_light flaechenlicht = area_light
+            """.lines().map(line -> line.split(" = "))
+            .flatMap(row -> Arrays.stream(row[0].split(" ")).map(word -> Map.entry(word, List.of(row[1].split(" ")))))
+            .collect(Collectors.toUnmodifiableMap(Map.Entry::getKey, Map.Entry::getValue));
 
     private Hints() {
     }
-
-    /** A token that begins as {@code (at x|y|z)} does, misspelt: {@code at0}, {@code AT}, {@code At-1}. */
-    private static final Pattern LOOK_AT = Pattern.compile("(?i)at[-+.0-9]*");
 
     static String forNumber(String token) {
         if (token.indexOf('\u2212') >= 0) {
@@ -48,10 +74,9 @@ final class Hints {
         if (token.indexOf(';') >= 0) {
             return "separate the numbers of a group, or its properties, with '|', not ';'";
         }
-        if (LOOK_AT.matcher(token).matches()) {
-            return "a camera looks at a point when its direction is written (at x|y|z): 'at' in lower case, then a space";
-        }
-        return NUMBER_FORMS;
+        return LOOK_AT.matcher(token).matches()
+                ? "a camera looks at a point when its direction is written (at x|y|z): 'at' in lower case, then a space"
+                : NUMBER_FORMS;
     }
 
     /** For a path with a '\' that names no file: Windows separates folders so, the other systems with '/' only. */
@@ -60,15 +85,13 @@ final class Hints {
                 + "'\\' separates folders on Windows only";
     }
 
-    /** For a token of an OBJ file that is no number: its numbers are separated by blanks, so a comma is a decimal comma. */
+    /** For an OBJ token that is no number: its numbers are separated by blanks, so a comma is a decimal comma. */
     static String forObjNumber(String token) {
-        return DECIMAL_COMMA.matcher(token).matches() ? "write decimals with a point: " + token.replace(',', '.') : NUMBER_FORMS;
+        return DECIMAL_COMMA.matcher(token).matches() ? "write decimals with a point: " + token.replace(',', '.')
+                : NUMBER_FORMS;
     }
 
-    /**
-     * Whether a character shows as a blank or not at all, but is not one of the blanks of the
-     * scene format (space, tab): U+00A0 NO-BREAK SPACE, U+200B ZERO WIDTH SPACE, U+FEFF…
-     */
+    /** Whether a character shows as a blank or not at all, but is no space or tab: U+00A0, U+200B, U+FEFF… */
     static boolean isInvisible(int codePoint) {
         return codePoint > 0x7F && (Character.isSpaceChar(codePoint) || Character.getType(codePoint) == Character.FORMAT);
     }
@@ -82,8 +105,8 @@ final class Hints {
 
     static String forInvisible(int codePoint) {
         if (codePoint == 0xFEFF) {
-            return "a byte-order mark may stand only at the very start of a file (one gets inside when files are joined): "
-                    + "delete it";
+            return "a byte-order mark may stand only at the very start of a file (one gets inside when files are "
+                    + "joined): delete it";
         }
         boolean looksLikeSpace = Character.isSpaceChar(codePoint) && !Character.getName(codePoint).contains("ZERO WIDTH");
         return String.format("U+%04X", codePoint) + (looksLikeSpace
@@ -91,33 +114,7 @@ final class Hints {
                 : " cannot be seen but is there: delete it") + " (text copied from a PDF or a web page brings it)";
     }
 
-    /**
-     * Words people write for a statement, in English, in German (the paper's language) and from
-     * other tools, that are too far from its keyword for {@link #nearest} to find it. Looked up
-     * before the spelling: "bg" is two edits from "box", but means the background.
-     */
-    private static final Map<String, List<String>> SYNONYMS = new HashMap<>();
-
-    static {
-        synonyms("camera cam kamera view eye", "orthographic_camera", "perspective_camera");
-        synonyms("ortho orthographic orthocamera", "orthographic_camera");
-        synonyms("perspective persp perspectivecamera", "perspective_camera");
-        synonyms("ball kugel circle kreis globe", "sphere");
-        synonyms("background hintergrund bg color colour farbe backgroundcolor sky", "ambient");
-        synonyms("lamp licht lichtquelle pointlight point_light lightsource light_source sun", "light");
-        synonyms("floor ground boden ebene wall", "plane");
-        synonyms("cube cuboid quader wuerfel aabb", "box");
-        synonyms("tri dreieck face", "triangle");
-        synonyms("obj model modell", "mesh");
-        synonyms("mat finish surface", "material");
-        synonyms("texture textur pigment muster checkerboard checkers stripe ring", "pattern");
-        synonyms("matrix transformation scale rotate translate move", "transform");
-        synonyms("cyl zylinder tube pipe rod", "cylinder");
-        synonyms("kegel", "cone");
-        synonyms("arealight area softlight soft_light flaechenlicht", "area_light");
-    }
-
-    /** The help for a name in {@code group} from {@code start} followed by something else at the cursor; properties where a name belongs get their own. */
+    /** The help for a name in {@code group} from {@code start}, then something else: properties get their own. */
     static String forName(LineCursor cursor, Group group, int start) {
         if (!cursor.at('=')) {
             return "a name holds only letters, digits, '_' and '-'";
@@ -133,7 +130,7 @@ final class Hints {
                 : "a material's name comes first, then its properties: material:(shiny):(" + properties + ")";
     }
 
-    /** For a colour written as fractions from 0 to 1, as other programs write colours, the same from 0 to 255; else null. */
+    /** For a colour written as fractions from 0 to 1, as other programs write it, the same from 0 to 255; else null. */
     static String colourFractions(float[] values, int first) {
         StringBuilder scaled = new StringBuilder("(");
         for (int i = first; i < first + 3; i++) {
@@ -155,33 +152,22 @@ final class Hints {
         return nearest != null ? "did you mean '" + nearest + "'?" : "a statement starts with " + Grammar.keywordList();
     }
 
-    /** Every word of the table, with the keywords it suggests: for the test that holds docs/errors.md to it. */
-    static Map<String, List<String>> synonyms() {
-        return Map.copyOf(SYNONYMS);
-    }
-
-    /** Makes each of {@code words} (separated by blanks) mean {@code keywords}. */
-    private static void synonyms(String words, String... keywords) {
-        for (String word : words.split(" ")) {
-            SYNONYMS.put(word, List.of(keywords));
-        }
-    }
-
-    /** Whether a number written as {@code written} that read as no finite float is one too large for a float, not NaN or Infinity. */
+    /** Whether a number that read as no finite float was written too large for one, not as NaN or Infinity. */
     static boolean tooLarge(String written) {
         return !written.contains("NaN") && !written.contains("Infinity");
     }
 
     /** The words a message lists, quoted: "'a', 'b' and 'c'" for {@code last} = "and". */
     static String quoted(List<String> words, String last) {
-        List<String> quoted = words.stream().map(w -> "'" + w + "'").toList();
-        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " " + last + " " + quoted.get(quoted.size() - 1);
+        Function<String, String> quote = word -> "'" + word + "'";
+        return words.subList(0, words.size() - 1).stream().map(quote).collect(Collectors.joining(", ")) + " " + last
+                + " " + quote.apply(words.get(words.size() - 1));
     }
 
     /**
-     * The candidate nearest to {@code word} (the first in alphabetical order of equally near
-     * ones), or null if none is near enough: within two edits, or a third of the candidate's
-     * length for long words. Case is ignored, so that {@code IOR} finds {@code ior}.
+     * The candidate nearest to {@code word} (the first in alphabetical order of equally near ones), or null if
+     * none is within two edits, or a third of the candidate's length for long words. Case is ignored: {@code IOR}
+     * finds {@code ior}.
      */
     static String nearest(String word, Collection<String> candidates) {
         ToIntFunction<String> distance = candidate -> editDistance(word.toLowerCase(Locale.ROOT),
@@ -193,19 +179,15 @@ final class Hints {
     /** The Levenshtein distance: the fewest single-character edits that turn a into b. */
     static int editDistance(String a, String b) {
         int[] previous = new int[b.length() + 1];
-        int[] current = new int[b.length() + 1];
-        for (int j = 0; j <= b.length(); j++) {
-            previous[j] = j;
-        }
+        Arrays.setAll(previous, j -> j);
         for (int i = 1; i <= a.length(); i++) {
+            int[] current = new int[b.length() + 1];
             current[0] = i;
             for (int j = 1; j <= b.length(); j++) {
                 int substitution = previous[j - 1] + (a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1);
                 current[j] = Math.min(substitution, Math.min(previous[j], current[j - 1]) + 1);
             }
-            int[] swap = previous;
             previous = current;
-            current = swap;
         }
         return previous[b.length()];
     }

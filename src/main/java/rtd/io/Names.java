@@ -1,41 +1,45 @@
 package rtd.io;
 
-import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Stream;
+import rtd.geometry.Pattern;
+import rtd.math.Matrix4;
 
 /**
- * The names an expression may use while one scene file is read (Part III, "Expressions, named values and the
- * clock"): {@code clock}, whose value this reading is for (0 unless the command line says otherwise),
- * {@code pi}, and each name a {@code let} above the line being read defined. It also notes whether any
- * number used the clock: a scene that never does draws the same picture at every clock.
+ * The names a scene file defines as it is read, and the builders of those definitions. An expression may use
+ * (Part III, "Expressions, named values and the clock") {@code clock}, whose value this reading is for (0 unless
+ * the command line says otherwise), {@code pi}, and each name a {@code let:} above the line being read defined: a
+ * letter, then letters, digits or '_'; not a word the expressions use, and not defined twice. It notes whether any
+ * number used the clock: a scene that never does draws the same picture at every clock. Objects name what
+ * {@code pattern:} (<i>The Ray Tracer Challenge</i>, chapter 10) and {@code transform:} (chapters 4 and 14) define,
+ * resolved by {@link DefinedNames} once the file is read; a transform's steps apply in the order written,
+ * {@code M = T_k ⋯ T_2·T_1}.
  */
 final class Names {
 
+    static final String STEP_HELP = "write a step as (scale 2), (scale 1|2|1), (rotate_y 30) or (translate 0|1|0)";
+    private static final List<String> OPERATIONS = List.of("scale", "rotate_x", "rotate_y", "rotate_z", "translate");
+
     final double clock;
     private final Map<String, Expression> defined = new HashMap<>();
-    /**
-     * The line of each name's {@code let}, those with a mistake among them (a broken name is not in {@link #defined}).
-     */
+    /** The line of each name's {@code let}, those with a mistake among them (a broken name is not in {@link #defined}). */
     private final Map<String, Integer> lines = new HashMap<>();
     /** Whether some number of the file used the clock, directly or through a {@code let}. */
     boolean clockUsed;
     /** Where the reading notes each statement's numbers that use the clock, for {@link SceneFile#withClock}. */
     final ClockedScene.Recorder recorder;
 
-    /** The names of a reading at {@code clock} that tells {@code recorder} the numbers that use it. */
     Names(double clock, ClockedScene.Recorder recorder) {
         this.clock = clock;
         this.recorder = recorder;
     }
 
-    /**
-     * Words a {@code let} may not define: the clock, pi, the functions, and the words of the number format and
-     * of {@code (at x|y|z)}; made when a name is first checked, so a file of plain numbers never needs them.
-     */
+    /** The words a {@code let} may not define; made when first asked, so a file of plain numbers never needs them. */
     private static final class Reserved {
         static final Set<String> WORDS = Set.copyOf(Stream.concat(Expression.Function.NAMES.stream(),
                 Stream.of("clock", "pi", "at", "NaN", "Infinity")).toList());
@@ -53,35 +57,103 @@ final class Names {
         return definition == null ? null : new Expression.Name(word, definition, start);
     }
 
-    static boolean isReserved(String word) {
-        return Reserved.WORDS.contains(word);
-    }
-
-    /** The line of the {@code let} that defined {@code name}, or of the broken one that tried to; or null. */
-    Integer lineOf(String name) {
-        return lines.get(name);
-    }
-
     /** Whether {@code name} has a {@code let} with a mistake, which is reported there. */
     boolean isBroken(String name) {
         return lines.containsKey(name) && !defined.containsKey(name);
     }
 
-    /** Defines {@code name} as {@code definition}, by the {@code let} at {@code line}. */
-    void define(String name, Expression definition, int line) {
-        defined.put(name, definition);
-        lines.put(name, line);
-    }
-
-    /** Notes a {@code let} of {@code name} at {@code line} that has a mistake: its uses are not told the name is unknown. */
-    void defineBroken(String name, int line) {
-        lines.putIfAbsent(name, line);
-    }
-
     /** The names known now, those of broken lets among them, for "did you mean …?". */
     List<String> known() {
-        List<String> known = new ArrayList<>(List.of("clock", "pi"));
-        known.addAll(lines.keySet());
-        return known;
+        return Stream.concat(Stream.of("clock", "pi"), lines.keySet().stream()).toList();
+    }
+
+    /** {@code let:(name):(expression)}: defines the name of group 0 as the expression of group 1. */
+    static void let(StatementValues v) throws StatementError {
+        String name = v.name(0);
+        if (!ExpressionParser.isLetter((byte) name.charAt(0)) || name.indexOf('-') >= 0) {
+            throw v.errorAtValue(0, 0, "the name '" + name + "' cannot be defined: a name starts with a letter, then "
+                    + "letters, digits or '_'", "such as let:(size):(1)");
+        }
+        if (Reserved.WORDS.contains(name)) {
+            throw v.errorAtValue(0, 0, "'" + name + "' cannot be defined: it is a word of the expressions",
+                    "choose another name; clock, pi and the functions (sin, cos, sqrt, …) keep their meaning");
+        }
+        Names names = v.expressionNames;
+        Integer earlier = names.lines.get(name);
+        if (earlier != null) {
+            throw v.errorAtValue(0, 0, "a second let of '" + name + "': each name is defined once",
+                    "the first '" + name + "' is at line " + earlier);
+        }
+        names.defined.put(name, v.expression(1));
+        names.lines.put(name, v.line());
+    }
+
+    /** Notes that the {@code let} being read has a mistake, once its name is read: its uses are then left out. */
+    static void brokenLet(StatementValues v) {
+        if (v.hasValue(0)) {
+            v.expressionNames.lines.putIfAbsent(v.name(0), v.line());
+        }
+    }
+
+    /** {@code pattern:(name):(kind):(R|G|B):(R|G|B)[:(transform)]}; the transform's name is resolved later. */
+    static void pattern(StatementValues v, SceneContents out) throws StatementError {
+        String word = v.name(1);
+        Pattern.Kind kind = Arrays.stream(Pattern.Kind.values()).filter(k -> k.word().equals(word)).findFirst()
+                .orElse(null);
+        if (kind == null) {
+            throw unknown(v, 1, "unknown kind of pattern '" + word + "'", "kinds",
+                    Arrays.stream(Pattern.Kind.values()).map(Pattern.Kind::word).toList(), word);
+        }
+        out.pattern(v.name(0), new Pattern(kind, v.colour(2), v.colour(3), Matrix4.IDENTITY),
+                v.groupCount() > 4 ? v.name(4) : null);
+    }
+
+    /** {@code transform:(name):(step)[:(step)…]}: the steps composed in the order written. */
+    static void transform(StatementValues v, SceneContents out) throws StatementError {
+        Matrix4 m = Matrix4.IDENTITY;
+        for (int g = 1; g < v.groupCount(); g++) {
+            m = m.then(step(v, g));
+        }
+        out.transform(v.name(0), m);
+    }
+
+    /** The step of group {@code g}: its word, then its numbers, each checked where it is written. */
+    private static Matrix4 step(StatementValues v, int g) throws StatementError {
+        String word = v.name(g);
+        int count = v.size(g) - 1; // the word, then its numbers
+        if (!OPERATIONS.contains(word)) {
+            throw unknown(v, g, "unknown step '" + word + "' in a transform", "steps", OPERATIONS,
+                    word.toLowerCase(Locale.ROOT));
+        }
+        boolean scale = word.equals("scale");
+        int wanted = word.startsWith("rotate") ? 1 : 3;
+        if (!(count == wanted || scale && count == 1)) {
+            String takes = scale ? "1 number (s) or 3 (sx|sy|sz)"
+                    : wanted == 1 ? "1 number, an angle in degrees" : "3 numbers (x|y|z)";
+            throw v.errorAtValue(g, 0, "'" + word + "' takes " + takes + ", found " + count, STEP_HELP);
+        }
+        double[] n = new double[3];
+        for (int k = 0; k < count; k++) {
+            n[k] = v.number(g, 1 + k);
+            if (scale && n[k] == 0) {
+                throw v.errorAtValue(g, 1 + k, "a scale of 0 flattens the object to nothing",
+                        "scale by a number other than 0, such as 1 to leave that axis as it is");
+            }
+        }
+        return switch (word) {
+            case "scale" -> count == 1 ? Matrix4.scale(n[0], n[0], n[0]) : Matrix4.scale(n[0], n[1], n[2]);
+            case "rotate_x" -> Matrix4.rotateX(n[0]);
+            case "rotate_y" -> Matrix4.rotateY(n[0]);
+            case "rotate_z" -> Matrix4.rotateZ(n[0]);
+            default -> Matrix4.translate(n[0], n[1], n[2]);
+        };
+    }
+
+    /** The error for an unknown word of group {@code g}: "did you mean …?" among {@code words}, else their list. */
+    private static StatementError unknown(StatementValues v, int g, String message, String plural, List<String> words,
+            String word) {
+        String nearest = Hints.nearest(word, words);
+        return v.errorAtValue(g, 0, message, nearest != null ? "did you mean '" + nearest + "'?"
+                : "the " + plural + " are " + Hints.quoted(words, "and"));
     }
 }

@@ -154,7 +154,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         if (refused != null) {
             throw new FileSystemException(file.toString(), null, refused);
         }
-        return SceneFileReader.readWhole(file); // not Files.readAllBytes: it keeps a buffer as large as the file
+        return SceneIO.readWhole(file); // not Files.readAllBytes: it keeps a buffer as large as the file
     }
 
     /** Why a file could not be read, in words for a person. */

@@ -39,14 +39,14 @@ final class ObjReader {
     private final List<SceneError> errors = new ArrayList<>();
 
     /**
-     * The mesh in {@code source}, or its mistakes (up to one more than {@link SceneParser#MAX_ERRORS}); a
+     * The mesh in {@code source}, or its mistakes (up to one more than {@link SceneException#MAX_ERRORS}); a
      * NUL byte refuses the file.
      */
     static ObjMesh read(SourceText source) throws SceneException {
         byte[] bytes = source.bytes();
         for (int i = 0; i < bytes.length; i++) {
             if (bytes[i] == 0) {
-                throw new SceneException(List.of(TextBytes.inObjFile(source, i)), false);
+                throw new SceneException(List.of(source.nulInObj(i)), false);
             }
         }
         return new ObjReader(source, TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0).readAll();
@@ -59,9 +59,9 @@ final class ObjReader {
         this.lineStart = start;
     }
 
-    /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}: the mesh, or its mistakes. */
+    /** Reads every line, until the end or one error past {@link SceneException#MAX_ERRORS}: the mesh, or its mistakes. */
     private ObjMesh readAll() throws SceneException {
-        while (pos < bytes.length && errors.size() <= SceneParser.MAX_ERRORS) {
+        while (pos < bytes.length && errors.size() <= SceneException.MAX_ERRORS) {
             try {
                 readLine();
             } catch (StatementError e) {
@@ -71,7 +71,7 @@ final class ObjReader {
         }
         bytes = null;
         if (!errors.isEmpty()) {
-            throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneParser.MAX_ERRORS + 1)), false);
+            throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneException.MAX_ERRORS + 1)), false);
         }
         return new ObjMesh(Arrays.copyOf(vertices, 3 * vertexCount), Arrays.copyOf(normals, 3 * normalCount), corners,
                 cornerNormals, triangleCount);

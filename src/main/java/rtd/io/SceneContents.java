@@ -16,7 +16,7 @@ import rtd.scene.Light;
 
 /**
  * What the statements of a scene file make, as {@link StatementReader} reads them (each builder of the
- * {@link Grammar} gives its values here), before {@link SceneParser} checks what only the whole file can tell:
+ * {@link Grammar} gives its values here), before {@link SceneFile} checks what only the whole file can tell:
  * the objects, each {@code ambient}, camera and definition of a name with its place (a scene may have
  * only one of each, or one per name), the objects that wait for a name defined further down, and the
  * mistakes found.

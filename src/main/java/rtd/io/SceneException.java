@@ -4,11 +4,13 @@ import java.util.List;
 import java.util.stream.Collectors;
 
 /**
- * A scene file that rtd cannot render: it carries every {@link SceneError} found, up to a
- * limit, so that the user can fix them all in one go.
+ * A scene file that rtd cannot render: it carries every {@link SceneError} found, up to {@link #MAX_ERRORS}, so
+ * that the user can fix them all in one go.
  */
 public final class SceneException extends Exception {
 
+    /** After this many errors reading stops; more would only scroll the first ones away. */
+    public static final int MAX_ERRORS = 20;
     private static final long serialVersionUID = 1L;
 
     private final transient List<SceneError> errors;
@@ -16,7 +18,8 @@ public final class SceneException extends Exception {
 
     /** The {@code errors}, at least one; {@code stoppedEarly}: the file has more, which the reader did not keep. */
     public SceneException(List<SceneError> errors, boolean stoppedEarly) {
-        super(summary(errors), null, false, false);
+        super(errors.get(0).file() + ":" + errors.get(0).line() + ":" + errors.get(0).column() + ": "
+                + errors.get(0).message(), null, false, false);
         this.errors = List.copyOf(errors);
         this.stoppedEarly = stoppedEarly;
     }
@@ -26,13 +29,8 @@ public final class SceneException extends Exception {
     }
 
     public String report() {
-        String all = errors.stream().map(SceneError::format).collect(Collectors.joining("\n"));
-        String count = errors.size() == 1 ? "1 error" : errors.size() + " errors";
-        return all + "\n" + count + (stoppedEarly ? " shown; the file has more" : "") + "\n";
-    }
-
-    private static String summary(List<SceneError> errors) {
-        SceneError first = errors.get(0);
-        return first.file() + ":" + first.line() + ":" + first.column() + ": " + first.message();
+        return errors.stream().map(SceneError::format).collect(Collectors.joining("\n")) + "\n"
+                + (errors.size() == 1 ? "1 error" : errors.size() + " errors")
+                + (stoppedEarly ? " shown; the file has more" : "") + "\n";
     }
 }

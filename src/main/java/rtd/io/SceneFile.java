@@ -5,18 +5,32 @@ import java.io.InputStream;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Comparator;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import rtd.geometry.IGeometry;
+import rtd.image.Color;
 import rtd.scene.Scene;
 
 /**
- * A scene file read into memory once, to be parsed at any clock (Part III, "Expressions, named values and the
- * clock"): each frame of an animation is the file parsed at its own clock, and the OBJ files of its meshes are
- * read once for all frames. After the first parse it tells whether any number uses the clock; if none does,
- * every frame is the same picture. It is the one way in to reading a scene: {@link SceneIO} reads one at clock 0.
+ * A scene file read into memory once, to be parsed at any clock (paper, section 4.1, Listing A.1; Part III,
+ * "Expressions, named values and the clock"): one statement of the {@link Grammar} a line, {@code //}
+ * comments, any blanks, line ends and a byte-order mark. Text that is not UTF-8 is refused at its first bad
+ * byte; every mistake is reported with line and column, in file order, up to {@link SceneException#MAX_ERRORS}.
+ * After the {@link StatementReader} has read every line, the parse checks what only the whole file can tell
+ * (one camera, one {@code ambient}, one definition per name), builds the objects that name a definition further
+ * down, and gives the warnings of slips that are no mistakes. Each frame of an animation is the file parsed at
+ * its own clock, the OBJ files of its meshes read once for all frames; after the first parse it tells whether
+ * any number uses the clock: if none does, every frame is the same picture.
  */
 public final class SceneFile {
+
+    /** Fewer bytes than any line that makes an object, {@code sphere:(0|0|0):(1):(0|0|0)} and its line break. */
+    private static final int SHORTEST_OBJECT = 24;
+    private static final String CAMERA_EXAMPLE = "orthographic_camera:(0|0|20):(0|0|-1):(50)";
 
     private final String name;
     /** The file's bytes; null once {@link #once} has parsed them. */
@@ -36,7 +50,7 @@ public final class SceneFile {
         if (Files.isDirectory(path)) {
             throw new FileSystemException(path.toString(), null, "it is a folder, not a file");
         }
-        return new SceneFile(name, SceneFileReader.read(path, SceneIO.MAX_SCENE_BYTES), folder);
+        return new SceneFile(name, SceneIO.readBytes(path, SceneIO.MAX_SCENE_BYTES), folder);
     }
 
     /** The scene file at {@code path}, its meshes found from its folder. */
@@ -46,7 +60,7 @@ public final class SceneFile {
 
     /** A scene read from {@code in} (at most {@link SceneIO#MAX_SCENE_BYTES}), named {@code name}. */
     public static SceneFile read(InputStream in, String name) throws IOException {
-        return new SceneFile(name, SceneFileReader.read(in, name, (int) SceneIO.MAX_SCENE_BYTES), Path.of(""));
+        return new SceneFile(name, SceneIO.readBytes(in, name, (int) SceneIO.MAX_SCENE_BYTES), Path.of(""));
     }
 
     /** A scene of {@code bytes}, named {@code name} in messages, its meshes found from {@code folder}. */
@@ -58,42 +72,34 @@ public final class SceneFile {
         return bytes.length;
     }
 
-    /**
-     * The scene at {@code clock}; its slips go to {@code warnings} (null: dropped).
-     *
-     * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
-     */
+    /** The scene at {@code clock}, or all its mistakes (a value may break a rule at some clocks only). */
     public Scene at(double clock, List<SceneError> warnings) throws SceneException {
-        return parse(new Names(clock, new ClockedScene.Recorder()), warnings);
+        return parse(new Names(clock, new ClockedScene.Recorder()), warnings, false);
     }
 
-    /**
-     * The scene at {@code clock} with the expression of every number that uses the clock, for writing an animation
-     * as one POV-Ray file; read as {@link #at} reads it, with that table besides.
-     *
-     * @throws SceneException with every mistake, a value that breaks a rule at this clock among them
-     */
+    /** As {@link #at}, with the expression of every number that uses the clock, to export an animation as one file. */
     public ClockedScene withClock(double clock) throws SceneException {
         ClockedScene.Recorder recorder = new ClockedScene.Recorder();
-        return recorder.scene(parse(new Names(clock, recorder), null));
+        return recorder.scene(parse(new Names(clock, recorder), null, false));
     }
 
     /**
-     * The scene at clock 0, for a file read to be parsed once: this file lets its bytes go as the parse starts, so
-     * that they go with the parse's own ({@link SourceText#close}), before the render of a large scene.
+     * The scene at clock 0, for a file parsed once: the bytes go as the parse starts, with the parse's own
+     * ({@link SourceText#close}), before the render of a large scene.
      */
     Scene once(List<SceneError> warnings) throws SceneException {
         return parse(new Names(0, new ClockedScene.Recorder()), warnings, true);
     }
 
-    private Scene parse(Names names, List<SceneError> warnings) throws SceneException {
-        return parse(names, warnings, false);
+    /** Whether a number of the file used the clock, in a parse so far. */
+    public boolean usesClock() {
+        return usesClock;
     }
 
     private Scene parse(Names names, List<SceneError> warnings, boolean once) throws SceneException {
         // Taken from the field, not kept in a local variable, which would hold them to the end of the parse.
         try (SourceText source = new SourceText(name, once ? takeBytes() : bytes, folder, meshes)) {
-            return SceneParser.parse(source, names, warnings);
+            return parse(source, names, warnings);
         } finally { // a failed parse tells too: a value may break its rule at some clocks only
             usesClock |= names.clockUsed;
         }
@@ -105,8 +111,73 @@ public final class SceneFile {
         return taken;
     }
 
-    /** Whether a number of the file used the clock, in a parse so far. */
-    public boolean usesClock() {
-        return usesClock;
+    private static Scene parse(SourceText source, Names names, List<SceneError> warnings) throws SceneException {
+        byte[] bytes = source.bytes();
+        int start = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;
+        int lines = 1;
+        boolean plain = true;
+        for (int i = start; i < bytes.length; i++) {
+            if (bytes[i] <= '\r') { // one test for the rare bytes: line breaks, control characters, every non-ASCII byte
+                lines += bytes[i] == '\n' || bytes[i] == '\r' && TextBytes.endsLine(bytes, i) ? 1 : 0;
+                plain &= bytes[i] > 0;
+            }
+        }
+        int bad = plain ? -1 : SourceText.firstBadByte(bytes, start, bytes.length);
+        if (bad >= 0) {
+            throw new SceneException(List.of(source.notUtf8(start, bad)), false);
+        }
+        // Most lines of a large file make one object, so the list is made that long at once: grown
+        // line by line, its large arrays would go to the old generation, and stay there long.
+        SceneContents contents = new SceneContents(Math.min(lines, (bytes.length - start) / SHORTEST_OBJECT + 1));
+        new StatementReader(source, start, contents, names).readAll();
+        return join(source, contents, warnings);
+    }
+
+    /** The scene the contents make, or every mistake in them, ordered by place. */
+    private static Scene join(SourceText source, SceneContents contents, List<SceneError> warnings) throws SceneException {
+        List<SceneContents.Found> errors = contents.errors;
+        SceneError numbered = contents.firstLineNumber; // the lines that start with a line number: one mistake
+        if (numbered != null) {
+            int more = contents.lineNumbers - 1;
+            errors.add(numbered.saying(numbered.message() + (more == 0 ? "" : more == 1 ? ", as does 1 more line"
+                    : ", as do " + more + " more lines"), numbered.help()).found());
+        }
+        onlyOne(contents.ambients, "a second 'ambient': a scene has one background colour", "the first 'ambient'",
+                errors);
+        onlyOne(contents.cameras, "a second camera: a scene has one", "the first camera", errors);
+        DefinedNames names = new DefinedNames(contents, errors);
+        Set<String> named = new HashSet<>(contents.namedAtOnce);
+        List<IGeometry> objects = contents.allObjects(names, named);
+        int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
+        if (errors.isEmpty() && contents.statementCount == 0) {
+            errors.add(source.errorAt(1, start, start, "the scene is empty: it has no statements, only blanks and "
+                    + "comments", "a scene needs at least a camera, such as " + CAMERA_EXAMPLE).found());
+        } else if (errors.isEmpty() && contents.cameras.isEmpty()) {
+            errors.add(source.errorAt(1, start, start, "the scene has no camera",
+                    "add a line such as " + CAMERA_EXAMPLE).found());
+        }
+        if (!errors.isEmpty()) {
+            errors.sort(Comparator.comparingInt(SceneContents.Found::line).thenComparingInt(SceneContents.Found::column));
+            throw new SceneException(errors.stream().limit(SceneException.MAX_ERRORS).map(SceneContents.Found::error)
+                    .toList(), errors.size() > SceneException.MAX_ERRORS);
+        }
+        if (warnings != null) {
+            boolean lit = !contents.lights.isEmpty();
+            warnings.addAll(names.warnings(named, lit));
+            if (lit) {
+                contents.litWarnings.stream().sorted(Comparator.comparingInt(SceneError::line))
+                        .limit(SceneException.MAX_ERRORS).forEach(warnings::add);
+            }
+        }
+        Color ambient = contents.ambients.isEmpty() ? Color.BLACK : contents.ambients.get(0).value();
+        return new Scene(ambient, contents.cameras.get(0).value(), objects, contents.lights);
+    }
+
+    /** An error at each of {@code found} after the first, which {@code first} names in the help. */
+    private static void onlyOne(List<? extends SceneContents.Located<?>> found, String second, String first,
+            List<SceneContents.Found> errors) {
+        for (var located : found.subList(Math.min(1, found.size()), found.size())) {
+            errors.add(located.place().saying(second, first + " is at line " + found.get(0).place().line()).found());
+        }
     }
 }

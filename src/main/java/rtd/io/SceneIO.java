@@ -7,10 +7,13 @@ import java.io.OutputStream;
 import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.DoubleConsumer;
 import rtd.image.Picture;
 import rtd.scene.Scene;
@@ -18,7 +21,9 @@ import rtd.scene.Scene;
 /**
  * Input and output (paper, sections 4.1 and 4.3): reads a scene file at clock 0 (a {@link SceneFile} read
  * once), writes the picture as a PNG, or in another format that {@code javax.imageio} writes
- * ({@link ImageFormat#write}). Every warning list may be null: the warnings are dropped.
+ * ({@link ImageFormat#write}); a null warning list drops the warnings. A file is read in bounded time and memory:
+ * one over {@link #MAX_SCENE_BYTES} is refused before it is read, and a stream that never ends
+ * ({@code /dev/zero}, a pipe) is read in chunks, each checked as it arrives, up to the first non-text byte.
  */
 public final class SceneIO {
 
@@ -26,17 +31,14 @@ public final class SceneIO {
     public static final String STDIN_NAME = "<stdin>";
     /** The largest scene file rtd reads, 1 GiB: about 20 million spheres. */
     public static final long MAX_SCENE_BYTES = 1L << 30;
+    private static final int CHUNK = 1 << 16;
+    /** The most bytes of a regular file read at once: Java keeps a buffer outside the heap as large as each read. */
+    private static final int WHOLE_FILE_PIECE = 1 << 20;
 
     private SceneIO() {
     }
 
-    /**
-     * Reads the scene file at {@code path} (UTF-8) in bounded memory and time ({@link SceneFileReader}); its
-     * meshes' OBJ files are found from its folder.
-     *
-     * @throws SceneException if the file has mistakes; it lists them all
-     * @throws IOException    if the file cannot be read
-     */
+    /** Reads the scene file at {@code path} (UTF-8); its meshes' OBJ files are found from its folder. */
     public static Scene readScene(Path path) throws SceneException, IOException {
         return readScene(path, null);
     }
@@ -71,17 +73,12 @@ public final class SceneIO {
         return parseScene(name, text.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
     }
 
-    /** Reads a scene from raw bytes, named {@code name} in messages, meshes found from {@code meshFolder}. */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
         return SceneFile.of(name, bytes, meshFolder).once(warnings);
     }
 
-    /**
-     * Writes {@code picture} to {@code output} all or nothing: into a temporary file beside it
-     * ({@link TemporaryFiles}), which replaces {@code output} only when complete and is removed on failure.
-     * {@code progress} hears the fraction written.
-     */
+    /** Writes {@code picture} to {@code output} all or nothing, through a temporary file ({@link TemporaryFiles}). */
     public static void writeImage(Picture picture, ImageFormat format, Path output, DoubleConsumer progress)
             throws IOException {
         TemporaryFiles.replace(output, out -> format.write(picture, out, progress));
@@ -97,14 +94,101 @@ public final class SceneIO {
         });
     }
 
-    /**
-     * Writes {@code picture} into {@code device}, a FIFO or a device such as /dev/null, opened for writing
-     * only: never created, replaced or truncated.
-     */
+    /** Writes {@code picture} into {@code device}, a FIFO or /dev/null: never created, replaced or truncated. */
     public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
             throws IOException {
         try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), 1 << 16)) {
             format.write(picture, out, progress);
         }
+    }
+
+    /** The bytes of {@code path}, at most {@code limit}: all, or up to the chunk of the first non-text byte. */
+    static byte[] readBytes(Path path, long limit) throws IOException {
+        if (!Files.isRegularFile(path)) { // devices, FIFOs: of unknown length
+            try (InputStream in = Files.newInputStream(path)) {
+                return readBytes(in, path.toString(), (int) limit);
+            }
+        }
+        long size = Files.size(path);
+        if (size > limit) {
+            throw tooLarge(path.toString(), "is " + bytes(size), limit);
+        }
+        // Bounded already: read whole; the parse checks its text.
+        byte[] bytes = readWhole(path);
+        if (bytes.length > limit) { // it grew while we read it
+            throw tooLarge(path.toString(), "is larger than " + bytes(limit), limit);
+        }
+        return bytes;
+    }
+
+    /** All bytes of a regular file, in pieces: {@code Files.readAllBytes} keeps a buffer as large as the file. */
+    static byte[] readWhole(Path path) throws IOException {
+        try (InputStream in = Files.newInputStream(path)) {
+            byte[] bytes = new byte[(int) Files.size(path)];
+            int filled = 0;
+            while (filled < bytes.length) {
+                int read = in.read(bytes, filled, Math.min(WHOLE_FILE_PIECE, bytes.length - filled));
+                if (read < 0) {
+                    return Arrays.copyOf(bytes, filled); // it shrank while we read it
+                }
+                filled += read;
+            }
+            byte[] more = in.readAllBytes(); // what it grew by, in small reads
+            byte[] all = more.length == 0 ? bytes : Arrays.copyOf(bytes, Math.addExact(bytes.length, more.length));
+            System.arraycopy(more, 0, all, bytes.length, more.length);
+            return all;
+        }
+    }
+
+    /** A stream of unknown length, read in chunks up to the first with a non-text byte, or past {@code limit}. */
+    static byte[] readBytes(InputStream in, String name, int limit) throws IOException {
+        byte[] bytes = new byte[Math.min(limit + 1, CHUNK)];
+        int filled = 0;
+        int checked = 0;
+        while (true) {
+            if (filled == bytes.length) {
+                if (filled > limit) {
+                    throw tooLarge(name, "is larger than " + bytes(limit), limit);
+                }
+                bytes = Arrays.copyOf(bytes, (int) Math.min(limit + 1L, 2L * bytes.length));
+            }
+            int read = in.read(bytes, filled, Math.min(CHUNK, bytes.length - filled));
+            if (read < 0) {
+                break;
+            }
+            filled += read;
+            int whole = wholeCharacters(bytes, checked, filled);
+            if (SourceText.firstBadByte(bytes, checked, whole) >= 0) {
+                break; // the rest cannot change the verdict: not a scene
+            }
+            checked = whole;
+        }
+        return filled == bytes.length ? bytes : Arrays.copyOf(bytes, filled);
+    }
+
+    private static FileSystemException tooLarge(String name, String size, long limit) {
+        return new FileSystemException(name, null, "it " + size + "; rtd reads scene files of at most "
+                + bytes(limit) + " (a scene of a million spheres is about 50 MiB)");
+    }
+
+    /** {@code bytes} in the largest binary unit that keeps a digit before the point: "3.0 GiB", "12.5 MiB". */
+    private static String bytes(long bytes) {
+        int unit = bytes < 1024 ? 0 : Math.min(4, (63 - Long.numberOfLeadingZeros(bytes)) / 10);
+        return unit == 0 ? bytes + " bytes"
+                : String.format(Locale.ROOT, "%.1f %s", bytes / Math.pow(1024, unit), "KMGT".charAt(unit - 1) + "iB");
+    }
+
+    /** Where the whole characters of {@code bytes[from, to)} end: {@code to}, or the start of one cut at the end. */
+    private static int wholeCharacters(byte[] bytes, int from, int to) {
+        for (int i = to - 1; i >= Math.max(from, to - 3); i--) {
+            int b = bytes[i] & 0xFF;
+            if (b < 0x80) {
+                return to;
+            }
+            if (b >= 0xC0) { // the first byte of a character of 2, 3 or 4 bytes
+                return i + (b >= 0xF0 ? 4 : b >= 0xE0 ? 3 : 2) > to ? i : to;
+            }
+        }
+        return to;
     }
 }

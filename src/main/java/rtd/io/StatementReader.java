@@ -32,9 +32,9 @@ final class StatementReader {
         contents.readFrom(values);
     }
 
-    /** Reads every line, until the end or one error past {@link SceneParser#MAX_ERRORS}. */
+    /** Reads every line, until the end or one error past {@link SceneException#MAX_ERRORS}. */
     void readAll() {
-        while (cursor.pos < cursor.bytes.length && contents.errors.size() <= SceneParser.MAX_ERRORS) {
+        while (cursor.pos < cursor.bytes.length && contents.errors.size() <= SceneException.MAX_ERRORS) {
             try {
                 readStatement();
             } catch (StatementError e) {
@@ -100,7 +100,7 @@ final class StatementReader {
      */
     private void keepNameOfBrokenDefinition() {
         if (current != null && current.keyword().equals(Grammar.LET)) {
-            Definitions.brokenLet(values);
+            Names.brokenLet(values);
         } else if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
                 && values.hasValue(0)) {
             contents.brokenDefinitions.add(values.name(0));

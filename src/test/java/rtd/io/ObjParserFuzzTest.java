@@ -39,7 +39,7 @@ class ObjReaderFuzzTest {
         try {
             mesh = ObjReader.read(source);
         } catch (SceneException e) {
-            assertThat(e.errors()).isNotEmpty().hasSizeLessThanOrEqualTo(SceneParser.MAX_ERRORS + 1);
+            assertThat(e.errors()).isNotEmpty().hasSizeLessThanOrEqualTo(SceneException.MAX_ERRORS + 1);
             for (SceneError error : e.errors()) {
                 assertThat(error.file()).isEqualTo("fuzz.obj");
                 assertThat(error.line()).isPositive();

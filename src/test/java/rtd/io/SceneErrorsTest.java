@@ -137,7 +137,7 @@ class SceneErrorsTest {
     @Test
     void afterTwentyErrorsTheReaderStopsAndSaysSo() {
         SceneException e = errorsOf(CAMERA + "oops\n".repeat(100));
-        assertThat(e.errors()).hasSize(SceneParser.MAX_ERRORS);
+        assertThat(e.errors()).hasSize(SceneException.MAX_ERRORS);
         assertThat(e.report()).endsWith("20 errors shown; the file has more\n");
     }
 

@@ -65,7 +65,7 @@ class SceneFileReaderTest {
         });
         writer.setDaemon(true);
         writer.start();
-        FileSystemException e = catchThrowableOfType(FileSystemException.class, () -> SceneFileReader.read(fifo, 1 << 20));
+        FileSystemException e = catchThrowableOfType(FileSystemException.class, () -> SceneIO.readBytes(fifo, 1 << 20));
         assertThat(e).as("a FileSystemException").isNotNull();
         assertThat(e.getReason()).startsWith("it is larger than 1.0 MiB; rtd reads scene files of at most 1.0 MiB");
     }

@@ -34,7 +34,7 @@ class SceneParserFuzzTest {
             assertThat(scene.camera()).isNotNull();
             assertThat(scene.ambient()).isNotNull();
         } catch (SceneException e) {
-            assertThat(e.errors()).isNotEmpty().hasSizeLessThanOrEqualTo(SceneParser.MAX_ERRORS);
+            assertThat(e.errors()).isNotEmpty().hasSizeLessThanOrEqualTo(SceneException.MAX_ERRORS);
             for (SceneError error : e.errors()) {
                 assertThat(error.file()).isEqualTo("fuzz.txt");
                 assertThat(error.line()).isPositive();

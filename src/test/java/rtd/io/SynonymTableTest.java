@@ -28,6 +28,6 @@ class SynonymTableTest {
                 documented.put(word.trim(), keywords);
             }
         }
-        assertThat(documented).isEqualTo(Hints.synonyms());
+        assertThat(documented).isEqualTo(Hints.SYNONYMS);
     }
 }
