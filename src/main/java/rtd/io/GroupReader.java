@@ -1,27 +1,27 @@
 package rtd.io;
 
 /**
- * Reads the groups {@code :(…)} of a statement into {@link WrittenGroups}, as its {@link Group}s say, at the
- * {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
+ * Reads the groups {@code :(…)} of a statement into its {@link StatementValues}, as its {@link Group}s say, at
+ * the {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
  * III where numbers may stand (a pattern's name as an object's colour, {@code (tiles)}; a transformation's
  * step, {@code (rotate_y 30)}). Each mistake is worded at its place, with the usage or a hint.
  */
 final class GroupReader {
 
     private final LineCursor cursor;
-    private final WrittenGroups written;
+    private final StatementValues values;
     private final NumberReader numbers;
     /** The statement whose group is being read, and the group. */
     private Statement statement;
     private Group group;
 
-    GroupReader(LineCursor cursor, WrittenGroups written, Names names) {
+    GroupReader(LineCursor cursor, StatementValues values, Names names) {
         this.cursor = cursor;
-        this.written = written;
-        this.numbers = new NumberReader(cursor, names, written);
+        this.values = values;
+        this.numbers = new NumberReader(cursor, names, values);
     }
 
-    /** Reads {@code group} of {@code statement}, {@code :(…)}, into the written groups. */
+    /** Reads {@code group} of {@code statement}, {@code :(…)}, into the values. */
     void readGroup(Statement statement, Group group) throws StatementError {
         this.statement = statement;
         this.group = group;
@@ -35,22 +35,19 @@ final class GroupReader {
             throw expected("'(' to start ");
         }
         int groupStart = cursor.pos++;
-        written.openGroup(groupStart);
+        values.openGroup(groupStart);
         cursor.skipBlanks();
-        if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
+        if (cursor.at(')') && group.rule() != Group.Rule.PROPERTIES) {
             throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
         }
-        if (group.orName() && atLoneName()) {
-            readName();
-            written.named = written.groupCount - 1;
-            return;
-        }
-        switch (group.kind()) {
-            case NUMBERS -> readNumbers(groupStart);
-            case OPERATION -> readStep();
+        boolean patternName = group.rule() == Group.Rule.PAINT && atLoneName();
+        values.named = patternName ? values.groupCount() - 1 : values.named;
+        switch (patternName ? Group.Rule.NAME : group.rule()) {
+            case STEP -> readStep();
             case NAME -> readName();
             case PATH -> readPath();
             case PROPERTIES -> readProperties();
+            default -> readNumbers(groupStart);
         }
     }
 
@@ -58,11 +55,11 @@ final class GroupReader {
     private void readNumbers(int groupStart) throws StatementError {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
-        boolean target = group.orAt() && p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't'
+        boolean target = group.rule() == Group.Rule.VIEW && p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't'
                 && TextBytes.isSpace(bytes[p + 2]);
         if (target) {
             cursor.pos += 2;
-            written.target = written.groupCount - 1;
+            values.target = values.groupCount() - 1;
         }
         int found = 0;
         do {
@@ -102,7 +99,7 @@ final class GroupReader {
         if (cursor.pos == start) {
             throw expected("an operation such as 'scale 2' in ");
         }
-        written.add(Float.NaN, start, cursor.pos, -1);
+        values.add(Float.NaN, start, cursor.pos, -1);
         cursor.skipBlanks();
         if (cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
@@ -121,7 +118,7 @@ final class GroupReader {
         if (cursor.pos == start) {
             throw expected("a name in ");
         }
-        written.add(Float.NaN, start, cursor.pos, -1);
+        values.add(Float.NaN, start, cursor.pos, -1);
         int nameEnd = cursor.pos;
         cursor.skipBlanks();
         if (!cursor.at(')')) {
@@ -156,7 +153,7 @@ final class GroupReader {
         while (TextBytes.isBlank(bytes[nameEnd - 1])) {
             nameEnd--; // the group is not empty, so a byte that is no blank stands before
         }
-        written.add(Float.NaN, start, nameEnd, -1);
+        values.add(Float.NaN, start, nameEnd, -1);
         cursor.pos++;
     }
 
@@ -171,7 +168,7 @@ final class GroupReader {
             int key = readKey();
             cursor.skipBlanks();
             if (!cursor.at('=')) {
-                throw expected("'=' after the key '" + group.keys().get(key) + "' in ");
+                throw expected("'=' after the key '" + Group.KEYS.get(key) + "' in ");
             }
             cursor.pos++;
             cursor.skipBlanks();
@@ -193,16 +190,16 @@ final class GroupReader {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
-            throw expected("a key such as '" + group.keys().get(0) + "' in ");
+            throw expected("a key such as '" + Group.KEYS.get(0) + "' in ");
         }
         String word = cursor.source.text(start, cursor.pos);
-        int key = group.keys().indexOf(word);
+        int key = Group.KEYS.indexOf(word);
         if (key < 0) {
-            String nearest = Hints.nearest(word, group.keys());
+            String nearest = Hints.nearest(word, Group.KEYS);
             throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
-                    ? "did you mean '" + nearest + "'?" : "the keys are " + Hints.quoted(group.keys(), "and"));
+                    ? "did you mean '" + nearest + "'?" : "the keys are " + Hints.quoted(Group.KEYS, "and"));
         }
-        if (written.lastHasKey(key)) {
+        if (values.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
         return key;

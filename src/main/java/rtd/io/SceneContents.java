@@ -114,7 +114,7 @@ final class SceneContents {
             // with a name not right, the object is only checked
             into = errors.size() > before ? new ArrayList<>() : all;
             try {
-                values.statement().builder().build(values, this);
+                values.build(this);
             } catch (StatementError e) {
                 addErrors(e);
             }
