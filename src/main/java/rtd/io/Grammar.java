@@ -31,7 +31,7 @@ import rtd.scene.Light;
 final class Grammar {
 
     /** The radius from which a sphere warns of shadow acne in a shaded scene ({@link #sphere}). */
-    static final float FLOOR_RADIUS = 5000;
+    private static final float FLOOR_RADIUS = 5000;
     /** The keyword of the statement that names a value (Part III). */
     static final String LET = "let";
     private static final Group NAME = word("name", Rule.NAME, "name");
@@ -167,7 +167,7 @@ final class Grammar {
 
     /** A cylinder between two different end points (Part III, "More shapes"). */
     private static Cylinder cylinder(StatementValues v) throws StatementError {
-        v.axis(1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        axis(v, 1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
         return new Cylinder(v.vector(0), v.vector(1), v.number(2, 0), v.colour(3), v.material());
     }
 
@@ -177,7 +177,19 @@ final class Grammar {
             throw v.errorAtValue(3, 0, "the cone's radii are both 0, so it has no volume",
                     "give one end a radius greater than 0: cone:(0|0|0):(1):(0|2|0):(0) is a cone with its apex up");
         }
-        v.axis(2, "cone", "a cone runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        axis(v, 2, "cone", "a cone runs from one end point to another, such as (0|0|0) to (0|2|0)");
         return new Cone(v.vector(0), v.number(1, 0), v.vector(2), v.number(3, 0), v.colour(4), v.material());
+    }
+
+    /** The axis of a solid from group 0's end point to group {@code g}'s, which float must be able to normalise. */
+    private static void axis(StatementValues v, int g, String shape, String help) throws StatementError {
+        String why = Group.unusable(v.vector(g).subtract(v.vector(0)));
+        if ("zero".equals(why)) {
+            throw v.errorAtGroup(g, "the " + shape + "'s two end points are the same point", help);
+        }
+        if (why != null) {
+            throw v.errorAtGroup(g, "the " + shape + "'s end points are too " + ("long".equals(why) ? "far apart"
+                    : "close together") + " to compute with in float", "give end points a distance of about 1e-15 to 1e15 apart");
+        }
     }
 }
