@@ -36,7 +36,7 @@ final class Grammar {
     static final String LET = "let";
     private static final Group NAME = word("name", Rule.NAME, "name");
     private static final Group POSITION = numbers("position", "x|y|z");
-    private static final Group VIEW = numbers("view direction", Rule.VIEW, "x|y|z",
+    private static final Group VIEW = new Group("view direction", Rule.VIEW, "x|y|z", 3,
             "the camera looks along it; (0|0|-1) looks into the screen");
     /** An object's colour, which may name a pattern instead. */
     private static final Group PAINT = numbers("colour", Rule.PAINT, "R|G|B");
@@ -51,7 +51,7 @@ final class Grammar {
                     (v, out) -> out.camera(camera(v, true))),
             Statement.shape("sphere", List.of(numbers("centre", "x|y|z"), numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(sphere(v, out))),
-            Statement.shape("plane", List.of(numbers("point", "x|y|z"), numbers("normal", Rule.DIRECTION, "nx|ny|nz",
+            Statement.shape("plane", List.of(numbers("point", "x|y|z"), new Group("normal", Rule.DIRECTION, "nx|ny|nz", 3,
                     "the plane is at right angles to it; (0|1|0) makes a floor"), PAINT),
                     (v, out) -> out.object(new Plane(v.vector(0), v.vector(1), v.colour(2), v.material()))),
             Statement.shape("triangle", List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
@@ -85,9 +85,11 @@ final class Grammar {
     /** A {@code material}'s finish: each property given, or the default's. */
     private static Material material(StatementValues v) {
         Material d = Material.DEFAULT;
-        return new Material(v.property(1, 0, d.ambient()), v.property(1, 1, d.diffuse()), v.property(1, 2, d.specular()),
-                v.property(1, 3, d.shininess()), v.property(1, 4, d.reflective()), v.property(1, 5, d.transparency()),
-                v.property(1, 6, d.ior()));
+        float[] p = {d.ambient(), d.diffuse(), d.specular(), d.shininess(), d.reflective(), d.transparency(), d.ior()};
+        for (int k = 0; k < v.size(1); k++) {
+            p[v.key(1, k)] = v.number(1, k);
+        }
+        return new Material(p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
     }
 
     /** The keywords as bytes, beside {@link #STATEMENTS}, to find a line's statement without a String. */

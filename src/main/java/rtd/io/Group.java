@@ -50,17 +50,13 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         STEP
     }
 
-    static Group numbers(String meaning, Rule rule, String shape, String help) {
-        return new Group(meaning, rule, shape, shape.split("\\|").length, help);
-    }
-
     /** A group of numbers written as {@code shape}, such as {@code x|y|z}; their count is the shape's. */
     static Group numbers(String meaning, Rule rule, String shape) {
-        return numbers(meaning, rule, shape, null);
+        return new Group(meaning, rule, shape, shape.split("\\|").length, null);
     }
 
     static Group numbers(String meaning, String shape) {
-        return numbers(meaning, Rule.NUMBERS, shape, null);
+        return numbers(meaning, Rule.NUMBERS, shape);
     }
 
     /** A group that holds one word (a name, a path, a step) or properties, written as {@code shape}. */

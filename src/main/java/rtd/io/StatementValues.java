@@ -8,11 +8,9 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The values of the statement being read, group by group, each with where it is written, and the rules of
- * the {@link Group}s they follow (section 4.1; Part II, "The scene file"; Part III): every number finite, a
- * radius above 0, a colour channel a whole number from 0 to 255, a direction that float can normalise, and so
- * on. {@link #build} checks every group by its rule before the builder reads them, so a builder only reads
- * values that follow it; a broken rule is an error at the value that breaks it. One is filled for every line, so that a line of
+ * The values of the statement being read, group by group, each with where it is written (section 4.1; Part
+ * II, "The scene file"). {@link #build} checks each group by its {@link Group}'s rule before the builder reads
+ * them, so a builder reads only values that follow the rules. One is filled for every line, so that a line of
  * numbers makes no object per number.
  */
 final class StatementValues {
@@ -87,8 +85,6 @@ final class StatementValues {
         return copy;
     }
 
-    // ---- keeping what the reader finds ------------------------------------------------------
-
     /** Starts the next group, whose '(' stands at {@code offset}. */
     void openGroup(int offset) {
         if (groupCount == firsts.length) {
@@ -126,9 +122,7 @@ final class StatementValues {
         return IntStream.range(firsts[groupCount - 1], count).anyMatch(i -> keys[i] == key);
     }
 
-    // ---- what a builder reads ---------------------------------------------------------------
-
-    /** Checks each group by its rule, then has the statement build its value into {@code out}. */
+    /** Checks each group by its rule (an error at the first value that breaks one), then builds into {@code out}. */
     void build(SceneContents out) throws StatementError {
         for (int g = 0; g < groupCount; g++) {
             statement.group(g).check(this, g);
@@ -140,7 +134,7 @@ final class StatementValues {
         this.names = names;
     }
 
-    /** The object as its names make it ({@link DefinedNames.ObjectNames#dress}): every shape's object passes through here. */
+    /** The object as its names make it ({@link DefinedNames.ObjectNames#dress}): every shape's object passes here. */
     IGeometry dress(IGeometry object) {
         return names.dress(object);
     }
@@ -172,7 +166,7 @@ final class StatementValues {
         return end(g) - firsts[g];
     }
 
-    /** The group that names a pattern in the place of an object's colour, or -1. */
+    /** The group that names a pattern in the place of an object's colour, or −1. */
     int patternGroup() {
         return named;
     }
@@ -236,16 +230,6 @@ final class StatementValues {
         return new Color((int) channel(g, 0), (int) channel(g, 1), (int) channel(g, 2));
     }
 
-    /** The value of property {@code key} (its index in {@link Group#KEYS}) in group {@code g}; {@code fallback} if not given. */
-    float property(int g, int key, float fallback) {
-        for (int i = firsts[g]; i < end(g); i++) {
-            if (keys[i] == key) {
-                return values[i];
-            }
-        }
-        return fallback;
-    }
-
     /** Channel {@code k} of colour group {@code g}: an expression rounded ½ up (Part III). */
     float channel(int g, int k) {
         int i = firsts[g] + k;
@@ -256,8 +240,6 @@ final class StatementValues {
     int key(int g, int k) {
         return keys[firsts[g] + k];
     }
-
-    // ---- errors -----------------------------------------------------------------------------
 
     /** An error at the '(' of group {@code g}. */
     StatementError errorAtGroup(int g, String message, String help) {
@@ -288,7 +270,7 @@ final class StatementValues {
         return g + 1 < groupCount ? firsts[g + 1] : count;
     }
 
-    /** Value {@code i} (of all groups) as written, for messages; an expression with its value ({@link ClockText#withValue}). */
+    /** Value {@code i} as written, for messages; an expression with its value ({@link ClockText#withValue}). */
     private String written(int i) {
         String text = source.text(starts[i], ends[i]);
         Expression tree = trees[i];
