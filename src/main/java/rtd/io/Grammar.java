@@ -133,7 +133,7 @@ final class Grammar {
     private static Sphere sphere(StatementValues v, SceneContents out) {
         Sphere sphere = new Sphere(v.vector(0), v.number(1, 0), v.colour(2), v.material());
         if (sphere.radius() >= FLOOR_RADIUS) {
-            out.warningIfLit(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
+            out.litWarnings.add(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
                     + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
                     "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at "
                     + "y = 0").place);

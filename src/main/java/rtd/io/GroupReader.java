@@ -37,21 +37,30 @@ final class GroupReader {
         int groupStart = cursor.pos++;
         values.openGroup(groupStart);
         cursor.skipBlanks();
-        if (cursor.at(')') && group.rule() != Group.Rule.PROPERTIES) {
+        if (cursor.at(')') && group.rule() == Group.Rule.PROPERTIES) {
+            cursor.pos++; // no properties: the default finish
+            return;
+        }
+        if (cursor.at(')')) {
             throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
         }
         boolean patternName = group.rule() == Group.Rule.PAINT && atLoneName();
         values.named = patternName ? values.groupCount() - 1 : values.named;
         switch (patternName ? Group.Rule.NAME : group.rule()) {
-            case STEP -> readStep();
             case NAME -> readName();
             case PATH -> readPath();
-            case PROPERTIES -> readProperties();
+            case STEP -> {
+                readStepWord();
+                readNumbers(groupStart);
+            }
             default -> readNumbers(groupStart);
         }
     }
 
-    /** The numbers of a group, after its '(' and any blanks, up to and with its ')'; perhaps {@code (at x|y|z)}. */
+    /**
+     * Numbers separated by '|', up to and with the group's ')': perhaps {@code (at x|y|z)}; each after its key and
+     * '=' in properties; as many as a step's word takes.
+     */
     private void readNumbers(int groupStart) throws StatementError {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
@@ -61,11 +70,12 @@ final class GroupReader {
             cursor.pos += 2;
             values.target = values.groupCount() - 1;
         }
+        boolean counted = group.rule() != Group.Rule.PROPERTIES && group.rule() != Group.Rule.STEP;
         int found = 0;
         do {
             cursor.skipBlanks();
-            numbers.readAndKeep(-1);
-            if (++found > group.size()) {
+            numbers.readAndKeep(group.rule() == Group.Rule.PROPERTIES ? readKey() : -1);
+            if (++found > group.size() && counted) {
                 throw tooManyNumbers(groupStart);
             }
         } while (!groupEndsAfterNumber());
@@ -92,8 +102,8 @@ final class GroupReader {
         return p < bytes.length && bytes[p] == ')';
     }
 
-    /** A step of a transformation: a word, blanks, and one or more numbers separated by '|', up to and with ')'. */
-    private void readStep() throws StatementError {
+    /** The word that starts a transformation's step, then blanks: numbers follow. */
+    private void readStepWord() throws StatementError {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
@@ -105,10 +115,6 @@ final class GroupReader {
             throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
                     + "' in " + group.of(statement) + ", found ')'", Definitions.STEP_HELP);
         }
-        do {
-            cursor.skipBlanks();
-            numbers.readAndKeep(-1);
-        } while (!groupEndsAfterNumber());
     }
 
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
@@ -157,25 +163,6 @@ final class GroupReader {
         cursor.pos++;
     }
 
-    /** {@code key=number} pairs separated by '|', up to and with the group's ')'; none is fine. */
-    private void readProperties() throws StatementError {
-        if (cursor.at(')')) {
-            cursor.pos++;
-            return;
-        }
-        do {
-            cursor.skipBlanks();
-            int key = readKey();
-            cursor.skipBlanks();
-            if (!cursor.at('=')) {
-                throw expected("'=' after the key '" + Group.KEYS.get(key) + "' in ");
-            }
-            cursor.pos++;
-            cursor.skipBlanks();
-            numbers.readAndKeep(key);
-        } while (!groupEndsAfterNumber());
-    }
-
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
     private boolean groupEndsAfterNumber() throws StatementError {
         cursor.skipBlanks();
@@ -185,7 +172,7 @@ final class GroupReader {
         throw expected("'|' or ')' after a number in ");
     }
 
-    /** A key of a properties group: its index among the group's keys; known and not given before. */
+    /** A key of a properties group and its '=': the key's index in {@link Group#KEYS}; known and not given before. */
     private int readKey() throws StatementError {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
@@ -202,6 +189,12 @@ final class GroupReader {
         if (values.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
+        cursor.skipBlanks();
+        if (!cursor.at('=')) {
+            throw expected("'=' after the key '" + word + "' in ");
+        }
+        cursor.pos++;
+        cursor.skipBlanks();
         return key;
     }
 

@@ -82,7 +82,7 @@ final class StatementReader {
         }
         if (statement.takesMaterial() && (optional > 0 || values.patternGroup() >= 0)) {
             String name = values.name(own);
-            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
+            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materials.get(name) : null;
             if (above == null) {
                 contents.addPending(values); // its names are resolved when the whole file is read
                 return;
