@@ -40,6 +40,10 @@ final class Grammar {
             "the camera looks along it; (0|0|-1) looks into the screen");
     /** An object's colour, which may name a pattern instead. */
     private static final Group PAINT = numbers("colour", Rule.PAINT, "R|G|B");
+    private static final Group FIRST_CORNER = numbers("first corner", "x1|y1|z1");
+    private static final Group SECOND_CORNER = numbers("second corner", "x2|y2|z2");
+    private static final Group FIRST_END = numbers("first end", "x1|y1|z1");
+    private static final Group SECOND_END = numbers("second end", "x2|y2|z2");
 
     /** Every statement, in the order the messages list them. */
     static final List<Statement> STATEMENTS = List.of(
@@ -47,17 +51,18 @@ final class Grammar {
                     (v, out) -> out.ambient(v.colour(0))),
             Statement.setting("orthographic_camera", List.of(POSITION, VIEW, numbers("zoom", Rule.POSITIVE, "zoom")),
                     (v, out) -> out.camera(camera(v, false))),
-            Statement.setting("perspective_camera", List.of(POSITION, VIEW, numbers("field of view", Rule.ANGLE, "fov")),
+            Statement.setting("perspective_camera",
+                    List.of(POSITION, VIEW, numbers("field of view", Rule.ANGLE, "fov")),
                     (v, out) -> out.camera(camera(v, true))),
             Statement.shape("sphere", List.of(numbers("centre", "x|y|z"), numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(sphere(v, out))),
-            Statement.shape("plane", List.of(numbers("point", "x|y|z"), new Group("normal", Rule.DIRECTION, "nx|ny|nz", 3,
-                    "the plane is at right angles to it; (0|1|0) makes a floor"), PAINT),
+            Statement.shape("plane", List.of(numbers("point", "x|y|z"), new Group("normal", Rule.DIRECTION, "nx|ny|nz",
+                    3, "the plane is at right angles to it; (0|1|0) makes a floor"), PAINT),
                     (v, out) -> out.object(new Plane(v.vector(0), v.vector(1), v.colour(2), v.material()))),
-            Statement.shape("triangle", List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
-                    numbers("third corner", "x3|y3|z3"), PAINT), (v, out) -> out.object(triangle(v))),
-            Statement.shape("box", List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"), PAINT),
-                    (v, out) -> out.object(box(v))),
+            Statement.shape("triangle",
+                    List.of(FIRST_CORNER, SECOND_CORNER, numbers("third corner", "x3|y3|z3"), PAINT),
+                    (v, out) -> out.object(triangle(v))),
+            Statement.shape("box", List.of(FIRST_CORNER, SECOND_CORNER, PAINT), (v, out) -> out.object(box(v))),
             Statement.shape("mesh", List.of(word("file", Rule.PATH, "path"), numbers("shift", "x|y|z"),
                     numbers("scale", Rule.POSITIVE, "s"), PAINT), (v, out) -> out.objects(ObjMesh.read(v, 0)
                             .triangles(v.vector(1), v.number(2, 0), v.colour(3), v.material()))),
@@ -65,10 +70,10 @@ final class Grammar {
                     (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
             Statement.setting("material", List.of(NAME, word("properties", Rule.PROPERTIES, "key=value|key=value...")),
                     (v, out) -> out.material(v.name(0), material(v))),
-            Statement.shape("cylinder", List.of(numbers("first end", "x1|y1|z1"), numbers("second end", "x2|y2|z2"),
-                    numbers("radius", Rule.POSITIVE, "r"), PAINT), (v, out) -> out.object(cylinder(v))),
-            Statement.shape("cone", List.of(numbers("first end", "x1|y1|z1"), numbers("first radius", Rule.AT_LEAST_ZERO, "r1"),
-                    numbers("second end", "x2|y2|z2"), numbers("second radius", Rule.AT_LEAST_ZERO, "r2"), PAINT),
+            Statement.shape("cylinder", List.of(FIRST_END, SECOND_END, numbers("radius", Rule.POSITIVE, "r"), PAINT),
+                    (v, out) -> out.object(cylinder(v))),
+            Statement.shape("cone", List.of(FIRST_END, numbers("first radius", Rule.AT_LEAST_ZERO, "r1"),
+                    SECOND_END, numbers("second radius", Rule.AT_LEAST_ZERO, "r2"), PAINT),
                     (v, out) -> out.object(cone(v))),
             Statement.setting("area_light", List.of(numbers("corner", "x|y|z"), numbers("first edge", "ux|uy|uz"),
                     numbers("second edge", "vx|vy|vz"), numbers("samples", Rule.SAMPLES, "n|m"),
@@ -119,10 +124,11 @@ final class Grammar {
         Vector3f pos = v.vector(0);
         Vector3f view = v.vector(1);
         float size = v.number(2, 0); // a zoom or a field of view
-        if (!perspective) {
-            return v.isTarget(1) ? OrthographicCamera.lookingAt(pos, view, size) : new OrthographicCamera(pos, view, size);
+        if (perspective) {
+            return v.isTarget(1) ? PerspectiveCamera.lookingAt(pos, view, size) : new PerspectiveCamera(pos, view, size);
         }
-        return v.isTarget(1) ? PerspectiveCamera.lookingAt(pos, view, size) : new PerspectiveCamera(pos, view, size);
+        return v.isTarget(1) ? OrthographicCamera.lookingAt(pos, view, size)
+                : new OrthographicCamera(pos, view, size);
     }
 
     /**
@@ -191,7 +197,8 @@ final class Grammar {
         }
         if (why != null) {
             throw v.errorAtGroup(g, "the " + shape + "'s end points are too " + ("long".equals(why) ? "far apart"
-                    : "close together") + " to compute with in float", "give end points a distance of about 1e-15 to 1e15 apart");
+                    : "close together") + " to compute with in float",
+                    "give end points a distance of about 1e-15 to 1e15 apart");
         }
     }
 }

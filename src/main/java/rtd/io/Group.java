@@ -122,7 +122,8 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
             }
             case AT_LEAST_ZERO -> {
                 if (value < 0) {
-                    throw must(v, g, 0, meaning, "at least 0", "without its minus sign: " + v.written(g, 0).substring(1));
+                    String written = v.written(g, 0);
+                    throw must(v, g, 0, meaning, "at least 0", "without its minus sign: " + written.substring(1));
                 }
             }
             case ANGLE -> {
@@ -174,7 +175,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         }
     }
 
-    /** A direction, or a point to look at from the camera's position in group 0 (Part III, "A camera that looks at a point"). */
+    /** A direction, or a point to look at from the camera's position in group 0. */
     private void direction(StatementValues v, int g) throws StatementError {
         boolean target = v.isTarget(g);
         Vector3f from = v.vector(0);
@@ -182,8 +183,9 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         String text = IntStream.range(0, 3).mapToObj(k -> v.written(g, k))
                 .collect(Collectors.joining("|", target ? "(at " : "(", ")"));
         if (ZERO.equals(why) && target) {
-            throw v.errorAtValue(g, 0, "the camera cannot look at its own position " + text, "give a point in front of the "
-                    + "camera: (at " + plain(from.x()) + "|" + plain(from.y()) + "|" + plain(from.z() - 1) + ") looks along -z");
+            throw v.errorAtValue(g, 0, "the camera cannot look at its own position " + text, "give a point in front of "
+                    + "the camera: (at " + plain(from.x()) + "|" + plain(from.y()) + "|" + plain(from.z() - 1)
+                    + ") looks along -z");
         }
         if (ZERO.equals(why)) {
             throw v.errorAtValue(g, 0, "the " + meaning + " must not be zero, found " + text, help);

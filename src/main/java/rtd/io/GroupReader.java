@@ -64,8 +64,8 @@ final class GroupReader {
     private void readNumbers(int groupStart) throws StatementError {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
-        boolean target = group.rule() == Group.Rule.VIEW && p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't'
-                && TextBytes.isSpace(bytes[p + 2]);
+        boolean target = group.rule() == Group.Rule.VIEW && p + 2 < bytes.length && bytes[p] == 'a'
+                && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
         if (target) {
             cursor.pos += 2;
             values.target = values.groupCount() - 1;

@@ -33,9 +33,7 @@ final class NumberReader {
         return expressions;
     }
 
-    /**
-     * Reads one number, or an expression, at the cursor, and keeps it in the values with {@code key} (or −1).
-     */
+    /** Reads one number, or an expression, at the cursor, and keeps it in the values with {@code key} (or −1). */
     void readAndKeep(int key) throws StatementError {
         float value = read();
         values.add(value, tokenStart, cursor.pos, key);
@@ -178,10 +176,7 @@ final class NumberReader {
         return false;
     }
 
-    /**
-     * The error for a token that is no number: at an invisible character that starts it or follows a number,
-     * else at the token, with a hint.
-     */
+    /** A token that is no number: an error at an invisible character that starts it or follows a number, else at it. */
     private StatementError notANumber() {
         int invisible = tokenStart;
         while (invisible < cursor.pos && !(cursor.bytes[invisible] < 0 && (cursor.bytes[invisible] & 0xC0) != 0x80

@@ -28,7 +28,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return new Statement(keyword, groups, List.of(), false, builder);
     }
 
-    /** Whether it makes an object; the group itself, not an equal one, as a record's {@code equals} compares every field. */
+    /** Whether it makes an object: the group itself, not an equal one, as a record's equals compares each field. */
     boolean takesMaterial() {
         return !optional.isEmpty() && optional.get(0) == MATERIAL;
     }
@@ -43,7 +43,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return g < own ? groups.get(g) : optional.get(Math.min(g - own, optional.size() - 1));
     }
 
-    /** Checks what only several values together tell (a rule of one value is its group's) and gives the value to {@code out}. */
+    /** Checks what only several groups together tell (each group's own rule is checked before) and gives its value. */
     @FunctionalInterface
     interface Builder {
         void build(StatementValues values, SceneContents out) throws StatementError;
