@@ -91,10 +91,9 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
             }
             case PROPERTIES -> {
                 for (int k = 0; k < v.size(g); k++) {
-                    String name = "value of '" + KEYS.get(v.key(g, k)) + "'";
                     float minimum = v.key(g, k) == KEYS.size() - 1 ? 1 : 0; // the ior
-                    if (finite(v, g, k, name) < minimum) {
-                        throw must(v, g, k, name, "at least " + plain(minimum), minimum > 0
+                    if (finite(v, g, k) < minimum) {
+                        throw must(v, g, k, numberName(v, g, k), "at least " + plain(minimum), minimum > 0
                                 ? "an index of refraction is 1 for air, 1.33 for water, 1.5 for glass"
                                 : "0 turns this part of the finish off");
                     }
@@ -102,7 +101,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
             }
             default -> {
                 for (int k = rule == Rule.STEP ? 1 : 0; k < v.size(g); k++) { // a step's word, then its numbers
-                    finite(v, g, k, size == 3 ? "xyz".charAt(k) + " of the " + meaning : meaning);
+                    finite(v, g, k);
                 }
                 checkNumbers(v, g, v.number(g, 0));
             }
@@ -148,31 +147,38 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
     }
 
     /** Number {@code k}, which must be finite (not NaN, not infinite, not beyond a float's range). */
-    private static float finite(StatementValues v, int g, int k, String name) throws StatementError {
+    private float finite(StatementValues v, int g, int k) throws StatementError {
         float value = v.number(g, k);
         if (Float.isFinite(value)) {
             return value;
         }
         String written = v.written(g, k);
         boolean overflow = Hints.tooLarge(written);
-        throw v.errorAtValue(g, k, "the " + name + " must be a finite number, found " + written
+        throw v.errorAtValue(g, k, "the " + numberName(v, g, k) + " must be a finite number, found " + written
                 + (overflow ? ", which is too large for a float" : ""), overflow ? Hints.FLOAT_RANGE
                         : "NaN (not a number) and Infinity are not numbers a scene can use; give a finite number");
+    }
+
+    /** What number {@code k} is, for messages: "x of the centre", "radius", "value of 'ior'". */
+    private String numberName(StatementValues v, int g, int k) {
+        return rule == Rule.PROPERTIES ? "value of '" + KEYS.get(v.key(g, k)) + "'"
+                : size == 3 ? "xyz".charAt(k) + " of the " + meaning : meaning;
     }
 
     /** Channel {@code k} of a colour: a whole number from 0 to 255, an expression once rounded. */
     private static void channel(StatementValues v, int g, int k) throws StatementError {
         float value = v.channel(g, k);
+        if (value >= 0 && value <= 255 && value == Math.rint(value)) {
+            return; // an expression's channel is rounded already: only out of range is it wrong
+        }
         String name = (k == 0 ? "red" : k == 1 ? "green" : "blue") + " channel";
-        if (v.tree(g, k) != null && !(value >= 0 && value <= 255)) {
+        if (v.tree(g, k) != null) {
             throw must(v, g, k, name, "from 0 to 255",
                     "an expression in a colour is rounded to a whole number, which must be from 0 to 255");
         }
-        if (!(value >= 0 && value <= 255 && value == Math.rint(value))) {
-            String fractions = Hints.colourFractions(v.numbers(g), 0);
-            throw must(v, g, k, name, "a whole number from 0 to 255", fractions != null ? fractions
-                    : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
-        }
+        String fractions = Hints.colourFractions(v.numbers(g), 0);
+        throw must(v, g, k, name, "a whole number from 0 to 255", fractions != null ? fractions
+                : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
     }
 
     /** A direction, or a point to look at from the camera's position in group 0. */
