@@ -1,9 +1,6 @@
 package rtd.io;
 
-import static rtd.io.Group.name;
 import static rtd.io.Group.numbers;
-import static rtd.io.Group.properties;
-import static rtd.io.Group.view;
 import static rtd.io.Group.word;
 
 import java.nio.charset.StandardCharsets;
@@ -19,101 +16,85 @@ import rtd.geometry.Material;
 import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
-import rtd.image.Color;
 import rtd.image.Rgb;
-import rtd.io.Group.Kind;
+import rtd.io.Group.Rule;
 import rtd.math.Vector3f;
 import rtd.scene.AreaLight;
 import rtd.scene.Light;
 
 /**
- * The scene grammar: every statement, declared once with its keyword, its groups and how it builds its value
- * (the paper's, section 4.1; Part II's, "The scene file"). To add a statement, add one entry to
- * {@link #STATEMENTS}: the reader and the messages (the usage, the keyword list, "did you mean …?") follow
- * from it.
+ * The scene grammar: every statement, declared once with its keyword, its groups with their rules, and how it
+ * builds its value (the paper's, section 4.1; Part II's, "The scene file"). To add a statement, add one entry
+ * to {@link #STATEMENTS}: the reader, the checks of its values and the messages (the usage, the keyword list,
+ * "did you mean …?") follow from it.
  */
 final class Grammar {
 
-    private static final Material DEFAULT = Material.DEFAULT;
     /** The radius from which a sphere warns of shadow acne in a shaded scene ({@link #sphere}). */
-    static final float FLOOR_RADIUS = 5000;
+    private static final float FLOOR_RADIUS = 5000;
     /** The keyword of the statement that names a value (Part III). */
     static final String LET = "let";
-    private static final String VIEW_HELP = "the camera looks along it; (0|0|-1) looks into the screen";
+    private static final Group NAME = word("name", Rule.NAME, "name");
+    private static final Group POSITION = numbers("position", "x|y|z");
+    private static final Group VIEW = new Group("view direction", Rule.VIEW, "x|y|z", 3,
+            "the camera looks along it; (0|0|-1) looks into the screen");
+    /** An object's colour, which may name a pattern instead. */
+    private static final Group PAINT = numbers("colour", Rule.PAINT, "R|G|B");
+    private static final Group FIRST_CORNER = numbers("first corner", "x1|y1|z1");
+    private static final Group SECOND_CORNER = numbers("second corner", "x2|y2|z2");
+    private static final Group FIRST_END = numbers("first end", "x1|y1|z1");
+    private static final Group SECOND_END = numbers("second end", "x2|y2|z2");
 
     /** Every statement, in the order the messages list them. */
     static final List<Statement> STATEMENTS = List.of(
-            Statement.setting("ambient", List.of(numbers("colour", "R|G|B")),
+            Statement.setting("ambient", List.of(numbers("colour", Rule.COLOUR, "R|G|B")),
                     (v, out) -> out.ambient(v.colour(0))),
-            Statement.setting("orthographic_camera",
-                    List.of(numbers("position", "x|y|z"), view("view direction"), numbers("zoom", "zoom")),
+            Statement.setting("orthographic_camera", List.of(POSITION, VIEW, numbers("zoom", Rule.POSITIVE, "zoom")),
                     (v, out) -> out.camera(camera(v, false))),
             Statement.setting("perspective_camera",
-                    List.of(numbers("position", "x|y|z"), view("view direction"), numbers("field of view", "fov")),
+                    List.of(POSITION, VIEW, numbers("field of view", Rule.ANGLE, "fov")),
                     (v, out) -> out.camera(camera(v, true))),
-            Statement.shape("sphere",
-                    List.of(numbers("centre", "x|y|z"), numbers("radius", "r"), numbers("colour", "R|G|B")),
+            Statement.shape("sphere", List.of(numbers("centre", "x|y|z"), numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(sphere(v, out))),
-            Statement.shape("plane",
-                    List.of(numbers("point", "x|y|z"), numbers("normal", "nx|ny|nz"), numbers("colour", "R|G|B")),
-                    (v, out) -> out.object(new Plane(v.vector(0),
-                            Directions.direction(v, 1, "the plane is at right angles to it; (0|1|0) makes a floor"), v.colour(2),
-                            v.material()))),
+            Statement.shape("plane", List.of(numbers("point", "x|y|z"), new Group("normal", Rule.DIRECTION, "nx|ny|nz",
+                    3, "the plane is at right angles to it; (0|1|0) makes a floor"), PAINT),
+                    (v, out) -> out.object(new Plane(v.vector(0), v.vector(1), v.colour(2), v.material()))),
             Statement.shape("triangle",
-                    List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
-                            numbers("third corner", "x3|y3|z3"), numbers("colour", "R|G|B")),
+                    List.of(FIRST_CORNER, SECOND_CORNER, numbers("third corner", "x3|y3|z3"), PAINT),
                     (v, out) -> out.object(triangle(v))),
-            Statement.shape("box",
-                    List.of(numbers("first corner", "x1|y1|z1"), numbers("second corner", "x2|y2|z2"),
-                            numbers("colour", "R|G|B")),
-                    (v, out) -> out.object(box(v))),
-            Statement.shape("mesh",
-                    List.of(word("file", Kind.PATH, "path"), numbers("shift", "x|y|z"), numbers("scale", "s"),
-                            numbers("colour", "R|G|B")),
-                    (v, out) -> {
-                        Vector3f shift = v.vector(1);
-                        float scale = v.positive(2);
-                        Color colour = v.colour(3);
-                        out.objects(ObjMesh.read(v, 0).triangles(shift, scale, colour, v.material()));
-                    }),
-            Statement.setting("light", List.of(numbers("position", "x|y|z"), numbers("intensity", "R|G|B")),
+            Statement.shape("box", List.of(FIRST_CORNER, SECOND_CORNER, PAINT), (v, out) -> out.object(box(v))),
+            Statement.shape("mesh", List.of(word("file", Rule.PATH, "path"), numbers("shift", "x|y|z"),
+                    numbers("scale", Rule.POSITIVE, "s"), PAINT), (v, out) -> out.objects(ObjMesh.read(v, 0)
+                            .triangles(v.vector(1), v.number(2, 0), v.colour(3), v.material()))),
+            Statement.setting("light", List.of(POSITION, numbers("intensity", Rule.COLOUR, "R|G|B")),
                     (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
-            Statement.setting("material",
-                    List.of(name("name", "name"), properties("properties",
-                            "ambient", "diffuse", "specular", "shininess", "reflective", "transparency", "ior")),
+            Statement.setting("material", List.of(NAME, word("properties", Rule.PROPERTIES, "key=value|key=value...")),
                     (v, out) -> out.material(v.name(0), material(v))),
-            Statement.shape("cylinder",
-                    List.of(numbers("first end", "x1|y1|z1"), numbers("second end", "x2|y2|z2"), numbers("radius", "r"),
-                            numbers("colour", "R|G|B")),
+            Statement.shape("cylinder", List.of(FIRST_END, SECOND_END, numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(cylinder(v))),
-            Statement.shape("cone",
-                    List.of(numbers("first end", "x1|y1|z1"), numbers("first radius", "r1"),
-                            numbers("second end", "x2|y2|z2"), numbers("second radius", "r2"), numbers("colour", "R|G|B")),
+            Statement.shape("cone", List.of(FIRST_END, numbers("first radius", Rule.AT_LEAST_ZERO, "r1"),
+                    SECOND_END, numbers("second radius", Rule.AT_LEAST_ZERO, "r2"), PAINT),
                     (v, out) -> out.object(cone(v))),
-            Statement.setting("area_light",
-                    List.of(numbers("corner", "x|y|z"), numbers("first edge", "ux|uy|uz"), numbers("second edge", "vx|vy|vz"),
-                            numbers("samples", "n|m"), numbers("intensity", "R|G|B")),
-                    (v, out) -> {
-                        AreaLight area = new AreaLight(v.vector(0), v.vector(1), v.vector(2),
-                                samples(v, 3, 0, "number of samples along the first edge"),
-                                samples(v, 3, 1, "number of samples along the second edge"),
-                                Rgb.of(v.colour(4)));
-                        area.samples().forEach(out::light);
-                    }),
-            new Statement("pattern", List.of(name("name", "name"), name("kind", "stripes|gradient|rings|checker"),
-                    numbers("first colour", "R|G|B"), numbers("second colour", "R|G|B")),
-                    List.of(name("transform", "transform")), false, Names::pattern),
-            new Statement("transform", List.of(name("name", "name"), word("step", Kind.OPERATION, "scale s")),
-                    List.of(word("step", Kind.OPERATION, "step")), true, Names::transform),
-            Statement.setting(LET, List.of(name("name", "name"), numbers("value", "expression")),
-                    (v, out) -> Names.let(v)));
+            Statement.setting("area_light", List.of(numbers("corner", "x|y|z"), numbers("first edge", "ux|uy|uz"),
+                    numbers("second edge", "vx|vy|vz"), numbers("samples", Rule.SAMPLES, "n|m"),
+                    numbers("intensity", Rule.COLOUR, "R|G|B")), (v, out) -> new AreaLight(v.vector(0), v.vector(1),
+                            v.vector(2), (int) v.number(3, 0), (int) v.number(3, 1), Rgb.of(v.colour(4)))
+                            .samples().forEach(out::light)),
+            new Statement("pattern", List.of(NAME, word("kind", Rule.NAME, "stripes|gradient|rings|checker"),
+                    numbers("first colour", Rule.COLOUR, "R|G|B"), numbers("second colour", Rule.COLOUR, "R|G|B")),
+                    List.of(Statement.TRANSFORM), false, Names::pattern),
+            new Statement("transform", List.of(NAME, word("step", Rule.STEP, "scale s")),
+                    List.of(word("step", Rule.STEP, "step")), true, Names::transform),
+            Statement.setting(LET, List.of(NAME, numbers("value", "expression")), (v, out) -> Names.let(v)));
 
-    /** A {@code material}'s finish: each property given, or the default's; all at least 0, ior at least 1. */
-    private static Material material(StatementValues v) throws StatementError {
-        return new Material(v.property(1, "ambient", DEFAULT.ambient(), 0), v.property(1, "diffuse", DEFAULT.diffuse(), 0),
-                v.property(1, "specular", DEFAULT.specular(), 0), v.property(1, "shininess", DEFAULT.shininess(), 0),
-                v.property(1, "reflective", DEFAULT.reflective(), 0),
-                v.property(1, "transparency", DEFAULT.transparency(), 0), v.property(1, "ior", DEFAULT.ior(), 1));
+    /** A {@code material}'s finish: each property given, or the default's. */
+    private static Material material(StatementValues v) {
+        Material d = Material.DEFAULT;
+        float[] p = {d.ambient(), d.diffuse(), d.specular(), d.shininess(), d.reflective(), d.transparency(), d.ior()};
+        for (int k = 0; k < v.size(1); k++) {
+            p[v.key(1, k)] = v.number(1, k);
+        }
+        return new Material(p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
     }
 
     /** The keywords as bytes, beside {@link #STATEMENTS}, to find a line's statement without a String. */
@@ -139,16 +120,15 @@ final class Grammar {
     }
 
     /** A camera, orthographic or perspective, looking along its direction or at its point. */
-    private static ICamera camera(StatementValues v, boolean perspective) throws StatementError {
+    private static ICamera camera(StatementValues v, boolean perspective) {
         Vector3f pos = v.vector(0);
-        boolean atPoint = v.isTarget(1);
-        Vector3f view = atPoint ? Directions.target(v, 1, pos) : Directions.direction(v, 1, VIEW_HELP);
-        if (!perspective) {
-            float zoom = v.positive(2);
-            return atPoint ? OrthographicCamera.lookingAt(pos, view, zoom) : new OrthographicCamera(pos, view, zoom);
+        Vector3f view = v.vector(1);
+        float size = v.number(2, 0); // a zoom or a field of view
+        if (perspective) {
+            return v.isTarget(1) ? PerspectiveCamera.lookingAt(pos, view, size) : new PerspectiveCamera(pos, view, size);
         }
-        float fov = v.between(2, 0, 180, "degrees", "it is the angle the picture's width spans, such as 60");
-        return atPoint ? PerspectiveCamera.lookingAt(pos, view, fov) : new PerspectiveCamera(pos, view, fov);
+        return v.isTarget(1) ? OrthographicCamera.lookingAt(pos, view, size)
+                : new OrthographicCamera(pos, view, size);
     }
 
     /**
@@ -156,10 +136,10 @@ final class Grammar {
      * large float rounds hit points by more than a shadow ray's lift, so it shows shadow acne (a radius of
      * 1000, as <i>Ray Tracing in One Weekend</i> uses, draws clean).
      */
-    private static Sphere sphere(StatementValues v, SceneContents out) throws StatementError {
-        Sphere sphere = new Sphere(v.vector(0), v.positive(1), v.colour(2), v.material());
+    private static Sphere sphere(StatementValues v, SceneContents out) {
+        Sphere sphere = new Sphere(v.vector(0), v.number(1, 0), v.colour(2), v.material());
         if (sphere.radius() >= FLOOR_RADIUS) {
-            out.warningIfLit(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
+            out.litWarnings.add(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
                     + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
                     "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at "
                     + "y = 0").place);
@@ -170,10 +150,7 @@ final class Grammar {
     /** A triangle whose corners do not lie on one line (else it has no area and is never hit). */
     private static Triangle triangle(StatementValues v) throws StatementError {
         Vector3f p1 = v.vector(0);
-        Vector3f p2 = v.vector(1);
-        Vector3f p3 = v.vector(2);
-        Color colour = v.colour(3);
-        Vector3f n = p2.subtract(p1).cross(p3.subtract(p1)); // as the triangle computes it
+        Vector3f n = v.vector(1).subtract(p1).cross(v.vector(2).subtract(p1)); // as the triangle computes it
         if (n.x() == 0 && n.y() == 0 && n.z() == 0) {
             throw v.errorAtGroup(0, "the corners of the triangle lie on one line, so it has no area",
                     "three corners that do not lie on one line make a triangle, such as (0|0|0), (1|0|0) and (0|1|0)");
@@ -182,65 +159,46 @@ final class Grammar {
             throw v.errorAtGroup(0, "the triangle is too large to compute with in float",
                     "its sides must be shorter than about 1e19");
         }
-        return new Triangle(p1, p2, p3, colour, v.material());
+        return new Triangle(p1, v.vector(1), v.vector(2), v.colour(3), v.material());
     }
 
     /** A box whose corners differ in every coordinate (else it is flat). */
     private static Box box(StatementValues v) throws StatementError {
-        Vector3f a = v.vector(0);
-        Vector3f b = v.vector(1);
-        Color colour = v.colour(2);
         for (int k = 0; k < 3; k++) {
             if (v.number(0, k) == v.number(1, k)) {
                 throw v.errorAtValue(1, k, "the box is flat: both corners have " + "xyz".charAt(k) + " = " + v.written(1, k),
                         "a box takes two opposite corners, which differ in x, y and z");
             }
         }
-        return Box.between(a, b, colour, v.material());
+        return Box.between(v.vector(0), v.vector(1), v.colour(2), v.material());
     }
 
-    /** A cylinder of radius greater than 0 between two different end points (Part III, "More shapes"). */
+    /** A cylinder between two different end points (Part III, "More shapes"). */
     private static Cylinder cylinder(StatementValues v) throws StatementError {
-        Vector3f first = v.vector(0);
-        Vector3f second = v.vector(1);
-        float radius = v.positive(2);
-        Directions.axis(v, first, second, 1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
-        return new Cylinder(first, second, radius, v.colour(3), v.material());
+        axis(v, 1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        return new Cylinder(v.vector(0), v.vector(1), v.number(2, 0), v.colour(3), v.material());
     }
 
-    /** A cone whose radii are at least 0 and not both 0, between two different end points (Part III, "More shapes"). */
+    /** A cone whose radii are not both 0, between two different end points (Part III, "More shapes"). */
     private static Cone cone(StatementValues v) throws StatementError {
-        Vector3f first = v.vector(0);
-        float firstRadius = atLeastZero(v, 1);
-        Vector3f second = v.vector(2);
-        float secondRadius = atLeastZero(v, 3);
-        if (firstRadius == 0 && secondRadius == 0) {
+        if (v.number(1, 0) == 0 && v.number(3, 0) == 0) {
             throw v.errorAtValue(3, 0, "the cone's radii are both 0, so it has no volume",
                     "give one end a radius greater than 0: cone:(0|0|0):(1):(0|2|0):(0) is a cone with its apex up");
         }
-        Directions.axis(v, first, second, 2, "cone", "a cone runs from one end point to another, such as (0|0|0) to (0|2|0)");
-        return new Cone(first, firstRadius, second, secondRadius, v.colour(4), v.material());
+        axis(v, 2, "cone", "a cone runs from one end point to another, such as (0|0|0) to (0|2|0)");
+        return new Cone(v.vector(0), v.number(1, 0), v.vector(2), v.number(3, 0), v.colour(4), v.material());
     }
 
-    /** The one number of group {@code g}, finite and at least 0: a cone's radius. */
-    private static float atLeastZero(StatementValues v, int g) throws StatementError {
-        float value = v.number(g, 0);
-        if (value >= 0) {
-            return value;
+    /** The axis of a solid from group 0's end point to group {@code g}'s, which float must be able to normalise. */
+    private static void axis(StatementValues v, int g, String shape, String help) throws StatementError {
+        String why = Group.unusable(v.vector(g).subtract(v.vector(0)));
+        if ("zero".equals(why)) {
+            throw v.errorAtGroup(g, "the " + shape + "'s two end points are the same point", help);
         }
-        throw v.errorAtValue(g, 0, "the " + v.meaning(g) + " must be at least 0, found " + v.written(g, 0),
-                "without its minus sign: " + v.written(g, 0).substring(1));
-    }
-
-    /**
-     * Number {@code k} of group {@code g}: an area light's samples along one edge, 1 to {@link AreaLight#MOST_SAMPLES}.
-     */
-    private static int samples(StatementValues v, int g, int k, String name) throws StatementError {
-        float value = v.number(g, k);
-        if (value >= 1 && value <= AreaLight.MOST_SAMPLES && value == Math.rint(value)) {
-            return (int) value;
+        if (why != null) {
+            throw v.errorAtGroup(g, "the " + shape + "'s end points are too " + ("long".equals(why) ? "far apart"
+                    : "close together") + " to compute with in float",
+                    "give end points a distance of about 1e-15 to 1e15 apart");
         }
-        throw v.errorAtValue(g, k, "the " + name + " must be a whole number from 1 to " + AreaLight.MOST_SAMPLES
-                + ", found " + v.written(g, k), "more samples make a softer shadow and cost more shadow rays; 4|4 is a good start");
     }
 }

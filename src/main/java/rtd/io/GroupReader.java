@@ -1,27 +1,27 @@
 package rtd.io;
 
 /**
- * Reads the groups {@code :(…)} of a statement into {@link WrittenGroups}, as its {@link Group}s say, at the
- * {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
+ * Reads the groups {@code :(…)} of a statement into its {@link StatementValues}, as its {@link Group}s say, at
+ * the {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
  * III where numbers may stand (a pattern's name as an object's colour, {@code (tiles)}; a transformation's
  * step, {@code (rotate_y 30)}). Each mistake is worded at its place, with the usage or a hint.
  */
 final class GroupReader {
 
     private final LineCursor cursor;
-    private final WrittenGroups written;
+    private final StatementValues values;
     private final NumberReader numbers;
     /** The statement whose group is being read, and the group. */
     private Statement statement;
     private Group group;
 
-    GroupReader(LineCursor cursor, WrittenGroups written, Names names) {
+    GroupReader(LineCursor cursor, StatementValues values, Names names) {
         this.cursor = cursor;
-        this.written = written;
-        this.numbers = new NumberReader(cursor, names, written);
+        this.values = values;
+        this.numbers = new NumberReader(cursor, names, values);
     }
 
-    /** Reads {@code group} of {@code statement}, {@code :(…)}, into the written groups. */
+    /** Reads {@code group} of {@code statement}, {@code :(…)}, into the values. */
     void readGroup(Statement statement, Group group) throws StatementError {
         this.statement = statement;
         this.group = group;
@@ -35,40 +35,47 @@ final class GroupReader {
             throw expected("'(' to start ");
         }
         int groupStart = cursor.pos++;
-        written.openGroup(groupStart);
+        values.openGroup(groupStart);
         cursor.skipBlanks();
-        if (cursor.at(')') && group.kind() != Group.Kind.PROPERTIES) {
-            throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
-        }
-        if (group.orName() && atLoneName()) {
-            readName();
-            written.named = written.groupCount - 1;
+        if (cursor.at(')') && group.rule() == Group.Rule.PROPERTIES) {
+            cursor.pos++; // no properties: the default finish
             return;
         }
-        switch (group.kind()) {
-            case NUMBERS -> readNumbers(groupStart);
-            case OPERATION -> readStep();
+        if (cursor.at(')')) {
+            throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
+        }
+        boolean patternName = group.rule() == Group.Rule.PAINT && atLoneName();
+        values.named = patternName ? values.groupCount() - 1 : values.named;
+        switch (patternName ? Group.Rule.NAME : group.rule()) {
             case NAME -> readName();
             case PATH -> readPath();
-            case PROPERTIES -> readProperties();
+            case STEP -> {
+                readStepWord();
+                readNumbers(groupStart);
+            }
+            default -> readNumbers(groupStart);
         }
     }
 
-    /** The numbers of a group, after its '(' and any blanks, up to and with its ')'; perhaps {@code (at x|y|z)}. */
+    /**
+     * Numbers separated by '|', up to and with the group's ')': perhaps {@code (at x|y|z)}; each after its key and
+     * '=' in properties; as many as a step's word takes.
+     */
     private void readNumbers(int groupStart) throws StatementError {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
-        boolean target = group.orAt() && p + 2 < bytes.length && bytes[p] == 'a' && bytes[p + 1] == 't'
-                && TextBytes.isSpace(bytes[p + 2]);
+        boolean target = group.rule() == Group.Rule.VIEW && p + 2 < bytes.length && bytes[p] == 'a'
+                && bytes[p + 1] == 't' && TextBytes.isSpace(bytes[p + 2]);
         if (target) {
             cursor.pos += 2;
-            written.target = written.groupCount - 1;
+            values.target = values.groupCount() - 1;
         }
+        boolean counted = group.rule() != Group.Rule.PROPERTIES && group.rule() != Group.Rule.STEP;
         int found = 0;
         do {
             cursor.skipBlanks();
-            numbers.readAndKeep(-1);
-            if (++found > group.size()) {
+            numbers.readAndKeep(group.rule() == Group.Rule.PROPERTIES ? readKey() : -1);
+            if (++found > group.size() && counted) {
                 throw tooManyNumbers(groupStart);
             }
         } while (!groupEndsAfterNumber());
@@ -95,23 +102,19 @@ final class GroupReader {
         return p < bytes.length && bytes[p] == ')';
     }
 
-    /** A step of a transformation: a word, blanks, and one or more numbers separated by '|', up to and with ')'. */
-    private void readStep() throws StatementError {
+    /** The word that starts a transformation's step, then blanks: numbers follow. */
+    private void readStepWord() throws StatementError {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
             throw expected("an operation such as 'scale 2' in ");
         }
-        written.add(Float.NaN, start, cursor.pos, -1);
+        values.add(Float.NaN, start, cursor.pos, -1);
         cursor.skipBlanks();
         if (cursor.at(')')) {
             throw cursor.error(cursor.pos, "expected numbers after '" + cursor.source.text(start, cursor.pos).strip()
                     + "' in " + group.of(statement) + ", found ')'", Names.STEP_HELP);
         }
-        do {
-            cursor.skipBlanks();
-            numbers.readAndKeep(-1);
-        } while (!groupEndsAfterNumber());
     }
 
     /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
@@ -121,7 +124,7 @@ final class GroupReader {
         if (cursor.pos == start) {
             throw expected("a name in ");
         }
-        written.add(Float.NaN, start, cursor.pos, -1);
+        values.add(Float.NaN, start, cursor.pos, -1);
         int nameEnd = cursor.pos;
         cursor.skipBlanks();
         if (!cursor.at(')')) {
@@ -156,27 +159,8 @@ final class GroupReader {
         while (TextBytes.isBlank(bytes[nameEnd - 1])) {
             nameEnd--; // the group is not empty, so a byte that is no blank stands before
         }
-        written.add(Float.NaN, start, nameEnd, -1);
+        values.add(Float.NaN, start, nameEnd, -1);
         cursor.pos++;
-    }
-
-    /** {@code key=number} pairs separated by '|', up to and with the group's ')'; none is fine. */
-    private void readProperties() throws StatementError {
-        if (cursor.at(')')) {
-            cursor.pos++;
-            return;
-        }
-        do {
-            cursor.skipBlanks();
-            int key = readKey();
-            cursor.skipBlanks();
-            if (!cursor.at('=')) {
-                throw expected("'=' after the key '" + group.keys().get(key) + "' in ");
-            }
-            cursor.pos++;
-            cursor.skipBlanks();
-            numbers.readAndKeep(key);
-        } while (!groupEndsAfterNumber());
     }
 
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
@@ -188,23 +172,29 @@ final class GroupReader {
         throw expected("'|' or ')' after a number in ");
     }
 
-    /** A key of a properties group: its index among the group's keys; known and not given before. */
+    /** A key of a properties group and its '=': the key's index in {@link Group#KEYS}; known and not given before. */
     private int readKey() throws StatementError {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
-            throw expected("a key such as '" + group.keys().get(0) + "' in ");
+            throw expected("a key such as '" + Group.KEYS.get(0) + "' in ");
         }
         String word = cursor.source.text(start, cursor.pos);
-        int key = group.keys().indexOf(word);
+        int key = Group.KEYS.indexOf(word);
         if (key < 0) {
-            String nearest = Hints.nearest(word, group.keys());
+            String nearest = Hints.nearest(word, Group.KEYS);
             throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
-                    ? "did you mean '" + nearest + "'?" : "the keys are " + Hints.quoted(group.keys(), "and"));
+                    ? "did you mean '" + nearest + "'?" : "the keys are " + Hints.quoted(Group.KEYS, "and"));
         }
-        if (written.lastHasKey(key)) {
+        if (values.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
+        cursor.skipBlanks();
+        if (!cursor.at('=')) {
+            throw expected("'=' after the key '" + word + "' in ");
+        }
+        cursor.pos++;
+        cursor.skipBlanks();
         return key;
     }
 

@@ -13,7 +13,7 @@ final class NumberReader {
 
     private final LineCursor cursor;
     private final Names names;
-    private final WrittenGroups written;
+    private final StatementValues values;
     /** Made at the first value that is no plain number: a file of plain numbers never loads the expression reader. */
     private ExpressionParser expressions;
     /** Where the number read last starts. */
@@ -22,10 +22,10 @@ final class NumberReader {
     private Expression tree;
     private double exact;
 
-    NumberReader(LineCursor cursor, Names names, WrittenGroups written) {
+    NumberReader(LineCursor cursor, Names names, StatementValues values) {
         this.cursor = cursor;
         this.names = names;
-        this.written = written;
+        this.values = values;
     }
 
     private ExpressionParser expressions() {
@@ -33,14 +33,12 @@ final class NumberReader {
         return expressions;
     }
 
-    /**
-     * Reads one number, or an expression, at the cursor, and keeps it in the written groups with {@code key} (or −1).
-     */
+    /** Reads one number, or an expression, at the cursor, and keeps it in the values with {@code key} (or −1). */
     void readAndKeep(int key) throws StatementError {
         float value = read();
-        written.add(value, tokenStart, cursor.pos, key);
+        values.add(value, tokenStart, cursor.pos, key);
         if (tree != null) {
-            written.markExpression(exact, tree);
+            values.markExpression(exact, tree);
         }
     }
 
@@ -178,10 +176,7 @@ final class NumberReader {
         return false;
     }
 
-    /**
-     * The error for a token that is no number: at an invisible character that starts it or follows a number,
-     * else at the token, with a hint.
-     */
+    /** A token that is no number: an error at an invisible character that starts it or follows a number, else at it. */
     private StatementError notANumber() {
         int invisible = tokenStart;
         while (invisible < cursor.pos && !(cursor.bytes[invisible] < 0 && (cursor.bytes[invisible] & 0xC0) != 0x80

@@ -35,8 +35,8 @@ final class SceneContents {
             SceneError transformPlace) {
     }
 
-    /** An object that names a material, built when every material is known: its values, and how many objects come before it. */
-    record Pending(int index, StatementValues values) {
+    /** An object built when every name is known: how many objects come before it, and its values. */
+    private record Pending(int index, StatementValues values) {
     }
 
     /** A mistake, and where in the scene file it is ordered (an OBJ file's, at its mesh line). */
@@ -44,13 +44,13 @@ final class SceneContents {
     }
 
     final List<IGeometry> objects;
-    final List<Pending> pending = new ArrayList<>();
+    private final List<Pending> pending = new ArrayList<>();
     final List<Located<Color>> ambients = new ArrayList<>();
     final List<Located<ICamera>> cameras = new ArrayList<>();
     /** The materials, patterns and transforms, in file order. */
     final List<Definition> definitions = new ArrayList<>();
-    /** Each material's first definition by name, asked for each object: a file may define many transforms too. */
-    private final Map<String, Material> materials = new HashMap<>();
+    /** Each material's first definition by name, the material of an object below it. */
+    final Map<String, Material> materials = new HashMap<>();
     final List<Light> lights = new ArrayList<>();
     final List<Found> errors = new ArrayList<>();
     /** Warnings that hold only if the scene has a light, in the order their statements were built. */
@@ -114,7 +114,7 @@ final class SceneContents {
             // with a name not right, the object is only checked
             into = errors.size() > before ? new ArrayList<>() : all;
             try {
-                values.statement().builder().build(values, this);
+                values.build(this);
             } catch (StatementError e) {
                 addErrors(e);
             }
@@ -182,15 +182,6 @@ final class SceneContents {
     /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */
     private ClockedScene.Recorder recorder() {
         return values.expressionNames.recorder;
-    }
-
-    void warningIfLit(SceneError warning) {
-        litWarnings.add(warning);
-    }
-
-    /** The material {@code name} if it is defined above the line being read, else null. */
-    Material materialAbove(String name) {
-        return materials.get(name);
     }
 
     /** Keeps the errors of a statement, ordered by its place. */

@@ -15,13 +15,12 @@ import java.util.stream.Collectors;
 record Statement(String keyword, List<Group> groups, List<Group> optional, boolean repeatsLast, Builder builder) {
 
     /** The optional groups of an object, in either order: the names of a {@code material:} and a {@code transform:}. */
-    static final Group MATERIAL = Group.name("material", "material");
-    static final Group TRANSFORM = Group.name("transform", "transform");
+    static final Group MATERIAL = Group.word("material", Group.Rule.NAME, "material");
+    static final Group TRANSFORM = Group.word("transform", Group.Rule.NAME, "transform");
 
-    /** A statement that makes a shape: its colour may name a pattern, and it may name a material and a transform. */
+    /** A statement that makes a shape: it may name a material and a transform. */
     static Statement shape(String keyword, List<Group> groups, Builder builder) {
-        return new Statement(keyword, groups.stream().map(Group::orPatternName).toList(), List.of(MATERIAL, TRANSFORM),
-                false, builder);
+        return new Statement(keyword, groups, List.of(MATERIAL, TRANSFORM), false, builder);
     }
 
     /** A statement that sets something of the scene (its background, camera, a light, a material): no optional group. */
@@ -29,10 +28,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return new Statement(keyword, groups, List.of(), false, builder);
     }
 
-    /**
-     * Whether it makes an object, which may name a material and a transform. The group itself, not an equal one:
-     * asked of every line, and a record's {@code equals} would compare every field.
-     */
+    /** Whether it makes an object: the group itself, not an equal one, as a record's equals compares each field. */
     boolean takesMaterial() {
         return !optional.isEmpty() && optional.get(0) == MATERIAL;
     }
@@ -41,11 +37,13 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return repeatsLast ? Integer.MAX_VALUE : optional.size();
     }
 
-    Group optional(int k) {
-        return optional.get(Math.min(k, optional.size() - 1));
+    /** Group {@code g} of the statement as written: its own groups, then the optional ones. */
+    Group group(int g) {
+        int own = groups.size();
+        return g < own ? groups.get(g) : optional.get(Math.min(g - own, optional.size() - 1));
     }
 
-    /** Checks the values (a broken rule is an error at its value) and gives what the statement makes to {@code out}. */
+    /** Checks what only several groups together tell (each group's own rule is checked before) and gives its value. */
     @FunctionalInterface
     interface Builder {
         void build(StatementValues values, SceneContents out) throws StatementError;

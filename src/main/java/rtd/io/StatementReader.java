@@ -25,9 +25,8 @@ final class StatementReader {
     /** A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}. */
     StatementReader(SourceText source, int start, SceneContents contents, Names names) {
         this.cursor = new LineCursor(source, start);
-        WrittenGroups written = new WrittenGroups(16, 8);
-        this.groupReader = new GroupReader(cursor, written, names);
-        this.values = new StatementValues(source, written, names);
+        this.values = new StatementValues(source, names);
+        this.groupReader = new GroupReader(cursor, values, names);
         this.contents = contents;
         contents.readFrom(values);
     }
@@ -64,14 +63,14 @@ final class StatementReader {
         contents.statementCount++;
         current = statement;
         values.begin(statement, cursor.line, cursor.lineStart, statementStart);
-        List<Group> groups = statement.groups();
-        for (int g = 0; g < groups.size(); g++) { // no Iterator for each line of a large file
-            groupReader.readGroup(statement, groups.get(g));
+        int own = statement.groups().size();
+        for (int g = 0; g < own; g++) { // no Iterator for each line of a large file
+            groupReader.readGroup(statement, statement.group(g));
         }
         cursor.skipBlanks();
         int optional = 0;
         while (optional < statement.mostOptional() && cursor.at(':')) {
-            groupReader.readGroup(statement, statement.optional(optional++));
+            groupReader.readGroup(statement, statement.group(own + optional++));
             cursor.skipBlanks();
         }
         if (cursor.at(':')) {
@@ -82,8 +81,8 @@ final class StatementReader {
             throw textAfterStatement();
         }
         if (statement.takesMaterial() && (optional > 0 || values.patternGroup() >= 0)) {
-            String name = values.name(groups.size());
-            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materialAbove(name) : null;
+            String name = values.name(own);
+            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materials.get(name) : null;
             if (above == null) {
                 contents.addPending(values); // its names are resolved when the whole file is read
                 return;
@@ -91,7 +90,7 @@ final class StatementReader {
             contents.namedAtOnce.add(name);
             values.useNames(new DefinedNames.ObjectNames(above, null, null, List.of()));
         }
-        statement.builder().build(values, contents);
+        values.build(contents);
     }
 
     /**
@@ -101,7 +100,7 @@ final class StatementReader {
     private void keepNameOfBrokenDefinition() {
         if (current != null && current.keyword().equals(Grammar.LET)) {
             Names.brokenLet(values);
-        } else if (current != null && !current.takesMaterial() && current.groups().get(0).kind() == Group.Kind.NAME
+        } else if (current != null && !current.takesMaterial() && current.groups().get(0).rule() == Group.Rule.NAME
                 && values.hasValue(0)) {
             contents.brokenDefinitions.add(values.name(0));
         }
