@@ -2,6 +2,7 @@ package rtd.window;
 
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -168,6 +169,16 @@ final class FrameRenderer implements AutoCloseable {
             running = task; // a cancel interrupts this thread only while the task runs
         }
         task.run();
+        if (!task.isCancelled()) {
+            try {
+                task.get();
+            } catch (ExecutionException e) { // an Error, such as running out of memory: told, as on any thread
+                Thread.currentThread().getUncaughtExceptionHandler().uncaughtException(Thread.currentThread(),
+                        e.getCause());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     /** Stops the render thread: the frame in progress is interrupted, and no other renders. */

@@ -117,6 +117,25 @@ class FrameRendererTest {
     }
 
     @Test
+    void anErrorInARenderIsToldAsOnAnyThreadNotSwallowed() throws Exception {
+        CountDownLatch told = new CountDownLatch(1);
+        Thread.UncaughtExceptionHandler before = Thread.getDefaultUncaughtExceptionHandler();
+        Thread.setDefaultUncaughtExceptionHandler((thread, e) -> {
+            if (e instanceof OutOfMemoryError) {
+                told.countDown();
+            }
+        });
+        try (FrameRenderer loop = renderer(160, 90)) {
+            loop.submit(() -> {
+                throw new OutOfMemoryError("a render too large for the heap");
+            }, false);
+            assertThat(told.await(10, TimeUnit.SECONDS)).isTrue();
+        } finally {
+            Thread.setDefaultUncaughtExceptionHandler(before);
+        }
+    }
+
+    @Test
     void anInterruptedRenderShowsNoFurtherPass() {
         Scene scene = Scenes.example("glass_and_mirror");
         List<FrameRenderer.Pass> passes = new ArrayList<>();
