@@ -17,9 +17,9 @@ import rtd.window.WindowSetup.ClockedScene;
  * {@code ui} to the {@link Display}.
  *
  * <p>The clock slider and {@code P} parse the file read at the last save again at each clock; a value broken at a clock
- * (a radius negative at clock = 0.75) shows as a saved mistake does, and the last good picture stays. Playing runs the
- * clock up to 1 and then from 0 again, one pass in {@link #PASS_NANOS}: time, not frames, moves it, so a slow scene plays
- * at the same pace in fewer frames. A camera the user has not moved follows the file's at each clock.
+ * (a radius negative at clock = 0.75) shows as a saved mistake does, and the last good picture stays. Playing runs
+ * the clock up to 1 and then from 0 again, one pass in {@link #PASS_NANOS}: time, not frames, moves it, so a slow scene
+ * plays at the same pace in fewer frames. A camera the user has not moved follows the file's at each clock.
  */
 final class WindowSession implements AutoCloseable {
 
