@@ -97,17 +97,21 @@ class FrameRendererTest {
 
     @Test
     void aFrameStillWaitingIsDroppedForANewerOne() throws Exception {
+        CountDownLatch started = new CountDownLatch(1);
         CountDownLatch release = new CountDownLatch(1);
         AtomicBoolean dropped = new AtomicBoolean();
         CountDownLatch newer = new CountDownLatch(1);
         try (FrameRenderer loop = renderer(160, 90)) {
             loop.submit(() -> {
+                started.countDown();
                 try {
                     release.await(); // a moving frame in progress
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }
             }, false);
+            // the two frames below wait behind it: without this, the first could start alone and the second with it
+            assertThat(started.await(10, TimeUnit.SECONDS)).isTrue();
             loop.submit(() -> dropped.set(true), false);
             loop.submit(newer::countDown, false);
             release.countDown();
