@@ -18,7 +18,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import rtd.image.Picture;
 
 @DisplayName("Writing the picture through javax.imageio")
-class ImageWritingTest {
+class ImageFormatTest {
 
     /** Flat areas, as rtd draws them, with a few random pixels so that no two rows are alike. */
     static Picture picture(int width, int height, long seed) {

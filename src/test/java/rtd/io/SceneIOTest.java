@@ -19,7 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /** Reading a scene file that never ends, is huge, or is not text: bounded memory and time. */
 @DisplayName("Reading a scene file")
-class SceneFileReaderTest {
+class SceneIOTest {
 
     private static final String CAMERA = "orthographic_camera:(0|0|20):(0|0|-1):(50)\n";
 
