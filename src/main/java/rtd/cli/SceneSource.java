@@ -27,13 +27,8 @@ record SceneSource(Path path, boolean stdin) {
 
     /** Reads the scene at {@code clock}; its warnings (slips that are no mistakes) go to {@code warnings}. */
     Scene read(StandardStreams streams, double clock, List<SceneError> warnings) throws SceneException, FileError {
-        try { // at clock 0, read to be parsed once: its bytes let go as the parse goes on
-            return clock != 0 ? readFile(streams).at(clock, warnings) : !stdin ? SceneIO.readScene(path, warnings)
-                    : streams.inPath().isPresent() ? SceneIO.readScene(streams.inPath().get(), SceneIO.STDIN_NAME,
-                            warnings) : SceneIO.readScene(streams.in(), SceneIO.STDIN_NAME, warnings);
-        } catch (IOException e) {
-            throw new FileError("cannot read the scene file '" + name() + "'", e);
-        }
+        SceneFile file = readFile(streams); // at clock 0, parsed once: its bytes let go as the parse goes on
+        return clock != 0 ? file.at(clock, warnings) : file.once(warnings);
     }
 
     /** Reads the scene file once, to be parsed at each clock of an animation. */

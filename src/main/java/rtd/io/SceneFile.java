@@ -17,14 +17,10 @@ import rtd.scene.Scene;
 
 /**
  * A scene file read into memory once, to be parsed at any clock (paper, section 4.1, Listing A.1; Part III,
- * "Expressions, named values and the clock"): one statement of the {@link Grammar} a line, {@code //}
- * comments, any blanks, line ends and a byte-order mark. Text that is not UTF-8 is refused at its first bad
- * byte; every mistake is reported with line and column, in file order, up to {@link SceneException#MAX_ERRORS}.
- * After the {@link StatementReader} has read every line, the parse checks what only the whole file can tell
- * (one camera, one {@code ambient}, one definition per name), builds the objects that name a definition further
- * down, and gives the warnings of slips that are no mistakes. Each frame of an animation is the file parsed at
- * its own clock, the OBJ files of its meshes read once for all frames; after the first parse it tells whether
- * any number uses the clock: if none does, every frame is the same picture.
+ * "Expressions, named values and the clock"). Text that is not UTF-8 is refused at its first bad byte; every
+ * mistake is reported with line and column, in file order. Once every line is read, the parse checks what only the
+ * whole file can tell (one camera, one {@code ambient}, one definition per name) and gives the warnings of slips
+ * that are no mistakes. The OBJ files of its meshes are read once for all frames.
  */
 public final class SceneFile {
 
@@ -83,15 +79,12 @@ public final class SceneFile {
         return recorder.scene(parse(new Names(clock, recorder), null, false));
     }
 
-    /**
-     * The scene at clock 0, for a file parsed once: the bytes go as the parse starts, with the parse's own
-     * ({@link SourceText#close}), before the render of a large scene.
-     */
-    Scene once(List<SceneError> warnings) throws SceneException {
+    /** The scene at clock 0, parsed once: the bytes go with the parse ({@link SourceText#close}), before the render. */
+    public Scene once(List<SceneError> warnings) throws SceneException {
         return parse(new Names(0, new ClockedScene.Recorder()), warnings, true);
     }
 
-    /** Whether a number of the file used the clock, in a parse so far. */
+    /** Whether a number of the file used the clock, in a parse so far; if none does, every frame is the same. */
     public boolean usesClock() {
         return usesClock;
     }
@@ -99,7 +92,10 @@ public final class SceneFile {
     private Scene parse(Names names, List<SceneError> warnings, boolean once) throws SceneException {
         // Taken from the field, not kept in a local variable, which would hold them to the end of the parse.
         try (SourceText source = new SourceText(name, once ? takeBytes() : bytes, folder, meshes)) {
-            return parse(source, names, warnings);
+            int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
+            SceneContents contents = new SceneContents(objectsAtMost(source, start));
+            new StatementReader(source, start, contents, names).readAll();
+            return join(source, start, contents, warnings);
         } finally { // a failed parse tells too: a value may break its rule at some clocks only
             usesClock |= names.clockUsed;
         }
@@ -111,9 +107,13 @@ public final class SceneFile {
         return taken;
     }
 
-    private static Scene parse(SourceText source, Names names, List<SceneError> warnings) throws SceneException {
+    /**
+     * How many objects the text from {@code start} makes at most, so that their list is made that long at once:
+     * grown line by line, its large arrays would go to the old generation, and stay there long. Refuses text that
+     * is not UTF-8.
+     */
+    private static int objectsAtMost(SourceText source, int start) throws SceneException {
         byte[] bytes = source.bytes();
-        int start = TextBytes.startsWithByteOrderMark(bytes) ? 3 : 0;
         int lines = 1;
         boolean plain = true;
         for (int i = start; i < bytes.length; i++) {
@@ -126,15 +126,12 @@ public final class SceneFile {
         if (bad >= 0) {
             throw new SceneException(List.of(source.notUtf8(start, bad)), false);
         }
-        // Most lines of a large file make one object, so the list is made that long at once: grown
-        // line by line, its large arrays would go to the old generation, and stay there long.
-        SceneContents contents = new SceneContents(Math.min(lines, (bytes.length - start) / SHORTEST_OBJECT + 1));
-        new StatementReader(source, start, contents, names).readAll();
-        return join(source, contents, warnings);
+        return Math.min(lines, (bytes.length - start) / SHORTEST_OBJECT + 1);
     }
 
     /** The scene the contents make, or every mistake in them, ordered by place. */
-    private static Scene join(SourceText source, SceneContents contents, List<SceneError> warnings) throws SceneException {
+    private static Scene join(SourceText source, int start, SceneContents contents, List<SceneError> warnings)
+            throws SceneException {
         List<SceneContents.Found> errors = contents.errors;
         SceneError numbered = contents.firstLineNumber; // the lines that start with a line number: one mistake
         if (numbered != null) {
@@ -148,7 +145,6 @@ public final class SceneFile {
         DefinedNames names = new DefinedNames(contents, errors);
         Set<String> named = new HashSet<>(contents.namedAtOnce);
         List<IGeometry> objects = contents.allObjects(names, named);
-        int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
         if (errors.isEmpty() && contents.statementCount == 0) {
             errors.add(source.errorAt(1, start, start, "the scene is empty: it has no statements, only blanks and "
                     + "comments", "a scene needs at least a camera, such as " + CAMERA_EXAMPLE).found());

@@ -19,11 +19,10 @@ import rtd.image.Picture;
 import rtd.scene.Scene;
 
 /**
- * Input and output (paper, sections 4.1 and 4.3): reads a scene file at clock 0 (a {@link SceneFile} read
- * once), writes the picture as a PNG, or in another format that {@code javax.imageio} writes
- * ({@link ImageFormat#write}); a null warning list drops the warnings. A file is read in bounded time and memory:
- * one over {@link #MAX_SCENE_BYTES} is refused before it is read, and a stream that never ends
- * ({@code /dev/zero}, a pipe) is read in chunks, each checked as it arrives, up to the first non-text byte.
+ * Input and output (paper, sections 4.1 and 4.3): reads a scene file at clock 0, writes a picture in an
+ * {@link ImageFormat} or a text, whole or not at all. A file is read in bounded time and memory: one over
+ * {@link #MAX_SCENE_BYTES} is refused unread, and a stream of unknown length ({@code /dev/zero}, a pipe) is read
+ * in chunks, each checked as it arrives, up to the first non-text byte.
  */
 public final class SceneIO {
 
@@ -38,41 +37,17 @@ public final class SceneIO {
     private SceneIO() {
     }
 
-    /** Reads the scene file at {@code path} (UTF-8); its meshes' OBJ files are found from its folder. */
+    /** Reads the scene file at {@code path}, without its warnings; its meshes are found from its folder. */
     public static Scene readScene(Path path) throws SceneException, IOException {
-        return readScene(path, null);
-    }
-
-    /** As {@link #readScene(Path)}, adding to {@code warnings} the likely slips that are no mistakes. */
-    public static Scene readScene(Path path, List<SceneError> warnings) throws SceneException, IOException {
-        return SceneFile.read(path).once(warnings);
-    }
-
-    /** As {@link #readScene(Path, List)}, named {@code name} in messages: {@code <stdin>} for {@code /dev/stdin}. */
-    public static Scene readScene(Path path, String name, List<SceneError> warnings) throws SceneException, IOException {
-        return SceneFile.read(path, name, Path.of("")).once(warnings);
-    }
-
-    /** Reads a scene from {@code in} (all of it, up to {@link #MAX_SCENE_BYTES}), where there is no {@code /dev/stdin}. */
-    public static Scene readScene(InputStream in, String name, List<SceneError> warnings) throws SceneException, IOException {
-        return SceneFile.read(in, name).once(warnings);
+        return SceneFile.read(path).once(null);
     }
 
     /** Reads a scene from {@code text}, named {@code name} in messages; meshes are found from the current directory. */
     public static Scene parseScene(String name, String text) throws SceneException {
-        return parseScene(name, text, Path.of(""));
+        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), Path.of(""), null);
     }
 
-    /** As {@link #parseScene(String, String)}, with the OBJ files of meshes found relative to {@code meshFolder}. */
-    public static Scene parseScene(String name, String text, Path meshFolder) throws SceneException {
-        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), meshFolder, null);
-    }
-
-    /** As {@link #parseScene(String, String)}, adding the scene's warnings to {@code warnings}. */
-    public static Scene parseScene(String name, String text, List<SceneError> warnings) throws SceneException {
-        return parseScene(name, text.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
-    }
-
+    /** Reads a scene from {@code bytes}, its meshes found from {@code meshFolder}, adding its warnings to a list. */
     public static Scene parseScene(String name, byte[] bytes, Path meshFolder, List<SceneError> warnings)
             throws SceneException {
         return SceneFile.of(name, bytes, meshFolder).once(warnings);
@@ -113,8 +88,7 @@ public final class SceneIO {
         if (size > limit) {
             throw tooLarge(path.toString(), "is " + bytes(size), limit);
         }
-        // Bounded already: read whole; the parse checks its text.
-        byte[] bytes = readWhole(path);
+        byte[] bytes = readWhole(path); // bounded already: read whole; the parse checks its text
         if (bytes.length > limit) { // it grew while we read it
             throw tooLarge(path.toString(), "is larger than " + bytes(limit), limit);
         }

@@ -79,8 +79,8 @@ class ConcaveFacesTest {
         }
         obj.append('\n');
         Files.writeString(folder.resolve("ring.obj"), obj);
-        Scene scene = SceneIO.parseScene("scene.txt", "ambient:(0|0|255)\northographic_camera:(0|0|10):(0|0|-1):(5)\n"
-                + "mesh:(ring.obj):(0|0|0):(1):(255|0|0)\n", folder);
+        Scene scene = SceneIO.parseScene("scene.txt", ("ambient:(0|0|255)\northographic_camera:(0|0|10):(0|0|-1):(5)\n"
+                + "mesh:(ring.obj):(0|0|0):(1):(255|0|0)\n").getBytes(StandardCharsets.UTF_8), folder, null);
 
         int[] pixels = Renders.paper(scene, 21, 21);
 

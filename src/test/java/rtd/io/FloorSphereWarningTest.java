@@ -2,6 +2,8 @@ package rtd.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.DisplayName;
@@ -16,7 +18,7 @@ class FloorSphereWarningTest {
 
     private static List<SceneError> warnings(String text) throws SceneException {
         List<SceneError> warnings = new ArrayList<>();
-        SceneIO.parseScene("scene.txt", text, warnings);
+        SceneIO.parseScene("scene.txt", text.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
         return warnings;
     }
 

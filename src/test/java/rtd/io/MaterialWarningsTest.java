@@ -3,6 +3,8 @@ package rtd.io;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.DisplayName;
@@ -16,7 +18,7 @@ class MaterialWarningsTest {
 
     private static List<String> warnings(String scene) throws SceneException {
         List<SceneError> warnings = new ArrayList<>();
-        SceneIO.parseScene("scene.txt", scene, warnings);
+        SceneIO.parseScene("scene.txt", scene.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
         return warnings.stream().map(w -> w.line() + ":" + w.column() + " " + w.message()).toList();
     }
 
@@ -69,8 +71,8 @@ class MaterialWarningsTest {
     void aSceneWithAMistakeTellsTheMistakeAlone() {
         List<SceneError> warnings = new ArrayList<>();
         SceneException e = catchThrowableOfType(SceneException.class,
-                () -> SceneIO.parseScene("scene.txt", CAMERA + "material:(b):(diffuse=0.5)\nspere:(0|0|0):(1):(255|0|0)\n",
-                        warnings));
+                () -> SceneIO.parseScene("scene.txt", (CAMERA + "material:(b):(diffuse=0.5)\n"
+                        + "spere:(0|0|0):(1):(255|0|0)\n").getBytes(StandardCharsets.UTF_8), Path.of(""), warnings));
         assertThat(e.errors()).hasSize(1);
         assertThat(warnings).isEmpty();
     }

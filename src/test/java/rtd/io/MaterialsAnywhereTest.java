@@ -3,6 +3,8 @@ package rtd.io;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.DisplayName;
@@ -31,7 +33,7 @@ class MaterialsAnywhereTest {
                 "sphere:(2|0|0):(1):(0|0|255):(below)");
         List<SceneError> warnings = new ArrayList<>();
 
-        Scene scene = SceneIO.parseScene("scene.txt", source, warnings);
+        Scene scene = SceneIO.parseScene("scene.txt", source.getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
 
         assertThat(scene.objects()).extracting(IGeometry::kind).containsExactly("sphere", "sphere", "triangle", "sphere");
         assertThat(scene.objects()).extracting(object -> object.material().reflective())

@@ -36,13 +36,14 @@ class MeshTest {
 
     private Scene scene(String obj, String lines) throws Exception {
         Files.writeString(folder.resolve("model.obj"), obj);
-        return SceneIO.parseScene("scene.txt", CAMERA + lines, folder);
+        return SceneIO.parseScene("scene.txt", (CAMERA + lines).getBytes(StandardCharsets.UTF_8), folder, null);
     }
 
     private List<SceneError> errors(String obj) throws IOException {
         Files.write(folder.resolve("model.obj"), obj.getBytes(StandardCharsets.UTF_8));
         return catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt",
-                CAMERA + "\nmesh:(model.obj):(0|0|0):(1):(255|0|0)", folder)).errors();
+                (CAMERA + "\nmesh:(model.obj):(0|0|0):(1):(255|0|0)").getBytes(StandardCharsets.UTF_8), folder, null))
+                .errors();
     }
 
     private static List<Vector3f> corners(IGeometry object) {
@@ -180,8 +181,8 @@ class MeshTest {
     void everyMistakeInTheObjFileIsReportedInItsOrderAtTheMeshLine() throws IOException {
         Files.writeString(folder.resolve("model.obj"), "v 0 0 x\nf 1 2\nf 1 0 1\n");
         SceneException e = catchThrowableOfType(SceneException.class, () -> SceneIO.parseScene("scene.txt",
-                CAMERA + "ambient:(1|2|3)\nmesh:(model.obj):(0|0|0):(1):(255|0|0)\nsphere:(0|0|0):(-1):(0|0|0)\nambient:(1|2|3)",
-                folder));
+                (CAMERA + "ambient:(1|2|3)\nmesh:(model.obj):(0|0|0):(1):(255|0|0)\nsphere:(0|0|0):(-1):(0|0|0)\n"
+                        + "ambient:(1|2|3)").getBytes(StandardCharsets.UTF_8), folder, null));
         assertThat(e.errors()).extracting(err -> err.file() + ":" + err.line())
                 .containsExactly("model.obj:1", "model.obj:2", "model.obj:3", "scene.txt:4", "scene.txt:5");
     }
@@ -273,7 +274,7 @@ class MeshTest {
     void aMeshMissingFromAStandardInputSceneIsLookedForInTheFolderRtdRunsIn() {
         byte[] scene = (CAMERA + "mesh:(no-such-model.obj):(0|0|0):(1):(255|0|0)\n").getBytes(StandardCharsets.UTF_8);
         SceneException e = catchThrowableOfType(
-                () -> SceneIO.readScene(new java.io.ByteArrayInputStream(scene), SceneIO.STDIN_NAME, null),
+                () -> SceneFile.read(new java.io.ByteArrayInputStream(scene), SceneIO.STDIN_NAME).once(null),
                 SceneException.class);
         assertThat(e.errors().get(0).help()).isEqualTo("the scene comes from standard input, so a mesh's path is "
                 + "relative to the folder rtd runs in; or give the full path");

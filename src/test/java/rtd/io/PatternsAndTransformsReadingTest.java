@@ -2,6 +2,7 @@ package rtd.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
@@ -65,8 +66,9 @@ class PatternsAndTransformsReadingTest {
 
     @Test
     void aTransformedMeshTransformsEachTriangle() throws SceneException {
-        Scene scene = SceneIO.parseScene("scene.txt", CAMERA + "transform:(up):(translate 0|5|0)\n"
-                + "mesh:(meshes/icosphere_0.obj):(0|0|0):(1):(200|60|50):(up)\n", Path.of("examples"));
+        Scene scene = SceneIO.parseScene("scene.txt", (CAMERA + "transform:(up):(translate 0|5|0)\n"
+                + "mesh:(meshes/icosphere_0.obj):(0|0|0):(1):(200|60|50):(up)\n").getBytes(StandardCharsets.UTF_8),
+                Path.of("examples"), null);
         assertThat(scene.objects()).hasSize(20).allSatisfy(t -> assertThat(t).isInstanceOf(Transformed.class));
         assertThat(scene.objects().get(0).bounds().min().y()).isGreaterThan(3.9f);
     }
@@ -83,9 +85,9 @@ class PatternsAndTransformsReadingTest {
     @Test
     void aPatternOrTransformThatNothingNamesIsWarnedOfButOneAPatternNamesIsNot() throws SceneException {
         java.util.List<SceneError> warnings = new java.util.ArrayList<>();
-        SceneIO.parseScene("scene.txt", CAMERA + "transform:(big):(scale 2)\ntransform:(lift):(translate 0|1|0)\n"
+        SceneIO.parseScene("scene.txt", (CAMERA + "transform:(big):(scale 2)\ntransform:(lift):(translate 0|1|0)\n"
                 + "pattern:(tiles):(checker):(255|0|0):(255|255|0):(big)\npattern:(spare):(rings):(0|0|0):(9|9|9)\n"
-                + "plane:(0|0|0):(0|1|0):(tiles)\n", warnings);
+                + "plane:(0|0|0):(0|1|0):(tiles)\n").getBytes(StandardCharsets.UTF_8), Path.of(""), warnings);
         assertThat(warnings).extracting(SceneError::message).containsExactly(
                 "transform 'lift' is defined, but no object or pattern names it",
                 "pattern 'spare' is defined, but no object names it");

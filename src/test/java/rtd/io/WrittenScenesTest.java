@@ -3,6 +3,7 @@ package rtd.io;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
+import java.nio.charset.StandardCharsets;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -51,7 +52,7 @@ class WrittenScenesTest {
     void comeBackTheSame(long seed) throws IOException, SceneException {
         Files.writeString(folder.resolve("m.obj"), MESH);
         Written written = write(new Random(seed), 150);
-        Scene whole = SceneIO.parseScene("scene.txt", written.text(), folder);
+        Scene whole = SceneIO.parseScene("scene.txt", written.text().getBytes(StandardCharsets.UTF_8), folder, null);
         assertThat(Describe.objects(whole.objects())).isEqualTo(Describe.objects(written.objects()));
     }
 
