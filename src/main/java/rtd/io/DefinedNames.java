@@ -18,11 +18,9 @@ import rtd.io.SceneContents.Found;
 import rtd.math.Matrix4;
 
 /**
- * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each name is
- * defined once, by one of them, above or below the lines that use it. It resolves an object's names ({@link #of})
- * and a pattern's transform, and words each mistake at the name that makes it. Its warnings are the slips that
- * change nothing in the picture: a definition nothing names; an {@code ior} without {@code transparency};
- * materials in a scene without a light, drawn in flat colours.
+ * The one set of names that materials, patterns and transforms share (Part III, "Transformations"): each defined
+ * once, above or below the lines that use it. It resolves an object's names and a pattern's transform, each
+ * mistake at the name that makes it, and warns of slips that change nothing in the picture.
  */
 final class DefinedNames {
 
@@ -30,11 +28,7 @@ final class DefinedNames {
     private static final java.util.regex.Pattern IOR_KEY =
             java.util.regex.Pattern.compile("(?<=[(|][ \\t]{0,1000})ior(?=[ \\t]*=)");
 
-    /**
-     * What an object's names mean (Part III, "Transformations" and "Patterns"): the finish its last groups name
-     * ({@link Material#DEFAULT} if none), the pattern its colour group names and the transform (or null), and the
-     * names used, for the warnings about definitions that no object names.
-     */
+    /** What an object's names mean: its material, pattern and transform (null if none), and the names it used. */
     record ObjectNames(Material material, Pattern pattern, Matrix4 transform, List<String> names) {
 
         static final ObjectNames NONE = new ObjectNames(Material.DEFAULT, null, null, List.of());
@@ -45,13 +39,13 @@ final class DefinedNames {
             return transform == null ? painted : new Transformed(painted, transform);
         }
 
-        /** The colour a builder sees for a colour group that names the pattern: its first colour (black if unknown). */
+        /** The colour a builder sees for a colour group that names a pattern: its first colour, black if unknown. */
         Color colour() {
             return pattern == null ? Color.BLACK : pattern.a();
         }
     }
 
-    /** What a name is defined as: a {@link Material}, a {@link Pattern} or a {@link Matrix4}, by its first definition. */
+    /** Each name's first definition: a {@link Material}, a {@link Pattern} or a {@link Matrix4}. */
     private final Map<String, Definition> first = new HashMap<>();
     /** Each pattern with its transform resolved, by name. */
     private final Map<String, Pattern> patterns = new HashMap<>();
@@ -96,9 +90,8 @@ final class DefinedNames {
     }
 
     /**
-     * The warnings, in file order, about the materials, of which objects {@code named} some (at most
-     * {@link SceneException#MAX_ERRORS} and a last line for the rest, as a library of materials could give
-     * thousands), then about each pattern and transform that nothing names.
+     * The warnings about the materials, in file order (at most {@link SceneException#MAX_ERRORS} and a line for the
+     * rest, as a library of materials could give thousands), then about each pattern and transform nothing names.
      */
     List<SceneError> warnings(Set<String> named, boolean lit) {
         List<Definition> materials = definitions.stream().filter(d -> d.value() instanceof Material).toList();
@@ -148,10 +141,7 @@ final class DefinedNames {
                 name.message(), name.sourceLine(), name.help()) : name;
     }
 
-    /**
-     * What the names of the object whose values are {@code values} mean: its last groups name a material and a
-     * transform, in either order, each at most once; its colour group may name a pattern.
-     */
+    /** What an object's names mean: its last groups name a material and a transform, its colour group a pattern. */
     ObjectNames of(StatementValues values, List<Found> errors) {
         Material material = null;
         Matrix4 transform = null;
@@ -210,7 +200,6 @@ final class DefinedNames {
         return null;
     }
 
-    /** "did you mean …?" among the names of {@code kind}, or how to define one. */
     private String didYouMean(String name, String kind) {
         String nearest = Hints.nearest(name, first.values().stream().filter(d -> kind.contains(d.kind()))
                 .map(Definition::name).toList());
@@ -226,7 +215,6 @@ final class DefinedNames {
         };
     }
 
-    /** Where a name of {@code kind} belongs, for a name used in the wrong place. */
     private static String whereItGoes(String kind) {
         return switch (kind) {
             case "pattern" -> "a pattern's name goes in the object's colour group: sphere:(0|0|0):(1):(checks)";

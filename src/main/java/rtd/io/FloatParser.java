@@ -85,10 +85,7 @@ final class FloatParser {
         return negative ? -magnitude : magnitude;
     }
 
-    /**
-     * Clinger's fast path: when the digits and the power of ten are both exact in a double, one
-     * rounding gives the correctly rounded double, and one more the float. NaN when it does not apply.
-     */
+    /** Clinger's fast path: digits and power of ten exact in a double round once to it, again to float; else NaN. */
     private static float fast(long mantissa, int scale) {
         if (mantissa == 0 || mantissa >= (1L << 53) || Math.abs(scale) >= POWERS.length) {
             return mantissa == 0 ? 0f : Float.NaN;
@@ -100,7 +97,7 @@ final class FloatParser {
         return lowBits == (1L << 28) ? Float.NaN : (float) value;
     }
 
-    /** NaN or an infinity, for the caller to refuse: out of {@link #parse}, which stays small for the JIT. */
+    /** NaN or an infinity, for the caller to refuse; out of {@link #parse}, which stays small for the JIT. */
     private static float special(String word, boolean negative) {
         if (!word.equals("NaN") && !word.equals("Infinity")) {
             throw new NumberFormatException();

@@ -10,12 +10,11 @@ import java.util.function.Function;
 import java.util.function.ToIntFunction;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
+import java.util.stream.IntStream;
 
 /**
- * The {@code = help:} lines for the mistakes people really make in a scene file (a decimal comma, another
- * language's comment, two statements on a line, an invisible character, the paper's line numbers), and "did
- * you mean …?" for a misspelt word or a synonym ({@code camera}, {@code kugel}). Asked for only once a line
- * has a mistake.
+ * The {@code = help:} lines for the mistakes people really make in a scene file (a decimal comma, an invisible
+ * character, the paper's line numbers…), and "did you mean …?" for a misspelt word or a synonym ({@code kugel}).
  */
 final class Hints {
 
@@ -33,9 +32,8 @@ final class Hints {
     private static final Pattern LOOK_AT = Pattern.compile("(?i)at[-+.0-9]*");
 
     /**
-     * Words people write for a statement, in English, in German (the paper's language) and from other tools,
-     * too far from its keyword for {@link #nearest} to find it; looked up before the spelling, as "bg" is two
-     * edits from "box" but means the background. Each line: the words, then after '=' the keywords they suggest.
+     * Words people write for a statement (English, German, other tools' words) by the keywords they suggest; looked
+     * up before the spelling, as "bg" is two edits from "box" but means the background.
      */
     static final Map<String, List<String>> SYNONYMS = """
             camera cam kamera view eye = orthographic_camera perspective_camera
@@ -79,13 +77,12 @@ final class Hints {
                 : NUMBER_FORMS;
     }
 
-    /** For a path with a '\' that names no file: Windows separates folders so, the other systems with '/' only. */
     static String forWindowsPath(String path) {
         return "write folders with '/', as in " + path.replace('\\', '/') + ", which works on every system; "
                 + "'\\' separates folders on Windows only";
     }
 
-    /** For an OBJ token that is no number: its numbers are separated by blanks, so a comma is a decimal comma. */
+    /** For an OBJ token that is no number: blanks separate its numbers, so a comma is a decimal comma. */
     static String forObjNumber(String token) {
         return DECIMAL_COMMA.matcher(token).matches() ? "write decimals with a point: " + token.replace(',', '.')
                 : NUMBER_FORMS;
@@ -132,17 +129,13 @@ final class Hints {
 
     /** For a colour written as fractions from 0 to 1, as other programs write it, the same from 0 to 255; else null. */
     static String colourFractions(float[] values, int first) {
-        StringBuilder scaled = new StringBuilder("(");
-        for (int i = first; i < first + 3; i++) {
-            if (!(values[i] >= 0 && values[i] <= 1)) {
-                return null;
-            }
-            scaled.append(i > first ? "|" : "").append(Math.round(values[i] * 255));
+        if (!IntStream.range(first, first + 3).allMatch(i -> values[i] >= 0 && values[i] <= 1)) {
+            return null;
         }
-        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is " + scaled + ")";
+        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is (" + IntStream.range(first, first + 3)
+                .mapToObj(i -> String.valueOf(Math.round(values[i] * 255))).collect(Collectors.joining("|")) + ")";
     }
 
-    /** The help for an unknown statement keyword: "did you mean …?", or the list of keywords. */
     static String keywordHelp(String word) {
         List<String> meant = SYNONYMS.get(word.toLowerCase(Locale.ROOT));
         if (meant != null) {
@@ -165,9 +158,8 @@ final class Hints {
     }
 
     /**
-     * The candidate nearest to {@code word} (the first in alphabetical order of equally near ones), or null if
-     * none is within two edits, or a third of the candidate's length for long words. Case is ignored: {@code IOR}
-     * finds {@code ior}.
+     * The candidate nearest to {@code word}, case ignored (the first in alphabetical order of equally near ones), or
+     * null if none is within two edits, or a third of the candidate's length for long words.
      */
     static String nearest(String word, Collection<String> candidates) {
         ToIntFunction<String> distance = candidate -> editDistance(word.toLowerCase(Locale.ROOT),

@@ -11,14 +11,11 @@ import rtd.geometry.Pattern;
 import rtd.math.Matrix4;
 
 /**
- * The names a scene file defines as it is read, and the builders of those definitions. An expression may use
- * (Part III, "Expressions, named values and the clock") {@code clock}, whose value this reading is for (0 unless
- * the command line says otherwise), {@code pi}, and each name a {@code let:} above the line being read defined: a
- * letter, then letters, digits or '_'; not a word the expressions use, and not defined twice. It notes whether any
- * number used the clock: a scene that never does draws the same picture at every clock. Objects name what
- * {@code pattern:} (<i>The Ray Tracer Challenge</i>, chapter 10) and {@code transform:} (chapters 4 and 14) define,
- * resolved by {@link DefinedNames} once the file is read; a transform's steps apply in the order written,
- * {@code M = T_k ⋯ T_2·T_1}.
+ * The names a scene file defines as it is read, and the builders of those definitions. An expression (Part III,
+ * "Expressions, named values and the clock") may use {@code clock}, {@code pi} and each name a {@code let:} above
+ * defined; it notes whether any number used the clock. Objects name what {@code pattern:} (<i>The Ray Tracer
+ * Challenge</i>, chapter 10) and {@code transform:} (chapters 4 and 14) define, resolved by {@link DefinedNames}
+ * once the file is read; a transform's steps apply in the order written, {@code M = T_k ⋯ T_2·T_1}.
  */
 final class Names {
 
@@ -27,7 +24,7 @@ final class Names {
 
     final double clock;
     private final Map<String, Expression> defined = new HashMap<>();
-    /** The line of each name's {@code let}, those with a mistake among them (a broken name is not in {@link #defined}). */
+    /** The line of each name's {@code let}, those with a mistake among them (which are not {@link #defined}). */
     private final Map<String, Integer> lines = new HashMap<>();
     /** Whether some number of the file used the clock, directly or through a {@code let}. */
     boolean clockUsed;
@@ -98,12 +95,11 @@ final class Names {
     /** {@code pattern:(name):(kind):(R|G|B):(R|G|B)[:(transform)]}; the transform's name is resolved later. */
     static void pattern(StatementValues v, SceneContents out) throws StatementError {
         String word = v.name(1);
-        Pattern.Kind kind = Arrays.stream(Pattern.Kind.values()).filter(k -> k.word().equals(word)).findFirst()
-                .orElse(null);
-        if (kind == null) {
-            throw unknown(v, 1, "unknown kind of pattern '" + word + "'", "kinds",
-                    Arrays.stream(Pattern.Kind.values()).map(Pattern.Kind::word).toList(), word);
+        List<String> kinds = Arrays.stream(Pattern.Kind.values()).map(Pattern.Kind::word).toList();
+        if (!kinds.contains(word)) {
+            throw unknown(v, 1, "unknown kind of pattern '" + word + "'", "kinds", kinds, word);
         }
+        Pattern.Kind kind = Pattern.Kind.values()[kinds.indexOf(word)];
         out.pattern(v.name(0), new Pattern(kind, v.colour(2), v.colour(3), Matrix4.IDENTITY),
                 v.groupCount() > 4 ? v.name(4) : null);
     }

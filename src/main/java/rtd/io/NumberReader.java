@@ -3,20 +3,17 @@ package rtd.io;
 import java.util.Locale;
 
 /**
- * Reads one number of a group: a plain number as the paper's scenes have (read as {@link Float#parseFloat}
- * does, by {@link FloatParser}, without a String), or an expression (Part III), read by the
- * {@link ExpressionParser}, evaluated in double precision at the reading's clock and rounded to float once.
- * Only a value that is not a plain number goes to the expression reader, so a file of plain numbers reads as
- * fast as ever and every mistake in one keeps its message.
+ * Reads one number of a group: a plain number as the paper's scenes have, by {@link FloatParser}, or an expression
+ * (Part III), evaluated in double precision at the reading's clock and rounded to float once. Only a value that is
+ * no plain number goes to the {@link ExpressionParser}, so plain numbers read fast and keep their messages.
  */
 final class NumberReader {
 
     private final LineCursor cursor;
     private final Names names;
     private final StatementValues values;
-    /** Made at the first value that is no plain number: a file of plain numbers never loads the expression reader. */
+    /** Made at the first value that is no plain number: a file of plain numbers never loads it. */
     private ExpressionParser expressions;
-    /** Where the number read last starts. */
     int tokenStart;
     /** The expression read last, and its value in double precision; null for a plain number. */
     private Expression tree;
@@ -42,10 +39,7 @@ final class NumberReader {
         }
     }
 
-    /**
-     * One number, or an expression, at the cursor; its start is left in {@link #tokenStart}. The common case, a
-     * plain number that ends at '|' or ')', stays a small method, compiled early in a large file's first read.
-     */
+    /** One number or expression at the cursor. The common case, a plain number before '|' or ')', stays small. */
     private float read() throws StatementError {
         tree = null;
         int start = cursor.pos;
@@ -87,7 +81,7 @@ final class NumberReader {
         return expression();
     }
 
-    /** Reads the expression from {@link #tokenStart}: its value at the clock, finite and within a float's range. */
+    /** The expression from {@link #tokenStart}: its value at the clock, finite and within a float's range. */
     private float expression() throws StatementError {
         cursor.pos = tokenStart;
         Expression read = expressions().read();
@@ -124,9 +118,8 @@ final class NumberReader {
     }
 
     /**
-     * Whether the token that is no plain number is meant as an expression: it calls a function, holds an
-     * operator, or names (or nearly names) a value or a function; else it keeps the message of a number
-     * mistyped ({@code 2,5}, {@code eight}, a typographic minus).
+     * Whether the token that is no plain number is meant as an expression: it calls a function, holds an operator,
+     * or (nearly) names a value; else it keeps the message of a mistyped number ({@code 2,5}, {@code eight}).
      */
     private boolean looksLikeExpression() {
         byte[] bytes = cursor.bytes;

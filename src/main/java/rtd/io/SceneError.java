@@ -10,15 +10,8 @@ import java.util.stream.Collectors;
  *       |       ^
  *       = help: ...
  * </pre>
- * A line longer than {@value #WIDTH} characters is shown around the column, an ellipsis for each end cut off.
- *
- * @param file       the file's name as the user gave it
- * @param line       the line, from 1
- * @param column     the column, from 1, counted in characters
- * @param message    what was expected and what was found
- * @param sourceLine the text of the line, shown with a caret under the column; null when there is none to show
- *                   (a file that is not text)
- * @param help       a hint such as "did you mean 'sphere'?", or null
+ Line and column count from 1, the column in characters; {@code sourceLine} is null for a file that is not text,
+ * {@code help} may be null. A line longer than {@value #WIDTH} characters is shown around the column.
  */
 public record SceneError(String file, int line, int column, String message, String sourceLine, String help) {
 
@@ -26,12 +19,10 @@ public record SceneError(String file, int line, int column, String message, Stri
     /** How many characters of a long line are shown before the column. */
     private static final int BEFORE = 40;
 
-    /** This error as one of a scene's, ordered by its place. */
     SceneContents.Found found() {
         return new SceneContents.Found(line, column, this);
     }
 
-    /** Another message and help at the same place. */
     SceneError saying(String message, String help) {
         return new SceneError(file, line, column, message, sourceLine, help);
     }

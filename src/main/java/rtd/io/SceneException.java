@@ -16,7 +16,7 @@ public final class SceneException extends Exception {
     private final transient List<SceneError> errors;
     private final boolean stoppedEarly;
 
-    /** The {@code errors}, at least one; {@code stoppedEarly}: the file has more, which the reader did not keep. */
+    /** {@code stoppedEarly}: the file has more errors than these, which the reader did not keep. */
     public SceneException(List<SceneError> errors, boolean stoppedEarly) {
         super(errors.get(0).file() + ":" + errors.get(0).line() + ":" + errors.get(0).column() + ": "
                 + errors.get(0).message(), null, false, false);

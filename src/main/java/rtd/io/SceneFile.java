@@ -117,7 +117,7 @@ public final class SceneFile {
         int lines = 1;
         boolean plain = true;
         for (int i = start; i < bytes.length; i++) {
-            if (bytes[i] <= '\r') { // one test for the rare bytes: line breaks, control characters, every non-ASCII byte
+            if (bytes[i] <= '\r') { // one test for the rare: line breaks, control characters, every non-ASCII byte
                 lines += bytes[i] == '\n' || bytes[i] == '\r' && TextBytes.endsLine(bytes, i) ? 1 : 0;
                 plain &= bytes[i] > 0;
             }

@@ -10,16 +10,15 @@ import java.nio.file.Path;
 import java.util.Map;
 
 /**
- * The bytes of a scene (or OBJ) file as UTF-8 text, its name and the folder its relative paths start from, with
- * what a message needs: a line's text, the column of a byte in characters, what stands at a place. It finds the
- * first byte that is not UTF-8 text (a NUL byte, bytes that are not UTF-8) and says what the file looks like
- * instead: UTF-16, as some old Windows editors save; Latin-1 or Windows-1252, as editors in Germany and elsewhere
- * save an umlaut in a comment; or no text at all, such as a picture. Closed once parsed, which lets the bytes go.
+ * The bytes of a scene or OBJ file as UTF-8 text, its name and the folder its paths start from, with what a message
+ * needs: a line's text, a byte's column in characters, what stands at a place. Of a file that is not UTF-8 it says
+ * what it looks like instead: UTF-16, as old Windows editors save; Latin-1 or Windows-1252, as an umlaut in a
+ * comment is often saved; or no text at all. Closed once parsed, which lets the bytes go.
  */
 final class SourceText implements AutoCloseable {
 
     /** The most bytes of a token quoted in a message; a longer one is cut, with an ellipsis. */
-    static final int MAX_QUOTED_BYTES = 60;
+    private static final int MAX_QUOTED_BYTES = 60;
     private static final Charset WINDOWS_1252 = Charset.forName("windows-1252");
     private static final String SAVE_AS_UTF8 = "save the file as UTF-8";
     /** How many bytes at the start of a file tell whether it is UTF-16. */
@@ -28,11 +27,7 @@ final class SourceText implements AutoCloseable {
     private final String name;
     private byte[] bytes;
     private final Path folder;
-    /**
-     * The OBJ files read for the other frames of one animation (Part III, "Frames on the command line"), by
-     * absolute path, or null: each is read anew. A mesh file is the same at every clock, and only files read
-     * without a mistake are kept.
-     */
+    /** The OBJ files read without a mistake for an animation's other frames, by absolute path; null: none kept. */
     private final Map<Path, ObjMesh> meshes;
 
     SourceText(String name, byte[] bytes, Path folder, Map<Path, ObjMesh> meshes) {
@@ -63,7 +58,7 @@ final class SourceText implements AutoCloseable {
         return meshes;
     }
 
-    /** Lets the bytes go: a parse lasts long enough to move them to the old generation, through build and render. */
+    /** Lets the bytes go: old objects that point to them would keep them through build and render. */
     @Override
     public void close() {
         bytes = null;
@@ -82,18 +77,16 @@ final class SourceText implements AutoCloseable {
         return end;
     }
 
-    /** An error at byte {@code offset} of line {@code line}, which starts at byte {@code lineStart}. */
     SceneError errorAt(int line, int lineStart, int offset, String message, String help) {
         return new SceneError(name, line, column(lineStart, offset), message, lineText(lineStart), help);
     }
 
-    /** The column, from 1, of byte {@code offset} on the line that starts at {@code lineStart}. */
     int column(int lineStart, int offset) {
         String before = new String(bytes, lineStart, offset - lineStart, StandardCharsets.UTF_8);
         return before.codePointCount(0, before.length()) + 1;
     }
 
-    /** The text of {@code bytes[start, end)}, for a message: past {@value #MAX_QUOTED_BYTES} bytes cut, with '…'. */
+    /** The text of {@code bytes[start, end)} for a message, cut after {@value #MAX_QUOTED_BYTES} bytes. */
     String text(int start, int end) {
         if (end - start <= MAX_QUOTED_BYTES) {
             return new String(bytes, start, end - start, StandardCharsets.UTF_8);
@@ -106,11 +99,8 @@ final class SourceText implements AutoCloseable {
     }
 
     String describe(int offset, int lineStart) {
-        if (offset >= bytes.length) {
-            return offset > lineStart ? "the end of the line" : "the end of the file";
-        }
-        if (TextBytes.isLineBreak(bytes[offset])) {
-            return "the end of the line";
+        if (offset >= bytes.length || TextBytes.isLineBreak(bytes[offset])) {
+            return offset >= bytes.length && offset <= lineStart ? "the end of the file" : "the end of the line";
         }
         byte next = offset + 1 < bytes.length ? bytes[offset + 1] : 0;
         if (bytes[offset] == '/' && (next == '/' || next == '*')) {
@@ -157,7 +147,7 @@ final class SourceText implements AutoCloseable {
         return result.isError() ? in.position() : nul < to ? nul : -1;
     }
 
-    /** The error for the bad byte at {@code bad} of a scene whose text starts at {@code start} (after a BOM). */
+    /** The error for the bad byte at {@code bad} of a scene whose text starts at {@code start}, after a BOM. */
     SceneError notUtf8(int start, int bad) {
         int line = 1;
         int lineStart = start;
@@ -202,10 +192,7 @@ final class SourceText implements AutoCloseable {
         return String.format("0x%02X", b & 0xFF);
     }
 
-    /**
-     * "little-endian, with a byte-order mark" and the like if the file looks like UTF-16: it starts with UTF-16's
-     * byte-order mark, or (mostly ASCII text) every other byte of its start is 0; otherwise null.
-     */
+    /** "little-endian, with a byte-order mark" and the like if the file starts as UTF-16 does, else null. */
     private String utf16() {
         int first = bytes.length >= 2 ? (bytes[0] & 0xFF) << 8 | bytes[1] & 0xFF : 0;
         if (first == 0xFFFE || first == 0xFEFF) {
@@ -218,14 +205,12 @@ final class SourceText implements AutoCloseable {
             evenZeros += bytes[2 * k] == 0 ? 1 : 0;
             oddZeros += bytes[2 * k + 1] == 0 ? 1 : 0;
         }
-        if (pairs > 0 && 2 * oddZeros > pairs && 4 * evenZeros < pairs) {
-            return "little-endian, without a byte-order mark";
-        }
-        return pairs > 0 && 2 * evenZeros > pairs && 4 * oddZeros < pairs ? "big-endian, without a byte-order mark"
-                : null;
+        String order = 2 * oddZeros > pairs && 4 * evenZeros < pairs ? "little"
+                : 2 * evenZeros > pairs && 4 * oddZeros < pairs ? "big" : null;
+        return order == null ? null : order + "-endian, without a byte-order mark";
     }
 
-    /** Whether the file holds no NUL, no control character but tab, line breaks, form feed: text, if not UTF-8. */
+    /** Whether the file holds no control character but tab, line breaks and form feed: text, if not UTF-8. */
     private boolean looksLikeText() {
         for (byte b : bytes) {
             if (b >= 0 && b < ' ' && b != '\t' && b != '\n' && b != '\r' && b != '\f' || b == 0x7F) {

@@ -23,7 +23,7 @@ final class TextBytes {
         return b == ' ' || b == '\t' || b == '\f' || b == 0x0B;
     }
 
-    /** Whether the bytes begin with UTF-8's byte order mark (EF BB BF), which some Windows editors write. */
+    /** Whether the bytes begin with UTF-8's byte order mark, EF BB BF, which some Windows editors write. */
     static boolean startsWithByteOrderMark(byte[] bytes) {
         return bytes.length >= 3 && (bytes[0] & 0xFF) == 0xEF && (bytes[1] & 0xFF) == 0xBB && (bytes[2] & 0xFF) == 0xBF;
     }
@@ -51,7 +51,6 @@ final class TextBytes {
         return bytes[i] == '\n' || bytes[i] == '\r' && (i + 1 == bytes.length || bytes[i + 1] != '\n');
     }
 
-    /** A table of each byte value: whether it is a blank or one of {@code ends}. */
     private static boolean[] endsOf(String ends) {
         boolean[] table = new boolean[256];
         for (int value = 0; value < 256; value++) {
