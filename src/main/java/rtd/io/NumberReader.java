@@ -98,8 +98,7 @@ final class NumberReader {
         }
         float value = (float) exact;
         if (Float.isInfinite(value)) {
-            throw cursor.error(tokenStart, "'" + text + "' is too large for a float" + at,
-                    Hints.FLOAT_RANGE);
+            throw cursor.error(tokenStart, "'" + text + "' is too large for a float" + at, Hints.FLOAT_RANGE);
         }
         tree = read;
         return value;
@@ -160,7 +159,8 @@ final class NumberReader {
                 }
                 String word = cursor.source.text(i, end);
                 String nearest = expressions().nearestName(word);
-                if (nearest != null && Hints.editDistance(word.toLowerCase(Locale.ROOT), nearest.toLowerCase(Locale.ROOT)) <= 1) {
+                if (nearest != null
+                        && Hints.editDistance(word.toLowerCase(Locale.ROOT), nearest.toLowerCase(Locale.ROOT)) <= 1) {
                     return true;
                 }
                 i = end;
@@ -182,7 +182,8 @@ final class NumberReader {
         if (invisible < cursor.pos) {
             try {
                 FloatParser.parse(cursor.bytes, tokenStart, invisible);
-                return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
+                return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible),
+                        null);
             } catch (NumberFormatException e) {
                 // no number before it: the token's message
             }

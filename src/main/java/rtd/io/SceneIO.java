@@ -5,7 +5,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.OutputStreamWriter;
-import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
@@ -30,6 +29,7 @@ public final class SceneIO {
     public static final String STDIN_NAME = "<stdin>";
     /** The largest scene file rtd reads, 1 GiB: about 20 million spheres. */
     public static final long MAX_SCENE_BYTES = 1L << 30;
+    /** How many bytes of a stream are read, or buffered to be written, at once. */
     private static final int CHUNK = 1 << 16;
     /** The most bytes of a regular file read at once: Java keeps a buffer outside the heap as large as each read. */
     private static final int WHOLE_FILE_PIECE = 1 << 20;
@@ -62,17 +62,13 @@ public final class SceneIO {
     /** Writes {@code text} in UTF-8 to {@code output} as {@link #writeImage} writes a picture: whole, or not at all. */
     public static void writeText(String text, Path output) throws IOException {
         // Encoded as it is written, not as one array: the export of a large scene is tens of megabytes.
-        TemporaryFiles.replace(output, out -> {
-            Writer writer = new OutputStreamWriter(out, StandardCharsets.UTF_8);
-            writer.write(text);
-            writer.flush();
-        });
+        TemporaryFiles.replace(output, out -> new OutputStreamWriter(out, StandardCharsets.UTF_8).append(text).flush());
     }
 
     /** Writes {@code picture} into {@code device}, a FIFO or /dev/null: never created, replaced or truncated. */
     public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
             throws IOException {
-        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), 1 << 16)) {
+        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), CHUNK)) {
             format.write(picture, out, progress);
         }
     }
