@@ -26,7 +26,6 @@ final class Names {
     private final Map<String, Expression> defined = new HashMap<>();
     /** The line of each name's {@code let}, those with a mistake among them (which are not {@link #defined}). */
     private final Map<String, Integer> lines = new HashMap<>();
-    /** Whether some number of the file used the clock, directly or through a {@code let}. */
     boolean clockUsed;
     /** Where the reading notes each statement's numbers that use the clock, for {@link SceneFile#withClock}. */
     final ClockedScene.Recorder recorder;

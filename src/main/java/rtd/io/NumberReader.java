@@ -104,7 +104,6 @@ final class NumberReader {
         return value;
     }
 
-    /** Whether an operator follows the plain number just read, after blanks: {@code 2 * x}. */
     private boolean operatorFollows() {
         int p = cursor.pos;
         byte[] bytes = cursor.bytes;
@@ -139,7 +138,6 @@ final class NumberReader {
         return nearlyAName(tokenStart, end);
     }
 
-    /** Whether the sign at {@code i} is an exponent's, as in {@code 1e-5}. */
     private boolean afterExponent(int i) {
         byte[] bytes = cursor.bytes;
         return (bytes[i - 1] == 'e' || bytes[i - 1] == 'E') && i - 2 >= tokenStart

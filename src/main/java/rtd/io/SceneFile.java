@@ -59,7 +59,6 @@ public final class SceneFile {
         return new SceneFile(name, SceneIO.readBytes(in, name, (int) SceneIO.MAX_SCENE_BYTES), Path.of(""));
     }
 
-    /** A scene of {@code bytes}, named {@code name} in messages, its meshes found from {@code folder}. */
     public static SceneFile of(String name, byte[] bytes, Path folder) {
         return new SceneFile(name, bytes, folder);
     }
