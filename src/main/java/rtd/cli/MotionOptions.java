@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import picocli.CommandLine;
 import picocli.CommandLine.Option;
 import rtd.io.ClockedScene;
 import rtd.io.SceneError;
@@ -73,13 +72,13 @@ public final class MotionOptions {
         }
 
         /** Each numbered picture's target beside {@code target}, all checked before anything is drawn. */
-        List<OutputTarget> targets(OutputTarget target, Path scene, CommandLine commandLine) throws FileError {
+        List<OutputTarget> targets(OutputTarget target, Path scene) throws FileError {
             if (target.kind() == OutputTarget.Kind.STREAM) {
                 return Collections.nCopies(count(), target);
             }
             List<OutputTarget> targets = new ArrayList<>();
             for (int i = first; i <= last; i++) {
-                targets.add(OutputTarget.of(frameFile(target.spelt(), i), scene, "-o", commandLine));
+                targets.add(OutputTarget.of(frameFile(target.spelt(), i), scene, "-o"));
             }
             return targets;
         }
@@ -103,18 +102,18 @@ public final class MotionOptions {
     }
 
     /** The frames to draw, or null for one picture; a misuse for what does not go with {@code --frames}. */
-    FramePlan plan(CommandLine commandLine, List<Path> scenes, Path output, String replacing) {
+    FramePlan plan(List<Path> scenes, Path output, String replacing) {
         if (frames == null) {
-            RtdCommand.refuse(commandLine, subset != null || fps != null, (subset != null ? "--subset" : "--fps")
+            RtdCommand.refuse(subset != null || fps != null, (subset != null ? "--subset" : "--fps")
                     + " belongs to an animation; give --frames N too");
             return null;
         }
-        RtdCommand.refuse(commandLine, clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock "
+        RtdCommand.refuse(clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock "
                 + "is for one picture");
-        RtdCommand.refuse(commandLine, replacing != null, replacing + " works on one picture, not on --frames; give "
+        RtdCommand.refuse(replacing != null, replacing + " works on one picture, not on --frames; give "
                 + "--clock C for the moment you want");
-        RtdCommand.oneSceneFile(commandLine, "--frames", scenes);
-        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
+        RtdCommand.oneSceneFile("--frames", scenes);
+        RtdCommand.refuse(OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
                 + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or "
                 + "-o movie.gif");
         double speed = fps == null ? 24 : fps;
@@ -123,13 +122,13 @@ public final class MotionOptions {
         }
         Matcher matcher = Pattern.compile("\\s*(\\d{1,9})\\s*-\\s*(\\d{1,9})\\s*").matcher(subset);
         String frameRange = "from 0 to " + (frames - 1) + " (--frames " + frames + ")";
-        RtdCommand.refuse(commandLine, !matcher.matches(), "--subset '" + subset + "': give the frames as A-B, two "
+        RtdCommand.refuse(!matcher.matches(), "--subset '" + subset + "': give the frames as A-B, two "
                 + "whole numbers " + frameRange + ", such as --subset 0-" + (frames - 1) / 2);
         int first = Integer.parseInt(matcher.group(1));
         int last = Integer.parseInt(matcher.group(2));
-        RtdCommand.refuse(commandLine, first > last || last >= frames, "--subset " + first + "-" + last + ": "
+        RtdCommand.refuse(first > last || last >= frames, "--subset " + first + "-" + last + ": "
                 + (first > last ? "A must not be after B" : "the frames run " + frameRange));
-        RtdCommand.refuse(commandLine, output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif"),
+        RtdCommand.refuse(output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif"),
                 "--subset draws frames to be joined later, as numbered pictures; give -o NAME.png, and join the frames "
                 + "into a GIF or a video when all are drawn");
         return new FramePlan(frames, first, last, speed);

@@ -48,12 +48,12 @@ public final class WindowOptions {
 
     /** Opens the window, once what makes no sense in one is refused; the exit code when it is closed. */
     int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
-        RtdCommand.refuse(commandLine, options.scenes().size() > 1, "--window opens one scene file, but "
+        RtdCommand.refuse(options.scenes().size() > 1, "--window opens one scene file, but "
                 + options.scenes().size() + " were given; open each in a window of its own");
-        RtdCommand.refuse(commandLine, options.scene().toString().equals("-"), "--window needs a scene file to watch; "
+        RtdCommand.refuse(options.scene().toString().equals("-"), "--window needs a scene file to watch; "
                 + "it cannot open standard input ('-')");
         for (String[] refused : REFUSED) {
-            RtdCommand.refuse(commandLine, commandLine.getParseResult().hasMatchedOption(refused[0]), "--window and "
+            RtdCommand.refuse(commandLine.getParseResult().hasMatchedOption(refused[0]), "--window and "
                     + refused[0] + " do not go together: " + refused[1]);
         }
         String missing = Window.missingDisplay();
@@ -65,7 +65,7 @@ public final class WindowOptions {
                 : new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, new Scale((double) WIDTH
                 / RtdCommand.DEFAULT_WIDTH), false, options.threads(), options.accel(), options.paper(),
                 options.samples(), options.stats(), options.progress(), options.clock());
-        Memory.checkImageFits(commandLine, sized.width(), sized.height(), sized.scale());
+        Memory.checkImageFits(sized.width(), sized.height(), sized.scale());
         WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel().name(),
                 sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads(), sized.clock());
         try {
