@@ -16,9 +16,8 @@ import rtd.scene.Scene;
 
 /**
  * The options of motion, a picocli mixin of {@link RtdCommand} (Part III, "Frames on the command line"):
- * {@code --clock C} draws the scene at one clock, {@code --frames N} draws N frames from clock 0 to 1,
- * {@code --fps F} sets an animated GIF's speed and {@code --subset A-B} draws only some of the frames. Each
- * combination that cannot mean anything is refused as a mistake on the command line (exit code 2).
+ * {@code --clock}, {@code --frames}, {@code --fps} and {@code --subset}; a combination that cannot mean anything is
+ * a mistake on the command line.
  */
 public final class MotionOptions {
 
@@ -40,11 +39,8 @@ public final class MotionOptions {
     private String subset;
 
     /**
-     * Which frames of an animation a run draws and what each is called: frames 0 … N−1, frame i at
-     * {@code clock = i/(N−1)}, from 0 to 1 inclusive as POV-Ray's clock runs; {@code --subset A-B} draws frames
-     * {@code first} to {@code last} of them with the clocks and names they have in the whole animation, so that
-     * machines can share the work. Numbered pictures are {@code NAME-000.png}, …: three digits, or as many as N−1
-     * needs.
+     * Which frames of an animation a run draws, {@code first} to {@code last} of frames 0 … N−1, frame i at
+     * {@code clock = i/(N−1)} as POV-Ray's clock runs, and what each is called: {@code NAME-000.png}, … .
      */
     record FramePlan(int frames, int first, int last, double fps) {
 
@@ -56,7 +52,7 @@ public final class MotionOptions {
             return last - first + 1;
         }
 
-        /** The GIF's delay between frames, in hundredths of a second: round(100/F), at least 1. */
+        /** The GIF's delay between frames in hundredths of a second, at least 1. */
         int delayHundredths() {
             return (int) Math.max(1, Math.round(100 / fps));
         }
@@ -96,7 +92,6 @@ public final class MotionOptions {
         }
     }
 
-    /** The clock of a single picture: {@code --clock}, or 0. */
     double clock() {
         return clock == null ? 0 : clock;
     }
