@@ -19,7 +19,6 @@ import rtd.scene.Scene;
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
-    /** The values of {@code --accel}. */
     enum Choice { auto, none, bvh, grid }
 
     /** What a run finds its hits with, and how the progress line names its building. */

@@ -108,9 +108,8 @@ public final class MotionOptions {
         RtdCommand.refuse(replacing != null, replacing + " works on one picture, not on --frames; give "
                 + "--clock C for the moment you want");
         RtdCommand.oneSceneFile("--frames", scenes);
-        RtdCommand.refuse(OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
-                + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or "
-                + "-o movie.gif");
+        RtdCommand.refuse(OutputTarget.DASH.equals(output), "--frames writes several pictures, which standard output "
+                + "(-o -) cannot hold; give a name such as -o frames.png (numbered frames) or -o movie.gif");
         double speed = fps == null ? 24 : fps;
         if (subset == null) {
             return new FramePlan(frames, 0, frames - 1, speed);

@@ -108,9 +108,9 @@ final class ProgressDisplay implements AutoCloseable {
     }
 
     /**
-     * What the run is doing: its name, the fraction done (NaN if unknown) and the rays traced (negative: none). The
-     * time left uses the rate of the last third of the time so far, at least a second: rays get cheaper as the JIT
-     * compiles, so the rate since the start would promise too long. {@code recent} holds (seconds, fraction) pairs.
+     * What the run is doing: its name, the fraction done (NaN if unknown), the rays traced (negative: none), and the
+     * recent (seconds, fraction) pairs: the time left uses the rate of the last third of the time so far, as rays get
+     * cheaper while the JIT compiles.
      */
     record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos, List<double[]> recent) {
 

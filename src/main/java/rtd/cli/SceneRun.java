@@ -57,7 +57,6 @@ final class SceneRun {
     private final ArrayDeque<Future<?>> pending = new ArrayDeque<>();
     private AnimatedGif gif;
 
-    /** A run of one picture, or for a {@code plan} not null of its frames. */
     SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, FramePlan plan) {
         this.options = options;
         this.streams = streams;
@@ -131,10 +130,7 @@ final class SceneRun {
         return scene;
     }
 
-    /**
-     * On all cores with {@code accelerator}'s tracers, flat or shaded ({@link WhittedShader}) if the scene has lights;
-     * for {@code --paper}, the paper's own {@link Scene#render}, one ray a pixel on this thread, in flat colours.
-     */
+    /** With {@code accelerator} on all cores, shaded if lit; for {@code --paper}, {@link Scene#render} on this thread. */
     private RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
         int width = options.width();
         int height = options.height();

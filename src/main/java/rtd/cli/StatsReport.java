@@ -10,7 +10,7 @@ import java.util.stream.Stream;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
 
-/** {@code --stats}: the wall time of each phase of a run, one after the other, and the report of them and of the work per ray. */
+/** {@code --stats}: the wall time of each phase of a run, and the report of them and of the work per ray. */
 final class StatsReport {
 
     private static final String LINE = "%-7s %8.3f s  %s%n";

@@ -21,8 +21,8 @@ import rtd.view.ViewShader;
 
 /**
  * The teaching options, a picocli mixin of {@link RtdCommand}: {@code --explain X,Y} prints what rtd does for one
- * pixel in the paper's terms, {@code --view KIND} draws what the rays did, {@code --export-pov FILE.pov} writes
- * the scene for POV-Ray, and {@code --watch} renders again whenever the scene changes.
+ * pixel in the paper's terms, {@code --view KIND} draws what the rays did, {@code --export-pov} writes the scene for
+ * POV-Ray, {@code --watch} renders again whenever the scene changes.
  */
 public final class TeachingOptions {
 
@@ -54,9 +54,8 @@ public final class TeachingOptions {
             if (explain != null && explain.matches("\\s*\\d{1,9}\\s*")) { // --explain 300 400 reads 400 as a scene
                 Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}")
                         && !Files.exists(p)).findFirst().orElse(null);
-                RtdCommand.refuse(number != null, "--explain takes the pixel as X,Y with a comma, and '"
-                        + number + "' was read as a scene file; did you mean --explain " + explain.strip() + ","
-                        + number + "?");
+                RtdCommand.refuse(number != null, "--explain takes the pixel as X,Y with a comma, and '" + number + "' "
+                        + "was read as a scene file; did you mean --explain " + explain.strip() + "," + number + "?");
             }
             String option = replacing != null ? replacing : "--export-pov";
             RtdCommand.oneSceneFile(option, options.scenes());
@@ -64,9 +63,8 @@ public final class TeachingOptions {
                     + "cannot work on standard input ('-')");
         }
         if (watch) {
-            RtdCommand.refuse(OutputTarget.DASH.equals(options.output()), "--watch writes the picture "
-                    + "again at each save, which cannot go to standard output ('-o -'); give a file, such as "
-                    + "-o out.png");
+            RtdCommand.refuse(OutputTarget.DASH.equals(options.output()), "--watch writes the picture again at each "
+                    + "save, which cannot go to standard output ('-o -'); give a file, such as -o out.png");
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
         RtdCommand.refuse(explain != null && view != null, "--explain and --view each take the place of "
@@ -130,9 +128,8 @@ public final class TeachingOptions {
         RtdCommand.refuse(name.indexOf('"') >= 0, "--export-pov '" + exportPov + "': a name with a double "
                 + "quote cannot be given to POV-Ray; choose one without"); // the folder is cd's
         String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
-        RtdCommand.refuse(!endsInPov(exportPov), "--export-pov writes a POV-Ray scene, and its name must "
-                + "end in .pov; '" + exportPov + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base)
-                + ".pov");
+        RtdCommand.refuse(!endsInPov(exportPov), "--export-pov writes a POV-Ray scene, and its name must end in .pov; '"
+                + exportPov + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
         OutputTarget target = OutputTarget.of(exportPov, options.scene(), "--export-pov");
         RtdCommand.refuse(target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
                 + exportPov + "' leads to '" + target.file() + "', whose name does not end in .pov; --export-pov "
@@ -156,11 +153,7 @@ public final class TeachingOptions {
         return target;
     }
 
-    /**
-     * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
-     * paper's loop or what {@code --accel} chose, all threads), written to {@code target} as a picture is, with its
-     * scale on standard error; the exit code, 0.
-     */
+    /** {@code --view KIND}: what the camera's rays did ({@link View}), traced on the path the picture would take. */
     private int view(Scene scene, OutputTarget target, RenderOptions options, StatsReport stats, PrintWriter err)
             throws FileError {
         if (options.samples() > 1) {

@@ -21,8 +21,7 @@ import rtd.window.WindowSetup.FileWatch;
 
 /**
  * {@code --window}, a picocli mixin of {@link RtdCommand}: opens the scene in a window ({@link Window}) instead of
- * writing its picture. The command line gives it what it knows: the size, {@code --samples}, {@code --threads},
- * the tracers {@code --accel} chooses ({@link Accelerator}), and {@link SceneWatcher}'s eye on the files.
+ * writing its picture, with the size, samples, threads and tracers the command line gives.
  */
 public final class WindowOptions {
 
@@ -95,10 +94,8 @@ public final class WindowOptions {
     }
 
     /**
-     * The tracers {@code --accel ACCEL} chooses ({@code auto}, {@code none}, {@code bvh} or {@code grid}) with
-     * {@code threads} threads, as {@code -o} chains them ({@link Accelerator}): for any camera the lights' grids
-     * (they see from the lights, whatever the camera) before the BVH, or the paper's loop for {@code none}; for
-     * the picture the view grid of its camera before those. Public for the window's benchmark.
+     * The tracers {@code --accel} chooses, chained as for {@code -o}: for any camera the lights' grids (they see from
+     * the lights) before the BVH, or the paper's loop; for the picture its view grid before those. Public for tests.
      */
     public static Engine engine(String choice, int threads) {
         Accelerator.Choice accel = Accelerator.Choice.valueOf(choice);
