@@ -13,9 +13,8 @@ import rtd.io.ImageFormat;
 import rtd.io.SceneIO;
 
 /**
- * Where a file rtd writes goes, decided before rendering: a regular file that a complete new one replaces, or a
- * FIFO or character device that it is written into. Decided on the real file, links followed (the output itself
- * or a folder on the way), so that neither the scene file nor a device nor the link itself is ever replaced.
+ * Where a file rtd writes goes, decided before rendering on the real file, links followed: a regular file that a
+ * complete new one replaces, or a FIFO or character device written into; never the scene, a device or a link itself.
  *
  * @param spelt the output as the user gave it, for messages
  * @param file  where to write: for {@link Kind#REPLACE} the real file, whose folder holds the temporary file

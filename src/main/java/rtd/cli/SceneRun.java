@@ -130,7 +130,7 @@ final class SceneRun {
         return scene;
     }
 
-    /** With {@code accelerator} on all cores, shaded if lit; for {@code --paper}, {@link Scene#render} on this thread. */
+    /** With {@code accelerator} on all cores, shaded if lit; {@code --paper}: {@link Scene#render} on this thread. */
     private RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
         int width = options.width();
         int height = options.height();

@@ -20,12 +20,10 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 
 /**
- * Standard input and output as bytes, for the scene {@code -} and {@code -o -}, and whether each is a terminal (a
- * person types the scene there, a picture never goes there, a progress line only there). A terminal whose encoding
- * lacks the signs of rtd's text ({@code 1920 × 1080}, {@code t ≥ 0}) gets them in plain ASCII, else {@code ?}.
- *
- * @param inPath standard input as a file ({@code /dev/stdin}) where there is one: a scene read through it is checked
- *               as it arrives, so that an endless stream of non-text ends at once
+ * Standard input and output as bytes, for the scene {@code -} and {@code -o -}, and whether each is a terminal. A
+ * terminal whose encoding lacks the signs of rtd's text ({@code 1920 × 1080}) gets them in plain ASCII, else {@code ?}.
+ * {@code inPath} is standard input as a file ({@code /dev/stdin}) where there is one: a scene read through it is
+ * checked as it arrives, so that an endless stream of non-text ends at once.
  */
 record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTerminal, OutputStream out,
         boolean outIsTerminal) {
