@@ -24,7 +24,6 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
     /** A regular file, new or old, replaced by a complete new one; a FIFO or character device; {@code -o -}. */
     enum Kind { REPLACE, STREAM, STANDARD_OUTPUT }
 
-    /** How {@code -o} names standard output. */
     static final Path DASH = Path.of("-");
 
     static OutputTarget standardOutput() {

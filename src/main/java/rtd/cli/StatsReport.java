@@ -25,7 +25,6 @@ final class StatsReport {
         phaseStart = now;
     }
 
-    /** The report of the phases so far, for {@code scene} rendered with {@code accelerator}. */
     String format(Scene scene, Accelerator accelerator, WorkCount work, int threads, Path output) {
         double render = seconds.getOrDefault("render", 0.0);
         Formatter text = new Formatter(Locale.ROOT);
