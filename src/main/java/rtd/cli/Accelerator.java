@@ -13,13 +13,12 @@ import rtd.render.Tracer;
 import rtd.scene.Scene;
 
 /**
- * What a run finds its hits with, as {@code --accel} chose it and built it: a new tracer for each thread, what was
- * built for {@code --stats} (made only if asked, as formatting numbers the first time is slow), and whether the
- * tracers walk a tree, so that nodes per ray mean something.
+ * What a run finds its hits with, as {@code --accel} chose and built it: a new tracer for each thread, what was built
+ * for {@code --stats} (made only if asked: formatting numbers the first time is slow), and whether the tracers walk a
+ * tree, so that nodes per ray mean something.
  */
 record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
-    /** The values of {@code --accel}, of which {@link #choose} makes a {@link Kind}. */
     enum Choice { auto, none, bvh, grid }
 
     /** What a run finds its hits with, and how the progress line names its building. */
@@ -37,10 +36,9 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
     }
 
     /**
-     * What {@code accel} asks for {@code scene}: {@code none} the paper's loop (Listing 4.3), as does a scene without
-     * objects; {@code auto} and {@code grid} the view grid for the camera's rays, and for a scene with lights a grid
-     * seen from each light for its shadow rays and the BVH for the rest; {@code bvh}, or a camera the grid cannot
-     * serve, the BVH. The grid serves either camera at any number of samples.
+     * What {@code accel} asks for {@code scene}: {@code none} (or no objects) the paper's loop (Listing 4.3);
+     * {@code auto} and {@code grid} the view grid, with lights also a grid from each light and the BVH; {@code bvh},
+     * or a camera the grid cannot serve, the BVH.
      */
     static Kind choose(Scene scene, Choice accel) {
         if (accel == Choice.none || scene.objects().isEmpty()) {
@@ -52,7 +50,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
     }
 
-    /** {@link #build} of what {@code accel} asks ({@link #choose}), from nothing. */
+    /** {@link #build} of what {@code accel} asks, from nothing. */
     static Accelerator of(Scene scene, Choice accel, int width, int height, int samples, int threads) {
         return build(choose(scene, accel), scene, width, height, samples, threads, new StructureCache());
     }
@@ -92,7 +90,6 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
                 "cell"), grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries"));
     }
 
-    /** What {@code built} built, or what it threw. */
     private static <T> T join(CompletableFuture<T> built) {
         try {
             return built.join();
@@ -106,22 +103,18 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
 
     /**
      * The structures of a run's frames that do not depend on the camera, kept from one frame to the next: the BVH
-     * while the frame's objects equal the last frame's, the light grids while its objects and lights do. Records
-     * compare by value; a shape that is no record (a mesh's triangle) equals only itself, so a shape made anew is
-     * built anew. A camera that moves over still objects rebuilds only the view grid, and every pixel is the one a
-     * build from nothing gives.
+     * while the objects equal the last frame's, the light grids while objects and lights do. A shape that is no
+     * record (a mesh's triangle) equals only itself, so it is built anew; every pixel is the one a fresh build gives.
      */
     static final class StructureCache {
 
         private final Last<Bvh> bvh = new Last<>();
         private final Last<LightGrids> lightGrids = new Last<>();
 
-        /** The BVH of {@code scene}'s objects: the last one if they are equal to its objects. */
         Bvh bvh(Scene scene) {
             return bvh.get(scene.objects(), () -> Bvh.build(scene));
         }
 
-        /** The light grids of {@code scene}'s objects and lights: the last ones if both, and the size, are equal. */
         LightGrids lightGrids(Scene scene, int width, int height, int samples, int threads) {
             return lightGrids.get(List.of(scene.objects(), scene.lights(), width, height, samples),
                     () -> LightGrids.build(scene, width, height, samples, threads));

@@ -11,17 +11,15 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
-import picocli.CommandLine;
 import rtd.io.ImageFormat;
 
 /**
- * Where each scene's picture goes and in which format, and where {@code --view} and {@code --export-pov} write, all
- * checked before any rendering: a mistake on the command line stops the run before any work, and a long render does
- * not end in a failed write.
+ * Where each scene's picture goes and in which format, checked before any rendering: a mistake on the command line
+ * stops the run before any work, and a long render does not end in a failed write.
  *
  * @param output the picture that {@code -o} names, or null for each scene's default
  */
-record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine) {
+record JobPlanner(Path output, StandardStreams streams) {
 
     /** A scene with where its picture goes, or the file error (reported in its turn) for why it cannot go there. */
     record Job(SceneSource source, OutputTarget target, ImageFormat format, FileError refusal) {
@@ -30,26 +28,26 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
     /** Each scene's job, in order; one picture name cannot serve several scenes. */
     List<Job> jobs(List<Path> scenes) {
         List<SceneSource> sources = scenes.stream().map(SceneSource::of).toList();
-        RtdCommand.refuse(commandLine, output != null && sources.size() > 1, "-o names one picture, but "
+        RtdCommand.refuse(output != null && sources.size() > 1, "-o names one picture, but "
                 + sources.size() + " scenes were given; leave -o out to write each picture beside its scene");
-        RtdCommand.refuse(commandLine, output == null && sources.stream().anyMatch(SceneSource::stdin), "the scene '-' "
+        RtdCommand.refuse(output == null && sources.stream().anyMatch(SceneSource::stdin), "the scene '-' "
                 + "comes from standard input, which gives no name for the picture; name it with -o, such as "
                 + "-o out.png, or -o - for standard output");
         List<Job> jobs = new ArrayList<>();
         Map<Path, SceneSource> writers = new HashMap<>();
         Map<Object, SceneSource> files = new HashMap<>();
         for (SceneSource source : sources) {
-            RtdCommand.refuse(commandLine, !source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null,
+            RtdCommand.refuse(!source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null,
                     "the scene '" + source.name() + "' is given twice (or a link to it is); give it once");
             try {
                 OutputTarget target = outputTarget(source);
                 // ball.txt and an editor's ball.txt~ both give ball.png: the second would replace the first's
                 SceneSource earlier = target.kind() != OutputTarget.Kind.REPLACE ? null
                         : writers.putIfAbsent(realPlace(target.file()), source);
-                RtdCommand.refuse(commandLine, earlier != null, "the scenes '" + (earlier == null ? "" : earlier.name())
+                RtdCommand.refuse(earlier != null, "the scenes '" + (earlier == null ? "" : earlier.name())
                         + "' and '" + source.name() + "' would both write their picture to '" + target.spelt()
                         + "', the second replacing the first; render them in separate runs with -o, or rename one");
-                jobs.add(new Job(source, target, format(target, commandLine), null));
+                jobs.add(new Job(source, target, format(target), null));
             } catch (FileError e) {
                 jobs.add(new Job(source, null, ImageFormat.PNG, e));
             }
@@ -58,9 +56,9 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
     }
 
     /** The format of {@code target}'s extension; one that no writer knows is a mistake on the command line. */
-    static ImageFormat format(OutputTarget target, CommandLine commandLine) {
+    static ImageFormat format(OutputTarget target) {
         ImageFormat format = ImageFormat.forOutput(target.spelt()).orElse(null);
-        RtdCommand.refuse(commandLine, format == null, "the output '" + target.spelt() + "' ends in '."
+        RtdCommand.refuse(format == null, "the output '" + target.spelt() + "' ends in '."
                 + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; give it one of "
                 + ImageFormat.writableExtensions().stream().map(e -> "." + e).collect(Collectors.joining(", ")));
         return format;
@@ -72,7 +70,7 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
             throw new FileError("cannot read the scene file '" + source.name() + "': it is a folder, not a file");
         }
         if (OutputTarget.DASH.equals(output)) {
-            RtdCommand.refuse(commandLine, streams.outIsTerminal(), "-o - writes the picture to standard output, which "
+            RtdCommand.refuse(streams.outIsTerminal(), "-o - writes the picture to standard output, which "
                     + "is a terminal here; send it to a file or a program instead, such as: " + RtdCommand.NAME
                     + " scene.txt -o - > out.png");
             return OutputTarget.standardOutput();
@@ -82,8 +80,7 @@ record JobPlanner(Path output, StandardStreams streams, CommandLine commandLine)
                     + "give rtd the scene's text file, such as examples/input_rtd.txt");
         }
         Path spelt = output != null ? output : defaultOutput(source.path(), "");
-        return OutputTarget.of(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path(), "-o",
-                commandLine);
+        return OutputTarget.of(spelt, source.stdin() ? streams.inPath().orElse(source.path()) : source.path(), "-o");
     }
 
     /** Where {@code file} is, after the links on the way to its folder (it need not exist yet). */

@@ -6,8 +6,6 @@ import java.math.MathContext;
 import java.math.RoundingMode;
 import java.util.Locale;
 import java.util.Optional;
-import picocli.CommandLine;
-import picocli.CommandLine.ParameterException;
 
 /**
  * Whether a picture fits in memory, checked before anything is allocated; amounts of memory in words; and advice
@@ -21,13 +19,13 @@ final class Memory {
     private static final long MOST_PIXELS = Integer.MAX_VALUE - 8;
 
     /** That a {@code width × height} picture fits a Java image and the memory left; else a misuse saying what fits. */
-    static void checkImageFits(CommandLine commandLine, int width, int height, Scale scale) {
+    static void checkImageFits(int width, int height, Scale scale) {
         long pixels = (long) width * height;
         if (pixels > MOST_PIXELS) {
             double shrink = Math.sqrt(MOST_PIXELS / (double) pixels);
             String factor = BigDecimal.valueOf(scale.factor() * shrink).round(new MathContext(3, RoundingMode.DOWN))
                     .stripTrailingZeros().toPlainString();
-            throw new ParameterException(commandLine, String.format(Locale.ROOT, "a %d×%d image has %,d pixels; Java "
+            throw new RtdCommand.Misuse(String.format(Locale.ROOT, "a %d×%d image has %,d pixels; Java "
                     + "images hold at most %,d: the largest of that shape is %d×%d, or keep the view with --scale %s",
                     width, height, pixels, MOST_PIXELS, (long) (width * shrink), (long) (height * shrink), factor));
         }
@@ -39,7 +37,7 @@ final class Memory {
                     .map(xmx -> "choose a smaller --width/--height, or raise the limit: java -Xmx" + xmx
                             + " -jar rtd.jar ...")
                     .orElse("choose a smaller --width/--height: this machine has " + size(physical()) + " in all");
-            throw new ParameterException(commandLine, String.format(Locale.ROOT,
+            throw new RtdCommand.Misuse(String.format(Locale.ROOT,
                     "a %d×%d image needs %s of memory, but Java may use only %s more here (limit %s); %s",
                     width, height, size(needed), size(available), size(runtime.maxMemory()), advice));
         }

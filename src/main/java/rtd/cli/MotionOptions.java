@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import picocli.CommandLine;
 import picocli.CommandLine.Option;
 import rtd.io.ClockedScene;
 import rtd.io.SceneError;
@@ -17,9 +16,8 @@ import rtd.scene.Scene;
 
 /**
  * The options of motion, a picocli mixin of {@link RtdCommand} (Part III, "Frames on the command line"):
- * {@code --clock C} draws the scene at one clock, {@code --frames N} draws N frames from clock 0 to 1,
- * {@code --fps F} sets an animated GIF's speed and {@code --subset A-B} draws only some of the frames. Each
- * combination that cannot mean anything is refused as a mistake on the command line (exit code 2).
+ * {@code --clock}, {@code --frames}, {@code --fps} and {@code --subset}; a combination that cannot mean anything is
+ * a mistake on the command line.
  */
 public final class MotionOptions {
 
@@ -41,11 +39,8 @@ public final class MotionOptions {
     private String subset;
 
     /**
-     * Which frames of an animation a run draws and what each is called: frames 0 … N−1, frame i at
-     * {@code clock = i/(N−1)}, from 0 to 1 inclusive as POV-Ray's clock runs; {@code --subset A-B} draws frames
-     * {@code first} to {@code last} of them with the clocks and names they have in the whole animation, so that
-     * machines can share the work. Numbered pictures are {@code NAME-000.png}, …: three digits, or as many as N−1
-     * needs.
+     * Which frames of an animation a run draws, {@code first} to {@code last} of frames 0 … N−1, frame i at
+     * {@code clock = i/(N−1)} as POV-Ray's clock runs, and what each is called: {@code NAME-000.png}, … .
      */
     record FramePlan(int frames, int first, int last, double fps) {
 
@@ -57,7 +52,7 @@ public final class MotionOptions {
             return last - first + 1;
         }
 
-        /** The GIF's delay between frames, in hundredths of a second: round(100/F), at least 1. */
+        /** The GIF's delay between frames in hundredths of a second, at least 1. */
         int delayHundredths() {
             return (int) Math.max(1, Math.round(100 / fps));
         }
@@ -73,13 +68,13 @@ public final class MotionOptions {
         }
 
         /** Each numbered picture's target beside {@code target}, all checked before anything is drawn. */
-        List<OutputTarget> targets(OutputTarget target, Path scene, CommandLine commandLine) throws FileError {
+        List<OutputTarget> targets(OutputTarget target, Path scene) throws FileError {
             if (target.kind() == OutputTarget.Kind.STREAM) {
                 return Collections.nCopies(count(), target);
             }
             List<OutputTarget> targets = new ArrayList<>();
             for (int i = first; i <= last; i++) {
-                targets.add(OutputTarget.of(frameFile(target.spelt(), i), scene, "-o", commandLine));
+                targets.add(OutputTarget.of(frameFile(target.spelt(), i), scene, "-o"));
             }
             return targets;
         }
@@ -97,39 +92,37 @@ public final class MotionOptions {
         }
     }
 
-    /** The clock of a single picture: {@code --clock}, or 0. */
     double clock() {
         return clock == null ? 0 : clock;
     }
 
     /** The frames to draw, or null for one picture; a misuse for what does not go with {@code --frames}. */
-    FramePlan plan(CommandLine commandLine, List<Path> scenes, Path output, String replacing) {
+    FramePlan plan(List<Path> scenes, Path output, String replacing) {
         if (frames == null) {
-            RtdCommand.refuse(commandLine, subset != null || fps != null, (subset != null ? "--subset" : "--fps")
+            RtdCommand.refuse(subset != null || fps != null, (subset != null ? "--subset" : "--fps")
                     + " belongs to an animation; give --frames N too");
             return null;
         }
-        RtdCommand.refuse(commandLine, clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock "
+        RtdCommand.refuse(clock != null, "--frames gives each frame its own clock, from 0 to 1; --clock "
                 + "is for one picture");
-        RtdCommand.refuse(commandLine, replacing != null, replacing + " works on one picture, not on --frames; give "
+        RtdCommand.refuse(replacing != null, replacing + " works on one picture, not on --frames; give "
                 + "--clock C for the moment you want");
-        RtdCommand.oneSceneFile(commandLine, "--frames", scenes);
-        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(output), "--frames writes several pictures, which "
-                + "standard output (-o -) cannot hold; give a name such as -o frames.png (numbered frames) or "
-                + "-o movie.gif");
+        RtdCommand.oneSceneFile("--frames", scenes);
+        RtdCommand.refuse(OutputTarget.DASH.equals(output), "--frames writes several pictures, which standard output "
+                + "(-o -) cannot hold; give a name such as -o frames.png (numbered frames) or -o movie.gif");
         double speed = fps == null ? 24 : fps;
         if (subset == null) {
             return new FramePlan(frames, 0, frames - 1, speed);
         }
         Matcher matcher = Pattern.compile("\\s*(\\d{1,9})\\s*-\\s*(\\d{1,9})\\s*").matcher(subset);
         String frameRange = "from 0 to " + (frames - 1) + " (--frames " + frames + ")";
-        RtdCommand.refuse(commandLine, !matcher.matches(), "--subset '" + subset + "': give the frames as A-B, two "
+        RtdCommand.refuse(!matcher.matches(), "--subset '" + subset + "': give the frames as A-B, two "
                 + "whole numbers " + frameRange + ", such as --subset 0-" + (frames - 1) / 2);
         int first = Integer.parseInt(matcher.group(1));
         int last = Integer.parseInt(matcher.group(2));
-        RtdCommand.refuse(commandLine, first > last || last >= frames, "--subset " + first + "-" + last + ": "
+        RtdCommand.refuse(first > last || last >= frames, "--subset " + first + "-" + last + ": "
                 + (first > last ? "A must not be after B" : "the frames run " + frameRange));
-        RtdCommand.refuse(commandLine, output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif"),
+        RtdCommand.refuse(output != null && output.toString().toLowerCase(Locale.ROOT).endsWith(".gif"),
                 "--subset draws frames to be joined later, as numbered pictures; give -o NAME.png, and join the frames "
                 + "into a GIF or a video when all are drawn");
         return new FramePlan(frames, first, last, speed);

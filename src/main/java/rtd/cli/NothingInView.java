@@ -23,9 +23,8 @@ import rtd.render.Tracer;
 import rtd.scene.Scene;
 
 /**
- * The warning for a picture in which no ray hit anything, which a user would otherwise take for a bug. It names
- * the likely cause: no objects, objects behind the camera, or (orthographic camera) the region it sees in world
- * units with no object in it, or objects in it that fall between the rays.
+ * The warning for a picture in which no ray hit anything, which a user would otherwise take for a bug, naming the
+ * likely cause: no objects, objects behind the camera or out of its view, or objects that fall between the rays.
  */
 final class NothingInView {
 
@@ -48,7 +47,7 @@ final class NothingInView {
         return IntStream.of(marks.rgb()).anyMatch(pixel -> pixel != 0);
     }
 
-    /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}, drawn as {@code options} ask. */
+    /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}. */
     static String warning(String name, Scene scene, RenderOptions options) {
         return "rtd: warning: " + name + ": no ray hit anything, so the picture is only background: "
                 + cause(scene, options);
@@ -77,7 +76,7 @@ final class NothingInView {
                 + point(camera.position()) + " along " + point(forward)) + someBehind;
     }
 
-    /** Why no ray meets the planes, the only objects: each is met by every ray not parallel to it that runs towards it. */
+    /** Why no ray meets the planes, the only objects: every ray not parallel to one that runs towards it meets it. */
     private static String planesMissed(int planes, ICamera camera, Vector3f forward) {
         String them = planes == 1 ? "the plane" : "all " + planes + " planes";
         String it = planes == 1 ? "it" : "them";
@@ -139,7 +138,6 @@ final class NothingInView {
         return box.isBounded() && along(box, position, forward).getMax() < 0;
     }
 
-    /** The box's eight corners along {@code axis}, from {@code origin}. */
     private static DoubleSummaryStatistics along(BoundingBox box, Vector3f origin, Vector3f axis) {
         Vector3f a = box.min();
         Vector3f b = box.max();

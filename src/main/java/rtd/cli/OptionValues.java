@@ -16,7 +16,6 @@ final class OptionValues {
     private OptionValues() {
     }
 
-    /** {@code value}, or if it is null the mistake that {@code message} describes. */
     private static <T> T orRefuse(T value, String message) {
         if (value == null) {
             throw new TypeConversionException(message);
@@ -56,7 +55,7 @@ final class OptionValues {
         }
     }
 
-    /** {@code --samples N}, 1 to {@value #MOST}: N × N rays a pixel, so that a slip such as 1000 cannot run for hours. */
+    /** {@code --samples N}, 1 to {@value #MOST}: N × N rays a pixel, so that a slip cannot run for hours. */
     static final class Samples implements ITypeConverter<Integer> {
         static final int MOST = 16;
 
@@ -103,7 +102,7 @@ final class OptionValues {
         }
     }
 
-    /** A file rtd writes ({@code -o}, {@code --export-pov}): never a name ending in a slash, which Java would drop. */
+    /** A file rtd writes: never a name ending in a slash, which Java would drop. */
     static final class OutputFile implements ITypeConverter<Path> {
         @Override
         public Path convert(String value) {

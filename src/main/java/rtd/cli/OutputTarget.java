@@ -8,15 +8,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.function.DoubleConsumer;
-import picocli.CommandLine;
 import rtd.image.Picture;
 import rtd.io.ImageFormat;
 import rtd.io.SceneIO;
 
 /**
- * Where a file rtd writes goes, decided before rendering: a regular file that a complete new one replaces, or a
- * FIFO or character device that it is written into. Decided on the real file, links followed (the output itself
- * or a folder on the way), so that neither the scene file nor a device nor the link itself is ever replaced.
+ * Where a file rtd writes goes, decided before rendering on the real file, links followed: a regular file that a
+ * complete new one replaces, or a FIFO or character device written into; never the scene, a device or a link itself.
  *
  * @param spelt the output as the user gave it, for messages
  * @param file  where to write: for {@link Kind#REPLACE} the real file, whose folder holds the temporary file
@@ -26,7 +24,6 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
     /** A regular file, new or old, replaced by a complete new one; a FIFO or character device; {@code -o -}. */
     enum Kind { REPLACE, STREAM, STANDARD_OUTPUT }
 
-    /** How {@code -o} names standard output. */
     static final Path DASH = Path.of("-");
 
     static OutputTarget standardOutput() {
@@ -66,8 +63,8 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
     }
 
     /** Where {@code spelt}, named by {@code option}, goes; else a misuse (exit 2) or a file that may not be written. */
-    static OutputTarget of(Path spelt, Path scene, String option, CommandLine commandLine) throws FileError {
-        OutputTarget target = find(spelt, scene, option, commandLine);
+    static OutputTarget of(Path spelt, Path scene, String option) throws FileError {
+        OutputTarget target = find(spelt, scene, option);
         Path folder = target.file.toAbsolutePath().getParent();
         String wrong = target.kind != Kind.REPLACE ? null : !Files.isDirectory(folder) ? (Files.exists(folder)
                 ? "is a file, not a folder" : "does not exist") : !Files.isWritable(folder) ? "is not writable" : null;
@@ -76,7 +73,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         }
         Path real = target.file.getFileName();
         // a link to a file of another kind, such as a mesh or notes: a slip, and replacing it would destroy it
-        RtdCommand.refuse(commandLine, target.kind == Kind.REPLACE && "-o".equals(option) && real != null
+        RtdCommand.refuse(target.kind == Kind.REPLACE && "-o".equals(option) && real != null
                 && !real.equals(spelt.getFileName()) && !(ImageFormat.extensionOf(target.file).isPresent()
                         && ImageFormat.forOutput(target.file).equals(ImageFormat.forOutput(spelt))), "'" + spelt
                 + "' leads to '" + target.file + "', whose name is not that of a ."
@@ -85,8 +82,8 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         return target;
     }
 
-    private static OutputTarget find(Path output, Path scene, String option, CommandLine commandLine) throws FileError {
-        RtdCommand.refuse(commandLine, Files.isDirectory(output), "the output '" + output + "' is a folder; give a "
+    private static OutputTarget find(Path output, Path scene, String option) throws FileError {
+        RtdCommand.refuse(Files.isDirectory(output), "the output '" + output + "' is a folder; give a "
                 + "file name such as " + output.resolve("out.png"));
         if (!Files.exists(output)) {
             if (Files.isSymbolicLink(output)) {
@@ -95,7 +92,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             }
             return new OutputTarget(output, output, Kind.REPLACE);
         }
-        RtdCommand.refuse(commandLine, isSameFile(output, scene), "the output '" + output + "' is the scene file "
+        RtdCommand.refuse(isSameFile(output, scene), "the output '" + output + "' is the scene file "
                 + "itself; choose another with " + option);
         String notAFile = switch (fileType(output)) {
             case 0100000 -> null;
@@ -111,7 +108,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
                 throw new FileError("cannot write '" + output + "'", e);
             }
         }
-        RtdCommand.refuse(commandLine, !notAFile.isEmpty(), "the output '" + output + "' is " + notAFile + "; rtd "
+        RtdCommand.refuse(!notAFile.isEmpty(), "the output '" + output + "' is " + notAFile + "; rtd "
                 + "writes the picture to a file, a FIFO or a character device such as /dev/null");
         return new OutputTarget(output, output, Kind.STREAM);
     }

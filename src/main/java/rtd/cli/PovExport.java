@@ -12,20 +12,17 @@ import rtd.pov.PovScene;
 import rtd.scene.Scene;
 
 /**
- * {@code --export-pov}: the scene's POV-Ray twin ({@link PovScene}), written all or nothing, and the lines that say
- * how to render it. With {@code --frames N}, one file for the whole animation (Part III, "Frames on the command
- * line"): each number that uses the clock is written with POV-Ray's {@code clock} ({@link PovClock}); a scene with
- * a number that cannot be written so (a material, a pattern, a transformation that uses the clock) is written frame
- * by frame instead, each frame as a still, in a {@code #case} of POV-Ray's {@code frame_number}. Either way each of
- * POV-Ray's frames is the twin of rtd's (the camera's half-pixel shift included), and the file's first lines give
- * the {@code povray} options that render the same N frames, {@code +KFI0 +KFF(N−1)} with the clock from 0 to 1.
+ * {@code --export-pov}: the scene's POV-Ray twin ({@link PovScene}), written all or nothing, and how to render it.
+ * With {@code --frames N} (Part III, "Frames on the command line") one file holds the animation: each number that
+ * uses the clock written with POV-Ray's {@code clock} ({@link PovClock}), or where one cannot be, each frame as a
+ * still in a {@code #case} of {@code frame_number}; each of POV-Ray's frames is the twin of rtd's.
  */
 final class PovExport {
 
     private PovExport() {
     }
 
-    /** Writes {@code scene} at {@code width × height} to {@code target}; answers the lines saying how to render it. */
+    /** Writes {@code scene} to {@code target}; answers the lines saying how to render it. */
     static String still(Scene scene, OutputTarget target, int width, int height) throws SceneException, FileError {
         String name = target.spelt().getFileName().toString();
         write(target, () -> PovScene.of(scene, width, height, name));
@@ -33,7 +30,7 @@ final class PovExport {
                 + command(name, width, height);
     }
 
-    /** Writes the animation's POV-Ray twin to {@code target}; answers the lines that say how to render it. */
+    /** Writes the animation's twin to {@code target}; answers the lines saying how to render it. */
     static String frames(SceneFile file, FramePlan plan, RenderOptions options, OutputTarget target)
             throws SceneException, FileError {
         String command = command(target.spelt().getFileName().toString(), options.width(), options.height())
@@ -52,7 +49,7 @@ final class PovExport {
                 + command;
     }
 
-    /** The text {@code pov} makes, written to {@code target}; a scene POV-Ray cannot show is a file error. */
+    /** Writes what {@code pov} makes; a scene POV-Ray cannot show is a file error. */
     private static void write(OutputTarget target, PovText pov) throws SceneException, FileError {
         String text;
         try {
@@ -75,12 +72,7 @@ final class PovExport {
         return "  cd " + PovScene.shellWord(target.spelt().toAbsolutePath().getParent().toString()) + " && ";
     }
 
-    /**
-     * The animation: one scene whose numbers that use the clock are written with POV-Ray's {@code clock}, or, where
-     * {@link PovClock#whyNot} finds a number it cannot write so, each frame's scene in the {@code #case} of its
-     * {@code frame_number}. Either way the scene is read at every frame's clock first, so that a value that breaks a
-     * rule at some frame stops the export as it stops the frames.
-     */
+    /** The animation, the scene read at every frame's clock first: a rule broken at some frame stops the export. */
     private static String animation(SceneFile file, FramePlan plan, RenderOptions options) throws SceneException {
         List<ICamera> cameras = new ArrayList<>();
         for (int i = 0; i < plan.frames(); i++) {

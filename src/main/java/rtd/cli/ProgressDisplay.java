@@ -13,10 +13,9 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
- * A one-line progress display on standard error, redrawn in place four times a second: what the run is doing
- * ("reading scene.txt", "rendering", "writing out.png"), how much is done and how long it has left. It shows only
- * on a terminal, once a run has taken a second; it ends short of the last column (a full line would wrap, and each
- * {@code \r} redraw add a line); and it is cleared when the run ends, also by Ctrl-C.
+ * A progress line on standard error, redrawn four times a second: what the run is doing, how much is done and how
+ * long it has left. It shows only on a terminal, after a second; it ends short of the last column (a full line would
+ * wrap, and each {@code \r} redraw add a line); it is cleared when the run ends, also by Ctrl-C.
  */
 final class ProgressDisplay implements AutoCloseable {
 
@@ -25,30 +24,28 @@ final class ProgressDisplay implements AutoCloseable {
     private final PrintWriter err;
     private final IntSupplier columnsOfTerminal;
     private final Thread thread = new Thread(this::run, "rtd-progress");
-    /** The shutdown hook that Ctrl-C runs. */
     final Thread clearOnExit = new Thread(this::clear, "rtd: clear the progress line");
     private volatile Phase phase = Phase.of("starting");
     private volatile boolean done;
     private boolean shown;
     private int columns;
 
-    /** A display that draws only when asked; {@link #start} draws on a thread of its own. */
     ProgressDisplay(PrintWriter err, IntSupplier columnsOfTerminal) {
         this.err = err;
         this.columnsOfTerminal = columnsOfTerminal;
         thread.setDaemon(true);
     }
 
-    /** Starts a display on {@code err}, a terminal; if not {@code enabled}, one that never shows anything. */
+    /** A display on {@code err}, a terminal; if not {@code enabled}, one that never shows anything. */
     static ProgressDisplay start(boolean enabled, PrintWriter err) {
         ProgressDisplay display = new ProgressDisplay(err, StandardStreams::columns);
-        if (enabled) {
-            try {
+        try {
+            if (enabled) {
                 Runtime.getRuntime().addShutdownHook(display.clearOnExit);
-            } catch (IllegalStateException e) {
-                return display; // already stopping (Ctrl-C during --watch): no line to clear then
+                display.thread.start();
             }
-            display.thread.start();
+        } catch (IllegalStateException e) {
+            // already stopping (Ctrl-C during --watch): no line to clear then
         }
         return display;
     }
@@ -67,7 +64,6 @@ final class ProgressDisplay implements AutoCloseable {
         }
     }
 
-    /** Draws the line for the phase now running. */
     void draw() {
         if (columns == 0) {
             columns = columnsOfTerminal.getAsInt(); // starts a process: once, and not under the lock
@@ -112,14 +108,9 @@ final class ProgressDisplay implements AutoCloseable {
     }
 
     /**
-     * What the run is doing: its name, the fraction done (NaN if unknown) and the rays traced (negative: none); and
-     * its line: percent done, for a render the rays per second as {@code --stats} counts them, and the time left.
-     *
-     * <p>The time left is the work left over the rate of the last third of the time so far (at least the last
-     * second): rays get cheaper as the JIT compiles, so the rate since the start would promise too long, while a
-     * longer stretch does not swing with the cost of the last few rows. It waits for 1.5 s or 5 % of the work.
-     *
-     * @param recent (seconds, fraction) of the updates within that window, and the last one before it
+     * What the run is doing: its name, the fraction done (NaN if unknown), the rays traced (negative: none), and the
+     * recent (seconds, fraction) pairs: the time left uses the rate of the last third of the time so far, as rays get
+     * cheaper while the JIT compiles.
      */
     record Phase(String name, DoubleSupplier fraction, LongSupplier rays, long startNanos, List<double[]> recent) {
 
@@ -127,7 +118,6 @@ final class ProgressDisplay implements AutoCloseable {
             this(name, fraction, rays, System.nanoTime(), new ArrayList<>(List.of(new double[] {0, 0})));
         }
 
-        /** A phase whose progress is unknown, such as reading the scene. */
         static Phase of(String name) {
             return counted(name, () -> Double.NaN);
         }
@@ -136,7 +126,6 @@ final class ProgressDisplay implements AutoCloseable {
             return new Phase(name, fraction, () -> -1);
         }
 
-        /** The line after {@code seconds} of this phase, at most {@code columns − 1} characters long. */
         String line(double seconds, int columns) {
             double done = fraction.getAsDouble();
             long traced = rays.getAsLong();
@@ -161,11 +150,7 @@ final class ProgressDisplay implements AutoCloseable {
             return OptionalDouble.of((1 - Math.min(1, fraction)) / rate);
         }
 
-        /**
-         * The line of percent done, {@code rate} (or null) and time {@code left} (or, for a phase of unknown length,
-         * the {@code seconds} it has run), in {@code columns − 1}: what does not fit goes first, the rate, then
-         * "about", then "left" and the start of the name.
-         */
+        /** The line in {@code columns − 1}: what does not fit goes first: the rate, "about", "left", the name. */
         static String fit(String name, double fraction, String rate, OptionalDouble left, double seconds, int columns) {
             int room = Math.max(1, columns - 1);
             boolean unknown = Double.isNaN(fraction);

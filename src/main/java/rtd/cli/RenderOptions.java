@@ -5,8 +5,8 @@ import java.util.List;
 
 /**
  * What the command line asks of each run: {@code width} and {@code height} after {@code --scale}; {@code given}
- * whether {@code --width} or {@code --height} was given; {@code progress} whether to show the progress line (on a
- * terminal, without {@code --no-progress}); {@code clock} that of a single picture (Part III), 0 by default.
+ * whether {@code --width} or {@code --height} was; {@code progress} whether to show the progress line; {@code clock}
+ * that of a single picture (Part III).
  */
 record RenderOptions(List<Path> scenes, Path output, int width, int height, Scale scale, boolean given, int threads,
         Accelerator.Choice accel, boolean paper, int samples, boolean stats, boolean progress, double clock) {

@@ -22,10 +22,9 @@ import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 
 /**
- * The command line: {@code java -jar rtd.jar SCENE... [-o OUT] [--width N] [--height N] [--scale F]}. It checks the
- * whole command line first, where each picture goes included ({@link JobPlanner}): a mistake there (exit code 2)
- * stops everything before any work. Then it renders each scene ({@link SceneRun}); one that fails (exit code 1)
- * does not keep the others from being rendered.
+ * The command line: {@code java -jar rtd.jar SCENE... [-o OUT] [options]}. It checks the whole command line first,
+ * where each picture goes included: a mistake there (exit code 2) stops everything before any work. Then it renders
+ * each scene ({@link SceneRun}); one that fails (exit code 1) does not keep the others from being rendered.
  */
 @Command(name = RtdCommand.NAME, mixinStandardHelpOptions = true, versionProvider = RtdCommand.Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
@@ -121,7 +120,6 @@ public final class RtdCommand implements Callable<Integer> {
         this.streams = streams;
     }
 
-    /** Runs the command and exits with its code: 0 done, 1 scene or file error, 2 misuse. */
     public static void main(String[] args) {
         WarmUp.start(ImageFormat.PNG); // the usual format, warmed while picocli starts and the scene is read
         System.exit(commandLine().execute(args));
@@ -135,10 +133,7 @@ public final class RtdCommand implements Callable<Integer> {
         return commandLine;
     }
 
-    /**
-     * The command line with {@code streams} for {@code -} and {@code -o -}. A misuse gets one line that says what
-     * is wrong, picocli's suggestion for a misspelt option and where to find help (exit 2); a bug, no stack trace.
-     */
+    /** The command line with {@code streams} for {@code -} and {@code -o -}; a misuse gets one line and a hint. */
     static CommandLine commandLine(StandardStreams streams) {
         CommandLine commandLine = new CommandLine(new RtdCommand(streams));
         commandLine.setParameterExceptionHandler((ex, args) -> {
@@ -162,7 +157,7 @@ public final class RtdCommand implements Callable<Integer> {
         return commandLine;
     }
 
-    /** {@code --version}: the version Maven wrote into the jar's manifest. */
+    /** {@code --version}: the version in the jar's manifest. */
     static final class Version implements IVersionProvider {
         @Override
         public String[] getVersion() {
@@ -177,8 +172,8 @@ public final class RtdCommand implements Callable<Integer> {
         CommandLine commandLine = spec.commandLine();
         PrintWriter err = commandLine.getErr();
         try {
-            FramePlan frames = motion.plan(commandLine, scenePaths, output,
-                    window.requested() ? "--window" : teaching.replacingOption());
+            FramePlan frames = motion.plan(scenePaths, output, window.requested() ? "--window"
+                    : teaching.replacingOption());
             if (window.requested()) {
                 return window.run(options(true), commandLine, err);
             }
@@ -186,10 +181,10 @@ public final class RtdCommand implements Callable<Integer> {
             if (taught != null) {
                 return taught;
             }
-            List<JobPlanner.Job> jobs = new JobPlanner(output, streams, commandLine).jobs(scenePaths);
+            List<JobPlanner.Job> jobs = new JobPlanner(output, streams).jobs(scenePaths);
             RenderOptions options = options(true);
-            Memory.checkImageFits(commandLine, options.width(), options.height(), scale); // before any write
-            OutputTarget export = teaching.planExport(options, commandLine); // beside the picture: one scene
+            Memory.checkImageFits(options.width(), options.height(), scale); // before any write
+            OutputTarget export = teaching.planExport(options); // beside the picture: one scene
             if (paper && (given("--accel") || given("--threads"))) { // once every misuse has had its say
                 err.println("rtd: note: --paper renders with the paper's loop on one thread; --accel and --threads are "
                         + "not used");
@@ -202,12 +197,14 @@ public final class RtdCommand implements Callable<Integer> {
             return jobs.stream().mapToInt(job -> run(job, options, writerReady, export, frames, err)).max().orElse(0);
         } catch (SceneException | FileError e) {
             return failed(err, e);
+        } catch (Misuse e) {
+            throw new ParameterException(commandLine, e.getMessage());
         } finally {
             err.flush();
         }
     }
 
-    /** One scene's run, with {@code export} (or null) written once the scene is read; its exit code, 0 or 1. */
+    /** One scene's run, with {@code export} (or null) written once the scene is read; its exit code. */
     private int run(JobPlanner.Job job, RenderOptions options, CompletableFuture<Void> writerReady, OutputTarget export,
             FramePlan frames, PrintWriter err) {
         try {
@@ -218,7 +215,7 @@ public final class RtdCommand implements Callable<Integer> {
                 err.println("rtd: reading the scene from standard input; end it with Ctrl-D");
                 err.flush();
             }
-            new SceneRun(options, streams, err, frames).run(job, writerReady, export, spec.commandLine());
+            new SceneRun(options, streams, err, frames).run(job, writerReady, export);
             return 0;
         } catch (SceneException | FileError e) {
             return failed(err, e);
@@ -230,7 +227,6 @@ public final class RtdCommand implements Callable<Integer> {
         }
     }
 
-    /** Prints the report of {@code e}, and with {@code --debug} its stack trace; exit code 1. */
     private int failed(PrintWriter err, Exception e) {
         err.print(e instanceof SceneException scene ? scene.report() : "rtd: " + e.getMessage() + "\n");
         if (debug) {
@@ -239,13 +235,13 @@ public final class RtdCommand implements Callable<Integer> {
         return 1;
     }
 
-    /** The options, sizes after {@code --scale}: if {@code checked}, a misuse where no Java image has them. */
+    /** The options, sizes after {@code --scale}; if {@code checked}, a misuse where no Java image has them. */
     private RenderOptions options(boolean checked) {
         long scaledWidth = scale.times(width);
         long scaledHeight = scale.times(height);
         boolean empty = scaledWidth < 1 || scaledHeight < 1;
         boolean tooBig = scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE;
-        refuse(spec.commandLine(), checked && (empty || tooBig), String.format(Locale.ROOT,
+        refuse(checked && (empty || tooBig), String.format(Locale.ROOT,
                 "--scale %s makes the %d×%d image %d×%d pixels; ", scale, width, height, scaledWidth, scaledHeight)
                 + (empty ? "a picture needs at least one pixel each way"
                         : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
@@ -255,16 +251,25 @@ public final class RtdCommand implements Callable<Integer> {
                 !noProgress && StandardStreams.stderrIsTerminal(), motion.clock());
     }
 
-    /** A misuse of the command line (exit code 2), saying {@code message}, if {@code wrong}. */
-    static void refuse(CommandLine commandLine, boolean wrong, String message) {
-        if (wrong) {
-            throw new ParameterException(commandLine, message);
+    /** A mistake on the command line found while planning the run, reported as picocli reports one (exit code 2). */
+    static final class Misuse extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        Misuse(String message) {
+            super(message);
         }
     }
 
-    /** That {@code option}, which works on one picture, is given one scene file: a misuse if not. */
-    static void oneSceneFile(CommandLine commandLine, String option, List<Path> scenes) {
-        refuse(commandLine, scenes.size() > 1, option + " works on one scene file, but " + scenes.size()
+    /** A misuse of the command line (exit code 2) saying {@code message}, if {@code wrong}. */
+    static void refuse(boolean wrong, String message) {
+        if (wrong) {
+            throw new Misuse(message);
+        }
+    }
+
+    /** A misuse unless {@code option}, which works on one picture, is given one scene file. */
+    static void oneSceneFile(String option, List<Path> scenes) {
+        refuse(scenes.size() > 1, option + " works on one scene file, but " + scenes.size()
                 + " were given; run rtd once for each");
     }
 

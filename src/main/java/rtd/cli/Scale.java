@@ -6,11 +6,8 @@ import rtd.scene.Scene;
 
 /**
  * {@code --scale F}: the same view at another size. It multiplies the image's size and the orthographic camera's
- * zoom alike, so that the picture shows the same part of the world ({@code --scale 0.25} makes the paper's
- * 1920×1080 at zoom 50 a 480×270 at zoom 12.5). The perspective camera's field of view spans any width. Without
- * it the paper's rule holds: the zoom is pixels per world unit, so a smaller image shows less.
- *
- * @param factor greater than 0; 1 leaves everything as it is
+ * zoom (pixels per world unit) alike, so that the picture shows the same part of the world; the perspective
+ * camera's field of view spans any width. {@code factor} is greater than 0.
  */
 record Scale(double factor) {
 

@@ -17,7 +17,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
-import picocli.CommandLine;
 import rtd.cli.Accelerator.StructureCache;
 import rtd.cli.MotionOptions.FramePlan;
 import rtd.image.Picture;
@@ -39,14 +38,11 @@ import rtd.shade.FlatShader;
 import rtd.shade.WhittedShader;
 
 /**
- * One scene from file to picture: read, write the {@code --export-pov} file if asked, build what {@code --accel}
- * chose, warn of a scene that looks wrong, render, warn if nothing is in view, write; each phase timed for
- * {@code --stats} and shown on the progress line. With {@code --frames N} (Part III, "Frames on the command line")
- * the file is read once and parsed at each frame's clock, and what one frame built that the next may use is kept;
- * a scene that never uses the clock is drawn once. A small file is first parsed at every clock, so that a value
- * breaking a rule at some frame stops the run before any drawing. While a frame is written the next is drawn:
- * numbered pictures on two threads, each a frame behind, or a GIF's frames in order on one. Each picture replaces
- * its file only once it is complete; a GIF as a whole.
+ * One scene from file to picture: read, export to POV-Ray if asked, build what {@code --accel} chose, warn, render,
+ * write; each phase timed for {@code --stats} and shown on the progress line. With {@code --frames N} (Part III,
+ * "Frames on the command line") the file is read once and parsed at each frame's clock, a small file at every clock
+ * first, so that a rule broken at some frame stops the run before any drawing; what one frame built that the next
+ * may use is kept. While a frame is written the next is drawn. Each file is replaced only once complete.
  */
 final class SceneRun {
 
@@ -61,7 +57,6 @@ final class SceneRun {
     private final ArrayDeque<Future<?>> pending = new ArrayDeque<>();
     private AnimatedGif gif;
 
-    /** A run of one picture, or for a {@code plan} not null of its frames. */
     SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, FramePlan plan) {
         this.options = options;
         this.streams = streams;
@@ -70,10 +65,10 @@ final class SceneRun {
     }
 
     /** Renders the job's scene once {@code writerReady}; the POV-Ray twin to {@code export}. */
-    void run(JobPlanner.Job job, CompletableFuture<Void> writerReady, OutputTarget export, CommandLine commandLine)
+    void run(JobPlanner.Job job, CompletableFuture<Void> writerReady, OutputTarget export)
             throws SceneException, FileError {
         if (plan != null) {
-            frames(job, writerReady, export, commandLine);
+            frames(job, writerReady, export);
             return;
         }
         SceneSource source = job.source();
@@ -83,10 +78,7 @@ final class SceneRun {
             StatsReport stats = new StatsReport();
             Scene scene = read(source, streams, options, export, display, stats);
 
-            Accelerator.Kind kind = Accelerator.choose(scene, options.engine());
-            display.show(ProgressDisplay.Phase.of(kind.building));
-            Accelerator accelerator = Accelerator.build(kind, scene, options.width(), options.height(),
-                    options.samples(), options.threads(), kept);
+            Accelerator accelerator = build(scene, display);
             stats.endPhase("build");
 
             warn(scene, source, display);
@@ -108,7 +100,15 @@ final class SceneRun {
         err.print(report); // once the progress line is gone
     }
 
-    /** Warns of what in {@code scene} looks wrong ({@link SceneWarnings}); with {@code --paper}, not of lights. */
+    /** What {@code --accel} chose for {@code scene}, built with what the last frame built where it serves. */
+    private Accelerator build(Scene scene, ProgressDisplay display) {
+        Accelerator.Kind kind = Accelerator.choose(scene, options.engine());
+        display.show(ProgressDisplay.Phase.of(kind.building));
+        return Accelerator.build(kind, scene, options.width(), options.height(), options.samples(), options.threads(),
+                kept);
+    }
+
+    /** Warns of what in {@code scene} looks wrong; with {@code --paper}, not of lights. */
     private void warn(Scene scene, SceneSource source, ProgressDisplay display) {
         SceneWarnings.of(scene, options.width(), options.height(), !options.paper())
                 .forEach(warning -> display.message("rtd: warning: " + source.name() + ": " + warning));
@@ -130,11 +130,7 @@ final class SceneRun {
         return scene;
     }
 
-    /**
-     * On all cores with the tracers {@code --accel} chose, in flat colours or shaded ({@link WhittedShader}) if
-     * the scene has lights; for {@code --paper}, the paper's own {@link Scene#render}, one ray a pixel on this
-     * thread, in flat colours. The progress line counts the rays as the tracers do, which {@code --stats} sums.
-     */
+    /** With {@code accelerator} on all cores, shaded if lit; {@code --paper}: {@link Scene#render} on this thread. */
     private RenderResult render(Scene scene, Accelerator accelerator, ProgressDisplay display) {
         int width = options.width();
         int height = options.height();
@@ -176,14 +172,14 @@ final class SceneRun {
     }
 
     /** Draws the plan's frames of the job's scene (numbered pictures, one GIF); the POV-Ray twin to {@code export}. */
-    private void frames(JobPlanner.Job job, CompletableFuture<Void> writerReady, OutputTarget export,
-            CommandLine commandLine) throws SceneException, FileError {
+    private void frames(JobPlanner.Job job, CompletableFuture<Void> writerReady, OutputTarget export)
+            throws SceneException, FileError {
         boolean isGif = job.format().extension().equals("gif");
         if (options.stats()) {
             err.println("rtd: note: --stats times the phases of one picture; with --frames it is not used");
         }
         List<OutputTarget> targets = isGif ? List.of(job.target()) : plan.targets(job.target(), job.source().stdin()
-                ? streams.inPath().orElse(job.source().path()) : job.source().path(), commandLine);
+                ? streams.inPath().orElse(job.source().path()) : job.source().path());
         SceneFile file = job.source().readFile(streams);
         ExecutorService writers = Executors.newFixedThreadPool(isGif ? 1 : 2, runnable -> {
             Thread thread = new Thread(runnable, "rtd-frame-writer");
@@ -214,9 +210,8 @@ final class SceneRun {
                 display.show(ProgressDisplay.Phase.counted(name, () -> done / (double) plan.count()));
                 if (picture == null || file.usesClock()) { // quietly, with what the last frame built if it serves
                     Scene scene = i == plan.first() ? first : plan.frame(file, options.scale(), i, null);
-                    picture = render(scene, Accelerator.build(Accelerator.choose(scene, options.engine()), scene,
-                            options.width(), options.height(), options.samples(), options.threads(), kept),
-                            ProgressDisplay.start(false, err)).image();
+                    ProgressDisplay quiet = ProgressDisplay.start(false, err);
+                    picture = render(scene, build(scene, quiet), quiet).image();
                 }
                 Picture drawn = picture;
                 OutputTarget target = targets.get(isGif ? 0 : done);

@@ -9,11 +9,7 @@ import rtd.io.SceneFile;
 import rtd.io.SceneIO;
 import rtd.scene.Scene;
 
-/**
- * Where a scene comes from: a file, or standard input for {@code -}.
- *
- * @param path the file as the user spelt it, or {@code -}
- */
+/** Where a scene comes from: a file as the user spelt it, or standard input for {@code -}. */
 record SceneSource(Path path, boolean stdin) {
 
     static SceneSource of(Path path) {

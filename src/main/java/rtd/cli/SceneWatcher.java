@@ -15,12 +15,9 @@ import java.util.zip.CRC32;
 import picocli.CommandLine;
 
 /**
- * {@code --watch}: renders, then again whenever the scene file or a mesh it names changes, until Ctrl-C. Each render
- * is a whole run of rtd without {@code --watch}, so a broken edit prints its errors and leaves the last good picture.
- *
- * <p>Every {@value #POLL_MILLIS} ms it asks the files for their size, time and (up to 16 MiB) a checksum: a second
- * save within the file system's clock tick is seen, a save without a change renders nothing. A change is rendered
- * once the files have looked the same for {@value #SETTLE_MILLIS} ms at least, not caught halfway.
+ * {@code --watch}: renders, then again whenever the scene file or a mesh it names changes, until Ctrl-C; each render a
+ * whole run of rtd, so a broken edit prints its errors and leaves the last good picture. Files are compared by size,
+ * time and checksum (a save within one clock tick is seen), and a change is rendered once they have settled.
  */
 final class SceneWatcher {
 
@@ -70,7 +67,7 @@ final class SceneWatcher {
         stopped = true;
     }
 
-    /** Renders, then renders again at each change, until stopped or interrupted; returns the last render's exit code. */
+    /** Renders, then again at each change, until stopped or interrupted; the last render's exit code. */
     int run() {
         Map<Path, String> seen = fingerprints();
         int code = renderOnce();
@@ -121,7 +118,7 @@ final class SceneWatcher {
         return code;
     }
 
-    /** The scene file and each mesh file of its {@code mesh:(path)…} statements, with what each looks like now. */
+    /** The scene file and each mesh file it names, with what each looks like now. */
     private Map<Path, String> fingerprints() {
         Map<Path, String> prints = new LinkedHashMap<>();
         prints.put(scene, fingerprint(scene));

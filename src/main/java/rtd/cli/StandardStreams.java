@@ -20,20 +20,14 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 
 /**
- * Standard input and output as bytes, for the scene {@code -} and {@code -o -}, and whether each standard stream
- * is a terminal: a person types the scene there, a picture never goes there, a progress line only there, and fits
- * its width. Tests give their own. rtd's text is written as a student's notes would ({@code 1920 × 1080},
- * {@code t ≥ 0}); a terminal without such signs (the C locale of many containers, an old Windows code page) gets
- * them in plain ASCII ({@link #PLAIN}), and {@code ?} for any other sign it lacks.
- *
- * @param inPath a name that reads standard input as a file ({@code /dev/stdin}) where the system has one: read
- *               through it, a scene is checked as it arrives, so that an endless stream of non-text ends at once
- * @param out    standard output, unbuffered
+ * Standard input and output as bytes, for the scene {@code -} and {@code -o -}, and whether each is a terminal. A
+ * terminal whose encoding lacks the signs of rtd's text ({@code 1920 × 1080}) gets them in plain ASCII, else {@code ?}.
+ * {@code inPath} is standard input as a file ({@code /dev/stdin}) where there is one: a scene read through it is
+ * checked as it arrives, so that an endless stream of non-text ends at once.
  */
 record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTerminal, OutputStream out,
         boolean outIsTerminal) {
 
-    /** How each sign of rtd's text is written without it. */
     private static final Map<Character, String> PLAIN = Map.ofEntries(
             Map.entry('×', "x"), Map.entry('−', "-"), Map.entry('·', "*"), Map.entry('…', "..."),
             Map.entry('≥', ">="), Map.entry('≤', "<="), Map.entry('√', "sqrt"), Map.entry('→', "->"),
@@ -64,10 +58,7 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
         }
     }
 
-    /**
-     * The terminal's width: {@code $COLUMNS} if the shell exported it, else what {@code stty size} says of
-     * {@code /dev/tty}, else 80. It starts a process: call it once, off the main thread.
-     */
+    /** The terminal's width: {@code $COLUMNS}, else {@code stty size}, else 80. It starts a process: call it once. */
     static int columns() {
         String exported = System.getenv("COLUMNS");
         if (exported != null && exported.matches("[1-9][0-9]{0,4}")) {
@@ -121,11 +112,7 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
         return new PrintWriter(bytes, true);
     }
 
-    /**
-     * The encoding {@code System.out} (or {@code err}) writes in: {@code stdout.encoding} (Java 19 on), else
-     * {@code sun.stdout.encoding} (a Windows console), else {@code native.encoding}, else the default; a name the
-     * JDK does not know is passed over, as the JDK itself does.
-     */
+    /** The encoding {@code System.out} (or {@code err}) writes in; a name the JDK does not know is passed over. */
     static Charset encodingOf(String stream) {
         for (String property : new String[] {stream + ".encoding", "sun." + stream + ".encoding", "native.encoding"}) {
             try {

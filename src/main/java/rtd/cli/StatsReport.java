@@ -10,7 +10,7 @@ import java.util.stream.Stream;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
 
-/** {@code --stats}: the wall time of each phase of a run, one after the other, and the report of them and of the work per ray. */
+/** {@code --stats}: the wall time of each phase of a run, and the report of them and of the work per ray. */
 final class StatsReport {
 
     private static final String LINE = "%-7s %8.3f s  %s%n";
@@ -25,7 +25,6 @@ final class StatsReport {
         phaseStart = now;
     }
 
-    /** The report of the phases so far, for {@code scene} rendered with {@code accelerator}. */
     String format(Scene scene, Accelerator accelerator, WorkCount work, int threads, Path output) {
         double render = seconds.getOrDefault("render", 0.0);
         Formatter text = new Formatter(Locale.ROOT);

@@ -21,8 +21,8 @@ import rtd.view.ViewShader;
 
 /**
  * The teaching options, a picocli mixin of {@link RtdCommand}: {@code --explain X,Y} prints what rtd does for one
- * pixel in the paper's terms, {@code --view KIND} draws what the rays did, {@code --export-pov FILE.pov} writes
- * the scene for POV-Ray, and {@code --watch} renders again whenever the scene changes.
+ * pixel in the paper's terms, {@code --view KIND} draws what the rays did, {@code --export-pov} writes the scene for
+ * POV-Ray, {@code --watch} renders again whenever the scene changes.
  */
 public final class TeachingOptions {
 
@@ -54,45 +54,43 @@ public final class TeachingOptions {
             if (explain != null && explain.matches("\\s*\\d{1,9}\\s*")) { // --explain 300 400 reads 400 as a scene
                 Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}")
                         && !Files.exists(p)).findFirst().orElse(null);
-                RtdCommand.refuse(commandLine, number != null, "--explain takes the pixel as X,Y with a comma, and '"
-                        + number + "' was read as a scene file; did you mean --explain " + explain.strip() + ","
-                        + number + "?");
+                RtdCommand.refuse(number != null, "--explain takes the pixel as X,Y with a comma, and '" + number + "' "
+                        + "was read as a scene file; did you mean --explain " + explain.strip() + "," + number + "?");
             }
             String option = replacing != null ? replacing : "--export-pov";
-            RtdCommand.oneSceneFile(commandLine, option, options.scenes());
-            RtdCommand.refuse(commandLine, options.scene().toString().equals("-"), option + " needs a scene file; it "
+            RtdCommand.oneSceneFile(option, options.scenes());
+            RtdCommand.refuse(options.scene().toString().equals("-"), option + " needs a scene file; it "
                     + "cannot work on standard input ('-')");
         }
         if (watch) {
-            RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--watch writes the picture "
-                    + "again at each save, which cannot go to standard output ('-o -'); give a file, such as "
-                    + "-o out.png");
+            RtdCommand.refuse(OutputTarget.DASH.equals(options.output()), "--watch writes the picture again at each "
+                    + "save, which cannot go to standard output ('-o -'); give a file, such as -o out.png");
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
-        RtdCommand.refuse(commandLine, explain != null && view != null, "--explain and --view each take the place of "
+        RtdCommand.refuse(explain != null && view != null, "--explain and --view each take the place of "
                 + "the picture; give one of them");
         if (explain == null && view == null) {
             return null;
         }
-        int[] pixel = explain == null ? null : pixel(options, commandLine);
+        int[] pixel = explain == null ? null : pixel(options);
         if (view != null) {
-            Memory.checkImageFits(commandLine, options.width(), options.height(), options.scale());
+            Memory.checkImageFits(options.width(), options.height(), options.scale());
         }
         // every file is planned before the scene is read and anything is written, every misuse before a file's problem
         OutputTarget povTarget;
         try {
-            povTarget = planExport(options, commandLine);
+            povTarget = planExport(options);
         } catch (FileError e) {
             try {
                 if (view != null) {
-                    viewTarget(options, commandLine);
+                    viewTarget(options);
                 }
             } catch (FileError later) {
                 // the export's comes first
             }
             throw e;
         }
-        OutputTarget viewTarget = view != null ? viewTarget(options, commandLine) : null;
+        OutputTarget viewTarget = view != null ? viewTarget(options) : null;
         if (pixel != null && options.output() != null) {
             err.println("rtd: note: --explain prints its steps and writes no picture; -o is not used");
         }
@@ -103,7 +101,7 @@ public final class TeachingOptions {
         Scene scene = SceneRun.read(SceneSource.of(options.scene()), null, options, povTarget,
                 ProgressDisplay.start(false, err), stats);
         if (pixel == null) {
-            return view(scene, viewTarget, options, stats, err, commandLine);
+            return view(scene, viewTarget, options, stats, err);
         }
         if (options.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
             err.println("rtd: note: --paper draws as the paper does, in flat colours: the scene's lights are not used, "
@@ -120,21 +118,20 @@ public final class TeachingOptions {
     }
 
     /** Where {@code --export-pov} goes, as {@code -o}, but only to a .pov name, also behind a link; null without it. */
-    OutputTarget planExport(RenderOptions options, CommandLine commandLine) throws FileError {
+    OutputTarget planExport(RenderOptions options) throws FileError {
         if (exportPov == null) {
             return null;
         }
         String name = exportPov.getFileName() == null ? "" : exportPov.getFileName().toString();
-        RtdCommand.refuse(commandLine, exportPov.toString().equals("-"), "--export-pov writes a file, not standard "
+        RtdCommand.refuse(exportPov.toString().equals("-"), "--export-pov writes a file, not standard "
                 + "output ('-'); give a name that ends in .pov, such as scene.pov");
-        RtdCommand.refuse(commandLine, name.indexOf('"') >= 0, "--export-pov '" + exportPov + "': a name with a double "
+        RtdCommand.refuse(name.indexOf('"') >= 0, "--export-pov '" + exportPov + "': a name with a double "
                 + "quote cannot be given to POV-Ray; choose one without"); // the folder is cd's
         String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
-        RtdCommand.refuse(commandLine, !endsInPov(exportPov), "--export-pov writes a POV-Ray scene, and its name must "
-                + "end in .pov; '" + exportPov + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base)
-                + ".pov");
-        OutputTarget target = OutputTarget.of(exportPov, options.scene(), "--export-pov", commandLine);
-        RtdCommand.refuse(commandLine, target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
+        RtdCommand.refuse(!endsInPov(exportPov), "--export-pov writes a POV-Ray scene, and its name must end in .pov; '"
+                + exportPov + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
+        OutputTarget target = OutputTarget.of(exportPov, options.scene(), "--export-pov");
+        RtdCommand.refuse(target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
                 + exportPov + "' leads to '" + target.file() + "', whose name does not end in .pov; --export-pov "
                 + "replaces only a POV-Ray scene");
         return target;
@@ -145,24 +142,20 @@ public final class TeachingOptions {
     }
 
     /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
-    private OutputTarget viewTarget(RenderOptions options, CommandLine commandLine) throws FileError {
+    private OutputTarget viewTarget(RenderOptions options) throws FileError {
         Path byDefault = JobPlanner.defaultOutput(options.scene(), "-" + view);
-        RtdCommand.refuse(commandLine, OutputTarget.DASH.equals(options.output()), "--view writes its picture to a "
+        RtdCommand.refuse(OutputTarget.DASH.equals(options.output()), "--view writes its picture to a "
                 + "file; -o - (standard output) is for the rendered picture only: give a file name, such as "
                 + byDefault.getFileName());
         OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
-                "-o", commandLine);
-        JobPlanner.format(target, commandLine); // a format no writer knows: a misuse, before the scene is read
+                "-o");
+        JobPlanner.format(target); // a format no writer knows: a misuse, before the scene is read
         return target;
     }
 
-    /**
-     * {@code --view KIND}: renders what the camera's rays did ({@link View}) on the path the picture would take (the
-     * paper's loop or what {@code --accel} chose, all threads), written to {@code target} as a picture is, with its
-     * scale on standard error; the exit code, 0.
-     */
-    private int view(Scene scene, OutputTarget target, RenderOptions options, StatsReport stats, PrintWriter err,
-            CommandLine commandLine) throws FileError {
+    /** {@code --view KIND}: what the camera's rays did ({@link View}), traced on the path the picture would take. */
+    private int view(Scene scene, OutputTarget target, RenderOptions options, StatsReport stats, PrintWriter err)
+            throws FileError {
         if (options.samples() > 1) {
             err.println("rtd: note: a view takes one ray per pixel; --samples is not used");
         }
@@ -174,7 +167,7 @@ public final class TeachingOptions {
                 options.width(), options.height(), 1, options.threads(), new RenderProgress());
         stats.endPhase("render"); // drawing the view's legend belongs to making the picture: the write
         ViewPicture picture = ViewPicture.of(view, raw.image(), scene);
-        target.write(picture.picture(), JobPlanner.format(target, commandLine), null, done -> { });
+        target.write(picture.picture(), JobPlanner.format(target), null, done -> { });
         err.print("rtd: " + picture.report().replace("\n", "\n     ").stripTrailing() + "\n");
         stats.endPhase("write");
         if (options.stats()) { // a view runs on every thread, also the paper's loop
@@ -185,16 +178,16 @@ public final class TeachingOptions {
     }
 
     /** The pixel of {@code --explain X,Y} in the picture; a misuse (exit 2) that names the image's size if none. */
-    private int[] pixel(RenderOptions options, CommandLine commandLine) {
+    private int[] pixel(RenderOptions options) {
         int width = options.width();
         int height = options.height();
         String range = String.format("0 ≤ X < %d and 0 ≤ Y < %d (the image is %d × %d)", width, height, width, height);
         Matcher matcher = PIXEL.matcher(explain);
-        RtdCommand.refuse(commandLine, !matcher.matches(), "--explain '" + explain + "': give the pixel as X,Y, two "
+        RtdCommand.refuse(!matcher.matches(), "--explain '" + explain + "': give the pixel as X,Y, two "
                 + "whole numbers with " + range);
         int x = Integer.parseInt(matcher.group(1));
         int y = Integer.parseInt(matcher.group(2));
-        RtdCommand.refuse(commandLine, x >= width || y >= height, "--explain " + x + "," + y + ": the pixel lies "
+        RtdCommand.refuse(x >= width || y >= height, "--explain " + x + "," + y + ": the pixel lies "
                 + "outside the image; choose " + range);
         return new int[] {x, y};
     }

@@ -11,9 +11,8 @@ import rtd.scene.Scene;
 import rtd.shade.FlatShader;
 
 /**
- * The one warm-up per JVM of {@code javax.imageio} ({@link ImageFormat#warmUp}), then of the reader, the view grid
- * and the renderer on a tiny scene, started before the command line is parsed: classes load on a spare core while
- * picocli starts and the scene is read. Nothing it makes is kept; it is per JVM, as what it loads is.
+ * The one warm-up per JVM of {@code javax.imageio}, the reader, the view grid and the renderer on a tiny scene,
+ * started before the command line is parsed, so that classes load on a spare core while picocli starts.
  */
 final class WarmUp {
 

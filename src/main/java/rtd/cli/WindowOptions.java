@@ -21,8 +21,7 @@ import rtd.window.WindowSetup.FileWatch;
 
 /**
  * {@code --window}, a picocli mixin of {@link RtdCommand}: opens the scene in a window ({@link Window}) instead of
- * writing its picture. The command line gives it what it knows: the size, {@code --samples}, {@code --threads},
- * the tracers {@code --accel} chooses ({@link Accelerator}), and {@link SceneWatcher}'s eye on the files.
+ * writing its picture, with the size, samples, threads and tracers the command line gives.
  */
 public final class WindowOptions {
 
@@ -48,12 +47,12 @@ public final class WindowOptions {
 
     /** Opens the window, once what makes no sense in one is refused; the exit code when it is closed. */
     int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
-        RtdCommand.refuse(commandLine, options.scenes().size() > 1, "--window opens one scene file, but "
+        RtdCommand.refuse(options.scenes().size() > 1, "--window opens one scene file, but "
                 + options.scenes().size() + " were given; open each in a window of its own");
-        RtdCommand.refuse(commandLine, options.scene().toString().equals("-"), "--window needs a scene file to watch; "
+        RtdCommand.refuse(options.scene().toString().equals("-"), "--window needs a scene file to watch; "
                 + "it cannot open standard input ('-')");
         for (String[] refused : REFUSED) {
-            RtdCommand.refuse(commandLine, commandLine.getParseResult().hasMatchedOption(refused[0]), "--window and "
+            RtdCommand.refuse(commandLine.getParseResult().hasMatchedOption(refused[0]), "--window and "
                     + refused[0] + " do not go together: " + refused[1]);
         }
         String missing = Window.missingDisplay();
@@ -65,7 +64,7 @@ public final class WindowOptions {
                 : new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, new Scale((double) WIDTH
                 / RtdCommand.DEFAULT_WIDTH), false, options.threads(), options.accel(), options.paper(),
                 options.samples(), options.stats(), options.progress(), options.clock());
-        Memory.checkImageFits(commandLine, sized.width(), sized.height(), sized.scale());
+        Memory.checkImageFits(sized.width(), sized.height(), sized.scale());
         WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel().name(),
                 sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads(), sized.clock());
         try {
@@ -95,10 +94,8 @@ public final class WindowOptions {
     }
 
     /**
-     * The tracers {@code --accel ACCEL} chooses ({@code auto}, {@code none}, {@code bvh} or {@code grid}) with
-     * {@code threads} threads, as {@code -o} chains them ({@link Accelerator}): for any camera the lights' grids
-     * (they see from the lights, whatever the camera) before the BVH, or the paper's loop for {@code none}; for
-     * the picture the view grid of its camera before those. Public for the window's benchmark.
+     * The tracers {@code --accel} chooses, chained as for {@code -o}: for any camera the lights' grids (they see from
+     * the lights) before the BVH, or the paper's loop; for the picture its view grid before those. Public for tests.
      */
     public static Engine engine(String choice, int threads) {
         Accelerator.Choice accel = Accelerator.Choice.valueOf(choice);
