@@ -58,9 +58,12 @@ record JobPlanner(Path output, StandardStreams streams) {
     /** The format of {@code target}'s extension; one that no writer knows is a mistake on the command line. */
     static ImageFormat format(OutputTarget target) {
         ImageFormat format = ImageFormat.forOutput(target.spelt()).orElse(null);
-        RtdCommand.refuse(format == null, "the output '" + target.spelt() + "' ends in '."
-                + ImageFormat.extensionOf(target.spelt()).orElse("") + "', a format rtd cannot write; give it one of "
-                + ImageFormat.writableExtensions().stream().map(e -> "." + e).collect(Collectors.joining(", ")));
+        if (format == null) { // the writers' list only for the message: asking every writer takes a while
+            String extension = ImageFormat.extensionOf(target.spelt()).orElse("");
+            throw new RtdCommand.Misuse("the output '" + target.spelt() + "' ends in '." + extension + "', a format rtd "
+                    + "cannot write; give it one of "
+                    + ImageFormat.writableExtensions().stream().map(e -> "." + e).collect(Collectors.joining(", ")));
+        }
         return format;
     }
 

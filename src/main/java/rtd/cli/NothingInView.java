@@ -34,7 +34,7 @@ final class NothingInView {
      */
     static boolean hitSomething(Scene scene, Supplier<Tracer> tracers, Picture picture, int threads) {
         int background = scene.ambient().getRGB();
-        if (IntStream.of(picture.rgb()).anyMatch(pixel -> pixel != background)) {
+        if (!allEqual(picture.rgb(), background)) {
             return true;
         }
         if (scene.lights().isEmpty()
@@ -44,7 +44,17 @@ final class NothingInView {
         Shader hitMarks = (rays, hits, i) -> hits.index(i) < 0 ? Rgb.BLACK : new Rgb(1, 1, 1);
         Picture marks = ParallelRenderer.render(scene.camera(), tracers, tracer -> hitMarks, picture.width(),
                 picture.height(), threads, new RenderProgress()).image();
-        return IntStream.of(marks.rgb()).anyMatch(pixel -> pixel != 0);
+        return !allEqual(marks.rgb(), 0);
+    }
+
+    /** Whether every pixel is {@code rgb}: a plain loop, as a stream would cost a first run more than the test. */
+    private static boolean allEqual(int[] pixels, int rgb) {
+        for (int pixel : pixels) {
+            if (pixel != rgb) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** The one-line warning for {@code scene} (its camera as rendered), named {@code name}. */

@@ -241,10 +241,11 @@ public final class RtdCommand implements Callable<Integer> {
         long scaledHeight = scale.times(height);
         boolean empty = scaledWidth < 1 || scaledHeight < 1;
         boolean tooBig = scaledWidth > Integer.MAX_VALUE || scaledHeight > Integer.MAX_VALUE;
-        refuse(checked && (empty || tooBig), String.format(Locale.ROOT,
-                "--scale %s makes the %d×%d image %d×%d pixels; ", scale, width, height, scaledWidth, scaledHeight)
-                + (empty ? "a picture needs at least one pixel each way"
-                        : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
+        if (checked && (empty || tooBig)) { // the message only for a mistake: formatting loads locale data
+            throw new Misuse(String.format(Locale.ROOT, "--scale %s makes the %d×%d image %d×%d pixels; ", scale, width,
+                    height, scaledWidth, scaledHeight) + (empty ? "a picture needs at least one pixel each way"
+                            : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
+        }
         return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledWidth)),
                 (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledHeight)), scale,
                 given("--width") || given("--height"), threads, accel, paper, samples, stats,

@@ -57,8 +57,11 @@ public final class ParallelRenderer {
             Tracer tracer = tracers.get();
             squares.add(new Square(camera, tracer, shaders.apply(tracer), width, height, samples));
         }
-        runAll(squares.stream().<Runnable>map(square -> () -> renderBands(square, pixels, bands, nextBand, progress))
-                .toList());
+        List<Runnable> workers = new ArrayList<>();
+        for (Square square : squares) {
+            workers.add(() -> renderBands(square, pixels, bands, nextBand, progress));
+        }
+        runAll(workers);
         WorkCount work = WorkCount.NONE;
         for (Square square : squares) {
             work = work.plus(square.tracer.work()).plusSecondary(square.shader.secondaryRays());
@@ -185,7 +188,10 @@ public final class ParallelRenderer {
             return thread;
         });
         try {
-            List<Future<?>> futures = workers.subList(1, workers.size()).stream().<Future<?>>map(pool::submit).toList();
+            List<Future<?>> futures = new ArrayList<>();
+            for (Runnable worker : workers.subList(1, workers.size())) {
+                futures.add(pool.submit(worker));
+            }
             workers.get(0).run();
             for (Future<?> future : futures) {
                 future.get();

@@ -42,13 +42,15 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
 
     /** The rays the camera made: all rays traced but the secondary ones. */
     public long cameraRays() {
-        return rays - secondaryRays.values().stream().mapToLong(Long::longValue).sum();
+        return rays - total(secondaryRays);
     }
 
     /** {@code a} plus {@code b} times {@code factor}, by name. */
     private static Map<String, Long> sum(Map<String, Long> a, Map<String, Long> b, long factor) {
         Map<String, Long> sum = new TreeMap<>(a);
-        b.forEach((key, count) -> sum.merge(key, count * factor, Long::sum));
+        for (Map.Entry<String, Long> entry : b.entrySet()) { // a loop: a first run links no lambda here
+            sum.put(entry.getKey(), sum.getOrDefault(entry.getKey(), 0L) + entry.getValue() * factor);
+        }
         return sum;
     }
 
@@ -71,7 +73,15 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
     }
 
     public long intersectionTests() {
-        return testsByKind.values().stream().mapToLong(Long::longValue).sum();
+        return total(testsByKind);
+    }
+
+    private static long total(Map<String, Long> counts) {
+        long total = 0;
+        for (long count : counts.values()) {
+            total += count;
+        }
+        return total;
     }
 
     public double testsPerRay() {

@@ -128,7 +128,12 @@ public final class SceneWarnings {
 
     /** The first object that every corner ray starts in, or −1. */
     private static int enclosing(List<IGeometry> objects, List<Ray> corners) {
-        return IntStream.range(0, objects.size()).filter(i -> holdsAll(objects.get(i), corners)).findFirst().orElse(-1);
+        for (int i = 0; i < objects.size(); i++) { // loops, not streams: these run on every first run
+            if (holdsAll(objects.get(i), corners)) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /** Whether {@code a} (unbounded: a plane, which may cross anything) and {@code b} share a point. */
@@ -138,7 +143,12 @@ public final class SceneWarnings {
     }
 
     private static boolean holdsAll(IGeometry object, List<Ray> corners) {
-        return corners.stream().allMatch(ray -> inside(object, ray.origin()));
+        for (Ray ray : corners) {
+            if (!inside(object, ray.origin())) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Whether {@code p} lies strictly inside {@code object}, a sphere or a box (the closed objects). */
