@@ -125,9 +125,9 @@ final class Grammar {
         Vector3f view = v.vector(1);
         float size = v.number(2, 0); // a zoom or a field of view
         if (perspective) {
-            return v.isTarget(1) ? PerspectiveCamera.lookingAt(pos, view, size) : new PerspectiveCamera(pos, view, size);
+            return v.target == 1 ? PerspectiveCamera.lookingAt(pos, view, size) : new PerspectiveCamera(pos, view, size);
         }
-        return v.isTarget(1) ? OrthographicCamera.lookingAt(pos, view, size)
+        return v.target == 1 ? OrthographicCamera.lookingAt(pos, view, size)
                 : new OrthographicCamera(pos, view, size);
     }
 

@@ -15,11 +15,9 @@ import rtd.math.Matrix4;
 import rtd.scene.Light;
 
 /**
- * What the statements of a scene file make, as {@link StatementReader} reads them (each builder of the
- * {@link Grammar} gives its values here), before {@link SceneFile} checks what only the whole file can tell:
- * the objects, each {@code ambient}, camera and definition of a name with its place (a scene may have
- * only one of each, or one per name), the objects that wait for a name defined further down, and the
- * mistakes found.
+ * What the statements of a scene file make, as the {@link Grammar}'s builders give it, with the places that
+ * {@link SceneFile} needs to check what only the whole file tells (one camera, one definition per name); the
+ * objects that wait for a name defined further down; the mistakes found.
  */
 final class SceneContents {
 
@@ -27,10 +25,7 @@ final class SceneContents {
     record Located<T>(T value, SceneError place) {
     }
 
-    /**
-     * A name's definition at {@code place} (its name's): a {@link Material}, {@link Pattern} or {@link Matrix4}
-     * as {@code kind} says; a pattern may name its {@code transform} (else null) at {@code transformPlace}.
-     */
+    /** A name's {@link Material}, {@link Pattern} or {@link Matrix4}; a pattern may name its transform (else null). */
     record Definition(String name, String kind, Object value, SceneError place, String transform,
             SceneError transformPlace) {
     }
@@ -68,13 +63,12 @@ final class SceneContents {
     /** The values of the statement being built, for the places of what it makes. */
     private StatementValues values;
 
-    /** Contents for about {@code expectedObjects} objects; more are fine. */
     SceneContents(int expectedObjects) {
         objects = new ArrayList<>(expectedObjects);
         into = objects;
     }
 
-    /** Takes the places of what statements make from {@code values}, which the reader fills. */
+    /** Takes the places of what statements make from {@code values}, which the reader refills. */
     void readFrom(StatementValues values) {
         this.values = values;
     }
@@ -92,10 +86,8 @@ final class SceneContents {
     }
 
     /**
-     * Once every line is read: every object in file order, those that name a material, pattern or transform
-     * built now with {@code names}; the names they use go to {@code named}. A name that is unknown or of the
-     * wrong kind is an error (unless its definition is broken, which is reported already); the statement is
-     * still checked.
+     * Once every line is read: every object in file order, the pending ones built now with {@code names}, whose
+     * names go to {@code named}. With a name unknown or of the wrong kind, the object is an error, still checked.
      */
     List<IGeometry> allObjects(DefinedNames names, Set<String> named) {
         if (pending.isEmpty()) {
@@ -111,7 +103,6 @@ final class SceneContents {
             named.addAll(resolved.names());
             values = object.values();
             values.useNames(resolved);
-            // with a name not right, the object is only checked
             into = errors.size() > before ? new ArrayList<>() : all;
             try {
                 values.build(this);
@@ -161,7 +152,6 @@ final class SceneContents {
         define(name, "material", material, null);
     }
 
-    /** A pattern; its transform's name (or null) is resolved when the file is read. */
     void pattern(String name, Pattern pattern, String transform) {
         define(name, "pattern", pattern, transform);
     }
@@ -179,7 +169,7 @@ final class SceneContents {
         recorder().unwritten(values);
     }
 
-    /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */
+    /** Where the numbers that use the clock are noted. */
     private ClockedScene.Recorder recorder() {
         return values.expressionNames.recorder;
     }

@@ -9,9 +9,8 @@ import rtd.math.Vector3f;
 
 /**
  * The values of the statement being read, group by group, each with where it is written (section 4.1; Part
- * II, "The scene file"). {@link #build} checks each group by its {@link Group}'s rule before the builder reads
- * them, so a builder reads only values that follow the rules. One is filled for every line, so that a line of
- * numbers makes no object per number.
+ * II, "The scene file"). {@link #build} checks each group's rule first, so a builder reads only values that
+ * follow the rules. One is refilled for every line, so that a line makes no object per number.
  */
 final class StatementValues {
 
@@ -95,7 +94,7 @@ final class StatementValues {
         opens[groupCount++] = offset;
     }
 
-    /** Keeps a value of the current group, written at {@code bytes[start, end)}: a word is NaN; its key or −1. */
+    /** Keeps a value of the current group, written at {@code [start, end)}: a word is NaN; its key or −1. */
     void add(float value, int start, int end, int key) {
         if (count == values.length) {
             values = Arrays.copyOf(values, 2 * count);
@@ -122,7 +121,7 @@ final class StatementValues {
         return IntStream.range(firsts[groupCount - 1], count).anyMatch(i -> keys[i] == key);
     }
 
-    /** Checks each group by its rule (an error at the first value that breaks one), then builds into {@code out}. */
+    /** Checks each group by its rule, then builds into {@code out}. */
     void build(SceneContents out) throws StatementError {
         for (int g = 0; g < groupCount; g++) {
             statement.group(g).check(this, g);
@@ -134,7 +133,7 @@ final class StatementValues {
         this.names = names;
     }
 
-    /** The object as its names make it ({@link DefinedNames.ObjectNames#dress}): every shape's object passes here. */
+    /** The object as its names make it: every shape's object passes here. */
     IGeometry dress(IGeometry object) {
         return names.dress(object);
     }
@@ -156,7 +155,6 @@ final class StatementValues {
         return source;
     }
 
-    /** How many groups were read, the optional ones among them. */
     int groupCount() {
         return groupCount;
     }
@@ -166,7 +164,6 @@ final class StatementValues {
         return end(g) - firsts[g];
     }
 
-    /** The group that names a pattern in the place of an object's colour, or −1. */
     int patternGroup() {
         return named;
     }
@@ -175,17 +172,11 @@ final class StatementValues {
         return anyExpression;
     }
 
-    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
+    /** Whether group {@code g} has been opened and holds a value yet. */
     boolean hasValue(int g) {
         return g < groupCount && end(g) > firsts[g];
     }
 
-    /** Whether group {@code g} was written {@code (at x|y|z)}, a point to look at. */
-    boolean isTarget(int g) {
-        return target == g;
-    }
-
-    /** The numbers of group {@code g} as read, for the table of the numbers that use the clock. */
     float[] numbers(int g) {
         return Arrays.copyOfRange(values, firsts[g], end(g));
     }
@@ -241,7 +232,6 @@ final class StatementValues {
         return keys[firsts[g] + k];
     }
 
-    /** An error at the '(' of group {@code g}. */
     StatementError errorAtGroup(int g, String message, String help) {
         return errorAt(opens[g], message, help);
     }
@@ -265,7 +255,6 @@ final class StatementValues {
         return new StatementError(source.errorAt(line, lineStart, offset, message, help));
     }
 
-    /** The index after the last value of group {@code g}. */
     private int end(int g) {
         return g + 1 < groupCount ? firsts[g + 1] : count;
     }
