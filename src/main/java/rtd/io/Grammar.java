@@ -30,7 +30,6 @@ import rtd.scene.Light;
  */
 final class Grammar {
 
-    /** The radius from which a sphere warns of shadow acne in a shaded scene ({@link #sphere}). */
     private static final float FLOOR_RADIUS = 5000;
     /** The keyword of the statement that names a value (Part III). */
     static final String LET = "let";
@@ -69,7 +68,7 @@ final class Grammar {
             Statement.setting("light", List.of(POSITION, numbers("intensity", Rule.COLOUR, "R|G|B")),
                     (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
             Statement.setting("material", List.of(NAME, word("properties", Rule.PROPERTIES, "key=value|key=value...")),
-                    (v, out) -> out.material(v.name(0), material(v))),
+                    (v, out) -> out.define(v.name(0), "material", material(v), null)),
             Statement.shape("cylinder", List.of(FIRST_END, SECOND_END, numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(cylinder(v))),
             Statement.shape("cone", List.of(FIRST_END, numbers("first radius", Rule.AT_LEAST_ZERO, "r1"),
@@ -100,15 +99,14 @@ final class Grammar {
     /** The keywords as bytes, beside {@link #STATEMENTS}, to find a line's statement without a String. */
     private static final byte[][] KEYWORDS = STATEMENTS.stream()
             .map(s -> s.keyword().getBytes(StandardCharsets.US_ASCII)).toArray(byte[][]::new);
-    private static final Statement[] ALL = STATEMENTS.toArray(Statement[]::new);
 
     private Grammar() {
     }
 
     static Statement find(byte[] bytes, int start, int end) {
-        for (int k = 0; k < ALL.length; k++) { // no Iterator for each line of a large file
+        for (int k = 0; k < KEYWORDS.length; k++) { // no Iterator for each line of a large file
             if (Arrays.equals(KEYWORDS[k], 0, KEYWORDS[k].length, bytes, start, end)) {
-                return ALL[k];
+                return STATEMENTS.get(k);
             }
         }
         return null;

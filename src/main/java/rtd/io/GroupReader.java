@@ -22,16 +22,9 @@ final class GroupReader {
     void readGroup(Statement statement, Group group) throws StatementError {
         this.statement = statement;
         this.group = group;
-        cursor.skipBlanks();
-        if (!cursor.at(':')) {
-            throw expected("':' before ");
-        }
-        cursor.pos++;
-        cursor.skipBlanks();
-        if (!cursor.at('(')) {
-            throw expected("'(' to start ");
-        }
-        int groupStart = cursor.pos++;
+        pass(':', "':' before ");
+        pass('(', "'(' to start ");
+        int groupStart = cursor.pos - 1;
         values.openGroup(groupStart);
         cursor.skipBlanks();
         if (cursor.at(')') && group.rule() == Group.Rule.PROPERTIES) {
@@ -182,13 +175,18 @@ final class GroupReader {
         if (values.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
-        cursor.skipBlanks();
-        if (!cursor.at('=')) {
-            throw expected("'=' after the key '" + word + "' in ");
-        }
-        cursor.pos++;
+        pass('=', "'=' after the key '" + word + "' in ");
         cursor.skipBlanks();
         return key;
+    }
+
+    /** Goes past blanks and {@code c}, which must stand there. */
+    private void pass(char c, String what) throws StatementError {
+        cursor.skipBlanks();
+        if (!cursor.at(c)) {
+            throw expected(what);
+        }
+        cursor.pos++;
     }
 
     /** Too many numbers in a group; on a line with too few groups the hint says this group was likely left out. */

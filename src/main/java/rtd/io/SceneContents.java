@@ -148,10 +148,6 @@ final class SceneContents {
         recorder().unwritten(values);
     }
 
-    void material(String name, Material material) {
-        define(name, "material", material, null);
-    }
-
     void pattern(String name, Pattern pattern, String transform) {
         define(name, "pattern", pattern, transform);
     }
@@ -160,7 +156,8 @@ final class SceneContents {
         define(name, "transform", transform, null);
     }
 
-    private void define(String name, String kind, Object value, String transform) {
+    /** A material, pattern or transform, as {@code kind} says; a pattern may name a transform (else null). */
+    void define(String name, String kind, Object value, String transform) {
         SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
         definitions.add(new Definition(name, kind, value, values.placeOfValue(0, 0), transform, transformPlace));
         if (value instanceof Material material) {
