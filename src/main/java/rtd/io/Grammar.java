@@ -6,7 +6,6 @@ import static rtd.io.Group.word;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.List;
-import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
@@ -37,7 +36,6 @@ final class Grammar {
     private static final Group POSITION = numbers("position", "x|y|z");
     private static final Group VIEW = new Group("view direction", Rule.VIEW, "x|y|z", 3,
             "the camera looks along it; (0|0|-1) looks into the screen");
-    /** An object's colour, which may name a pattern instead. */
     private static final Group PAINT = numbers("colour", Rule.PAINT, "R|G|B");
     private static final Group FIRST_CORNER = numbers("first corner", "x1|y1|z1");
     private static final Group SECOND_CORNER = numbers("second corner", "x2|y2|z2");
@@ -49,10 +47,12 @@ final class Grammar {
             Statement.setting("ambient", List.of(numbers("colour", Rule.COLOUR, "R|G|B")),
                     (v, out) -> out.ambient(v.colour(0))),
             Statement.setting("orthographic_camera", List.of(POSITION, VIEW, numbers("zoom", Rule.POSITIVE, "zoom")),
-                    (v, out) -> out.camera(camera(v, false))),
+                    (v, out) -> out.camera(v.target == 1 ? OrthographicCamera.lookingAt(v.vector(0), v.vector(1),
+                            v.number(2, 0)) : new OrthographicCamera(v.vector(0), v.vector(1), v.number(2, 0)))),
             Statement.setting("perspective_camera",
                     List.of(POSITION, VIEW, numbers("field of view", Rule.ANGLE, "fov")),
-                    (v, out) -> out.camera(camera(v, true))),
+                    (v, out) -> out.camera(v.target == 1 ? PerspectiveCamera.lookingAt(v.vector(0), v.vector(1),
+                            v.number(2, 0)) : new PerspectiveCamera(v.vector(0), v.vector(1), v.number(2, 0)))),
             Statement.shape("sphere", List.of(numbers("centre", "x|y|z"), numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(sphere(v, out))),
             Statement.shape("plane", List.of(numbers("point", "x|y|z"), new Group("normal", Rule.DIRECTION, "nx|ny|nz",
@@ -115,18 +115,6 @@ final class Grammar {
     /** All keywords, for messages: "'ambient', 'orthographic_camera', … or 'material'". */
     static String keywordList() {
         return Hints.quoted(STATEMENTS.stream().map(Statement::keyword).toList(), "or");
-    }
-
-    /** A camera, orthographic or perspective, looking along its direction or at its point. */
-    private static ICamera camera(StatementValues v, boolean perspective) {
-        Vector3f pos = v.vector(0);
-        Vector3f view = v.vector(1);
-        float size = v.number(2, 0); // a zoom or a field of view
-        if (perspective) {
-            return v.target == 1 ? PerspectiveCamera.lookingAt(pos, view, size) : new PerspectiveCamera(pos, view, size);
-        }
-        return v.target == 1 ? OrthographicCamera.lookingAt(pos, view, size)
-                : new OrthographicCamera(pos, view, size);
     }
 
     /**
