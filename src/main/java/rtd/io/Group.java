@@ -62,7 +62,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         switch (rule) {
             case NAME, PATH -> { }
             case COLOUR, PAINT -> {
-                for (int k = 0; k < 3 && g != v.patternGroup(); k++) {
+                for (int k = 0; k < 3 && g != v.patternGroup; k++) {
                     channel(v, g, k);
                 }
             }

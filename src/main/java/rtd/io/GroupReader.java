@@ -35,7 +35,7 @@ final class GroupReader {
             throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
         }
         boolean patternName = group.rule() == Group.Rule.PAINT && atLoneName();
-        values.named = patternName ? values.groupCount() - 1 : values.named;
+        values.patternGroup = patternName ? values.groupCount() - 1 : values.patternGroup;
         switch (patternName ? Group.Rule.NAME : group.rule()) {
             case NAME -> readName();
             case PATH -> readPath();

@@ -102,7 +102,7 @@ final class SceneContents {
             DefinedNames.ObjectNames resolved = names.of(object.values(), errors);
             named.addAll(resolved.names());
             values = object.values();
-            values.useNames(resolved);
+            values.names = resolved;
             into = errors.size() > before ? new ArrayList<>() : all;
             try {
                 values.build(this);
@@ -135,7 +135,7 @@ final class SceneContents {
 
     /** One object, at the statement's place among the objects. */
     void object(IGeometry object) {
-        IGeometry dressed = values.dress(object);
+        IGeometry dressed = values.names.dress(object);
         into.add(dressed);
         recorder().part(dressed, values);
     }
@@ -143,7 +143,7 @@ final class SceneContents {
     /** Several objects, in order, at the statement's place: a mesh's triangles. */
     void objects(List<IGeometry> more) {
         for (IGeometry object : more) {
-            into.add(values.dress(object));
+            into.add(values.names.dress(object));
         }
         recorder().unwritten(values);
     }

@@ -77,15 +77,15 @@ final class StatementReader {
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (statement.takesMaterial() && (optional > 0 || values.patternGroup() >= 0)) {
+        if (statement.takesMaterial() && (optional > 0 || values.patternGroup >= 0)) {
             String name = values.name(own);
-            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materials.get(name) : null;
+            Material above = optional == 1 && values.patternGroup < 0 ? contents.materials.get(name) : null;
             if (above == null) {
                 contents.addPending(values); // its names are resolved when the whole file is read
                 return;
             }
             contents.namedAtOnce.add(name);
-            values.useNames(new DefinedNames.ObjectNames(above, null, null, List.of()));
+            values.names = new DefinedNames.ObjectNames(above, null, null, List.of());
         }
         values.build(contents);
     }

@@ -2,7 +2,6 @@ package rtd.io;
 
 import java.util.Arrays;
 import java.util.stream.IntStream;
-import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
 import rtd.math.Vector3f;
@@ -21,8 +20,8 @@ final class StatementValues {
     private int line;
     private int lineStart;
     private int statementStart;
-    /** What the object's names mean, once known: its material, pattern and transform. */
-    private DefinedNames.ObjectNames names = DefinedNames.ObjectNames.NONE;
+    /** What the object's names mean, once known: its material, pattern and transform; it dresses each object. */
+    DefinedNames.ObjectNames names = DefinedNames.ObjectNames.NONE;
     // Each value: its number (NaN for a word), where it is written, its property's index in Group.KEYS (or −1),
     // and for an expression its tree and its value in double precision (else null and unset).
     private float[] values = new float[16];
@@ -40,7 +39,7 @@ final class StatementValues {
     /** The group written {@code (at x|y|z)}, a point to look at, or −1. */
     int target = -1;
     /** The group that holds a pattern's name where an object's colour stands, or −1. */
-    int named = -1;
+    int patternGroup = -1;
 
     StatementValues(SourceText source, Names expressionNames) {
         this.source = source;
@@ -61,7 +60,7 @@ final class StatementValues {
         count = 0;
         groupCount = 0;
         target = -1;
-        named = -1;
+        patternGroup = -1;
     }
 
     /** An independent copy, its arrays just long enough, for an object built when the whole file is read. */
@@ -80,7 +79,7 @@ final class StatementValues {
         copy.count = count;
         copy.groupCount = groupCount;
         copy.target = target;
-        copy.named = named;
+        copy.patternGroup = patternGroup;
         return copy;
     }
 
@@ -129,15 +128,6 @@ final class StatementValues {
         statement.builder().build(this, out);
     }
 
-    void useNames(DefinedNames.ObjectNames names) {
-        this.names = names;
-    }
-
-    /** The object as its names make it: every shape's object passes here. */
-    IGeometry dress(IGeometry object) {
-        return names.dress(object);
-    }
-
     /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
     Material material() {
         return names.material();
@@ -162,10 +152,6 @@ final class StatementValues {
     /** How many values group {@code g} holds: for a transformation's step, its word and its numbers. */
     int size(int g) {
         return end(g) - firsts[g];
-    }
-
-    int patternGroup() {
-        return named;
     }
 
     boolean anyExpression() {
@@ -215,7 +201,7 @@ final class StatementValues {
     }
 
     Color colour(int g) {
-        if (g == named) {
+        if (g == patternGroup) {
             return names.colour(); // the object's colour is its pattern's: see dress
         }
         return new Color((int) channel(g, 0), (int) channel(g, 1), (int) channel(g, 2));
