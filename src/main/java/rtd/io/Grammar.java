@@ -30,7 +30,6 @@ import rtd.scene.Light;
 final class Grammar {
 
     private static final float FLOOR_RADIUS = 5000;
-    /** The keyword of the statement that names a value (Part III). */
     static final String LET = "let";
     private static final Group NAME = word("name", Rule.NAME, "name");
     private static final Group POSITION = numbers("position", "x|y|z");
@@ -118,9 +117,8 @@ final class Grammar {
     }
 
     /**
-     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene: on a surface that
-     * large float rounds hit points by more than a shadow ray's lift, so it shows shadow acne (a radius of
-     * 1000, as <i>Ray Tracing in One Weekend</i> uses, draws clean).
+     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene: float rounds its hit points
+     * by more than a shadow ray's lift, so it shows acne (<i>Ray Tracing in One Weekend</i>'s 1000 draws clean).
      */
     private static Sphere sphere(StatementValues v, SceneContents out) {
         Sphere sphere = new Sphere(v.vector(0), v.number(1, 0), v.colour(2), v.material());

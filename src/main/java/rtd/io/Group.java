@@ -7,10 +7,9 @@ import rtd.math.Vector3f;
 import rtd.scene.AreaLight;
 
 /**
- * One group {@code :(…)} of a statement of the {@link Grammar}: its meaning in messages, how it is written
- * ({@code shape}, such as {@code x|y|z}), how many numbers it holds (1 for a word or properties) and the rule
- * its values follow (section 4.1; Part II, "The scene file"; Part III). {@code help} is the hint for a zero
- * direction.
+ * One group {@code :(…)} of a statement of the {@link Grammar}: its meaning in messages, its {@code shape}
+ * ({@code x|y|z}), its {@code size} (1 for a word or properties), the rule its values follow (section 4.1; Part
+ * II, "The scene file"; Part III) and the {@code help} for a zero direction.
  */
 record Group(String meaning, Rule rule, String shape, int size, String help) {
 
@@ -19,9 +18,8 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
             "transparency", "ior");
 
     /**
-     * What a group holds and the rule its values follow, each number finite: {@link #check} says each rule.
-     * PAINT is a colour or a pattern's name; VIEW a direction or {@code (at x|y|z)}; PATH everything up to the
-     * {@code )}, trimmed; STEP a word and numbers, {@code translate 0|1|0}.
+     * What a group holds and the rule its values follow, as {@link #check} says; PAINT is a colour or a pattern's
+     * name, VIEW a direction or {@code (at x|y|z)}, PATH all up to the {@code )}, STEP a word and numbers.
      */
     enum Rule {
         NUMBERS, POSITIVE, AT_LEAST_ZERO, ANGLE, SAMPLES, COLOUR, PAINT, DIRECTION, VIEW, NAME, PATH, PROPERTIES, STEP

@@ -60,17 +60,12 @@ final class SceneContents {
     int lineNumbers;
     /** Where {@link #object} puts objects: {@link #objects}, or the list a pending object is built into. */
     private List<IGeometry> into;
-    /** The values of the statement being built, for the places of what it makes. */
-    private StatementValues values;
+    /** The values of the statement being built, which the reader refills, for the places of what it makes. */
+    StatementValues values;
 
     SceneContents(int expectedObjects) {
         objects = new ArrayList<>(expectedObjects);
         into = objects;
-    }
-
-    /** Takes the places of what statements make from {@code values}, which the reader refills. */
-    void readFrom(StatementValues values) {
-        this.values = values;
     }
 
     /** Keeps an object that names a material not known yet, at its place among the objects, for {@link #allObjects}. */
@@ -85,10 +80,7 @@ final class SceneContents {
         }
     }
 
-    /**
-     * Once every line is read: every object in file order, the pending ones built now with {@code names}, whose
-     * names go to {@code named}. With a name unknown or of the wrong kind, the object is an error, still checked.
-     */
+    /** Every object in file order, the pending ones built now with {@code names}, which go to {@code named}. */
     List<IGeometry> allObjects(DefinedNames names, Set<String> named) {
         if (pending.isEmpty()) {
             return objects;
@@ -99,11 +91,10 @@ final class SceneContents {
             all.addAll(objects.subList(next, object.index()));
             next = object.index();
             int before = errors.size();
-            DefinedNames.ObjectNames resolved = names.of(object.values(), errors);
-            named.addAll(resolved.names());
             values = object.values();
-            values.names = resolved;
-            into = errors.size() > before ? new ArrayList<>() : all;
+            values.names = names.of(values, errors);
+            named.addAll(values.names.names());
+            into = errors.size() > before ? new ArrayList<>() : all; // with a name not right, only checked
             try {
                 values.build(this);
             } catch (StatementError e) {
@@ -142,9 +133,7 @@ final class SceneContents {
 
     /** Several objects, in order, at the statement's place: a mesh's triangles. */
     void objects(List<IGeometry> more) {
-        for (IGeometry object : more) {
-            into.add(values.names.dress(object));
-        }
+        more.forEach(object -> into.add(values.names.dress(object)));
         recorder().unwritten(values);
     }
 

@@ -26,7 +26,7 @@ final class StatementReader {
         this.values = new StatementValues(source, names);
         this.groupReader = new GroupReader(cursor, values, names);
         this.contents = contents;
-        contents.readFrom(values);
+        contents.values = values;
     }
 
     /** Reads every line, until the end or one error past {@link SceneException#MAX_ERRORS}. */

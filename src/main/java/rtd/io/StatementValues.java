@@ -176,7 +176,6 @@ final class StatementValues {
         return written(firsts[g]);
     }
 
-    /** The number {@code k} of group {@code g} as written, for messages. */
     String written(int g, int k) {
         return written(firsts[g] + k);
     }
