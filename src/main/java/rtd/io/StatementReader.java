@@ -78,13 +78,12 @@ final class StatementReader {
             throw textAfterStatement();
         }
         if (statement.takesMaterial() && (optional > 0 || values.patternGroup >= 0)) {
-            String name = values.name(own);
-            Material above = optional == 1 && values.patternGroup < 0 ? contents.materials.get(name) : null;
+            Material above = optional == 1 && values.patternGroup < 0 ? contents.materials.get(values.name(own)) : null;
             if (above == null) {
                 contents.addPending(values); // its names are resolved when the whole file is read
                 return;
             }
-            contents.namedAtOnce.add(name);
+            contents.namedAtOnce.add(values.name(own));
             values.names = new DefinedNames.ObjectNames(above, null, null, List.of());
         }
         values.build(contents);
