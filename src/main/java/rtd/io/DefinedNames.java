@@ -171,7 +171,7 @@ final class DefinedNames {
             }
         }
         Pattern pattern = null;
-        int colour = values.patternGroup();
+        int colour = values.patternGroup;
         if (colour >= 0) {
             String name = values.name(colour);
             used.add(name);

@@ -6,7 +6,6 @@ import static rtd.io.Group.word;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.List;
-import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.Box;
@@ -30,15 +29,12 @@ import rtd.scene.Light;
  */
 final class Grammar {
 
-    /** The radius from which a sphere warns of shadow acne in a shaded scene ({@link #sphere}). */
     private static final float FLOOR_RADIUS = 5000;
-    /** The keyword of the statement that names a value (Part III). */
     static final String LET = "let";
     private static final Group NAME = word("name", Rule.NAME, "name");
     private static final Group POSITION = numbers("position", "x|y|z");
     private static final Group VIEW = new Group("view direction", Rule.VIEW, "x|y|z", 3,
             "the camera looks along it; (0|0|-1) looks into the screen");
-    /** An object's colour, which may name a pattern instead. */
     private static final Group PAINT = numbers("colour", Rule.PAINT, "R|G|B");
     private static final Group FIRST_CORNER = numbers("first corner", "x1|y1|z1");
     private static final Group SECOND_CORNER = numbers("second corner", "x2|y2|z2");
@@ -50,10 +46,12 @@ final class Grammar {
             Statement.setting("ambient", List.of(numbers("colour", Rule.COLOUR, "R|G|B")),
                     (v, out) -> out.ambient(v.colour(0))),
             Statement.setting("orthographic_camera", List.of(POSITION, VIEW, numbers("zoom", Rule.POSITIVE, "zoom")),
-                    (v, out) -> out.camera(camera(v, false))),
+                    (v, out) -> out.camera(v.target == 1 ? OrthographicCamera.lookingAt(v.vector(0), v.vector(1),
+                            v.number(2, 0)) : new OrthographicCamera(v.vector(0), v.vector(1), v.number(2, 0)))),
             Statement.setting("perspective_camera",
                     List.of(POSITION, VIEW, numbers("field of view", Rule.ANGLE, "fov")),
-                    (v, out) -> out.camera(camera(v, true))),
+                    (v, out) -> out.camera(v.target == 1 ? PerspectiveCamera.lookingAt(v.vector(0), v.vector(1),
+                            v.number(2, 0)) : new PerspectiveCamera(v.vector(0), v.vector(1), v.number(2, 0)))),
             Statement.shape("sphere", List.of(numbers("centre", "x|y|z"), numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(sphere(v, out))),
             Statement.shape("plane", List.of(numbers("point", "x|y|z"), new Group("normal", Rule.DIRECTION, "nx|ny|nz",
@@ -69,7 +67,7 @@ final class Grammar {
             Statement.setting("light", List.of(POSITION, numbers("intensity", Rule.COLOUR, "R|G|B")),
                     (v, out) -> out.light(new Light(v.vector(0), Rgb.of(v.colour(1))))),
             Statement.setting("material", List.of(NAME, word("properties", Rule.PROPERTIES, "key=value|key=value...")),
-                    (v, out) -> out.material(v.name(0), material(v))),
+                    (v, out) -> out.define(v.name(0), "material", material(v), null)),
             Statement.shape("cylinder", List.of(FIRST_END, SECOND_END, numbers("radius", Rule.POSITIVE, "r"), PAINT),
                     (v, out) -> out.object(cylinder(v))),
             Statement.shape("cone", List.of(FIRST_END, numbers("first radius", Rule.AT_LEAST_ZERO, "r1"),
@@ -100,15 +98,14 @@ final class Grammar {
     /** The keywords as bytes, beside {@link #STATEMENTS}, to find a line's statement without a String. */
     private static final byte[][] KEYWORDS = STATEMENTS.stream()
             .map(s -> s.keyword().getBytes(StandardCharsets.US_ASCII)).toArray(byte[][]::new);
-    private static final Statement[] ALL = STATEMENTS.toArray(Statement[]::new);
 
     private Grammar() {
     }
 
     static Statement find(byte[] bytes, int start, int end) {
-        for (int k = 0; k < ALL.length; k++) { // no Iterator for each line of a large file
+        for (int k = 0; k < KEYWORDS.length; k++) { // no Iterator for each line of a large file
             if (Arrays.equals(KEYWORDS[k], 0, KEYWORDS[k].length, bytes, start, end)) {
-                return ALL[k];
+                return STATEMENTS.get(k);
             }
         }
         return null;
@@ -119,22 +116,9 @@ final class Grammar {
         return Hints.quoted(STATEMENTS.stream().map(Statement::keyword).toList(), "or");
     }
 
-    /** A camera, orthographic or perspective, looking along its direction or at its point. */
-    private static ICamera camera(StatementValues v, boolean perspective) {
-        Vector3f pos = v.vector(0);
-        Vector3f view = v.vector(1);
-        float size = v.number(2, 0); // a zoom or a field of view
-        if (perspective) {
-            return v.isTarget(1) ? PerspectiveCamera.lookingAt(pos, view, size) : new PerspectiveCamera(pos, view, size);
-        }
-        return v.isTarget(1) ? OrthographicCamera.lookingAt(pos, view, size)
-                : new OrthographicCamera(pos, view, size);
-    }
-
     /**
-     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene: on a surface that
-     * large float rounds hit points by more than a shadow ray's lift, so it shows shadow acne (a radius of
-     * 1000, as <i>Ray Tracing in One Weekend</i> uses, draws clean).
+     * A sphere; one of radius {@value #FLOOR_RADIUS} or more warns in a shaded scene: float rounds its hit points
+     * by more than a shadow ray's lift, so it shows acne (<i>Ray Tracing in One Weekend</i>'s 1000 draws clean).
      */
     private static Sphere sphere(StatementValues v, SceneContents out) {
         Sphere sphere = new Sphere(v.vector(0), v.number(1, 0), v.colour(2), v.material());

@@ -7,14 +7,9 @@ import rtd.math.Vector3f;
 import rtd.scene.AreaLight;
 
 /**
- * One group {@code :(…)} of a statement of the {@link Grammar}: what it means in messages, how it is written,
- * and the rule its values follow (section 4.1; Part II, "The scene file"; Part III): every number finite, a
- * radius above 0, a colour channel a whole number from 0 to 255, a direction that float can normalise (not
- * zero, its squared length neither below float's normal range nor infinite), and so on.
- *
- * @param shape how it is written, for "write it as …": {@code x|y|z}, {@code path}
- * @param size  how many numbers it holds; 1 for a word or properties
- * @param help  the help when a direction ({@link Rule#DIRECTION}, {@link Rule#VIEW}) is zero
+ * One group {@code :(…)} of a statement of the {@link Grammar}: its meaning in messages, its {@code shape}
+ * ({@code x|y|z}), its {@code size} (1 for a word or properties), the rule its values follow (section 4.1; Part
+ * II, "The scene file"; Part III) and the {@code help} for a zero direction.
  */
 record Group(String meaning, Rule rule, String shape, int size, String help) {
 
@@ -22,32 +17,12 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
     static final List<String> KEYS = List.of("ambient", "diffuse", "specular", "shininess", "reflective",
             "transparency", "ior");
 
-    /** What a group holds, and the rule its values follow; every number is finite. */
+    /**
+     * What a group holds and the rule its values follow, as {@link #check} says; PAINT is a colour or a pattern's
+     * name, VIEW a direction or {@code (at x|y|z)}, PATH all up to the {@code )}, STEP a word and numbers.
+     */
     enum Rule {
-        NUMBERS,
-        /** One number greater than 0: a radius, a zoom, a scale. */
-        POSITIVE,
-        /** One number at least 0: a cone's radius. */
-        AT_LEAST_ZERO,
-        /** A camera's field of view, between 0 and 180 degrees. */
-        ANGLE,
-        /** An area light's samples along its edges: whole numbers from 1 to {@link AreaLight#MOST_SAMPLES}. */
-        SAMPLES,
-        /** Three channels, each a whole number from 0 to 255; an expression is rounded ½ up (Part III). */
-        COLOUR,
-        /** An object's colour, or the name of its pattern (Part III, "Patterns"). */
-        PAINT,
-        DIRECTION,
-        /** A camera's view: a direction, or {@code (at x|y|z)}, a point to look at (Part III). */
-        VIEW,
-        /** One name of letters, digits, {@code _} and {@code -}. */
-        NAME,
-        /** One file path, everything up to the group's {@code )}, blanks around it trimmed. */
-        PATH,
-        /** {@code key=number} pairs of {@link #KEYS}, each at least 0 (ior at least 1), each key at most once. */
-        PROPERTIES,
-        /** A word, a blank and numbers separated by {@code |}: {@code scale 2}, {@code translate 0|1|0}. */
-        STEP
+        NUMBERS, POSITIVE, AT_LEAST_ZERO, ANGLE, SAMPLES, COLOUR, PAINT, DIRECTION, VIEW, NAME, PATH, PROPERTIES, STEP
     }
 
     /** A group of numbers written as {@code shape}, such as {@code x|y|z}; their count is the shape's. */
@@ -64,7 +39,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         return new Group(meaning, rule, shape, 1, null);
     }
 
-    /** What the group holds, for messages: "3 numbers (x|y|z)", "a name". */
+    /** For messages: "3 numbers (x|y|z)", "a name". */
     String contents() {
         return switch (rule) {
             case NAME -> "a name";
@@ -80,12 +55,12 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         return "the " + meaning + " of '" + statement.keyword() + "'";
     }
 
-    /** Checks this group's values, group {@code g} of {@code v}, by its rule: an error at the first that breaks it. */
+    /** Checks group {@code g} of {@code v} by this rule: an error at the first value that breaks it. */
     void check(StatementValues v, int g) throws StatementError {
         switch (rule) {
             case NAME, PATH -> { }
             case COLOUR, PAINT -> {
-                for (int k = 0; k < 3 && g != v.patternGroup(); k++) {
+                for (int k = 0; k < 3 && g != v.patternGroup; k++) {
                     channel(v, g, k);
                 }
             }
@@ -108,7 +83,6 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         }
     }
 
-    /** The rule of a group of finite numbers, the first {@code value}. */
     private void checkNumbers(StatementValues v, int g, float value) throws StatementError {
         switch (rule) {
             case POSITIVE -> {
@@ -146,7 +120,6 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         }
     }
 
-    /** Number {@code k}, which must be finite (not NaN, not infinite, not beyond a float's range). */
     private float finite(StatementValues v, int g, int k) throws StatementError {
         float value = v.number(g, k);
         if (Float.isFinite(value)) {
@@ -181,23 +154,23 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
                 : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
     }
 
-    /** A direction, or a point to look at from the camera's position in group 0. */
+    /** A direction, or a point to look at from the camera's position in group 0: one float can normalise. */
     private void direction(StatementValues v, int g) throws StatementError {
-        boolean target = v.isTarget(g);
+        boolean target = v.target == g;
         Vector3f from = v.vector(0);
         String why = unusable(target ? v.vector(g).subtract(from) : v.vector(g));
         String text = IntStream.range(0, 3).mapToObj(k -> v.written(g, k))
                 .collect(Collectors.joining("|", target ? "(at " : "(", ")"));
-        if (ZERO.equals(why) && target) {
+        if ("zero".equals(why) && target) {
             throw v.errorAtValue(g, 0, "the camera cannot look at its own position " + text, "give a point in front of "
                     + "the camera: (at " + plain(from.x()) + "|" + plain(from.y()) + "|" + plain(from.z() - 1)
                     + ") looks along -z");
         }
-        if (ZERO.equals(why)) {
+        if ("zero".equals(why)) {
             throw v.errorAtValue(g, 0, "the " + meaning + " must not be zero, found " + text, help);
         }
         if (why != null && target) {
-            throw v.errorAtValue(g, 0, "the point " + text + " is too " + (LONG.equals(why) ? "far from" : "near")
+            throw v.errorAtValue(g, 0, "the point " + text + " is too " + ("long".equals(why) ? "far from" : "near")
                     + " the camera's position to compute the view direction in float",
                     "give a point at a distance near 1 to 1000 from the camera");
         }
@@ -207,16 +180,13 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         }
     }
 
-    private static final String ZERO = "zero";
-    private static final String LONG = "long";
-
     /** Why float cannot normalise {@code d}, whose coordinates are finite: "zero", "long" or "short"; else null. */
     static String unusable(Vector3f d) {
         float squared = d.dot(d);
         if (d.x() == 0 && d.y() == 0 && d.z() == 0) {
-            return ZERO;
+            return "zero";
         }
-        return Float.isInfinite(squared) ? LONG : squared < Float.MIN_NORMAL ? "short" : null;
+        return Float.isInfinite(squared) ? "long" : squared < Float.MIN_NORMAL ? "short" : null;
     }
 
     /** "the radius must be greater than 0, found -1" at number {@code k} of group {@code g}. */

@@ -1,17 +1,15 @@
 package rtd.io;
 
 /**
- * Reads the groups {@code :(…)} of a statement into its {@link StatementValues}, as its {@link Group}s say, at
- * the {@link LineCursor} it shares with the {@link StatementReader}: the paper's numbers, and the words of Part
- * III where numbers may stand (a pattern's name as an object's colour, {@code (tiles)}; a transformation's
- * step, {@code (rotate_y 30)}). Each mistake is worded at its place, with the usage or a hint.
+ * Reads a statement's groups {@code :(…)} into its {@link StatementValues} as its {@link Group}s say: the
+ * paper's numbers, and Part III's words where numbers may stand ({@code (tiles)}, {@code (rotate_y 30)}).
+ * Each mistake is worded at its place, with the usage or a hint.
  */
 final class GroupReader {
 
     private final LineCursor cursor;
     private final StatementValues values;
     private final NumberReader numbers;
-    /** The statement whose group is being read, and the group. */
     private Statement statement;
     private Group group;
 
@@ -21,20 +19,12 @@ final class GroupReader {
         this.numbers = new NumberReader(cursor, names, values);
     }
 
-    /** Reads {@code group} of {@code statement}, {@code :(…)}, into the values. */
     void readGroup(Statement statement, Group group) throws StatementError {
         this.statement = statement;
         this.group = group;
-        cursor.skipBlanks();
-        if (!cursor.at(':')) {
-            throw expected("':' before ");
-        }
-        cursor.pos++;
-        cursor.skipBlanks();
-        if (!cursor.at('(')) {
-            throw expected("'(' to start ");
-        }
-        int groupStart = cursor.pos++;
+        pass(':', "':' before ");
+        pass('(', "'(' to start ");
+        int groupStart = cursor.pos - 1;
         values.openGroup(groupStart);
         cursor.skipBlanks();
         if (cursor.at(')') && group.rule() == Group.Rule.PROPERTIES) {
@@ -45,7 +35,7 @@ final class GroupReader {
             throw groupError(groupStart, "empty group: " + group.of(statement) + " needs " + group.contents());
         }
         boolean patternName = group.rule() == Group.Rule.PAINT && atLoneName();
-        values.named = patternName ? values.groupCount() - 1 : values.named;
+        values.patternGroup = patternName ? values.groupCount() - 1 : values.patternGroup;
         switch (patternName ? Group.Rule.NAME : group.rule()) {
             case NAME -> readName();
             case PATH -> readPath();
@@ -57,10 +47,7 @@ final class GroupReader {
         }
     }
 
-    /**
-     * Numbers separated by '|', up to and with the group's ')': perhaps {@code (at x|y|z)}; each after its key and
-     * '=' in properties; as many as a step's word takes.
-     */
+    /** Numbers separated by '|' up to and with the ')': perhaps {@code (at x|y|z)}, or each after a key and '='. */
     private void readNumbers(int groupStart) throws StatementError {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
@@ -117,7 +104,6 @@ final class GroupReader {
         }
     }
 
-    /** A name of letters, digits, '_' and '-', then blanks and the group's ')'. */
     private void readName() throws StatementError {
         int start = cursor.pos;
         cursor.pos = afterName(start);
@@ -135,7 +121,7 @@ final class GroupReader {
         cursor.pos++;
     }
 
-    /** The offset after the name (letters, digits, '_' and '-') that starts at {@code from}; {@code from} if none does. */
+    /** The offset after the name (letters, digits, '_' and '-') from {@code from}; {@code from} if none. */
     private int afterName(int from) {
         int p = from;
         while (p < cursor.bytes.length && (TextBytes.isWordByte(cursor.bytes[p]) || cursor.bytes[p] == '-')) {
@@ -172,7 +158,7 @@ final class GroupReader {
         throw expected("'|' or ')' after a number in ");
     }
 
-    /** A key of a properties group and its '=': the key's index in {@link Group#KEYS}; known and not given before. */
+    /** A property's key and its '=': the key's index in {@link Group#KEYS}. */
     private int readKey() throws StatementError {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
@@ -189,27 +175,32 @@ final class GroupReader {
         if (values.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
         }
-        cursor.skipBlanks();
-        if (!cursor.at('=')) {
-            throw expected("'=' after the key '" + word + "' in ");
-        }
-        cursor.pos++;
+        pass('=', "'=' after the key '" + word + "' in ");
         cursor.skipBlanks();
         return key;
+    }
+
+    /** Goes past blanks and {@code c}, which must stand there. */
+    private void pass(char c, String what) throws StatementError {
+        cursor.skipBlanks();
+        if (!cursor.at(c)) {
+            throw expected(what);
+        }
+        cursor.pos++;
     }
 
     /** Too many numbers in a group; on a line with too few groups the hint says this group was likely left out. */
     private StatementError tooManyNumbers(int groupStart) {
         String message = "too many numbers in " + group.of(statement) + ": it takes " + group.contents();
-        int g = statement.groups().indexOf(group);
-        if (g < 0 || groupsOnTheLineFrom(groupStart) >= statement.groups().size() - g) {
+        // only a statement's own groups hold counted numbers, so the group is one of them
+        if (groupsOnTheLineFrom(groupStart) >= statement.groups().size() - (values.groupCount() - 1)) {
             return groupError(numbers.tokenStart, message);
         }
         return cursor.error(numbers.tokenStart, message, "this line has fewer groups than '" + statement.keyword()
                 + "' takes: was the " + group.meaning() + " left out before this group? write it as " + statement.usage());
     }
 
-    /** The groups that open on the line from {@code offset} on, up to its end or a comment: a count for a hint only. */
+    /** The groups that open from {@code offset} to the line's end or comment, for a hint only. */
     private int groupsOnTheLineFrom(int offset) {
         int groups = 0;
         byte[] bytes = cursor.bytes;
@@ -222,7 +213,7 @@ final class GroupReader {
         return groups;
     }
 
-    /** "expected {@code what} the centre of 'sphere', found …" at the cursor, with the statement's usage as the help. */
+    /** "expected {@code what} the centre of 'sphere', found …" at the cursor, with the usage as the help. */
     private StatementError expected(String what) {
         return groupError(cursor.pos, "expected " + what + group.of(statement) + ", found " + cursor.describe(cursor.pos));
     }

@@ -1,10 +1,8 @@
 package rtd.io;
 
 /**
- * Where a reader of a scene file stands: the byte being read, the line it is on and where that line
- * starts, with the moves over the bytes that the statement, group and expression readers share (look at
- * a byte, skip blanks, go to the next line) and an error at a place on the line. One cursor is shared by
- * them, so that all see one position.
+ * Where the readers of a scene file stand, shared so that the statement, group and expression readers see one
+ * position: the byte, its line and the line's start; the moves over the bytes, and an error at a place.
  */
 final class LineCursor {
 
@@ -16,7 +14,6 @@ final class LineCursor {
     int line = 1;
     int lineStart;
 
-    /** A cursor at byte {@code start} of {@code source}, the start of its first line. */
     LineCursor(SourceText source, int start) {
         this.source = source;
         this.bytes = source.bytes();
@@ -39,7 +36,7 @@ final class LineCursor {
         return bytes[pos] == ':' && after < bytes.length && bytes[after] == '(';
     }
 
-    /** Whether the cursor is at the end of the file, of the line, or at a {@code //} comment. */
+    /** Whether the cursor is at the end of the file or line, or at a {@code //} comment. */
     boolean atEndOfStatement() {
         return pos >= bytes.length || TextBytes.isLineBreak(bytes[pos])
                 || pos + 1 < bytes.length && bytes[pos] == '/' && bytes[pos + 1] == '/';
@@ -50,7 +47,6 @@ final class LineCursor {
         pos = afterSpaces(pos);
     }
 
-    /** The first offset from {@code from} on that is no space or tab (a carriage return ends a line). */
     int afterSpaces(int from) {
         int p = from;
         while (p < bytes.length && TextBytes.isSpace(bytes[p])) {
@@ -59,7 +55,7 @@ final class LineCursor {
         return p;
     }
 
-    /** The offset after the word (letters, digits, '_') that starts at {@code from}; {@code from} if none does. */
+    /** The offset after the word (letters, digits, '_') from {@code from}; {@code from} if none. */
     int afterWord(int from) {
         int p = from;
         while (p < bytes.length && TextBytes.isWordByte(bytes[p])) {

@@ -15,11 +15,9 @@ import rtd.math.Matrix4;
 import rtd.scene.Light;
 
 /**
- * What the statements of a scene file make, as {@link StatementReader} reads them (each builder of the
- * {@link Grammar} gives its values here), before {@link SceneFile} checks what only the whole file can tell:
- * the objects, each {@code ambient}, camera and definition of a name with its place (a scene may have
- * only one of each, or one per name), the objects that wait for a name defined further down, and the
- * mistakes found.
+ * What the statements of a scene file make, as the {@link Grammar}'s builders give it, with the places that
+ * {@link SceneFile} needs to check what only the whole file tells (one camera, one definition per name); the
+ * objects that wait for a name defined further down; the mistakes found.
  */
 final class SceneContents {
 
@@ -27,10 +25,7 @@ final class SceneContents {
     record Located<T>(T value, SceneError place) {
     }
 
-    /**
-     * A name's definition at {@code place} (its name's): a {@link Material}, {@link Pattern} or {@link Matrix4}
-     * as {@code kind} says; a pattern may name its {@code transform} (else null) at {@code transformPlace}.
-     */
+    /** A name's {@link Material}, {@link Pattern} or {@link Matrix4}; a pattern may name its transform (else null). */
     record Definition(String name, String kind, Object value, SceneError place, String transform,
             SceneError transformPlace) {
     }
@@ -65,18 +60,12 @@ final class SceneContents {
     int lineNumbers;
     /** Where {@link #object} puts objects: {@link #objects}, or the list a pending object is built into. */
     private List<IGeometry> into;
-    /** The values of the statement being built, for the places of what it makes. */
-    private StatementValues values;
+    /** The values of the statement being built, which the reader refills, for the places of what it makes. */
+    StatementValues values;
 
-    /** Contents for about {@code expectedObjects} objects; more are fine. */
     SceneContents(int expectedObjects) {
         objects = new ArrayList<>(expectedObjects);
         into = objects;
-    }
-
-    /** Takes the places of what statements make from {@code values}, which the reader fills. */
-    void readFrom(StatementValues values) {
-        this.values = values;
     }
 
     /** Keeps an object that names a material not known yet, at its place among the objects, for {@link #allObjects}. */
@@ -91,12 +80,7 @@ final class SceneContents {
         }
     }
 
-    /**
-     * Once every line is read: every object in file order, those that name a material, pattern or transform
-     * built now with {@code names}; the names they use go to {@code named}. A name that is unknown or of the
-     * wrong kind is an error (unless its definition is broken, which is reported already); the statement is
-     * still checked.
-     */
+    /** Every object in file order, the pending ones built now with {@code names}, which go to {@code named}. */
     List<IGeometry> allObjects(DefinedNames names, Set<String> named) {
         if (pending.isEmpty()) {
             return objects;
@@ -107,12 +91,10 @@ final class SceneContents {
             all.addAll(objects.subList(next, object.index()));
             next = object.index();
             int before = errors.size();
-            DefinedNames.ObjectNames resolved = names.of(object.values(), errors);
-            named.addAll(resolved.names());
             values = object.values();
-            values.useNames(resolved);
-            // with a name not right, the object is only checked
-            into = errors.size() > before ? new ArrayList<>() : all;
+            values.names = names.of(values, errors);
+            named.addAll(values.names.names());
+            into = errors.size() > before ? new ArrayList<>() : all; // with a name not right, only checked
             try {
                 values.build(this);
             } catch (StatementError e) {
@@ -144,24 +126,17 @@ final class SceneContents {
 
     /** One object, at the statement's place among the objects. */
     void object(IGeometry object) {
-        IGeometry dressed = values.dress(object);
+        IGeometry dressed = values.names.dress(object);
         into.add(dressed);
         recorder().part(dressed, values);
     }
 
     /** Several objects, in order, at the statement's place: a mesh's triangles. */
     void objects(List<IGeometry> more) {
-        for (IGeometry object : more) {
-            into.add(values.dress(object));
-        }
+        more.forEach(object -> into.add(values.names.dress(object)));
         recorder().unwritten(values);
     }
 
-    void material(String name, Material material) {
-        define(name, "material", material, null);
-    }
-
-    /** A pattern; its transform's name (or null) is resolved when the file is read. */
     void pattern(String name, Pattern pattern, String transform) {
         define(name, "pattern", pattern, transform);
     }
@@ -170,7 +145,8 @@ final class SceneContents {
         define(name, "transform", transform, null);
     }
 
-    private void define(String name, String kind, Object value, String transform) {
+    /** A material, pattern or transform, as {@code kind} says; a pattern may name a transform (else null). */
+    void define(String name, String kind, Object value, String transform) {
         SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
         definitions.add(new Definition(name, kind, value, values.placeOfValue(0, 0), transform, transformPlace));
         if (value instanceof Material material) {
@@ -179,7 +155,7 @@ final class SceneContents {
         recorder().unwritten(values);
     }
 
-    /** Where the numbers that use the clock are noted, for {@link SceneFile#withClock}. */
+    /** Where the numbers that use the clock are noted. */
     private ClockedScene.Recorder recorder() {
         return values.expressionNames.recorder;
     }

@@ -4,17 +4,13 @@ import java.util.List;
 import java.util.stream.Collectors;
 
 /**
- * One statement of the {@link Grammar}: its keyword, its groups, the optional groups that may follow them
- * (an object's material and transform, Part II's "Light" and Part III's "Transformations"; a
- * transformation's further steps), and how it builds its value. {@link StatementReader} reads any statement
- * from this alone.
- *
- * @param optional    the groups that may follow {@code groups}, in this order, each at most once
- * @param repeatsLast whether the last optional group may follow any number of times
+ * One statement of the {@link Grammar}: its keyword, its groups, the optional groups that may follow them in
+ * order, each once unless {@code repeatsLast} lets the last repeat (an object's material and transform; a
+ * transformation's steps), and how it builds its value. {@link StatementReader} reads any statement from this.
  */
 record Statement(String keyword, List<Group> groups, List<Group> optional, boolean repeatsLast, Builder builder) {
 
-    /** The optional groups of an object, in either order: the names of a {@code material:} and a {@code transform:}. */
+    /** The optional groups of an object: the names of a {@code material:} and a {@code transform:}. */
     static final Group MATERIAL = Group.word("material", Group.Rule.NAME, "material");
     static final Group TRANSFORM = Group.word("transform", Group.Rule.NAME, "transform");
 
@@ -23,7 +19,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return new Statement(keyword, groups, List.of(MATERIAL, TRANSFORM), false, builder);
     }
 
-    /** A statement that sets something of the scene (its background, camera, a light, a material): no optional group. */
+    /** A statement that sets something of the scene (a camera, a light, a material): no optional group. */
     static Statement setting(String keyword, List<Group> groups, Builder builder) {
         return new Statement(keyword, groups, List.of(), false, builder);
     }
@@ -33,17 +29,13 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
         return !optional.isEmpty() && optional.get(0) == MATERIAL;
     }
 
-    int mostOptional() {
-        return repeatsLast ? Integer.MAX_VALUE : optional.size();
-    }
-
     /** Group {@code g} of the statement as written: its own groups, then the optional ones. */
     Group group(int g) {
         int own = groups.size();
         return g < own ? groups.get(g) : optional.get(Math.min(g - own, optional.size() - 1));
     }
 
-    /** Checks what only several groups together tell (each group's own rule is checked before) and gives its value. */
+    /** Checks what only several groups together tell (each group's rule is checked before) and gives its value. */
     @FunctionalInterface
     interface Builder {
         void build(StatementValues values, SceneContents out) throws StatementError;
@@ -56,7 +48,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
                 + (repeatsLast ? "…" : "");
     }
 
-    /** How many groups it takes, for "too many groups: 'sphere' takes 3, or up to 5 with a material and a transform". */
+    /** For "too many groups: 'sphere' takes 3, or up to 5 with a material and a transform". */
     String groupCount() {
         if (optional.isEmpty()) {
             return String.valueOf(groups.size());

@@ -12,15 +12,11 @@ final class StatementError extends Exception {
     final transient SceneError place;
     final transient List<SceneError> errors;
 
-    /** One error, which is also where it is ordered. */
     StatementError(SceneError error) {
         this(error, List.of(error));
     }
 
-    /**
-     * Several errors, ordered among the scene's errors as if they stood at {@code place}; none for a statement
-     * left out because of a mistake reported elsewhere (a broken {@code let} it uses).
-     */
+    /** Errors ordered as if at {@code place}; none for a statement left out for a mistake reported elsewhere. */
     StatementError(SceneError place, List<SceneError> errors) {
         super(errors.isEmpty() ? place.message() : errors.get(0).message(), null, false, false);
         this.place = place;

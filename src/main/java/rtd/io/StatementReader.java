@@ -5,10 +5,9 @@ import java.util.stream.IntStream;
 import rtd.geometry.Material;
 
 /**
- * Reads each line of a scene file, {@code keyword:(group):(group)…}, into the {@link SceneContents}: its
- * keyword and what follows its groups; its {@link GroupReader} reads the groups. Each mistake becomes an
- * error at its place and reading goes on with the next line. An object that names a material defined further
- * down waits until the whole file is read.
+ * Reads each line of a scene file, {@code keyword:(group):(group)…}, into the {@link SceneContents}; its
+ * {@link GroupReader} reads the groups. Each mistake becomes an error at its place and reading goes on with the
+ * next line. An object that names a material defined further down waits until the whole file is read.
  */
 final class StatementReader {
 
@@ -16,19 +15,18 @@ final class StatementReader {
     private final GroupReader groupReader;
     private final StatementValues values;
     private final SceneContents contents;
-    /** Where the statement being read starts, for a later message about it. */
     private int statementStart;
     private Statement current;
-    /** Whether the line being read is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
+    /** Whether the line is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
     private boolean inBlockComment;
 
-    /** A reader of {@code source} from byte {@code start} (after a byte-order mark) into {@code contents}. */
+    /** A reader of {@code source} from byte {@code start} (after a byte-order mark). */
     StatementReader(SourceText source, int start, SceneContents contents, Names names) {
         this.cursor = new LineCursor(source, start);
         this.values = new StatementValues(source, names);
         this.groupReader = new GroupReader(cursor, values, names);
         this.contents = contents;
-        contents.readFrom(values);
+        contents.values = values;
     }
 
     /** Reads every line, until the end or one error past {@link SceneException#MAX_ERRORS}. */
@@ -44,8 +42,6 @@ final class StatementReader {
         }
         cursor.release();
     }
-
-    // ---- one statement ------------------------------------------------------------------
 
     private void readStatement() throws StatementError {
         current = null;
@@ -69,7 +65,8 @@ final class StatementReader {
         }
         cursor.skipBlanks();
         int optional = 0;
-        while (optional < statement.mostOptional() && cursor.at(':')) {
+        int most = statement.repeatsLast() ? Integer.MAX_VALUE : statement.optional().size();
+        while (optional < most && cursor.at(':')) {
             groupReader.readGroup(statement, statement.group(own + optional++));
             cursor.skipBlanks();
         }
@@ -80,23 +77,19 @@ final class StatementReader {
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
         }
-        if (statement.takesMaterial() && (optional > 0 || values.patternGroup() >= 0)) {
-            String name = values.name(own);
-            Material above = optional == 1 && values.patternGroup() < 0 ? contents.materials.get(name) : null;
+        if (statement.takesMaterial() && (optional > 0 || values.patternGroup >= 0)) {
+            Material above = optional == 1 && values.patternGroup < 0 ? contents.materials.get(values.name(own)) : null;
             if (above == null) {
                 contents.addPending(values); // its names are resolved when the whole file is read
                 return;
             }
-            contents.namedAtOnce.add(name);
-            values.useNames(new DefinedNames.ObjectNames(above, null, null, List.of()));
+            contents.namedAtOnce.add(values.name(own));
+            values.names = new DefinedNames.ObjectNames(above, null, null, List.of());
         }
         values.build(contents);
     }
 
-    /**
-     * After a mistake in a {@code material:} or {@code let:} whose name was read, keeps the name: objects and
-     * expressions that use it are not also told it is unknown.
-     */
+    /** After a mistake in a definition whose name was read, keeps the name: its users are not told it is unknown. */
     private void keepNameOfBrokenDefinition() {
         if (current != null && current.keyword().equals(Grammar.LET)) {
             Names.brokenLet(values);
@@ -106,10 +99,7 @@ final class StatementReader {
         }
     }
 
-    /**
-     * Reads the keyword: its statement, or null for a line of only a line number (as in the paper's listing,
-     * noted once in the contents; a statement after it is read as if it were not there).
-     */
+    /** The keyword's statement, or null for a line of only a line number (as in the paper; noted, then skipped). */
     private Statement readKeyword(boolean afterLineNumber) throws StatementError {
         statementStart = cursor.pos;
         cursor.pos = cursor.afterWord(statementStart);
@@ -130,7 +120,7 @@ final class StatementReader {
         return cursor.atEndOfStatement() ? null : readKeyword(true);
     }
 
-    /** Whether the word from {@link #statementStart} to the cursor is a line number: digits, then a blank or the end. */
+    /** Whether the word from {@link #statementStart} to the cursor is digits, then a blank or the end. */
     private boolean atLineNumber() {
         boolean digits = IntStream.range(statementStart, cursor.pos).allMatch(i -> Character.isDigit(cursor.bytes[i]));
         return digits && (cursor.atEndOfStatement() || TextBytes.isSpace(cursor.bytes[cursor.pos]));
@@ -168,12 +158,7 @@ final class StatementReader {
                 ? "one statement per line: start a new line before '" + statement.keyword() + "'" : null;
     }
 
-    // ---- comments as other languages write them ---------------------------------------------
-
-    /**
-     * The help at a comment as other languages write it, {@code #} or {@code /*}, or null; a {@code /*} that does
-     * not end on this line makes the reader skip the lines up to its end.
-     */
+    /** The help at a comment as other languages write it ({@code #}, {@code /*}), or null; a {@code /*} is skipped. */
     private String commentHelp() {
         boolean block = cursor.pos + 1 < cursor.bytes.length && cursor.bytes[cursor.pos] == '/'
                 && cursor.bytes[cursor.pos + 1] == '*';

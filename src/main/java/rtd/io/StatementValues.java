@@ -2,16 +2,14 @@ package rtd.io;
 
 import java.util.Arrays;
 import java.util.stream.IntStream;
-import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
  * The values of the statement being read, group by group, each with where it is written (section 4.1; Part
- * II, "The scene file"). {@link #build} checks each group by its {@link Group}'s rule before the builder reads
- * them, so a builder reads only values that follow the rules. One is filled for every line, so that a line of
- * numbers makes no object per number.
+ * II, "The scene file"). {@link #build} checks each group's rule first, so a builder reads only values that
+ * follow the rules. One is refilled for every line, so that a line makes no object per number.
  */
 final class StatementValues {
 
@@ -22,8 +20,8 @@ final class StatementValues {
     private int line;
     private int lineStart;
     private int statementStart;
-    /** What the object's names mean, once known: its material, pattern and transform. */
-    private DefinedNames.ObjectNames names = DefinedNames.ObjectNames.NONE;
+    /** What the object's names mean, once known: its material, pattern and transform; it dresses each object. */
+    DefinedNames.ObjectNames names = DefinedNames.ObjectNames.NONE;
     // Each value: its number (NaN for a word), where it is written, its property's index in Group.KEYS (or −1),
     // and for an expression its tree and its value in double precision (else null and unset).
     private float[] values = new float[16];
@@ -41,7 +39,7 @@ final class StatementValues {
     /** The group written {@code (at x|y|z)}, a point to look at, or −1. */
     int target = -1;
     /** The group that holds a pattern's name where an object's colour stands, or −1. */
-    int named = -1;
+    int patternGroup = -1;
 
     StatementValues(SourceText source, Names expressionNames) {
         this.source = source;
@@ -62,7 +60,7 @@ final class StatementValues {
         count = 0;
         groupCount = 0;
         target = -1;
-        named = -1;
+        patternGroup = -1;
     }
 
     /** An independent copy, its arrays just long enough, for an object built when the whole file is read. */
@@ -81,7 +79,7 @@ final class StatementValues {
         copy.count = count;
         copy.groupCount = groupCount;
         copy.target = target;
-        copy.named = named;
+        copy.patternGroup = patternGroup;
         return copy;
     }
 
@@ -95,7 +93,7 @@ final class StatementValues {
         opens[groupCount++] = offset;
     }
 
-    /** Keeps a value of the current group, written at {@code bytes[start, end)}: a word is NaN; its key or −1. */
+    /** Keeps a value of the current group, written at {@code [start, end)}: a word is NaN; its key or −1. */
     void add(float value, int start, int end, int key) {
         if (count == values.length) {
             values = Arrays.copyOf(values, 2 * count);
@@ -122,21 +120,12 @@ final class StatementValues {
         return IntStream.range(firsts[groupCount - 1], count).anyMatch(i -> keys[i] == key);
     }
 
-    /** Checks each group by its rule (an error at the first value that breaks one), then builds into {@code out}. */
+    /** Checks each group by its rule, then builds into {@code out}. */
     void build(SceneContents out) throws StatementError {
         for (int g = 0; g < groupCount; g++) {
             statement.group(g).check(this, g);
         }
         statement.builder().build(this, out);
-    }
-
-    void useNames(DefinedNames.ObjectNames names) {
-        this.names = names;
-    }
-
-    /** The object as its names make it ({@link DefinedNames.ObjectNames#dress}): every shape's object passes here. */
-    IGeometry dress(IGeometry object) {
-        return names.dress(object);
     }
 
     /** The finish of the object: the material its last group names, or {@link Material#DEFAULT}. */
@@ -156,7 +145,6 @@ final class StatementValues {
         return source;
     }
 
-    /** How many groups were read, the optional ones among them. */
     int groupCount() {
         return groupCount;
     }
@@ -166,26 +154,15 @@ final class StatementValues {
         return end(g) - firsts[g];
     }
 
-    /** The group that names a pattern in the place of an object's colour, or −1. */
-    int patternGroup() {
-        return named;
-    }
-
     boolean anyExpression() {
         return anyExpression;
     }
 
-    /** Whether group {@code g} has been opened and holds a value (a name, a number) yet. */
+    /** Whether group {@code g} has been opened and holds a value yet. */
     boolean hasValue(int g) {
         return g < groupCount && end(g) > firsts[g];
     }
 
-    /** Whether group {@code g} was written {@code (at x|y|z)}, a point to look at. */
-    boolean isTarget(int g) {
-        return target == g;
-    }
-
-    /** The numbers of group {@code g} as read, for the table of the numbers that use the clock. */
     float[] numbers(int g) {
         return Arrays.copyOfRange(values, firsts[g], end(g));
     }
@@ -199,7 +176,6 @@ final class StatementValues {
         return written(firsts[g]);
     }
 
-    /** The number {@code k} of group {@code g} as written, for messages. */
     String written(int g, int k) {
         return written(firsts[g] + k);
     }
@@ -224,7 +200,7 @@ final class StatementValues {
     }
 
     Color colour(int g) {
-        if (g == named) {
+        if (g == patternGroup) {
             return names.colour(); // the object's colour is its pattern's: see dress
         }
         return new Color((int) channel(g, 0), (int) channel(g, 1), (int) channel(g, 2));
@@ -241,7 +217,6 @@ final class StatementValues {
         return keys[firsts[g] + k];
     }
 
-    /** An error at the '(' of group {@code g}. */
     StatementError errorAtGroup(int g, String message, String help) {
         return errorAt(opens[g], message, help);
     }
@@ -265,7 +240,6 @@ final class StatementValues {
         return new StatementError(source.errorAt(line, lineStart, offset, message, help));
     }
 
-    /** The index after the last value of group {@code g}. */
     private int end(int g) {
         return g + 1 < groupCount ? firsts[g + 1] : count;
     }
