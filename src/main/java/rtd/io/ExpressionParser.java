@@ -6,8 +6,8 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Reads one expression of a scene file into an {@link Expression} tree, by recursive descent: one method per
- * level of the grammar, the loosest first (Part III, "Expressions, named values and the clock"):
+ * Reads one expression of a scene file into an {@link Expression} tree by recursive descent, one method per level
+ * of the grammar (Part III, "Expressions, named values and the clock"):
  *
  * <pre>
  * sum     = product { ("+" | "-") product }
@@ -17,9 +17,7 @@ import java.util.Locale;
  * atom    = number | name | function "(" sum { "," sum } ")" | "(" sum ")"
  * </pre>
  *
- * It reads at the {@link LineCursor} and stops before the first byte that cannot go on the expression (a
- * {@code |} or the group's {@code )}); each mistake is an error at its place, with "did you mean …?" for a
- * misspelt name or function.
+ * It stops before the first byte that cannot go on the expression (a {@code |} or the group's {@code )}).
  */
 final class ExpressionParser {
 
@@ -39,7 +37,6 @@ final class ExpressionParser {
         this.names = names;
     }
 
-    /** Reads an expression from the cursor on; the cursor is left after it. */
     Expression read() throws StatementError {
         depth = 0;
         operators = 0;
@@ -123,7 +120,6 @@ final class ExpressionParser {
                 + cursor.describe(cursor.pos), atGroupEnd ? "an operator needs a number on either side" : null);
     }
 
-    /** Digits with an optional point and exponent, read as a double. */
     private Expression number() throws StatementError {
         int start = cursor.pos;
         while (isDigitOrPoint(next())) {
@@ -151,7 +147,6 @@ final class ExpressionParser {
         }
     }
 
-    /** A word: a function if '(' follows it, else a name. */
     private Expression nameOrCall() throws StatementError {
         int start = cursor.pos;
         int end = cursor.afterWord(start);
@@ -177,7 +172,6 @@ final class ExpressionParser {
         return name;
     }
 
-    /** The arguments of {@code function}, from its '(' to its ')': as many as it takes. */
     private Expression call(Expression.Function function, int start) throws StatementError {
         int open = cursor.pos++;
         List<Expression> arguments = new ArrayList<>(List.of(sum()));
@@ -236,7 +230,7 @@ final class ExpressionParser {
                 <= Math.max(1, word.length() / 3) ? nearest : null;
     }
 
-    /** Passes the operator at the cursor and answers where it stands; one too many is a mistake. */
+    /** Passes the operator at the cursor and answers where it stands. */
     private int operator() throws StatementError {
         if (++operators > MAX_OPERATORS) {
             throw cursor.error(cursor.pos, "the expression is too long: more than " + MAX_OPERATORS + " operators",
@@ -245,7 +239,7 @@ final class ExpressionParser {
         return cursor.pos++;
     }
 
-    /** The byte at the cursor; 0, which starts nothing, at the end of the file. */
+    /** 0, which starts nothing, at the end of the file. */
     private byte next() {
         return cursor.pos < cursor.bytes.length ? cursor.bytes[cursor.pos] : 0;
     }

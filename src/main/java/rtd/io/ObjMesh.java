@@ -19,8 +19,7 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The triangles of the OBJ file a {@code mesh} names (Part II, "Geometry"): found and read by {@link #read}
- * through {@link ObjReader}, placed in the scene by {@link #triangles}. The arrays are never changed, so the
+ * The triangles of the OBJ file a {@code mesh} names (Part II, "Geometry"). The arrays are never changed, so the
  * frames of an animation share one mesh.
  *
  * @param vertices      x, y, z of each vertex
@@ -31,18 +30,12 @@ import rtd.math.Vector3f;
  */
 record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNormals, int count) {
 
-    /**
-     * How many triangles share one array of numbers: 442 KiB, under half of G1's smallest region, so that it
-     * is not "humongous" (put straight into the old generation).
-     */
+    /** Triangles per array of numbers: 442 KiB, under half of G1's smallest region, so not "humongous". */
     private static final int BLOCK = 1 << 12;
     /** Larger files do not fit in one Java array. */
     private static final long MAX_FILE_SIZE = Integer.MAX_VALUE - 8;
 
-    /**
-     * The triangles, in order, each corner p moved to {@code scale·p + shift}; one whose corners all name
-     * normals is smooth.
-     */
+    /** The triangles, in order, each corner p moved to {@code scale·p + shift}. */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];
         Vector3f[] normalVectors = normalVectors();
@@ -57,7 +50,6 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         return Arrays.asList(triangles);
     }
 
-    /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */
     private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
             Vector3f[] normalVectors) {
         TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
@@ -75,7 +67,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                 scale * vertices[3 * vertex + 2] + shift.z());
     }
 
-    /** Each normal as a vector, made once and shared by the corners that name it. */
+    /** Made once, shared by the corners that name it. */
     private Vector3f[] normalVectors() {
         Vector3f[] vectors = new Vector3f[normals.length / 3];
         for (int i = 0; i < vectors.length; i++) {
@@ -84,10 +76,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         return vectors;
     }
 
-    /**
-     * The mesh in the OBJ file that group {@code g} names, relative to the scene's folder. A file that cannot
-     * be read is an error at the path; mistakes inside it are located in it, each naming the scene's line.
-     */
+    /** The mesh in the OBJ file that group {@code g} names; each mistake in it names the scene's line too. */
     static ObjMesh read(StatementValues values, int g) throws StatementError {
         SourceText scene = values.source();
         String written = values.name(g);
