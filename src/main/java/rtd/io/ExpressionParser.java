@@ -43,8 +43,12 @@ final class ExpressionParser {
         Expression expression = sum();
         cursor.skipBlanks();
         if (isDigitOrPoint(next()) || isLetter(next()) || cursor.at('(')) { // "2 x", "2(3)": a product needs its '*'
+            int end = cursor.pos;
+            while (end > 0 && TextBytes.isSpace(cursor.bytes[end - 1])) {
+                end--;
+            }
             throw cursor.error(cursor.pos, "expected " + OPERATORS + ", '|' or ')' after " + cursor.source.text(
-                    expression.start(), lastNonBlank()) + ", found " + cursor.describe(cursor.pos),
+                    expression.start(), end) + ", found " + cursor.describe(cursor.pos),
                     "a product is written with '*', such as 2*x");
         }
         return expression;
@@ -239,18 +243,9 @@ final class ExpressionParser {
         return cursor.pos++;
     }
 
-    /** 0, which starts nothing, at the end of the file. */
+    /** The byte at the cursor, or 0 (which starts nothing) at the end of the file. */
     private byte next() {
         return cursor.pos < cursor.bytes.length ? cursor.bytes[cursor.pos] : 0;
-    }
-
-    /** The end of the expression read so far, before the blanks after it. */
-    private int lastNonBlank() {
-        int end = cursor.pos;
-        while (end > 0 && TextBytes.isSpace(cursor.bytes[end - 1])) {
-            end--;
-        }
-        return end;
     }
 
     static boolean isLetter(byte b) {

@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
@@ -89,9 +88,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (InvalidPathException e) {
             throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
         }
-        Map<Path, ObjMesh> cache = scene.meshes();
-        Path key = cache == null ? null : file.toAbsolutePath().normalize();
-        ObjMesh mesh = cache == null ? null : cache.get(key);
+        Path key = file.toAbsolutePath().normalize();
+        ObjMesh mesh = scene.meshes().get(key); // a scene's text always has its table of meshes; an OBJ file's has none
         if (mesh != null) {
             return mesh;
         }
@@ -120,9 +118,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                     "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
                             + "skipped too; a mesh needs at least one face");
         }
-        if (cache != null) {
-            cache.put(key, mesh);
-        }
+        scene.meshes().put(key, mesh);
         return mesh;
     }
 
