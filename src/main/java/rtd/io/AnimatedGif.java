@@ -105,7 +105,7 @@ public final class AnimatedGif implements AutoCloseable {
         }
     }
 
-    /** Added if it has none. */
+    /** The child of {@code root} named {@code name}, added if it has none. */
     private static IIOMetadataNode child(IIOMetadataNode root, String name) {
         if (root.getElementsByTagName(name).getLength() > 0) {
             return (IIOMetadataNode) root.getElementsByTagName(name).item(0);

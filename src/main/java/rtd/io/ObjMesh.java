@@ -66,7 +66,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                 scale * vertices[3 * vertex + 2] + shift.z());
     }
 
-    /** Made once, shared by the corners that name it. */
+    /** Each normal as a vector, made once and shared by the corners that name it. */
     private Vector3f[] normalVectors() {
         Vector3f[] vectors = new Vector3f[normals.length / 3];
         for (int i = 0; i < vectors.length; i++) {
