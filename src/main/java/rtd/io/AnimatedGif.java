@@ -20,13 +20,10 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 import rtd.image.Picture;
 
 /**
- * An animated GIF that loops for ever, written frame by frame through {@code javax.imageio}'s GIF writer
- * (Part III, "Frames on the command line"): each frame waits its delay in hundredths of a second, and the
- * first carries the NETSCAPE2.0 extension that makes players loop. Each frame gets its own palette of 256
- * colours, which the GIF writer builds from the frame's colours (an octree), without dithering: closer to the
- * rendered frames, with less banding and a smaller file, than one palette for the whole animation; a flat
- * scene of few colours keeps its colours exactly. Like every picture rtd writes, the file is written all or
- * nothing ({@link TemporaryFiles}): it replaces the output only in {@link #finish}; closed unfinished, it goes.
+ * An animated GIF that loops for ever (Part III, "Frames on the command line"), written frame by frame, each
+ * waiting its delay; the first carries the NETSCAPE2.0 extension that makes players loop. Each frame gets its own
+ * palette, without dithering: less banding and a smaller file than one palette for all. The file replaces the
+ * output only in {@link #finish}, all or nothing ({@link TemporaryFiles}).
  */
 public final class AnimatedGif implements AutoCloseable {
 
@@ -86,7 +83,6 @@ public final class AnimatedGif implements AutoCloseable {
         started = true;
     }
 
-    /** Ends the GIF and moves it into place. */
     public void finish() throws IOException {
         writer.endWriteSequence();
         stream.flush();

@@ -14,17 +14,11 @@ import java.util.Set;
 import rtd.scene.Scene;
 
 /**
- * A scene read at one clock together with the expressions of its numbers that use the clock (Part III,
- * "Expressions, named values and the clock"), so that an animation can be written as one POV-Ray file whose
- * numbers follow POV-Ray's {@code clock}. The expressions stand beside the scene, in a table from each of its
- * objects and lights (by identity) to its {@link ClockFields}: the shapes themselves hold numbers only.
+ * A scene read at one clock beside the expressions of its numbers that use the clock (Part III, "Expressions,
+ * named values and the clock"), so that an animation can be one POV-Ray file that follows POV-Ray's {@code clock}.
  *
- * @param scene     the scene at the clock it was read at
- * @param ambient   the {@code ambient} statement's numbers that use the clock
- * @param camera    the camera statement's numbers that use the clock
  * @param parts     each object's and light's numbers that use the clock, by identity
- * @param unwritten the statements whose clock the table does not carry (a material, a pattern, a
- *                  transformation, a mesh or an area light that uses the clock, "the 'material' at line 4"): a
+ * @param unwritten the statements that use the clock where the table cannot say ("the 'material' at line 4"): a
  *                  scene with any is to be written frame by frame
  */
 public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera, Map<Object, ClockFields> parts,
@@ -46,19 +40,16 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
     }
 
     /**
-     * The numbers of one statement that use the clock, each as the expression written, found by its group's
-     * meaning as the {@link Grammar} names it and its place in the group: {@code of("centre", 1)} is the y of a
-     * sphere's centre. Every other number of the statement is the same at every clock.
+     * The numbers of one statement that use the clock, found by its group's meaning in the {@link Grammar} and
+     * its place in the group: {@code of("centre", 1)} is the y of a sphere's centre.
      *
      * @param clocked group meaning → its numbers' expressions, null where a number does not use the clock
      * @param values  group meaning → its numbers as read at the reading's clock, for every group (never changed)
      */
     public record ClockFields(Map<String, Expression[]> clocked, Map<String, float[]> values) {
 
-        /** A statement none of whose numbers uses the clock. */
         public static final ClockFields NONE = new ClockFields(Map.of(), Map.of());
 
-        /** The numbers of {@code v}'s statement that use the clock; {@link #NONE} if none does. */
         static ClockFields of(StatementValues v) {
             if (!v.anyExpression()) {
                 return NONE;
@@ -82,13 +73,13 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
             return found.isEmpty() ? NONE : new ClockFields(Map.copyOf(found), Map.copyOf(numbers));
         }
 
-        /** Number {@code k} of the group that means {@code group} if it uses the clock, else null. */
+        /** Number {@code k} of {@code group} if it uses the clock, else null. */
         public Expression of(String group, int k) {
             Expression[] numbers = clocked.get(group);
             return numbers == null || k >= numbers.length ? null : numbers[k];
         }
 
-        /** Number {@code k} of the group that means {@code group} as read (NaN if there is none). */
+        /** Number {@code k} of {@code group} as read (NaN if there is none). */
         public float value(String group, int k) {
             float[] numbers = values.get(group);
             return numbers == null || k >= numbers.length ? Float.NaN : numbers[k];
@@ -98,7 +89,6 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
             return clocked.containsKey(group);
         }
 
-        /** The meanings of the groups with a number that uses the clock. */
         public Set<String> groups() {
             return clocked.keySet();
         }
@@ -113,11 +103,7 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         }
     }
 
-    /**
-     * This table in the making: notes, while a scene is read, which numbers of each statement use the clock.
-     * {@link SceneContents} tells it what each statement made; a statement none of whose numbers uses the
-     * clock leaves no trace. A second {@code ambient} or camera is a mistake: that scene is never made.
-     */
+    /** This table in the making, told by {@link SceneContents} what each statement made. */
     static final class Recorder {
 
         private ClockFields ambient = ClockFields.NONE;
@@ -125,7 +111,6 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         private final Map<Object, ClockFields> parts = new IdentityHashMap<>();
         private final List<String> unwritten = new ArrayList<>();
 
-        /** The statement of {@code v} made {@code part}, an object or a point light. */
         void part(Object part, StatementValues v) {
             ClockFields fields = ClockFields.of(v);
             if (!fields.isEmpty()) {

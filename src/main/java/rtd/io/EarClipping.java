@@ -3,20 +3,16 @@ package rtd.io;
 import java.util.stream.IntStream;
 
 /**
- * Splits a face of an OBJ file into triangles (Part II, "Geometry"), as modelling tools do: a convex face as
- * a fan around its first corner, any other by ear clipping, so that a concave face is covered where it is
- * and nowhere else. Both work on the face projected onto the world plane most nearly parallel to its Newell
- * normal. Each face of n corners gives n − 2 triangles, turning as the face does.
+ * Splits a face of an OBJ file into n − 2 triangles that turn as it does (Part II, "Geometry"): a convex face as
+ * a fan around its first corner, any other by ear clipping, in the world plane most nearly parallel to its
+ * Newell normal.
  */
 final class EarClipping {
 
     private EarClipping() {
     }
 
-    /**
-     * The triangles of the face {@code corners[0, count)} of {@code vertices}: three corner numbers (from 0,
-     * in the face) per triangle.
-     */
+    /** The triangles of the face {@code corners[0, count)}: three corner numbers (from 0, in the face) each. */
     static int[] triangles(int[] corners, int count, float[] vertices) {
         double[] u = new double[count];
         double[] v = new double[count];

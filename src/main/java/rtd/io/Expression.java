@@ -5,17 +5,12 @@ import java.util.function.DoubleBinaryOperator;
 import java.util.function.DoubleUnaryOperator;
 
 /**
- * An expression of a scene file as a tree (Part III, "Expressions, named values and the clock"): a number, a
- * name ({@code pi}, {@code clock}, or one that {@code let} defined), a minus sign before an expression, two
- * expressions joined by {@code + - * / ^}, or a function called with its arguments. {@link ExpressionParser}
- * builds it; {@link #value} evaluates it in double precision for a clock. Each node knows where it starts in
- * the file, so that a value that is not a number (a division by 0 at some clock) is reported at its place.
- * It is public, and immutable, so that the POV-Ray export can write a number that uses the clock as POV-Ray's
- * own expression ({@link SceneFile#withClock}).
+ * An expression of a scene file as an immutable tree (Part III, "Expressions, named values and the clock"),
+ * evaluated in double precision for a clock. Each node knows where it starts in the file, so that a value that is
+ * not finite is reported at its place; the POV-Ray export writes a tree that uses the clock as POV-Ray's own.
  */
 public sealed interface Expression {
 
-    /** The byte of the file where this part of the expression starts. */
     int start();
 
     record Number(double number, int start) implements Expression {
@@ -78,7 +73,6 @@ public sealed interface Expression {
         return NotFinite.check(call.function.rule.applyAsDouble(a, b), this, null);
     }
 
-    /** Whether the value depends on the clock: a number's does not. */
     default boolean usesClock() {
         return this instanceof Clock || this instanceof Name name && name.definition.usesClock()
                 || this instanceof Negation negation && negation.operand.usesClock()
@@ -124,9 +118,9 @@ public sealed interface Expression {
     /** A part of an expression whose value is NaN or infinite, such as {@code 1/0} or {@code sqrt(-1)}. */
     final class NotFinite extends Exception {
         private static final long serialVersionUID = 1L;
-        /** The part, what went wrong if it can tell ("divides by 0") or null, and its value. */
-        final transient Expression part;
+        /** What went wrong if it can tell ("divides by 0"), else null. */
         final String why;
+        final transient Expression part;
         final double value;
 
         NotFinite(Expression part, String why, double value) {

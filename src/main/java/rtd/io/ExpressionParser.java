@@ -6,8 +6,8 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Reads one expression of a scene file into an {@link Expression} tree, by recursive descent: one method per
- * level of the grammar, the loosest first (Part III, "Expressions, named values and the clock"):
+ * Reads one expression of a scene file into an {@link Expression} tree by recursive descent, one method per level
+ * of the grammar (Part III, "Expressions, named values and the clock"):
  *
  * <pre>
  * sum     = product { ("+" | "-") product }
@@ -17,9 +17,7 @@ import java.util.Locale;
  * atom    = number | name | function "(" sum { "," sum } ")" | "(" sum ")"
  * </pre>
  *
- * It reads at the {@link LineCursor} and stops before the first byte that cannot go on the expression (a
- * {@code |} or the group's {@code )}); each mistake is an error at its place, with "did you mean …?" for a
- * misspelt name or function.
+ * It stops before the first byte that cannot go on the expression (a {@code |} or the group's {@code )}).
  */
 final class ExpressionParser {
 
@@ -39,15 +37,18 @@ final class ExpressionParser {
         this.names = names;
     }
 
-    /** Reads an expression from the cursor on; the cursor is left after it. */
     Expression read() throws StatementError {
         depth = 0;
         operators = 0;
         Expression expression = sum();
         cursor.skipBlanks();
         if (isDigitOrPoint(next()) || isLetter(next()) || cursor.at('(')) { // "2 x", "2(3)": a product needs its '*'
+            int end = cursor.pos;
+            while (end > 0 && TextBytes.isSpace(cursor.bytes[end - 1])) {
+                end--;
+            }
             throw cursor.error(cursor.pos, "expected " + OPERATORS + ", '|' or ')' after " + cursor.source.text(
-                    expression.start(), lastNonBlank()) + ", found " + cursor.describe(cursor.pos),
+                    expression.start(), end) + ", found " + cursor.describe(cursor.pos),
                     "a product is written with '*', such as 2*x");
         }
         return expression;
@@ -123,7 +124,6 @@ final class ExpressionParser {
                 + cursor.describe(cursor.pos), atGroupEnd ? "an operator needs a number on either side" : null);
     }
 
-    /** Digits with an optional point and exponent, read as a double. */
     private Expression number() throws StatementError {
         int start = cursor.pos;
         while (isDigitOrPoint(next())) {
@@ -151,7 +151,6 @@ final class ExpressionParser {
         }
     }
 
-    /** A word: a function if '(' follows it, else a name. */
     private Expression nameOrCall() throws StatementError {
         int start = cursor.pos;
         int end = cursor.afterWord(start);
@@ -177,7 +176,6 @@ final class ExpressionParser {
         return name;
     }
 
-    /** The arguments of {@code function}, from its '(' to its ')': as many as it takes. */
     private Expression call(Expression.Function function, int start) throws StatementError {
         int open = cursor.pos++;
         List<Expression> arguments = new ArrayList<>(List.of(sum()));
@@ -236,7 +234,7 @@ final class ExpressionParser {
                 <= Math.max(1, word.length() / 3) ? nearest : null;
     }
 
-    /** Passes the operator at the cursor and answers where it stands; one too many is a mistake. */
+    /** Passes the operator at the cursor and answers where it stands. */
     private int operator() throws StatementError {
         if (++operators > MAX_OPERATORS) {
             throw cursor.error(cursor.pos, "the expression is too long: more than " + MAX_OPERATORS + " operators",
@@ -245,18 +243,9 @@ final class ExpressionParser {
         return cursor.pos++;
     }
 
-    /** The byte at the cursor; 0, which starts nothing, at the end of the file. */
+    /** The byte at the cursor, or 0 (which starts nothing) at the end of the file. */
     private byte next() {
         return cursor.pos < cursor.bytes.length ? cursor.bytes[cursor.pos] : 0;
-    }
-
-    /** The end of the expression read so far, before the blanks after it. */
-    private int lastNonBlank() {
-        int end = cursor.pos;
-        while (end > 0 && TextBytes.isSpace(cursor.bytes[end - 1])) {
-            end--;
-        }
-        return end;
     }
 
     static boolean isLetter(byte b) {

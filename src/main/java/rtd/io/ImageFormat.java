@@ -12,12 +12,12 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Path;
 import java.util.Arrays;
-import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.DoubleConsumer;
+import java.util.stream.StreamSupport;
 import javax.imageio.IIOException;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
@@ -30,17 +30,15 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 import rtd.image.Picture;
 
 /**
- * The picture's file format, by the output's extension ({@code .png}, {@code .jpg}, {@code .bmp}, whatever
- * {@code javax.imageio} writes for RGB), and its encoding of a {@link Picture} through {@code javax.imageio},
- * handing over the picture's array without a copy as RGB without alpha. PNG is known without starting
- * {@code javax.imageio} (slower than a small render); any other is looked up at once, so that one it cannot
- * write is a command-line mistake.
+ * The picture's file format, by the output's extension (whatever {@code javax.imageio} writes as RGB), and its
+ * encoding of a {@link Picture}, whose array it hands over without a copy. PNG is known without starting
+ * {@code javax.imageio} (slower than a small render).
  *
  * @param extension the extension in lower case, without the dot ("png", "jpg")
  */
 public record ImageFormat(String extension) {
 
-    /** PNG: lossless, and what a name without extension, standard output and the default output get. */
+    /** What a name without extension, standard output and the default output get. */
     public static final ImageFormat PNG = new ImageFormat("png");
     private static final int[] RGB_MASKS = {0xFF0000, 0xFF00, 0xFF};
 
@@ -72,21 +70,14 @@ public record ImageFormat(String extension) {
     /** A writer for {@code extension} that encodes RGB without alpha (not WBMP's, black and white only). */
     private static Optional<ImageWriter> writerFor(String extension) {
         ImageTypeSpecifier rgb = ImageTypeSpecifier.createFromBufferedImageType(BufferedImage.TYPE_INT_RGB);
-        Iterator<ImageWriter> writers = ImageIO.getImageWritersBySuffix(extension);
-        while (writers.hasNext()) {
-            ImageWriter writer = writers.next();
-            if (writer.getOriginatingProvider().canEncodeImage(rgb)) {
-                return Optional.of(writer);
-            }
-        }
-        return Optional.empty();
+        Iterable<ImageWriter> writers = () -> ImageIO.getImageWritersBySuffix(extension);
+        return StreamSupport.stream(writers.spliterator(), false)
+                .filter(writer -> writer.getOriginatingProvider().canEncodeImage(rgb)).findFirst();
     }
 
     /**
-     * Starts {@code javax.imageio} and this format's writer on a daemon thread (loading it takes longer than a
-     * small render) by writing one pixel into nothing, then runs {@code then} on that thread. Wait for the
-     * result (which does not wait for {@code then}) before writing, so that two threads never load the same
-     * classes.
+     * Loads this format's writer on a daemon thread by writing one pixel into nothing, then runs {@code then} there.
+     * Wait for the result (which does not wait for {@code then}) before writing: two threads never load one class.
      */
     public CompletableFuture<Void> warmUp(Runnable then) {
         CompletableFuture<Void> done = new CompletableFuture<>();
@@ -140,7 +131,6 @@ public record ImageFormat(String extension) {
         return new BufferedImage(rgb, raster, false, null);
     }
 
-    /** Passes the writer's percentage on as a fraction. */
     private record Progress(DoubleConsumer fraction) implements IIOWriteProgressListener {
         @Override
         public void imageProgress(ImageWriter source, float percentageDone) {
@@ -175,9 +165,8 @@ public record ImageFormat(String extension) {
     }
 
     /**
-     * A {@link Picture}'s layout, one int {@code 0xRRGGBB} a pixel, row by row, whose {@link #getPixels}
-     * reads the array directly: the JDK's goes through the data buffer's methods, slow before the JIT
-     * compiles them. The samples are the same.
+     * A {@link Picture}'s layout, one int {@code 0xRRGGBB} a pixel, whose {@link #getPixels} reads the array
+     * directly: the JDK's goes through the data buffer's methods, slow before the JIT compiles them.
      */
     static final class PackedRgbSamples extends SinglePixelPackedSampleModel {
 

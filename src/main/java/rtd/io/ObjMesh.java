@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Triangle;
@@ -19,8 +18,7 @@ import rtd.image.Color;
 import rtd.math.Vector3f;
 
 /**
- * The triangles of the OBJ file a {@code mesh} names (Part II, "Geometry"): found and read by {@link #read}
- * through {@link ObjReader}, placed in the scene by {@link #triangles}. The arrays are never changed, so the
+ * The triangles of the OBJ file a {@code mesh} names (Part II, "Geometry"). The arrays are never changed, so the
  * frames of an animation share one mesh.
  *
  * @param vertices      x, y, z of each vertex
@@ -31,18 +29,12 @@ import rtd.math.Vector3f;
  */
 record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNormals, int count) {
 
-    /**
-     * How many triangles share one array of numbers: 442 KiB, under half of G1's smallest region, so that it
-     * is not "humongous" (put straight into the old generation).
-     */
+    /** Triangles per array of numbers: 442 KiB, under half of G1's smallest region, so not "humongous". */
     private static final int BLOCK = 1 << 12;
     /** Larger files do not fit in one Java array. */
     private static final long MAX_FILE_SIZE = Integer.MAX_VALUE - 8;
 
-    /**
-     * The triangles, in order, each corner p moved to {@code scale·p + shift}; one whose corners all name
-     * normals is smooth.
-     */
+    /** The triangles, in order, each corner p moved to {@code scale·p + shift}. */
     List<IGeometry> triangles(Vector3f shift, float scale, Color colour, Material material) {
         IGeometry[] triangles = new IGeometry[count];
         Vector3f[] normalVectors = normalVectors();
@@ -57,7 +49,6 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         return Arrays.asList(triangles);
     }
 
-    /** Triangle {@code t}, its numbers written into {@code numbers} from {@code at}. */
     private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
             Vector3f[] normalVectors) {
         TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
@@ -84,10 +75,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         return vectors;
     }
 
-    /**
-     * The mesh in the OBJ file that group {@code g} names, relative to the scene's folder. A file that cannot
-     * be read is an error at the path; mistakes inside it are located in it, each naming the scene's line.
-     */
+    /** The mesh in the OBJ file that group {@code g} names; each mistake in it names the scene's line too. */
     static ObjMesh read(StatementValues values, int g) throws StatementError {
         SourceText scene = values.source();
         String written = values.name(g);
@@ -100,9 +88,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (InvalidPathException e) {
             throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
         }
-        Map<Path, ObjMesh> cache = scene.meshes();
-        Path key = cache == null ? null : file.toAbsolutePath().normalize();
-        ObjMesh mesh = cache == null ? null : cache.get(key);
+        Path key = file.toAbsolutePath().normalize();
+        ObjMesh mesh = scene.meshes().get(key); // a scene's text always has its table of meshes; an OBJ file's has none
         if (mesh != null) {
             return mesh;
         }
@@ -131,9 +118,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                     "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
                             + "skipped too; a mesh needs at least one face");
         }
-        if (cache != null) {
-            cache.put(key, mesh);
-        }
+        scene.meshes().put(key, mesh);
         return mesh;
     }
 

@@ -5,11 +5,10 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * Reads the Wavefront OBJ that a {@code mesh} uses (Part II, "Geometry"): {@code v x y z [w]},
- * {@code vn x y z} and {@code f} with corners {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, indices
- * from 1 or, negative, back from the last read. Faces of more corners go to {@link EarClipping}; {@code #}
- * starts a comment; other lines, extra numbers on a {@code v} line and texture indices are skipped. Each
- * mistake is located in the OBJ file and reading goes on with the next line.
+ * Reads the Wavefront OBJ that a {@code mesh} uses (Part II, "Geometry"): {@code v x y z [w]}, {@code vn x y z}
+ * and {@code f} with corners {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, indices from 1 or, negative,
+ * back from the last read. Other lines, extra numbers and texture indices are skipped; after a mistake, reading
+ * goes on with the next line.
  */
 final class ObjReader {
 
@@ -38,10 +37,7 @@ final class ObjReader {
 
     private final List<SceneError> errors = new ArrayList<>();
 
-    /**
-     * The mesh in {@code source}, or its mistakes (up to one more than {@link SceneException#MAX_ERRORS}); a
-     * NUL byte refuses the file.
-     */
+    /** The mesh in {@code source}, or its mistakes (up to one more than {@link SceneException#MAX_ERRORS}). */
     static ObjMesh read(SourceText source) throws SceneException {
         byte[] bytes = source.bytes();
         for (int i = 0; i < bytes.length; i++) {
@@ -59,7 +55,6 @@ final class ObjReader {
         this.lineStart = start;
     }
 
-    /** Reads every line, until the end or one error past {@link SceneException#MAX_ERRORS}: the mesh, or its mistakes. */
     private ObjMesh readAll() throws SceneException {
         while (pos < bytes.length && errors.size() <= SceneException.MAX_ERRORS) {
             try {
@@ -180,7 +175,7 @@ final class ObjReader {
         faceNormals[k] = normalStart < 0 ? -1 : resolve(normal, normalCount, normalStart, "normal", "vn");
     }
 
-    /** A whole number at {@link #pos}, with an optional sign; an error at the corner if there is none. */
+    /** A whole number at {@link #pos}, with an optional sign. */
     private long readIndex(int cornerStart) throws StatementError {
         boolean negative = at('-');
         if (negative || at('+')) {

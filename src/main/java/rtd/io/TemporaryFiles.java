@@ -14,10 +14,9 @@ import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
- * The hidden temporary files {@code .NAME.<16 hex digits>.tmp} a picture or an animation is written to beside
- * its output before it is moved into place, so that the output is written all or nothing: removed after a
- * failed write and by a shutdown hook when a signal stops the JVM (only {@code kill -9} can leave one). Its
- * list is global on purpose, as the hook belongs to the JVM (guarded by this class's lock).
+ * The hidden temporary files {@code .NAME.<16 hex digits>.tmp} beside an output, moved into place once written,
+ * so that the output is written all or nothing: removed after a failed write and by a shutdown hook (only
+ * {@code kill -9} can leave one). Its list is global on purpose, as the hook belongs to the JVM.
  */
 final class TemporaryFiles {
 
@@ -38,7 +37,6 @@ final class TemporaryFiles {
     private TemporaryFiles() {
     }
 
-    /** What writes a file's bytes into a stream, which is closed after. */
     interface Writing {
         void into(OutputStream out) throws IOException;
     }
@@ -72,9 +70,7 @@ final class TemporaryFiles {
         return new Replacement(temporary, output, out);
     }
 
-    /**
-     * A temporary file at {@code path} being written by {@code out}, and the {@code output} it replaces once complete.
-     */
+    /** A temporary file at {@code path} being written by {@code out}, and the {@code output} it replaces. */
     record Replacement(Path path, Path output, OutputStream out) {
 
         /** Moves the written file over the output (atomically where the file system can). */
@@ -87,7 +83,7 @@ final class TemporaryFiles {
             forget(path);
         }
 
-        /** Closes and deletes the temporary file; the output stays as it was. */
+        /** Closes and deletes the temporary file. */
         void discard() throws IOException {
             try {
                 out.close();
