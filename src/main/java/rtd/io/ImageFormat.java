@@ -12,12 +12,12 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.Iterator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.DoubleConsumer;
-import java.util.stream.StreamSupport;
 import javax.imageio.IIOException;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
@@ -70,9 +70,14 @@ public record ImageFormat(String extension) {
     /** A writer for {@code extension} that encodes RGB without alpha (not WBMP's, black and white only). */
     private static Optional<ImageWriter> writerFor(String extension) {
         ImageTypeSpecifier rgb = ImageTypeSpecifier.createFromBufferedImageType(BufferedImage.TYPE_INT_RGB);
-        Iterable<ImageWriter> writers = () -> ImageIO.getImageWritersBySuffix(extension);
-        return StreamSupport.stream(writers.spliterator(), false)
-                .filter(writer -> writer.getOriginatingProvider().canEncodeImage(rgb)).findFirst();
+        // a loop, not a stream: every run passes here, and a first run would link a stream's lambdas for it
+        for (Iterator<ImageWriter> writers = ImageIO.getImageWritersBySuffix(extension); writers.hasNext(); ) {
+            ImageWriter writer = writers.next();
+            if (writer.getOriginatingProvider().canEncodeImage(rgb)) {
+                return Optional.of(writer);
+            }
+        }
+        return Optional.empty();
     }
 
     /**
