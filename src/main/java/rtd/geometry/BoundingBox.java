@@ -33,21 +33,26 @@ public record BoundingBox(Vector3f min, Vector3f max) {
      * intersection test computes near the object.
      */
     static BoundingBox around(double margin, Vector3f... points) {
-        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-        double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        // plain numbers, no arrays: a first run makes a million boxes before the JIT could take arrays away
+        double minX = Double.POSITIVE_INFINITY;
+        double minY = Double.POSITIVE_INFINITY;
+        double minZ = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY;
+        double maxY = Double.NEGATIVE_INFINITY;
+        double maxZ = Double.NEGATIVE_INFINITY;
         double largest = 0;
         for (Vector3f p : points) {
-            double[] c = {p.x(), p.y(), p.z()};
-            for (int k = 0; k < 3; k++) {
-                lo[k] = Math.min(lo[k], c[k]);
-                hi[k] = Math.max(hi[k], c[k]);
-                largest = Math.max(largest, Math.abs(c[k]));
-            }
+            minX = Math.min(minX, p.x());
+            minY = Math.min(minY, p.y());
+            minZ = Math.min(minZ, p.z());
+            maxX = Math.max(maxX, p.x());
+            maxY = Math.max(maxY, p.y());
+            maxZ = Math.max(maxZ, p.z());
+            largest = Math.max(largest, Math.max(Math.abs(p.x()), Math.max(Math.abs(p.y()), Math.abs(p.z()))));
         }
         double grow = margin * (1 + 1e-6) + 8 * UNIT_ROUNDOFF * largest;
-        return new BoundingBox(
-                new Vector3f(down(lo[0] - grow), down(lo[1] - grow), down(lo[2] - grow)),
-                new Vector3f(up(hi[0] + grow), up(hi[1] + grow), up(hi[2] + grow)));
+        return new BoundingBox(new Vector3f(down(minX - grow), down(minY - grow), down(minZ - grow)),
+                new Vector3f(up(maxX + grow), up(maxY + grow), up(maxZ + grow)));
     }
 
     /** Writes this box to {@code into[at .. at+5]}: min x, y, z, max x, y, z. */
