@@ -17,12 +17,33 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
     static final List<String> KEYS = List.of("ambient", "diffuse", "specular", "shininess", "reflective",
             "transparency", "ior");
 
-    /**
-     * What a group holds and the rule its values follow, as {@link #check} says; PAINT is a colour or a pattern's
-     * name, VIEW a direction or {@code (at x|y|z)}, PATH all up to the {@code )}, STEP a word and numbers.
-     */
+    /** What a group holds, and the rule its values follow; every number is finite. */
     enum Rule {
-        NUMBERS, POSITIVE, AT_LEAST_ZERO, ANGLE, SAMPLES, COLOUR, PAINT, DIRECTION, VIEW, NAME, PATH, PROPERTIES, STEP
+        NUMBERS,
+        /** One number greater than 0: a radius, a zoom, a scale. */
+        POSITIVE,
+        /** One number at least 0: a cone's radius. */
+        AT_LEAST_ZERO,
+        /** A camera's field of view, between 0 and 180 degrees. */
+        ANGLE,
+        /** An area light's samples along its edges: whole numbers from 1 to {@link AreaLight#MOST_SAMPLES}. */
+        SAMPLES,
+        /** Three channels, each a whole number from 0 to 255; an expression is rounded ½ up (Part III). */
+        COLOUR,
+        /** An object's colour, or the name of its pattern (Part III, "Patterns"). */
+        PAINT,
+        /** Three numbers that float can normalise: not zero, not too short or too long. */
+        DIRECTION,
+        /** A camera's view: a direction, or {@code (at x|y|z)}, a point to look at (Part III). */
+        VIEW,
+        /** One name of letters, digits, {@code _} and {@code -}. */
+        NAME,
+        /** One file path, everything up to the group's {@code )}, blanks around it trimmed. */
+        PATH,
+        /** {@code key=number} pairs of {@link #KEYS}, each at least 0 (ior at least 1), each key at most once. */
+        PROPERTIES,
+        /** A word, a blank and numbers separated by {@code |}: {@code scale 2}, {@code translate 0|1|0}. */
+        STEP
     }
 
     /** A group of numbers written as {@code shape}, such as {@code x|y|z}; their count is the shape's. */
