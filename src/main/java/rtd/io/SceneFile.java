@@ -144,11 +144,12 @@ public final class SceneFile {
         DefinedNames names = new DefinedNames(contents, errors);
         Set<String> named = new HashSet<>(contents.namedAtOnce);
         List<IGeometry> objects = contents.allObjects(names, named);
-        if (errors.isEmpty() && contents.cameras.isEmpty()) { // an empty scene has no camera either
-            boolean empty = contents.statementCount == 0;
-            errors.add(source.errorAt(1, start, start, empty ? "the scene is empty: it has no statements, only blanks "
-                    + "and comments" : "the scene has no camera", (empty ? "a scene needs at least a camera, such as "
-                    : "add a line such as ") + CAMERA_EXAMPLE).found());
+        if (errors.isEmpty() && contents.statementCount == 0) {
+            errors.add(source.errorAt(1, start, start, "the scene is empty: it has no statements, only blanks and "
+                    + "comments", "a scene needs at least a camera, such as " + CAMERA_EXAMPLE).found());
+        } else if (errors.isEmpty() && contents.cameras.isEmpty()) {
+            errors.add(source.errorAt(1, start, start, "the scene has no camera",
+                    "add a line such as " + CAMERA_EXAMPLE).found());
         }
         if (!errors.isEmpty()) {
             errors.sort(Comparator.comparingInt(SceneContents.Found::line).thenComparingInt(SceneContents.Found::column));

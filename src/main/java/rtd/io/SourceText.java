@@ -99,8 +99,11 @@ final class SourceText implements AutoCloseable {
     }
 
     String describe(int offset, int lineStart) {
-        if (offset >= bytes.length || TextBytes.isLineBreak(bytes[offset])) {
-            return offset >= bytes.length && offset <= lineStart ? "the end of the file" : "the end of the line";
+        if (offset >= bytes.length) {
+            return offset > lineStart ? "the end of the line" : "the end of the file";
+        }
+        if (TextBytes.isLineBreak(bytes[offset])) {
+            return "the end of the line";
         }
         byte next = offset + 1 < bytes.length ? bytes[offset + 1] : 0;
         if (bytes[offset] == '/' && (next == '/' || next == '*')) {
