@@ -5,7 +5,6 @@ import static rtd.geometry.TriangleNumbers.NORMAL;
 import static rtd.geometry.TriangleNumbers.SIZE;
 import static rtd.geometry.TriangleNumbers.TOLERANCE;
 
-import java.util.Arrays;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -21,7 +20,7 @@ import rtd.math.Vector3f;
  */
 public final class Triangle implements IGeometry {
 
-    /** How many numbers the test uses ({@link #testNumbers}; their layout: {@link TriangleNumbers}). */
+    /** How many numbers the test uses ({@link #numbers}; their layout: {@link TriangleNumbers}). */
     public static final int NUMBERS = 27;
 
     /**
@@ -79,17 +78,19 @@ public final class Triangle implements IGeometry {
         return vector(NORMAL);
     }
 
-    /** The {@value #NUMBERS} numbers the test uses, in order, for a packed copy of the test (the BVH's). */
-    public float[] testNumbers() {
-        return Arrays.copyOfRange(v, at, at + NUMBERS);
+    /**
+     * The array that holds the {@value #NUMBERS} numbers of this triangle's test from
+     * {@link #numbersAt}, in the layout of {@link TriangleNumbers}: its own, or its mesh's, shared
+     * by thousands of triangles. The engine runs {@link RayTriangle#hit} on it where it lies, as
+     * {@link #intersect} does, so that a mesh's numbers are never copied; it is read, never written.
+     */
+    public float[] numbers() {
+        return v;
     }
 
-    /**
-     * Writes the {@value #NUMBERS} numbers of {@link #testNumbers} into {@code into} from
-     * {@code at}: the BVH packs a million triangles this way without a copy of each in between.
-     */
-    public void putTestNumbers(float[] into, int at) {
-        System.arraycopy(v, this.at, into, at, NUMBERS);
+    /** Where this triangle's numbers start in {@link #numbers}. */
+    public int numbersAt() {
+        return at;
     }
 
     /** The normal given for corner {@code i} (0, 1 or 2) of a smooth triangle, or {@code null} for a flat one. */

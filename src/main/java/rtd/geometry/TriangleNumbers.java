@@ -5,14 +5,14 @@ import rtd.math.Vector3f;
 /**
  * The {@value Triangle#NUMBERS} numbers a triangle's intersection test reads, worked out once
  * from its corners: where each one stands in the array, and how {@link #putNumbers} computes
- * them. {@link Triangle} keeps them (alone, or in its mesh's one array), {@link RayTriangle} tests
- * a ray against them, and the BVH packs copies of them side by side ({@code LeafObjects}).
+ * them. {@link Triangle} keeps them (alone, or in its mesh's one array), and {@link RayTriangle}
+ * tests a ray against them, for the triangle's {@code intersect} and for the engine alike.
  *
  * <p>The corners and the per-edge vectors are kept as plain floats: a mesh can have millions.
  */
 public final class TriangleNumbers {
 
-    // Where each of the test's numbers stands in its array (testNumbers, and the BVH's packed copy).
+    // Where each of the test's numbers stands in its array (Triangle.numbers, which the engine reads too).
     static final int CORNERS = 0;        // p1, p2, p3: x, y, z each
     static final int NORMAL = 9;         // n = (p2 − p1) × (p3 − p1)
     static final int INWARD = 12;        // n × edge, for the edges from p1, p2, p3

@@ -262,10 +262,8 @@ class MeshTest {
             Triangle t = (Triangle) object;
             Vector3f[] normals = t.isSmooth() ? new Vector3f[] {t.cornerNormal(0), t.cornerNormal(1), t.cornerNormal(2)} : null;
             Triangle alone = new Triangle(t.corner(0), t.corner(1), t.corner(2), normals, t.color(), t.material());
-            assertThat(t.testNumbers()).isEqualTo(alone.testNumbers());
-            float[] packed = new float[Triangle.NUMBERS + 3];
-            t.putTestNumbers(packed, 3);
-            assertThat(java.util.Arrays.copyOfRange(packed, 3, packed.length)).isEqualTo(alone.testNumbers());
+            assertThat(java.util.Arrays.copyOfRange(t.numbers(), t.numbersAt(), t.numbersAt() + Triangle.NUMBERS))
+                    .isEqualTo(alone.numbers());
             assertThat(t.bounds()).isEqualTo(alone.bounds());
         }
     }
