@@ -123,6 +123,32 @@ class TriangleTest {
     }
 
     @Test
+    void itsBoxHoldsItsCornersGrownByAFewRoundingErrorsOfItsSize() {
+        // |p2 − p1| = |p3 − p1| = 4, |p3 − p2| = 4√2, |n| = 16: thinness 4·4√2/16 = √2; the edges summed over the
+        // axes 16, the largest coordinate 4. Grown by u·(32·8·√2 + 2·16u√2·16/u + 64·(4 + 8)) and 8u·4: 1.12421e-4
+        BoundingBox box = triangle.bounds();
+
+        float grow = 1.12421e-4f;
+        assertThat(new float[] {box.min().x(), box.min().y(), box.min().z(), box.max().z()})
+                .containsExactly(new float[] {-grow, -grow, -grow, grow}, within(1e-9f));
+        assertThat(new float[] {box.max().x(), box.max().y()}).containsExactly(new float[] {4 + grow, 4 + grow}, within(1e-6f));
+    }
+
+    @Test
+    void writesItsBoxWhereItIsToldAndNothingElse() {
+        Random random = new Random(17);
+        for (int i = 0; i < 1_000; i++) {
+            Triangle any = randomTriangle(random);
+            float[] written = new float[10];
+            java.util.Arrays.fill(written, -7f);
+            any.putBounds(written, 3);
+            float[] expected = {-7f, -7f, -7f, 0, 0, 0, 0, 0, 0, -7f};
+            any.bounds().put(expected, 3);
+            assertThat(written).isEqualTo(expected);
+        }
+    }
+
+    @Test
     void itsTestFindsTheSameTToTheLastBitWhereAMeshSharesOneArray() {
         Random random = new Random(13);
         float[] shared = new float[3 * Triangle.NUMBERS];
