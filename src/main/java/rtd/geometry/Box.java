@@ -30,7 +30,6 @@ public record Box(Vector3f min, Vector3f max, Color color, Material material) im
         return intersect(ray, TestObserver.NONE);
     }
 
-    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
     @Override
     public Intersection intersect(Ray ray, TestObserver watch) {
         float[] corners = new float[NUMBERS];

@@ -24,7 +24,6 @@ public record Cone(Vector3f first, float firstRadius, Vector3f second, float sec
         return intersect(ray, TestObserver.NONE);
     }
 
-    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
     @Override
     public Intersection intersect(Ray ray, TestObserver watch) {
         Vector3f o = ray.origin();
@@ -67,20 +66,8 @@ public record Cone(Vector3f first, float firstRadius, Vector3f second, float sec
         float a = (dx * dx + dy * dy + dz * dz) - (1 + k * k) * (hd * hd);  // R·R − (1 + k²)(h·R)²
         float b = 2 * ((wx * dx + wy * dy + wz * dz) - hw * hd - k * g * hd); // 2·(w·R − (h·w)(h·R) − k·g·(h·R))
         float c = (wx * wx + wy * wy + wz * wz) - hw * hw - g * g;          // w·w − (h·w)² − g²
-        float t = SideRoots.nearest(t0, a, b, c, hw, hd, length, watch);
-        String part = t >= 0 ? "side" : "none";
-        float cap = Disc.hit(0, ax, ay, az, hx, hy, hz, r1, ox, oy, oz, dx, dy, dz, watch);
-        if (Disc.nearer(cap, t)) {
-            t = cap;
-            part = "first cap";
-        }
-        cap = Disc.hit(1, bx, by, bz, hx, hy, hz, r2, ox, oy, oz, dx, dy, dz, watch);
-        if (Disc.nearer(cap, t)) {
-            t = cap;
-            part = "second cap";
-        }
-        watch.nearestPart(part, t);
-        return t >= 0 ? t : Float.NaN;
+        float side = SideRoots.nearest(t0, a, b, c, hw, hd, length, watch);
+        return Disc.nearestWithCaps(side, ax, ay, az, r1, bx, by, bz, r2, hx, hy, hz, ox, oy, oz, dx, dy, dz, watch);
     }
 
     /**

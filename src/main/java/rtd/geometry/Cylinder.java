@@ -22,7 +22,6 @@ public record Cylinder(Vector3f first, Vector3f second, float radius, Color colo
         return intersect(ray, TestObserver.NONE);
     }
 
-    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
     @Override
     public Intersection intersect(Ray ray, TestObserver watch) {
         Vector3f o = ray.origin();
@@ -62,20 +61,8 @@ public record Cylinder(Vector3f first, Vector3f second, float radius, Color colo
         float a = (dx * dx + dy * dy + dz * dz) - hd * hd;    // R·R − (h·R)²
         float b = 2 * ((wx * dx + wy * dy + wz * dz) - hw * hd); // 2·(w·R − (h·w)(h·R))
         float c = (wx * wx + wy * wy + wz * wz) - hw * hw - r * r; // w·w − (h·w)² − r²
-        float t = SideRoots.nearest(t0, a, b, c, hw, hd, length, watch);
-        String part = t >= 0 ? "side" : "none";
-        float cap = Disc.hit(0, ax, ay, az, hx, hy, hz, r, ox, oy, oz, dx, dy, dz, watch);
-        if (Disc.nearer(cap, t)) {
-            t = cap;
-            part = "first cap";
-        }
-        cap = Disc.hit(1, bx, by, bz, hx, hy, hz, r, ox, oy, oz, dx, dy, dz, watch);
-        if (Disc.nearer(cap, t)) {
-            t = cap;
-            part = "second cap";
-        }
-        watch.nearestPart(part, t);
-        return t >= 0 ? t : Float.NaN;
+        float side = SideRoots.nearest(t0, a, b, c, hw, hd, length, watch);
+        return Disc.nearestWithCaps(side, ax, ay, az, r, bx, by, bz, r, hx, hy, hz, ox, oy, oz, dx, dy, dz, watch);
     }
 
     /**

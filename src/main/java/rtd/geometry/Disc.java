@@ -30,6 +30,30 @@ final class Disc {
         return fromCentre <= r * r ? t : Float.NaN;
     }
 
+    /**
+     * The nearest of {@code side}, the hit of the solid's side (NaN: none), and of its two caps, at A
+     * of radius r1 and at B of radius r2, both at right angles to the unit axis h; telling
+     * {@code watch} which part it is. Returns t, or NaN.
+     */
+    static float nearestWithCaps(float side, float ax, float ay, float az, float r1, float bx, float by, float bz,
+            float r2, float hx, float hy, float hz, float ox, float oy, float oz, float dx, float dy, float dz,
+            TestObserver watch) {
+        float t = side;
+        String part = t >= 0 ? "side" : "none";
+        float cap = hit(0, ax, ay, az, hx, hy, hz, r1, ox, oy, oz, dx, dy, dz, watch);
+        if (nearer(cap, t)) {
+            t = cap;
+            part = "first cap";
+        }
+        cap = hit(1, bx, by, bz, hx, hy, hz, r2, ox, oy, oz, dx, dy, dz, watch);
+        if (nearer(cap, t)) {
+            t = cap;
+            part = "second cap";
+        }
+        watch.nearestPart(part, t);
+        return t >= 0 ? t : Float.NaN;
+    }
+
     /** Whether {@code t} is a hit ({@code ≥ 0}) nearer than {@code best} (NaN: none yet); on a tie the earlier stays. */
     static boolean nearer(float t, float best) {
         return t >= 0 && !(t >= best);

@@ -22,7 +22,6 @@ public record Plane(Vector3f point, Vector3f normal, Color color, Material mater
         return intersect(ray, TestObserver.NONE);
     }
 
-    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
     @Override
     public Intersection intersect(Ray ray, TestObserver watch) {
         Vector3f o = ray.origin();

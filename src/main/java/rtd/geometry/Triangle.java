@@ -117,7 +117,6 @@ public final class Triangle implements IGeometry {
         return intersect(ray, TestObserver.NONE);
     }
 
-    /** {@link #intersect(Ray)}, telling {@code watch} each number of the test. */
     @Override
     public Intersection intersect(Ray ray, TestObserver watch) {
         Vector3f o = ray.origin();

@@ -32,7 +32,7 @@ import rtd.scene.Scene;
  * <li>each light's ambient, diffuse and specular terms, after a shadow ray ({@link Lighting});
  * <li>what a mirror shows ({@link #reflected});
  * <li>what shows through, by Snell's law ({@link Snell});
- * <li>reflection and refraction mixed by Schlick's approximation ({@link Fresnel}).
+ * <li>reflection and refraction mixed by Schlick's approximation ({@link Snell#reflectance}).
  * </ol>
  */
 public final class WhittedShader implements Shader {
@@ -97,7 +97,7 @@ public final class WhittedShader implements Shader {
         Rgb refracted = refracted(surface, remaining);
         Material material = surface.material();
         if (material.reflective() > 0 && material.transparency() > 0) {
-            float reflectance = Fresnel.schlick(surface);
+            float reflectance = Snell.at(surface).reflectance();
             observer.fresnel(reflectance);
             return lit.plus(reflected.times(reflectance)).plus(refracted.times(1 - reflectance));
         }

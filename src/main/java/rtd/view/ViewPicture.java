@@ -57,7 +57,7 @@ public record ViewPicture(Picture picture, String report) {
         double logTop = Math.log1p(top);
         int[] rgb = new int[counts.length];
         for (int i = 0; i < counts.length; i++) {
-            rgb[i] = HeatMap.of(Math.log1p(counts[i]) / logTop);
+            rgb[i] = ViewColours.heat(Math.log1p(counts[i]) / logTop);
         }
         List<Legend.Tick> ticks = new ArrayList<>();
         for (long value = 1; value < top; value *= 10) {
@@ -65,7 +65,7 @@ public record ViewPicture(Picture picture, String report) {
         }
         ticks.add(0, new Legend.Tick(0, "0"));
         ticks.add(new Legend.Tick(1, top + " tests"));
-        Picture picture = Legend.below(new Picture(raw.width(), raw.height(), rgb), share -> HeatMap.of(share), ticks);
+        Picture picture = Legend.below(new Picture(raw.width(), raw.height(), rgb), ViewColours::heat, ticks);
         String report = String.format(Locale.ROOT,
                 "cost: intersection tests per camera ray, colours on a logarithmic scale from 0 (black) to %d, the scene's "
                         + "number of objects (pale yellow)%nthis picture: %,d tests for %,d rays, %.2f per ray, at most %d%n",
@@ -127,7 +127,7 @@ public record ViewPicture(Picture picture, String report) {
     private static String idReport(List<IGeometry> objects) {
         StringBuilder text = new StringBuilder("id: one colour per object, in file order; no hit: black\n");
         for (int i = 0; i < Math.min(objects.size(), 20); i++) {
-            int rgb = IdColours.of(i);
+            int rgb = ViewColours.id(i);
             text.append(String.format(Locale.ROOT, "  #%d %s: (%d|%d|%d)%n", i + 1, objects.get(i).kind(), rgb >> 16,
                     (rgb >> 8) & 0xFF, rgb & 0xFF));
         }

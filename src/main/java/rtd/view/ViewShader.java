@@ -39,7 +39,7 @@ public final class ViewShader implements Shader {
             case cost -> hits.tests(i);
             case depth -> Float.floatToRawIntBits(hits.distance(i));
             case normal -> normalColour(hits.hit(i, rays, objects), rays.ray(i));
-            case id -> IdColours.of(hits.index(i));
+            case id -> ViewColours.id(hits.index(i));
         };
     }
 

@@ -85,8 +85,8 @@ class ViewTest {
         assertThat(view.report()).contains("logarithmic scale from 0 (black) to 100", "tests for 3,072 rays");
         int barLeft = view.picture().rgb(8, 48 + 8);
         int barRight = view.picture().rgb(64 - 9, 48 + 8);
-        assertThat(barLeft).isEqualTo(HeatMap.of(0));
-        assertThat(barRight).isEqualTo(HeatMap.of(1));
+        assertThat(barLeft).isEqualTo(ViewColours.heat(0));
+        assertThat(barRight).isEqualTo(ViewColours.heat(1));
     }
 
     @Test
@@ -94,11 +94,11 @@ class ViewTest {
         BitSet colours = new BitSet(1 << 24);
         colours.set(0); // the background
         for (int i = 0; i < (1 << 24) - 1; i++) { // every object a scene can have a colour for
-            int colour = IdColours.of(i);
+            int colour = ViewColours.id(i);
             assertThat(colours.get(colour)).as("object %d", i).isFalse();
             colours.set(colour);
         }
-        assertThat(IdColours.of(-1)).isZero();
+        assertThat(ViewColours.id(-1)).isZero();
     }
 
     @Test
@@ -109,7 +109,7 @@ class ViewTest {
         for (int y = 0; y < 48; y++) {
             for (int x = 0; x < 64; x++) {
                 Hit hit = scene.nearestHit(scene.camera().generateRay(x, y, 64, 48));
-                assertThat(ids[y * 64 + x]).isEqualTo(IdColours.of(hit == null ? -1 : hit.index()));
+                assertThat(ids[y * 64 + x]).isEqualTo(ViewColours.id(hit == null ? -1 : hit.index()));
                 seen.add(hit == null ? -1 : hit.index());
             }
         }
