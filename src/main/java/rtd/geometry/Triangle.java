@@ -1,9 +1,9 @@
 package rtd.geometry;
 
-import static rtd.geometry.TriangleNumbers.CORNERS;
-import static rtd.geometry.TriangleNumbers.NORMAL;
-import static rtd.geometry.TriangleNumbers.SIZE;
-import static rtd.geometry.TriangleNumbers.TOLERANCE;
+import static rtd.geometry.RayTriangle.CORNERS;
+import static rtd.geometry.RayTriangle.NORMAL;
+import static rtd.geometry.RayTriangle.SIZE;
+import static rtd.geometry.RayTriangle.TOLERANCE;
 
 import rtd.image.Color;
 import rtd.math.Ray;
@@ -15,12 +15,11 @@ import rtd.math.Vector3f;
  * normal for each corner, blended across it for smooth shading.
  *
  * <p>This file is the shape: its corners, its normal, its box. The intersection test is
- * {@link RayTriangle}; the numbers it reads, worked out once from the corners and kept as plain
- * floats (a mesh can have millions), are laid out and computed by {@link TriangleNumbers}.
+ * {@link RayTriangle}, with the numbers it reads, worked out once from the corners.
  */
 public final class Triangle implements IGeometry {
 
-    /** How many numbers the test uses ({@link #numbers}; their layout: {@link TriangleNumbers}). */
+    /** How many numbers the test uses ({@link #numbers}; their layout: {@link RayTriangle}). */
     public static final int NUMBERS = 27;
 
     /**
@@ -49,7 +48,7 @@ public final class Triangle implements IGeometry {
     }
 
     /**
-     * The triangle whose test numbers {@link TriangleNumbers#putNumbers} wrote into {@code numbers} from
+     * The triangle whose test numbers {@link RayTriangle#putNumbers} wrote into {@code numbers} from
      * {@code at}, with {@code cornerNormals} as above. A mesh of a million triangles keeps
      * their numbers in a few hundred arrays, shared by thousands of triangles each: the collector
      * copies a few hundred arrays while the mesh is read, instead of a million small ones.
@@ -64,7 +63,7 @@ public final class Triangle implements IGeometry {
 
     private static float[] numbersOf(Vector3f p1, Vector3f p2, Vector3f p3) {
         float[] numbers = new float[NUMBERS];
-        TriangleNumbers.putNumbers(p1, p2, p3, numbers, 0);
+        RayTriangle.putNumbers(p1, p2, p3, numbers, 0);
         return numbers;
     }
 
@@ -80,7 +79,7 @@ public final class Triangle implements IGeometry {
 
     /**
      * The array that holds the {@value #NUMBERS} numbers of this triangle's test from
-     * {@link #numbersAt}, in the layout of {@link TriangleNumbers}: its own, or its mesh's, shared
+     * {@link #numbersAt}, in the layout of {@link RayTriangle}: its own, or its mesh's, shared
      * by thousands of triangles. The engine runs {@link RayTriangle#hit} on it where it lies, as
      * {@link #intersect} does, so that a mesh's numbers are never copied; it is read, never written.
      */
@@ -176,14 +175,14 @@ public final class Triangle implements IGeometry {
     /** How far {@link #bounds} grows the corners' box on every side. */
     private double margin() {
         int p1 = at + CORNERS;
-        double e1 = TriangleNumbers.distance(v, p1, p1 + 3);
-        double e2 = TriangleNumbers.distance(v, p1, p1 + 6);
+        double e1 = RayTriangle.distance(v, p1, p1 + 3);
+        double e2 = RayTriangle.distance(v, p1, p1 + 6);
         double largest = 0;
         for (int k = p1; k < p1 + 9; k++) {
             largest = Math.max(largest, Math.abs(v[k]));
         }
         // a needle's box may become infinite: then every ray tests it, as the paper's loop does
-        double sides = 32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * TriangleNumbers.thinness(v, at)
+        double sides = 32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * RayTriangle.thinness(v, at)
                 + 2 * v[at + TOLERANCE] * v[at + SIZE];
         return sides + 64 * BoundingBox.UNIT_ROUNDOFF * (largest + e1 + e2);
     }

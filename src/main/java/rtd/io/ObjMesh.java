@@ -12,8 +12,8 @@ import java.util.List;
 import java.util.Locale;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
+import rtd.geometry.RayTriangle;
 import rtd.geometry.Triangle;
-import rtd.geometry.TriangleNumbers;
 import rtd.image.Color;
 import rtd.math.Vector3f;
 
@@ -51,7 +51,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
 
     private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
             Vector3f[] normalVectors) {
-        TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
+        RayTriangle.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
                 corner(corners[3 * t + 2], shift, scale), numbers, at);
         if (cornerNormals == null || cornerNormals[3 * t] < 0) {
             return new Triangle(numbers, at, null, colour, material);

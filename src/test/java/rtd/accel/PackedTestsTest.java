@@ -7,13 +7,13 @@ import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.geometry.Box;
-import rtd.geometry.TestObserver;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Plane;
+import rtd.geometry.RayTriangle;
 import rtd.geometry.Sphere;
+import rtd.geometry.TestObserver;
 import rtd.geometry.Triangle;
-import rtd.geometry.TriangleNumbers;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -80,7 +80,7 @@ class PackedTestsTest {
         Vector3f p2 = new Vector3f(2, -1.5f, 0);
         Vector3f p3 = new Vector3f(0.2f, 2, -0.5f);
         float[] mesh = new float[2 * Triangle.NUMBERS]; // the second triangle of a mesh's shared array
-        TriangleNumbers.putNumbers(p3, p1, p2, mesh, Triangle.NUMBERS);
+        RayTriangle.putNumbers(p3, p1, p2, mesh, Triangle.NUMBERS);
         List<IGeometry> shapes = List.of(
                 new Sphere(new Vector3f(0.3f, -0.2f, 0.1f), 1.7f, GREY, Material.DEFAULT),
                 new Triangle(p1, p2, p3, GREY, Material.DEFAULT),
