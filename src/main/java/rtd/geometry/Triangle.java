@@ -22,11 +22,7 @@ public final class Triangle implements IGeometry {
     /** How many numbers the test uses ({@link #numbers}; their layout: {@link RayTriangle}). */
     public static final int NUMBERS = 27;
 
-    /**
-     * p1, p2, p3; n = (p2 − p1) × (p3 − p1); n × edge for the three edges; their lengths; the
-     * side tests' tolerance per unit of distance from the corner; |n| summed over the axes; the
-     * edges' lengths summed over the axes.
-     */
+    /** The test's numbers, laid out as {@link RayTriangle}'s constants say. */
     private final float[] v;
     /** Where this triangle's numbers start in {@link #v}: 0, or its place in its mesh's one array. */
     private final int at;
