@@ -3,7 +3,6 @@ package rtd.cli;
 import java.util.ArrayList;
 import java.util.List;
 import rtd.camera.ICamera;
-import rtd.cli.MotionOptions.FramePlan;
 import rtd.io.ClockedScene;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
