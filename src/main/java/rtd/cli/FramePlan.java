@@ -62,7 +62,8 @@ record FramePlan(int frames, int first, int last, double fps) {
         } catch (SceneException e) {
             throw new SceneException(e.errors().stream().map(error -> error.message().contains("clock =") ? error
                     : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
-                            + ", at clock = " + ClockedScene.clockText(clock(i)) + ")", error.sourceLine(), error.help()))
+                            + ", at clock = " + ClockedScene.clockText(clock(i)) + ")", error.sourceLine(),
+                            error.help()))
                     .toList(), false);
         }
     }

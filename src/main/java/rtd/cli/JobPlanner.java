@@ -107,7 +107,7 @@ record JobPlanner(Path output, StandardStreams streams) {
         }
     }
 
-    /** Whether {@code file} is a regular file that starts as a PNG file does (not a FIFO: its bytes are the reader's). */
+    /** Whether {@code file} is a regular file that starts as a PNG does (not a FIFO: its bytes are the reader's). */
     private static boolean isPngPicture(Path file) {
         byte[] signature = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
         try (InputStream in = Files.isRegularFile(file) ? Files.newInputStream(file) : InputStream.nullInputStream()) {
@@ -117,7 +117,7 @@ record JobPlanner(Path output, StandardStreams streams) {
         }
     }
 
-    /** {@code a.txt} gives {@code a.png}, or with {@code suffix} "-cost", {@code a-cost.png}; {@code a} gives {@code a.png}. */
+    /** {@code a.txt} gives {@code a.png}, with {@code suffix} "-cost" {@code a-cost.png}; {@code a} {@code a.png}. */
     static Path defaultOutput(Path scene, String suffix) {
         String name = scene.getFileName().toString();
         int dot = name.lastIndexOf('.');

@@ -64,11 +64,13 @@ public final class RtdCommand implements Callable<Integer> {
     private Path output;
 
     @Option(names = "--width", paramLabel = "N", defaultValue = "" + DEFAULT_WIDTH,
-            converter = OptionValues.PositiveWhole.class, description = "image width in pixels (default: ${DEFAULT-VALUE})")
+            converter = OptionValues.PositiveWhole.class,
+            description = "image width in pixels (default: ${DEFAULT-VALUE})")
     private int width;
 
     @Option(names = "--height", paramLabel = "N", defaultValue = "" + DEFAULT_HEIGHT,
-            converter = OptionValues.PositiveWhole.class, description = "image height in pixels (default: ${DEFAULT-VALUE})")
+            converter = OptionValues.PositiveWhole.class,
+            description = "image height in pixels (default: ${DEFAULT-VALUE})")
     private int height;
 
     @Option(names = "--scale", paramLabel = "F", defaultValue = "1", converter = OptionValues.ScaleFactor.class,
@@ -88,8 +90,8 @@ public final class RtdCommand implements Callable<Integer> {
                     + "its shadow rays, and bvh for the rest); auto: grid (default: ${DEFAULT-VALUE})")
     private Accelerator.Choice accel;
 
-    @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "
-            + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
+    @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its "
+            + "loop over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
     private boolean paper;
 
     @Option(names = "--samples", paramLabel = "N", defaultValue = "1", converter = OptionValues.Samples.class,
@@ -137,8 +139,8 @@ public final class RtdCommand implements Callable<Integer> {
     private Double clock;
 
     @Option(names = "--frames", paramLabel = "N", converter = OptionValues.FrameCount.class,
-            description = "draw N pictures (N at least 2), frame i at clock = i/(N-1): -o NAME.png writes NAME-000.png, "
-                    + "NAME-001.png, ...; -o NAME.gif one looping animated GIF")
+            description = "draw N pictures (N at least 2), frame i at clock = i/(N-1): -o NAME.png writes "
+                    + "NAME-000.png, NAME-001.png, ...; -o NAME.gif one looping animated GIF")
     private Integer frames;
 
     @Option(names = "--fps", paramLabel = "F", converter = OptionValues.FramesPerSecond.class,

@@ -92,7 +92,7 @@ record TeachingRun(String explain, View view, Path exportPov, boolean watch) {
         return 0;
     }
 
-    /** The option given that takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}), or null. */
+    /** The option that takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}), or null. */
     String replacingOption() {
         return watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : null;
     }
@@ -175,10 +175,12 @@ record TeachingRun(String explain, View view, Path exportPov, boolean watch) {
     private static void explain(Scene scene, int x, int y, RenderOptions options, PrintWriter out) {
         out.println("rtd --explain " + x + "," + y + ": pixel (" + x + ", " + y + ") of the " + options.width() + " × "
                 + options.height() + " picture of " + options.scene());
-        out.println("(every number is the renderer's own float, written as the shortest decimal that reads back as it)");
+        out.println("(every number is the renderer's own float, written as the shortest decimal that reads back "
+                + "as it)");
         if (options.samples() > 1) {
             out.println("(with --samples " + options.samples() + " the picture's pixel is the mean of "
-                    + options.samples() * options.samples() + " rays; this is the ray through its corner, --samples 1)");
+                    + options.samples() * options.samples()
+                    + " rays; this is the ray through its corner, --samples 1)");
         }
         out.println();
         out.print(PixelExplanation.of(scene, x, y, options.width(), options.height()));
