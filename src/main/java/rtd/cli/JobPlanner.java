@@ -28,23 +28,23 @@ record JobPlanner(Path output, StandardStreams streams) {
     /** Each scene's job, in order; one picture name cannot serve several scenes. */
     List<Job> jobs(List<Path> scenes) {
         List<SceneSource> sources = scenes.stream().map(SceneSource::of).toList();
-        RtdCommand.refuse(output != null && sources.size() > 1, "-o names one picture, but "
+        Misuse.refuse(output != null && sources.size() > 1, "-o names one picture, but "
                 + sources.size() + " scenes were given; leave -o out to write each picture beside its scene");
-        RtdCommand.refuse(output == null && sources.stream().anyMatch(SceneSource::stdin), "the scene '-' "
+        Misuse.refuse(output == null && sources.stream().anyMatch(SceneSource::stdin), "the scene '-' "
                 + "comes from standard input, which gives no name for the picture; name it with -o, such as "
                 + "-o out.png, or -o - for standard output");
         List<Job> jobs = new ArrayList<>();
         Map<Path, SceneSource> writers = new HashMap<>();
         Map<Object, SceneSource> files = new HashMap<>();
         for (SceneSource source : sources) {
-            RtdCommand.refuse(!source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null,
+            Misuse.refuse(!source.stdin() && files.putIfAbsent(fileKey(source.path()), source) != null,
                     "the scene '" + source.name() + "' is given twice (or a link to it is); give it once");
             try {
                 OutputTarget target = outputTarget(source);
                 // ball.txt and an editor's ball.txt~ both give ball.png: the second would replace the first's
                 SceneSource earlier = target.kind() != OutputTarget.Kind.REPLACE ? null
                         : writers.putIfAbsent(realPlace(target.file()), source);
-                RtdCommand.refuse(earlier != null, "the scenes '" + (earlier == null ? "" : earlier.name())
+                Misuse.refuse(earlier != null, "the scenes '" + (earlier == null ? "" : earlier.name())
                         + "' and '" + source.name() + "' would both write their picture to '" + target.spelt()
                         + "', the second replacing the first; render them in separate runs with -o, or rename one");
                 jobs.add(new Job(source, target, format(target), null));
@@ -60,7 +60,7 @@ record JobPlanner(Path output, StandardStreams streams) {
         ImageFormat format = ImageFormat.forOutput(target.spelt()).orElse(null);
         if (format == null) { // the writers' list only for the message: asking every writer takes a while
             String extension = ImageFormat.extensionOf(target.spelt()).orElse("");
-            throw new RtdCommand.Misuse("the output '" + target.spelt() + "' ends in '." + extension + "', a format rtd "
+            throw new Misuse("the output '" + target.spelt() + "' ends in '." + extension + "', a format rtd "
                     + "cannot write; give it one of "
                     + ImageFormat.writableExtensions().stream().map(e -> "." + e).collect(Collectors.joining(", ")));
         }
@@ -73,7 +73,7 @@ record JobPlanner(Path output, StandardStreams streams) {
             throw new FileError("cannot read the scene file '" + source.name() + "': it is a folder, not a file");
         }
         if (OutputTarget.DASH.equals(output)) {
-            RtdCommand.refuse(streams.outIsTerminal(), "-o - writes the picture to standard output, which "
+            Misuse.refuse(streams.outIsTerminal(), "-o - writes the picture to standard output, which "
                     + "is a terminal here; send it to a file or a program instead, such as: " + RtdCommand.NAME
                     + " scene.txt -o - > out.png");
             return OutputTarget.standardOutput();
@@ -107,7 +107,7 @@ record JobPlanner(Path output, StandardStreams streams) {
         }
     }
 
-    /** Whether {@code file} is a regular file that starts as a PNG file does (not a FIFO: its bytes are the reader's). */
+    /** Whether {@code file} is a regular file that starts as a PNG does (not a FIFO: its bytes are the reader's). */
     private static boolean isPngPicture(Path file) {
         byte[] signature = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
         try (InputStream in = Files.isRegularFile(file) ? Files.newInputStream(file) : InputStream.nullInputStream()) {
@@ -117,7 +117,7 @@ record JobPlanner(Path output, StandardStreams streams) {
         }
     }
 
-    /** {@code a.txt} gives {@code a.png}, or with {@code suffix} "-cost", {@code a-cost.png}; {@code a} gives {@code a.png}. */
+    /** {@code a.txt} gives {@code a.png}, with {@code suffix} "-cost" {@code a-cost.png}; {@code a} {@code a.png}. */
     static Path defaultOutput(Path scene, String suffix) {
         String name = scene.getFileName().toString();
         int dot = name.lastIndexOf('.');

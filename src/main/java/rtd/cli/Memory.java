@@ -25,7 +25,7 @@ final class Memory {
             double shrink = Math.sqrt(MOST_PIXELS / (double) pixels);
             String factor = BigDecimal.valueOf(scale.factor() * shrink).round(new MathContext(3, RoundingMode.DOWN))
                     .stripTrailingZeros().toPlainString();
-            throw new RtdCommand.Misuse(String.format(Locale.ROOT, "a %d×%d image has %,d pixels; Java "
+            throw new Misuse(String.format(Locale.ROOT, "a %d×%d image has %,d pixels; Java "
                     + "images hold at most %,d: the largest of that shape is %d×%d, or keep the view with --scale %s",
                     width, height, pixels, MOST_PIXELS, (long) (width * shrink), (long) (height * shrink), factor));
         }
@@ -37,7 +37,7 @@ final class Memory {
                     .map(xmx -> "choose a smaller --width/--height, or raise the limit: java -Xmx" + xmx
                             + " -jar rtd.jar ...")
                     .orElse("choose a smaller --width/--height: this machine has " + size(physical()) + " in all");
-            throw new RtdCommand.Misuse(String.format(Locale.ROOT,
+            throw new Misuse(String.format(Locale.ROOT,
                     "a %d×%d image needs %s of memory, but Java may use only %s more here (limit %s); %s",
                     width, height, size(needed), size(available), size(runtime.maxMemory()), advice));
         }

@@ -118,7 +118,8 @@ final class NothingInView {
         int w = RtdCommand.DEFAULT_WIDTH;
         int h = RtdCommand.DEFAULT_HEIGHT;
         Scale scale = new Scale(Double.parseDouble(number(options.width() / (double) w)));
-        if (!options.given() || options.scale().factor() != 1 || (long) options.width() * h != (long) options.height() * w
+        if (!options.given() || options.scale().factor() != 1
+                || (long) options.width() * h != (long) options.height() * w
                 || scale.times(w) != options.width() || scale.times(h) != options.height()
                 || objects.stream().noneMatch(o -> inRegion(o.bounds(), camera, w, h))) {
             return "";
@@ -152,6 +153,7 @@ final class NothingInView {
         Vector3f a = box.min();
         Vector3f b = box.max();
         return IntStream.range(0, 8).mapToObj(i -> new Vector3f((i & 1) == 0 ? a.x() : b.x(), (i & 2) == 0 ? a.y()
-                : b.y(), (i & 4) == 0 ? a.z() : b.z())).mapToDouble(c -> c.subtract(origin).dot(axis)).summaryStatistics();
+                : b.y(), (i & 4) == 0 ? a.z() : b.z())).mapToDouble(c -> c.subtract(origin).dot(axis))
+                .summaryStatistics();
     }
 }

@@ -73,7 +73,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
         }
         Path real = target.file.getFileName();
         // a link to a file of another kind, such as a mesh or notes: a slip, and replacing it would destroy it
-        RtdCommand.refuse(target.kind == Kind.REPLACE && "-o".equals(option) && real != null
+        Misuse.refuse(target.kind == Kind.REPLACE && "-o".equals(option) && real != null
                 && !real.equals(spelt.getFileName()) && !(ImageFormat.extensionOf(target.file).isPresent()
                         && ImageFormat.forOutput(target.file).equals(ImageFormat.forOutput(spelt))), "'" + spelt
                 + "' leads to '" + target.file + "', whose name is not that of a ."
@@ -83,7 +83,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
     }
 
     private static OutputTarget find(Path output, Path scene, String option) throws FileError {
-        RtdCommand.refuse(Files.isDirectory(output), "the output '" + output + "' is a folder; give a "
+        Misuse.refuse(Files.isDirectory(output), "the output '" + output + "' is a folder; give a "
                 + "file name such as " + output.resolve("out.png"));
         if (!Files.exists(output)) {
             if (Files.isSymbolicLink(output)) {
@@ -92,7 +92,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
             }
             return new OutputTarget(output, output, Kind.REPLACE);
         }
-        RtdCommand.refuse(isSameFile(output, scene), "the output '" + output + "' is the scene file "
+        Misuse.refuse(isSameFile(output, scene), "the output '" + output + "' is the scene file "
                 + "itself; choose another with " + option);
         String notAFile = switch (fileType(output)) {
             case 0100000 -> null;
@@ -108,7 +108,7 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
                 throw new FileError("cannot write '" + output + "'", e);
             }
         }
-        RtdCommand.refuse(!notAFile.isEmpty(), "the output '" + output + "' is " + notAFile + "; rtd "
+        Misuse.refuse(!notAFile.isEmpty(), "the output '" + output + "' is " + notAFile + "; rtd "
                 + "writes the picture to a file, a FIFO or a character device such as /dev/null");
         return new OutputTarget(output, output, Kind.STREAM);
     }

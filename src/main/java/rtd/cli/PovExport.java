@@ -3,7 +3,6 @@ package rtd.cli;
 import java.util.ArrayList;
 import java.util.List;
 import rtd.camera.ICamera;
-import rtd.cli.MotionOptions.FramePlan;
 import rtd.io.ClockedScene;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
@@ -93,8 +92,8 @@ final class PovExport {
                 + "#switch (frame_number)\n");
         for (int i = 0; i < plan.frames(); i++) {
             Scene scene = options.scale().of(file.at(plan.clock(i), null));
-            pov.append("#case (").append(i).append(")\n").append(PovScene.frame(scene, options.width(), options.height()))
-                    .append("#break\n");
+            pov.append("#case (").append(i).append(")\n")
+                    .append(PovScene.frame(scene, options.width(), options.height())).append("#break\n");
         }
         return pov.append("#end\n").toString();
     }

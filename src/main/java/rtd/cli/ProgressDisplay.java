@@ -129,8 +129,8 @@ final class ProgressDisplay implements AutoCloseable {
         String line(double seconds, int columns) {
             double done = fraction.getAsDouble();
             long traced = rays.getAsLong();
-            String rate = traced >= 0 && seconds > 0 ? String.format(Locale.ROOT, "%.2f Mrays/s", traced / seconds / 1e6)
-                    : null;
+            String rate = traced >= 0 && seconds > 0
+                    ? String.format(Locale.ROOT, "%.2f Mrays/s", traced / seconds / 1e6) : null;
             OptionalDouble left = Double.isNaN(done) ? OptionalDouble.empty() : timeLeft(seconds, done);
             return fit(name, done, rate, left, seconds, columns);
         }

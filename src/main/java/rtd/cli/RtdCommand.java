@@ -10,16 +10,15 @@ import java.util.concurrent.CompletableFuture;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IVersionProvider;
-import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.UnmatchedArgumentException;
-import rtd.cli.MotionOptions.FramePlan;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;
+import rtd.view.View;
 
 /**
  * The command line: {@code java -jar rtd.jar SCENE... [-o OUT] [options]}. It checks the whole command line first,
@@ -65,11 +64,13 @@ public final class RtdCommand implements Callable<Integer> {
     private Path output;
 
     @Option(names = "--width", paramLabel = "N", defaultValue = "" + DEFAULT_WIDTH,
-            converter = OptionValues.PositiveWhole.class, description = "image width in pixels (default: ${DEFAULT-VALUE})")
+            converter = OptionValues.PositiveWhole.class,
+            description = "image width in pixels (default: ${DEFAULT-VALUE})")
     private int width;
 
     @Option(names = "--height", paramLabel = "N", defaultValue = "" + DEFAULT_HEIGHT,
-            converter = OptionValues.PositiveWhole.class, description = "image height in pixels (default: ${DEFAULT-VALUE})")
+            converter = OptionValues.PositiveWhole.class,
+            description = "image height in pixels (default: ${DEFAULT-VALUE})")
     private int height;
 
     @Option(names = "--scale", paramLabel = "F", defaultValue = "1", converter = OptionValues.ScaleFactor.class,
@@ -89,8 +90,8 @@ public final class RtdCommand implements Callable<Integer> {
                     + "its shadow rays, and bvh for the rest); auto: grid (default: ${DEFAULT-VALUE})")
     private Accelerator.Choice accel;
 
-    @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its loop "
-            + "over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
+    @Option(names = "--paper", description = "render with the paper's own code, Scene.render (Listing 4.2) and its "
+            + "loop over every object (Listing 4.3), on one thread; --accel and --threads do not apply")
     private boolean paper;
 
     @Option(names = "--samples", paramLabel = "N", defaultValue = "1", converter = OptionValues.Samples.class,
@@ -107,14 +108,48 @@ public final class RtdCommand implements Callable<Integer> {
     @Option(names = "--debug", description = "show the stack trace of an error")
     private boolean debug;
 
-    @Mixin
-    private TeachingOptions teaching;
+    @Option(names = "--explain", paramLabel = "X,Y", description = "instead of a picture, print what rtd does for "
+            + "pixel (X, Y), step by step in the paper's terms: the ray, each object's intersection test, the depth "
+            + "test and the colour (with lights: each light's terms and the reflected and refracted rays)")
+    private String explain;
 
-    @Mixin
-    private WindowOptions window;
+    @Option(names = "--view", paramLabel = "KIND", description = "instead of the picture, draw what the rays did: "
+            + "cost (intersection tests per ray, a heat map with its scale), depth (|P - O| in grey, near bright), "
+            + "normal (the normal as colour), id (a colour per object); default output SCENE-KIND.png")
+    private View view;
 
-    @Mixin
-    private MotionOptions motion;
+    @Option(names = "--export-pov", paramLabel = "FILE.pov", converter = OptionValues.OutputFile.class,
+            description = "also write the scene as a POV-Ray 3.7 scene that draws the same picture; its first lines "
+                    + "give the povray command")
+    private Path exportPov;
+
+    @Option(names = "--watch", description = "after the first render, render again whenever the scene file (or a mesh "
+            + "it uses) changes, until Ctrl-C; a broken edit prints its errors and keeps the last good picture")
+    private boolean watch;
+
+    @Option(names = "--window", description = "instead of writing the picture, open the scene in a window (960x540 "
+            + "unless --width, --height or --scale say otherwise): it renders coarse at once and refines; drag to "
+            + "orbit, right-drag to pan, wheel to zoom, click a pixel to see its rays and --explain; keys 1-5 picture "
+            + "and views, R reset, C copy the camera line, P play the clock, Ctrl+S save, Q quit; saving the scene "
+            + "renders it again; --clock C is the clock it starts at")
+    private boolean window;
+
+    @Option(names = "--clock", paramLabel = "C", converter = OptionValues.FiniteNumber.class,
+            description = "the value of clock in the scene's expressions (default: 0)")
+    private Double clock;
+
+    @Option(names = "--frames", paramLabel = "N", converter = OptionValues.FrameCount.class,
+            description = "draw N pictures (N at least 2), frame i at clock = i/(N-1): -o NAME.png writes "
+                    + "NAME-000.png, NAME-001.png, ...; -o NAME.gif one looping animated GIF")
+    private Integer frames;
+
+    @Option(names = "--fps", paramLabel = "F", converter = OptionValues.FramesPerSecond.class,
+            description = "frames per second of the animated GIF (default: 24)")
+    private Double fps;
+
+    @Option(names = "--subset", paramLabel = "A-B", description = "with --frames: draw only frames A to B (from 0, "
+            + "inclusive), with the clocks and names they have in the whole animation")
+    private String subset;
 
     private RtdCommand(StandardStreams streams) {
         this.streams = streams;
@@ -172,10 +207,11 @@ public final class RtdCommand implements Callable<Integer> {
         CommandLine commandLine = spec.commandLine();
         PrintWriter err = commandLine.getErr();
         try {
-            FramePlan frames = motion.plan(scenePaths, output, window.requested() ? "--window"
-                    : teaching.replacingOption());
-            if (window.requested()) {
-                return window.run(options(true), commandLine, err);
+            TeachingRun teaching = new TeachingRun(explain, view, exportPov, watch);
+            FramePlan frames = FramePlan.of(this.frames, subset, fps, clock != null, scenePaths, output,
+                    window ? "--window" : teaching.replacingOption());
+            if (window) {
+                return WindowRun.run(options(true), commandLine, err);
             }
             Integer taught = teaching.run(options(false), commandLine, err); // null: no teaching option answers
             if (taught != null) {
@@ -249,29 +285,7 @@ public final class RtdCommand implements Callable<Integer> {
         return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledWidth)),
                 (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledHeight)), scale,
                 given("--width") || given("--height"), threads, accel, paper, samples, stats,
-                !noProgress && StandardStreams.stderrIsTerminal(), motion.clock());
-    }
-
-    /** A mistake on the command line found while planning the run, reported as picocli reports one (exit code 2). */
-    static final class Misuse extends RuntimeException {
-        private static final long serialVersionUID = 1L;
-
-        Misuse(String message) {
-            super(message);
-        }
-    }
-
-    /** A misuse of the command line (exit code 2) saying {@code message}, if {@code wrong}. */
-    static void refuse(boolean wrong, String message) {
-        if (wrong) {
-            throw new Misuse(message);
-        }
-    }
-
-    /** A misuse unless {@code option}, which works on one picture, is given one scene file. */
-    static void oneSceneFile(String option, List<Path> scenes) {
-        refuse(scenes.size() > 1, option + " works on one scene file, but " + scenes.size()
-                + " were given; run rtd once for each");
+                !noProgress && StandardStreams.stderrIsTerminal(), clock == null ? 0 : clock);
     }
 
     private boolean given(String option) {

@@ -18,7 +18,6 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import rtd.cli.Accelerator.StructureCache;
-import rtd.cli.MotionOptions.FramePlan;
 import rtd.image.Picture;
 import rtd.io.AnimatedGif;
 import rtd.io.ClockedScene;

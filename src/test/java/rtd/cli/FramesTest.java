@@ -15,7 +15,6 @@ import javax.imageio.stream.ImageInputStream;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import rtd.cli.MotionOptions.FramePlan;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
 import rtd.testing.Cli;

@@ -75,7 +75,7 @@ class WindowOptionsTest {
         RenderOptions options = new RenderOptions(List.of(scene), null, 160, 90, new Scale(1), true, 1, Choice.auto,
                 false, 1, false, false, 0);
         AtomicInteger saves = new AtomicInteger();
-        AutoCloseable watching = WindowOptions.watch(options).start(saves::incrementAndGet);
+        AutoCloseable watching = WindowRun.watch(options).start(saves::incrementAndGet);
         try {
             Thread.sleep(3 * SceneWatcher.POLL_MILLIS);
             assertThat(saves).hasValue(0);

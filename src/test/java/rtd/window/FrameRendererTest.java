@@ -16,7 +16,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import rtd.camera.OrthographicCamera;
-import rtd.cli.WindowOptions;
+import rtd.cli.WindowRun;
 import rtd.scene.Scene;
 import rtd.testing.Cli;
 import rtd.testing.Scenes;
@@ -26,7 +26,7 @@ import rtd.window.WindowSetup.Engine;
 @DisplayName("The window's renders: passes of 8, 4, 2 and 1, the last -o's own pixels, and cancelled by a newer one")
 class FrameRendererTest {
 
-    private static final Engine ENGINE = WindowOptions.engine("auto", 2);
+    private static final Engine ENGINE = WindowRun.engine("auto", 2);
 
     @TempDir
     Path dir;

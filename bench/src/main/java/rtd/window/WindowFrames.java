@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import rtd.accel.ViewGrid;
 import rtd.camera.OrthographicCamera;
-import rtd.cli.WindowOptions;
+import rtd.cli.WindowRun;
 import rtd.image.Picture;
 import rtd.io.SceneIO;
 import rtd.math.Vector3f;
@@ -36,7 +36,7 @@ public final class WindowFrames {
     public static void main(String[] args) throws Exception {
         double seconds = args.length > 0 ? Double.parseDouble(args[0]) : 5;
         int threads = Runtime.getRuntime().availableProcessors();
-        Engine engine = WindowOptions.engine("auto", threads);
+        Engine engine = WindowRun.engine("auto", threads);
         System.out.printf(Locale.ROOT, "%d × %d, %d threads, %.0f s of frames per figure, after as long warming%n",
                 WIDTH, HEIGHT, threads, seconds);
         for (String name : new String[] {"input_rtd", "glass_and_mirror"}) {

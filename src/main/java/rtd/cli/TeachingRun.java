@@ -8,7 +8,6 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
-import picocli.CommandLine.Option;
 import rtd.explain.PixelExplanation;
 import rtd.io.SceneException;
 import rtd.render.ParallelRenderer;
@@ -20,32 +19,13 @@ import rtd.view.ViewPicture;
 import rtd.view.ViewShader;
 
 /**
- * The teaching options, a picocli mixin of {@link RtdCommand}: {@code --explain X,Y} prints what rtd does for one
- * pixel in the paper's terms, {@code --view KIND} draws what the rays did, {@code --export-pov} writes the scene for
- * POV-Ray, {@code --watch} renders again whenever the scene changes.
+ * What the teaching options ask: {@code --explain X,Y} prints what rtd does for one pixel in the paper's terms,
+ * {@code --view KIND} draws what the rays did, {@code --export-pov} writes the scene for POV-Ray, {@code --watch}
+ * renders again whenever the scene changes. Each is null (or false) if not given.
  */
-public final class TeachingOptions {
+record TeachingRun(String explain, View view, Path exportPov, boolean watch) {
 
     private static final Pattern PIXEL = Pattern.compile("\\s*(\\d{1,9})\\s*,\\s*(\\d{1,9})\\s*");
-
-    @Option(names = "--explain", paramLabel = "X,Y", description = "instead of a picture, print what rtd does for "
-            + "pixel (X, Y), step by step in the paper's terms: the ray, each object's intersection test, the depth "
-            + "test and the colour (with lights: each light's terms and the reflected and refracted rays)")
-    private String explain;
-
-    @Option(names = "--view", paramLabel = "KIND", description = "instead of the picture, draw what the rays did: "
-            + "cost (intersection tests per ray, a heat map with its scale), depth (|P - O| in grey, near bright), "
-            + "normal (the normal as colour), id (a colour per object); default output SCENE-KIND.png")
-    private View view;
-
-    @Option(names = "--export-pov", paramLabel = "FILE.pov", converter = OptionValues.OutputFile.class,
-            description = "also write the scene as a POV-Ray 3.7 scene that draws the same picture; its first lines "
-                    + "give the povray command")
-    private Path exportPov;
-
-    @Option(names = "--watch", description = "after the first render, render again whenever the scene file (or a mesh "
-            + "it uses) changes, until Ctrl-C; a broken edit prints its errors and keeps the last good picture")
-    private boolean watch;
 
     /** Runs what takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}); else null. */
     Integer run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
@@ -54,20 +34,20 @@ public final class TeachingOptions {
             if (explain != null && explain.matches("\\s*\\d{1,9}\\s*")) { // --explain 300 400 reads 400 as a scene
                 Path number = options.scenes().stream().filter(p -> p.toString().matches("\\d{1,9}")
                         && !Files.exists(p)).findFirst().orElse(null);
-                RtdCommand.refuse(number != null, "--explain takes the pixel as X,Y with a comma, and '" + number + "' "
+                Misuse.refuse(number != null, "--explain takes the pixel as X,Y with a comma, and '" + number + "' "
                         + "was read as a scene file; did you mean --explain " + explain.strip() + "," + number + "?");
             }
             String option = replacing != null ? replacing : "--export-pov";
-            RtdCommand.oneSceneFile(option, options.scenes());
-            RtdCommand.refuse(options.scene().toString().equals("-"), option + " needs a scene file; it "
+            Misuse.oneSceneFile(option, options.scenes());
+            Misuse.refuse(options.scene().toString().equals("-"), option + " needs a scene file; it "
                     + "cannot work on standard input ('-')");
         }
         if (watch) {
-            RtdCommand.refuse(OutputTarget.DASH.equals(options.output()), "--watch writes the picture again at each "
+            Misuse.refuse(OutputTarget.DASH.equals(options.output()), "--watch writes the picture again at each "
                     + "save, which cannot go to standard output ('-o -'); give a file, such as -o out.png");
             return SceneWatcher.forCommandLine(commandLine, options.scene(), err).run();
         }
-        RtdCommand.refuse(explain != null && view != null, "--explain and --view each take the place of "
+        Misuse.refuse(explain != null && view != null, "--explain and --view each take the place of "
                 + "the picture; give one of them");
         if (explain == null && view == null) {
             return null;
@@ -112,7 +92,7 @@ public final class TeachingOptions {
         return 0;
     }
 
-    /** The option given that takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}), or null. */
+    /** The option that takes the picture's place ({@code --explain}, {@code --view}, {@code --watch}), or null. */
     String replacingOption() {
         return watch ? "--watch" : explain != null ? "--explain" : view != null ? "--view" : null;
     }
@@ -123,15 +103,15 @@ public final class TeachingOptions {
             return null;
         }
         String name = exportPov.getFileName() == null ? "" : exportPov.getFileName().toString();
-        RtdCommand.refuse(exportPov.toString().equals("-"), "--export-pov writes a file, not standard "
+        Misuse.refuse(exportPov.toString().equals("-"), "--export-pov writes a file, not standard "
                 + "output ('-'); give a name that ends in .pov, such as scene.pov");
-        RtdCommand.refuse(name.indexOf('"') >= 0, "--export-pov '" + exportPov + "': a name with a double "
+        Misuse.refuse(name.indexOf('"') >= 0, "--export-pov '" + exportPov + "': a name with a double "
                 + "quote cannot be given to POV-Ray; choose one without"); // the folder is cd's
         String base = name.contains(".") ? name.substring(0, name.lastIndexOf('.')) : name;
-        RtdCommand.refuse(!endsInPov(exportPov), "--export-pov writes a POV-Ray scene, and its name must end in .pov; '"
+        Misuse.refuse(!endsInPov(exportPov), "--export-pov writes a POV-Ray scene, and its name must end in .pov; '"
                 + exportPov + "' does not: give a name such as " + (base.isEmpty() ? "scene" : base) + ".pov");
         OutputTarget target = OutputTarget.of(exportPov, options.scene(), "--export-pov");
-        RtdCommand.refuse(target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
+        Misuse.refuse(target.kind() == OutputTarget.Kind.REPLACE && !endsInPov(target.file()), "'"
                 + exportPov + "' leads to '" + target.file() + "', whose name does not end in .pov; --export-pov "
                 + "replaces only a POV-Ray scene");
         return target;
@@ -144,7 +124,7 @@ public final class TeachingOptions {
     /** Where the view goes: {@code -o}, or beside the scene as {@code scene-KIND.png}; checked as a picture's is. */
     private OutputTarget viewTarget(RenderOptions options) throws FileError {
         Path byDefault = JobPlanner.defaultOutput(options.scene(), "-" + view);
-        RtdCommand.refuse(OutputTarget.DASH.equals(options.output()), "--view writes its picture to a "
+        Misuse.refuse(OutputTarget.DASH.equals(options.output()), "--view writes its picture to a "
                 + "file; -o - (standard output) is for the rendered picture only: give a file name, such as "
                 + byDefault.getFileName());
         OutputTarget target = OutputTarget.of(options.output() != null ? options.output() : byDefault, options.scene(),
@@ -183,11 +163,11 @@ public final class TeachingOptions {
         int height = options.height();
         String range = String.format("0 ≤ X < %d and 0 ≤ Y < %d (the image is %d × %d)", width, height, width, height);
         Matcher matcher = PIXEL.matcher(explain);
-        RtdCommand.refuse(!matcher.matches(), "--explain '" + explain + "': give the pixel as X,Y, two "
+        Misuse.refuse(!matcher.matches(), "--explain '" + explain + "': give the pixel as X,Y, two "
                 + "whole numbers with " + range);
         int x = Integer.parseInt(matcher.group(1));
         int y = Integer.parseInt(matcher.group(2));
-        RtdCommand.refuse(x >= width || y >= height, "--explain " + x + "," + y + ": the pixel lies "
+        Misuse.refuse(x >= width || y >= height, "--explain " + x + "," + y + ": the pixel lies "
                 + "outside the image; choose " + range);
         return new int[] {x, y};
     }
@@ -195,10 +175,12 @@ public final class TeachingOptions {
     private static void explain(Scene scene, int x, int y, RenderOptions options, PrintWriter out) {
         out.println("rtd --explain " + x + "," + y + ": pixel (" + x + ", " + y + ") of the " + options.width() + " × "
                 + options.height() + " picture of " + options.scene());
-        out.println("(every number is the renderer's own float, written as the shortest decimal that reads back as it)");
+        out.println("(every number is the renderer's own float, written as the shortest decimal that reads back "
+                + "as it)");
         if (options.samples() > 1) {
             out.println("(with --samples " + options.samples() + " the picture's pixel is the mean of "
-                    + options.samples() * options.samples() + " rays; this is the ray through its corner, --samples 1)");
+                    + options.samples() * options.samples()
+                    + " rays; this is the ray through its corner, --samples 1)");
         }
         out.println();
         out.print(PixelExplanation.of(scene, x, y, options.width(), options.height()));

@@ -5,7 +5,6 @@ import java.io.Writer;
 import java.io.IOException;
 import java.util.function.Supplier;
 import picocli.CommandLine;
-import picocli.CommandLine.Option;
 import rtd.accel.Bvh;
 import rtd.accel.LightGrids;
 import rtd.accel.ViewGrid;
@@ -20,10 +19,10 @@ import rtd.window.WindowSetup.Engine;
 import rtd.window.WindowSetup.FileWatch;
 
 /**
- * {@code --window}, a picocli mixin of {@link RtdCommand}: opens the scene in a window ({@link Window}) instead of
- * writing its picture, with the size, samples, threads and tracers the command line gives.
+ * {@code --window}: opens the scene in a window ({@link Window}) instead of writing its picture, with the size,
+ * samples, threads and tracers the command line gives. Its classes load only when the window is asked for.
  */
-public final class WindowOptions {
+public final class WindowRun {
 
     /** The options that have no meaning in a window, each with what the window does instead. */
     private static final String[][] REFUSED = {{"--explain", "a click on a pixel explains it"},
@@ -34,25 +33,17 @@ public final class WindowOptions {
     private static final int WIDTH = 960;
     private static final int HEIGHT = 540;
 
-    @Option(names = "--window", description = "instead of writing the picture, open the scene in a window (960x540 "
-            + "unless --width, --height or --scale say otherwise): it renders coarse at once and refines; drag to "
-            + "orbit, right-drag to pan, wheel to zoom, click a pixel to see its rays and --explain; keys 1-5 picture "
-            + "and views, R reset, C copy the camera line, P play the clock, Ctrl+S save, Q quit; saving the scene "
-            + "renders it again; --clock C is the clock it starts at")
-    private boolean window;
-
-    boolean requested() {
-        return window;
+    private WindowRun() {
     }
 
     /** Opens the window, once what makes no sense in one is refused; the exit code when it is closed. */
-    int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
-        RtdCommand.refuse(options.scenes().size() > 1, "--window opens one scene file, but "
+    static int run(RenderOptions options, CommandLine commandLine, PrintWriter err) throws SceneException, FileError {
+        Misuse.refuse(options.scenes().size() > 1, "--window opens one scene file, but "
                 + options.scenes().size() + " were given; open each in a window of its own");
-        RtdCommand.refuse(options.scene().toString().equals("-"), "--window needs a scene file to watch; "
+        Misuse.refuse(options.scene().toString().equals("-"), "--window needs a scene file to watch; "
                 + "it cannot open standard input ('-')");
         for (String[] refused : REFUSED) {
-            RtdCommand.refuse(commandLine.getParseResult().hasMatchedOption(refused[0]), "--window and "
+            Misuse.refuse(commandLine.getParseResult().hasMatchedOption(refused[0]), "--window and "
                     + refused[0] + " do not go together: " + refused[1]);
         }
         String missing = Window.missingDisplay();
