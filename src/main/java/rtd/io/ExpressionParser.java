@@ -37,7 +37,7 @@ final class ExpressionParser {
         this.names = names;
     }
 
-    Expression read() throws StatementError {
+    Expression read() throws SceneException {
         depth = 0;
         operators = 0;
         Expression expression = sum();
@@ -54,7 +54,7 @@ final class ExpressionParser {
         return expression;
     }
 
-    private Expression sum() throws StatementError {
+    private Expression sum() throws SceneException {
         Expression left = product();
         for (cursor.skipBlanks(); cursor.at('+') || cursor.at('-'); cursor.skipBlanks()) {
             int at = operator();
@@ -64,7 +64,7 @@ final class ExpressionParser {
     }
 
     /** A '/' that starts a {@code //} comment ends the expression. */
-    private Expression product() throws StatementError {
+    private Expression product() throws SceneException {
         Expression left = unary();
         for (cursor.skipBlanks(); cursor.at('*') || cursor.at('/') && !cursor.atEndOfStatement(); cursor.skipBlanks()) {
             int at = operator();
@@ -74,7 +74,7 @@ final class ExpressionParser {
     }
 
     /** A minus sign binds looser than {@code ^}: {@code -2^2} is {@code -(2^2)}. */
-    private Expression unary() throws StatementError {
+    private Expression unary() throws SceneException {
         cursor.skipBlanks();
         if (++depth > MAX_DEPTH) {
             throw cursor.error(cursor.pos, "the expression is nested too deeply: more than " + MAX_DEPTH + " levels",
@@ -95,7 +95,7 @@ final class ExpressionParser {
         }
     }
 
-    private Expression power() throws StatementError {
+    private Expression power() throws SceneException {
         Expression base = atom();
         cursor.skipBlanks();
         if (!cursor.at('^')) {
@@ -105,7 +105,7 @@ final class ExpressionParser {
         return new Expression.Operation('^', base, unary(), at);
     }
 
-    private Expression atom() throws StatementError {
+    private Expression atom() throws SceneException {
         cursor.skipBlanks();
         if (cursor.at('(')) {
             int open = cursor.pos++;
@@ -124,7 +124,7 @@ final class ExpressionParser {
                 + cursor.describe(cursor.pos), atGroupEnd ? "an operator needs a number on either side" : null);
     }
 
-    private Expression number() throws StatementError {
+    private Expression number() throws SceneException {
         int start = cursor.pos;
         while (isDigitOrPoint(next())) {
             cursor.pos++;
@@ -151,7 +151,7 @@ final class ExpressionParser {
         }
     }
 
-    private Expression nameOrCall() throws StatementError {
+    private Expression nameOrCall() throws SceneException {
         int start = cursor.pos;
         int end = cursor.afterWord(start);
         String word = cursor.source.text(start, end);
@@ -176,7 +176,7 @@ final class ExpressionParser {
         return name;
     }
 
-    private Expression call(Expression.Function function, int start) throws StatementError {
+    private Expression call(Expression.Function function, int start) throws SceneException {
         int open = cursor.pos++;
         List<Expression> arguments = new ArrayList<>(List.of(sum()));
         for (cursor.skipBlanks(); cursor.at(','); cursor.skipBlanks()) {
@@ -193,7 +193,7 @@ final class ExpressionParser {
     }
 
     /** The ')' that closes the '(' at {@code open}, which {@code what} names in the message. */
-    private void expectClosing(int open, String what) throws StatementError {
+    private void expectClosing(int open, String what) throws SceneException {
         cursor.skipBlanks();
         if (cursor.at(')')) {
             cursor.pos++;
@@ -206,16 +206,16 @@ final class ExpressionParser {
                         : "every '(' in an expression needs its ')'");
     }
 
-    private StatementError unknownFunction(String word, int start) {
+    private SceneException unknownFunction(String word, int start) {
         String nearest = near(word, Hints.nearest(word, Expression.Function.NAMES));
         return cursor.error(start, "unknown function '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
                 : "the functions are " + String.join(", ", Expression.Function.NAMES)
                         + (names.lookUp(word, start) != null ? "; a product is written with '*', such as " + word + "*(…)" : ""));
     }
 
-    private StatementError unknownName(String word, int start) {
+    private SceneException unknownName(String word, int start) {
         if (names.isBroken(word)) { // its let's mistake is reported there: this statement is only left out
-            return new StatementError(cursor.error(start, "", null).place, List.of());
+            return new SceneException(cursor.error(start, "", null).place, List.of());
         }
         String nearest = nearestName(word);
         return cursor.error(start, "unknown name '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
@@ -235,7 +235,7 @@ final class ExpressionParser {
     }
 
     /** Passes the operator at the cursor and answers where it stands. */
-    private int operator() throws StatementError {
+    private int operator() throws SceneException {
         if (++operators > MAX_OPERATORS) {
             throw cursor.error(cursor.pos, "the expression is too long: more than " + MAX_OPERATORS + " operators",
                     "split it with let:(name):(expression) lines");

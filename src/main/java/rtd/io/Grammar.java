@@ -132,7 +132,7 @@ final class Grammar {
     }
 
     /** A triangle whose corners do not lie on one line (else it has no area and is never hit). */
-    private static Triangle triangle(StatementValues v) throws StatementError {
+    private static Triangle triangle(StatementValues v) throws SceneException {
         Vector3f p1 = v.vector(0);
         Vector3f n = v.vector(1).subtract(p1).cross(v.vector(2).subtract(p1)); // as the triangle computes it
         if (n.x() == 0 && n.y() == 0 && n.z() == 0) {
@@ -147,7 +147,7 @@ final class Grammar {
     }
 
     /** A box whose corners differ in every coordinate (else it is flat). */
-    private static Box box(StatementValues v) throws StatementError {
+    private static Box box(StatementValues v) throws SceneException {
         for (int k = 0; k < 3; k++) {
             if (v.number(0, k) == v.number(1, k)) {
                 throw v.errorAtValue(1, k, "the box is flat: both corners have " + "xyz".charAt(k) + " = " + v.written(1, k),
@@ -158,13 +158,13 @@ final class Grammar {
     }
 
     /** A cylinder between two different end points (Part III, "More shapes"). */
-    private static Cylinder cylinder(StatementValues v) throws StatementError {
+    private static Cylinder cylinder(StatementValues v) throws SceneException {
         axis(v, 1, "cylinder", "a cylinder runs from one end point to another, such as (0|0|0) to (0|2|0)");
         return new Cylinder(v.vector(0), v.vector(1), v.number(2, 0), v.colour(3), v.material());
     }
 
     /** A cone whose radii are not both 0, between two different end points (Part III, "More shapes"). */
-    private static Cone cone(StatementValues v) throws StatementError {
+    private static Cone cone(StatementValues v) throws SceneException {
         if (v.number(1, 0) == 0 && v.number(3, 0) == 0) {
             throw v.errorAtValue(3, 0, "the cone's radii are both 0, so it has no volume",
                     "give one end a radius greater than 0: cone:(0|0|0):(1):(0|2|0):(0) is a cone with its apex up");
@@ -174,7 +174,7 @@ final class Grammar {
     }
 
     /** The axis of a solid from group 0's end point to group {@code g}'s, which float must be able to normalise. */
-    private static void axis(StatementValues v, int g, String shape, String help) throws StatementError {
+    private static void axis(StatementValues v, int g, String shape, String help) throws SceneException {
         String why = Group.unusable(v.vector(g).subtract(v.vector(0)));
         if ("zero".equals(why)) {
             throw v.errorAtGroup(g, "the " + shape + "'s two end points are the same point", help);

@@ -77,7 +77,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
     }
 
     /** Checks group {@code g} of {@code v} by this rule: an error at the first value that breaks it. */
-    void check(StatementValues v, int g) throws StatementError {
+    void check(StatementValues v, int g) throws SceneException {
         switch (rule) {
             case NAME, PATH -> { }
             case COLOUR, PAINT -> {
@@ -104,7 +104,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         }
     }
 
-    private void checkNumbers(StatementValues v, int g, float value) throws StatementError {
+    private void checkNumbers(StatementValues v, int g, float value) throws SceneException {
         switch (rule) {
             case POSITIVE -> {
                 if (!(value > 0)) {
@@ -141,7 +141,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         }
     }
 
-    private float finite(StatementValues v, int g, int k) throws StatementError {
+    private float finite(StatementValues v, int g, int k) throws SceneException {
         float value = v.number(g, k);
         if (Float.isFinite(value)) {
             return value;
@@ -160,7 +160,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
     }
 
     /** Channel {@code k} of a colour: a whole number from 0 to 255, an expression once rounded. */
-    private static void channel(StatementValues v, int g, int k) throws StatementError {
+    private static void channel(StatementValues v, int g, int k) throws SceneException {
         float value = v.channel(g, k);
         if (value >= 0 && value <= 255 && value == Math.rint(value)) {
             return; // an expression's channel is rounded already: only out of range is it wrong
@@ -176,7 +176,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
     }
 
     /** A direction, or a point to look at from the camera's position in group 0: one float can normalise. */
-    private void direction(StatementValues v, int g) throws StatementError {
+    private void direction(StatementValues v, int g) throws SceneException {
         boolean target = v.target == g;
         Vector3f from = v.vector(0);
         String why = unusable(target ? v.vector(g).subtract(from) : v.vector(g));
@@ -211,7 +211,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
     }
 
     /** "the radius must be greater than 0, found -1" at number {@code k} of group {@code g}. */
-    private static StatementError must(StatementValues v, int g, int k, String name, String what, String help) {
+    private static SceneException must(StatementValues v, int g, int k, String name, String what, String help) {
         return v.errorAtValue(g, k, "the " + name + " must be " + what + ", found " + v.written(g, k), help);
     }
 

@@ -19,7 +19,7 @@ final class GroupReader {
         this.numbers = new NumberReader(cursor, names, values);
     }
 
-    void readGroup(Statement statement, Group group) throws StatementError {
+    void readGroup(Statement statement, Group group) throws SceneException {
         this.statement = statement;
         this.group = group;
         pass(':', "':' before ");
@@ -48,7 +48,7 @@ final class GroupReader {
     }
 
     /** Numbers separated by '|' up to and with the ')': perhaps {@code (at x|y|z)}, or each after a key and '='. */
-    private void readNumbers(int groupStart) throws StatementError {
+    private void readNumbers(int groupStart) throws SceneException {
         byte[] bytes = cursor.bytes;
         int p = cursor.pos;
         boolean target = group.rule() == Group.Rule.VIEW && p + 2 < bytes.length && bytes[p] == 'a'
@@ -90,7 +90,7 @@ final class GroupReader {
     }
 
     /** The word that starts a transformation's step, then blanks: numbers follow. */
-    private void readStepWord() throws StatementError {
+    private void readStepWord() throws SceneException {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
@@ -104,7 +104,7 @@ final class GroupReader {
         }
     }
 
-    private void readName() throws StatementError {
+    private void readName() throws SceneException {
         int start = cursor.pos;
         cursor.pos = afterName(start);
         if (cursor.pos == start) {
@@ -131,7 +131,7 @@ final class GroupReader {
     }
 
     /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
-    private void readPath() throws StatementError {
+    private void readPath() throws SceneException {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
         while (cursor.pos < bytes.length && bytes[cursor.pos] != ')' && !TextBytes.isLineBreak(bytes[cursor.pos])
@@ -150,7 +150,7 @@ final class GroupReader {
     }
 
     /** After a number: a '|' and more to come (false), or the group's ')' (true), each passed. */
-    private boolean groupEndsAfterNumber() throws StatementError {
+    private boolean groupEndsAfterNumber() throws SceneException {
         cursor.skipBlanks();
         if (cursor.at('|') || cursor.at(')')) {
             return cursor.bytes[cursor.pos++] == ')';
@@ -159,7 +159,7 @@ final class GroupReader {
     }
 
     /** A property's key and its '=': the key's index in {@link Group#KEYS}. */
-    private int readKey() throws StatementError {
+    private int readKey() throws SceneException {
         int start = cursor.pos;
         cursor.pos = cursor.afterWord(start);
         if (cursor.pos == start) {
@@ -181,7 +181,7 @@ final class GroupReader {
     }
 
     /** Goes past blanks and {@code c}, which must stand there. */
-    private void pass(char c, String what) throws StatementError {
+    private void pass(char c, String what) throws SceneException {
         cursor.skipBlanks();
         if (!cursor.at(c)) {
             throw expected(what);
@@ -190,7 +190,7 @@ final class GroupReader {
     }
 
     /** Too many numbers in a group; on a line with too few groups the hint says this group was likely left out. */
-    private StatementError tooManyNumbers(int groupStart) {
+    private SceneException tooManyNumbers(int groupStart) {
         String message = "too many numbers in " + group.of(statement) + ": it takes " + group.contents();
         // only a statement's own groups hold counted numbers, so the group is one of them
         if (groupsOnTheLineFrom(groupStart) >= statement.groups().size() - (values.groupCount() - 1)) {
@@ -214,11 +214,11 @@ final class GroupReader {
     }
 
     /** "expected {@code what} the centre of 'sphere', found …" at the cursor, with the usage as the help. */
-    private StatementError expected(String what) {
+    private SceneException expected(String what) {
         return groupError(cursor.pos, "expected " + what + group.of(statement) + ", found " + cursor.describe(cursor.pos));
     }
 
-    private StatementError groupError(int offset, String message) {
+    private SceneException groupError(int offset, String message) {
         return cursor.error(offset, message, "write it as " + statement.usage());
     }
 }

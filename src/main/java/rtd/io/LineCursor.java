@@ -84,9 +84,9 @@ final class LineCursor {
     }
 
     /** An error at {@code offset}; at an invisible character, the help says what it is and what to do. */
-    StatementError error(int offset, String message, String help) {
+    SceneException error(int offset, String message, String help) {
         int codePoint = offset < bytes.length && bytes[offset] < 0 ? source.codePointAt(offset) : -1;
-        return new StatementError(source.errorAt(line, lineStart, offset, message,
+        return new SceneException(source.errorAt(line, lineStart, offset, message,
                 Hints.isInvisible(codePoint) ? Hints.forInvisible(codePoint) : help));
     }
 }

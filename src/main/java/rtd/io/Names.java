@@ -77,7 +77,7 @@ final class Names {
     }
 
     /** {@code let:(name):(expression)}: defines the name of group 0 as the expression of group 1. */
-    static void let(StatementValues v) throws StatementError {
+    static void let(StatementValues v) throws SceneException {
         String name = v.name(0);
         if (!ExpressionParser.isLetter((byte) name.charAt(0)) || name.indexOf('-') >= 0) {
             throw v.errorAtValue(0, 0, "the name '" + name + "' cannot be defined: a name starts with a letter, then "
@@ -105,7 +105,7 @@ final class Names {
     }
 
     /** {@code pattern:(name):(kind):(R|G|B):(R|G|B)[:(transform)]}; the transform's name is resolved later. */
-    static void pattern(StatementValues v, SceneContents out) throws StatementError {
+    static void pattern(StatementValues v, SceneContents out) throws SceneException {
         String word = v.name(1);
         List<String> kinds = Arrays.stream(Pattern.Kind.values()).map(Pattern.Kind::word).toList();
         if (!kinds.contains(word)) {
@@ -117,7 +117,7 @@ final class Names {
     }
 
     /** {@code transform:(name):(step)[:(step)…]}: the steps composed in the order written. */
-    static void transform(StatementValues v, SceneContents out) throws StatementError {
+    static void transform(StatementValues v, SceneContents out) throws SceneException {
         Matrix4 m = Matrix4.IDENTITY;
         for (int g = 1; g < v.groupCount(); g++) {
             m = m.then(step(v, g));
@@ -126,7 +126,7 @@ final class Names {
     }
 
     /** The step of group {@code g}: its word, then its numbers, each checked where it is written. */
-    private static Matrix4 step(StatementValues v, int g) throws StatementError {
+    private static Matrix4 step(StatementValues v, int g) throws SceneException {
         String word = v.name(g);
         int count = v.size(g) - 1; // the word, then its numbers
         if (!OPERATIONS.contains(word)) {
@@ -158,7 +158,7 @@ final class Names {
     }
 
     /** The error for an unknown word of group {@code g}: "did you mean …?" among {@code words}, else their list. */
-    private static StatementError unknown(StatementValues v, int g, String message, String plural, List<String> words,
+    private static SceneException unknown(StatementValues v, int g, String message, String plural, List<String> words,
             String word) {
         String nearest = Hints.nearest(word, words);
         return v.errorAtValue(g, 0, message, nearest != null ? "did you mean '" + nearest + "'?"

@@ -31,7 +31,7 @@ final class NumberReader {
     }
 
     /** Reads one number, or an expression, at the cursor, and keeps it in the values with {@code key} (or −1). */
-    void readAndKeep(int key) throws StatementError {
+    void readAndKeep(int key) throws SceneException {
         float value = read();
         values.add(value, tokenStart, cursor.pos, key);
         if (tree != null) {
@@ -40,7 +40,7 @@ final class NumberReader {
     }
 
     /** One number or expression at the cursor. The common case, a plain number before '|' or ')', stays small. */
-    private float read() throws StatementError {
+    private float read() throws SceneException {
         tree = null;
         int start = cursor.pos;
         tokenStart = start;
@@ -61,7 +61,7 @@ final class NumberReader {
     }
 
     /** A token that is no plain number before '|' or ')': one before blanks, an expression, or a mistake. */
-    private float readOther() throws StatementError {
+    private float readOther() throws SceneException {
         if (cursor.pos > tokenStart) {
             try {
                 float plain = FloatParser.parse(cursor.bytes, tokenStart, cursor.pos);
@@ -82,7 +82,7 @@ final class NumberReader {
     }
 
     /** The expression from {@link #tokenStart}: its value at the clock, finite and within a float's range. */
-    private float expression() throws StatementError {
+    private float expression() throws SceneException {
         cursor.pos = tokenStart;
         Expression read = expressions().read();
         String text = cursor.source.text(tokenStart, cursor.pos);
@@ -168,7 +168,7 @@ final class NumberReader {
     }
 
     /** A token that is no number: an error at an invisible character that starts it or follows a number, else at it. */
-    private StatementError notANumber() {
+    private SceneException notANumber() {
         int invisible = tokenStart;
         while (invisible < cursor.pos && !(cursor.bytes[invisible] < 0 && (cursor.bytes[invisible] & 0xC0) != 0x80
                 && Hints.isInvisible(cursor.source.codePointAt(invisible)))) {

@@ -76,7 +76,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
     }
 
     /** The mesh in the OBJ file that group {@code g} names; each mistake in it names the scene's line too. */
-    static ObjMesh read(StatementValues values, int g) throws StatementError {
+    static ObjMesh read(StatementValues values, int g) throws SceneException {
         SourceText scene = values.source();
         String written = values.name(g);
         Path file;
@@ -110,7 +110,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
             String usedBy = "this file is used by " + scene.name() + ":" + values.line();
             List<SceneError> errors = e.errors().stream().map(error -> error.saying(error.message(),
                     error.help() == null ? usedBy : error.help() + "; " + usedBy)).toList();
-            throw new StatementError(values.placeOfValue(g, 0), errors);
+            throw new SceneException(values.placeOfValue(g, 0), errors);
         }
         if (mesh.count() == 0) {
             // else the scene would lose the mesh without a word, and the warning of an empty picture would blame the camera

@@ -60,8 +60,8 @@ final class ObjReader {
         while (pos < bytes.length && errors.size() <= SceneException.MAX_ERRORS) {
             try {
                 readLine();
-            } catch (StatementError e) {
-                errors.addAll(e.errors);
+            } catch (SceneException e) {
+                errors.addAll(e.errors());
             }
             skipToNextLine();
         }
@@ -73,7 +73,7 @@ final class ObjReader {
                 cornerNormals, triangleCount);
     }
 
-    private void readLine() throws StatementError {
+    private void readLine() throws SceneException {
         skipBlanks();
         int start = pos;
         while (!atTokenEnd()) {
@@ -97,7 +97,7 @@ final class ObjReader {
         return size <= numbers.length ? numbers : Arrays.copyOf(numbers, Math.max(3 * 1024, 2 * numbers.length));
     }
 
-    private void readCoordinates(float[] into, int at, String keyword, String what) throws StatementError {
+    private void readCoordinates(float[] into, int at, String keyword, String what) throws SceneException {
         for (int k = 0; k < 3; k++) {
             skipBlanks();
             int start = pos;
@@ -126,7 +126,7 @@ final class ObjReader {
         }
     }
 
-    private void readFace(int keywordStart) throws StatementError {
+    private void readFace(int keywordStart) throws SceneException {
         int count = 0;
         while (true) {
             skipBlanks();
@@ -153,7 +153,7 @@ final class ObjReader {
     }
 
     /** One corner {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, kept as corner {@code k}. */
-    private void readCorner(int k) throws StatementError {
+    private void readCorner(int k) throws SceneException {
         int start = pos;
         long vertex = readIndex(start);
         long normal = 0;
@@ -177,7 +177,7 @@ final class ObjReader {
     }
 
     /** A whole number at {@link #pos}, with an optional sign. */
-    private long readIndex(int cornerStart) throws StatementError {
+    private long readIndex(int cornerStart) throws SceneException {
         boolean negative = at('-');
         if (negative || at('+')) {
             pos++;
@@ -195,7 +195,7 @@ final class ObjReader {
     }
 
     /** The index from 0 that {@code index} names among the {@code count} read so far. */
-    private int resolve(long index, int count, int at, String what, String keyword) throws StatementError {
+    private int resolve(long index, int count, int at, String what, String keyword) throws SceneException {
         if (index == 0) {
             throw error(at, "a " + what + " index is never 0: they count from 1",
                     "1 is the first '" + keyword + "' line of the file, -1 the last one above the face");
@@ -231,7 +231,7 @@ final class ObjReader {
         }
     }
 
-    private StatementError cornerError(int start) {
+    private SceneException cornerError(int start) {
         int after = start;
         while (!TextBytes.endsObjWord(bytes, after)) {
             after++;
@@ -266,7 +266,7 @@ final class ObjReader {
         }
     }
 
-    private StatementError error(int offset, String message, String help) {
-        return new StatementError(source.errorAt(line, lineStart, offset, message, help));
+    private SceneException error(int offset, String message, String help) {
+        return new SceneException(source.errorAt(line, lineStart, offset, message, help));
     }
 }

@@ -109,7 +109,7 @@ final class SceneContents {
             into = errors.size() > before ? new ArrayList<>() : all; // with a name not right, only checked
             try {
                 values.build(this);
-            } catch (StatementError e) {
+            } catch (SceneException e) {
                 addErrors(e);
             }
         }
@@ -173,8 +173,8 @@ final class SceneContents {
     }
 
     /** Keeps the errors of a statement, ordered by its place. */
-    void addErrors(StatementError e) {
-        for (SceneError error : e.errors) {
+    void addErrors(SceneException e) {
+        for (SceneError error : e.errors()) {
             errors.add(new Found(e.place.line(), e.place.column(), error));
         }
     }

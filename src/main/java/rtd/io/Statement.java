@@ -38,7 +38,7 @@ record Statement(String keyword, List<Group> groups, List<Group> optional, boole
     /** Checks what only several groups together tell (each group's rule is checked before) and gives its value. */
     @FunctionalInterface
     interface Builder {
-        void build(StatementValues values, SceneContents out) throws StatementError;
+        void build(StatementValues values, SceneContents out) throws SceneException;
     }
 
     /** The statement's full form, such as {@code sphere:(x|y|z):(r):(R|G|B)[:(material)][:(transform)]}. */

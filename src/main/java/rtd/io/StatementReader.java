@@ -34,7 +34,7 @@ final class StatementReader {
         while (cursor.pos < end && contents.errors.size() <= SceneException.MAX_ERRORS) {
             try {
                 readStatement();
-            } catch (StatementError e) {
+            } catch (SceneException e) {
                 contents.addErrors(e);
                 keepNameOfBrokenDefinition();
             }
@@ -54,7 +54,7 @@ final class StatementReader {
         cursor.line = line;
     }
 
-    private void readStatement() throws StatementError {
+    private void readStatement() throws SceneException {
         current = null;
         cursor.skipBlanks();
         if (inBlockComment && !leaveBlockComment()) {
@@ -111,7 +111,7 @@ final class StatementReader {
     }
 
     /** The keyword's statement, or null for a line of only a line number (as in the paper; noted, then skipped). */
-    private Statement readKeyword(boolean afterLineNumber) throws StatementError {
+    private Statement readKeyword(boolean afterLineNumber) throws SceneException {
         statementStart = cursor.pos;
         cursor.pos = cursor.afterWord(statementStart);
         if (cursor.pos == statementStart) {
@@ -138,7 +138,7 @@ final class StatementReader {
     }
 
     /** A line that starts with neither a keyword nor a comment: perhaps one as other languages write it. */
-    private StatementError noStatement() {
+    private SceneException noStatement() {
         String help = commentHelp();
         if (help == null && cursor.at('/')) {
             help = Hints.COMMENTS + ", two slashes"; // one slash alone: the second was forgotten
@@ -148,7 +148,7 @@ final class StatementReader {
     }
 
     /** Text after a whole statement: a comment as other languages write it, a ';', a second statement. */
-    private StatementError textAfterStatement() {
+    private SceneException textAfterStatement() {
         String help = commentHelp();
         if (help == null) {
             boolean semicolon = cursor.at(';');

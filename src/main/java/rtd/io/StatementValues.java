@@ -121,7 +121,7 @@ final class StatementValues {
     }
 
     /** Checks each group by its rule, then builds into {@code out}. */
-    void build(SceneContents out) throws StatementError {
+    void build(SceneContents out) throws SceneException {
         for (int g = 0; g < groupCount; g++) {
             statement.group(g).check(this, g);
         }
@@ -217,12 +217,12 @@ final class StatementValues {
         return keys[firsts[g] + k];
     }
 
-    StatementError errorAtGroup(int g, String message, String help) {
+    SceneException errorAtGroup(int g, String message, String help) {
         return errorAt(opens[g], message, help);
     }
 
     /** An error at number {@code k} of group {@code g}, or at the name of a name group ({@code k = 0}). */
-    StatementError errorAtValue(int g, int k, String message, String help) {
+    SceneException errorAtValue(int g, int k, String message, String help) {
         return errorAt(starts[firsts[g] + k], message, help);
     }
 
@@ -236,8 +236,8 @@ final class StatementValues {
         return errorAt(statementStart, "", null).place;
     }
 
-    private StatementError errorAt(int offset, String message, String help) {
-        return new StatementError(source.errorAt(line, lineStart, offset, message, help));
+    private SceneException errorAt(int offset, String message, String help) {
+        return new SceneException(source.errorAt(line, lineStart, offset, message, help));
     }
 
     private int end(int g) {
