@@ -1,18 +1,20 @@
 package rtd.accel;
 
 import java.util.Arrays;
-import rtd.render.RayBundle;
+import rtd.camera.ICamera;
 import rtd.scene.DepthTest;
 
 /**
- * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera rays, made as the
- * renderer makes them ({@link RayBundle}), and each pixel's nearest hit so far. Each object listed for the tile runs
+ * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera rays as numbers, made as
+ * the renderer makes them ({@link ICamera#putRay}, as {@link rtd.render.RayBundle} calls it), and each pixel's nearest hit so far. Each object listed for the tile runs
  * the paper's intersection test on the pixels of its footprint inside the tile, as a {@link NearestHit} runs it (the
  * shape's own kernel, {@link LeafObjects#t}), and the depth test ({@link DepthTest#key}: the nearest hit wins, and on
  * a tie the object that comes first in the file) keeps the winner; the objects without a box are tested on every
  * pixel, as the paper's loop tests them.
  */
 final class TileOfHits {
+
+    private static final int PIXELS = HitImage.TILE * HitImage.TILE;
 
     private final HitImage image;
     private final ViewGrid tiles;
@@ -21,11 +23,17 @@ final class TileOfHits {
     private final UnboundedObjects unbounded;
     private final int[] unboundedOrder;
     private final int kinds;
-    private final RayBundle rays = new RayBundle(HitImage.TILE * HitImage.TILE);
-    private final float[] dd = new float[HitImage.TILE * HitImage.TILE];
-    private final long[] bestKey = new long[HitImage.TILE * HitImage.TILE];
-    private final float[] bestT = new float[HitImage.TILE * HitImage.TILE];
-    private final float[] bestDistance = new float[HitImage.TILE * HitImage.TILE];
+    private final float[] ray = new float[6];
+    private final float[] ox = new float[PIXELS];
+    private final float[] oy = new float[PIXELS];
+    private final float[] oz = new float[PIXELS];
+    private final float[] dx = new float[PIXELS];
+    private final float[] dy = new float[PIXELS];
+    private final float[] dz = new float[PIXELS];
+    private final float[] dd = new float[PIXELS];
+    private final long[] bestKey = new long[PIXELS];
+    private final float[] bestT = new float[PIXELS];
+    private final float[] bestDistance = new float[PIXELS];
     /** Per pixel of the tile, per kind: the tests run. */
     private final int[] tests;
 
@@ -38,30 +46,18 @@ final class TileOfHits {
         this.unbounded = new UnboundedObjects(tiles.objects.unbounded);
         this.unboundedOrder = tiles.objects.unboundedOrder;
         this.kinds = image.kindNames.length;
-        this.tests = new int[HitImage.TILE * HitImage.TILE * kinds];
+        this.tests = new int[PIXELS * kinds];
     }
 
     /** The hits of the tile whose top left pixel is ({@code left}, {@code top}), into the image. */
     void draw(int left, int top) {
         int right = Math.min(image.width, left + HitImage.TILE);
         int bottom = Math.min(image.height, top + HitImage.TILE);
-        rays.fill(image.scene.camera(), left, top, right, bottom, image.width, image.height);
-        rays.make();
-        int count = rays.count();
-        for (int i = 0; i < count; i++) {
-            float dx = rays.directionX(i);
-            float dy = rays.directionY(i);
-            float dz = rays.directionZ(i);
-            dd[i] = (dx * dx) + (dy * dy) + (dz * dz); // D·D, summed as NearestHit sums it
-            bestKey[i] = DepthTest.NO_HIT;
-            bestT[i] = Float.NaN;
-            bestDistance[i] = Float.POSITIVE_INFINITY;
-        }
+        int count = makeRays(left, top, right, bottom);
         Arrays.fill(tests, 0, count * kinds, 0);
         for (int u = 0; u < unbounded.count(); u++) {
             for (int i = 0; i < count; i++) {
-                float t = unbounded.t(u, rays.originX(i), rays.originY(i), rays.originZ(i), rays.directionX(i),
-                        rays.directionY(i), rays.directionZ(i));
+                float t = unbounded.t(u, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
                 if (t >= 0) { // false for NaN: no hit
                     consider(i, unboundedOrder[u], t);
                 }
@@ -72,6 +68,27 @@ final class TileOfHits {
             test(tiles.places[k], left, top, right, bottom);
         }
         store(left, top, right, count);
+    }
+
+    /** The camera's rays of pixels {@code [left, right) × [top, bottom)}, row by row, and no hit yet; answers how many. */
+    private int makeRays(int left, int top, int right, int bottom) {
+        int i = 0;
+        for (int y = top; y < bottom; y++) {
+            for (int x = left; x < right; x++, i++) {
+                image.scene.camera().putRay(x, y, image.width, image.height, ray, 0);
+                ox[i] = ray[0];
+                oy[i] = ray[1];
+                oz[i] = ray[2];
+                dx[i] = ray[3];
+                dy[i] = ray[4];
+                dz[i] = ray[5];
+                dd[i] = (ray[3] * ray[3]) + (ray[4] * ray[4]) + (ray[5] * ray[5]); // D·D, summed as NearestHit sums it
+                bestKey[i] = DepthTest.NO_HIT;
+                bestT[i] = Float.NaN;
+                bestDistance[i] = Float.POSITIVE_INFINITY;
+            }
+        }
+        return i;
     }
 
     /** The object at {@code place} in leaf order on its pixels of the tile {@code [left, right) × [top, bottom)}. */
@@ -87,8 +104,7 @@ final class TileOfHits {
             int end = y * across + x1;
             for (int i = y * across + x0; i < end; i++) {
                 tests[i * kinds + kind]++;
-                float t = leaves.t(place, rays.originX(i), rays.originY(i), rays.originZ(i), rays.directionX(i),
-                        rays.directionY(i), rays.directionZ(i), dd[i]);
+                float t = leaves.t(place, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], dd[i]);
                 if (t >= 0) { // false for NaN: no hit
                     consider(i, index, t);
                 }
@@ -98,8 +114,7 @@ final class TileOfHits {
 
     /** The depth test of Listing 4.3 for pixel {@code i} of the tile, as {@link NearestHit}'s. */
     private void consider(int i, int index, float t) {
-        float distance = LeafObjects.distance(t, rays.originX(i), rays.originY(i), rays.originZ(i), rays.directionX(i),
-                rays.directionY(i), rays.directionZ(i));
+        float distance = LeafObjects.distance(t, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
         long key = DepthTest.key(distance, index);
         if (key < bestKey[i]) {
             bestKey[i] = key;
