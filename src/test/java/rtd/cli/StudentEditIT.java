@@ -75,6 +75,20 @@ class StudentEditIT {
         assertShowsTheEdit("examples/lit_paper.txt", path, "--accel none");
     }
 
+    @Test
+    void theImageOfHitsOfAFlatPictureOfManySpheresShowsTheEdit() throws Exception {
+        StringBuilder scene = new StringBuilder("ambient:(0|0|0)\northographic_camera:(0|0|20):(0|0|-1):(50)\n");
+        for (int i = 0; i < Accelerator.IMAGE_THRESHOLD; i++) { // a wall of 400 × 250 spheres, some before others
+            scene.append(String.format(java.util.Locale.ROOT, "sphere:(%.3f|%.3f|%d):(%.2f):(%d|%d|200)%n",
+                    i % 400 * 0.095 - 19, i / 400 * 0.08 - 10, i * 7919 % 10, 0.05 + i % 7 * 0.02, i % 256, i / 400));
+        }
+        Path many = work.resolve("many_spheres.txt");
+        Files.writeString(many, scene);
+        assertThat(run(true, many.toString(), "--accel", "auto", "--stats", "-o", work.resolve("s.png").toString()))
+                .contains("image of hits in");
+        assertShowsTheEdit(many.toString(), "--accel auto", "--accel bvh"); // the BVH shows the edit as the loop does
+    }
+
     /** The picture {@code path} draws with the edit is the loop's with the edit, and not the loop's without it. */
     private static void assertShowsTheEdit(String scene, String path, String loop) throws Exception {
         int[] editedLoop = render(true, scene, loop);
