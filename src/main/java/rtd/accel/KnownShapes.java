@@ -33,6 +33,10 @@ final class KnownShapes {
     /** See {@link #SHORTEST_DIRECTION}. */
     static final double LONGEST_DIRECTION = 1e20;
 
+    /** {@link #rounding} of a box and of a triangle, made once: a scene may have a million. */
+    private static final Rounding BOX = Rounding.linear(1e-5f);
+    private static final Rounding TRIANGLE = Rounding.linear(2 * RayTriangle.ALONG_THE_RAY);
+
     private KnownShapes() {
     }
 
@@ -59,13 +63,7 @@ final class KnownShapes {
         if (object instanceof Sphere sphere) {
             return new Rounding(2e-6f, (float) (18.75 * 0x1p-24 / (2.0 * sphere.radius()) * (1 + 1e-3)));
         }
-        if (object instanceof Box) {
-            return Rounding.linear(1e-5f);
-        }
-        if (object instanceof Triangle) {
-            return Rounding.linear(2 * RayTriangle.ALONG_THE_RAY);
-        }
-        return Rounding.WIDEST;
+        return object instanceof Box ? BOX : object instanceof Triangle ? TRIANGLE : Rounding.WIDEST;
     }
 
     /**
@@ -109,6 +107,10 @@ final class KnownShapes {
 
     /** Writes {@code object}'s box ({@link IGeometry#bounds}) to {@code into[at .. at+5]}: min x, y, z, max x, y, z. */
     static void putBox(IGeometry object, float[] into, int at) {
-        object.bounds().put(into, at);
+        if (object instanceof Triangle triangle) {
+            triangle.putBounds(into, at); // no box object for each of a mesh's million triangles
+        } else {
+            object.bounds().put(into, at);
+        }
     }
 }

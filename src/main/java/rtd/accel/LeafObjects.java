@@ -7,14 +7,17 @@ import java.util.concurrent.ForkJoinPool;
 import rtd.scene.DepthTest;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Intersection;
+import rtd.geometry.Triangle;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
  * The objects of a {@link Bvh}'s leaves, in leaf order, so that the objects of a leaf lie next
  * to each other in memory: each one's place in the scene file (for the depth test's tie rule)
- * and, for spheres, triangles and boxes, the numbers of its intersection test packed into one
- * array ({@link PackedTests}).
+ * and, for spheres and boxes, the numbers of its intersection test packed into one array
+ * ({@link PackedTests}). A triangle's numbers are read where they lie, in the triangle's own
+ * array, which a mesh shares among thousands of its triangles: a second copy of a million
+ * triangles' numbers would double the memory a mesh takes.
  *
  * <p>{@link #t} runs each shape's own kernel ({@code Sphere.hit}, {@code RayTriangle.hit},
  * {@code Box.hit}) on these numbers, so it finds the same {@code t} as the shape's
@@ -35,10 +38,12 @@ final class LeafObjects {
     /** The names of the kinds (a kind is a name and a way to test), in the order the leaves meet them, for statistics. */
     final String[] kindNames;
     /**
-     * Where each object's numbers start in {@link #numbers}; longer than the objects, with
-     * zeros, if it is the builder's spare array.
+     * Where each object's numbers start in its array ({@link #arrays}); longer than the objects,
+     * with zeros, if it is the builder's spare array.
      */
-    final int[] offsets;
+    private final int[] offsets;
+    /** The array that holds each object's numbers: {@link #numbers}, or a triangle's own. */
+    private final float[][] arrays;
     /** The numbers of the packed tests, followed by zeros if it is the builder's spare array. */
     final float[] numbers;
 
@@ -70,6 +75,7 @@ final class LeafObjects {
         this.kinds = new byte[count];
         this.testOf = new byte[count];
         this.offsets = reused(spareInts, count);
+        this.arrays = new float[count][];
         int[] leafPlaces = new int[scene.size()]; // per place in the file, the place in leaf order, or −1 for none
         Arrays.fill(leafPlaces, -1);
         int size = 0;
@@ -122,12 +128,13 @@ final class LeafObjects {
     }
 
     /**
-     * {@code spare} if it has at least {@code length} places, else a new array of {@code length}.
+     * {@code spare} if it has at least {@code length} places and at most twice as many, else a
+     * new array of {@code length}: a spare that would hold few numbers is left to the collector.
      * The packing writes all of the first {@code length}; those after are zeroed, so that the
      * array depends on the tree alone.
      */
     private static int[] reused(int[] spare, int length) {
-        if (spare.length < length) {
+        if (spare.length < length || spare.length > 2 * length) {
             return new int[length];
         }
         Arrays.fill(spare, length, spare.length, 0);
@@ -136,7 +143,7 @@ final class LeafObjects {
 
     /** As {@link #reused(int[], int)}, for floats. */
     private static float[] reused(float[] spare, int length) {
-        if (spare.length < length) {
+        if (spare.length < length || spare.length > 2 * length) {
             return new float[length];
         }
         Arrays.fill(spare, length, spare.length, 0);
@@ -167,7 +174,13 @@ final class LeafObjects {
             roundings[2 * i] = rounding.linear();
             roundings[2 * i + 1] = rounding.quadratic();
         }
-        PackedTests.put(object, numbers, offsets[i]);
+        if (object instanceof Triangle triangle) {
+            arrays[i] = triangle.numbers();
+            offsets[i] = triangle.numbersAt();
+        } else {
+            arrays[i] = numbers;
+            PackedTests.put(object, numbers, offsets[i]);
+        }
     }
 
     /**
@@ -177,7 +190,7 @@ final class LeafObjects {
     float t(int i, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
         byte test = testOf[i];
         if (test != PackedTests.OWN_TEST) {
-            return PackedTests.t(test, numbers, offsets[i], ox, oy, oz, dx, dy, dz, dd);
+            return PackedTests.t(test, arrays[i], offsets[i], ox, oy, oz, dx, dy, dz, dd);
         }
         Intersection hit = scene.get(fileOrder[i]).intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
         return hit.t();

@@ -8,9 +8,9 @@ import rtd.geometry.TestObserver;
 import rtd.geometry.Triangle;
 
 /**
- * The shapes whose intersection test the accelerators run on a copy of their numbers, packed
- * side by side in one array ({@link LeafObjects}), instead of through each object's own
- * {@link IGeometry#intersect}: spheres, triangles and boxes. Each packed test calls the shape's
+ * The shapes whose intersection test the accelerators run on their numbers, instead of through
+ * each object's own {@link IGeometry#intersect}: spheres and boxes on a copy packed side by side
+ * in one array ({@link LeafObjects}), triangles on their own numbers where they lie. Each packed test calls the shape's
  * own kernel ({@link Sphere#hit}, {@link RayTriangle#hit}, {@link Box#hit}), which its
  * {@code intersect} calls too, so it finds the same t to the last bit and shows any edit of the
  * kernel; it only skips following references, and makes no {@code Ray} or {@code Intersection}
@@ -38,20 +38,21 @@ final class PackedTests {
                 : object instanceof Box ? BOX : OWN_TEST;
     }
 
-    /** How many numbers the test {@code test} reads; none for {@link #OWN_TEST}. */
+    /**
+     * How many numbers {@link #put} packs for the test {@code test}; none for a triangle, whose
+     * own numbers are read ({@link Triangle#numbers}), or for {@link #OWN_TEST}.
+     */
     static int size(byte test) {
-        return test == SPHERE ? SPHERE_NUMBERS : test == TRIANGLE ? Triangle.NUMBERS : test == BOX ? Box.NUMBERS : 0;
+        return test == SPHERE ? SPHERE_NUMBERS : test == BOX ? Box.NUMBERS : 0;
     }
 
-    /** Writes the numbers of {@code object}'s test into {@code numbers} from {@code at}; nothing for {@link #OWN_TEST}. */
+    /** Writes the numbers of a sphere's or a box's test into {@code numbers} from {@code at}; nothing for another. */
     static void put(IGeometry object, float[] numbers, int at) {
         if (object instanceof Sphere sphere) {
             numbers[at] = sphere.center().x();
             numbers[at + 1] = sphere.center().y();
             numbers[at + 2] = sphere.center().z();
             numbers[at + 3] = sphere.radius();
-        } else if (object instanceof Triangle triangle) {
-            triangle.putTestNumbers(numbers, at);
         } else if (object instanceof Box box) {
             box.putTestNumbers(numbers, at);
         }

@@ -8,6 +8,7 @@ import java.util.function.Supplier;
 import rtd.accel.Bvh;
 import rtd.accel.HitImage;
 import rtd.accel.LightGrids;
+import rtd.accel.MirrorGrids;
 import rtd.accel.ViewGrid;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
@@ -104,11 +105,15 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
             return new Accelerator(grid::newTracer, () -> describe(grid), false);
         }
         LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
+        MirrorGrids mirrors = MirrorGrids.build(scene, width, height, samples, threads); // the camera's: never kept
         Bvh bvh = join(tree);
-        return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())), () -> describe(grid) + ", "
-                + (lights.count() == 0 ? "no light grid" : StatsReport.count(lights.count(), "light grid") + " of "
-                        + StatsReport.count(lights.entries(), "entry", "entries")) + ", and BVH of "
-                + StatsReport.count(bvh.nodeCount(), "node"), true);
+        return new Accelerator(() -> grid.newTracer(lights.newTracer(mirrors.newTracer(bvh.newTracer()))),
+                () -> describe(grid) + ", " + (lights.count() == 0 ? "no light grid"
+                        : StatsReport.count(lights.count(), "light grid") + " of "
+                                + StatsReport.count(lights.entries(), "entry", "entries"))
+                        + (mirrors.count() == 0 ? "" : ", " + StatsReport.count(mirrors.count(), "mirror grid") + " of "
+                                + StatsReport.count(mirrors.entries(), "entry", "entries"))
+                        + ", and BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
     }
 
     private static String describe(ViewGrid grid) {

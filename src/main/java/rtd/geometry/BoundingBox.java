@@ -50,9 +50,39 @@ public record BoundingBox(Vector3f min, Vector3f max) {
             maxZ = Math.max(maxZ, p.z());
             largest = Math.max(largest, Math.max(Math.abs(p.x()), Math.max(Math.abs(p.y()), Math.abs(p.z()))));
         }
-        double grow = margin * (1 + 1e-6) + 8 * UNIT_ROUNDOFF * largest;
+        double grow = grow(margin, largest);
         return new BoundingBox(new Vector3f(down(minX - grow), down(minY - grow), down(minZ - grow)),
                 new Vector3f(up(maxX + grow), up(maxY + grow), up(maxZ + grow)));
+    }
+
+    /**
+     * Writes the box {@link #around} makes, for the {@code count} points whose x, y, z follow each
+     * other in {@code points} from {@code from}, to {@code into[at .. at+5]} as {@link #put} writes
+     * it, with no object made: a scene may have a million triangles to measure.
+     */
+    static void putAround(double margin, float[] points, int from, int count, float[] into, int at) {
+        double largest = 0;
+        for (int axis = 0; axis < 3; axis++) {
+            double min = Double.POSITIVE_INFINITY;
+            double max = Double.NEGATIVE_INFINITY;
+            for (int p = from + axis; p < from + 3 * count; p += 3) {
+                min = Math.min(min, points[p]);
+                max = Math.max(max, points[p]);
+                largest = Math.max(largest, Math.abs(points[p]));
+            }
+            into[at + axis] = (float) min; // grown below, once the largest coordinate is known
+            into[at + 3 + axis] = (float) max;
+        }
+        double grow = grow(margin, largest);
+        for (int axis = 0; axis < 3; axis++) {
+            into[at + axis] = down(into[at + axis] - grow);
+            into[at + 3 + axis] = up(into[at + 3 + axis] + grow);
+        }
+    }
+
+    /** How far a box grows beyond its points: {@code margin} and a few rounding errors of their largest coordinate. */
+    private static double grow(double margin, double largest) {
+        return margin * (1 + 1e-6) + 8 * UNIT_ROUNDOFF * largest;
     }
 
     /** Writes this box to {@code into[at .. at+5]}: min x, y, z, max x, y, z. */

@@ -13,7 +13,7 @@ import static rtd.geometry.TriangleNumbers.U;
  * The intersection test of a ray and a triangle, on the triangle's {@value Triangle#NUMBERS}
  * numbers ({@link TriangleNumbers}): it first finds where the ray meets the triangle's plane,
  * then asks on which side of each edge that point lies. Written once: {@link Triangle#intersect}
- * runs it on a triangle's own numbers, the engine on the numbers of many triangles side by side,
+ * runs it on a triangle's numbers, the engine on the same numbers without making a ray,
  * and {@code --explain} watches it through a {@link TestObserver}.
  *
  * <p>Each side test is a dot product with a vector fixed per edge ({@code n × edge}, in the
@@ -34,9 +34,9 @@ public final class RayTriangle {
     }
 
     /**
-     * The test on the {@value Triangle#NUMBERS} numbers of {@link Triangle#testNumbers}, starting
-     * at {@code v[at]}: t of the hit, or NaN. Public for the BVH, which keeps the numbers of many
-     * triangles in one array.
+     * The test on the {@value Triangle#NUMBERS} numbers of {@link Triangle#numbers}, starting
+     * at {@code v[at]}: t of the hit, or NaN. Public for the engine, which runs it on a
+     * triangle's numbers where they lie.
      *
      * <p>Each side test allows for its own rounding: a point within a few units of the last
      * place of an edge counts as on it. Without that, a ray through an edge that two triangles

@@ -5,7 +5,6 @@ import static rtd.geometry.TriangleNumbers.NORMAL;
 import static rtd.geometry.TriangleNumbers.SIZE;
 import static rtd.geometry.TriangleNumbers.TOLERANCE;
 
-import java.util.Arrays;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -21,7 +20,7 @@ import rtd.math.Vector3f;
  */
 public final class Triangle implements IGeometry {
 
-    /** How many numbers the test uses ({@link #testNumbers}; their layout: {@link TriangleNumbers}). */
+    /** How many numbers the test uses ({@link #numbers}; their layout: {@link TriangleNumbers}). */
     public static final int NUMBERS = 27;
 
     /**
@@ -79,17 +78,19 @@ public final class Triangle implements IGeometry {
         return vector(NORMAL);
     }
 
-    /** The {@value #NUMBERS} numbers the test uses, in order, for a packed copy of the test (the BVH's). */
-    public float[] testNumbers() {
-        return Arrays.copyOfRange(v, at, at + NUMBERS);
+    /**
+     * The array that holds the {@value #NUMBERS} numbers of this triangle's test from
+     * {@link #numbersAt}, in the layout of {@link TriangleNumbers}: its own, or its mesh's, shared
+     * by thousands of triangles. The engine runs {@link RayTriangle#hit} on it where it lies, as
+     * {@link #intersect} does, so that a mesh's numbers are never copied; it is read, never written.
+     */
+    public float[] numbers() {
+        return v;
     }
 
-    /**
-     * Writes the {@value #NUMBERS} numbers of {@link #testNumbers} into {@code into} from
-     * {@code at}: the BVH packs a million triangles this way without a copy of each in between.
-     */
-    public void putTestNumbers(float[] into, int at) {
-        System.arraycopy(v, this.at, into, at, NUMBERS);
+    /** Where this triangle's numbers start in {@link #numbers}. */
+    public int numbersAt() {
+        return at;
     }
 
     /** The normal given for corner {@code i} (0, 1 or 2) of a smooth triangle, or {@code null} for a flat one. */
@@ -160,25 +161,32 @@ public final class Triangle implements IGeometry {
      */
     @Override
     public BoundingBox bounds() {
-        Vector3f p1 = corner(0);
-        Vector3f p2 = corner(1);
-        Vector3f p3 = corner(2);
-        return BoundingBox.around(margin(p1, p2, p3), p1, p2, p3);
+        float[] box = new float[6];
+        putBounds(box, 0);
+        return new BoundingBox(new Vector3f(box[0], box[1], box[2]), new Vector3f(box[3], box[4], box[5]));
+    }
+
+    /**
+     * Writes {@link #bounds} to {@code into[at .. at+5]} as {@link BoundingBox#put} does, with no
+     * object made: the engine measures a mesh's million triangles this way.
+     */
+    public void putBounds(float[] into, int at) {
+        BoundingBox.putAround(margin(), v, this.at + CORNERS, 3, into, at);
     }
 
     /** How far {@link #bounds} grows the corners' box on every side. */
-    private double margin(Vector3f p1, Vector3f p2, Vector3f p3) {
-        double e1 = p2.subtract(p1).magnitude();
-        double e2 = p3.subtract(p1).magnitude();
-        double largest = Math.max(maxAbs(p1), Math.max(maxAbs(p2), maxAbs(p3)));
+    private double margin() {
+        int p1 = at + CORNERS;
+        double e1 = TriangleNumbers.distance(v, p1, p1 + 3);
+        double e2 = TriangleNumbers.distance(v, p1, p1 + 6);
+        double largest = 0;
+        for (int k = p1; k < p1 + 9; k++) {
+            largest = Math.max(largest, Math.abs(v[k]));
+        }
         // a needle's box may become infinite: then every ray tests it, as the paper's loop does
-        double sides = 32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * TriangleNumbers.thinness(p1, p2, p3)
+        double sides = 32 * BoundingBox.UNIT_ROUNDOFF * (e1 + e2) * TriangleNumbers.thinness(v, at)
                 + 2 * v[at + TOLERANCE] * v[at + SIZE];
         return sides + 64 * BoundingBox.UNIT_ROUNDOFF * (largest + e1 + e2);
-    }
-
-    private static double maxAbs(Vector3f p) {
-        return Math.max(Math.abs(p.x()), Math.max(Math.abs(p.y()), Math.abs(p.z())));
     }
 
     @Override

@@ -9,20 +9,29 @@ import java.util.stream.IntStream;
  */
 final class EarClipping {
 
-    private EarClipping() {
-    }
+    /** The corners' coordinates in the plane of the face, and the triangles cut: room kept from face to face. */
+    private double[] u = new double[0];
+    private double[] v = new double[0];
+    private int[] triangles = new int[0];
 
-    /** The triangles of the face {@code corners[0, count)}: three corner numbers (from 0, in the face) each. */
-    static int[] triangles(int[] corners, int count, float[] vertices) {
-        double[] u = new double[count];
-        double[] v = new double[count];
+    /**
+     * The triangles of the face {@code corners[0, count)}: three corner numbers (from 0, in the face) each, in the
+     * first {@code 3·(count − 2)} places of the array answered, which the next face cut here overwrites. A file of
+     * a million faces is cut with one set of arrays.
+     */
+    int[] triangles(int[] corners, int count, float[] vertices) {
+        if (u.length < count) {
+            u = new double[count];
+            v = new double[count];
+            triangles = new int[3 * (count - 2)];
+        }
         double sense = project(corners, count, vertices, u, v);
-        int[] triangles = new int[3 * (count - 2)];
         if (sense != 0 && !isConvex(u, v, count, sense)) {
             clipEars(u, v, count, sense, triangles);
             return triangles;
         }
         for (int k = 1; k + 1 < count; k++) { // a fan around the first corner
+            triangles[3 * k - 3] = 0;
             triangles[3 * k - 2] = k;
             triangles[3 * k - 1] = k + 1;
         }

@@ -11,14 +11,16 @@ final class LineCursor {
     byte[] bytes;
     int pos;
     /** The number of the line being read, from 1, and the offset of its first byte. */
-    int line = 1;
+    int line;
     int lineStart;
 
-    LineCursor(SourceText source, int start) {
+    /** A cursor at byte {@code start}, the start of line {@code line}. */
+    LineCursor(SourceText source, int start, int line) {
         this.source = source;
         this.bytes = source.bytes();
         this.pos = start;
         this.lineStart = start;
+        this.line = line;
     }
 
     /** Lets the bytes go once the file is read, as {@link SourceText#close} does. */

@@ -35,6 +35,19 @@ final class Names {
         this.recorder = recorder;
     }
 
+    /** The names defined so far, for lines read on their own, which note what they use in a recorder of their own. */
+    Names forPart() {
+        Names part = new Names(clock, new ClockedScene.Recorder());
+        part.defined.putAll(defined);
+        part.lines.putAll(lines);
+        return part;
+    }
+
+    /** Whether this reading, made by {@link #forPart} from {@code before}, used no clock and defined no name. */
+    boolean definesNothingBeyond(Names before) {
+        return !clockUsed && lines.size() == before.lines.size();
+    }
+
     /** The words a {@code let} may not define; made when first asked, so a file of plain numbers never needs them. */
     private static final class Reserved {
         static final Set<String> WORDS = Set.copyOf(Stream.concat(Expression.Function.NAMES.stream(),

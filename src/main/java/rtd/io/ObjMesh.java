@@ -24,7 +24,7 @@ import rtd.math.Vector3f;
  * @param vertices      x, y, z of each vertex
  * @param normals       x, y, z of each normal
  * @param corners       three vertex indices per triangle (the array may be longer)
- * @param cornerNormals three normal indices per triangle, or −1 for a triangle with no normals
+ * @param cornerNormals three normal indices per triangle, or −1 for a triangle with no normals; null if none has
  * @param count         the number of triangles
  */
 record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNormals, int count) {
@@ -53,7 +53,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
             Vector3f[] normalVectors) {
         TriangleNumbers.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
                 corner(corners[3 * t + 2], shift, scale), numbers, at);
-        if (cornerNormals[3 * t] < 0) {
+        if (cornerNormals == null || cornerNormals[3 * t] < 0) {
             return new Triangle(numbers, at, null, colour, material);
         }
         Vector3f[] normalsOfCorners = {normalVectors[cornerNormals[3 * t]], normalVectors[cornerNormals[3 * t + 1]],

@@ -27,13 +27,14 @@ final class ObjReader {
     private float[] normals = new float[0];
     private int normalCount;
     private int[] corners = new int[3 * 1024];
-    /** The normal of each corner of a triangle, or −1 for a triangle with no normals. */
-    private int[] cornerNormals = new int[corners.length];
+    /** The normal of each corner of a triangle, or −1 for a triangle with no normals; null while none has. */
+    private int[] cornerNormals;
     private int triangleCount;
 
     /** The current face's corners: vertex and normal (−1 for none) indices. */
     private int[] faceVertices = new int[8];
     private int[] faceNormals = new int[8];
+    private final EarClipping earClipping = new EarClipping();
 
     private final List<SceneError> errors = new ArrayList<>();
 
@@ -145,8 +146,8 @@ final class ObjReader {
             addTriangle(0, 1, 2);
             return;
         }
-        int[] triangles = EarClipping.triangles(faceVertices, count, vertices);
-        for (int t = 0; t < triangles.length; t += 3) {
+        int[] triangles = earClipping.triangles(faceVertices, count, vertices);
+        for (int t = 0; t < 3 * (count - 2); t += 3) {
             addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
         }
     }
@@ -212,16 +213,22 @@ final class ObjReader {
     private void addTriangle(int a, int b, int c) {
         if (3 * triangleCount + 3 > corners.length) {
             corners = Arrays.copyOf(corners, 2 * corners.length);
-            cornerNormals = Arrays.copyOf(cornerNormals, 2 * cornerNormals.length);
+            cornerNormals = cornerNormals == null ? null : Arrays.copyOf(cornerNormals, corners.length);
         }
         boolean smooth = faceNormals[a] >= 0 && faceNormals[b] >= 0 && faceNormals[c] >= 0;
         int at = 3 * triangleCount++;
         corners[at] = faceVertices[a];
         corners[at + 1] = faceVertices[b];
         corners[at + 2] = faceVertices[c];
-        cornerNormals[at] = smooth ? faceNormals[a] : -1;
-        cornerNormals[at + 1] = smooth ? faceNormals[b] : -1;
-        cornerNormals[at + 2] = smooth ? faceNormals[c] : -1;
+        if (smooth && cornerNormals == null) { // the first smooth triangle: those before have no normals
+            cornerNormals = new int[corners.length];
+            Arrays.fill(cornerNormals, -1);
+        }
+        if (cornerNormals != null) {
+            cornerNormals[at] = smooth ? faceNormals[a] : -1;
+            cornerNormals[at + 1] = smooth ? faceNormals[b] : -1;
+            cornerNormals[at + 2] = smooth ? faceNormals[c] : -1;
+        }
     }
 
     private StatementError cornerError(int start) {

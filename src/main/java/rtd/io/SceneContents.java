@@ -73,6 +73,18 @@ final class SceneContents {
         pending.add(new Pending(objects.size(), objectValues.copy()));
     }
 
+    /** Adds what {@code part}, the lines that follow these read on their own, made: it has no mistake and no definition. */
+    void append(SceneContents part) {
+        part.pending.forEach(object -> pending.add(new Pending(objects.size() + object.index(), object.values())));
+        objects.addAll(part.objects);
+        ambients.addAll(part.ambients);
+        cameras.addAll(part.cameras);
+        lights.addAll(part.lights);
+        litWarnings.addAll(part.litWarnings);
+        namedAtOnce.addAll(part.namedAtOnce);
+        statementCount += part.statementCount;
+    }
+
     /** Notes a line that starts with a line number: the first is kept, the others counted. */
     void noteLineNumber(SceneError place) {
         if (lineNumbers++ == 0) {

@@ -24,8 +24,6 @@ import rtd.scene.Scene;
  */
 public final class SceneFile {
 
-    /** Fewer bytes than any line that makes an object, {@code sphere:(0|0|0):(1):(0|0|0)} and its line break. */
-    private static final int SHORTEST_OBJECT = 24;
     private static final String CAMERA_EXAMPLE = "orthographic_camera:(0|0|20):(0|0|-1):(50)";
 
     private final String name;
@@ -34,6 +32,10 @@ public final class SceneFile {
     private final Path folder;
     private final Map<Path, ObjMesh> meshes = new ConcurrentHashMap<>();
     private volatile boolean usesClock;
+    /** The size of the parts a large file is read in, in parallel ({@link FileParts}). */
+    private int partSize = FileParts.PART_SIZE;
+    /** How many parts of the last parse were read in parallel and joined as they were. */
+    int partsJoined;
 
     private SceneFile(String name, byte[] bytes, Path folder) {
         this.name = name;
@@ -61,6 +63,12 @@ public final class SceneFile {
 
     public static SceneFile of(String name, byte[] bytes, Path folder) {
         return new SceneFile(name, bytes, folder);
+    }
+
+    /** This file, read in parts of about {@code bytes} bytes: a small file, as a large one is. */
+    SceneFile inPartsOf(int bytes) {
+        partSize = bytes;
+        return this;
     }
 
     public int size() {
@@ -92,8 +100,9 @@ public final class SceneFile {
         // Taken from the field, not kept in a local variable, which would hold them to the end of the parse.
         try (SourceText source = new SourceText(name, once ? takeBytes() : bytes, folder, meshes)) {
             int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
-            SceneContents contents = new SceneContents(objectsAtMost(source, start));
-            new StatementReader(source, start, contents, names).readAll();
+            FileParts parts = FileParts.of(source, start, partSize);
+            SceneContents contents = new SceneContents(parts.objectsAtMost(0, parts.count()));
+            partsJoined = parts.read(new StatementReader(source, start, 1, contents, names), contents, names);
             return join(source, start, contents, warnings);
         } finally { // a failed parse tells too: a value may break its rule at some clocks only
             usesClock |= names.clockUsed;
@@ -104,28 +113,6 @@ public final class SceneFile {
         byte[] taken = bytes;
         bytes = null;
         return taken;
-    }
-
-    /**
-     * How many objects the text from {@code start} makes at most, so that their list is made that long at once:
-     * grown line by line, its large arrays would go to the old generation, and stay there long. Refuses text that
-     * is not UTF-8.
-     */
-    private static int objectsAtMost(SourceText source, int start) throws SceneException {
-        byte[] bytes = source.bytes();
-        int lines = 1;
-        boolean plain = true;
-        for (int i = start; i < bytes.length; i++) {
-            if (bytes[i] <= '\r') { // one test for the rare: line breaks, control characters, every non-ASCII byte
-                lines += bytes[i] == '\n' || bytes[i] == '\r' && TextBytes.endsLine(bytes, i) ? 1 : 0;
-                plain &= bytes[i] > 0;
-            }
-        }
-        int bad = plain ? -1 : SourceText.firstBadByte(bytes, start, bytes.length);
-        if (bad >= 0) {
-            throw new SceneException(List.of(source.notUtf8(start, bad)), false);
-        }
-        return Math.min(lines, (bytes.length - start) / SHORTEST_OBJECT + 1);
     }
 
     /** The scene the contents make, or every mistake in them, ordered by place. */

@@ -20,18 +20,18 @@ final class StatementReader {
     /** Whether the line is inside a {@code /* *}{@code /} comment, which is reported once, at its start. */
     private boolean inBlockComment;
 
-    /** A reader of {@code source} from byte {@code start} (after a byte-order mark). */
-    StatementReader(SourceText source, int start, SceneContents contents, Names names) {
-        this.cursor = new LineCursor(source, start);
+    /** A reader of {@code source} from byte {@code start} (after a byte-order mark), the start of line {@code line}. */
+    StatementReader(SourceText source, int start, int line, SceneContents contents, Names names) {
+        this.cursor = new LineCursor(source, start, line);
         this.values = new StatementValues(source, names);
         this.groupReader = new GroupReader(cursor, values, names);
         this.contents = contents;
         contents.values = values;
     }
 
-    /** Reads every line, until the end or one error past {@link SceneException#MAX_ERRORS}. */
-    void readAll() {
-        while (cursor.pos < cursor.bytes.length && contents.errors.size() <= SceneException.MAX_ERRORS) {
+    /** Reads every line that starts before byte {@code end}, or up to one error past {@link SceneException#MAX_ERRORS}. */
+    void readUntil(int end) {
+        while (cursor.pos < end && contents.errors.size() <= SceneException.MAX_ERRORS) {
             try {
                 readStatement();
             } catch (StatementError e) {
@@ -40,7 +40,18 @@ final class StatementReader {
             }
             cursor.skipToNextLine();
         }
+    }
+
+    /** Lets the file's bytes go: the reader is done. */
+    void release() {
         cursor.release();
+    }
+
+    /** Goes on reading at byte {@code start}, the start of line {@code line}, as if it had read the lines above. */
+    void moveTo(int start, int line) {
+        cursor.pos = start;
+        cursor.lineStart = start;
+        cursor.line = line;
     }
 
     private void readStatement() throws StatementError {

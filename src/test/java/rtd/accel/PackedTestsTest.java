@@ -13,14 +13,15 @@ import rtd.geometry.Material;
 import rtd.geometry.Plane;
 import rtd.geometry.Sphere;
 import rtd.geometry.Triangle;
+import rtd.geometry.TriangleNumbers;
 import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
 /**
- * The packed copies of the shapes' tests: the numbers each shape packs, where they go and which
- * test reads them give the t of the shape's own {@code intersect} to the last bit (each shape's
- * own {@code intersect} calls the same static test); the box's slab test on numbers, on
+ * The packed copies of the shapes' tests: the numbers each shape packs (or, for a triangle, its
+ * own where they lie), where they go and which test reads them give the t of the shape's own
+ * {@code intersect} to the last bit (each shape's own {@code intersect} calls the same static test); the box's slab test on numbers, on
  * cases worked out by hand (a face, an edge, a corner, a slab it lies in); and a shape without a
  * packed test is left to its own.
  */
@@ -73,31 +74,39 @@ class PackedTestsTest {
     }
 
     @Test
-    void everyPackedTestFindsItsShapesOwnTToTheLastBit() {
+    void everyObjectOfALeafFindsItsShapesOwnTToTheLastBit() {
         Random random = new Random(7);
+        Vector3f p1 = new Vector3f(-2, -1, 0.5f);
+        Vector3f p2 = new Vector3f(2, -1.5f, 0);
+        Vector3f p3 = new Vector3f(0.2f, 2, -0.5f);
+        float[] mesh = new float[2 * Triangle.NUMBERS]; // the second triangle of a mesh's shared array
+        TriangleNumbers.putNumbers(p3, p1, p2, mesh, Triangle.NUMBERS);
         List<IGeometry> shapes = List.of(
                 new Sphere(new Vector3f(0.3f, -0.2f, 0.1f), 1.7f, GREY, Material.DEFAULT),
-                new Triangle(new Vector3f(-2, -1, 0.5f), new Vector3f(2, -1.5f, 0), new Vector3f(0.2f, 2, -0.5f), GREY,
-                        Material.DEFAULT),
-                Box.between(new Vector3f(-1.5f, -0.5f, -2), new Vector3f(1, 1.25f, 0.75f), GREY, Material.DEFAULT));
+                new Triangle(p1, p2, p3, GREY, Material.DEFAULT),
+                Box.between(new Vector3f(-1.5f, -0.5f, -2), new Vector3f(1, 1.25f, 0.75f), GREY, Material.DEFAULT),
+                new Triangle(mesh, Triangle.NUMBERS, null, GREY, Material.DEFAULT),
+                new Plane(new Vector3f(0, 0.5f, 0), new Vector3f(0.2f, 1, 0.1f), GREY, Material.DEFAULT));
+        int[] fileOrder = {4, 1, 3, 0, 2};
+        LeafObjects leaves = new LeafObjects(shapes, fileOrder, new int[0], new float[0], null, null);
         int hits = 0;
-        for (IGeometry shape : shapes) {
-            byte test = PackedTests.of(shape);
-            float[] numbers = new float[PackedTests.size(test) + 3];
-            PackedTests.put(shape, numbers, 3);
-            for (int i = 0; i < 20_000; i++) {
-                Ray ray = randomRay(random, i);
-                Vector3f o = ray.origin();
-                Vector3f d = ray.direction();
-                float packed = PackedTests.t(test, numbers, 3, o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), d.dot(d));
+        for (int r = 0; r < 20_000; r++) {
+            Ray ray = randomRay(random, r);
+            Vector3f o = ray.origin();
+            Vector3f d = ray.direction();
+            for (int i = 0; i < fileOrder.length; i++) {
+                IGeometry shape = shapes.get(fileOrder[i]);
+                float inLeaf = leaves.t(i, o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), d.dot(d));
                 float own = shape.intersect(ray).t();
 
-                assertThat(Float.floatToIntBits(packed)).as("%s, ray %s", shape.kind(), ray)
+                assertThat(Float.floatToIntBits(inLeaf)).as("%s, ray %s", shape.kind(), ray)
                         .isEqualTo(Float.floatToIntBits(own));
                 hits += own >= 0 ? 1 : 0;
             }
         }
-        assertThat(hits).as("rays that hit").isGreaterThan(20_000);
+        assertThat(hits).as("rays that hit").isGreaterThan(40_000);
+        // only the sphere's and the box's numbers are copied: the triangles' are read where they lie
+        assertThat(leaves.numbers).hasSize(PackedTests.SPHERE_NUMBERS + Box.NUMBERS);
     }
 
     @Test

@@ -89,6 +89,12 @@ class StudentEditIT {
         assertShowsTheEdit(many.toString(), "--accel auto", "--accel bvh"); // the BVH shows the edit as the loop does
     }
 
+    @Test
+    void theMirroredRaysOfTheGlassExampleShowTheEdit() throws Exception {
+        // its floor mirrors the spheres: the mirrored rays find them through a mirror grid
+        assertShowsTheEdit("examples/glass_and_mirror.txt", "--accel auto", "--accel none");
+    }
+
     /** The picture {@code path} draws with the edit is the loop's with the edit, and not the loop's without it. */
     private static void assertShowsTheEdit(String scene, String path, String loop) throws Exception {
         int[] editedLoop = render(true, scene, loop);

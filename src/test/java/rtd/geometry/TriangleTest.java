@@ -3,7 +3,6 @@ package rtd.geometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
@@ -124,18 +123,28 @@ class TriangleTest {
     }
 
     @Test
-    void writesExactlyItsTestNumbersWhereItIsToldAndNothingElse() {
-        Random random = new Random(11);
-        for (int i = 0; i < 10_000; i++) {
+    void itsBoxHoldsItsCornersGrownByAFewRoundingErrorsOfItsSize() {
+        // |p2 − p1| = |p3 − p1| = 4, |p3 − p2| = 4√2, |n| = 16: thinness 4·4√2/16 = √2; the edges summed over the
+        // axes 16, the largest coordinate 4. Grown by u·(32·8·√2 + 2·16u√2·16/u + 64·(4 + 8)) and 8u·4: 1.12421e-4
+        BoundingBox box = triangle.bounds();
+
+        float grow = 1.12421e-4f;
+        assertThat(new float[] {box.min().x(), box.min().y(), box.min().z(), box.max().z()})
+                .containsExactly(new float[] {-grow, -grow, -grow, grow}, within(1e-9f));
+        assertThat(new float[] {box.max().x(), box.max().y()}).containsExactly(new float[] {4 + grow, 4 + grow}, within(1e-6f));
+    }
+
+    @Test
+    void writesItsBoxWhereItIsToldAndNothingElse() {
+        Random random = new Random(17);
+        for (int i = 0; i < 1_000; i++) {
             Triangle any = randomTriangle(random);
-            int at = 1 + random.nextInt(Triangle.NUMBERS);
-            float[] written = new float[at + Triangle.NUMBERS + 2];
-            Arrays.fill(written, -7f);
-            any.putTestNumbers(written, at);
-            float[] expected = new float[written.length];
-            Arrays.fill(expected, -7f);
-            System.arraycopy(any.testNumbers(), 0, expected, at, Triangle.NUMBERS);
-            assertThat(written).as(any.corner(0) + " " + any.corner(1) + " " + any.corner(2)).isEqualTo(expected);
+            float[] written = new float[10];
+            java.util.Arrays.fill(written, -7f);
+            any.putBounds(written, 3);
+            float[] expected = {-7f, -7f, -7f, 0, 0, 0, 0, 0, 0, -7f};
+            any.bounds().put(expected, 3);
+            assertThat(written).isEqualTo(expected);
         }
     }
 
@@ -147,7 +156,7 @@ class TriangleTest {
         for (int i = 0; i < 10_000; i++) {
             Triangle any = randomTriangle(random);
             int at = Triangle.NUMBERS * random.nextInt(3);
-            any.putTestNumbers(shared, at);
+            System.arraycopy(any.numbers(), any.numbersAt(), shared, at, Triangle.NUMBERS);
             Triangle inMesh = new Triangle(shared, at, null, Color.BLACK, Material.DEFAULT);
             Vector3f origin = new Vector3f(random.nextFloat() * 20 - 10, random.nextFloat() * 20 - 10, 10);
             Vector3f towards = any.corner(random.nextInt(3)).add(any.corner(random.nextInt(3))).multiply(0.5f);

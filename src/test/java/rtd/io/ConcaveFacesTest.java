@@ -88,4 +88,24 @@ class ConcaveFacesTest {
         assertThat(pixels[3 * 21 + 10]).as("the ring at y = 1.4").isEqualTo(0xFF0000);
         assertThat(pixels[17 * 21 + 10]).as("the ring at y = -1.4").isEqualTo(0xFF0000);
     }
+
+    @Test
+    void aFaceIsCutAsIfItCameFirstWhateverFacesCameBefore() {
+        java.util.Random random = new java.util.Random(23);
+        EarClipping shared = new EarClipping();
+        for (int f = 0; f < 20_000; f++) {
+            int count = 3 + random.nextInt(random.nextInt(4) == 0 ? 8 : 2); // quads the most, as in real files
+            float[] vertices = new float[3 * count];
+            int[] corners = new int[count];
+            for (int k = 0; k < count; k++) {
+                corners[k] = random.nextInt(5) == 0 ? random.nextInt(count) : k; // now and then a corner twice
+                for (int axis = 0; axis < 3; axis++) { // a grid of few places: faces on a line, folded, crossed
+                    vertices[3 * k + axis] = axis == 2 && random.nextBoolean() ? 0 : random.nextInt(4) - 1.5f;
+                }
+            }
+            int[] expected = Arrays.copyOf(new EarClipping().triangles(corners, count, vertices), 3 * (count - 2));
+            int[] cut = Arrays.copyOf(shared.triangles(corners, count, vertices), 3 * (count - 2));
+            assertThat(cut).as("face %d of %d corners %s", f, count, Arrays.toString(vertices)).isEqualTo(expected);
+        }
+    }
 }
