@@ -183,6 +183,11 @@ final class LeafObjects {
         }
     }
 
+    /** Where the numbers of object {@code i}'s test start in {@link #numbers}, or −1 if it is no sphere. */
+    int sphereAt(int i) {
+        return testOf[i] == PackedTests.SPHERE ? offsets[i] : -1;
+    }
+
     /**
      * The smallest {@code t ≥ 0} where the ray O + t·D hits object {@code i}, or NaN; {@code dd}
      * is D·D, the same for every object.

@@ -2,6 +2,8 @@ package rtd.accel;
 
 import java.util.Arrays;
 import rtd.camera.ICamera;
+import rtd.geometry.Sphere;
+import rtd.geometry.TestObserver;
 import rtd.scene.DepthTest;
 
 /**
@@ -98,13 +100,44 @@ final class TileOfHits {
         int across = right - left;
         int x0 = Math.max(footprints[at], left) - left;
         int x1 = Math.min(footprints[at + 2] + 1, right) - left; // the first pixel beyond, as each loop's end
+        int y0 = Math.max(footprints[at + 1], top) - top;
         int y1 = Math.min(footprints[at + 3] + 1, bottom) - top;
         int kind = leaves.kinds[place];
-        for (int y = Math.max(footprints[at + 1], top) - top; y < y1; y++) {
+        int sphere = leaves.sphereAt(place);
+        for (int y = y0; y < y1; y++) {
             int end = y * across + x1;
             for (int i = y * across + x0; i < end; i++) {
                 tests[i * kinds + kind]++;
+            }
+        }
+        if (sphere >= 0) {
+            testSphere(leaves.numbers, sphere, index, across, x0, x1, y0, y1);
+            return;
+        }
+        for (int y = y0; y < y1; y++) {
+            int end = y * across + x1;
+            for (int i = y * across + x0; i < end; i++) {
                 float t = leaves.t(place, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], dd[i]);
+                if (t >= 0) { // false for NaN: no hit
+                    consider(i, index, t);
+                }
+            }
+        }
+    }
+
+    /**
+     * {@link #test} for a sphere whose centre and radius lie at {@code numbers[at]}: the numbers are read once for
+     * all its pixels, and each pixel's ray runs {@link Sphere#hit}, as {@link PackedTests} runs it.
+     */
+    private void testSphere(float[] numbers, int at, int index, int across, int x0, int x1, int y0, int y1) {
+        float mx = numbers[at];
+        float my = numbers[at + 1];
+        float mz = numbers[at + 2];
+        float r = numbers[at + 3];
+        for (int y = y0; y < y1; y++) {
+            int end = y * across + x1;
+            for (int i = y * across + x0; i < end; i++) {
+                float t = Sphere.hit(mx, my, mz, r, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], TestObserver.NONE);
                 if (t >= 0) { // false for NaN: no hit
                     consider(i, index, t);
                 }
