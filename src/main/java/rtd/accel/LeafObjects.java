@@ -42,7 +42,7 @@ final class LeafObjects {
      * with zeros, if it is the builder's spare array.
      */
     private final int[] offsets;
-    /** The array that holds each object's numbers: {@link #numbers}, or a triangle's own. */
+    /** The array that holds each object's numbers: a triangle's own, or null for {@link #numbers}. */
     private final float[][] arrays;
     /** The numbers of the packed tests, followed by zeros if it is the builder's spare array. */
     final float[] numbers;
@@ -177,10 +177,14 @@ final class LeafObjects {
         if (object instanceof Triangle triangle) {
             arrays[i] = triangle.numbers();
             offsets[i] = triangle.numbersAt();
-        } else {
-            arrays[i] = numbers;
+        } else { // no reference to numbers stored: a million stores into an old array keep the collector busy
             PackedTests.put(object, numbers, offsets[i]);
         }
+    }
+
+    /** Where the numbers of object {@code i}'s test start in {@link #numbers}, or −1 if it is no sphere. */
+    int sphereAt(int i) {
+        return testOf[i] == PackedTests.SPHERE ? offsets[i] : -1;
     }
 
     /**
@@ -190,7 +194,8 @@ final class LeafObjects {
     float t(int i, float ox, float oy, float oz, float dx, float dy, float dz, float dd) {
         byte test = testOf[i];
         if (test != PackedTests.OWN_TEST) {
-            return PackedTests.t(test, arrays[i], offsets[i], ox, oy, oz, dx, dy, dz, dd);
+            float[] array = arrays[i];
+            return PackedTests.t(test, array != null ? array : numbers, offsets[i], ox, oy, oz, dx, dy, dz, dd);
         }
         Intersection hit = scene.get(fileOrder[i]).intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
         return hit.t();

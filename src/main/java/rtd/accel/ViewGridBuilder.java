@@ -60,7 +60,15 @@ final class ViewGridBuilder {
      * are (a light's grid has no camera).
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
-        int shift = CellSide.choose(objects, footprint, width, height, samples);
+        return build(footprint, camera, latestOffset, CellSide.choose(objects, footprint, width, height, samples), true);
+    }
+
+    /**
+     * As above, with cells of side {@code 1 << side} (or larger, if they would hold too many entries), each cell's
+     * objects nearest first if {@code sorted}, else in file order: a {@link HitImage}'s tiles, which test them all.
+     */
+    ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int side, boolean sorted) {
+        int shift = side;
         Parts parts = new Parts(objects.size(), pool);
         int[][] perPart = new int[parts.parts][cellCount(shift)];
         measure(footprint, parts, shift, perPart);
@@ -76,8 +84,15 @@ final class ViewGridBuilder {
         Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
         float[] nearestByPlace = new float[fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
-        sortNearestFirst(cellStart, places, nearestByPlace, pool);
+        if (sorted) {
+            sortNearestFirst(cellStart, places, nearestByPlace, pool);
+        }
         return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
+    }
+
+    /** Per object in file order, after {@link #build}: its pixels x0, y0, x1, y1 (inclusive), if a ray sees it. */
+    int[] footprints() {
+        return footprints;
     }
 
     /**

@@ -6,6 +6,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.function.Supplier;
 import rtd.accel.Bvh;
+import rtd.accel.HitImage;
 import rtd.accel.LightGrids;
 import rtd.accel.MirrorGrids;
 import rtd.accel.ViewGrid;
@@ -22,12 +23,19 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
 
     enum Choice { auto, none, bvh, grid }
 
+    /**
+     * The fewest objects for which {@code auto} and {@code grid} take the image of hits for a flat picture: below, the
+     * view grid, whose rays test fewer objects, builds as fast.
+     */
+    static final int IMAGE_THRESHOLD = 100_000;
+
     /** What a run finds its hits with, and how the progress line names its building. */
     enum Kind {
         LOOP("the paper's loop: nothing to build"),
         BVH("building the BVH"),
         GRID("building the view grid"),
-        GRID_AND_BVH("building the view grid, the lights' grids and the BVH");
+        GRID_AND_BVH("building the view grid, the lights' grids and the BVH"),
+        IMAGE("finding each pixel's hit, object by object");
 
         final String building;
 
@@ -51,9 +59,21 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
     }
 
+    /**
+     * As above, for a {@code width × height} picture of {@code samples²} rays a pixel: where that takes the view grid
+     * alone, a picture of one ray a pixel of {@link #IMAGE_THRESHOLD} objects or more takes the image of hits, if it
+     * {@link HitImage#pays}.
+     */
+    static Kind choose(Scene scene, Choice accel, int width, int height, int samples) {
+        Kind kind = choose(scene, accel);
+        return kind == Kind.GRID && samples == 1 && scene.objects().size() >= IMAGE_THRESHOLD
+                && HitImage.pays(scene, width, height) ? Kind.IMAGE : kind;
+    }
+
     /** {@link #build} of what {@code accel} asks, from nothing. */
     static Accelerator of(Scene scene, Choice accel, int width, int height, int samples, int threads) {
-        return build(choose(scene, accel), scene, width, height, samples, threads, new StructureCache());
+        return build(choose(scene, accel, width, height, samples), scene, width, height, samples, threads,
+                new StructureCache());
     }
 
     /** Builds {@code kind} for {@code scene}; the BVH and the light grids from {@code kept} where they still serve. */
@@ -66,6 +86,12 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         if (kind == Kind.BVH) {
             Bvh bvh = kept.bvh(scene);
             return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+        }
+        if (kind == Kind.IMAGE) {
+            HitImage image = HitImage.build(scene, width, height, threads);
+            return new Accelerator(image::newTracer, () -> String.format(Locale.ROOT, "image of hits in %s of %d × %d "
+                    + "pixels, %s", StatsReport.count(image.tileCount(), "tile"), image.tileSide(), image.tileSide(),
+                    StatsReport.count(image.entries(), "entry", "entries")), false);
         }
         // the BVH on a thread of its own: each structure has passes on one thread, which the other's fill
         CompletableFuture<Bvh> tree = kind == Kind.GRID ? null : CompletableFuture.supplyAsync(() -> kept.bvh(scene),

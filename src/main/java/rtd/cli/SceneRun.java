@@ -101,7 +101,8 @@ final class SceneRun {
 
     /** What {@code --accel} chose for {@code scene}, built with what the last frame built where it serves. */
     private Accelerator build(Scene scene, ProgressDisplay display) {
-        Accelerator.Kind kind = Accelerator.choose(scene, options.engine());
+        Accelerator.Kind kind = Accelerator.choose(scene, options.engine(), options.width(), options.height(),
+                options.samples());
         display.show(ProgressDisplay.Phase.of(kind.building));
         return Accelerator.build(kind, scene, options.width(), options.height(), options.samples(), options.threads(),
                 kept);

@@ -47,7 +47,36 @@ class AcceleratorTest {
     }
 
     @Test
+    void autoAndGridTakeTheImageOfHitsForAFlatPictureOfManyObjectsAtOneRayAPixel() {
+        Scene many = spheres(Accelerator.IMAGE_THRESHOLD, false);
+        assertThat(Accelerator.choose(many, Choice.auto, 40, 20, 1)).isEqualTo(Accelerator.Kind.IMAGE);
+        assertThat(Accelerator.choose(many, Choice.grid, 40, 20, 1)).isEqualTo(Accelerator.Kind.IMAGE);
+        assertThat(Accelerator.choose(many, Choice.auto, 40, 20, 2)).as("samples").isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.choose(many, Choice.bvh, 40, 20, 1)).isEqualTo(Accelerator.Kind.BVH);
+        assertThat(Accelerator.choose(many, Choice.none, 40, 20, 1)).isEqualTo(Accelerator.Kind.LOOP);
+        assertThat(Accelerator.choose(spheres(Accelerator.IMAGE_THRESHOLD, true), Choice.auto, 40, 20, 1)).as("lights")
+                .isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+        assertThat(Accelerator.choose(spheres(Accelerator.IMAGE_THRESHOLD - 1, false), Choice.auto, 40, 20, 1))
+                .as("fewer objects").isEqualTo(Accelerator.Kind.GRID);
+    }
+
+    @Test
+    void objectsThatHideEachOtherDeeplyTakeTheViewGridWhoseRaysTestTheFrontOnes() {
+        List<IGeometry> objects = new ArrayList<>();
+        for (int i = 0; i < Accelerator.IMAGE_THRESHOLD; i++) { // each covers the whole picture: 100,000 tests a pixel
+            objects.add(new Sphere(new Vector3f(20, 12, -i * 0.001f), 30, new Color(i % 256, 0, 0)));
+        }
+        Scene scene = new Scene(new Color(0, 0, 0),
+                new OrthographicCamera(new Vector3f(20, 12, 50), new Vector3f(0, 0, -1), 20), objects);
+        assertThat(Accelerator.choose(scene, Choice.auto, 40, 20, 1)).isEqualTo(Accelerator.Kind.GRID);
+    }
+
+    @Test
     void statsNameWhatWasBuilt() {
+        // 20 pixels a unit: 100 × 20 pixels show x from 17.5 to 22.5 and y from 11.5 to 12.5, the spheres (18|12) to
+        // (22|12) of radius 0.4, at pixels 10 ± 8, 30 ± 8, ..., 90 ± 8: the one at 70 in both tiles, 6 entries
+        assertThat(Accelerator.of(spheres(Accelerator.IMAGE_THRESHOLD, false), Choice.auto, 100, 20, 1, 2).built().get())
+                .isEqualTo("image of hits in 2 tiles of 64 × 64 pixels, 6 entries");
         assertThat(Accelerator.of(spheres(3, false), Choice.bvh, 40, 20, 1, 1).built().get()).startsWith("BVH of ");
         assertThat(Accelerator.of(spheres(3, false), Choice.grid, 40, 20, 1, 1).built().get()).startsWith("view grid of ");
         assertThat(Accelerator.of(spheres(3, true), Choice.grid, 40, 20, 1, 1).built().get())

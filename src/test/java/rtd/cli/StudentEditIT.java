@@ -76,6 +76,20 @@ class StudentEditIT {
     }
 
     @Test
+    void theImageOfHitsOfAFlatPictureOfManySpheresShowsTheEdit() throws Exception {
+        StringBuilder scene = new StringBuilder("ambient:(0|0|0)\northographic_camera:(0|0|20):(0|0|-1):(50)\n");
+        for (int i = 0; i < Accelerator.IMAGE_THRESHOLD; i++) { // a wall of 400 × 250 spheres, some before others
+            scene.append(String.format(java.util.Locale.ROOT, "sphere:(%.3f|%.3f|%d):(%.2f):(%d|%d|200)%n",
+                    i % 400 * 0.095 - 19, i / 400 * 0.08 - 10, i * 7919 % 10, 0.05 + i % 7 * 0.02, i % 256, i / 400));
+        }
+        Path many = work.resolve("many_spheres.txt");
+        Files.writeString(many, scene);
+        assertThat(run(true, many.toString(), "--accel", "auto", "--stats", "-o", work.resolve("s.png").toString()))
+                .contains("image of hits in");
+        assertShowsTheEdit(many.toString(), "--accel auto", "--accel bvh"); // the BVH shows the edit as the loop does
+    }
+
+    @Test
     void theMirroredRaysOfTheGlassExampleShowTheEdit() throws Exception {
         // its floor mirrors the spheres: the mirrored rays find them through a mirror grid
         assertShowsTheEdit("examples/glass_and_mirror.txt", "--accel auto", "--accel none");

@@ -1,0 +1,93 @@
+package rtd.accel;
+
+import java.util.Map;
+import java.util.TreeMap;
+import rtd.geometry.Hit;
+import rtd.geometry.IGeometry;
+import rtd.math.Ray;
+import rtd.render.HitBuffer;
+import rtd.render.LinearTracer;
+import rtd.render.RayBundle;
+import rtd.render.Tracer;
+import rtd.render.WorkCount;
+
+/**
+ * Answers the camera's rays from a {@link HitImage}: each ray's hit was found before the render, so a ray reads it,
+ * and the tests its pixel took, from its pixel. Any other ray (a ray given alone, a ray through another point of its
+ * pixel, of another camera or picture) runs the tests on every object, as the paper's loop does: right for any ray,
+ * and fast only for the image's.
+ *
+ * <p>Not thread-safe: it keeps counters of its own. Use one per thread.
+ */
+public final class HitImageTracer implements Tracer {
+
+    private final HitImage image;
+    /** Per kind of the objects with a box, the tests of the rays answered from the image. */
+    private final long[] tests;
+    private long rays;
+    /** The paper's loop for the rays that are not the image's, made when first needed. */
+    private Tracer others;
+
+    HitImageTracer(HitImage image) {
+        this.image = image;
+        this.tests = new long[image.kindNames.length];
+    }
+
+    @Override
+    public Hit nearestHit(Ray ray) {
+        return others().nearestHit(ray);
+    }
+
+    private Tracer others() {
+        if (others == null) {
+            others = new LinearTracer(image.scene);
+        }
+        return others;
+    }
+
+    /** The camera's rays read their pixels; other rays go one by one to the loop. */
+    @Override
+    public void traceAll(RayBundle bundle, HitBuffer hits) {
+        if (!image.serves(bundle)) {
+            others().traceAll(bundle, hits);
+            return;
+        }
+        RayBundle.Pixels p = bundle.pixels();
+        int across = p.right() - p.left();
+        int kinds = tests.length;
+        for (int i = 0; i < bundle.count(); i++) {
+            int pixel = (p.top() + i / across) * image.width + p.left() + i % across;
+            hits.set(i, image.index[pixel], image.t[pixel], image.distance[pixel]);
+            long all = image.unbounded.length;
+            for (int k = 0; k < kinds; k++) {
+                int ofKind = image.tests[pixel * kinds + k];
+                tests[k] += ofKind;
+                all += ofKind;
+            }
+            hits.setTests(i, all);
+        }
+        rays += bundle.count();
+    }
+
+    @Override
+    public long testsRun() {
+        long all = rays * image.unbounded.length;
+        for (long ofKind : tests) {
+            all += ofKind;
+        }
+        return all + (others != null ? others.testsRun() : 0);
+    }
+
+    @Override
+    public WorkCount work() {
+        Map<String, Long> byKind = new TreeMap<>();
+        for (int k = 0; k < tests.length; k++) {
+            byKind.merge(image.kindNames[k], tests[k], Long::sum);
+        }
+        for (IGeometry object : image.unbounded) {
+            byKind.merge(object.kind(), rays, Long::sum);
+        }
+        WorkCount own = new WorkCount(rays, byKind, 0).answeredBy("image of hits");
+        return others != null ? own.plus(others.work()) : own;
+    }
+}

@@ -1,0 +1,170 @@
+package rtd.accel;
+
+import java.util.Arrays;
+import rtd.camera.ICamera;
+import rtd.geometry.Sphere;
+import rtd.geometry.TestObserver;
+import rtd.scene.DepthTest;
+
+/**
+ * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera rays as numbers, made as
+ * the renderer makes them ({@link ICamera#putRay}, as {@link rtd.render.RayBundle} calls it), and each pixel's nearest hit so far. Each object listed for the tile runs
+ * the paper's intersection test on the pixels of its footprint inside the tile, as a {@link NearestHit} runs it (the
+ * shape's own kernel, {@link LeafObjects#t}), and the depth test ({@link DepthTest#key}: the nearest hit wins, and on
+ * a tie the object that comes first in the file) keeps the winner; the objects without a box are tested on every
+ * pixel, as the paper's loop tests them.
+ */
+final class TileOfHits {
+
+    private static final int PIXELS = HitImage.TILE * HitImage.TILE;
+
+    private final HitImage image;
+    private final ViewGrid tiles;
+    private final LeafObjects leaves;
+    private final int[] footprints;
+    private final UnboundedObjects unbounded;
+    private final int[] unboundedOrder;
+    private final int kinds;
+    private final float[] ray = new float[6];
+    private final float[] ox = new float[PIXELS];
+    private final float[] oy = new float[PIXELS];
+    private final float[] oz = new float[PIXELS];
+    private final float[] dx = new float[PIXELS];
+    private final float[] dy = new float[PIXELS];
+    private final float[] dz = new float[PIXELS];
+    private final float[] dd = new float[PIXELS];
+    private final long[] bestKey = new long[PIXELS];
+    private final float[] bestT = new float[PIXELS];
+    private final float[] bestDistance = new float[PIXELS];
+    /** Per pixel of the tile, per kind: the tests run. */
+    private final int[] tests;
+
+    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} by place in the file. */
+    TileOfHits(HitImage image, ViewGrid tiles, int[] footprints) {
+        this.image = image;
+        this.tiles = tiles;
+        this.leaves = tiles.objects.leaves;
+        this.footprints = footprints;
+        this.unbounded = new UnboundedObjects(tiles.objects.unbounded);
+        this.unboundedOrder = tiles.objects.unboundedOrder;
+        this.kinds = image.kindNames.length;
+        this.tests = new int[PIXELS * kinds];
+    }
+
+    /** The hits of the tile whose top left pixel is ({@code left}, {@code top}), into the image. */
+    void draw(int left, int top) {
+        int right = Math.min(image.width, left + HitImage.TILE);
+        int bottom = Math.min(image.height, top + HitImage.TILE);
+        int count = makeRays(left, top, right, bottom);
+        Arrays.fill(tests, 0, count * kinds, 0);
+        for (int u = 0; u < unbounded.count(); u++) {
+            for (int i = 0; i < count; i++) {
+                float t = unbounded.t(u, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
+                if (t >= 0) { // false for NaN: no hit
+                    consider(i, unboundedOrder[u], t);
+                }
+            }
+        }
+        int cell = tiles.cellOf(left, top);
+        for (int k = tiles.cellStart[cell]; k < tiles.cellStart[cell + 1]; k++) {
+            test(tiles.places[k], left, top, right, bottom);
+        }
+        store(left, top, right, count);
+    }
+
+    /** The camera's rays of pixels {@code [left, right) × [top, bottom)}, row by row, and no hit yet; answers how many. */
+    private int makeRays(int left, int top, int right, int bottom) {
+        int i = 0;
+        for (int y = top; y < bottom; y++) {
+            for (int x = left; x < right; x++, i++) {
+                image.scene.camera().putRay(x, y, image.width, image.height, ray, 0);
+                ox[i] = ray[0];
+                oy[i] = ray[1];
+                oz[i] = ray[2];
+                dx[i] = ray[3];
+                dy[i] = ray[4];
+                dz[i] = ray[5];
+                dd[i] = (ray[3] * ray[3]) + (ray[4] * ray[4]) + (ray[5] * ray[5]); // D·D, summed as NearestHit sums it
+                bestKey[i] = DepthTest.NO_HIT;
+                bestT[i] = Float.NaN;
+                bestDistance[i] = Float.POSITIVE_INFINITY;
+            }
+        }
+        return i;
+    }
+
+    /** The object at {@code place} in leaf order on its pixels of the tile {@code [left, right) × [top, bottom)}. */
+    private void test(int place, int left, int top, int right, int bottom) {
+        int index = leaves.fileOrder[place];
+        int at = 4 * index;
+        int across = right - left;
+        int x0 = Math.max(footprints[at], left) - left;
+        int x1 = Math.min(footprints[at + 2] + 1, right) - left; // the first pixel beyond, as each loop's end
+        int y0 = Math.max(footprints[at + 1], top) - top;
+        int y1 = Math.min(footprints[at + 3] + 1, bottom) - top;
+        int kind = leaves.kinds[place];
+        int sphere = leaves.sphereAt(place);
+        for (int y = y0; y < y1; y++) {
+            int end = y * across + x1;
+            for (int i = y * across + x0; i < end; i++) {
+                tests[i * kinds + kind]++;
+            }
+        }
+        if (sphere >= 0) {
+            testSphere(leaves.numbers, sphere, index, across, x0, x1, y0, y1);
+            return;
+        }
+        for (int y = y0; y < y1; y++) {
+            int end = y * across + x1;
+            for (int i = y * across + x0; i < end; i++) {
+                float t = leaves.t(place, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], dd[i]);
+                if (t >= 0) { // false for NaN: no hit
+                    consider(i, index, t);
+                }
+            }
+        }
+    }
+
+    /**
+     * {@link #test} for a sphere whose centre and radius lie at {@code numbers[at]}: the numbers are read once for
+     * all its pixels, and each pixel's ray runs {@link Sphere#hit}, as {@link PackedTests} runs it.
+     */
+    private void testSphere(float[] numbers, int at, int index, int across, int x0, int x1, int y0, int y1) {
+        float mx = numbers[at];
+        float my = numbers[at + 1];
+        float mz = numbers[at + 2];
+        float r = numbers[at + 3];
+        for (int y = y0; y < y1; y++) {
+            int end = y * across + x1;
+            for (int i = y * across + x0; i < end; i++) {
+                float t = Sphere.hit(mx, my, mz, r, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], TestObserver.NONE);
+                if (t >= 0) { // false for NaN: no hit
+                    consider(i, index, t);
+                }
+            }
+        }
+    }
+
+    /** The depth test of Listing 4.3 for pixel {@code i} of the tile, as {@link NearestHit}'s. */
+    private void consider(int i, int index, float t) {
+        float distance = LeafObjects.distance(t, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
+        long key = DepthTest.key(distance, index);
+        if (key < bestKey[i]) {
+            bestKey[i] = key;
+            bestT[i] = t;
+            bestDistance[i] = distance;
+        }
+    }
+
+    /** The tile's {@code count} hits, from ({@code left}, {@code top}) to {@code right}, into the image. */
+    private void store(int left, int top, int right, int count) {
+        int across = right - left;
+        for (int i = 0; i < count; i++) {
+            int pixel = (top + i / across) * image.width + left + i % across;
+            image.index[pixel] = bestKey[i] != DepthTest.NO_HIT ? (int) bestKey[i] : -1;
+            image.t[pixel] = bestT[i];
+            image.distance[pixel] = bestDistance[i];
+            System.arraycopy(tests, i * kinds, image.tests, pixel * kinds, kinds);
+        }
+    }
+}
