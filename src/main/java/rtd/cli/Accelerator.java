@@ -34,7 +34,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         LOOP("the paper's loop: nothing to build"),
         BVH("building the BVH"),
         GRID("building the view grid"),
-        GRID_AND_BVH("building the view grid, the lights' grids and the BVH"),
+        GRID_AND_BVH("building the view grid, the lights' and mirrors' grids and the BVH"),
         IMAGE("finding each pixel's hit, object by object");
 
         final String building;
