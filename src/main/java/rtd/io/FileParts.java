@@ -57,28 +57,39 @@ final class FileParts {
     }
 
     /**
-     * The number of the line at each cut, from one pass over the bytes that also refuses text that is not UTF-8.
+     * The number of the line at each cut, from one pass over each part's bytes (the parts in parallel) that also
+     * refuses text that is not UTF-8.
      */
     private static int[] linesAtCuts(SourceText source, int[] cuts) throws SceneException {
         byte[] bytes = source.bytes();
+        IntStream parts = IntStream.range(0, cuts.length - 1);
+        int[] breaks = (cuts.length > 2 ? parts.parallel() : parts).map(k -> lineBreaks(bytes, cuts[k], cuts[k + 1]))
+                .toArray();
         int[] lines = new int[cuts.length];
-        int line = 1;
+        lines[0] = 1;
         boolean plain = true;
-        for (int k = 0; k + 1 < cuts.length; k++) {
-            lines[k] = line;
-            for (int i = cuts[k]; i < cuts[k + 1]; i++) {
-                if (bytes[i] <= '\r') { // one test for the rare: line breaks, control characters, every non-ASCII byte
-                    line += bytes[i] == '\n' || bytes[i] == '\r' && TextBytes.endsLine(bytes, i) ? 1 : 0;
-                    plain &= bytes[i] > 0;
-                }
-            }
+        for (int k = 0; k < breaks.length; k++) {
+            plain &= breaks[k] >= 0;
+            lines[k + 1] = lines[k] + (breaks[k] & Integer.MAX_VALUE);
         }
-        lines[cuts.length - 1] = line;
         int bad = plain ? -1 : SourceText.firstBadByte(bytes, cuts[0], bytes.length);
         if (bad >= 0) {
             throw new SceneException(List.of(source.notUtf8(cuts[0], bad)), false);
         }
         return lines;
+    }
+
+    /** The line breaks in {@code bytes[from, to)}; the sign bit set if a byte there may not be UTF-8's ASCII. */
+    private static int lineBreaks(byte[] bytes, int from, int to) {
+        int breaks = 0;
+        boolean plain = true;
+        for (int i = from; i < to; i++) {
+            if (bytes[i] <= '\r') { // one test for the rare: line breaks, control characters, every non-ASCII byte
+                breaks += bytes[i] == '\n' || bytes[i] == '\r' && TextBytes.endsLine(bytes, i) ? 1 : 0;
+                plain &= bytes[i] > 0;
+            }
+        }
+        return plain ? breaks : breaks | Integer.MIN_VALUE;
     }
 
     /**

@@ -19,14 +19,28 @@ final class FloatParser {
 
     /** The number in {@code bytes[start, end)}; a {@link NumberFormatException} if the text is not one. */
     static float parse(byte[] bytes, int start, int end) {
+        int i = start < end && (bytes[start] == '+' || bytes[start] == '-') ? start + 1 : start;
+        if (i < end && (bytes[i] == 'N' || bytes[i] == 'I')) {
+            return special(new String(bytes, i, end - i, StandardCharsets.US_ASCII), bytes[start] == '-');
+        }
+        long number = leading(bytes, start, end);
+        if ((int) (number >>> 32) != end) {
+            throw new NumberFormatException();
+        }
+        return Float.intBitsToFloat((int) number);
+    }
+
+    /**
+     * The number that {@code bytes[start, end)} starts with, no NaN or Infinity, so that a reader needs no second
+     * pass to find where it ends: its float's bits in the low 32 bits, the offset after it in the high 32; −1 if no
+     * number starts there.
+     */
+    static long leading(byte[] bytes, int start, int end) {
         int i = start;
         boolean negative = false;
         if (i < end && (bytes[i] == '+' || bytes[i] == '-')) {
             negative = bytes[i] == '-';
             i++;
-        }
-        if (i < end && (bytes[i] == 'N' || bytes[i] == 'I')) {
-            return special(new String(bytes, i, end - i, StandardCharsets.US_ASCII), negative);
         }
         long mantissa = 0;
         int digits = 0;
@@ -55,7 +69,7 @@ final class FloatParser {
             }
         }
         if (!anyDigit) {
-            throw new NumberFormatException();
+            return -1;
         }
         if (i < end && (bytes[i] == 'e' || bytes[i] == 'E')) {
             i++;
@@ -71,18 +85,15 @@ final class FloatParser {
                 exponentDigits++;
             }
             if (exponentDigits == 0) {
-                throw new NumberFormatException();
+                return -1;
             }
             scale += negativeExponent ? -exponent : exponent;
         }
-        if (i != end) {
-            throw new NumberFormatException();
-        }
         float magnitude = exact ? fast(mantissa, scale) : Float.NaN;
         if (Float.isNaN(magnitude)) {
-            magnitude = Math.abs(Float.parseFloat(new String(bytes, start, end - start, StandardCharsets.US_ASCII)));
+            magnitude = Math.abs(Float.parseFloat(new String(bytes, start, i - start, StandardCharsets.US_ASCII)));
         }
-        return negative ? -magnitude : magnitude;
+        return (long) i << 32 | Float.floatToRawIntBits(negative ? -magnitude : magnitude) & 0xFFFF_FFFFL;
     }
 
     /** Clinger's fast path: digits and power of ten exact in a double round once to it, again to float; else NaN. */

@@ -45,18 +45,17 @@ final class NumberReader {
         int start = cursor.pos;
         tokenStart = start;
         byte[] bytes = cursor.bytes;
-        int end = start;
+        long plain = FloatParser.leading(bytes, start, bytes.length);
+        int end = (int) (plain >>> 32);
+        if (end > start && end < bytes.length && (bytes[end] == '|' || bytes[end] == ')')) {
+            cursor.pos = end;
+            return Float.intBitsToFloat((int) plain);
+        }
+        end = start; // an expression or a mistake: the token is all up to a delimiter
         while (end < bytes.length && !TextBytes.isDelimiter(bytes[end])) {
             end++;
         }
         cursor.pos = end;
-        if (end > start && end < bytes.length && (bytes[end] == '|' || bytes[end] == ')')) {
-            try {
-                return FloatParser.parse(bytes, start, end);
-            } catch (NumberFormatException e) {
-                // an expression or a mistake: below
-            }
-        }
         return readOther();
     }
 

@@ -167,6 +167,20 @@ class FilePartsTest {
         assertThat(outcome(giant, 1024)).isEqualTo(outcome(giant, Integer.MAX_VALUE));
     }
 
+    /** Letters beyond ASCII in a later part keep the line numbers; a byte that is no UTF-8 is found in any part. */
+    @Test
+    void aByteThatIsNotUtf8IsFoundInAnyPart() {
+        String text = TOP + "sphere:(0|0|0):(1):(1|2|3)\n".repeat(300) + "// größer\n" + "sphere:(0|0|0):(x):(1|2|3)\n";
+        String whole = outcome(text, Integer.MAX_VALUE);
+        assertThat(whole).contains("scene.txt:308:");
+        assertThat(outcome(text, 1000)).isEqualTo(whole);
+        byte[] bytes = (text + "sphere:(0|0|0):(1):(1|2|3)\n".repeat(300)).getBytes(StandardCharsets.UTF_8);
+        bytes[bytes.length - 100] = (byte) 0xFF;
+        String notUtf8 = outcome(SceneFile.of("scene.txt", bytes, Path.of("")));
+        assertThat(notUtf8).contains("UTF-8");
+        assertThat(outcome(SceneFile.of("scene.txt", bytes, Path.of("")).inPartsOf(1000))).isEqualTo(notUtf8);
+    }
+
     @Test
     void theNumberOfThreadsChangesNothing() throws Exception {
         String text = randomFile(7, 2000, false);

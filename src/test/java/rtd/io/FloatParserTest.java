@@ -8,6 +8,7 @@ import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 @DisplayName("Reading numbers straight from bytes")
@@ -59,5 +60,23 @@ class FloatParserTest {
     @ValueSource(strings = {"", "-", ".", "e3", "1e", "1e+", "1.2.3", "1f", "1d", "0x10", "--1", "1 2", "inf", "nan", "1,5", "Infinityx"})
     void refusesWhatIsNotANumber(String text) {
         assertThatThrownBy(() -> parse(text)).isInstanceOf(NumberFormatException.class);
+    }
+
+    /** The number a group's text starts with, and the offset after it: where the reader looks for '|' or ')'. */
+    @ParameterizedTest(name = "''{0}'' starts with a number of {1} bytes")
+    @CsvSource(delimiter = ';', value = {"12.5|3; 4; 12.5", "-2e3); 4; -2000", "0.25)(; 4; 0.25", "7 |; 1; 7",
+        "1.5.3|; 3; 1.5", "+.5:; 3; 0.5"})
+    void readsTheNumberATextStartsWithAndWhereItEnds(String text, int end, float value) {
+        byte[] bytes = text.getBytes(StandardCharsets.US_ASCII);
+        long number = FloatParser.leading(bytes, 0, bytes.length);
+        assertThat((int) (number >>> 32)).isEqualTo(end);
+        assertThat(Float.intBitsToFloat((int) number)).isEqualTo(value);
+    }
+
+    @ParameterizedTest(name = "''{0}'' starts with no number")
+    @ValueSource(strings = {"|", "-|", ".)", "1e|", "NaN|", "Infinity)", "x1|"})
+    void findsNoNumberAtTheStartOfAText(String text) {
+        byte[] bytes = text.getBytes(StandardCharsets.US_ASCII);
+        assertThat(FloatParser.leading(bytes, 0, bytes.length)).isEqualTo(-1);
     }
 }
