@@ -84,6 +84,9 @@ public final class LightGrids {
         }
     }
 
+    /** No grid: every shadow ray goes to the tracer for the others. */
+    public static final LightGrids NONE = new LightGrids(List.of());
+
     private final List<Grid> grids;
 
     private LightGrids(List<Grid> grids) {

@@ -98,6 +98,9 @@ public final class MirrorGrids {
         }
     }
 
+    /** No grid: every mirrored ray goes to the tracer for the others. */
+    public static final MirrorGrids NONE = new MirrorGrids(List.of());
+
     private final List<Grid> grids;
 
     private MirrorGrids(List<Grid> grids) {
@@ -116,7 +119,7 @@ public final class MirrorGrids {
         List<IGeometry> objects = scene.objects();
         float[] box = LightGrids.boxOf(objects);
         if (scene.lights().isEmpty() || !(scene.camera() instanceof PerspectiveCamera camera) || box == null) {
-            return new MirrorGrids(List.of());
+            return NONE;
         }
         int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples / 2));
         long most = Math.max(1, LightGrids.MOST_PACKED / Math.max(1, objects.size()));

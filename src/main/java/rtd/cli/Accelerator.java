@@ -29,12 +29,19 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      */
     static final int IMAGE_THRESHOLD = 100_000;
 
+    /**
+     * The fewest objects for which {@code auto} builds the lights' and the mirrors' grids: fewer fit in one leaf of the
+     * BVH, whose shadow and mirrored rays test them all sooner than a grid finds a ray's cell.
+     */
+    static final int POINT_GRIDS_THRESHOLD = 16;
+
     /** What a run finds its hits with, and how the progress line names its building. */
     enum Kind {
         LOOP("the paper's loop: nothing to build"),
         BVH("building the BVH"),
         GRID("building the view grid"),
         GRID_AND_BVH("building the view grid, the lights' and mirrors' grids and the BVH"),
+        GRID_AND_BVH_ONLY("building the view grid and the BVH"),
         IMAGE("finding each pixel's hit, object by object");
 
         final String building;
@@ -62,10 +69,14 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
     /**
      * As above, for a {@code width × height} picture of {@code samples²} rays a pixel: where that takes the view grid
      * alone, a picture of one ray a pixel of {@link #IMAGE_THRESHOLD} objects or more takes the image of hits, if it
-     * {@link HitImage#pays}.
+     * {@link HitImage#pays}; {@code auto} takes the view grid and the BVH alone for a lit scene of fewer than
+     * {@link #POINT_GRIDS_THRESHOLD} objects.
      */
     static Kind choose(Scene scene, Choice accel, int width, int height, int samples) {
         Kind kind = choose(scene, accel);
+        if (kind == Kind.GRID_AND_BVH && accel == Choice.auto && scene.objects().size() < POINT_GRIDS_THRESHOLD) {
+            return Kind.GRID_AND_BVH_ONLY;
+        }
         return kind == Kind.GRID && samples == 1 && scene.objects().size() >= IMAGE_THRESHOLD
                 && HitImage.pays(scene, width, height) ? Kind.IMAGE : kind;
     }
@@ -104,8 +115,10 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         if (tree == null) {
             return new Accelerator(grid::newTracer, () -> describe(grid), false);
         }
-        LightGrids lights = kept.lightGrids(scene, width, height, samples, threads);
-        MirrorGrids mirrors = MirrorGrids.build(scene, width, height, samples, threads); // the camera's: never kept
+        boolean pointGrids = kind == Kind.GRID_AND_BVH;
+        LightGrids lights = pointGrids ? kept.lightGrids(scene, width, height, samples, threads) : LightGrids.NONE;
+        MirrorGrids mirrors = pointGrids // the camera's: never kept
+                ? MirrorGrids.build(scene, width, height, samples, threads) : MirrorGrids.NONE;
         Bvh bvh = join(tree);
         return new Accelerator(() -> grid.newTracer(lights.newTracer(mirrors.newTracer(bvh.newTracer()))),
                 () -> describe(grid) + ", " + (lights.count() == 0 ? "no light grid"

@@ -39,6 +39,21 @@ class AcceleratorTest {
     }
 
     @Test
+    void autoBuildsNoGridsFromTheLightsOrMirrorsForALitSceneOfFewObjects() {
+        int few = Accelerator.POINT_GRIDS_THRESHOLD - 1;
+        assertThat(Accelerator.choose(spheres(few, true), Choice.auto, 40, 20, 1))
+                .isEqualTo(Accelerator.Kind.GRID_AND_BVH_ONLY);
+        assertThat(Accelerator.choose(spheres(few + 1, true), Choice.auto, 40, 20, 1))
+                .isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+        assertThat(Accelerator.choose(spheres(few, true), Choice.grid, 40, 20, 1)).as("grid builds them")
+                .isEqualTo(Accelerator.Kind.GRID_AND_BVH);
+        assertThat(Accelerator.choose(spheres(few, false), Choice.auto, 40, 20, 1)).as("no lights")
+                .isEqualTo(Accelerator.Kind.GRID);
+        assertThat(Accelerator.of(spheres(few, true), Choice.auto, 40, 20, 1, 1).built().get())
+                .startsWith("view grid of ").contains(", no light grid, and BVH of ");
+    }
+
+    @Test
     void anyOtherChoiceIsKept() {
         assertThat(Accelerator.choose(spheres(3, false), Choice.grid)).isEqualTo(Accelerator.Kind.GRID);
         assertThat(Accelerator.choose(spheres(3, true), Choice.grid)).isEqualTo(Accelerator.Kind.GRID_AND_BVH);
