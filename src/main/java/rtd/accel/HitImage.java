@@ -91,9 +91,10 @@ public final class HitImage {
                     SHIFT, false);
             HitImage image = new HitImage(scene, width, height, tiles);
             int count = image.tileCount();
+            int[] footprints = builder.footprintsInLeafOrder();
             AtomicInteger next = new AtomicInteger();
             new Parts(count, pool).run((start, end, part) -> { // each thread takes the next tile not yet taken
-                TileOfHits tile = new TileOfHits(image, tiles, builder.footprints());
+                TileOfHits tile = new TileOfHits(image, tiles, footprints);
                 for (int k = next.getAndIncrement(); k < count; k = next.getAndIncrement()) {
                     tile.draw((k % image.columns) << SHIFT, (k / image.columns) << SHIFT);
                 }
