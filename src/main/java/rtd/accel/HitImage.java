@@ -46,6 +46,8 @@ public final class HitImage {
     final String[] kindNames;
     /** Per pixel, per kind ({@code tests[pixel · kinds + kind]}): the tests its ray ran on objects with a box. */
     final int[] tests;
+    /** Per pixel: all the tests its ray ran, the objects without a box' too. */
+    final int[] rayTests;
     /** The objects without a box (planes), which every pixel's ray tests. */
     final IGeometry[] unbounded;
     private final int entries;
@@ -60,6 +62,7 @@ public final class HitImage {
         this.distance = new float[width * height];
         this.kindNames = tiles.objects.leaves.kindNames;
         this.tests = new int[width * height * kindNames.length];
+        this.rayTests = new int[width * height];
         this.unbounded = tiles.objects.unbounded;
         this.entries = tiles.entries();
     }

@@ -174,10 +174,13 @@ final class TileOfHits {
                 image.t[pixel] = bestT[i];
                 image.distance[pixel] = bestDistance[i];
                 int at = row + (x - left) * kinds;
+                int all = unbounded.count();
                 for (int k = 0; k < kinds; k++) { // the row's running sum: this pixel's count
                     tests[at + k] += x > left ? tests[at + k - kinds] : 0;
                     image.tests[pixel * kinds + k] = tests[at + k];
+                    all += tests[at + k];
                 }
+                image.rayTests[pixel] = all;
             }
         }
     }
