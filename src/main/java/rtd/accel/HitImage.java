@@ -46,6 +46,8 @@ public final class HitImage {
     final String[] kindNames;
     /** Per pixel, per kind ({@code tests[pixel · kinds + kind]}): the tests its ray ran on objects with a box. */
     final int[] tests;
+    /** Per pixel: all the tests its ray ran, the objects without a box' too. */
+    final int[] rayTests;
     /** The objects without a box (planes), which every pixel's ray tests. */
     final IGeometry[] unbounded;
     private final int entries;
@@ -60,6 +62,7 @@ public final class HitImage {
         this.distance = new float[width * height];
         this.kindNames = tiles.objects.leaves.kindNames;
         this.tests = new int[width * height * kindNames.length];
+        this.rayTests = new int[width * height];
         this.unbounded = tiles.objects.unbounded;
         this.entries = tiles.entries();
     }
@@ -91,9 +94,10 @@ public final class HitImage {
                     SHIFT, false);
             HitImage image = new HitImage(scene, width, height, tiles);
             int count = image.tileCount();
+            int[] footprints = builder.footprintsInLeafOrder();
             AtomicInteger next = new AtomicInteger();
             new Parts(count, pool).run((start, end, part) -> { // each thread takes the next tile not yet taken
-                TileOfHits tile = new TileOfHits(image, tiles, builder.footprints());
+                TileOfHits tile = new TileOfHits(image, tiles, footprints);
                 for (int k = next.getAndIncrement(); k < count; k = next.getAndIncrement()) {
                     tile.draw((k % image.columns) << SHIFT, (k / image.columns) << SHIFT);
                 }

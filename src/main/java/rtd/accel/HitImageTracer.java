@@ -53,20 +53,30 @@ public final class HitImageTracer implements Tracer {
             return;
         }
         RayBundle.Pixels p = bundle.pixels();
-        int across = p.right() - p.left();
         int kinds = tests.length;
-        for (int i = 0; i < bundle.count(); i++) {
-            int pixel = (p.top() + i / across) * image.width + p.left() + i % across;
-            hits.set(i, image.index[pixel], image.t[pixel], image.distance[pixel]);
-            long all = image.unbounded.length;
+        int across = p.right() - p.left();
+        for (int y = p.top(), i = 0; y < p.bottom(); y++, i += across) {
+            int pixel = y * image.width + p.left();
+            hits.set(i, across, pixel, image.index, image.t, image.distance, image.rayTests);
             for (int k = 0; k < kinds; k++) {
-                int ofKind = image.tests[pixel * kinds + k];
+                long ofKind = 0;
+                for (int at = pixel * kinds + k, end = (pixel + across) * kinds; at < end; at += kinds) {
+                    ofKind += image.tests[at];
+                }
                 tests[k] += ofKind;
-                all += ofKind;
             }
-            hits.setTests(i, all);
         }
         rays += bundle.count();
+    }
+
+    /** The camera's rays of a run of squares, each read from its pixel, all at once. */
+    @Override
+    public boolean traceAtOnce(RayBundle bundle, HitBuffer hits) {
+        if (!image.serves(bundle)) {
+            return false;
+        }
+        traceAll(bundle, hits);
+        return true;
     }
 
     @Override

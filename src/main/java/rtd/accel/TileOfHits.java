@@ -36,10 +36,13 @@ final class TileOfHits {
     private final long[] bestKey = new long[PIXELS];
     private final float[] bestT = new float[PIXELS];
     private final float[] bestDistance = new float[PIXELS];
-    /** Per pixel of the tile, per kind: the tests run. */
+    /**
+     * Per pixel of the tile, per kind: the tests run, kept as differences along rows ({@link #count}) until the tile is
+     * stored, when a running sum turns them into counts: two writes a row of an object, not one a pixel.
+     */
     private final int[] tests;
 
-    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} by place in the file. */
+    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} by place in the leaf. */
     TileOfHits(HitImage image, ViewGrid tiles, int[] footprints) {
         this.image = image;
         this.tiles = tiles;
@@ -48,7 +51,7 @@ final class TileOfHits {
         this.unbounded = new UnboundedObjects(tiles.objects.unbounded);
         this.unboundedOrder = tiles.objects.unboundedOrder;
         this.kinds = image.kindNames.length;
-        this.tests = new int[PIXELS * kinds];
+        this.tests = new int[HitImage.TILE * (HitImage.TILE + 1) * kinds];
     }
 
     /** The hits of the tile whose top left pixel is ({@code left}, {@code top}), into the image. */
@@ -56,7 +59,7 @@ final class TileOfHits {
         int right = Math.min(image.width, left + HitImage.TILE);
         int bottom = Math.min(image.height, top + HitImage.TILE);
         int count = makeRays(left, top, right, bottom);
-        Arrays.fill(tests, 0, count * kinds, 0);
+        Arrays.fill(tests, 0);
         for (int u = 0; u < unbounded.count(); u++) {
             for (int i = 0; i < count; i++) {
                 float t = unbounded.t(u, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
@@ -69,7 +72,7 @@ final class TileOfHits {
         for (int k = tiles.cellStart[cell]; k < tiles.cellStart[cell + 1]; k++) {
             test(tiles.places[k], left, top, right, bottom);
         }
-        store(left, top, right, count);
+        store(left, top, right, bottom);
     }
 
     /** The camera's rays of pixels {@code [left, right) × [top, bottom)}, row by row, and no hit yet; answers how many. */
@@ -96,20 +99,14 @@ final class TileOfHits {
     /** The object at {@code place} in leaf order on its pixels of the tile {@code [left, right) × [top, bottom)}. */
     private void test(int place, int left, int top, int right, int bottom) {
         int index = leaves.fileOrder[place];
-        int at = 4 * index;
+        int at = 4 * place;
         int across = right - left;
         int x0 = Math.max(footprints[at], left) - left;
         int x1 = Math.min(footprints[at + 2] + 1, right) - left; // the first pixel beyond, as each loop's end
         int y0 = Math.max(footprints[at + 1], top) - top;
         int y1 = Math.min(footprints[at + 3] + 1, bottom) - top;
-        int kind = leaves.kinds[place];
+        count(leaves.kinds[place], x0, x1, y0, y1);
         int sphere = leaves.sphereAt(place);
-        for (int y = y0; y < y1; y++) {
-            int end = y * across + x1;
-            for (int i = y * across + x0; i < end; i++) {
-                tests[i * kinds + kind]++;
-            }
-        }
         if (sphere >= 0) {
             testSphere(leaves.numbers, sphere, index, across, x0, x1, y0, y1);
             return;
@@ -145,6 +142,17 @@ final class TileOfHits {
         }
     }
 
+    /**
+     * One test of kind {@code kind} on each pixel of {@code [x0, x1) × [y0, y1)}, as differences along each row of a
+     * grid one wider than the tile: a row's running sum gives each pixel its count ({@link #store}).
+     */
+    private void count(int kind, int x0, int x1, int y0, int y1) {
+        for (int y = y0; y < y1; y++) {
+            tests[(y * (HitImage.TILE + 1) + x0) * kinds + kind]++;
+            tests[(y * (HitImage.TILE + 1) + x1) * kinds + kind]--;
+        }
+    }
+
     /** The depth test of Listing 4.3 for pixel {@code i} of the tile, as {@link NearestHit}'s. */
     private void consider(int i, int index, float t) {
         float distance = LeafObjects.distance(t, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
@@ -156,15 +164,24 @@ final class TileOfHits {
         }
     }
 
-    /** The tile's {@code count} hits, from ({@code left}, {@code top}) to {@code right}, into the image. */
-    private void store(int left, int top, int right, int count) {
-        int across = right - left;
-        for (int i = 0; i < count; i++) {
-            int pixel = (top + i / across) * image.width + left + i % across;
-            image.index[pixel] = bestKey[i] != DepthTest.NO_HIT ? (int) bestKey[i] : -1;
-            image.t[pixel] = bestT[i];
-            image.distance[pixel] = bestDistance[i];
-            System.arraycopy(tests, i * kinds, image.tests, pixel * kinds, kinds);
+    /** The tile's hits, of the pixels {@code [left, right) × [top, bottom)}, into the image. */
+    private void store(int left, int top, int right, int bottom) {
+        for (int y = top, i = 0; y < bottom; y++) {
+            int row = (y - top) * (HitImage.TILE + 1) * kinds;
+            for (int x = left; x < right; x++, i++) {
+                int pixel = y * image.width + x;
+                image.index[pixel] = bestKey[i] != DepthTest.NO_HIT ? (int) bestKey[i] : -1;
+                image.t[pixel] = bestT[i];
+                image.distance[pixel] = bestDistance[i];
+                int at = row + (x - left) * kinds;
+                int all = unbounded.count();
+                for (int k = 0; k < kinds; k++) { // the row's running sum: this pixel's count
+                    tests[at + k] += x > left ? tests[at + k - kinds] : 0;
+                    image.tests[pixel * kinds + k] = tests[at + k];
+                    all += tests[at + k];
+                }
+                image.rayTests[pixel] = all;
+            }
         }
     }
 }

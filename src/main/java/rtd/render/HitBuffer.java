@@ -53,6 +53,19 @@ public final class HitBuffer {
         this.distance[i] = distance;
     }
 
+    /**
+     * Rays {@code i} to {@code i + count − 1} hit what {@code index}, {@code t} and {@code distance} hold from
+     * {@code from} on, as {@link #set(int, int, float, float)} sets one, and took the tests {@code tests} holds there.
+     */
+    public void set(int i, int count, int from, int[] index, float[] t, float[] distance, int[] tests) {
+        writePending();
+        missedAll = false;
+        System.arraycopy(index, from, this.index, i, count);
+        System.arraycopy(t, from, this.t, i, count);
+        System.arraycopy(distance, from, this.distance, i, count);
+        System.arraycopy(tests, from, this.tests, i, count);
+    }
+
     /** Ray {@code i} hits {@code hit}, or nothing if it is {@code null}. */
     public void set(int i, Hit hit) {
         if (hit == null) {

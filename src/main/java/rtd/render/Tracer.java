@@ -27,9 +27,10 @@ public interface Tracer {
     }
 
     /**
-     * Whether the tracer can tell at once that none of the bundle's rays (maybe a run of squares) hits anything: then
-     * they count as traced with no test, answered in {@code hits} ({@link HitBuffer#setMisses}). False, with nothing
-     * traced, if some ray may hit or the tracer cannot tell, as by default.
+     * Whether the tracer can answer the bundle's rays (maybe a run of squares) at once, into {@code hits}: if it can
+     * tell that none hits anything, they count as traced with no test ({@link HitBuffer#setMisses}); if their hits
+     * were found before the render (an image of hits), as {@link #traceAll} reads them. False, with nothing traced,
+     * if some ray may hit or the tracer cannot tell, as by default.
      */
     default boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
         return false;

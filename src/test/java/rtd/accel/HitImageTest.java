@@ -45,10 +45,15 @@ class HitImageTest {
     private static final int HEIGHT = 70;
 
     /**
-     * Traces every pixel's ray as the renderer does, in squares of 8 × 8, and checks each against the loop; answers
-     * the hits.
+     * Traces every pixel's ray as the renderer does, in squares of 8 × 8, and checks each against the loop, and its
+     * tests against the footprints that hold its pixel; answers the hits.
      */
     private static List<Hit> checkEveryPixel(Scene scene, HitImage image) {
+        int[] footprints = new int[4 * scene.objects().size()];
+        ImageFootprint footprint = ImageFootprint.of(scene.camera(), WIDTH, HEIGHT, 0);
+        for (int f = 0; f < scene.objects().size(); f++) {
+            footprint.putObject(scene.objects().get(f), new float[6], footprints, 4 * f);
+        }
         HitImageTracer tracer = image.newTracer();
         RayBundle bundle = new RayBundle(64);
         HitBuffer hits = new HitBuffer(64);
@@ -63,14 +68,27 @@ class HitImageTest {
                     Hit expected = scene.nearestHit(ray);
                     assertSame(hits.hit(i, bundle, scene.objects()), expected,
                             "pixel (" + (left + i % (right - left)) + ", " + (top + i / (right - left)) + ") " + ray);
+                    int x = left + i % (right - left);
+                    int y = top + i / (right - left);
+                    assertThat(hits.tests(i)).as("the tests of pixel (%d, %d)", x, y)
+                            .isEqualTo(image.unbounded.length + holding(footprints, x, y));
                     if (expected != null) {
-                        assertThat(hits.tests(i)).as("the tests of a ray that hits").isPositive();
                         found.add(expected);
                     }
                 }
             }
         }
         return found;
+    }
+
+    /** How many of the {@code footprints} (x0, y0, x1, y1 inclusive, each object's) hold pixel (x, y). */
+    private static int holding(int[] footprints, int x, int y) {
+        int count = 0;
+        for (int at = 0; at < footprints.length; at += 4) {
+            count += footprints[at] <= x && x <= footprints[at + 2] && footprints[at + 1] <= y && y <= footprints[at + 3]
+                    ? 1 : 0;
+        }
+        return count;
     }
 
     @ParameterizedTest(name = "random scene {0}")

@@ -66,4 +66,22 @@ class HitBufferTest {
         assertThat(new int[] {hits.tests(0), hits.tests(1), hits.tests(2)}).containsExactly(2, 0, 0);
         assertThat(hits.index(2)).isEqualTo(-1);
     }
+
+    @Test
+    void aRunOfRaysSetFromArraysAfterAllMissedReadsTheirEntriesAndLeavesTheOthersMisses() {
+        HitBuffer hits = new HitBuffer(5);
+        hits.setMisses(5);
+
+        hits.set(1, 2, 3, new int[] {9, 9, 9, 4, -1}, new float[] {0, 0, 0, 2.5f, Float.NaN},
+                new float[] {0, 0, 0, 3.5f, Float.POSITIVE_INFINITY}, new int[] {0, 0, 0, 6, 1});
+
+        assertThat(hits.missedAll()).isFalse();
+        assertThat(new int[] {hits.index(0), hits.index(1), hits.index(2), hits.index(3)}).containsExactly(-1, 4, -1,
+                -1);
+        assertThat(new float[] {hits.distance(0), hits.distance(1), hits.distance(2)})
+                .containsExactly(Float.POSITIVE_INFINITY, 3.5f, Float.POSITIVE_INFINITY);
+        Sphere sphere = new Sphere(new Vector3f(0, 0, 5), 1, new Color(1, 2, 3));
+        assertThat(hits.hit(1, RAY, List.of(sphere, sphere, sphere, sphere, sphere)).t()).isEqualTo(2.5f);
+        assertThat(new int[] {hits.tests(0), hits.tests(1), hits.tests(2), hits.tests(3)}).containsExactly(0, 6, 1, 0);
+    }
 }
