@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.PerspectiveCamera;
+import rtd.geometry.Hit;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Plane;
 import rtd.math.Ray;
@@ -25,12 +26,6 @@ import rtd.scene.Scene;
  */
 public final class MirrorGrids {
 
-    /**
-     * How far the shader lifts a mirrored ray's origin off the surface, per unit of the hit point's
-     * largest coordinate: {@code ε = 1e-4·(1 + max |P|)} (a test holds it equal to the shader's).
-     * The lift moves the ray's line up to ε from X; a grid serves rays up to that far off.
-     */
-    static final float LIFT = 1e-4f;
     /** The widest gap served, as a share of the eye's height over the mirror: the tree does better beyond. */
     private static final double WIDEST_GAP_PER_HEIGHT = 1e-3;
     /** The side of a grid's picture at least and at most, in pixels, as for {@link LightGrids}. */
@@ -80,7 +75,7 @@ public final class MirrorGrids {
             for (float bound : box) {
                 largest = Math.max(largest, Math.abs(bound));
             }
-            return LIFT * (1 + largest) * 1.01;
+            return Hit.LIFT * (1 + largest) * 1.01; // the shader lifts a mirrored ray this far off X
         }
 
         /** The cell of {@code ray}, or −1 if the grid does not serve it. */

@@ -109,21 +109,24 @@ final class FileParts {
      * parallel where they stand alone; answers how many parts were read on their own and joined.
      */
     int read(StatementReader reader, SceneContents contents, Names names) {
-        reader.readUntil(cuts[1]);
-        int next = 1;
-        if (count() > 1 && contents.errors.isEmpty()) {
-            List<Part> parts = IntStream.range(1, count()).parallel().mapToObj(k -> readAlone(k, contents, names))
-                    .toList();
-            while (next < count() && parts.get(next - 1).standsAlone()) {
-                contents.append(parts.get(next++ - 1).contents());
+        try {
+            reader.readUntil(cuts[1]);
+            int next = 1;
+            if (count() > 1 && contents.errors.isEmpty()) {
+                List<Part> parts = IntStream.range(1, count()).parallel().mapToObj(k -> readAlone(k, contents, names))
+                        .toList();
+                while (next < count() && parts.get(next - 1).standsAlone()) {
+                    contents.append(parts.get(next++ - 1).contents());
+                }
             }
+            if (next < count()) {
+                reader.moveTo(cuts[next], lines[next]);
+                reader.readUntil(cuts[count()]);
+            }
+            return next - 1;
+        } finally {
+            reader.release();
         }
-        if (next < count()) {
-            reader.moveTo(cuts[next], lines[next]);
-            reader.readUntil(cuts[count()]);
-        }
-        reader.release();
-        return next - 1;
     }
 
     /** Part {@code k} read on its own, knowing the materials and the names that the first part defines. */
@@ -132,8 +135,13 @@ final class FileParts {
         contents.materials.putAll(first.materials);
         Names own = names.forPart();
         StatementReader reader = new StatementReader(source, cuts[k], lines[k], contents, own);
-        reader.readUntil(cuts[k + 1]);
-        reader.release();
+        try {
+            reader.readUntil(cuts[k + 1]);
+        } catch (RuntimeException e) { // read again in order, where it fails the same way on every run
+            return new Part(contents, false);
+        } finally {
+            reader.release();
+        }
         return new Part(contents, contents.errors.isEmpty() && contents.lineNumbers == 0
                 && contents.definitions.isEmpty() && own.definesNothingBeyond(names));
     }

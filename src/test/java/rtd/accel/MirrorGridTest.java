@@ -236,7 +236,6 @@ class MirrorGridTest {
 
     @Test
     void theGridServesRaysAsFarFromTheMirroredEyeAsTheShaderLiftsThemOffTheMirror() {
-        assertThat(MirrorGrids.LIFT).isEqualTo(Surface.LIFT);
         // the image at (3, −12, 2), the box to 40.5: the lift of a point with coordinates up to 40.5, and a hundredth
         assertThat(MirrorGrids.Grid.gap(new Vector3f(3, -12, 2), new float[] {-1, 2, -3, 4, 40.5f, 6}))
                 .isCloseTo((double) Surface.LIFT * 41.5 * 1.01, within(1e-9));
