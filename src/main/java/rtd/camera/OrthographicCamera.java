@@ -64,9 +64,31 @@ public final class OrthographicCamera implements ICamera {
     public Ray generateRay(float x, float y, int w, int h) {
         float offsetX = x - (w / 2);
         float offsetY = y - (h / 2);
-        Vector3f origin = pos.add(widthVector.multiply(offsetX).divide(zoom)
-                .add(heightVector.multiply(offsetY).divide(zoom)));
+        Vector3f origin = new Vector3f(originAlong(pos.x(), widthVector.x(), heightVector.x(), offsetX, offsetY),
+                originAlong(pos.y(), widthVector.y(), heightVector.y(), offsetX, offsetY),
+                originAlong(pos.z(), widthVector.z(), heightVector.z(), offsetX, offsetY));
         return new Ray(origin, dir);
+    }
+
+    /** {@link #generateRay(float, float, int, int)}'s numbers, written without making a ray. */
+    @Override
+    public void putRay(float x, float y, int w, int h, float[] into, int at) {
+        float offsetX = x - (w / 2);
+        float offsetY = y - (h / 2);
+        into[at] = originAlong(pos.x(), widthVector.x(), heightVector.x(), offsetX, offsetY);
+        into[at + 1] = originAlong(pos.y(), widthVector.y(), heightVector.y(), offsetX, offsetY);
+        into[at + 2] = originAlong(pos.z(), widthVector.z(), heightVector.z(), offsetX, offsetY);
+        into[at + 3] = dir.x();
+        into[at + 4] = dir.y();
+        into[at + 5] = dir.z();
+    }
+
+    /**
+     * Listing 4.1 for one coordinate of the origin: {@code pos + (u · offsetX / zoom + v · offsetY / zoom)},
+     * in the paper's order of operations, so each coordinate rounds as the paper's vector arithmetic does.
+     */
+    private float originAlong(float position, float u, float v, float offsetX, float offsetY) {
+        return position + (u * offsetX / zoom + v * offsetY / zoom);
     }
 
     @Override

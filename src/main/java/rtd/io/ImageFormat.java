@@ -1,9 +1,12 @@
 package rtd.io;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBuffer;
 import java.awt.image.DataBufferInt;
 import java.awt.image.DirectColorModel;
 import java.awt.image.Raster;
+import java.awt.image.SampleModel;
+import java.awt.image.SinglePixelPackedSampleModel;
 import java.awt.image.WritableRaster;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -124,12 +127,12 @@ public record ImageFormat(String extension) {
         out.flush();
     }
 
-    /** The picture as an RGB image that shares its array, one int {@code 0xRRGGBB} a pixel. */
+    /** The picture as an RGB image that shares its array, laid out so that the writer reads it fast. */
     static BufferedImage asImage(Picture picture) {
         DirectColorModel rgb = new DirectColorModel(24, RGB_MASKS[0], RGB_MASKS[1], RGB_MASKS[2]);
         DataBufferInt data = new DataBufferInt(picture.rgb(), picture.rgb().length);
-        WritableRaster raster = Raster.createPackedRaster(data, picture.width(), picture.height(), picture.width(),
-                RGB_MASKS, null);
+        WritableRaster raster = Raster.createWritableRaster(new PackedRgbSamples(picture.width(), picture.height()),
+                data, null);
         return new BufferedImage(rgb, raster, false, null);
     }
 
@@ -163,6 +166,46 @@ public record ImageFormat(String extension) {
 
         @Override
         public void writeAborted(ImageWriter source) {
+        }
+    }
+
+    /**
+     * A {@link Picture}'s layout, one int {@code 0xRRGGBB} a pixel, whose {@link #getPixels} reads the array
+     * directly: the JDK's goes through the data buffer's methods, slow before the JIT compiles them.
+     */
+    static final class PackedRgbSamples extends SinglePixelPackedSampleModel {
+
+        PackedRgbSamples(int width, int height) {
+            super(DataBuffer.TYPE_INT, width, height, RGB_MASKS);
+        }
+
+        /** The same layout at another size: the PNG writer copies each row into a raster of its own first. */
+        @Override
+        public SampleModel createCompatibleSampleModel(int width, int height) {
+            return new PackedRgbSamples(width, height);
+        }
+
+        @Override
+        public int[] getPixels(int x, int y, int w, int h, int[] samples, DataBuffer data) {
+            if (!(data instanceof DataBufferInt ints) || ints.getNumBanks() != 1 || x < 0 || y < 0 || w < 0 || h < 0
+                    || x + w > getWidth() || y + h > getHeight()) {
+                return super.getPixels(x, y, w, h, samples, data); // as the JDK does it, with its checks
+            }
+            int[] into = samples != null ? samples : new int[3 * w * h];
+            int[] rgb = ints.getData();
+            int width = getScanlineStride();
+            int k = 0;
+            for (int row = y; row < y + h; row++) {
+                int from = ints.getOffset() + row * width + x;
+                for (int i = from; i < from + w; i++) {
+                    int pixel = rgb[i];
+                    into[k] = pixel >>> 16 & 0xFF;
+                    into[k + 1] = pixel >>> 8 & 0xFF;
+                    into[k + 2] = pixel & 0xFF;
+                    k += 3;
+                }
+            }
+            return into;
         }
     }
 }
