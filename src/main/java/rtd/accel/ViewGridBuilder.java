@@ -7,13 +7,12 @@ import rtd.camera.ICamera;
 import rtd.geometry.IGeometry;
 
 /**
- * Builds a {@link ViewGrid}, in passes over arrays, each on all threads where it can be: every
- * object's footprint on the image and nearest distance ({@link ImageFootprint}); a place for it in
- * the leaf, by the square of the image it lies in, so that neighbours on the image lie side by
- * side in memory; its numbers packed at that place ({@link LeafObjects}); the cells' lists, with
- * cells of the side {@link CellSide} chooses; and each list sorted nearest first, so that a ray
- * can stop at the first object beyond its hit ({@link NearestHit#testPlacesNearestFirst}). The
- * grid is the same for any number of threads.
+ * Builds a {@link ViewGrid}, in passes over arrays, each on all threads where it can be: every object's footprint on
+ * the image and nearest distance ({@link ImageFootprint}); a place for it in the leaf, by the square of the image it
+ * lies in, so that neighbours on the image lie side by side in memory; its numbers packed at that place
+ * ({@link LeafObjects}); the cells' lists, with cells of the side {@link CellSide} chooses; and each list sorted
+ * nearest first, so that a ray can stop at the first object beyond its hit ({@link NearestHit#testPlacesNearestFirst}).
+ * The grid is the same for any number of threads.
  */
 final class ViewGridBuilder {
 
@@ -55,20 +54,18 @@ final class ViewGridBuilder {
     }
 
     /**
-     * The grid of the objects' {@code footprint}s on a {@code width × height} image, for about
-     * {@code samples²} rays a pixel; {@code camera} and {@code latestOffset} are what its rays
-     * are (a light's grid has no camera).
+     * The grid of the objects' {@code footprint}s on a {@code width × height} image, for about {@code samples²} rays a
+     * pixel; {@code camera} and {@code latestOffset} are what its rays are (a light's grid has no camera).
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
         return build(footprint, camera, latestOffset, CellSide.choose(objects, footprint, width, height, samples), true);
     }
 
     /**
-     * As above, with cells of side {@code 1 << side} (or larger, if they would hold too many entries), each cell's
+     * As above, with cells of side {@code 1 << shift} (or larger, if they would hold too many entries), each cell's
      * objects nearest first if {@code sorted}, else in file order: a {@link HitImage}'s tiles, which test them all.
      */
-    ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int side, boolean sorted) {
-        int shift = side;
+    ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int shift, boolean sorted) {
         Parts parts = new Parts(objects.size(), pool);
         int[][] perPart = new int[parts.parts][cellCount(shift)];
         measure(footprint, parts, shift, perPart);
@@ -105,9 +102,8 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Each object's box, footprint and nearest distance, and whether a ray can see it; and, part by part
-     * of {@code parts}, how many objects each cell of side {@code 1 << shift} gets, into
-     * {@code perPart}.
+     * Each object's box, footprint and nearest distance, and whether a ray can see it; and, part by part of
+     * {@code parts}, how many objects each cell of side {@code 1 << shift} gets, into {@code perPart}.
      */
     private void measure(ImageFootprint footprint, Parts parts, int shift, int[][] perPart) {
         int columns = ViewGrid.cellsAlong(width, shift);
@@ -160,9 +156,9 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Gives each object with a box its place in the leaf, {@link #leafOf}: the objects seen by
-     * the square of 8 × 8 pixels their footprint's middle lies in, square after square, row by
-     * row; then those no ray sees. Answers the places' objects ({@code fileOrder}).
+     * Gives each object with a box its place in the leaf, {@link #leafOf}: the objects seen by the square of 8 × 8
+     * pixels their footprint's middle lies in, square after square, row by row; then those no ray sees. Answers the
+     * places' objects ({@code fileOrder}).
      */
     private int[] leafOrder() {
         int across = ViewGrid.cellsAlong(width, TILE_SHIFT);
@@ -216,12 +212,12 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Writes each seen object's leaf place into the cells its footprint overlaps, part by part of
-     * the objects in parallel, from each part's counts per cell ({@link #measure}, in
-     * {@code perPart}, which become each part's next place per cell): a cell's objects take places in the order of the parts, each part's from
-     * where the earlier parts' end, and {@code cellStart} becomes the running sum; then each
-     * part writes its objects' places into theirs, and their nearest distance by place into
-     * {@code nearestByPlace}. So a cell's objects come in file order, however many parts there are.
+     * Writes each seen object's leaf place into the cells its footprint overlaps, part by part of the objects in
+     * parallel, from each part's counts per cell ({@link #measure}, in {@code perPart}, which become each part's next
+     * place per cell): a cell's objects take places in the order of the parts, each part's from where the earlier
+     * parts' end, and {@code cellStart} becomes the running sum; then each part writes its objects' places into theirs,
+     * and their nearest distance by place into {@code nearestByPlace}. So a cell's objects come in file order, however
+     * many parts there are.
      */
     private int[] fill(Parts parts, int[][] perPart, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
         int[] places = new int[Parts.runningSums(perPart, cellStart)];
@@ -244,13 +240,12 @@ final class ViewGridBuilder {
     }
 
     /**
-     * Sorts each cell's objects by their nearest distance, in parallel by cells: by insertion, as
-     * a cell holds a dozen or so, and a crowded cell (objects that cover the whole image, say) by
-     * their distances and places. A list that runs from far to near is turned round first: a
-     * file that lists a mesh from the back to the front fills every cell that way, the worst
-     * order for an insertion sort. Objects at the same distance may end in any order (file order,
-     * its reverse, or by place): a ray's depth test breaks such ties by file order itself
-     * ({@link NearestHit}), so the pictures do not depend on it.
+     * Sorts each cell's objects by their nearest distance, in parallel by cells: by insertion, as a cell holds a dozen
+     * or so, and a crowded cell (objects that cover the whole image, say) by their distances and places. A list that
+     * runs from far to near is turned round first: a file that lists a mesh from the back to the front fills every cell
+     * that way, the worst order for an insertion sort. Objects at the same distance may end in any order (file order,
+     * its reverse, or by place): a ray's depth test breaks such ties by file order itself ({@link NearestHit}), so the
+     * pictures do not depend on it.
      */
     private static void sortNearestFirst(int[] cellStart, int[] places, float[] nearestByPlace, ForkJoinPool pool) {
         new Parts(cellStart.length - 1, pool).run((first, end, part) -> {
