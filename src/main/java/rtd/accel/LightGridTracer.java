@@ -1,34 +1,21 @@
 package rtd.accel;
 
 import java.util.List;
-import java.util.Map;
-import rtd.geometry.Hit;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
-import rtd.render.HitBuffer;
-import rtd.render.RayBundle;
 import rtd.render.Tracer;
-import rtd.render.WorkCount;
 
 /**
  * Answers the shadow rays that {@link LightGrids} serve, the same as the paper's loop; every other
  * ray goes to the tracer for the others. Not thread-safe: one per thread.
  */
-final class LightGridTracer implements Tracer {
+final class LightGridTracer extends PointGridTracer {
 
     private final LightGrids.Grid[] grids;
-    /** Per grid, the tests on its objects. */
-    private final NearestHit[] hits;
-    private final Tracer others;
-    private long rays;
 
     LightGridTracer(List<LightGrids.Grid> grids, Tracer others) {
+        super(grids.stream().map(LightGrids.Grid::cells).toList(), others, "light grids");
         this.grids = grids.toArray(LightGrids.Grid[]::new);
-        this.hits = new NearestHit[this.grids.length];
-        for (int g = 0; g < hits.length; g++) {
-            hits[g] = new NearestHit(this.grids[g].cells().objects);
-        }
-        this.others = others;
     }
 
     @Override
@@ -50,39 +37,5 @@ final class LightGridTracer implements Tracer {
             }
         }
         return others.blocked(ray, distance);
-    }
-
-    @Override
-    public Hit nearestHit(Ray ray) {
-        return others.nearestHit(ray);
-    }
-
-    @Override
-    public void traceAll(RayBundle rays, HitBuffer hits) {
-        others.traceAll(rays, hits);
-    }
-
-    @Override
-    public boolean traceAtOnce(RayBundle rays, HitBuffer hits) {
-        return others.traceAtOnce(rays, hits);
-    }
-
-    @Override
-    public long testsRun() {
-        long tests = others.testsRun();
-        for (NearestHit hit : hits) {
-            tests += hit.testsRun();
-        }
-        return tests;
-    }
-
-    @Override
-    public WorkCount work() {
-        WorkCount work = others.work().plus(new WorkCount(rays, Map.of(), 0).answeredBy("light grids"));
-        for (int g = 0; g < grids.length; g++) {
-            NearestHit hit = hits[g];
-            work = work.plus(new WorkCount(0, hit.testsByKind(), 0));
-        }
-        return work;
     }
 }

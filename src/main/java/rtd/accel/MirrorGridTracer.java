@@ -1,14 +1,10 @@
 package rtd.accel;
 
 import java.util.List;
-import java.util.Map;
 import rtd.geometry.Hit;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
-import rtd.render.HitBuffer;
-import rtd.render.RayBundle;
 import rtd.render.Tracer;
-import rtd.render.WorkCount;
 
 /**
  * Answers the rays that flat mirrors reflect from the camera's eye through {@link MirrorGrids}: such
@@ -20,21 +16,13 @@ import rtd.render.WorkCount;
  * same way, whatever made it; every other ray, and every shadow ray, goes to the tracer for the
  * others. Not thread-safe: one per thread.
  */
-final class MirrorGridTracer implements Tracer {
+final class MirrorGridTracer extends PointGridTracer {
 
     private final MirrorGrids.Grid[] grids;
-    /** Per grid, the tests on its objects. */
-    private final NearestHit[] hits;
-    private final Tracer others;
-    private long rays;
 
     MirrorGridTracer(List<MirrorGrids.Grid> grids, Tracer others) {
+        super(grids.stream().map(MirrorGrids.Grid::cells).toList(), others, "mirror grids");
         this.grids = grids.toArray(MirrorGrids.Grid[]::new);
-        this.hits = new NearestHit[this.grids.length];
-        for (int g = 0; g < hits.length; g++) {
-            hits[g] = new NearestHit(this.grids[g].cells().objects);
-        }
-        this.others = others;
     }
 
     @Override
@@ -55,38 +43,5 @@ final class MirrorGridTracer implements Tracer {
             }
         }
         return others.nearestHit(ray);
-    }
-
-    @Override
-    public boolean blocked(Ray ray, float distance) {
-        return others.blocked(ray, distance);
-    }
-
-    @Override
-    public void traceAll(RayBundle bundle, HitBuffer hits) {
-        others.traceAll(bundle, hits);
-    }
-
-    @Override
-    public boolean traceAtOnce(RayBundle bundle, HitBuffer hits) {
-        return others.traceAtOnce(bundle, hits);
-    }
-
-    @Override
-    public long testsRun() {
-        long tests = others.testsRun();
-        for (NearestHit hit : hits) {
-            tests += hit.testsRun();
-        }
-        return tests;
-    }
-
-    @Override
-    public WorkCount work() {
-        WorkCount work = others.work().plus(new WorkCount(rays, Map.of(), 0).answeredBy("mirror grids"));
-        for (NearestHit hit : hits) {
-            work = work.plus(new WorkCount(0, hit.testsByKind(), 0));
-        }
-        return work;
     }
 }
