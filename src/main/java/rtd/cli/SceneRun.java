@@ -119,7 +119,7 @@ final class SceneRun {
             ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
         display.show(ProgressDisplay.Phase.of("reading " + source.name()));
         List<SceneError> warnings = new ArrayList<>();
-        Scene scene = options.scale().of(source.read(streams, options.clock(), warnings));
+        Scene scene = options.scale().of(source.read(streams, options.clock(), options.threads(), warnings));
         warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
         stats.endPhase("parse");
         if (export != null) {
@@ -180,7 +180,7 @@ final class SceneRun {
         }
         List<OutputTarget> targets = isGif ? List.of(job.target()) : plan.targets(job.target(), job.source().stdin()
                 ? streams.inPath().orElse(job.source().path()) : job.source().path());
-        SceneFile file = job.source().readFile(streams);
+        SceneFile file = job.source().readFile(streams, options.threads());
         ExecutorService writers = Executors.newFixedThreadPool(isGif ? 1 : 2, runnable -> {
             Thread thread = new Thread(runnable, "rtd-frame-writer");
             thread.setDaemon(true);

@@ -21,18 +21,23 @@ record SceneSource(Path path, boolean stdin) {
         return stdin ? SceneIO.STDIN_NAME : path.toString();
     }
 
-    /** Reads the scene at {@code clock}; its warnings (slips that are no mistakes) go to {@code warnings}. */
-    Scene read(StandardStreams streams, double clock, List<SceneError> warnings) throws SceneException, FileError {
-        SceneFile file = readFile(streams); // at clock 0, parsed once: its bytes let go as the parse goes on
+    /**
+     * Reads the scene at {@code clock} with at most {@code threads} threads; its warnings (slips that are no mistakes)
+     * go to {@code warnings}.
+     */
+    Scene read(StandardStreams streams, double clock, int threads, List<SceneError> warnings)
+            throws SceneException, FileError {
+        SceneFile file = readFile(streams, threads); // at clock 0, parsed once: its bytes let go as the parse goes on
         return clock != 0 ? file.at(clock, warnings) : file.once(warnings);
     }
 
-    /** Reads the scene file once, to be parsed at each clock of an animation. */
-    SceneFile readFile(StandardStreams streams) throws FileError {
+    /** Reads the scene file once, to be parsed at each clock of an animation with at most {@code threads} threads. */
+    SceneFile readFile(StandardStreams streams, int threads) throws FileError {
         try {
-            return !stdin ? SceneFile.read(path) : streams.inPath().isPresent()
+            SceneFile file = !stdin ? SceneFile.read(path) : streams.inPath().isPresent()
                     ? SceneFile.read(streams.inPath().get(), SceneIO.STDIN_NAME, Path.of(""))
                     : SceneFile.read(streams.in(), SceneIO.STDIN_NAME);
+            return file.onThreads(threads);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);
         }

@@ -78,7 +78,7 @@ public final class WindowRun {
     /** The scene file, read once, each scene parsed from it at {@code --scale} (its warnings not shown). */
     private static ClockedScene read(RenderOptions options) throws IOException {
         try {
-            return new ClockedScene(SceneSource.of(options.scene()).readFile(null), options.scale()::of);
+            return new ClockedScene(SceneSource.of(options.scene()).readFile(null, options.threads()), options.scale()::of);
         } catch (FileError e) {
             throw new IOException(e.getMessage(), e);
         }
