@@ -119,7 +119,9 @@ final class SceneRun {
             ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
         display.show(ProgressDisplay.Phase.of("reading " + source.name()));
         List<SceneError> warnings = new ArrayList<>();
-        Scene scene = options.scale().of(source.read(streams, options.clock(), options.threads(), warnings));
+        SceneFile file = source.readFile(streams, options.threads()); // at clock 0 parsed once: its bytes let go
+        Scene scene = options.scale().of(options.clock() != 0 ? file.at(options.clock(), warnings)
+                : file.once(warnings));
         warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
         stats.endPhase("parse");
         if (export != null) {

@@ -2,12 +2,8 @@ package rtd.cli;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.List;
-import rtd.io.SceneError;
-import rtd.io.SceneException;
 import rtd.io.SceneFile;
 import rtd.io.SceneIO;
-import rtd.scene.Scene;
 
 /** Where a scene comes from: a file as the user spelt it, or standard input for {@code -}. */
 record SceneSource(Path path, boolean stdin) {
@@ -19,16 +15,6 @@ record SceneSource(Path path, boolean stdin) {
     /** The name for messages: the path as spelt, or {@code <stdin>}. */
     String name() {
         return stdin ? SceneIO.STDIN_NAME : path.toString();
-    }
-
-    /**
-     * Reads the scene at {@code clock} with at most {@code threads} threads; its warnings (slips that are no mistakes)
-     * go to {@code warnings}.
-     */
-    Scene read(StandardStreams streams, double clock, int threads, List<SceneError> warnings)
-            throws SceneException, FileError {
-        SceneFile file = readFile(streams, threads); // at clock 0, parsed once: its bytes let go as the parse goes on
-        return clock != 0 ? file.at(clock, warnings) : file.once(warnings);
     }
 
     /** Reads the scene file once, to be parsed at each clock of an animation with at most {@code threads} threads. */
