@@ -119,7 +119,9 @@ final class SceneRun {
             ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
         display.show(ProgressDisplay.Phase.of("reading " + source.name()));
         List<SceneError> warnings = new ArrayList<>();
-        Scene scene = options.scale().of(source.read(streams, options.clock(), warnings));
+        SceneFile file = source.readFile(streams, options.threads()); // at clock 0 parsed once: its bytes let go
+        Scene scene = options.scale().of(options.clock() != 0 ? file.at(options.clock(), warnings)
+                : file.once(warnings));
         warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
         stats.endPhase("parse");
         if (export != null) {
@@ -180,7 +182,7 @@ final class SceneRun {
         }
         List<OutputTarget> targets = isGif ? List.of(job.target()) : plan.targets(job.target(), job.source().stdin()
                 ? streams.inPath().orElse(job.source().path()) : job.source().path());
-        SceneFile file = job.source().readFile(streams);
+        SceneFile file = job.source().readFile(streams, options.threads());
         ExecutorService writers = Executors.newFixedThreadPool(isGif ? 1 : 2, runnable -> {
             Thread thread = new Thread(runnable, "rtd-frame-writer");
             thread.setDaemon(true);

@@ -2,12 +2,8 @@ package rtd.cli;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.List;
-import rtd.io.SceneError;
-import rtd.io.SceneException;
 import rtd.io.SceneFile;
 import rtd.io.SceneIO;
-import rtd.scene.Scene;
 
 /** Where a scene comes from: a file as the user spelt it, or standard input for {@code -}. */
 record SceneSource(Path path, boolean stdin) {
@@ -21,18 +17,13 @@ record SceneSource(Path path, boolean stdin) {
         return stdin ? SceneIO.STDIN_NAME : path.toString();
     }
 
-    /** Reads the scene at {@code clock}; its warnings (slips that are no mistakes) go to {@code warnings}. */
-    Scene read(StandardStreams streams, double clock, List<SceneError> warnings) throws SceneException, FileError {
-        SceneFile file = readFile(streams); // at clock 0, parsed once: its bytes let go as the parse goes on
-        return clock != 0 ? file.at(clock, warnings) : file.once(warnings);
-    }
-
-    /** Reads the scene file once, to be parsed at each clock of an animation. */
-    SceneFile readFile(StandardStreams streams) throws FileError {
+    /** Reads the scene file once, to be parsed at each clock of an animation with at most {@code threads} threads. */
+    SceneFile readFile(StandardStreams streams, int threads) throws FileError {
         try {
-            return !stdin ? SceneFile.read(path) : streams.inPath().isPresent()
+            SceneFile file = !stdin ? SceneFile.read(path) : streams.inPath().isPresent()
                     ? SceneFile.read(streams.inPath().get(), SceneIO.STDIN_NAME, Path.of(""))
                     : SceneFile.read(streams.in(), SceneIO.STDIN_NAME);
+            return file.onThreads(threads);
         } catch (IOException e) {
             throw new FileError("cannot read the scene file '" + name() + "'", e);
         }

@@ -10,6 +10,7 @@ import rtd.accel.LightGrids;
 import rtd.accel.ViewGrid;
 import rtd.cli.Accelerator.StructureCache;
 import rtd.io.SceneException;
+import rtd.io.SceneFile;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 import rtd.window.Window;
@@ -78,7 +79,8 @@ public final class WindowRun {
     /** The scene file, read once, each scene parsed from it at {@code --scale} (its warnings not shown). */
     private static ClockedScene read(RenderOptions options) throws IOException {
         try {
-            return new ClockedScene(SceneSource.of(options.scene()).readFile(null), options.scale()::of);
+            SceneFile file = SceneSource.of(options.scene()).readFile(null, options.threads());
+            return new ClockedScene(file, options.scale()::of);
         } catch (FileError e) {
             throw new IOException(e.getMessage(), e);
         }

@@ -2,6 +2,8 @@ package rtd.io;
 
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.ForkJoinPool;
+import java.util.function.IntFunction;
 import java.util.stream.IntStream;
 
 /**
@@ -10,7 +12,8 @@ import java.util.stream.IntStream;
  * read first, on the calling thread; then each other part is joined in file order if it stands alone: no mistake,
  * no line number, no definition, no {@code let} and no clock in it. Read from the first part that does not, the
  * rest is read again in order by the first part's reader, so the scene, its mistakes and its warnings are those of
- * reading the whole file in order, whatever the number of threads.
+ * reading the whole file in order, whatever the number of threads. The parallel work runs on a pool of its own, of
+ * at most the threads asked; with one thread the file is one part, read in order on the calling thread.
  */
 final class FileParts {
 
@@ -20,6 +23,7 @@ final class FileParts {
     private static final int SHORTEST_OBJECT = 24;
 
     private final SourceText source;
+    private final int threads;
     /** Each part's first byte, and the end of the file last. */
     private final int[] cuts;
     /** Each part's first line, and last the number a line after the file would have. */
@@ -29,16 +33,20 @@ final class FileParts {
     private record Part(SceneContents contents, boolean standsAlone) {
     }
 
-    private FileParts(SourceText source, int[] cuts, int[] lines) {
+    private FileParts(SourceText source, int threads, int[] cuts, int[] lines) {
         this.source = source;
+        this.threads = threads;
         this.cuts = cuts;
         this.lines = lines;
     }
 
-    /** The text of {@code source} from {@code start} in parts of about {@code partSize} bytes; it must be UTF-8. */
-    static FileParts of(SourceText source, int start, int partSize) throws SceneException {
+    /**
+     * The text of {@code source} from {@code start} in parts of about {@code partSize} bytes, to be read with at most
+     * {@code threads} threads; it must be UTF-8.
+     */
+    static FileParts of(SourceText source, int start, int partSize, int threads) throws SceneException {
         byte[] bytes = source.bytes();
-        int count = Math.max(1, (bytes.length - start) / partSize);
+        int count = threads == 1 ? 1 : Math.max(1, (bytes.length - start) / partSize);
         int[] cuts = new int[count + 1];
         int parts = 0;
         cuts[0] = start;
@@ -53,18 +61,17 @@ final class FileParts {
         }
         cuts[++parts] = bytes.length;
         cuts = Arrays.copyOf(cuts, parts + 1);
-        return new FileParts(source, cuts, linesAtCuts(source, cuts));
+        return new FileParts(source, threads, cuts, linesAtCuts(source, cuts, threads));
     }
 
     /**
      * The number of the line at each cut, from one pass over each part's bytes (the parts in parallel) that also
      * refuses text that is not UTF-8.
      */
-    private static int[] linesAtCuts(SourceText source, int[] cuts) throws SceneException {
+    private static int[] linesAtCuts(SourceText source, int[] cuts, int threads) throws SceneException {
         byte[] bytes = source.bytes();
-        IntStream parts = IntStream.range(0, cuts.length - 1);
-        int[] breaks = (cuts.length > 2 ? parts.parallel() : parts).map(k -> lineBreaks(bytes, cuts[k], cuts[k + 1]))
-                .toArray();
+        int[] breaks = inParallel(cuts.length - 1, threads, k -> lineBreaks(bytes, cuts[k], cuts[k + 1])).stream()
+                .mapToInt(Integer::intValue).toArray();
         int[] lines = new int[cuts.length];
         lines[0] = 1;
         boolean plain = true;
@@ -113,8 +120,7 @@ final class FileParts {
             reader.readUntil(cuts[1]);
             int next = 1;
             if (count() > 1 && contents.errors.isEmpty()) {
-                List<Part> parts = IntStream.range(1, count()).parallel().mapToObj(k -> readAlone(k, contents, names))
-                        .toList();
+                List<Part> parts = inParallel(count() - 1, threads, k -> readAlone(k + 1, contents, names));
                 while (next < count() && parts.get(next - 1).standsAlone()) {
                     contents.append(parts.get(next++ - 1).contents());
                 }
@@ -126,6 +132,22 @@ final class FileParts {
             return next - 1;
         } finally {
             reader.release();
+        }
+    }
+
+    /**
+     * What {@code task} gives for each of {@code 0} to {@code count - 1}, in that order, worked out on a pool of at
+     * most {@code threads} threads (a parallel stream runs on the pool its caller runs on); one task: on this thread.
+     */
+    private static <T> List<T> inParallel(int count, int threads, IntFunction<T> task) {
+        if (count == 1) {
+            return List.of(task.apply(0));
+        }
+        ForkJoinPool pool = new ForkJoinPool(Math.min(count, threads));
+        try {
+            return pool.submit(() -> IntStream.range(0, count).parallel().mapToObj(task).toList()).join();
+        } finally {
+            pool.shutdown();
         }
     }
 

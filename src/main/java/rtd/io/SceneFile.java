@@ -34,6 +34,8 @@ public final class SceneFile {
     private volatile boolean usesClock;
     /** The size of the parts a large file is read in, in parallel ({@link FileParts}). */
     private int partSize = FileParts.PART_SIZE;
+    /** How many threads a parse may use; with one, the file is read in order on the calling thread. */
+    private int threads = Runtime.getRuntime().availableProcessors();
     /** How many parts of the last parse were read in parallel and joined as they were. */
     int partsJoined;
 
@@ -71,6 +73,12 @@ public final class SceneFile {
         return this;
     }
 
+    /** This file, parsed with at most {@code threads} threads; with one, in order on the thread that asks. */
+    public SceneFile onThreads(int threads) {
+        this.threads = threads;
+        return this;
+    }
+
     public int size() {
         return bytes.length;
     }
@@ -100,7 +108,7 @@ public final class SceneFile {
         // Taken from the field, not kept in a local variable, which would hold them to the end of the parse.
         try (SourceText source = new SourceText(name, once ? takeBytes() : bytes, folder, meshes)) {
             int start = TextBytes.startsWithByteOrderMark(source.bytes()) ? 3 : 0;
-            FileParts parts = FileParts.of(source, start, partSize);
+            FileParts parts = FileParts.of(source, start, partSize, threads);
             SceneContents contents = new SceneContents(parts.objectsAtMost(0, parts.count()));
             partsJoined = parts.read(new StatementReader(source, start, 1, contents, names), contents, names);
             return join(source, start, contents, warnings);

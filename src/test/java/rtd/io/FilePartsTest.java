@@ -7,7 +7,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
-import java.util.concurrent.ForkJoinPool;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
@@ -182,16 +181,22 @@ class FilePartsTest {
     }
 
     @Test
-    void theNumberOfThreadsChangesNothing() throws Exception {
-        String text = randomFile(7, 2000, false);
-        String whole = outcome(text, Integer.MAX_VALUE);
-        for (int threads : new int[] {1, 3}) {
-            ForkJoinPool pool = new ForkJoinPool(threads);
-            try {
-                assertThat(pool.submit(() -> outcome(text, 999)).get()).isEqualTo(whole);
-            } finally {
-                pool.shutdown();
-            }
-        }
+    void partsReadByThreeThreadsGiveTheSameSceneAsOneThread() {
+        String text = TOP + "sphere:(0|0|0):(1):(1|2|3):(shiny)\n".repeat(2000)
+                + randomFile(4, 2000, false).substring(TOP.length());
+        SceneFile three = file(text, 999).onThreads(3);
+        String parallel = outcome(three);
+        assertThat(three.partsJoined).isGreaterThan(10);
+        assertThat(parallel).startsWith("ambient").isEqualTo(outcome(file(text, 999).onThreads(1)));
+        assertThat(parallel).isEqualTo(outcome(text, Integer.MAX_VALUE));
+    }
+
+    /** With one thread no part is read apart: the whole file is read in order by the thread that asks. */
+    @Test
+    void aParseOnOneThreadReadsTheFileInOrderOnTheCallingThread() throws SceneException {
+        String text = TOP + "sphere:(0|0|0):(1):(1|2|3):(shiny)\n".repeat(2000);
+        SceneFile file = file(text, 4096).onThreads(1);
+        assertThat(file.once(null).objects()).hasSize(2000);
+        assertThat(file.partsJoined).isZero();
     }
 }
