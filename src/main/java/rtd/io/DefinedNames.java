@@ -136,8 +136,8 @@ final class DefinedNames {
 
     /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */
     private static SceneError atTheIor(SceneError name) {
-        Matcher key = IOR_KEY.matcher(name.sourceLine() == null ? "" : name.sourceLine());
-        return key.find(Math.max(0, name.column() - 1)) ? new SceneError(name.file(), name.line(), key.start() + 1,
+        Matcher key = IOR_KEY.matcher(name.sourceLine());
+        return key.find(name.column() - 1) ? new SceneError(name.file(), name.line(), key.start() + 1,
                 name.message(), name.sourceLine(), name.help()) : name;
     }
 

@@ -168,9 +168,8 @@ final class GroupReader {
         String word = cursor.source.text(start, cursor.pos);
         int key = Group.KEYS.indexOf(word);
         if (key < 0) {
-            String nearest = Hints.nearest(word, Group.KEYS);
-            throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
-                    ? "did you mean '" + nearest + "'?" : "the keys are " + Hints.quoted(Group.KEYS, "and"));
+            throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement),
+                    Hints.nearestOrList(word, Group.KEYS, "keys"));
         }
         if (values.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");

@@ -6,7 +6,6 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.function.Function;
 import java.util.function.ToIntFunction;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
@@ -152,9 +151,14 @@ final class Hints {
 
     /** The words a message lists, quoted: "'a', 'b' and 'c'" for {@code last} = "and". */
     static String quoted(List<String> words, String last) {
-        Function<String, String> quote = word -> "'" + word + "'";
-        return words.subList(0, words.size() - 1).stream().map(quote).collect(Collectors.joining(", ")) + " " + last
-                + " " + quote.apply(words.get(words.size() - 1));
+        List<String> each = words.stream().map(word -> "'" + word + "'").toList();
+        return String.join(", ", each.subList(0, each.size() - 1)) + " " + last + " " + each.get(each.size() - 1);
+    }
+
+    /** "did you mean …?" with the one of {@code words} nearest to {@code word}, else their list: "the keys are …". */
+    static String nearestOrList(String word, List<String> words, String plural) {
+        String nearest = nearest(word, words);
+        return nearest != null ? "did you mean '" + nearest + "'?" : "the " + plural + " are " + quoted(words, "and");
     }
 
     /**

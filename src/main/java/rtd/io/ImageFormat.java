@@ -102,8 +102,7 @@ public record ImageFormat(String extension) {
 
     /** Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction written. */
     public void write(Picture picture, OutputStream out, DoubleConsumer progress) throws IOException {
-        ImageWriter writer = writerFor(extension)
-                .orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
+        ImageWriter writer = writerFor(extension).orElseThrow(); // forOutput made this format only if one exists
         // In memory, not javax.imageio's default cache file in the system's temporary folder:
         // the writer seeks back only within the chunk it writes, which the cache keeps.
         try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {

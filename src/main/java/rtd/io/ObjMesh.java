@@ -83,13 +83,13 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         String shown;
         try {
             Path path = Path.of(written);
-            file = scene.folder().resolve(path);
-            shown = path.isAbsolute() ? written : shownName(scene.name(), path);
+            file = scene.folder.resolve(path);
+            shown = path.isAbsolute() ? written : shownName(scene.name, path);
         } catch (InvalidPathException e) {
             throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
         }
         Path key = file.toAbsolutePath().normalize();
-        ObjMesh mesh = scene.meshes().get(key); // a scene's text always has its table of meshes; an OBJ file's has none
+        ObjMesh mesh = scene.meshes.get(key); // a scene's text always has its table of meshes; an OBJ file's has none
         if (mesh != null) {
             return mesh;
         }
@@ -99,7 +99,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (IOException e) {
             throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
                     e instanceof NoSuchFileException && written.indexOf('\\') >= 0 ? Hints.forWindowsPath(written)
-                            : scene.name().equals(SceneIO.STDIN_NAME)
+                            : scene.name.equals(SceneIO.STDIN_NAME)
                                     ? "the scene comes from standard input, so a mesh's path is relative to the "
                                             + "folder rtd runs in; or give the full path"
                                     : "a mesh's path is relative to the folder of the scene file");
@@ -107,7 +107,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         try (SourceText obj = new SourceText(shown, bytes)) {
             mesh = ObjReader.read(obj);
         } catch (SceneException e) {
-            String usedBy = "this file is used by " + scene.name() + ":" + values.line();
+            String usedBy = "this file is used by " + scene.name + ":" + values.line();
             List<SceneError> errors = e.errors().stream().map(error -> error.saying(error.message(),
                     error.help() == null ? usedBy : error.help() + "; " + usedBy)).toList();
             throw new SceneException(values.placeOfValue(g, 0), errors);
@@ -118,7 +118,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
                     "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
                             + "skipped too; a mesh needs at least one face");
         }
-        scene.meshes().put(key, mesh);
+        scene.meshes.put(key, mesh);
         return mesh;
     }
 

@@ -149,14 +149,6 @@ final class SceneContents {
         recorder().unwritten(values);
     }
 
-    void pattern(String name, Pattern pattern, String transform) {
-        define(name, "pattern", pattern, transform);
-    }
-
-    void transform(String name, Matrix4 transform) {
-        define(name, "transform", transform, null);
-    }
-
     /** A material, pattern or transform, as {@code kind} says; a pattern may name a transform (else null). */
     void define(String name, String kind, Object value, String transform) {
         SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
