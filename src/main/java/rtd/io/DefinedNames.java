@@ -98,7 +98,8 @@ final class DefinedNames {
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !materials.isEmpty()) {
             warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so "
-                    + "it is drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
+                    + "it is drawn in flat colours, as in the paper",
+                    "add a light, such as light:(0|10|10):(255|255|255)"));
         }
         for (Definition definition : materials) {
             String name = definition.name();

@@ -89,7 +89,8 @@ final class Hints {
 
     /** Whether a character shows as a blank or not at all, but is no space or tab: U+00A0, U+200B, U+FEFF… */
     static boolean isInvisible(int codePoint) {
-        return codePoint > 0x7F && (Character.isSpaceChar(codePoint) || Character.getType(codePoint) == Character.FORMAT);
+        return codePoint > 0x7F
+                && (Character.isSpaceChar(codePoint) || Character.getType(codePoint) == Character.FORMAT);
     }
 
     /** "U+00A0 NO-BREAK SPACE": how a message names an invisible character. */
@@ -104,7 +105,8 @@ final class Hints {
             return "a byte-order mark may stand only at the very start of a file (one gets inside when files are "
                     + "joined): delete it";
         }
-        boolean looksLikeSpace = Character.isSpaceChar(codePoint) && !Character.getName(codePoint).contains("ZERO WIDTH");
+        boolean looksLikeSpace = Character.isSpaceChar(codePoint)
+                && !Character.getName(codePoint).contains("ZERO WIDTH");
         return String.format("U+%04X", codePoint) + (looksLikeSpace
                 ? " looks like a space but is not one: type a plain space instead"
                 : " cannot be seen but is there: delete it") + " (text copied from a PDF or a web page brings it)";

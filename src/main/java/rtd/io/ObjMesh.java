@@ -49,8 +49,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         return Arrays.asList(triangles);
     }
 
-    private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
-            Vector3f[] normalVectors) {
+    private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers,
+            int at, Vector3f[] normalVectors) {
         RayTriangle.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
                 corner(corners[3 * t + 2], shift, scale), numbers, at);
         if (cornerNormals == null || cornerNormals[3 * t] < 0) {
@@ -113,7 +113,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
             throw new SceneException(values.placeOfValue(g, 0), errors);
         }
         if (mesh.count() == 0) {
-            // else the scene would lose the mesh without a word, and the warning of an empty picture would blame the camera
+            // else the scene would lose the mesh silently, and the empty picture's warning would blame the camera
             throw values.errorAtValue(g, 0, "the mesh file '" + shown + "' has no faces: rtd found no 'f' line in it",
                     "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
                             + "skipped too; a mesh needs at least one face");
@@ -144,7 +144,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
 
     /** Why a file could not be read, in words for a person. */
     private static String reason(IOException e) {
-        return e instanceof NoSuchFileException ? "no such file" : e instanceof AccessDeniedException ? "permission denied"
+        return e instanceof NoSuchFileException ? "no such file"
+                : e instanceof AccessDeniedException ? "permission denied"
                 : e instanceof FileSystemException failure && failure.getReason() != null
                         ? failure.getReason().toLowerCase(Locale.ROOT)
                 : e.getMessage() != null ? e.getMessage() : "an input error";
