@@ -48,8 +48,7 @@ public record ImageFormat(String extension) {
         if (extension.isEmpty() || extension.get().equals(PNG.extension)) {
             return Optional.of(PNG);
         }
-        return writerFor(extension.get()).isPresent() ? Optional.of(new ImageFormat(extension.get()))
-                : Optional.empty();
+        return writerFor(extension.get()).map(writer -> new ImageFormat(extension.get()));
     }
 
     /** The extensions (lower case, sorted) whose format {@code javax.imageio} can write an RGB picture in. */
