@@ -59,7 +59,7 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
             for (int g = 0; g < v.groupCount(); g++) {
                 int size = v.size(g);
                 String key = v.meaning(g);
-                for (int n = 2; numbers.containsKey(key); n++) { // a meaning that repeats (a transform's steps), "step 2"
+                for (int n = 2; numbers.containsKey(key); n++) { // a repeated meaning (a transform's steps): "step 2"
                     key = v.meaning(g) + " " + n;
                 }
                 numbers.put(key, v.numbers(g));

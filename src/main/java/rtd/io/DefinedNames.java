@@ -98,7 +98,8 @@ final class DefinedNames {
         List<SceneError> warnings = new ArrayList<>();
         if (!lit && !materials.isEmpty()) {
             warnings.add(materials.get(0).place().saying("materials change nothing here: the scene has no light, so "
-                    + "it is drawn in flat colours, as in the paper", "add a light, such as light:(0|10|10):(255|255|255)"));
+                    + "it is drawn in flat colours, as in the paper",
+                    "add a light, such as light:(0|10|10):(255|255|255)"));
         }
         for (Definition definition : materials) {
             String name = definition.name();
@@ -136,8 +137,8 @@ final class DefinedNames {
 
     /** The place of the {@code ior} key on the material's line, after its name; the name's if it is not found. */
     private static SceneError atTheIor(SceneError name) {
-        Matcher key = IOR_KEY.matcher(name.sourceLine() == null ? "" : name.sourceLine());
-        return key.find(Math.max(0, name.column() - 1)) ? new SceneError(name.file(), name.line(), key.start() + 1,
+        Matcher key = IOR_KEY.matcher(name.sourceLine());
+        return key.find(name.column() - 1) ? new SceneError(name.file(), name.line(), key.start() + 1,
                 name.message(), name.sourceLine(), name.help()) : name;
     }
 

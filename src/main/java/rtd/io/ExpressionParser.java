@@ -208,9 +208,11 @@ final class ExpressionParser {
 
     private SceneException unknownFunction(String word, int start) {
         String nearest = near(word, Hints.nearest(word, Expression.Function.NAMES));
-        return cursor.error(start, "unknown function '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
-                : "the functions are " + String.join(", ", Expression.Function.NAMES)
-                        + (names.lookUp(word, start) != null ? "; a product is written with '*', such as " + word + "*(…)" : ""));
+        String product = names.lookUp(word, start) == null ? ""
+                : "; a product is written with '*', such as " + word + "*(…)";
+        String functions = "the functions are " + String.join(", ", Expression.Function.NAMES) + product;
+        return cursor.error(start, "unknown function '" + word + "'",
+                nearest != null ? "did you mean '" + nearest + "'?" : functions);
     }
 
     private SceneException unknownName(String word, int start) {

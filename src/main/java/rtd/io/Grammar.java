@@ -123,8 +123,8 @@ final class Grammar {
     private static Sphere sphere(StatementValues v, SceneContents out) {
         Sphere sphere = new Sphere(v.vector(0), v.number(1, 0), v.colour(2), v.material());
         if (sphere.radius() >= FLOOR_RADIUS) {
-            out.litWarnings.add(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0)
-                    + " may show shadow acne, dark speckles where it is lit: float is too coarse on a surface that large",
+            out.litWarnings.add(v.errorAtValue(1, 0, "a sphere of radius " + v.written(1, 0) + " may show shadow acne, "
+                    + "dark speckles where it is lit: float is too coarse on a surface that large",
                     "for a floor or a wall, use a plane: plane:(0|0|0):(0|1|0):(200|200|200) is a floor at "
                     + "y = 0").place);
         }
@@ -150,8 +150,8 @@ final class Grammar {
     private static Box box(StatementValues v) throws SceneException {
         for (int k = 0; k < 3; k++) {
             if (v.number(0, k) == v.number(1, k)) {
-                throw v.errorAtValue(1, k, "the box is flat: both corners have " + "xyz".charAt(k) + " = " + v.written(1, k),
-                        "a box takes two opposite corners, which differ in x, y and z");
+                throw v.errorAtValue(1, k, "the box is flat: both corners have " + "xyz".charAt(k) + " = "
+                        + v.written(1, k), "a box takes two opposite corners, which differ in x, y and z");
             }
         }
         return Box.between(v.vector(0), v.vector(1), v.colour(2), v.material());

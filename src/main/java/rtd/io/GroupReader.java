@@ -130,7 +130,7 @@ final class GroupReader {
         return p;
     }
 
-    /** A path: up to the group's ')' on this line, trimmed; or to a ':' and '(', the next group after a forgotten ')'. */
+    /** A path: up to the group's ')' on this line, trimmed; or up to the next group's ':(' after a forgotten ')'. */
     private void readPath() throws SceneException {
         int start = cursor.pos;
         byte[] bytes = cursor.bytes;
@@ -168,9 +168,8 @@ final class GroupReader {
         String word = cursor.source.text(start, cursor.pos);
         int key = Group.KEYS.indexOf(word);
         if (key < 0) {
-            String nearest = Hints.nearest(word, Group.KEYS);
-            throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement), nearest != null
-                    ? "did you mean '" + nearest + "'?" : "the keys are " + Hints.quoted(Group.KEYS, "and"));
+            throw cursor.error(start, "unknown key '" + word + "' in " + group.of(statement),
+                    Hints.nearestOrList(word, Group.KEYS, "keys"));
         }
         if (values.lastHasKey(key)) {
             throw cursor.error(start, "'" + word + "' is given twice in " + group.of(statement), "give each key once");
@@ -197,7 +196,8 @@ final class GroupReader {
             return groupError(numbers.tokenStart, message);
         }
         return cursor.error(numbers.tokenStart, message, "this line has fewer groups than '" + statement.keyword()
-                + "' takes: was the " + group.meaning() + " left out before this group? write it as " + statement.usage());
+                + "' takes: was the " + group.meaning() + " left out before this group? write it as "
+                + statement.usage());
     }
 
     /** The groups that open from {@code offset} to the line's end or comment, for a hint only. */
@@ -215,7 +215,8 @@ final class GroupReader {
 
     /** "expected {@code what} the centre of 'sphere', found …" at the cursor, with the usage as the help. */
     private SceneException expected(String what) {
-        return groupError(cursor.pos, "expected " + what + group.of(statement) + ", found " + cursor.describe(cursor.pos));
+        return groupError(cursor.pos, "expected " + what + group.of(statement) + ", found "
+                + cursor.describe(cursor.pos));
     }
 
     private SceneException groupError(int offset, String message) {

@@ -6,7 +6,6 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.function.Function;
 import java.util.function.ToIntFunction;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
@@ -90,7 +89,8 @@ final class Hints {
 
     /** Whether a character shows as a blank or not at all, but is no space or tab: U+00A0, U+200B, U+FEFF… */
     static boolean isInvisible(int codePoint) {
-        return codePoint > 0x7F && (Character.isSpaceChar(codePoint) || Character.getType(codePoint) == Character.FORMAT);
+        return codePoint > 0x7F
+                && (Character.isSpaceChar(codePoint) || Character.getType(codePoint) == Character.FORMAT);
     }
 
     /** "U+00A0 NO-BREAK SPACE": how a message names an invisible character. */
@@ -105,7 +105,8 @@ final class Hints {
             return "a byte-order mark may stand only at the very start of a file (one gets inside when files are "
                     + "joined): delete it";
         }
-        boolean looksLikeSpace = Character.isSpaceChar(codePoint) && !Character.getName(codePoint).contains("ZERO WIDTH");
+        boolean looksLikeSpace = Character.isSpaceChar(codePoint)
+                && !Character.getName(codePoint).contains("ZERO WIDTH");
         return String.format("U+%04X", codePoint) + (looksLikeSpace
                 ? " looks like a space but is not one: type a plain space instead"
                 : " cannot be seen but is there: delete it") + " (text copied from a PDF or a web page brings it)";
@@ -152,9 +153,14 @@ final class Hints {
 
     /** The words a message lists, quoted: "'a', 'b' and 'c'" for {@code last} = "and". */
     static String quoted(List<String> words, String last) {
-        Function<String, String> quote = word -> "'" + word + "'";
-        return words.subList(0, words.size() - 1).stream().map(quote).collect(Collectors.joining(", ")) + " " + last
-                + " " + quote.apply(words.get(words.size() - 1));
+        List<String> each = words.stream().map(word -> "'" + word + "'").toList();
+        return String.join(", ", each.subList(0, each.size() - 1)) + " " + last + " " + each.get(each.size() - 1);
+    }
+
+    /** "did you mean …?" with the one of {@code words} nearest to {@code word}, else their list: "the keys are …". */
+    static String nearestOrList(String word, List<String> words, String plural) {
+        String nearest = nearest(word, words);
+        return nearest != null ? "did you mean '" + nearest + "'?" : "the " + plural + " are " + quoted(words, "and");
     }
 
     /**

@@ -48,7 +48,7 @@ public record ImageFormat(String extension) {
         if (extension.isEmpty() || extension.get().equals(PNG.extension)) {
             return Optional.of(PNG);
         }
-        return writerFor(extension.get()).isPresent() ? Optional.of(new ImageFormat(extension.get())) : Optional.empty();
+        return writerFor(extension.get()).map(writer -> new ImageFormat(extension.get()));
     }
 
     /** The extensions (lower case, sorted) whose format {@code javax.imageio} can write an RGB picture in. */
@@ -102,8 +102,7 @@ public record ImageFormat(String extension) {
 
     /** Writes {@code picture} to {@code out} (flushed, not closed), telling {@code progress} the fraction written. */
     public void write(Picture picture, OutputStream out, DoubleConsumer progress) throws IOException {
-        ImageWriter writer = writerFor(extension)
-                .orElseThrow(() -> new IllegalStateException("no writer for ." + extension));
+        ImageWriter writer = writerFor(extension).orElseThrow(); // forOutput made this format only if one exists
         // In memory, not javax.imageio's default cache file in the system's temporary folder:
         // the writer seeks back only within the chunk it writes, which the cache keeps.
         try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {

@@ -3,7 +3,6 @@ package rtd.io;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Stream;
@@ -109,10 +108,11 @@ final class Names {
         String word = v.name(1);
         List<String> kinds = Arrays.stream(Pattern.Kind.values()).map(Pattern.Kind::word).toList();
         if (!kinds.contains(word)) {
-            throw unknown(v, 1, "unknown kind of pattern '" + word + "'", "kinds", kinds, word);
+            throw v.errorAtValue(1, 0, "unknown kind of pattern '" + word + "'",
+                    Hints.nearestOrList(word, kinds, "kinds"));
         }
         Pattern.Kind kind = Pattern.Kind.values()[kinds.indexOf(word)];
-        out.pattern(v.name(0), new Pattern(kind, v.colour(2), v.colour(3), Matrix4.IDENTITY),
+        out.define(v.name(0), "pattern", new Pattern(kind, v.colour(2), v.colour(3), Matrix4.IDENTITY),
                 v.groupCount() > 4 ? v.name(4) : null);
     }
 
@@ -122,7 +122,7 @@ final class Names {
         for (int g = 1; g < v.groupCount(); g++) {
             m = m.then(step(v, g));
         }
-        out.transform(v.name(0), m);
+        out.define(v.name(0), "transform", m, null);
     }
 
     /** The step of group {@code g}: its word, then its numbers, each checked where it is written. */
@@ -130,8 +130,8 @@ final class Names {
         String word = v.name(g);
         int count = v.size(g) - 1; // the word, then its numbers
         if (!OPERATIONS.contains(word)) {
-            throw unknown(v, g, "unknown step '" + word + "' in a transform", "steps", OPERATIONS,
-                    word.toLowerCase(Locale.ROOT));
+            throw v.errorAtValue(g, 0, "unknown step '" + word + "' in a transform",
+                    Hints.nearestOrList(word, OPERATIONS, "steps"));
         }
         boolean scale = word.equals("scale");
         int wanted = word.startsWith("rotate") ? 1 : 3;
@@ -155,13 +155,5 @@ final class Names {
             case "rotate_z" -> Matrix4.rotateZ(n[0]);
             default -> Matrix4.translate(n[0], n[1], n[2]);
         };
-    }
-
-    /** The error for an unknown word of group {@code g}: "did you mean …?" among {@code words}, else their list. */
-    private static SceneException unknown(StatementValues v, int g, String message, String plural, List<String> words,
-            String word) {
-        String nearest = Hints.nearest(word, words);
-        return v.errorAtValue(g, 0, message, nearest != null ? "did you mean '" + nearest + "'?"
-                : "the " + plural + " are " + Hints.quoted(words, "and"));
     }
 }

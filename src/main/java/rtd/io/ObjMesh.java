@@ -49,8 +49,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         return Arrays.asList(triangles);
     }
 
-    private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers, int at,
-            Vector3f[] normalVectors) {
+    private Triangle triangle(int t, Vector3f shift, float scale, Color colour, Material material, float[] numbers,
+            int at, Vector3f[] normalVectors) {
         RayTriangle.putNumbers(corner(corners[3 * t], shift, scale), corner(corners[3 * t + 1], shift, scale),
                 corner(corners[3 * t + 2], shift, scale), numbers, at);
         if (cornerNormals == null || cornerNormals[3 * t] < 0) {
@@ -83,13 +83,13 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         String shown;
         try {
             Path path = Path.of(written);
-            file = scene.folder().resolve(path);
-            shown = path.isAbsolute() ? written : shownName(scene.name(), path);
+            file = scene.folder.resolve(path);
+            shown = path.isAbsolute() ? written : shownName(scene.name, path);
         } catch (InvalidPathException e) {
             throw values.errorAtValue(g, 0, "'" + written + "' is not a file path here: " + e.getReason(), null);
         }
         Path key = file.toAbsolutePath().normalize();
-        ObjMesh mesh = scene.meshes().get(key); // a scene's text always has its table of meshes; an OBJ file's has none
+        ObjMesh mesh = scene.meshes.get(key); // a scene's text always has its table of meshes; an OBJ file's has none
         if (mesh != null) {
             return mesh;
         }
@@ -99,7 +99,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         } catch (IOException e) {
             throw values.errorAtValue(g, 0, "cannot read the mesh file '" + shown + "': " + reason(e),
                     e instanceof NoSuchFileException && written.indexOf('\\') >= 0 ? Hints.forWindowsPath(written)
-                            : scene.name().equals(SceneIO.STDIN_NAME)
+                            : scene.name.equals(SceneIO.STDIN_NAME)
                                     ? "the scene comes from standard input, so a mesh's path is relative to the "
                                             + "folder rtd runs in; or give the full path"
                                     : "a mesh's path is relative to the folder of the scene file");
@@ -107,18 +107,18 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
         try (SourceText obj = new SourceText(shown, bytes)) {
             mesh = ObjReader.read(obj);
         } catch (SceneException e) {
-            String usedBy = "this file is used by " + scene.name() + ":" + values.line();
+            String usedBy = "this file is used by " + scene.name + ":" + values.line();
             List<SceneError> errors = e.errors().stream().map(error -> error.saying(error.message(),
                     error.help() == null ? usedBy : error.help() + "; " + usedBy)).toList();
             throw new SceneException(values.placeOfValue(g, 0), errors);
         }
         if (mesh.count() == 0) {
-            // else the scene would lose the mesh without a word, and the warning of an empty picture would blame the camera
+            // else the scene would lose the mesh silently, and the empty picture's warning would blame the camera
             throw values.errorAtValue(g, 0, "the mesh file '" + shown + "' has no faces: rtd found no 'f' line in it",
                     "rtd skips the lines of an OBJ file other than v, vn and f, so a misspelt 'F' or 'face' line is "
                             + "skipped too; a mesh needs at least one face");
         }
-        scene.meshes().put(key, mesh);
+        scene.meshes.put(key, mesh);
         return mesh;
     }
 
@@ -144,7 +144,8 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
 
     /** Why a file could not be read, in words for a person. */
     private static String reason(IOException e) {
-        return e instanceof NoSuchFileException ? "no such file" : e instanceof AccessDeniedException ? "permission denied"
+        return e instanceof NoSuchFileException ? "no such file"
+                : e instanceof AccessDeniedException ? "permission denied"
                 : e instanceof FileSystemException failure && failure.getReason() != null
                         ? failure.getReason().toLowerCase(Locale.ROOT)
                 : e.getMessage() != null ? e.getMessage() : "an input error";

@@ -73,7 +73,7 @@ final class SceneContents {
         pending.add(new Pending(objects.size(), objectValues.copy()));
     }
 
-    /** Adds what {@code part}, the lines that follow these read on their own, made: it has no mistake and no definition. */
+    /** Adds what {@code part}, the next lines read on their own, made: it has no mistake and no definition. */
     void append(SceneContents part) {
         part.pending.forEach(object -> pending.add(new Pending(objects.size() + object.index(), object.values())));
         objects.addAll(part.objects);
@@ -149,17 +149,10 @@ final class SceneContents {
         recorder().unwritten(values);
     }
 
-    void pattern(String name, Pattern pattern, String transform) {
-        define(name, "pattern", pattern, transform);
-    }
-
-    void transform(String name, Matrix4 transform) {
-        define(name, "transform", transform, null);
-    }
-
     /** A material, pattern or transform, as {@code kind} says; a pattern may name a transform (else null). */
     void define(String name, String kind, Object value, String transform) {
-        SceneError transformPlace = transform == null ? null : values.placeOfValue(values.statement().groups().size(), 0);
+        SceneError transformPlace = transform == null ? null
+                : values.placeOfValue(values.statement().groups().size(), 0);
         definitions.add(new Definition(name, kind, value, values.placeOfValue(0, 0), transform, transformPlace));
         if (value instanceof Material material) {
             materials.putIfAbsent(name, material);

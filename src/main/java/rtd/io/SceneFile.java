@@ -13,6 +13,7 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import rtd.geometry.IGeometry;
 import rtd.image.Color;
+import rtd.io.SceneContents.Found;
 import rtd.scene.Scene;
 
 /**
@@ -126,7 +127,7 @@ public final class SceneFile {
     /** The scene the contents make, or every mistake in them, ordered by place. */
     private static Scene join(SourceText source, int start, SceneContents contents, List<SceneError> warnings)
             throws SceneException {
-        List<SceneContents.Found> errors = contents.errors;
+        List<Found> errors = contents.errors;
         SceneError numbered = contents.firstLineNumber; // the lines that start with a line number: one mistake
         if (numbered != null) {
             int more = contents.lineNumbers - 1;
@@ -147,8 +148,8 @@ public final class SceneFile {
                     "add a line such as " + CAMERA_EXAMPLE).found());
         }
         if (!errors.isEmpty()) {
-            errors.sort(Comparator.comparingInt(SceneContents.Found::line).thenComparingInt(SceneContents.Found::column));
-            throw new SceneException(errors.stream().limit(SceneException.MAX_ERRORS).map(SceneContents.Found::error)
+            errors.sort(Comparator.comparingInt(Found::line).thenComparingInt(Found::column));
+            throw new SceneException(errors.stream().limit(SceneException.MAX_ERRORS).map(Found::error)
                     .toList(), errors.size() > SceneException.MAX_ERRORS);
         }
         if (warnings != null) {
@@ -165,7 +166,7 @@ public final class SceneFile {
 
     /** An error at each of {@code found} after the first, which {@code first} names in the help. */
     private static void onlyOne(List<? extends SceneContents.Located<?>> found, String second, String first,
-            List<SceneContents.Found> errors) {
+            List<Found> errors) {
         for (var located : found.subList(Math.min(1, found.size()), found.size())) {
             errors.add(located.place().saying(second, first + " is at line " + found.get(0).place().line()).found());
         }

@@ -68,7 +68,8 @@ public final class SceneIO {
     /** Writes {@code picture} into {@code device}, a FIFO or /dev/null: never created, replaced or truncated. */
     public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
             throws IOException {
-        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(device, StandardOpenOption.WRITE), CHUNK)) {
+        OutputStream into = Files.newOutputStream(device, StandardOpenOption.WRITE);
+        try (OutputStream out = new BufferedOutputStream(into, CHUNK)) {
             format.write(picture, out, progress);
         }
     }

@@ -24,11 +24,12 @@ final class SourceText implements AutoCloseable {
     /** How many bytes at the start of a file tell whether it is UTF-16. */
     private static final int SAMPLE = 512;
 
-    private final String name;
+    final String name;
     private byte[] bytes;
-    private final Path folder;
+    /** The folder a mesh's relative path starts from. */
+    final Path folder;
     /** The OBJ files read without a mistake for an animation's other frames, by absolute path; null: none kept. */
-    private final Map<Path, ObjMesh> meshes;
+    final Map<Path, ObjMesh> meshes;
 
     SourceText(String name, byte[] bytes, Path folder, Map<Path, ObjMesh> meshes) {
         this.name = name;
@@ -42,31 +43,14 @@ final class SourceText implements AutoCloseable {
         this(name, bytes, Path.of(""), null);
     }
 
-    String name() {
-        return name;
-    }
-
     byte[] bytes() {
         return bytes;
-    }
-
-    Path folder() {
-        return folder;
-    }
-
-    Map<Path, ObjMesh> meshes() {
-        return meshes;
     }
 
     /** Lets the bytes go: old objects that point to them would keep them through build and render. */
     @Override
     public void close() {
         bytes = null;
-    }
-
-    /** The text of the line that starts at byte {@code lineStart}, without its line break (LF, CR LF or CR). */
-    String lineText(int lineStart) {
-        return new String(bytes, lineStart, lineEnd(lineStart) - lineStart, StandardCharsets.UTF_8);
     }
 
     private int lineEnd(int from) {
@@ -77,8 +61,10 @@ final class SourceText implements AutoCloseable {
         return end;
     }
 
+    /** An error at byte {@code offset} of the line that starts at {@code lineStart}, shown without its line break. */
     SceneError errorAt(int line, int lineStart, int offset, String message, String help) {
-        return new SceneError(name, line, column(lineStart, offset), message, lineText(lineStart), help);
+        String text = new String(bytes, lineStart, lineEnd(lineStart) - lineStart, StandardCharsets.UTF_8);
+        return new SceneError(name, line, column(lineStart, offset), message, text, help);
     }
 
     int column(int lineStart, int offset) {

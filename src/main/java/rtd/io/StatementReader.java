@@ -29,7 +29,7 @@ final class StatementReader {
         contents.values = values;
     }
 
-    /** Reads every line that starts before byte {@code end}, or up to one error past {@link SceneException#MAX_ERRORS}. */
+    /** Reads each line that starts before byte {@code end}; stops past {@link SceneException#MAX_ERRORS} errors. */
     void readUntil(int end) {
         while (cursor.pos < end && contents.errors.size() <= SceneException.MAX_ERRORS) {
             try {
@@ -82,8 +82,8 @@ final class StatementReader {
             cursor.skipBlanks();
         }
         if (cursor.at(':')) {
-            throw cursor.error(cursor.pos, "too many groups: '" + statement.keyword() + "' takes " + statement.groupCount(),
-                    "write it as " + statement.usage());
+            throw cursor.error(cursor.pos, "too many groups: '" + statement.keyword() + "' takes "
+                    + statement.groupCount(), "write it as " + statement.usage());
         }
         if (!cursor.atEndOfStatement()) {
             throw textAfterStatement();
