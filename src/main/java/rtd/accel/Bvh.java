@@ -100,26 +100,14 @@ public final class Bvh {
                 int child = BOX * nodes[2 * node] + ROUNDING;
                 boxes[at] = Math.max(boxes[child], boxes[child + BOX]);
                 boxes[at + 1] = Math.max(boxes[child + 1], boxes[child + BOX + 1]);
-            } else {
-                leafRounding(nodes[2 * node], nodes[2 * node + 1], roundings, boxes, at);
+            } else { // a leaf: the largest of its objects', linear and quadratic each
+                int first = nodes[2 * node];
+                for (int i = first; i < first + nodes[2 * node + 1]; i++) {
+                    boxes[at] = Math.max(boxes[at], roundings[2 * i]);
+                    boxes[at + 1] = Math.max(boxes[at + 1], roundings[2 * i + 1]);
+                }
             }
         }
-    }
-
-    /**
-     * The largest rounding of the {@code count} objects from place {@code first} in leaf order,
-     * as {@link Rounding#max} finds it, written to {@code into[at]} (linear) and
-     * {@code into[at + 1]} (quadratic).
-     */
-    private static void leafRounding(int first, int count, float[] roundings, float[] into, int at) {
-        float linear = 0;
-        float quadratic = 0;
-        for (int i = first; i < first + count; i++) {
-            linear = Math.max(linear, roundings[2 * i]);
-            quadratic = Math.max(quadratic, roundings[2 * i + 1]);
-        }
-        into[at] = linear;
-        into[at + 1] = quadratic;
     }
 
     /**

@@ -53,20 +53,29 @@ public final class HitImageTracer implements Tracer {
             return;
         }
         RayBundle.Pixels p = bundle.pixels();
-        int kinds = tests.length;
         int across = p.right() - p.left();
         for (int y = p.top(), i = 0; y < p.bottom(); y++, i += across) {
             int pixel = y * image.width + p.left();
             hits.set(i, across, pixel, image.index, image.t, image.distance, image.rayTests);
-            for (int k = 0; k < kinds; k++) {
-                long ofKind = 0;
-                for (int at = pixel * kinds + k, end = (pixel + across) * kinds; at < end; at += kinds) {
-                    ofKind += image.tests[at];
-                }
-                tests[k] += ofKind;
-            }
+            countTests(pixel, across);
         }
         rays += bundle.count();
+    }
+
+    /** Counts by kind the tests of pixels {@code [pixel, pixel + across)} of the image. */
+    private void countTests(int pixel, int across) {
+        if (image.tests == null) { // one kind: a pixel's tests less those of the objects without a box
+            for (int at = pixel; at < pixel + across; at++) {
+                tests[0] += image.rayTests[at] - image.unbounded.length;
+            }
+            return;
+        }
+        int kinds = tests.length;
+        for (int k = 0; k < kinds; k++) {
+            for (int at = pixel * kinds + k, end = (pixel + across) * kinds; at < end; at += kinds) {
+                tests[k] += image.tests[at];
+            }
+        }
     }
 
     /** The camera's rays of a run of squares, each read from its pixel, all at once. */

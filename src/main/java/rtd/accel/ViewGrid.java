@@ -33,7 +33,6 @@ public final class ViewGrid {
     /** The cell side is {@code 1 << shift} pixels. */
     final int shift;
     final int columns;
-    final int rows;
     /** Cell c (row by row) holds {@code places[cellStart[c] .. cellStart[c + 1])}. */
     final int[] cellStart;
     /**
@@ -59,7 +58,6 @@ public final class ViewGrid {
         this.latestOffset = latestOffset;
         this.shift = shift;
         this.columns = cellsAlong(width, shift);
-        this.rows = cellsAlong(height, shift);
         this.cellStart = cellStart;
         this.places = places;
         this.nearest = nearest;

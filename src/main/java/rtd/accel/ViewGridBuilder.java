@@ -78,7 +78,8 @@ final class ViewGridBuilder {
         int columns = ViewGrid.cellsAlong(width, shift);
         int[] cellStart = new int[cellCount(shift) + 1];
         int[] fileOrder = leafOrder();
-        Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
+        LeafObjects packed = new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
+        Bvh leaf = Bvh.oneLeaf(packed, unboundedOrder(), objects);
         float[] nearestByPlace = new float[fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
         if (sorted) {
@@ -151,8 +152,9 @@ final class ViewGridBuilder {
         return sum;
     }
 
+    /** How many cells of side {@code 1 << shift} cover the image. */
     private int cellCount(int shift) {
-        return CellSide.cellCount(width, height, shift);
+        return ViewGrid.cellsAlong(width, shift) * ViewGrid.cellsAlong(height, shift);
     }
 
     /**
@@ -189,11 +191,6 @@ final class ViewGridBuilder {
             }
         }
         return fileOrder;
-    }
-
-    /** The numbers of the objects' tests, packed in leaf order. */
-    private LeafObjects pack(int[] fileOrder) {
-        return new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
     }
 
     /** The places in the file of the objects without a box, in file order. */
