@@ -105,12 +105,9 @@ public final class HitImage {
         });
     }
 
-    /** Whether the bundle holds rays of this image's camera and picture, through the corners of pixels of the picture. */
+    /** Whether the bundle holds rays of this image's camera and picture, through the corners of its pixels. */
     boolean serves(RayBundle bundle) {
-        RayBundle.Pixels p = bundle.pixels();
-        return p != null && p.camera() == scene.camera() && p.width() == width && p.height() == height
-                && p.left() >= 0 && p.top() >= 0 && p.right() <= width && p.bottom() <= height
-                && p.sampleX() == 0 && p.sampleY() == 0;
+        return ViewGrid.serves(bundle, scene.camera(), width, height, 0);
     }
 
     /** The object entries of all tiles together, an object counted once per tile its footprint overlaps. */

@@ -85,8 +85,9 @@ final class PerspectiveFootprint implements ImageFootprint {
         double y = height / 2.0 + 2;
         double longest = (Math.abs(focal) * sum(forward) + x * sum(across) + y * sum(down)) * (1 + 1e-5);
         double forwardLength = Math.sqrt(ImageFootprint.dot(forward, forward));
-        double shortest = (Math.abs(focal) * forwardLength * forwardLength - x * Math.abs(ImageFootprint.dot(across, forward))
-                - y * Math.abs(ImageFootprint.dot(down, forward))) / forwardLength * (1 - 1e-5);
+        double shortest = (Math.abs(focal) * forwardLength * forwardLength
+                - x * Math.abs(ImageFootprint.dot(across, forward)) - y * Math.abs(ImageFootprint.dot(down, forward)))
+                / forwardLength * (1 - 1e-5);
         return shortest >= KnownShapes.SHORTEST_DIRECTION && longest <= KnownShapes.LONGEST_DIRECTION;
     }
 
@@ -163,6 +164,7 @@ final class PerspectiveFootprint implements ImageFootprint {
             return ImageFootprint.whole(width, height, into, to);
         }
         return ImageFootprint.rectangle(halfWidth + left - margin, halfWidth + rightmost + margin,
-                halfHeight + top - margin, halfHeight + bottom + margin, width, height, latestOffset, nearest, into, to);
+                halfHeight + top - margin, halfHeight + bottom + margin, width, height, latestOffset, nearest, into,
+                to);
     }
 }

@@ -96,7 +96,7 @@ final class PointFootprint implements ImageFootprint {
         return leastStart > gap && gap > 0 ? seenFrom(point, box, size, true, leastStart, gap) : null;
     }
 
-    /** {@link #leaving} if {@code leaving}, with its {@code leastStart} and {@code leavingGap}, else {@link #around}. */
+    /** {@link #leaving} if {@code leaving}, with its {@code leastStart} and gap, else {@link #around}. */
     private static PointFootprint seenFrom(Vector3f point, float[] box, int size, boolean leaving, double leastStart,
             double leavingGap) {
         double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),

@@ -52,7 +52,7 @@ final class TestCounts {
         unboundedTests++;
     }
 
-    /** The tests so far by the name of each kind of object, those of the objects without a box too ({@code --stats}). */
+    /** The tests so far by the name of each kind of object, the objects without a box too ({@code --stats}). */
     Map<String, Long> byKindName() {
         Map<String, Long> byName = new TreeMap<>();
         for (int k = 0; k < tests.length; k++) {

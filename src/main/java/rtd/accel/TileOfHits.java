@@ -37,7 +37,7 @@ final class TileOfHits {
      */
     private final int[] tests;
 
-    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} by place in the leaf. */
+    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} by leaf place. */
     TileOfHits(HitImage image, ViewGrid tiles, int[] footprints) {
         this.image = image;
         this.tiles = tiles;

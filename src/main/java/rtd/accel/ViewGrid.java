@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import rtd.camera.ICamera;
+import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 
@@ -81,6 +82,17 @@ public final class ViewGrid {
     /** How many cells of side {@code 1 << shift} cover {@code pixels}. */
     static int cellsAlong(int pixels, int shift) {
         return ((pixels - 1) >> shift) + 1;
+    }
+
+    /**
+     * Whether the bundle holds rays of {@code camera}'s {@code width × height} picture, for pixels of the picture,
+     * through points up to {@code latestOffset} into their pixels.
+     */
+    static boolean serves(RayBundle bundle, ICamera camera, int width, int height, float latestOffset) {
+        RayBundle.Pixels p = bundle.pixels();
+        return p != null && p.camera() == camera && p.width() == width && p.height() == height && p.left() >= 0
+                && p.top() >= 0 && p.right() <= width && p.bottom() <= height
+                && p.sampleX() >= 0 && p.sampleX() <= latestOffset && p.sampleY() >= 0 && p.sampleY() <= latestOffset;
     }
 
     /** The cell of pixel (x, y). */

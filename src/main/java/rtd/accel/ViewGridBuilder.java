@@ -20,7 +20,7 @@ final class ViewGridBuilder {
     private static final byte SEEN = 0;
     private static final byte UNSEEN = 1;
     private static final byte UNBOUNDED = 2;
-    /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's squares. */
+    /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's. */
     private static final int TILE_SHIFT = 3;
     /** A cell of more objects than this is sorted by {@link Arrays#sort}, not by insertion. */
     private static final int INSERTION_SORT_MOST = 32;
@@ -32,7 +32,7 @@ final class ViewGridBuilder {
 
     /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
     private final int[] footprints;
-    /** Per object in file order: a distance from the ray's origin before which no ray hits it, if it is {@link #SEEN}. */
+    /** Per object in file order: a distance from the ray's origin before which no ray hits it, if {@link #SEEN}. */
     private final float[] nearest;
     private final byte[] state;
     /** Per object in file order: its place in the leaf, −1 for one without a box. */
@@ -48,7 +48,7 @@ final class ViewGridBuilder {
         this.state = new byte[objects.size()];
     }
 
-    /** The grid of {@code camera}'s rays through points up to {@code latestOffset} into their pixels, {@code samples²} a pixel. */
+    /** The grid of the camera's rays through points up to {@code latestOffset} into pixels, {@code samples²} a pixel. */
     ViewGrid build(ICamera camera, float latestOffset, int samples) {
         return build(ImageFootprint.of(camera, width, height, latestOffset), camera, latestOffset, samples);
     }
@@ -58,7 +58,8 @@ final class ViewGridBuilder {
      * pixel; {@code camera} and {@code latestOffset} are what its rays are (a light's grid has no camera).
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
-        return build(footprint, camera, latestOffset, CellSide.choose(objects, footprint, width, height, samples), true);
+        int shift = CellSide.choose(objects, footprint, width, height, samples);
+        return build(footprint, camera, latestOffset, shift, true);
     }
 
     /**
