@@ -1,9 +1,7 @@
 package rtd.accel;
 
 import java.util.Map;
-import java.util.TreeMap;
 import rtd.geometry.Hit;
-import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 import rtd.render.HitBuffer;
 import rtd.render.LinearTracer;
@@ -99,13 +97,7 @@ public final class HitImageTracer implements Tracer {
 
     @Override
     public WorkCount work() {
-        Map<String, Long> byKind = new TreeMap<>();
-        for (int k = 0; k < tests.length; k++) {
-            byKind.merge(image.kindNames[k], tests[k], Long::sum);
-        }
-        for (IGeometry object : image.unbounded) {
-            byKind.merge(object.kind(), rays, Long::sum);
-        }
+        Map<String, Long> byKind = TestCounts.byName(image.kindNames, tests, image.unbounded, rays);
         WorkCount own = new WorkCount(rays, byKind, 0).answeredBy("image of hits");
         return others != null ? own.plus(others.work()) : own;
     }

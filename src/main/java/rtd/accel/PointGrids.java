@@ -10,8 +10,6 @@ import rtd.geometry.IGeometry;
  * What the lights' and the mirrors' grids share: each grid is a {@link ViewGrid} seen from one point
  * ({@link PointFootprint}), whose "pixels" are the directions from that point on a square picture, and the grids
  * together hold copies of at most {@link #MOST_PACKED} objects. Not in the paper or Part II.
- *
- * @param <G> one point's grid
  */
 public abstract class PointGrids<G extends PointGrids.Grid> {
 

@@ -37,6 +37,8 @@ final class ViewGridBuilder {
     private final byte[] state;
     /** Per object in file order: its place in the leaf, −1 for one without a box. */
     private int[] leafOf;
+    /** The places in the file of the objects without a box, in file order. */
+    private int[] unboundedOrder;
 
     ViewGridBuilder(List<IGeometry> objects, int width, int height, ForkJoinPool pool) {
         this.objects = objects;
@@ -80,7 +82,7 @@ final class ViewGridBuilder {
         int[] cellStart = new int[cellCount(shift) + 1];
         int[] fileOrder = leafOrder();
         LeafObjects packed = new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
-        Bvh leaf = Bvh.oneLeaf(packed, unboundedOrder(), objects);
+        Bvh leaf = Bvh.oneLeaf(packed, unboundedOrder, objects);
         float[] nearestByPlace = new float[fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
         if (sorted) {
@@ -161,17 +163,19 @@ final class ViewGridBuilder {
     /**
      * Gives each object with a box its place in the leaf, {@link #leafOf}: the objects seen by the square of 8 × 8
      * pixels their footprint's middle lies in, square after square, row by row; then those no ray sees. Answers the
-     * places' objects ({@code fileOrder}).
+     * places' objects ({@code fileOrder}), and lists those without a box in {@link #unboundedOrder}.
      */
     private int[] leafOrder() {
         int across = ViewGrid.cellsAlong(width, TILE_SHIFT);
         int tiles = across * ViewGrid.cellsAlong(height, TILE_SHIFT);
         leafOf = new int[objects.size()];
         int[] next = new int[tiles + 2];
+        int unbounded = 0;
         for (int f = 0; f < leafOf.length; f++) {
             int at = 4 * f;
             if (state[f] == UNBOUNDED) {
                 leafOf[f] = -1;
+                unbounded++;
                 continue;
             }
             int tile = state[f] == UNSEEN ? tiles
@@ -184,29 +188,17 @@ final class ViewGridBuilder {
             next[t] += next[t - 1]; // now where each square's objects start
         }
         int[] fileOrder = new int[next[tiles + 1]];
-        for (int f = 0; f < leafOf.length; f++) {
+        unboundedOrder = new int[unbounded];
+        for (int f = 0, u = 0; f < leafOf.length; f++) {
             if (leafOf[f] >= 0) {
                 int place = next[leafOf[f]]++;
                 leafOf[f] = place;
                 fileOrder[place] = f;
+            } else {
+                unboundedOrder[u++] = f;
             }
         }
         return fileOrder;
-    }
-
-    /** The places in the file of the objects without a box, in file order. */
-    private int[] unboundedOrder() {
-        int count = 0;
-        for (byte s : state) {
-            count += s == UNBOUNDED ? 1 : 0;
-        }
-        int[] order = new int[count];
-        for (int f = 0, k = 0; k < count; f++) {
-            if (state[f] == UNBOUNDED) {
-                order[k++] = f;
-            }
-        }
-        return order;
     }
 
     /**
