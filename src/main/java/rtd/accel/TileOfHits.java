@@ -1,14 +1,15 @@
 package rtd.accel;
 
 import java.util.Arrays;
+import rtd.camera.ICamera;
 import rtd.geometry.Sphere;
 import rtd.geometry.TestObserver;
-import rtd.render.RayBundle;
 import rtd.scene.DepthTest;
 
 /**
- * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera rays, made as the
- * renderer makes them (a {@link RayBundle}), and each pixel's nearest hit so far. Each object listed for the tile runs
+ * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera rays as numbers, made
+ * as the renderer makes them ({@link ICamera#putRay}, as {@link rtd.render.RayBundle} calls it), and each pixel's
+ * nearest hit so far. Each object listed for the tile runs
  * the paper's intersection test on the pixels of its footprint inside the tile, as a {@link NearestHit} runs it (the
  * shape's own kernel, {@link LeafObjects#t}), and the depth test ({@link DepthTest#key}: the nearest hit wins, and on
  * a tie the object that comes first in the file) keeps the winner; the objects without a box are tested on every
@@ -25,8 +26,15 @@ final class TileOfHits {
     private final UnboundedObjects unbounded;
     private final int[] unboundedOrder;
     private final int kinds;
-    private final RayBundle rays = new RayBundle(PIXELS);
-    /** Per pixel of the tile, D·D of its ray, summed as {@link NearestHit} sums it. */
+    private final float[] ray = new float[6];
+    // the rays in arrays of the tile's own, not read through a RayBundle: its methods, called between tests that the
+    // JIT does not inline, would load its arrays anew for every test
+    private final float[] ox = new float[PIXELS];
+    private final float[] oy = new float[PIXELS];
+    private final float[] oz = new float[PIXELS];
+    private final float[] dx = new float[PIXELS];
+    private final float[] dy = new float[PIXELS];
+    private final float[] dz = new float[PIXELS];
     private final float[] dd = new float[PIXELS];
     private final long[] bestKey = new long[PIXELS];
     private final float[] bestT = new float[PIXELS];
@@ -53,21 +61,11 @@ final class TileOfHits {
     void draw(int left, int top) {
         int right = Math.min(image.width, left + HitImage.TILE);
         int bottom = Math.min(image.height, top + HitImage.TILE);
-        rays.fill(image.scene.camera(), left, top, right, bottom, image.width, image.height);
-        rays.make();
-        int count = rays.count();
-        for (int i = 0; i < count; i++) {
-            dd[i] = (rays.directionX(i) * rays.directionX(i)) + (rays.directionY(i) * rays.directionY(i))
-                    + (rays.directionZ(i) * rays.directionZ(i));
-        }
-        Arrays.fill(bestKey, 0, count, DepthTest.NO_HIT);
-        Arrays.fill(bestT, 0, count, Float.NaN);
-        Arrays.fill(bestDistance, 0, count, Float.POSITIVE_INFINITY);
+        int count = makeRays(left, top, right, bottom);
         Arrays.fill(tests, 0);
         for (int u = 0; u < unbounded.count(); u++) {
             for (int i = 0; i < count; i++) {
-                float t = unbounded.t(u, rays.originX(i), rays.originY(i), rays.originZ(i), rays.directionX(i),
-                        rays.directionY(i), rays.directionZ(i));
+                float t = unbounded.t(u, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
                 if (t >= 0) { // false for NaN: no hit
                     consider(i, unboundedOrder[u], t);
                 }
@@ -78,6 +76,27 @@ final class TileOfHits {
             test(tiles.places[k], left, top, right, bottom);
         }
         store(left, top, right, bottom);
+    }
+
+    /** The rays of pixels {@code [left, right) × [top, bottom)}, row by row, and no hit yet; answers how many. */
+    private int makeRays(int left, int top, int right, int bottom) {
+        int i = 0;
+        for (int y = top; y < bottom; y++) {
+            for (int x = left; x < right; x++, i++) {
+                image.scene.camera().putRay(x, y, image.width, image.height, ray, 0);
+                ox[i] = ray[0];
+                oy[i] = ray[1];
+                oz[i] = ray[2];
+                dx[i] = ray[3];
+                dy[i] = ray[4];
+                dz[i] = ray[5];
+                dd[i] = (ray[3] * ray[3]) + (ray[4] * ray[4]) + (ray[5] * ray[5]); // D·D, summed as NearestHit sums it
+                bestKey[i] = DepthTest.NO_HIT;
+                bestT[i] = Float.NaN;
+                bestDistance[i] = Float.POSITIVE_INFINITY;
+            }
+        }
+        return i;
     }
 
     /** The object at {@code place} in leaf order on its pixels of the tile {@code [left, right) × [top, bottom)}. */
@@ -98,8 +117,7 @@ final class TileOfHits {
         for (int y = y0; y < y1; y++) {
             int end = y * across + x1;
             for (int i = y * across + x0; i < end; i++) {
-                float t = leaves.t(place, rays.originX(i), rays.originY(i), rays.originZ(i), rays.directionX(i),
-                        rays.directionY(i), rays.directionZ(i), dd[i]);
+                float t = leaves.t(place, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], dd[i]);
                 if (t >= 0) { // false for NaN: no hit
                     consider(i, index, t);
                 }
@@ -119,8 +137,7 @@ final class TileOfHits {
         for (int y = y0; y < y1; y++) {
             int end = y * across + x1;
             for (int i = y * across + x0; i < end; i++) {
-                float t = Sphere.hit(mx, my, mz, r, rays.originX(i), rays.originY(i), rays.originZ(i),
-                        rays.directionX(i), rays.directionY(i), rays.directionZ(i), TestObserver.NONE);
+                float t = Sphere.hit(mx, my, mz, r, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], TestObserver.NONE);
                 if (t >= 0) { // false for NaN: no hit
                     consider(i, index, t);
                 }
@@ -141,8 +158,7 @@ final class TileOfHits {
 
     /** The depth test of Listing 4.3 for pixel {@code i} of the tile, as {@link NearestHit}'s. */
     private void consider(int i, int index, float t) {
-        float distance = LeafObjects.distance(t, rays.originX(i), rays.originY(i), rays.originZ(i), rays.directionX(i),
-                rays.directionY(i), rays.directionZ(i));
+        float distance = LeafObjects.distance(t, ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
         long key = DepthTest.key(distance, index);
         if (key < bestKey[i]) {
             bestKey[i] = key;
