@@ -25,6 +25,9 @@ final class PerspectiveFootprint implements ImageFootprint {
     private final Vector3f eye;
     /** Whether the rays' directions are in the range {@link KnownShapes#roundingFrom} speaks of. */
     private final boolean raysInRange;
+    private final double ox;
+    private final double oy;
+    private final double oz;
     private final double[] forward;
     private final double[] right;
     private final double[] down;
@@ -44,6 +47,9 @@ final class PerspectiveFootprint implements ImageFootprint {
 
     PerspectiveFootprint(PerspectiveCamera camera, int width, int height, double latestOffset) {
         eye = camera.position();
+        ox = eye.x();
+        oy = eye.y();
+        oz = eye.z();
         forward = ImageFootprint.numbers(camera.forward());
         right = ImageFootprint.numbers(camera.widthVector());
         down = ImageFootprint.numbers(camera.heightVector());
@@ -97,12 +103,12 @@ final class PerspectiveFootprint implements ImageFootprint {
 
     @Override
     public float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to) {
-        double x0 = boxes[at] - (double) eye.x();
-        double y0 = boxes[at + 1] - (double) eye.y();
-        double z0 = boxes[at + 2] - (double) eye.z();
-        double x1 = boxes[at + 3] - (double) eye.x();
-        double y1 = boxes[at + 4] - (double) eye.y();
-        double z1 = boxes[at + 5] - (double) eye.z();
+        double x0 = boxes[at] - ox;
+        double y0 = boxes[at + 1] - oy;
+        double z0 = boxes[at + 2] - oz;
+        double x1 = boxes[at + 3] - ox;
+        double y1 = boxes[at + 4] - oy;
+        double z1 = boxes[at + 5] - oz;
         double widest = linear + KnownShapes.ROUNDING_CONE;
         // a hit runs L ≤ farthest corner + √3·growth(L) ≤ farthest + √3·widest·L from the eye
         double farthest = ImageFootprint.farthest(x0, y0, z0, x1, y1, z1);
