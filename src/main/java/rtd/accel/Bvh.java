@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.Arrays;
 import java.util.List;
 import rtd.geometry.IGeometry;
 import rtd.scene.Scene;
@@ -50,7 +49,7 @@ public final class Bvh {
     final int maxDepth;
     final List<IGeometry> objects;
 
-    private Bvh(float[] boxes, int[] nodes, LeafObjects leaves, int[] unboundedOrder, int maxDepth,
+    Bvh(float[] boxes, int[] nodes, LeafObjects leaves, int[] unboundedOrder, int maxDepth,
             List<IGeometry> objects) {
         this.boxes = boxes;
         this.nodes = nodes;
@@ -66,17 +65,7 @@ public final class Bvh {
 
     /** Builds the hierarchy for {@code scene}, on this thread. */
     public static Bvh build(Scene scene) {
-        List<IGeometry> objects = scene.objects();
-        BvhBuilder builder = new BvhBuilder(objects);
-        builder.build();
-        int[] order = builder.order();
-        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
-        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
-        float[] roundings = new float[2 * fileOrder.length];
-        LeafObjects leaves = new LeafObjects(objects, fileOrder, builder.spareInts(), builder.spareFloats(), null,
-                roundings);
-        putRoundings(builder.boxes(), builder.nodes(), roundings);
-        return new Bvh(builder.boxes(), builder.nodes(), leaves, builder.unbounded(), builder.maxDepth(), objects);
+        return new BvhBuilder(scene.objects()).build();
     }
 
     /**
@@ -93,7 +82,7 @@ public final class Bvh {
      * than the node itself ({@link BvhBuilder}), so one pass backwards meets them first. The
      * objects' own are in {@code roundings}, in leaf order ({@link LeafObjects}).
      */
-    private static void putRoundings(float[] boxes, int[] nodes, float[] roundings) {
+    static void putRoundings(float[] boxes, int[] nodes, float[] roundings) {
         for (int node = nodes.length / 2 - 1; node >= 0; node--) {
             int at = BOX * node + ROUNDING;
             if (nodes[2 * node + 1] == INNER) {
