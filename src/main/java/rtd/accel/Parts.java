@@ -2,8 +2,10 @@ package rtd.accel;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.ForkJoinTask;
+import java.util.concurrent.Future;
 import java.util.function.Function;
 
 /**
@@ -54,13 +56,31 @@ final class Parts {
             pass.run(0, count, 0);
             return;
         }
-        List<ForkJoinTask<?>> tasks = new ArrayList<>();
+        List<Callable<Void>> tasks = new ArrayList<>();
         for (int p = 0; p < parts; p++) {
             int part = p;
-            tasks.add(pool.submit(() -> pass.run(start(part), start(part + 1), part)));
+            tasks.add(() -> {
+                pass.run(start(part), start(part + 1), part);
+                return null;
+            });
         }
-        for (ForkJoinTask<?> task : tasks) {
-            task.join(); // what the pass threw, thrown again
+        for (Future<Void> done : pool.invokeAll(tasks)) {
+            join(done);
+        }
+    }
+
+    /** The result of a task on the pool, once it is done; what it threw, thrown again. */
+    static <T> T join(Future<T> task) {
+        try {
+            return task.get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("building was interrupted", e);
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof Error error) {
+                throw error;
+            }
+            throw e.getCause() instanceof RuntimeException failure ? failure : new IllegalStateException(e.getCause());
         }
     }
 

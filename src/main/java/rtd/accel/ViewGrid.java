@@ -18,9 +18,7 @@ import rtd.scene.Scene;
  * the test. A ray tests its cell's objects nearest first, and stops at the first that lies beyond
  * a hit it has found: where objects hide each other, it tests the few in front.
  *
- * <p>The cell's side is a power of two, chosen for the scene: small cells let a ray test fewer
- * objects, but an object then lies in more cells, which costs building and memory
- * ({@link ViewGridBuilder}).
+ * <p>The cell's side is a power of two, chosen for the scene ({@link CellSide}).
  */
 public final class ViewGrid {
 
