@@ -41,10 +41,7 @@ final class OrthographicFootprint implements ImageFootprint {
     private final double driftU;
     private final double driftV;
 
-    /**
-     * The footprints on a {@code width × height} image of {@code camera}, for rays through the
-     * pixels' corners and through points up to {@code latestOffset} (less than 1) into them.
-     */
+    /** As {@link ImageFootprint#of} makes it. */
     OrthographicFootprint(OrthographicCamera camera, int width, int height, double latestOffset) {
         Vector3f dir = camera.direction();
         position = ImageFootprint.numbers(camera.position());

@@ -74,7 +74,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         return raysInRange ? KnownShapes.roundingFrom(object, eye, box, 0) : KnownShapes.rounding(object);
     }
 
-    /** Whether the rays' directions are in the range {@link KnownShapes#roundingFrom} speaks of. */
+    /** {@link #raysInRange}, for tests. */
     boolean raysInRange() {
         return raysInRange;
     }
