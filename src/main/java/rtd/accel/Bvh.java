@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.Arrays;
 import java.util.List;
 import rtd.geometry.IGeometry;
 import rtd.scene.Scene;
@@ -50,7 +49,7 @@ public final class Bvh {
     final int maxDepth;
     final List<IGeometry> objects;
 
-    private Bvh(float[] boxes, int[] nodes, LeafObjects leaves, int[] unboundedOrder, int maxDepth,
+    Bvh(float[] boxes, int[] nodes, LeafObjects leaves, int[] unboundedOrder, int maxDepth,
             List<IGeometry> objects) {
         this.boxes = boxes;
         this.nodes = nodes;
@@ -66,17 +65,7 @@ public final class Bvh {
 
     /** Builds the hierarchy for {@code scene}, on this thread. */
     public static Bvh build(Scene scene) {
-        List<IGeometry> objects = scene.objects();
-        BvhBuilder builder = new BvhBuilder(objects);
-        builder.build();
-        int[] order = builder.order();
-        // the builder's own array, unless objects without a box (planes) follow the tree's at its end
-        int[] fileOrder = order.length == builder.count() ? order : Arrays.copyOf(order, builder.count());
-        float[] roundings = new float[2 * fileOrder.length];
-        LeafObjects leaves = new LeafObjects(objects, fileOrder, builder.spareInts(), builder.spareFloats(), null,
-                roundings);
-        putRoundings(builder.boxes(), builder.nodes(), roundings);
-        return new Bvh(builder.boxes(), builder.nodes(), leaves, builder.unbounded(), builder.maxDepth(), objects);
+        return new BvhBuilder(scene.objects()).build();
     }
 
     /**
@@ -93,33 +82,21 @@ public final class Bvh {
      * than the node itself ({@link BvhBuilder}), so one pass backwards meets them first. The
      * objects' own are in {@code roundings}, in leaf order ({@link LeafObjects}).
      */
-    private static void putRoundings(float[] boxes, int[] nodes, float[] roundings) {
+    static void putRoundings(float[] boxes, int[] nodes, float[] roundings) {
         for (int node = nodes.length / 2 - 1; node >= 0; node--) {
             int at = BOX * node + ROUNDING;
             if (nodes[2 * node + 1] == INNER) {
                 int child = BOX * nodes[2 * node] + ROUNDING;
                 boxes[at] = Math.max(boxes[child], boxes[child + BOX]);
                 boxes[at + 1] = Math.max(boxes[child + 1], boxes[child + BOX + 1]);
-            } else {
-                leafRounding(nodes[2 * node], nodes[2 * node + 1], roundings, boxes, at);
+            } else { // a leaf: the largest of its objects', linear and quadratic each
+                int first = nodes[2 * node];
+                for (int i = first; i < first + nodes[2 * node + 1]; i++) {
+                    boxes[at] = Math.max(boxes[at], roundings[2 * i]);
+                    boxes[at + 1] = Math.max(boxes[at + 1], roundings[2 * i + 1]);
+                }
             }
         }
-    }
-
-    /**
-     * The largest rounding of the {@code count} objects from place {@code first} in leaf order,
-     * as {@link Rounding#max} finds it, written to {@code into[at]} (linear) and
-     * {@code into[at + 1]} (quadratic).
-     */
-    private static void leafRounding(int first, int count, float[] roundings, float[] into, int at) {
-        float linear = 0;
-        float quadratic = 0;
-        for (int i = first; i < first + count; i++) {
-            linear = Math.max(linear, roundings[2 * i]);
-            quadratic = Math.max(quadratic, roundings[2 * i + 1]);
-        }
-        into[at] = linear;
-        into[at + 1] = quadratic;
     }
 
     /**

@@ -73,47 +73,15 @@ final class BvhBuilder {
         nodes = new int[2 * room];
     }
 
-    int count() {
-        return count;
-    }
-
-    int[] unbounded() {
-        return unbounded;
-    }
-
-    /** The objects' places in the file, in leaf order ({@link #count} of them), then those without a box. */
-    int[] order() {
-        return orders[0];
-    }
-
-    /** The second set of arrays, which the tree no longer needs once built: room for {@link LeafObjects}. */
-    int[] spareInts() {
-        return orders[1];
-    }
-
-    float[] spareFloats() {
-        return objectBoxes[1];
-    }
-
-    /** Each node's box at {@code Bvh.BOX·i}, its rounding not yet filled in. */
-    float[] boxes() {
-        return boxes;
-    }
-
-    int[] nodes() {
-        return nodes;
-    }
-
-    int maxDepth() {
-        return maxDepth;
-    }
-
     /** A node that waits to be built: its places in set {@code side}, and its extent if known. */
     private record Pending(int node, int start, int end, int depth, float[] extent, int side) {
     }
 
-    /** Builds the tree. */
-    void build() {
+    /**
+     * Builds the tree, and the {@link Bvh} of it: the objects packed in leaf order into the second set of arrays, which
+     * the tree no longer needs ({@link LeafObjects}), and each node grown by its objects' rounding.
+     */
+    Bvh build() {
         ArrayDeque<Pending> waiting = new ArrayDeque<>();
         waiting.push(new Pending(0, 0, count, 0, null, 0));
         while (!waiting.isEmpty()) {
@@ -128,6 +96,12 @@ final class BvhBuilder {
         }
         boxes = Arrays.copyOf(boxes, Bvh.BOX * nodeCount);
         nodes = Arrays.copyOf(nodes, 2 * nodeCount);
+        // the first set's own array, unless objects without a box (planes) follow the tree's at its end
+        int[] fileOrder = orders[0].length == count ? orders[0] : Arrays.copyOf(orders[0], count);
+        float[] roundings = new float[2 * count];
+        LeafObjects leaves = new LeafObjects(objects, fileOrder, orders[1], objectBoxes[1], null, roundings);
+        Bvh.putRoundings(boxes, nodes, roundings);
+        return new Bvh(boxes, nodes, leaves, unbounded, maxDepth, objects);
     }
 
     /** Makes the {@code waiting} node a leaf (answers null) or an inner node, and answers its children. */

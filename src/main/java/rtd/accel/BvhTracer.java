@@ -2,7 +2,6 @@ package rtd.accel;
 
 import rtd.geometry.Hit;
 import rtd.math.Ray;
-import rtd.math.Vector3f;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.Tracer;
@@ -44,7 +43,10 @@ public final class BvhTracer implements Tracer {
 
     @Override
     public Hit nearestHit(Ray ray) {
-        trace(ray.origin(), ray.direction());
+        rays++;
+        hit.start(ray);
+        hit.testUnbounded();
+        walkTree();
         return hit.hit(ray);
     }
 
@@ -56,9 +58,7 @@ public final class BvhTracer implements Tracer {
     @Override
     public boolean blocked(Ray ray, float distance) {
         rays++;
-        Vector3f origin = ray.origin();
-        Vector3f direction = ray.direction();
-        hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+        hit.start(ray);
         hit.limitTo(distance);
         hit.testUnbounded();
         if (hit.best() < 0) {
@@ -73,13 +73,6 @@ public final class BvhTracer implements Tracer {
             }
         }
         return hit.best() >= 0;
-    }
-
-    private void trace(Vector3f origin, Vector3f direction) {
-        rays++;
-        hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
-        hit.testUnbounded();
-        walkTree();
     }
 
     /** The bundle's rays walk the tree one by one, from their numbers, without a {@link Ray} each. */

@@ -28,16 +28,11 @@ final class CellSide {
      * much of the image.
      */
     static int choose(List<IGeometry> objects, ImageFootprint footprint, int width, int height, int samples) {
-        int count = objects.size();
         int[] sample = footprint.ofSample(objects, SAMPLE);
         int best = 0;
         double bestCost = Double.POSITIVE_INFINITY;
         for (int shift = 0; shift < 31; shift++) {
-            long entries = 0;
-            for (int at = 0; at < sample.length; at += 4) {
-                entries += cellsOf(sample, at, shift);
-            }
-            double estimate = sample.length == 0 ? 0 : (double) entries * count / (sample.length / 4.0);
+            double estimate = estimate(sample, objects.size(), shift);
             double rays = (double) (1L << (2 * shift)) * samples * samples;
             double cost = estimate * (1 + rays) * (estimate > MOST_ENTRIES ? 1e6 : 1);
             if (cost <= bestCost) { // on a tie the larger cells: an empty grid is one cell
@@ -51,6 +46,18 @@ final class CellSide {
         return best;
     }
 
+    /**
+     * How many entries a grid of cells of side {@code 1 << shift} gets for {@code count} objects, estimated from the
+     * footprints of a sample of them ({@link ImageFootprint#ofSample}); of side 1, how many tests their rays run.
+     */
+    static double estimate(int[] sample, int count, int shift) {
+        long entries = 0;
+        for (int at = 0; at < sample.length; at += 4) {
+            entries += cellsOf(sample, at, shift);
+        }
+        return sample.length == 0 ? 0 : (double) entries * count / (sample.length / 4.0);
+    }
+
     /** The number of cells of side {@code 1 << shift} that the footprint at {@code at} overlaps. */
     private static long cellsOf(int[] footprints, int at, int shift) {
         if (footprints[at] > footprints[at + 2]) {
@@ -59,10 +66,5 @@ final class CellSide {
         long across = (footprints[at + 2] >> shift) - (footprints[at] >> shift) + 1;
         long down = (footprints[at + 3] >> shift) - (footprints[at + 1] >> shift) + 1;
         return across * down;
-    }
-
-    /** How many cells of side {@code 1 << shift} cover a {@code width × height} image. */
-    static int cellCount(int width, int height, int shift) {
-        return ViewGrid.cellsAlong(width, shift) * ViewGrid.cellsAlong(height, shift);
     }
 }

@@ -44,7 +44,10 @@ public final class HitImage {
     final float[] distance;
     /** The names of the kinds of the objects with a box ({@link LeafObjects#kindNames}). */
     final String[] kindNames;
-    /** Per pixel, per kind ({@code tests[pixel · kinds + kind]}): the tests its ray ran on objects with a box. */
+    /**
+     * Per pixel, per kind ({@code tests[pixel · kinds + kind]}): the tests its ray ran on objects with a box; null
+     * where they are all of one kind, whose tests are a pixel's {@link #rayTests} less those without a box.
+     */
     final int[] tests;
     /** Per pixel: all the tests its ray ran, the objects without a box' too. */
     final int[] rayTests;
@@ -61,7 +64,7 @@ public final class HitImage {
         this.t = new float[width * height];
         this.distance = new float[width * height];
         this.kindNames = tiles.objects.leaves.kindNames;
-        this.tests = new int[width * height * kindNames.length];
+        this.tests = kindNames.length == 1 ? null : new int[width * height * kindNames.length];
         this.rayTests = new int[width * height];
         this.unbounded = tiles.objects.unbounded;
         this.entries = tiles.entries();
@@ -78,11 +81,7 @@ public final class HitImage {
         }
         List<IGeometry> objects = scene.objects();
         int[] sample = ImageFootprint.of(scene.camera(), width, height, 0).ofSample(objects, CellSide.SAMPLE);
-        double tests = 0;
-        for (int at = 0; at < sample.length; at += 4) {
-            tests += Math.max(0, sample[at + 2] - sample[at] + 1) * (double) (sample[at + 3] - sample[at + 1] + 1);
-        }
-        return tests * objects.size() / Math.max(1, sample.length / 4) <= MOST_TESTS_A_PIXEL * width * height;
+        return CellSide.estimate(sample, objects.size(), 0) <= MOST_TESTS_A_PIXEL * width * height;
     }
 
     /** The image of {@code scene}'s hits for a {@code width × height} picture, built with {@code threads} threads. */
@@ -106,12 +105,9 @@ public final class HitImage {
         });
     }
 
-    /** Whether the bundle holds rays of this image's camera and picture, through the corners of pixels of the picture. */
+    /** Whether the bundle holds rays of this image's camera and picture, through the corners of its pixels. */
     boolean serves(RayBundle bundle) {
-        RayBundle.Pixels p = bundle.pixels();
-        return p != null && p.camera() == scene.camera() && p.width() == width && p.height() == height
-                && p.left() >= 0 && p.top() >= 0 && p.right() <= width && p.bottom() <= height
-                && p.sampleX() == 0 && p.sampleY() == 0;
+        return ViewGrid.serves(bundle, scene.camera(), width, height, 0);
     }
 
     /** The object entries of all tiles together, an object counted once per tile its footprint overlaps. */

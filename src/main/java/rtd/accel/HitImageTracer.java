@@ -1,9 +1,7 @@
 package rtd.accel;
 
 import java.util.Map;
-import java.util.TreeMap;
 import rtd.geometry.Hit;
-import rtd.geometry.IGeometry;
 import rtd.math.Ray;
 import rtd.render.HitBuffer;
 import rtd.render.LinearTracer;
@@ -53,20 +51,29 @@ public final class HitImageTracer implements Tracer {
             return;
         }
         RayBundle.Pixels p = bundle.pixels();
-        int kinds = tests.length;
         int across = p.right() - p.left();
         for (int y = p.top(), i = 0; y < p.bottom(); y++, i += across) {
             int pixel = y * image.width + p.left();
             hits.set(i, across, pixel, image.index, image.t, image.distance, image.rayTests);
-            for (int k = 0; k < kinds; k++) {
-                long ofKind = 0;
-                for (int at = pixel * kinds + k, end = (pixel + across) * kinds; at < end; at += kinds) {
-                    ofKind += image.tests[at];
-                }
-                tests[k] += ofKind;
-            }
+            countTests(pixel, across);
         }
         rays += bundle.count();
+    }
+
+    /** Counts by kind the tests of pixels {@code [pixel, pixel + across)} of the image. */
+    private void countTests(int pixel, int across) {
+        if (image.tests == null) { // one kind: a pixel's tests less those of the objects without a box
+            for (int at = pixel; at < pixel + across; at++) {
+                tests[0] += image.rayTests[at] - image.unbounded.length;
+            }
+            return;
+        }
+        int kinds = tests.length;
+        for (int k = 0; k < kinds; k++) {
+            for (int at = pixel * kinds + k, end = (pixel + across) * kinds; at < end; at += kinds) {
+                tests[k] += image.tests[at];
+            }
+        }
     }
 
     /** The camera's rays of a run of squares, each read from its pixel, all at once. */
@@ -90,13 +97,7 @@ public final class HitImageTracer implements Tracer {
 
     @Override
     public WorkCount work() {
-        Map<String, Long> byKind = new TreeMap<>();
-        for (int k = 0; k < tests.length; k++) {
-            byKind.merge(image.kindNames[k], tests[k], Long::sum);
-        }
-        for (IGeometry object : image.unbounded) {
-            byKind.merge(object.kind(), rays, Long::sum);
-        }
+        Map<String, Long> byKind = TestCounts.byName(image.kindNames, tests, image.unbounded, rays);
         WorkCount own = new WorkCount(rays, byKind, 0).answeredBy("image of hits");
         return others != null ? own.plus(others.work()) : own;
     }

@@ -5,6 +5,7 @@ import rtd.camera.ICamera;
 import rtd.camera.OrthographicCamera;
 import rtd.camera.PerspectiveCamera;
 import rtd.geometry.IGeometry;
+import rtd.math.Vector3f;
 
 /**
  * Where on the image a camera may see an object: the rectangle of pixels whose rays
@@ -19,18 +20,17 @@ import rtd.geometry.IGeometry;
  * perspective camera's eye ({@link PerspectiveFootprint}), widened by what the rounding of the
  * rays' own numbers can move them. Both work in double from the camera's float numbers, with
  * margins far above double rounding: the grid may test an object in vain, but never leaves out
- * one that the paper's loop would find. The {@link LightGrids} use the same idea seen from a light
+ * one that the paper's loop would find. The {@link PointGrids} use the same idea seen from a point
  * ({@link PointFootprint}).
  */
 interface ImageFootprint {
 
     /**
-     * The pixels {@code [x0, x1] × [y0, y1]} (inclusive, within the image) whose rays may hit
-     * the object of box {@code boxes[at .. at+5]} and rounding {@code linear}, {@code quadratic},
-     * into {@code into[to .. to+3]} as x0, y0, x1, y1; and the answer: a distance from the ray's
-     * origin before which none of them hits it (for a {@link PointFootprint}, from its point X). NaN if no ray of the picture can hit it (what it
-     * wrote into {@code into} then means nothing); −∞ where the numbers cannot bound it (then all
-     * pixels).
+     * The pixels {@code [x0, x1] × [y0, y1]} (inclusive, within the image) whose rays may hit the object of box
+     * {@code boxes[at .. at+5]} and rounding {@code linear}, {@code quadratic}, into {@code into[to .. to+3]} as x0,
+     * y0, x1, y1; and the answer: a distance from the ray's origin before which none of them hits it (for a
+     * {@link PointFootprint}, from its point X); NaN if no ray of the picture can hit it (what it wrote into
+     * {@code into} then means nothing); −∞ where the numbers cannot bound it (then all pixels).
      */
     float put(float[] boxes, int at, float linear, float quadratic, int[] into, int to);
 
@@ -102,11 +102,22 @@ interface ImageFootprint {
     }
 
     /**
-     * The pixels p of {@code [0, size)} with a ray at {@code p + offset} between {@code one} and
-     * {@code other} for some offset {@code 0 ≤ offset ≤ latestOffset}, as first and last at
-     * {@code into[to]} and {@code into[to + 2]}; false if there are none.
+     * The pixels p of a {@code width × height} image with a ray at {@code p + offset} between {@code left} and
+     * {@code right}, and between {@code top} and {@code bottom}, for some offset {@code 0 ≤ offset ≤ latestOffset},
+     * into {@code into[to ..]} as {@link #put} writes them; and its answer: a distance below {@code nearest}, by more
+     * than rounding its double computation could have moved it (−∞ for NaN), or NaN if there are no such pixels.
      */
-    static boolean range(double one, double other, int size, double latestOffset, int[] into, int to) {
+    static float rectangle(double left, double right, double top, double bottom, int width, int height,
+            double latestOffset, double nearest, int[] into, int to) {
+        if (!(range(left, right, width, latestOffset, into, to) && range(top, bottom, height, latestOffset, into,
+                to + 1))) {
+            return Float.NaN;
+        }
+        float below = Math.nextDown((float) (nearest - 1e-6 * Math.abs(nearest)));
+        return below == below ? below : Float.NEGATIVE_INFINITY;
+    }
+
+    private static boolean range(double one, double other, int size, double latestOffset, int[] into, int to) {
         double first = Math.max(0, Math.ceil(Math.min(one, other) - latestOffset));
         double last = Math.min(size - 1, Math.floor(Math.max(one, other)));
         if (!(first <= last)) { // also for NaN
@@ -117,21 +128,13 @@ interface ImageFootprint {
         return true;
     }
 
-    /** All pixels of a {@code width × height} image. */
-    static void whole(int width, int height, int[] into, int to) {
+    /** All pixels of a {@code width × height} image, for an object the numbers cannot bound; answers −∞. */
+    static float whole(int width, int height, int[] into, int to) {
         into[to] = 0;
         into[to + 1] = 0;
         into[to + 2] = width - 1;
         into[to + 3] = height - 1;
-    }
-
-    /**
-     * A distance below {@code distance}, by more than rounding its double computation could
-     * have moved it; −∞ for NaN.
-     */
-    static float below(double distance) {
-        float below = Math.nextDown((float) (distance - 1e-6 * Math.abs(distance)));
-        return below == below ? below : Float.NEGATIVE_INFINITY;
+        return Float.NEGATIVE_INFINITY;
     }
 
     /**
@@ -148,7 +151,7 @@ interface ImageFootprint {
         return Math.sqrt(outside(x0, x1) + outside(y0, y1) + outside(z0, z1));
     }
 
-    /** How far 0 lies from the farthest point of the box {@code [x0, x1] × [y0, y1] × [z0, z1]}: its farthest corner. */
+    /** How far 0 lies from the farthest corner of the box {@code [x0, x1] × [y0, y1] × [z0, z1]}. */
     static double farthest(double x0, double y0, double z0, double x1, double y1, double z1) {
         return Math.sqrt(farther(x0, x1) + farther(y0, y1) + farther(z0, z1));
     }
@@ -163,14 +166,31 @@ interface ImageFootprint {
         return least(x0, x1, axis[0]) + least(y0, y1, axis[1]) + least(z0, z1, axis[2]);
     }
 
+    /** The largest dot product of a point of the box {@code [x0, x1] × [y0, y1] × [z0, z1]} with {@code axis}. */
+    static double mostAlong(double x0, double y0, double z0, double x1, double y1, double z1, double[] axis) {
+        return most(x0, x1, axis[0]) + most(y0, y1, axis[1]) + most(z0, z1, axis[2]);
+    }
+
+    static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    /** A vector's numbers, in double. */
+    static double[] numbers(Vector3f vector) {
+        return new double[] {vector.x(), vector.y(), vector.z()};
+    }
+
     /** The square of how far 0 lies outside {@code [low, high]}. */
     private static double outside(double low, double high) {
         double outside = Math.max(0, Math.max(low, -high));
         return outside * outside;
     }
 
-    /** The least of {@code low·factor} and {@code high·factor}. */
-    static double least(double low, double high, double factor) {
+    private static double least(double low, double high, double factor) {
         return Math.min(low * factor, high * factor);
+    }
+
+    private static double most(double low, double high, double factor) {
+        return Math.max(low * factor, high * factor);
     }
 }

@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.scene.DepthTest;
 import rtd.geometry.IGeometry;
-import rtd.geometry.Intersection;
 import rtd.geometry.Triangle;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
@@ -35,7 +34,7 @@ final class LeafObjects {
     final byte[] kinds;
     /** Each object's way to test ({@link PackedTests#SPHERE}, ...), beside it for the hot loop. */
     private final byte[] testOf;
-    /** The names of the kinds (a kind is a name and a way to test), in the order the leaves meet them, for statistics. */
+    /** The names of the kinds (a kind is a name and a way to test), in the order the leaves meet them. */
     final String[] kindNames;
     /**
      * Where each object's numbers start in its array ({@link #arrays}); longer than the objects,
@@ -197,8 +196,8 @@ final class LeafObjects {
             float[] array = arrays[i];
             return PackedTests.t(test, array != null ? array : numbers, offsets[i], ox, oy, oz, dx, dy, dz, dd);
         }
-        Intersection hit = scene.get(fileOrder[i]).intersect(new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz)));
-        return hit.t();
+        Ray ray = new Ray(new Vector3f(ox, oy, oz), new Vector3f(dx, dy, dz));
+        return scene.get(fileOrder[i]).intersect(ray).t();
     }
 
     /**
@@ -206,6 +205,6 @@ final class LeafObjects {
      * rounded as {@link rtd.geometry.Intersection#at} rounds it.
      */
     static float distance(float t, float ox, float oy, float oz, float dx, float dy, float dz) {
-        return DepthTest.distance(ox + dx * t, oy + dy * t, oz + dz * t, ox, oy, oz); // P = O + t·R as Ray.pointAt rounds it
+        return DepthTest.distance(ox + dx * t, oy + dy * t, oz + dz * t, ox, oy, oz);
     }
 }

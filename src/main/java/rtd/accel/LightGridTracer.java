@@ -2,7 +2,6 @@ package rtd.accel;
 
 import java.util.List;
 import rtd.math.Ray;
-import rtd.math.Vector3f;
 import rtd.render.Tracer;
 
 /**
@@ -26,9 +25,7 @@ final class LightGridTracer extends PointGridTracer {
                 rays++;
                 ViewGrid cells = grids[g].cells();
                 NearestHit hit = hits[g];
-                Vector3f origin = ray.origin();
-                Vector3f direction = ray.direction();
-                hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+                hit.start(ray);
                 hit.limitTo(distance);
                 hit.testUnbounded();
                 hit.testPlacesUntilHit(cells.places, cells.cellStart[cell], cells.cellStart[cell + 1], cells.nearest,

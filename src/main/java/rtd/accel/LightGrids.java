@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
@@ -20,18 +19,7 @@ import rtd.scene.Scene;
  * end at a light, runs too far, or comes from outside the picture) goes to the tracer for the
  * others. Not in the paper or Part II.
  */
-public final class LightGrids {
-
-    /**
-     * How many objects all the grids may hold copies of together: each packs every object's
-     * numbers for the test, which for a million triangles is most of the memory. The lights after that
-     * many (the first in the file get grids, and the first light always) leave their shadow rays
-     * to the tree.
-     */
-    static final long MOST_PACKED = 2_000_000;
-    /** The side of a light's picture at least and at most, in pixels: 4,096² cells are as many as memory bears. */
-    private static final int SMALLEST = 16;
-    private static final int LARGEST = 4096;
+public final class LightGrids extends PointGrids<LightGrids.Grid> {
 
     /**
      * One light's grid: the footprints seen from it and the cells of its picture ({@code cells.width}
@@ -39,7 +27,7 @@ public final class LightGrids {
      * ({@link Light#clearance}): a ray is served as if it ran on to the light, where the grid's
      * geometry is exact, and its hits are still only those nearer than its own end.
      */
-    record Grid(PointFootprint footprint, ViewGrid cells, float clearance) {
+    record Grid(PointFootprint footprint, ViewGrid cells, float clearance) implements PointGrids.Grid {
 
         /**
          * The grid of {@code objects} seen from {@code light}, whose objects with a box lie in
@@ -51,9 +39,7 @@ public final class LightGrids {
             if (footprint == null) {
                 return null;
             }
-            // no camera: the grid's "pixels" are directions from the light; a ray shows anywhere in its pixel (1)
-            ViewGrid cells = new ViewGridBuilder(objects, size, size, pool).build(footprint, null, 1, 1);
-            return new Grid(footprint, cells, light.clearance());
+            return new Grid(footprint, PointGrids.cells(objects, footprint, size, pool), light.clearance());
         }
 
         /**
@@ -87,10 +73,8 @@ public final class LightGrids {
     /** No grid: every shadow ray goes to the tracer for the others. */
     public static final LightGrids NONE = new LightGrids(List.of());
 
-    private final List<Grid> grids;
-
     private LightGrids(List<Grid> grids) {
-        this.grids = grids;
+        super(grids);
     }
 
     /**
@@ -109,63 +93,13 @@ public final class LightGrids {
     static LightGrids build(Scene scene, int width, int height, int samples, int threads, long mostPacked) {
         List<IGeometry> objects = scene.objects();
         float[] box = boxOf(objects);
-        int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples));
-        long most = Math.max(1, mostPacked / Math.max(1, objects.size()));
-        return Parts.onPool(threads, objects.size(), pool -> {
-            List<Grid> grids = new ArrayList<>();
-            for (Light light : scene.lights()) {
-                if (box == null || grids.size() >= most) {
-                    break;
-                }
-                Grid grid = Grid.build(objects, box, light, size, pool);
-                if (grid != null) {
-                    grids.add(grid);
-                }
-            }
-            return new LightGrids(List.copyOf(grids));
-        });
-    }
-
-    /** The box of all objects that have a finite one, or null if none has. */
-    static float[] boxOf(List<IGeometry> objects) {
-        float[] all = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
-                Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
-        float[] box = new float[6];
-        boolean any = false;
-        for (IGeometry object : objects) {
-            KnownShapes.putBox(object, box, 0);
-            if (ImageFootprint.isFinite(box)) {
-                any = true;
-                for (int k = 0; k < 3; k++) {
-                    all[k] = Math.min(all[k], box[k]);
-                    all[k + 3] = Math.max(all[k + 3], box[k + 3]);
-                }
-            }
-        }
-        return any ? all : null;
-    }
-
-    /** The grids, one for each light that has one. */
-    List<Grid> grids() {
-        return grids;
-    }
-
-    /** How many lights have a grid. */
-    public int count() {
-        return grids.size();
-    }
-
-    /** The objects in all the grids' cells together. */
-    public long entries() {
-        long entries = 0;
-        for (Grid grid : grids) {
-            entries += grid.cells().entries();
-        }
-        return entries;
+        int size = side(Math.sqrt((double) width * height) * samples);
+        return box == null ? NONE : new LightGrids(build(scene.lights(), objects.size(), threads, mostPacked,
+                (light, pool) -> Grid.build(objects, box, light, size, pool)));
     }
 
     /** A new tracer for the shadow rays these grids serve, and {@code others} for every other ray; one per thread. */
     public Tracer newTracer(Tracer others) {
-        return grids.isEmpty() ? others : new LightGridTracer(grids, others);
+        return grids().isEmpty() ? others : new LightGridTracer(grids(), others);
     }
 }

@@ -3,7 +3,6 @@ package rtd.accel;
 import java.util.List;
 import rtd.geometry.Hit;
 import rtd.math.Ray;
-import rtd.math.Vector3f;
 import rtd.render.Tracer;
 
 /**
@@ -33,9 +32,7 @@ final class MirrorGridTracer extends PointGridTracer {
                 rays++;
                 ViewGrid cells = grids[g].cells();
                 NearestHit hit = hits[g];
-                Vector3f origin = ray.origin();
-                Vector3f direction = ray.direction();
-                hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+                hit.start(ray);
                 hit.testUnbounded();
                 hit.testPlacesNearestFirst(cells.places, cells.cellStart[cell], cells.cellStart[cell + 1],
                         cells.nearest, grids[g].originFromImage(ray));

@@ -1,6 +1,5 @@
 package rtd.accel;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.camera.PerspectiveCamera;
@@ -24,16 +23,13 @@ import rtd.scene.Scene;
  * passes too far from X, as rays from mirrors seen in mirrors do, or that leaves the picture) goes
  * to the tracer for the others. Not in the paper or Part II.
  */
-public final class MirrorGrids {
+public final class MirrorGrids extends PointGrids<MirrorGrids.Grid> {
 
     /** The widest gap served, as a share of the eye's height over the mirror: the tree does better beyond. */
     private static final double WIDEST_GAP_PER_HEIGHT = 1e-3;
-    /** The side of a grid's picture at least and at most, in pixels, as for {@link LightGrids}. */
-    private static final int SMALLEST = 16;
-    private static final int LARGEST = 4096;
 
     /** One mirror's grid: the footprints seen from the eye's image, and the cells of its picture. */
-    record Grid(PointFootprint footprint, ViewGrid cells) {
+    record Grid(PointFootprint footprint, ViewGrid cells) implements PointGrids.Grid {
 
         /**
          * The grid of {@code objects}, whose objects with a box lie in {@code box}, seen from the
@@ -60,8 +56,7 @@ public final class MirrorGrids {
             if (footprint == null) {
                 return null;
             }
-            // no camera: the grid's "pixels" are directions from the image; a ray shows anywhere in its pixel (1)
-            return new Grid(footprint, new ViewGridBuilder(objects, size, size, pool).build(footprint, null, 1, 1));
+            return new Grid(footprint, PointGrids.cells(objects, footprint, size, pool));
         }
 
         /**
@@ -96,10 +91,8 @@ public final class MirrorGrids {
     /** No grid: every mirrored ray goes to the tracer for the others. */
     public static final MirrorGrids NONE = new MirrorGrids(List.of());
 
-    private final List<Grid> grids;
-
     private MirrorGrids(List<Grid> grids) {
-        this.grids = grids;
+        super(grids);
     }
 
     /**
@@ -108,51 +101,23 @@ public final class MirrorGrids {
      * threads; none without lights (flat colours follow no mirrored ray) or without the perspective
      * camera (the orthographic one has no eye to mirror). A mirror serves only the rays from its own
      * part of the image: the picture's side is half the image's, √(width · height) · samples / 2.
-     * The grids together hold copies of at most {@link LightGrids#MOST_PACKED} objects.
+     * The grids together hold copies of at most {@link #MOST_PACKED} objects.
      */
     public static MirrorGrids build(Scene scene, int width, int height, int samples, int threads) {
         List<IGeometry> objects = scene.objects();
-        float[] box = LightGrids.boxOf(objects);
+        float[] box = boxOf(objects);
         if (scene.lights().isEmpty() || !(scene.camera() instanceof PerspectiveCamera camera) || box == null) {
             return NONE;
         }
-        int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples / 2));
-        long most = Math.max(1, LightGrids.MOST_PACKED / Math.max(1, objects.size()));
-        return Parts.onPool(threads, objects.size(), pool -> {
-            List<Grid> built = new ArrayList<>();
-            for (IGeometry object : objects) {
-                if (built.size() < most && object instanceof Plane mirror && mirror.material().reflective() > 0) {
-                    Grid grid = Grid.build(objects, box, camera.position(), mirror, size, pool);
-                    if (grid != null) {
-                        built.add(grid);
-                    }
-                }
-            }
-            return new MirrorGrids(List.copyOf(built));
-        });
-    }
-
-    /** The grids, one for each mirror that has one. */
-    List<Grid> grids() {
-        return grids;
-    }
-
-    /** How many mirrors have a grid. */
-    public int count() {
-        return grids.size();
-    }
-
-    /** The objects in all the grids' cells together. */
-    public long entries() {
-        long entries = 0;
-        for (Grid grid : grids) {
-            entries += grid.cells().entries();
-        }
-        return entries;
+        List<Plane> mirrors = objects.stream().filter(object -> object instanceof Plane plane
+                && plane.material().reflective() > 0).map(Plane.class::cast).toList();
+        int size = side(Math.sqrt((double) width * height) * samples / 2);
+        return new MirrorGrids(build(mirrors, objects.size(), threads, MOST_PACKED,
+                (mirror, pool) -> Grid.build(objects, box, camera.position(), mirror, size, pool)));
     }
 
     /** A new tracer for the mirrored rays these grids serve, and {@code others} for every other ray; one per thread. */
     public Tracer newTracer(Tracer others) {
-        return grids.isEmpty() ? others : new MirrorGridTracer(grids, others);
+        return grids().isEmpty() ? others : new MirrorGridTracer(grids(), others);
     }
 }

@@ -1,9 +1,10 @@
 package rtd.accel;
 
-import rtd.scene.DepthTest;
 import java.util.Map;
 import rtd.geometry.Hit;
 import rtd.math.Ray;
+import rtd.math.Vector3f;
+import rtd.scene.DepthTest;
 
 /**
  * One ray, kept as numbers, and the nearest hit found for it so far: the state of the paper's
@@ -90,6 +91,13 @@ final class NearestHit {
         skipBeyond = Float.POSITIVE_INFINITY;
     }
 
+    /** {@link #start} on {@code ray}'s numbers. */
+    void start(Ray ray) {
+        Vector3f origin = ray.origin();
+        Vector3f direction = ray.direction();
+        start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+    }
+
     /**
      * Looks only for hits nearer than {@code distance} from the origin: boxes the ray enters
      * beyond it are skipped, as they are beyond a nearest hit.
@@ -106,7 +114,7 @@ final class NearestHit {
         return bvh.reach(ox, oy, oz, length);
     }
 
-    /** How much to grow the boxes of {@code node}'s children for a ray not in it beyond {@code reach} ({@link Bvh#growth}). */
+    /** How much to grow {@code node}'s children for a ray not in it beyond {@code reach} ({@link Bvh#growth}). */
     float growth(int node, float reach) {
         return bvh.growth(node, reach * length);
     }
@@ -234,7 +242,7 @@ final class NearestHit {
         }
     }
 
-    /** The depth test: the nearest hit wins, and on a tie the object that comes first in the file ({@link DepthTest}). */
+    /** The depth test: the nearest hit wins, and on a tie the one that comes first in the file ({@link DepthTest}). */
     private void consider(int index, int place, float t, float distance) {
         long key = DepthTest.key(distance, index);
         if (key < bestKey) {

@@ -1,7 +1,6 @@
 package rtd.accel;
 
 import rtd.camera.OrthographicCamera;
-import rtd.geometry.IGeometry;
 import rtd.math.Vector3f;
 
 /**
@@ -24,18 +23,11 @@ final class OrthographicFootprint implements ImageFootprint {
      */
     private static final double ORIGIN_ERROR = 1e-6;
 
-    private final double px;
-    private final double py;
-    private final double pz;
-    private final double rx;
-    private final double ry;
-    private final double rz;
-    private final double ux;
-    private final double uy;
-    private final double uz;
-    private final double vx;
-    private final double vy;
-    private final double vz;
+    private final double[] position;
+    /** The rays' direction R, of unit length. */
+    private final double[] along;
+    private final double[] u;
+    private final double[] v;
     private final double zoom;
     private final int width;
     private final int height;
@@ -49,37 +41,24 @@ final class OrthographicFootprint implements ImageFootprint {
     private final double driftU;
     private final double driftV;
 
-    /**
-     * The footprints on a {@code width × height} image of {@code camera}, for rays through the
-     * pixels' corners and through points up to {@code latestOffset} (less than 1) into them.
-     */
+    /** As {@link ImageFootprint#of} makes it. */
     OrthographicFootprint(OrthographicCamera camera, int width, int height, double latestOffset) {
-        Vector3f pos = camera.position();
         Vector3f dir = camera.direction();
-        Vector3f u = camera.widthVector();
-        Vector3f v = camera.heightVector();
-        px = pos.x();
-        py = pos.y();
-        pz = pos.z();
+        position = ImageFootprint.numbers(camera.position());
         double length = Math.sqrt((double) dir.x() * dir.x() + (double) dir.y() * dir.y() + (double) dir.z() * dir.z());
-        rx = dir.x() / length;
-        ry = dir.y() / length;
-        rz = dir.z() / length;
-        ux = u.x();
-        uy = u.y();
-        uz = u.z();
-        vx = v.x();
-        vy = v.y();
-        vz = v.z();
+        along = new double[] {dir.x() / length, dir.y() / length, dir.z() / length};
+        u = ImageFootprint.numbers(camera.widthVector());
+        v = ImageFootprint.numbers(camera.heightVector());
         zoom = camera.zoom();
         this.width = width;
         this.height = height;
         halfWidth = width / 2; // as Listing 4.1 divides
         halfHeight = height / 2;
         this.latestOffset = latestOffset;
-        originError = ORIGIN_ERROR * (Math.abs(px) + Math.abs(py) + Math.abs(pz) + (width + height + 2) / Math.abs(zoom));
-        driftU = Math.abs(rx * ux + ry * uy + rz * uz);
-        driftV = Math.abs(rx * vx + ry * vy + rz * vz);
+        originError = ORIGIN_ERROR * (Math.abs(position[0]) + Math.abs(position[1]) + Math.abs(position[2])
+                + (width + height + 2) / Math.abs(zoom));
+        driftU = Math.abs(ImageFootprint.dot(along, u));
+        driftV = Math.abs(ImageFootprint.dot(along, v));
     }
 
     @Override
@@ -87,33 +66,30 @@ final class OrthographicFootprint implements ImageFootprint {
         double hx = (boxes[at + 3] - (double) boxes[at]) / 2;
         double hy = (boxes[at + 4] - (double) boxes[at + 1]) / 2;
         double hz = (boxes[at + 5] - (double) boxes[at + 2]) / 2;
-        double cx = (boxes[at] + (double) boxes[at + 3]) / 2 - px;
-        double cy = (boxes[at + 1] + (double) boxes[at + 4]) / 2 - py;
-        double cz = (boxes[at + 2] + (double) boxes[at + 5]) / 2 - pz;
-        double middle = cx * rx + cy * ry + cz * rz;
-        double depth = Math.abs(rx) * hx + Math.abs(ry) * hy + Math.abs(rz) * hz;
+        double[] middle = {(boxes[at] + (double) boxes[at + 3]) / 2 - position[0],
+                (boxes[at + 1] + (double) boxes[at + 4]) / 2 - position[1],
+                (boxes[at + 2] + (double) boxes[at + 5]) / 2 - position[2]};
+        double ahead = ImageFootprint.dot(middle, along);
+        double depth = Math.abs(along[0]) * hx + Math.abs(along[1]) * hy + Math.abs(along[2]) * hz;
         double widest = linear + KnownShapes.ROUNDING_CONE;
-        if (middle + depth + originError < 0) {
+        if (ahead + depth + originError < 0) {
             return Float.NaN; // wholly behind the rays' origins: a hit lies no farther from the box than √3 growths
         }
         // a hit runs L ≤ farSide + √3·growth(L) ≤ farSide + √3·widest·L from the plane
-        double reach = (middle + depth + originError) / (1 - Math.sqrt(3) * widest);
+        double reach = (ahead + depth + originError) / (1 - Math.sqrt(3) * widest);
         double grow = ImageFootprint.growth(linear, quadratic, reach);
-        double a = cx * ux + cy * uy + cz * uz;
-        double b = cx * vx + cy * vy + cz * vz;
-        double halfA = Math.abs(ux) * (hx + grow) + Math.abs(uy) * (hy + grow) + Math.abs(uz) * (hz + grow)
+        double a = ImageFootprint.dot(middle, u);
+        double b = ImageFootprint.dot(middle, v);
+        double halfA = Math.abs(u[0]) * (hx + grow) + Math.abs(u[1]) * (hy + grow) + Math.abs(u[2]) * (hz + grow)
                 + reach * driftU + originError;
-        double halfB = Math.abs(vx) * (hx + grow) + Math.abs(vy) * (hy + grow) + Math.abs(vz) * (hz + grow)
+        double halfB = Math.abs(v[0]) * (hx + grow) + Math.abs(v[1]) * (hy + grow) + Math.abs(v[2]) * (hz + grow)
                 + reach * driftV + originError;
         if (!(widest * Math.sqrt(3) < 0.5 && Double.isFinite(halfA + halfB + a + b))) {
-            ImageFootprint.whole(width, height, into, to);
-            return Float.NEGATIVE_INFINITY;
+            return ImageFootprint.whole(width, height, into, to);
         }
-        boolean seen = ImageFootprint.range(halfWidth + zoom * (a - halfA), halfWidth + zoom * (a + halfA), width,
-                latestOffset, into, to)
-                && ImageFootprint.range(halfHeight + zoom * (b - halfB), halfHeight + zoom * (b + halfB), height,
-                        latestOffset, into, to + 1);
         // the hit P = O + t·R lies in the grown box, so |P − O| ≥ (P − O)·R/|R|: its near side less the origin's error
-        return seen ? ImageFootprint.below(middle - depth - Math.sqrt(3) * grow - originError) : Float.NaN;
+        return ImageFootprint.rectangle(halfWidth + zoom * (a - halfA), halfWidth + zoom * (a + halfA),
+                halfHeight + zoom * (b - halfB), halfHeight + zoom * (b + halfB), width, height, latestOffset,
+                ahead - depth - Math.sqrt(3) * grow - originError, into, to);
     }
 }

@@ -50,9 +50,9 @@ final class PerspectiveFootprint implements ImageFootprint {
         ox = eye.x();
         oy = eye.y();
         oz = eye.z();
-        forward = numbers(camera.forward());
-        right = numbers(camera.widthVector());
-        down = numbers(camera.heightVector());
+        forward = ImageFootprint.numbers(camera.forward());
+        right = ImageFootprint.numbers(camera.widthVector());
+        down = ImageFootprint.numbers(camera.heightVector());
         focal = camera.focalLength(width);
         this.width = width;
         this.height = height;
@@ -65,10 +65,6 @@ final class PerspectiveFootprint implements ImageFootprint {
         raysInRange = directionsInRange(forward, right, down, focal, width, height);
     }
 
-    private static double[] numbers(Vector3f vector) {
-        return new double[] {vector.x(), vector.y(), vector.z()};
-    }
-
     /**
      * Every ray leaves the eye: a shape may round less for such rays ({@link KnownShapes#roundingFrom}),
      * if their directions' lengths are in its range, as any camera's but the most extreme are.
@@ -78,7 +74,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         return raysInRange ? KnownShapes.roundingFrom(object, eye, box, 0) : KnownShapes.rounding(object);
     }
 
-    /** Whether the rays' directions are in the range {@link KnownShapes#roundingFrom} speaks of. */
+    /** {@link #raysInRange}, for tests. */
     boolean raysInRange() {
         return raysInRange;
     }
@@ -94,18 +90,15 @@ final class PerspectiveFootprint implements ImageFootprint {
         double x = width / 2.0 + 2;
         double y = height / 2.0 + 2;
         double longest = (Math.abs(focal) * sum(forward) + x * sum(across) + y * sum(down)) * (1 + 1e-5);
-        double forwardLength = Math.sqrt(dot(forward, forward));
-        double shortest = (Math.abs(focal) * forwardLength * forwardLength - x * Math.abs(dot(across, forward))
-                - y * Math.abs(dot(down, forward))) / forwardLength * (1 - 1e-5);
+        double forwardLength = Math.sqrt(ImageFootprint.dot(forward, forward));
+        double shortest = (Math.abs(focal) * forwardLength * forwardLength
+                - x * Math.abs(ImageFootprint.dot(across, forward)) - y * Math.abs(ImageFootprint.dot(down, forward)))
+                / forwardLength * (1 - 1e-5);
         return shortest >= KnownShapes.SHORTEST_DIRECTION && longest <= KnownShapes.LONGEST_DIRECTION;
     }
 
     private static double sum(double[] v) {
         return Math.abs(v[0]) + Math.abs(v[1]) + Math.abs(v[2]);
-    }
-
-    private static double dot(double[] a, double[] b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
 
     @Override
@@ -123,8 +116,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         double grow = ImageFootprint.growth(linear, quadratic, reach);
         double nearest = ImageFootprint.distance(x0, y0, z0, x1, y1, z1) - Math.sqrt(3) * grow;
         if (!(widest * Math.sqrt(3) < 0.5 && Double.isFinite(grow))) {
-            ImageFootprint.whole(width, height, into, to);
-            return Float.NEGATIVE_INFINITY;
+            return ImageFootprint.whole(width, height, into, to);
         }
         x0 -= grow;
         y0 -= grow;
@@ -134,7 +126,7 @@ final class PerspectiveFootprint implements ImageFootprint {
         z1 += grow;
         // the corners' least and largest depth along F, and sides along u and v: sums of each axis' least and largest
         double depthLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, forward);
-        double depthMost = most(x0, x1, forward[0]) + most(y0, y1, forward[1]) + most(z0, z1, forward[2]);
+        double depthMost = ImageFootprint.mostAlong(x0, y0, z0, x1, y1, z1, forward);
         if (depthMost < -reach * backward) {
             return Float.NaN; // wholly behind the eye: a ray's points have (P − O)·F = t·D·F ≥ 0, give or take rounding
         }
@@ -166,27 +158,19 @@ final class PerspectiveFootprint implements ImageFootprint {
             bottom = Double.POSITIVE_INFINITY;
         } else { // reaching behind the eye's plane: a side is bounded only where the box keeps to it
             double acrossLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, right);
-            double acrossMost = most(x0, x1, right[0]) + most(y0, y1, right[1]) + most(z0, z1, right[2]);
+            double acrossMost = ImageFootprint.mostAlong(x0, y0, z0, x1, y1, z1, right);
             double downLeast = ImageFootprint.leastAlong(x0, y0, z0, x1, y1, z1, this.down);
-            double downMost = most(x0, x1, this.down[0]) + most(y0, y1, this.down[1]) + most(z0, z1, this.down[2]);
+            double downMost = ImageFootprint.mostAlong(x0, y0, z0, x1, y1, z1, this.down);
             left = acrossLeast > 0 ? focal * acrossLeast / depthMost : Double.NEGATIVE_INFINITY;
             rightmost = acrossMost < 0 ? focal * acrossMost / depthMost : Double.POSITIVE_INFINITY;
             top = downLeast > 0 ? focal * downLeast / depthMost : Double.NEGATIVE_INFINITY;
             bottom = downMost < 0 ? focal * downMost / depthMost : Double.POSITIVE_INFINITY;
         }
         if (Double.isNaN(left) || Double.isNaN(rightmost) || Double.isNaN(top) || Double.isNaN(bottom)) {
-            ImageFootprint.whole(width, height, into, to);
-            return Float.NEGATIVE_INFINITY;
+            return ImageFootprint.whole(width, height, into, to);
         }
-        boolean seen = ImageFootprint.range(halfWidth + left - margin, halfWidth + rightmost + margin, width,
-                latestOffset, into, to)
-                && ImageFootprint.range(halfHeight + top - margin, halfHeight + bottom + margin, height,
-                        latestOffset, into, to + 1);
-        return seen ? ImageFootprint.below(nearest) : Float.NaN;
-    }
-
-    /** The largest of {@code low·factor} and {@code high·factor}. */
-    private static double most(double low, double high, double factor) {
-        return Math.max(low * factor, high * factor);
+        return ImageFootprint.rectangle(halfWidth + left - margin, halfWidth + rightmost + margin,
+                halfHeight + top - margin, halfHeight + bottom + margin, width, height, latestOffset, nearest, into,
+                to);
     }
 }

@@ -51,11 +51,13 @@ final class PointFootprint implements ImageFootprint {
     private final double scale;
     private final double reach;
     private final double gap;
-    /** Leaving X, how far beyond X the rays start at least (S); NaN for rays towards X. */
+    /** Whether the rays served leave X (the mirrored rays), not run towards it (the shadow rays). */
+    private final boolean leaving;
+    /** Leaving X, how far beyond X the rays start at least (S). */
     private final double leastStart;
 
     private PointFootprint(Vector3f point, double[][] axes, double widest, int size, double reach, double gap,
-            double leastStart) {
+            boolean leaving, double leastStart) {
         pointX = point.x();
         pointY = point.y();
         pointZ = point.z();
@@ -67,6 +69,7 @@ final class PointFootprint implements ImageFootprint {
         this.scale = size / (2 * widest);
         this.reach = reach;
         this.gap = gap;
+        this.leaving = leaving;
         this.leastStart = leastStart;
     }
 
@@ -81,7 +84,7 @@ final class PointFootprint implements ImageFootprint {
      * it; or if the point lies so far that the gap is more than a few hundredths of the box's picture.
      */
     static PointFootprint around(Vector3f point, float[] box, int size) {
-        return seenFrom(point, box, size, Double.NaN, Double.NaN);
+        return seenFrom(point, box, size, false, 0, 0);
     }
 
     /**
@@ -90,33 +93,35 @@ final class PointFootprint implements ImageFootprint {
      * it and that start at least {@code leastStart} beyond it; null as for {@link #around}.
      */
     static PointFootprint leaving(Vector3f point, float[] box, int size, double leastStart, double gap) {
-        return leastStart > gap && gap > 0 ? seenFrom(point, box, size, leastStart, gap) : null;
+        return leastStart > gap && gap > 0 ? seenFrom(point, box, size, true, leastStart, gap) : null;
     }
 
-    /** {@link #around} for a NaN {@code leastStart} (and gap), else {@link #leaving}. */
-    private static PointFootprint seenFrom(Vector3f point, float[] box, int size, double leastStart, double leaving) {
+    /** {@link #leaving} if {@code leaving}, with its {@code leastStart} and gap, else {@link #around}. */
+    private static PointFootprint seenFrom(Vector3f point, float[] box, int size, boolean leaving, double leastStart,
+            double leavingGap) {
         double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
                 (box[2] + box[5]) / 2.0 - point.z()};
-        double distance = Math.sqrt(dot(toMiddle, toMiddle));
+        double distance = Math.sqrt(ImageFootprint.dot(toMiddle, toMiddle));
         if (!(distance > 0 && Double.isFinite(distance))) {
             return null;
         }
         double[] forward = scaled(toMiddle, 1 / distance);
         double[] up = Math.abs(forward[1]) < 0.9 ? new double[] {0, 1, 0} : new double[] {0, 0, 1};
         double[] level = cross(up, forward);
-        double[] across = scaled(level, 1 / Math.sqrt(dot(level, level)));
+        double[] across = scaled(level, 1 / Math.sqrt(ImageFootprint.dot(level, level)));
         double[] down = cross(forward, across);
         double widest = 0;
         double farthest = 0;
         for (int k = 0; k < 8; k++) {
             double[] w = {box[(k & 1) * 3] - point.x(), box[1 + (k >> 1 & 1) * 3] - point.y(),
                     box[2 + (k >> 2 & 1) * 3] - point.z()};
-            double depth = dot(w, forward);
+            double depth = ImageFootprint.dot(w, forward);
             if (!(depth > distance / 20)) {
                 return null;
             }
-            widest = Math.max(widest, Math.max(Math.abs(dot(w, across)), Math.abs(dot(w, down))) / depth);
-            farthest = Math.max(farthest, Math.sqrt(dot(w, w)));
+            double side = Math.max(Math.abs(ImageFootprint.dot(w, across)), Math.abs(ImageFootprint.dot(w, down)));
+            widest = Math.max(widest, side / depth);
+            farthest = Math.max(farthest, Math.sqrt(ImageFootprint.dot(w, w)));
         }
         widest = Math.max(widest * 1.01, 1e-6); // a hundredth of room at the picture's edges; never 0
         double diagonal = Math.sqrt(Math.pow(box[3] - box[0], 2) + Math.pow(box[4] - box[1], 2)
@@ -127,17 +132,14 @@ final class PointFootprint implements ImageFootprint {
         // the float rounding of a ray's end grows with its length and with the size of the coordinates
         double gap = GAP * (reach + Math.sqrt((double) point.x() * point.x() + (double) point.y() * point.y()
                 + (double) point.z() * point.z()));
-        if (!Double.isNaN(leastStart)) { // a hit lies in its grown box: no farther than its farthest corner and 1 %
-            reach = 1.01 * farthest + leaving;
-            gap = leaving;
+        if (leaving) { // a hit lies in its grown box: no farther than its farthest corner and 1 %
+            reach = 1.01 * farthest + leavingGap;
+            gap = leavingGap;
         }
         boolean tooNarrow = gap > 0.08 * distance * widest; // the tree does better
         double[][] axes = {forward, across, down};
-        return widest > 20 || tooNarrow ? null : new PointFootprint(point, axes, widest, size, reach, gap, leastStart);
-    }
-
-    private static double dot(double[] a, double[] b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        return widest > 20 || tooNarrow ? null : new PointFootprint(point, axes, widest, size, reach, gap, leaving,
+                leastStart);
     }
 
     private static double[] scaled(double[] a, double factor) {
@@ -167,7 +169,7 @@ final class PointFootprint implements ImageFootprint {
         double gx = ex - pointX;
         double gy = ey - pointY;
         double gz = ez - pointZ;
-        if (!(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap) || !Double.isNaN(leastStart)) {
+        if (leaving || !(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap)) {
             return -1;
         }
         return pixelOfDirection(ox - pointX, oy - pointY, oz - pointZ);
@@ -177,9 +179,12 @@ final class PointFootprint implements ImageFootprint {
      * The pixel, as {@code y·size + x}, of the ray from {@code (ox, oy, oz)} along
      * {@code (dx, dy, dz)} that leaves X, if it is served: its line passes within the gap of X, it
      * starts at least S beyond X, and its direction shows on the picture; else −1, and always for
-     * rays towards X (whose S is NaN).
+     * rays towards X.
      */
     int pixelLeaving(double ox, double oy, double oz, double dx, double dy, double dz) {
+        if (!leaving) {
+            return -1;
+        }
         double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double ux = dx / length;
         double uy = dy / length;
@@ -191,7 +196,7 @@ final class PointFootprint implements ImageFootprint {
         double px = wx - along * ux;
         double py = wy - along * uy;
         double pz = wz - along * uz;
-        if (!(along >= leastStart && px * px + py * py + pz * pz <= gap * gap)) { // false for NaN: towards X
+        if (!(along >= leastStart && px * px + py * py + pz * pz <= gap * gap)) {
             return -1;
         }
         return pixelOfDirection(ux, uy, uz);
@@ -234,8 +239,7 @@ final class PointFootprint implements ImageFootprint {
         // a box near X, or beside or behind it, may be hit by a ray of any pixel: a guard, as around()
         // admits only boxes well in front
         if (!(depthLeast > 4 * gap && nearest > 4 * gap)) {
-            ImageFootprint.whole(size, size, into, to);
-            return Float.NEGATIVE_INFINITY;
+            return ImageFootprint.whole(size, size, into, to);
         }
         double left = Double.POSITIVE_INFINITY;
         double right = Double.NEGATIVE_INFINITY;
@@ -261,15 +265,11 @@ final class PointFootprint implements ImageFootprint {
         double wideY = Math.max(Math.max(-top, bottom), half / scale);
         double margin = 2 * scale * (1 + wideX * wideX + wideY * wideY) * angle + 1e-6 * size;
         if (!Double.isFinite(margin)) {
-            ImageFootprint.whole(size, size, into, to);
-            return Float.NEGATIVE_INFINITY;
+            return ImageFootprint.whole(size, size, into, to);
         }
         // a ray shows at a point c of the picture, in pixel floor(c): a pixel covers [p, p + 1), hence the 1
-        boolean seen = ImageFootprint.range(half + scale * left - margin, half + scale * right + margin, size, 1,
-                into, to)
-                && ImageFootprint.range(half + scale * top - margin, half + scale * bottom + margin, size, 1,
-                        into, to + 1);
-        return seen ? ImageFootprint.below(nearest) : Float.NaN;
+        return ImageFootprint.rectangle(half + scale * left - margin, half + scale * right + margin,
+                half + scale * top - margin, half + scale * bottom + margin, size, size, 1, nearest, into, to);
     }
 
     /**
@@ -280,7 +280,7 @@ final class PointFootprint implements ImageFootprint {
      * corner's distance plus √3 growths.
      */
     private double run(double x0, double y0, double z0, double x1, double y1, double z1, double mostGrowth) {
-        if (!Double.isNaN(leastStart)) {
+        if (leaving) {
             double farthest = ImageFootprint.farthest(x0, y0, z0, x1, y1, z1);
             return Math.max(0, Math.min(reach, farthest + Math.sqrt(3) * mostGrowth) - leastStart);
         }

@@ -18,9 +18,4 @@ record Rounding(float linear, float quadratic) {
     static Rounding linear(float linear) {
         return new Rounding(linear, 0);
     }
-
-    /** The larger of two, for a box that holds objects of both. */
-    Rounding max(Rounding other) {
-        return new Rounding(Math.max(linear, other.linear), Math.max(quadratic, other.quadratic));
-    }
 }

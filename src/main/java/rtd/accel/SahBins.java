@@ -73,7 +73,7 @@ final class SahBins {
         }
     }
 
-    /** The bin of a centre, for bins from {@code lo} at {@code scale} bins a unit: the same for binning and partition. */
+    /** The bin of a centre, for bins from {@code lo} at {@code scale} bins a unit: for binning and partition. */
     static int binOf(float centre, float lo, float scale) {
         return Math.min(COUNT - 1, Math.max(0, (int) ((centre - lo) * scale)));
     }
@@ -154,7 +154,7 @@ final class SahBins {
         }
     }
 
-    /** Grows the box at {@code box[0 .. 5]} by the box at {@code other[o .. o+5]}: an extent's box, or its centres' from {@code o + CENTRES}. */
+    /** Grows the box at {@code box[at .. at+5]} by the box at {@code other[o .. o+5]}: an extent's, or its centres'. */
     private static void union(float[] box, int at, float[] other, int o) {
         for (int k = 0; k < 3; k++) {
             box[at + k] = Math.min(box[at + k], other[o + k]);

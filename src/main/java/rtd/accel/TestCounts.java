@@ -52,11 +52,16 @@ final class TestCounts {
         unboundedTests++;
     }
 
-    /** The tests so far by the name of each kind of object, those of the objects without a box too ({@code --stats}). */
+    /** The tests so far by the name of each kind of object, the objects without a box too ({@code --stats}). */
     Map<String, Long> byKindName() {
+        return byName(leaves.kindNames, severalKinds ? tests : new long[] {treeTests}, unbounded, unboundedTests);
+    }
+
+    /** {@code tests[k]} by the name {@code names[k]}, and {@code unboundedTests} by each object without a box's kind. */
+    static Map<String, Long> byName(String[] names, long[] tests, IGeometry[] unbounded, long unboundedTests) {
         Map<String, Long> byName = new TreeMap<>();
-        for (int k = 0; k < tests.length; k++) {
-            byName.merge(leaves.kindNames[k], severalKinds ? tests[k] : treeTests, Long::sum);
+        for (int k = 0; k < names.length; k++) {
+            byName.merge(names[k], tests[k], Long::sum);
         }
         for (IGeometry object : unbounded) {
             byName.merge(object.kind(), unboundedTests, Long::sum);

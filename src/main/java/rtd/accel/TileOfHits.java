@@ -7,8 +7,9 @@ import rtd.geometry.TestObserver;
 import rtd.scene.DepthTest;
 
 /**
- * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera rays as numbers, made as
- * the renderer makes them ({@link ICamera#putRay}, as {@link rtd.render.RayBundle} calls it), and each pixel's nearest hit so far. Each object listed for the tile runs
+ * One thread's room to find the nearest hits of one tile of a {@link HitImage}: the tile's camera rays as numbers, made
+ * as the renderer makes them ({@link ICamera#putRay}, as {@link rtd.render.RayBundle} calls it), and each pixel's
+ * nearest hit so far. Each object listed for the tile runs
  * the paper's intersection test on the pixels of its footprint inside the tile, as a {@link NearestHit} runs it (the
  * shape's own kernel, {@link LeafObjects#t}), and the depth test ({@link DepthTest#key}: the nearest hit wins, and on
  * a tie the object that comes first in the file) keeps the winner; the objects without a box are tested on every
@@ -26,6 +27,8 @@ final class TileOfHits {
     private final int[] unboundedOrder;
     private final int kinds;
     private final float[] ray = new float[6];
+    // the rays in arrays of the tile's own, not read through a RayBundle: its methods, called between tests that the
+    // JIT does not inline, would load its arrays anew for every test
     private final float[] ox = new float[PIXELS];
     private final float[] oy = new float[PIXELS];
     private final float[] oz = new float[PIXELS];
@@ -42,7 +45,7 @@ final class TileOfHits {
      */
     private final int[] tests;
 
-    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} by place in the leaf. */
+    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} by leaf place. */
     TileOfHits(HitImage image, ViewGrid tiles, int[] footprints) {
         this.image = image;
         this.tiles = tiles;
@@ -75,7 +78,7 @@ final class TileOfHits {
         store(left, top, right, bottom);
     }
 
-    /** The camera's rays of pixels {@code [left, right) × [top, bottom)}, row by row, and no hit yet; answers how many. */
+    /** The rays of pixels {@code [left, right) × [top, bottom)}, row by row, and no hit yet; answers how many. */
     private int makeRays(int left, int top, int right, int bottom) {
         int i = 0;
         for (int y = top; y < bottom; y++) {
@@ -177,7 +180,9 @@ final class TileOfHits {
                 int all = unbounded.count();
                 for (int k = 0; k < kinds; k++) { // the row's running sum: this pixel's count
                     tests[at + k] += x > left ? tests[at + k - kinds] : 0;
-                    image.tests[pixel * kinds + k] = tests[at + k];
+                    if (image.tests != null) {
+                        image.tests[pixel * kinds + k] = tests[at + k];
+                    }
                     all += tests[at + k];
                 }
                 image.rayTests[pixel] = all;

@@ -40,7 +40,7 @@ final class TriangleRounding {
         Vector3f n = triangle.planeNormal();
         double normalSum = Math.abs(n.x()) + Math.abs(n.y()) + Math.abs(n.z()); // |n|₁ in float, as the test sums it
         if (!(normalSum >= 1e-15 && normalSum <= 1e15)) {
-            return RayTriangle.ALONG_THE_RAY; // the float ratio may overflow, or lose its digits among subnormal numbers
+            return RayTriangle.ALONG_THE_RAY; // the float ratio may overflow, or lose its digits among subnormals
         }
         double anyRay = 2 * RayTriangle.ALONG_THE_RAY; // KnownShapes.rounding of a triangle
         double farthest = 0;
@@ -74,7 +74,8 @@ final class TriangleRounding {
         }
         double ratio = longest * normalSum / Math.min(Math.abs(leastFacing), Math.abs(mostFacing));
         double along = 16 * 0x1p-24 * (1 + 1.01 * ratio) * (1 + 1e-6);
-        return along < RayTriangle.ALONG_THE_RAY ? along : RayTriangle.ALONG_THE_RAY; // also for an infinite box, whose ratio is NaN
+        // also for an infinite box, whose ratio is NaN
+        return along < RayTriangle.ALONG_THE_RAY ? along : RayTriangle.ALONG_THE_RAY;
     }
 
 }

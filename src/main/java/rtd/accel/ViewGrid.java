@@ -1,6 +1,7 @@
 package rtd.accel;
 
 import rtd.camera.ICamera;
+import rtd.render.RayBundle;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 
@@ -17,9 +18,7 @@ import rtd.scene.Scene;
  * the test. A ray tests its cell's objects nearest first, and stops at the first that lies beyond
  * a hit it has found: where objects hide each other, it tests the few in front.
  *
- * <p>The cell's side is a power of two, chosen for the scene: small cells let a ray test fewer
- * objects, but an object then lies in more cells, which costs building and memory
- * ({@link ViewGridBuilder}).
+ * <p>The cell's side is a power of two, chosen for the scene ({@link CellSide}).
  */
 public final class ViewGrid {
 
@@ -33,7 +32,6 @@ public final class ViewGrid {
     /** The cell side is {@code 1 << shift} pixels. */
     final int shift;
     final int columns;
-    final int rows;
     /** Cell c (row by row) holds {@code places[cellStart[c] .. cellStart[c + 1])}. */
     final int[] cellStart;
     /**
@@ -59,7 +57,6 @@ public final class ViewGrid {
         this.latestOffset = latestOffset;
         this.shift = shift;
         this.columns = cellsAlong(width, shift);
-        this.rows = cellsAlong(height, shift);
         this.cellStart = cellStart;
         this.places = places;
         this.nearest = nearest;
@@ -83,6 +80,17 @@ public final class ViewGrid {
     /** How many cells of side {@code 1 << shift} cover {@code pixels}. */
     static int cellsAlong(int pixels, int shift) {
         return ((pixels - 1) >> shift) + 1;
+    }
+
+    /**
+     * Whether the bundle holds rays of {@code camera}'s {@code width × height} picture, for pixels of the picture,
+     * through points up to {@code latestOffset} into their pixels.
+     */
+    static boolean serves(RayBundle bundle, ICamera camera, int width, int height, float latestOffset) {
+        RayBundle.Pixels p = bundle.pixels();
+        return p != null && p.camera() == camera && p.width() == width && p.height() == height && p.left() >= 0
+                && p.top() >= 0 && p.right() <= width && p.bottom() <= height
+                && p.sampleX() >= 0 && p.sampleX() <= latestOffset && p.sampleY() >= 0 && p.sampleY() <= latestOffset;
     }
 
     /** The cell of pixel (x, y). */

@@ -20,7 +20,7 @@ final class ViewGridBuilder {
     private static final byte SEEN = 0;
     private static final byte UNSEEN = 1;
     private static final byte UNBOUNDED = 2;
-    /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's squares. */
+    /** The side of the squares by which the objects are ordered in the leaf, 2 to this power: the renderer's. */
     private static final int TILE_SHIFT = 3;
     /** A cell of more objects than this is sorted by {@link Arrays#sort}, not by insertion. */
     private static final int INSERTION_SORT_MOST = 32;
@@ -32,11 +32,13 @@ final class ViewGridBuilder {
 
     /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
     private final int[] footprints;
-    /** Per object in file order: a distance from the ray's origin before which no ray hits it, if it is {@link #SEEN}. */
+    /** Per object in file order: a distance from the ray's origin before which no ray hits it, if {@link #SEEN}. */
     private final float[] nearest;
     private final byte[] state;
     /** Per object in file order: its place in the leaf, −1 for one without a box. */
     private int[] leafOf;
+    /** The places in the file of the objects without a box, in file order. */
+    private int[] unboundedOrder;
 
     ViewGridBuilder(List<IGeometry> objects, int width, int height, ForkJoinPool pool) {
         this.objects = objects;
@@ -48,7 +50,7 @@ final class ViewGridBuilder {
         this.state = new byte[objects.size()];
     }
 
-    /** The grid of {@code camera}'s rays through points up to {@code latestOffset} into their pixels, {@code samples²} a pixel. */
+    /** The grid of the camera's rays through points up to {@code latestOffset} into pixels, {@code samples²} a pixel. */
     ViewGrid build(ICamera camera, float latestOffset, int samples) {
         return build(ImageFootprint.of(camera, width, height, latestOffset), camera, latestOffset, samples);
     }
@@ -58,7 +60,8 @@ final class ViewGridBuilder {
      * pixel; {@code camera} and {@code latestOffset} are what its rays are (a light's grid has no camera).
      */
     ViewGrid build(ImageFootprint footprint, ICamera camera, float latestOffset, int samples) {
-        return build(footprint, camera, latestOffset, CellSide.choose(objects, footprint, width, height, samples), true);
+        int shift = CellSide.choose(objects, footprint, width, height, samples);
+        return build(footprint, camera, latestOffset, shift, true);
     }
 
     /**
@@ -78,7 +81,8 @@ final class ViewGridBuilder {
         int columns = ViewGrid.cellsAlong(width, shift);
         int[] cellStart = new int[cellCount(shift) + 1];
         int[] fileOrder = leafOrder();
-        Bvh leaf = Bvh.oneLeaf(pack(fileOrder), unboundedOrder(), objects);
+        LeafObjects packed = new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
+        Bvh leaf = Bvh.oneLeaf(packed, unboundedOrder, objects);
         float[] nearestByPlace = new float[fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
         if (sorted) {
@@ -151,24 +155,27 @@ final class ViewGridBuilder {
         return sum;
     }
 
+    /** How many cells of side {@code 1 << shift} cover the image. */
     private int cellCount(int shift) {
-        return CellSide.cellCount(width, height, shift);
+        return ViewGrid.cellsAlong(width, shift) * ViewGrid.cellsAlong(height, shift);
     }
 
     /**
      * Gives each object with a box its place in the leaf, {@link #leafOf}: the objects seen by the square of 8 × 8
      * pixels their footprint's middle lies in, square after square, row by row; then those no ray sees. Answers the
-     * places' objects ({@code fileOrder}).
+     * places' objects ({@code fileOrder}), and lists those without a box in {@link #unboundedOrder}.
      */
     private int[] leafOrder() {
         int across = ViewGrid.cellsAlong(width, TILE_SHIFT);
         int tiles = across * ViewGrid.cellsAlong(height, TILE_SHIFT);
         leafOf = new int[objects.size()];
         int[] next = new int[tiles + 2];
+        int unbounded = 0;
         for (int f = 0; f < leafOf.length; f++) {
             int at = 4 * f;
             if (state[f] == UNBOUNDED) {
                 leafOf[f] = -1;
+                unbounded++;
                 continue;
             }
             int tile = state[f] == UNSEEN ? tiles
@@ -181,34 +188,17 @@ final class ViewGridBuilder {
             next[t] += next[t - 1]; // now where each square's objects start
         }
         int[] fileOrder = new int[next[tiles + 1]];
-        for (int f = 0; f < leafOf.length; f++) {
+        unboundedOrder = new int[unbounded];
+        for (int f = 0, u = 0; f < leafOf.length; f++) {
             if (leafOf[f] >= 0) {
                 int place = next[leafOf[f]]++;
                 leafOf[f] = place;
                 fileOrder[place] = f;
+            } else {
+                unboundedOrder[u++] = f;
             }
         }
         return fileOrder;
-    }
-
-    /** The numbers of the objects' tests, packed in leaf order. */
-    private LeafObjects pack(int[] fileOrder) {
-        return new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
-    }
-
-    /** The places in the file of the objects without a box, in file order. */
-    private int[] unboundedOrder() {
-        int count = 0;
-        for (byte s : state) {
-            count += s == UNBOUNDED ? 1 : 0;
-        }
-        int[] order = new int[count];
-        for (int f = 0, k = 0; k < count; f++) {
-            if (state[f] == UNBOUNDED) {
-                order[k++] = f;
-            }
-        }
-        return order;
     }
 
     /**

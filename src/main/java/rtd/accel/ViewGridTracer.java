@@ -2,7 +2,6 @@ package rtd.accel;
 
 import rtd.geometry.Hit;
 import rtd.math.Ray;
-import rtd.math.Vector3f;
 import rtd.render.HitBuffer;
 import rtd.render.RayBundle;
 import rtd.render.Tracer;
@@ -46,9 +45,7 @@ public final class ViewGridTracer implements Tracer {
             return others.nearestHit(ray);
         }
         rays++;
-        Vector3f origin = ray.origin();
-        Vector3f direction = ray.direction();
-        hit.start(origin.x(), origin.y(), origin.z(), direction.x(), direction.y(), direction.z());
+        hit.start(ray);
         hit.testUnbounded();
         if (objects.hasTree()) {
             hit.testLeaf(0);
@@ -62,7 +59,7 @@ public final class ViewGridTracer implements Tracer {
         return others != null ? others.blocked(ray, distance) : Tracer.super.blocked(ray, distance);
     }
 
-    /** The camera's rays test the objects of their cells; other rays go to the tracer for them, or one by one to the loop. */
+    /** The camera's rays test their cells' objects; other rays go to the tracer for them, or one by one to the loop. */
     @Override
     public void traceAll(RayBundle bundle, HitBuffer hits) {
         if (!serves(bundle)) {
@@ -105,17 +102,8 @@ public final class ViewGridTracer implements Tracer {
         return true;
     }
 
-    /**
-     * Whether the bundle holds rays of the grid's camera and picture, for pixels of the picture,
-     * through points of their pixels the grid allows for.
-     */
     private boolean serves(RayBundle bundle) {
-        RayBundle.Pixels p = bundle.pixels();
-        return p != null && p.camera() == grid.camera && p.width() == grid.width && p.height() == grid.height
-                && p.left() >= 0 && p.top() >= 0 && p.right() <= grid.width
-                && p.bottom() <= grid.height
-                && p.sampleX() >= 0 && p.sampleX() <= grid.latestOffset
-                && p.sampleY() >= 0 && p.sampleY() <= grid.latestOffset;
+        return ViewGrid.serves(bundle, grid.camera, grid.width, grid.height, grid.latestOffset);
     }
 
     @Override

@@ -40,8 +40,8 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         LOOP("the paper's loop: nothing to build"),
         BVH("building the BVH"),
         GRID("building the view grid"),
-        GRID_AND_BVH("building the view grid, the lights' and mirrors' grids and the BVH"),
-        GRID_AND_BVH_ONLY("building the view grid and the BVH"),
+        GRID_BVH_AND_POINT_GRIDS("building the view grid, the lights' and mirrors' grids and the BVH"),
+        GRID_AND_BVH("building the view grid and the BVH"),
         IMAGE("finding each pixel's hit, object by object");
 
         final String building;
@@ -49,12 +49,18 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         Kind(String building) {
             this.building = building;
         }
+
+        /** Whether the camera's rays go to a view grid. */
+        boolean viewGrid() {
+            return this == GRID || this == GRID_AND_BVH || this == GRID_BVH_AND_POINT_GRIDS;
+        }
     }
 
     /**
      * What {@code accel} asks for {@code scene}: {@code none} (or no objects) the paper's loop (Listing 4.3);
-     * {@code auto} and {@code grid} the view grid, with lights also a grid from each light and the BVH; {@code bvh},
-     * or a camera the grid cannot serve, the BVH.
+     * {@code auto} and {@code grid} the view grid, with lights also the BVH and a grid from each light and mirror,
+     * which {@code auto} leaves out for fewer than {@link #POINT_GRIDS_THRESHOLD} objects; {@code bvh}, or a camera the
+     * grid cannot serve, the BVH.
      */
     static Kind choose(Scene scene, Choice accel) {
         if (accel == Choice.none || scene.objects().isEmpty()) {
@@ -63,20 +69,20 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         if (accel == Choice.bvh || !ViewGrid.fits(scene)) { // fits both cameras: false only for a camera added later
             return Kind.BVH;
         }
-        return scene.lights().isEmpty() ? Kind.GRID : Kind.GRID_AND_BVH;
+        if (scene.lights().isEmpty()) {
+            return Kind.GRID;
+        }
+        boolean few = accel == Choice.auto && scene.objects().size() < POINT_GRIDS_THRESHOLD;
+        return few ? Kind.GRID_AND_BVH : Kind.GRID_BVH_AND_POINT_GRIDS;
     }
 
     /**
      * As above, for a {@code width × height} picture of {@code samples²} rays a pixel: where that takes the view grid
      * alone, a picture of one ray a pixel of {@link #IMAGE_THRESHOLD} objects or more takes the image of hits, if it
-     * {@link HitImage#pays}; {@code auto} takes the view grid and the BVH alone for a lit scene of fewer than
-     * {@link #POINT_GRIDS_THRESHOLD} objects.
+     * {@link HitImage#pays}.
      */
     static Kind choose(Scene scene, Choice accel, int width, int height, int samples) {
         Kind kind = choose(scene, accel);
-        if (kind == Kind.GRID_AND_BVH && accel == Choice.auto && scene.objects().size() < POINT_GRIDS_THRESHOLD) {
-            return Kind.GRID_AND_BVH_ONLY;
-        }
         return kind == Kind.GRID && samples == 1 && scene.objects().size() >= IMAGE_THRESHOLD
                 && HitImage.pays(scene, width, height) ? Kind.IMAGE : kind;
     }
@@ -115,7 +121,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         if (tree == null) {
             return new Accelerator(grid::newTracer, () -> describe(grid), false);
         }
-        boolean pointGrids = kind == Kind.GRID_AND_BVH;
+        boolean pointGrids = kind == Kind.GRID_BVH_AND_POINT_GRIDS;
         LightGrids lights = pointGrids ? kept.lightGrids(scene, width, height, samples, threads) : LightGrids.NONE;
         MirrorGrids mirrors = pointGrids // the camera's: never kept
                 ? MirrorGrids.build(scene, width, height, samples, threads) : MirrorGrids.NONE;

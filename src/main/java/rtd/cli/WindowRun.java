@@ -98,7 +98,7 @@ public final class WindowRun {
             public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples,
                     Supplier<Tracer> anyCamera) {
                 Accelerator.Kind kind = Accelerator.choose(scene, accel);
-                if (kind != Accelerator.Kind.GRID && kind != Accelerator.Kind.GRID_AND_BVH) {
+                if (!kind.viewGrid()) {
                     return anyCamera;
                 }
                 ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
@@ -108,7 +108,8 @@ public final class WindowRun {
             @Override
             public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
                 Accelerator.Kind kind = Accelerator.choose(scene, accel);
-                if (kind != Accelerator.Kind.GRID_AND_BVH) { // a view grid answers only its camera's rays (forPicture)
+                // a view grid answers only its camera's rays (forPicture)
+                if (kind != Accelerator.Kind.GRID_BVH_AND_POINT_GRIDS) {
                     return Accelerator.build(kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH, scene, width,
                             height, 1, threads, kept).tracers();
                 }

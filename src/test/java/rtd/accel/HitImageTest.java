@@ -5,7 +5,9 @@ import static rtd.accel.SameHit.assertSame;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
+import java.util.TreeMap;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -89,6 +91,44 @@ class HitImageTest {
                     ? 1 : 0;
         }
         return count;
+    }
+
+    @ParameterizedTest(name = "several kinds with a box: {0}")
+    @ValueSource(booleans = {false, true})
+    void countsEachKindsTestsAsThePixelsRanThem(boolean severalKinds) {
+        Scene mixed = MixedScenes.generate(3, 300);
+        List<IGeometry> objects = severalKinds ? mixed.objects()
+                : mixed.objects().stream().filter(o -> o instanceof Sphere || o instanceof Plane).toList();
+        Scene scene = new Scene(mixed.ambient(), ViewGridTest.randomCamera(new Random(3)), objects);
+        HitImage image = HitImage.build(scene, WIDTH, HEIGHT, 1);
+        HitImageTracer tracer = image.newTracer();
+        RayBundle bundle = new RayBundle(64);
+        HitBuffer hits = new HitBuffer(64);
+        for (int top = 0; top < HEIGHT; top += 8) {
+            for (int left = 0; left < WIDTH; left += 8) {
+                bundle.fill(scene.camera(), left, top, Math.min(WIDTH, left + 8), Math.min(HEIGHT, top + 8), WIDTH,
+                        HEIGHT);
+                tracer.traceAll(bundle, hits);
+            }
+        }
+        assertThat(image.tests == null).as("one kind: no tests by kind kept per pixel").isEqualTo(!severalKinds);
+        assertThat(image.unbounded).as("planes, tested on every pixel").isNotEmpty();
+        assertThat(tracer.work().testsByKind()).isEqualTo(testsByKind(scene)).hasSizeGreaterThan(1);
+    }
+
+    /** Each kind's tests over the picture: an object's on the pixels of its footprint, one without a box's on all. */
+    private static Map<String, Long> testsByKind(Scene scene) {
+        ImageFootprint footprint = ImageFootprint.of(scene.camera(), WIDTH, HEIGHT, 0);
+        Map<String, Long> byKind = new TreeMap<>();
+        int[] pixels = new int[4];
+        float[] box = new float[6];
+        for (IGeometry object : scene.objects()) {
+            footprint.putObject(object, box, pixels, 0);
+            long tests = !ImageFootprint.isFinite(box) ? WIDTH * HEIGHT
+                    : Math.max(0, pixels[2] - pixels[0] + 1) * (long) (pixels[3] - pixels[1] + 1);
+            byKind.merge(object.kind(), tests, Long::sum);
+        }
+        return byKind;
     }
 
     @ParameterizedTest(name = "random scene {0}")
