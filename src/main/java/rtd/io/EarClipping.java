@@ -13,6 +13,8 @@ final class EarClipping {
     private double[] u = new double[0];
     private double[] v = new double[0];
     private int[] triangles = new int[0];
+    /** The turning sense of the face last projected: 1, −1, or 0 for no area. */
+    private double sense;
 
     /**
      * The triangles of the face {@code corners[0, count)}: three corner numbers (from 0, in the face) each, in the
@@ -20,13 +22,7 @@ final class EarClipping {
      * a million faces is cut with one set of arrays.
      */
     int[] triangles(int[] corners, int count, float[] vertices) {
-        if (u.length < count) {
-            u = new double[count];
-            v = new double[count];
-            triangles = new int[3 * (count - 2)];
-        }
-        double sense = project(corners, count, vertices, u, v);
-        if (sense != 0 && !isConvex(u, v, count, sense)) {
+        if (!isFan(corners, count, vertices)) {
             clipEars(u, v, count, sense, triangles);
             return triangles;
         }
@@ -36,6 +32,17 @@ final class EarClipping {
             triangles[3 * k - 1] = k + 1;
         }
         return triangles;
+    }
+
+    /** Whether the face {@code corners[0, count)} is cut as a fan around its first corner: convex, or of no area. */
+    boolean isFan(int[] corners, int count, float[] vertices) {
+        if (u.length < count) {
+            u = new double[count];
+            v = new double[count];
+            triangles = new int[3 * (count - 2)];
+        }
+        sense = project(corners, count, vertices, u, v);
+        return sense == 0 || isConvex(u, v, count, sense);
     }
 
     /**
@@ -54,7 +61,8 @@ final class EarClipping {
             ny += ((double) vertices[a + 2] - vertices[b + 2]) * ((double) vertices[a] + vertices[b]);
             nz += ((double) vertices[a] - vertices[b]) * ((double) vertices[a + 1] + vertices[b + 1]);
         }
-        int dropped = Math.abs(nx) >= Math.abs(ny) && Math.abs(nx) >= Math.abs(nz) ? 0 : Math.abs(ny) >= Math.abs(nz) ? 1 : 2;
+        int dropped = Math.abs(nx) >= Math.abs(ny) && Math.abs(nx) >= Math.abs(nz) ? 0
+                : Math.abs(ny) >= Math.abs(nz) ? 1 : 2;
         for (int i = 0; i < count; i++) {
             int at = 3 * corners[i];
             u[i] = vertices[at + (dropped + 1) % 3];
@@ -110,7 +118,7 @@ final class EarClipping {
         return Math.max(notAgainst, 0);
     }
 
-    /** Whether the triangle a, b, c holds none of the corners left, on its sides or inside, but at its own corners' places. */
+    /** Whether none of the corners left lies in the triangle a, b, c or on its sides, but at its corners' places. */
     private static boolean holdsNoCorner(double[] u, double[] v, int[] left, int n, int a, int b, int c) {
         for (int k = 0; k < n; k++) {
             int p = left[k];

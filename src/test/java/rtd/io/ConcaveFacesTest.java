@@ -6,6 +6,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
@@ -107,5 +108,60 @@ class ConcaveFacesTest {
             int[] cut = Arrays.copyOf(shared.triangles(corners, count, vertices), 3 * (count - 2));
             assertThat(cut).as("face %d of %d corners %s", f, count, Arrays.toString(vertices)).isEqualTo(expected);
         }
+    }
+    /**
+     * The L of {@link #anLShapedHexagonIsCutIntoItsEars} with a normal at each corner, corner k's normal k + 1: each
+     * triangle of the ears F A B, F B C, F C D, D E F keeps its corners' own normals.
+     */
+    @Test
+    void aConcaveFaceWithANormalAtEachCornerKeepsThemInItsEars() throws SceneException {
+        ObjMesh mesh = read("v 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\n" + "vn 0 0 1\n".repeat(6)
+                + "f 1//1 2//2 3//3 4//4 5//5 6//6\n");
+        assertThat(corners(mesh)).containsExactly(5, 0, 1, 5, 1, 2, 5, 2, 3, 3, 4, 5);
+        assertThat(Arrays.copyOf(mesh.cornerNormals(), 12)).containsExactly(5, 0, 1, 5, 1, 2, 5, 2, 3, 3, 4, 5);
+    }
+
+    /**
+     * The L with normals at A, B and F only: of its ears, only F A B has a normal at all three corners and keeps
+     * them; the others have none. Its fan around A would have dropped them: no triangle of it is F A B.
+     */
+    @Test
+    void aConcaveFaceWithNormalsAtSomeCornersKeepsThemWhereATriangleHasThree() throws SceneException {
+        ObjMesh mesh = read("v 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\n" + "vn 0 0 1\n".repeat(3)
+                + "f 1//1 2//2 3 4 5 6//3\n");
+        assertThat(corners(mesh)).containsExactly(5, 0, 1, 5, 1, 2, 5, 2, 3, 3, 4, 5);
+        assertThat(Arrays.copyOf(mesh.cornerNormals(), 12)).containsExactly(2, 0, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+    }
+
+    /** Random faces of 3 to 10 corners, read from one file, are cut as each one is cut alone, in the file's order. */
+    @Test
+    void theFacesOfAFileAreCutAsEachFaceAlone() throws SceneException {
+        java.util.Random random = new java.util.Random(7);
+        StringBuilder obj = new StringBuilder();
+        List<Integer> expected = new java.util.ArrayList<>();
+        int vertexCount = 0;
+        for (int f = 0; f < 500; f++) {
+            int count = 3 + random.nextInt(8);
+            float[] vertices = new float[3 * count];
+            int[] corners = new int[count];
+            StringBuilder face = new StringBuilder("f");
+            for (int k = 0; k < count; k++) {
+                corners[k] = k;
+                for (int axis = 0; axis < 3; axis++) { // few places: faces folded, crossed, on a line
+                    vertices[3 * k + axis] = axis == 2 && random.nextBoolean() ? 0 : random.nextInt(4) - 1.5f;
+                }
+                obj.append(String.format(Locale.ROOT, "v %s %s %s%n", vertices[3 * k], vertices[3 * k + 1],
+                        vertices[3 * k + 2]));
+                face.append(' ').append(vertexCount + k + 1);
+            }
+            obj.append(face).append('\n');
+            int[] cut = new EarClipping().triangles(corners, count, vertices);
+            for (int c = 0; c < 3 * (count - 2); c++) {
+                expected.add(vertexCount + cut[c]);
+            }
+            vertexCount += count;
+        }
+        assertThat(corners(read(obj.toString()))).containsExactly(expected.stream().mapToInt(Integer::intValue)
+                .toArray());
     }
 }
