@@ -82,7 +82,8 @@ public final class Window implements Display {
         try {
             return GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices().length > 0 ? null
                     : "the display has no screen";
-        } catch (AWTError | HeadlessException | InternalError e) {
+        } catch (AWTError | HeadlessException | InternalError | NoClassDefFoundError e) {
+            // NoClassDefFoundError: asked again in a JVM whose first try to reach the display failed
             return "the display '" + display + "' that DISPLAY names cannot be reached";
         }
     }
