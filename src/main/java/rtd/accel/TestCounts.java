@@ -57,7 +57,7 @@ final class TestCounts {
         return byName(leaves.kindNames, severalKinds ? tests : new long[] {treeTests}, unbounded, unboundedTests);
     }
 
-    /** {@code tests[k]} by the name {@code names[k]}, and {@code unboundedTests} by each object without a box's kind. */
+    /** {@code tests[k]} by the name {@code names[k]}; {@code unboundedTests} by each boxless object's kind. */
     static Map<String, Long> byName(String[] names, long[] tests, IGeometry[] unbounded, long unboundedTests) {
         Map<String, Long> byName = new TreeMap<>();
         for (int k = 0; k < names.length; k++) {

@@ -50,7 +50,7 @@ final class ViewGridBuilder {
         this.state = new byte[objects.size()];
     }
 
-    /** The grid of the camera's rays through points up to {@code latestOffset} into pixels, {@code samples²} a pixel. */
+    /** The grid of the camera's rays through points up to {@code latestOffset} into pixels, {@code samples²} each. */
     ViewGrid build(ICamera camera, float latestOffset, int samples) {
         return build(ImageFootprint.of(camera, width, height, latestOffset), camera, latestOffset, samples);
     }

@@ -147,8 +147,8 @@ final class NumberReader {
     private boolean nearlyAName(int from, int to) {
         byte[] bytes = cursor.bytes;
         for (int i = from; i < to; i++) {
-            boolean startsWord = ExpressionParser.isLetter(bytes[i]) && (i == from || !TextBytes.isWordByte(bytes[i - 1])
-                    && bytes[i - 1] != '.');
+            boolean startsWord = ExpressionParser.isLetter(bytes[i])
+                    && (i == from || !TextBytes.isWordByte(bytes[i - 1]) && bytes[i - 1] != '.');
             if (startsWord) {
                 int end = i;
                 while (end < to && TextBytes.isWordByte(bytes[end])) {
@@ -179,8 +179,8 @@ final class NumberReader {
         if (invisible < cursor.pos) {
             try {
                 FloatParser.parse(cursor.bytes, tokenStart, invisible);
-                return cursor.error(invisible, "expected '|' or ')' after a number, found " + cursor.describe(invisible),
-                        null);
+                return cursor.error(invisible,
+                        "expected '|' or ')' after a number, found " + cursor.describe(invisible), null);
             } catch (NumberFormatException e) {
                 // no number before it: the token's message
             }

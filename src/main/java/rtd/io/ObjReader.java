@@ -21,23 +21,16 @@ final class ObjReader {
     private int line = 1;
     private int lineStart;
 
-    /** The vertices and normals read so far, x, y, z each; the triangles' corners, three per triangle. */
+    /** The vertices and normals read so far, x, y, z each, and the triangles of the faces. */
     private float[] vertices = new float[3 * 1024];
     private int vertexCount;
     private float[] normals = new float[0];
     private int normalCount;
-    private int[] corners = new int[3 * 1024];
-    /** The normal of each corner of a triangle, or −1 for a triangle with no normals; null while none has. */
-    private int[] cornerNormals;
-    private int triangleCount;
+    private final FaceTriangles triangles = new FaceTriangles();
 
     /** The current face's corners: vertex and normal (−1 for none) indices. */
     private int[] faceVertices = new int[8];
     private int[] faceNormals = new int[8];
-    private final EarClipping earClipping = new EarClipping();
-    /** The faces of more than three corners, read as fans: each one's first triangle and its number of corners. */
-    private int[] polygons = new int[0];
-    private int polygonCount;
 
     private final List<SceneError> errors = new ArrayList<>();
 
@@ -72,9 +65,8 @@ final class ObjReader {
         if (!errors.isEmpty()) {
             throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneException.MAX_ERRORS + 1)), false);
         }
-        cutPolygons();
-        return new ObjMesh(Arrays.copyOf(vertices, 3 * vertexCount), Arrays.copyOf(normals, 3 * normalCount), corners,
-                cornerNormals, triangleCount);
+        triangles.cutPolygons(vertices);
+        return triangles.mesh(Arrays.copyOf(vertices, 3 * vertexCount), Arrays.copyOf(normals, 3 * normalCount));
     }
 
     private void readLine() throws SceneException {
@@ -147,63 +139,7 @@ final class ObjReader {
         if (count < 3) {
             throw error(keywordStart, "a face needs at least 3 corners, found " + count, CORNER_FORMS);
         }
-        if (count > 3 && mixesNormals(count)) { // a fan would drop the normals of its triangles that lack one
-            int[] triangles = earClipping.triangles(faceVertices, count, vertices);
-            for (int t = 0; t < 3 * (count - 2); t += 3) {
-                addTriangle(triangles[t], triangles[t + 1], triangles[t + 2]);
-            }
-            return;
-        }
-        if (count > 3) {
-            keepPolygon(count);
-        }
-        for (int k = 1; k + 1 < count; k++) {
-            addTriangle(0, k, k + 1); // a fan around the first corner, which cutPolygons cuts again if it must
-        }
-    }
-
-    /** Whether some corners of the face have a normal and others do not. */
-    private boolean mixesNormals(int count) {
-        boolean some = false;
-        boolean all = true;
-        for (int k = 0; k < count; k++) {
-            some |= faceNormals[k] >= 0;
-            all &= faceNormals[k] >= 0;
-        }
-        return some && !all;
-    }
-
-    /** Notes that a face of {@code count} corners starts at the next triangle, as a fan. */
-    private void keepPolygon(int count) {
-        if (2 * polygonCount + 2 > polygons.length) {
-            polygons = Arrays.copyOf(polygons, Math.max(1024, 2 * polygons.length));
-        }
-        polygons[2 * polygonCount] = triangleCount;
-        polygons[2 * polygonCount + 1] = count;
-        polygonCount++;
-    }
-
-    /**
-     * Cuts each face of more than three corners that is no fan ({@link EarClipping}) into its ears, in the places its
-     * fan took. It runs once the whole file is read, in a loop of its own, so that the loop over the lines, which the
-     * JIT compiles while a large file is read, stays small.
-     */
-    private void cutPolygons() {
-        for (int p = 0; p < polygonCount; p++) {
-            int first = polygons[2 * p];
-            int count = polygons[2 * p + 1];
-            for (int k = 0; k < count; k++) { // the fan's triangle j is (0, j + 1, j + 2)
-                int at = k == 0 ? 3 * first : k < count - 1 ? 3 * (first + k - 1) + 1 : 3 * (first + count - 3) + 2;
-                faceVertices[k] = corners[at];
-                faceNormals[k] = cornerNormals == null ? -1 : cornerNormals[at];
-            }
-            if (!earClipping.isFan(faceVertices, count, vertices)) {
-                int[] triangles = earClipping.triangles(faceVertices, count, vertices);
-                for (int t = 0; t < count - 2; t++) {
-                    putTriangle(first + t, triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]);
-                }
-            }
-        }
+        triangles.addFace(faceVertices, faceNormals, count, vertices);
     }
 
     /** One corner {@code i}, {@code i/t}, {@code i//n} or {@code i/t/n}, kept as corner {@code k}. */
@@ -262,32 +198,6 @@ final class ObjReader {
                     "1 is the first '" + keyword + "' line of the file, -1 the last one above the face");
         }
         return (int) resolved;
-    }
-
-    private void addTriangle(int a, int b, int c) {
-        if (3 * triangleCount + 3 > corners.length) {
-            corners = Arrays.copyOf(corners, 2 * corners.length);
-            cornerNormals = cornerNormals == null ? null : Arrays.copyOf(cornerNormals, corners.length);
-        }
-        putTriangle(triangleCount++, a, b, c);
-    }
-
-    /** Writes the face's corners a, b, c as triangle {@code index}, with their normals if all three have one. */
-    private void putTriangle(int index, int a, int b, int c) {
-        boolean smooth = faceNormals[a] >= 0 && faceNormals[b] >= 0 && faceNormals[c] >= 0;
-        int at = 3 * index;
-        corners[at] = faceVertices[a];
-        corners[at + 1] = faceVertices[b];
-        corners[at + 2] = faceVertices[c];
-        if (smooth && cornerNormals == null) { // the first smooth triangle: those before have no normals
-            cornerNormals = new int[corners.length];
-            Arrays.fill(cornerNormals, -1);
-        }
-        if (cornerNormals != null) {
-            cornerNormals[at] = smooth ? faceNormals[a] : -1;
-            cornerNormals[at + 1] = smooth ? faceNormals[b] : -1;
-            cornerNormals[at + 2] = smooth ? faceNormals[c] : -1;
-        }
     }
 
     private SceneException cornerError(int start) {

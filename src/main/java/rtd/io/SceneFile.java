@@ -76,6 +76,9 @@ public final class SceneFile {
 
     /** This file, parsed with at most {@code threads} threads; with one, in order on the thread that asks. */
     public SceneFile onThreads(int threads) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be 1 or more, not " + threads);
+        }
         this.threads = threads;
         return this;
     }

@@ -68,8 +68,8 @@ public final class SceneIO {
     /** Writes {@code picture} into {@code device}, a FIFO or /dev/null: never created, replaced or truncated. */
     public static void writeImageInto(Picture picture, ImageFormat format, Path device, DoubleConsumer progress)
             throws IOException {
-        OutputStream into = Files.newOutputStream(device, StandardOpenOption.WRITE);
-        try (OutputStream out = new BufferedOutputStream(into, CHUNK)) {
+        try (OutputStream into = Files.newOutputStream(device, StandardOpenOption.WRITE);
+                OutputStream out = new BufferedOutputStream(into, CHUNK)) {
             format.write(picture, out, progress);
         }
     }

@@ -5,9 +5,11 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Random;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -67,7 +69,8 @@ class ConcaveFacesTest {
         for (double radius : new double[] {2, 1}) {
             for (int k = 0; k < 32; k++) {
                 double angle = 2 * Math.PI * k / 32;
-                obj.append(String.format(Locale.ROOT, "v %.6f %.6f 0%n", radius * Math.cos(angle), radius * Math.sin(angle)));
+                obj.append(String.format(Locale.ROOT, "v %.6f %.6f 0%n", radius * Math.cos(angle),
+                        radius * Math.sin(angle)));
             }
         }
         obj.append("f");
@@ -92,7 +95,7 @@ class ConcaveFacesTest {
 
     @Test
     void aFaceIsCutAsIfItCameFirstWhateverFacesCameBefore() {
-        java.util.Random random = new java.util.Random(23);
+        Random random = new Random(23);
         EarClipping shared = new EarClipping();
         for (int f = 0; f < 20_000; f++) {
             int count = 3 + random.nextInt(random.nextInt(4) == 0 ? 8 : 2); // quads the most, as in real files
@@ -109,6 +112,7 @@ class ConcaveFacesTest {
             assertThat(cut).as("face %d of %d corners %s", f, count, Arrays.toString(vertices)).isEqualTo(expected);
         }
     }
+
     /**
      * The L of {@link #anLShapedHexagonIsCutIntoItsEars} with a normal at each corner, corner k's normal k + 1: each
      * triangle of the ears F A B, F B C, F C D, D E F keeps its corners' own normals.
@@ -130,15 +134,16 @@ class ConcaveFacesTest {
         ObjMesh mesh = read("v 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\n" + "vn 0 0 1\n".repeat(3)
                 + "f 1//1 2//2 3 4 5 6//3\n");
         assertThat(corners(mesh)).containsExactly(5, 0, 1, 5, 1, 2, 5, 2, 3, 3, 4, 5);
-        assertThat(Arrays.copyOf(mesh.cornerNormals(), 12)).containsExactly(2, 0, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+        assertThat(Arrays.copyOf(mesh.cornerNormals(), 12))
+                .containsExactly(2, 0, 1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
     }
 
     /** Random faces of 3 to 10 corners, read from one file, are cut as each one is cut alone, in the file's order. */
     @Test
     void theFacesOfAFileAreCutAsEachFaceAlone() throws SceneException {
-        java.util.Random random = new java.util.Random(7);
+        Random random = new Random(7);
         StringBuilder obj = new StringBuilder();
-        List<Integer> expected = new java.util.ArrayList<>();
+        List<Integer> expected = new ArrayList<>();
         int vertexCount = 0;
         for (int f = 0; f < 500; f++) {
             int count = 3 + random.nextInt(8);

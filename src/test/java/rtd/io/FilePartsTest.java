@@ -1,6 +1,7 @@
 package rtd.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -198,5 +199,11 @@ class FilePartsTest {
         SceneFile file = file(text, 4096).onThreads(1);
         assertThat(file.once(null).objects()).hasSize(2000);
         assertThat(file.partsJoined).isZero();
+    }
+
+    @Test
+    void aParseOnNoThreadsIsRefusedAtOnce() {
+        assertThatThrownBy(() -> file("ambient:(1|2|3)\n", 4096).onThreads(0))
+                .isInstanceOf(IllegalArgumentException.class).hasMessage("threads must be 1 or more, not 0");
     }
 }
