@@ -182,14 +182,7 @@ class HitImageTest {
 
     @Test
     void isTheSameForOneThreadTwoAndThreeAndAnySamplePixelIsTheLoops() {
-        Random random = new Random(3);
-        List<IGeometry> objects = new ArrayList<>();
-        for (int i = 0; i < 30_000; i++) { // above the count built in parallel
-            Vector3f centre = new Vector3f(random.nextFloat() * 40 - 20, random.nextFloat() * 20 - 10, random.nextFloat() * 10);
-            objects.add(new Sphere(centre, 0.01f + random.nextFloat() * 0.3f, new Color(1, 2, 3)));
-        }
-        Scene scene = new Scene(new Color(0, 0, 0),
-                new OrthographicCamera(new Vector3f(0, 0, 20), new Vector3f(0, 0, -1), 50), objects);
+        Scene scene = ViewGridTest.manySmallSpheres();
         HitImage one = HitImage.build(scene, 400, 200, 1);
         for (int threads : new int[] {2, 3}) {
             HitImage more = HitImage.build(scene, 400, 200, threads);
@@ -198,6 +191,7 @@ class HitImageTest {
             assertThat(more.distance).isEqualTo(one.distance);
             assertThat(more.tests).isEqualTo(one.tests);
         }
+        Random random = new Random(4);
         for (int k = 0; k < 300; k++) {
             int pixel = random.nextInt(400 * 200);
             Hit expected = scene.nearestHit(scene.camera().generateRay(pixel % 400, pixel / 400, 400, 200));
