@@ -56,7 +56,7 @@ final class EarClipping {
         double nz = 0;
         for (int i = 0; i < count; i++) {
             int a = 3 * corners[i];
-            int b = 3 * corners[(i + 1) % count];
+            int b = 3 * corners[i + 1 < count ? i + 1 : 0]; // not (i + 1) % count: a division per corner
             nx += ((double) vertices[a + 1] - vertices[b + 1]) * ((double) vertices[a + 2] + vertices[b + 2]);
             ny += ((double) vertices[a + 2] - vertices[b + 2]) * ((double) vertices[a] + vertices[b]);
             nz += ((double) vertices[a] - vertices[b]) * ((double) vertices[a + 1] + vertices[b + 1]);
@@ -74,7 +74,7 @@ final class EarClipping {
     /** Whether no corner turns against the face's sense (a corner on a straight edge turns neither way). */
     private static boolean isConvex(double[] u, double[] v, int count, double sense) {
         for (int i = 0; i < count; i++) {
-            if (sense * turn(u, v, (i + count - 1) % count, i, (i + 1) % count) < 0) {
+            if (sense * turn(u, v, i > 0 ? i - 1 : count - 1, i, i + 1 < count ? i + 1 : 0) < 0) {
                 return false;
             }
         }

@@ -65,7 +65,6 @@ final class ObjReader {
         if (!errors.isEmpty()) {
             throw new SceneException(errors.subList(0, Math.min(errors.size(), SceneException.MAX_ERRORS + 1)), false);
         }
-        triangles.cutPolygons(vertices);
         return triangles.mesh(Arrays.copyOf(vertices, 3 * vertexCount), Arrays.copyOf(normals, 3 * normalCount));
     }
 
