@@ -19,4 +19,9 @@ record RenderOptions(List<Path> scenes, Path output, int width, int height, Scal
     Accelerator.Choice engine() {
         return paper ? Accelerator.Choice.none : accel;
     }
+
+    /** The threads that parse the scene: for {@code --paper} one, which reads the file line by line, as the paper. */
+    int parseThreads() {
+        return paper ? 1 : threads;
+    }
 }

@@ -119,7 +119,7 @@ final class SceneRun {
             ProgressDisplay display, StatsReport stats) throws SceneException, FileError {
         display.show(ProgressDisplay.Phase.of("reading " + source.name()));
         List<SceneError> warnings = new ArrayList<>();
-        SceneFile file = source.readFile(streams, options.threads()); // at clock 0 parsed once: its bytes let go
+        SceneFile file = source.readFile(streams, options.parseThreads()); // at clock 0 parsed once: its bytes let go
         Scene scene = options.scale().of(options.clock() != 0 ? file.at(options.clock(), warnings)
                 : file.once(warnings));
         warnings.forEach(warning -> display.message(warning.formatAsWarning().stripTrailing()));
@@ -182,7 +182,7 @@ final class SceneRun {
         }
         List<OutputTarget> targets = isGif ? List.of(job.target()) : plan.targets(job.target(), job.source().stdin()
                 ? streams.inPath().orElse(job.source().path()) : job.source().path());
-        SceneFile file = job.source().readFile(streams, options.threads());
+        SceneFile file = job.source().readFile(streams, options.parseThreads());
         ExecutorService writers = Executors.newFixedThreadPool(isGif ? 1 : 2, runnable -> {
             Thread thread = new Thread(runnable, "rtd-frame-writer");
             thread.setDaemon(true);

@@ -79,7 +79,7 @@ public final class WindowRun {
     /** The scene file, read once, each scene parsed from it at {@code --scale} (its warnings not shown). */
     private static ClockedScene read(RenderOptions options) throws IOException {
         try {
-            SceneFile file = SceneSource.of(options.scene()).readFile(null, options.threads());
+            SceneFile file = SceneSource.of(options.scene()).readFile(null, options.parseThreads());
             return new ClockedScene(file, options.scale()::of);
         } catch (FileError e) {
             throw new IOException(e.getMessage(), e);

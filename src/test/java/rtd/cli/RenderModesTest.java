@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -48,6 +49,15 @@ class RenderModesTest {
         Run run = Cli.run(EXAMPLE, "-o", dir.resolve("s.png").toString(), "--paper", "--stats");
         assertThat(run.exitCode()).as(run.err()).isZero();
         assertThat(run.err()).contains("2,073,600 rays").contains("per ray: 2.00 intersection tests");
+    }
+
+    @Test
+    void thePapersCodeParsesItsSceneOnOneThreadWhateverThreadsAreAskedFor() {
+        RenderOptions paper = new RenderOptions(List.of(Path.of(EXAMPLE)), null, 1920, 1080, new Scale(1), false, 4,
+                Accelerator.Choice.auto, true, 1, false, false, 0);
+        assertThat(paper.parseThreads()).isEqualTo(1);
+        assertThat(new RenderOptions(List.of(Path.of(EXAMPLE)), null, 1920, 1080, new Scale(1), false, 4,
+                Accelerator.Choice.auto, false, 1, false, false, 0).parseThreads()).isEqualTo(4);
     }
 
     /** One object of each kind with a test of its own, seen from the front, 10 pixels a unit. */
