@@ -76,7 +76,7 @@ record JobPlanner(Path output, StandardStreams streams) {
             Misuse.refuse(streams.outIsTerminal(), "-o - writes the picture to standard output, which "
                     + "is a terminal here; send it to a file or a program instead, such as: " + RtdCommand.NAME
                     + " scene.txt -o - > out.png");
-            return OutputTarget.standardOutput();
+            return new OutputTarget(OutputTarget.DASH, OutputTarget.DASH, OutputTarget.Kind.STANDARD_OUTPUT);
         }
         if (output == null && !source.stdin() && isPngPicture(source.path())) { // else refused as the scene file
             throw new FileError("cannot read the scene file '" + source.name() + "': it is a PNG picture, not a scene; "

@@ -26,10 +26,6 @@ record OutputTarget(Path spelt, Path file, Kind kind) {
 
     static final Path DASH = Path.of("-");
 
-    static OutputTarget standardOutput() {
-        return new OutputTarget(DASH, DASH, Kind.STANDARD_OUTPUT);
-    }
-
     /** Writes {@code picture} here in {@code format}, telling {@code progress} the fraction done. */
     void write(Picture picture, ImageFormat format, OutputStream standardOutput, DoubleConsumer progress)
             throws FileError {

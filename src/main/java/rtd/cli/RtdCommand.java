@@ -285,7 +285,7 @@ public final class RtdCommand implements Callable<Integer> {
         return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledWidth)),
                 (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledHeight)), scale,
                 given("--width") || given("--height"), threads, accel, paper, samples, stats,
-                !noProgress && StandardStreams.stderrIsTerminal(), clock == null ? 0 : clock);
+                !noProgress && StandardStreams.isTerminal(2), clock == null ? 0 : clock);
     }
 
     private boolean given(String option) {

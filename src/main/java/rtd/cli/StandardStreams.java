@@ -43,12 +43,8 @@ record StandardStreams(InputStream in, Optional<Path> inPath, boolean inIsTermin
                 isTerminal(0), new FileOutputStream(FileDescriptor.out), isTerminal(1));
     }
 
-    static boolean stderrIsTerminal() {
-        return isTerminal(2);
-    }
-
     /** On Linux, whether file descriptor {@code fd} is a terminal device; elsewhere, whether Java sees a console. */
-    private static boolean isTerminal(int fd) {
+    static boolean isTerminal(int fd) {
         Path link = Path.of("/proc/self/fd/" + fd);
         try {
             String target = Files.readSymbolicLink(link).toString();
