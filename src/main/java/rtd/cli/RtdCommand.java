@@ -273,6 +273,9 @@ public final class RtdCommand implements Callable<Integer> {
 
     /** The options, sizes after {@code --scale}; if {@code checked}, a misuse where no Java image has them. */
     private RenderOptions options(boolean checked) {
+        boolean sized = given("--width") || given("--height");
+        // a window given no size: half the default each way (the default at --scale 0.5), to fit a screen
+        Scale scale = window && !sized && !given("--scale") ? new Scale(0.5) : this.scale;
         long scaledWidth = scale.times(width);
         long scaledHeight = scale.times(height);
         boolean empty = scaledWidth < 1 || scaledHeight < 1;
@@ -283,9 +286,8 @@ public final class RtdCommand implements Callable<Integer> {
                             : String.format(Locale.ROOT, "Java images hold at most %,d", Integer.MAX_VALUE - 8)));
         }
         return new RenderOptions(scenePaths, output, (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledWidth)),
-                (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledHeight)), scale,
-                given("--width") || given("--height"), threads, accel, paper, samples, stats,
-                !noProgress && StandardStreams.isTerminal(2), clock == null ? 0 : clock);
+                (int) Math.max(1, Math.min(Integer.MAX_VALUE, scaledHeight)), scale, sized, threads, accel, paper,
+                samples, stats, !noProgress && StandardStreams.isTerminal(2), clock == null ? 0 : clock);
     }
 
     private boolean given(String option) {

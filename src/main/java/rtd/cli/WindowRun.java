@@ -31,9 +31,6 @@ public final class WindowRun {
         {"--export-pov", "export without --window"}, {"--paper", "--accel none traces with the paper's loop"},
         {"--frames", "render the frames without --window"}, {"-o", "Ctrl+S saves the picture beside the scene"}};
 
-    private static final int WIDTH = 960;
-    private static final int HEIGHT = 540;
-
     private WindowRun() {
     }
 
@@ -51,14 +48,10 @@ public final class WindowRun {
         if (missing != null) {
             return noDisplay(err, missing);
         }
-        // without a size given, half the default each way (the default at --scale 0.5), to fit a screen
-        RenderOptions sized = options.given() || commandLine.getParseResult().hasMatchedOption("--scale") ? options
-                : new RenderOptions(options.scenes(), options.output(), WIDTH, HEIGHT, new Scale((double) WIDTH
-                / RtdCommand.DEFAULT_WIDTH), false, options.threads(), options.accel(), options.paper(),
-                options.samples(), options.stats(), options.progress(), options.clock());
-        Memory.checkImageFits(sized.width(), sized.height(), sized.scale());
-        WindowSetup setup = new WindowSetup(sized.scene(), () -> read(sized), watch(sized), engine(sized.accel().name(),
-                sized.threads()), sized.width(), sized.height(), sized.samples(), sized.threads(), sized.clock());
+        Memory.checkImageFits(options.width(), options.height(), options.scale());
+        WindowSetup setup = new WindowSetup(options.scene(), () -> read(options), watch(options),
+                engine(options.accel().name(), options.threads()), options.width(), options.height(), options.samples(),
+                options.threads(), options.clock());
         try {
             Window.open(setup);
             return 0;
