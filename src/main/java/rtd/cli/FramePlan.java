@@ -37,10 +37,8 @@ record FramePlan(int frames, int first, int last, double fps) {
     Path frameFile(Path picture, int i) {
         String name = picture.getFileName().toString();
         int dot = name.lastIndexOf('.');
-        String number = String.format(Locale.ROOT, "-%0" + Math.max(3, String.valueOf(frames - 1).length()) + "d",
-                i);
-        return picture.resolveSibling(dot > 0 ? name.substring(0, dot) + number + name.substring(dot)
-                : name + number);
+        String number = String.format(Locale.ROOT, "-%0" + Math.max(3, String.valueOf(frames - 1).length()) + "d", i);
+        return picture.resolveSibling(dot > 0 ? name.substring(0, dot) + number + name.substring(dot) : name + number);
     }
 
     /** Each numbered picture's target beside {@code target}, all checked before anything is drawn. */

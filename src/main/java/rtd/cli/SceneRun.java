@@ -14,7 +14,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.DoubleAccumulator;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import rtd.cli.Accelerator.StructureCache;
@@ -87,11 +87,10 @@ final class SceneRun {
                 display.message(NothingInView.warning(source.name(), scene, options));
             }
 
-            AtomicLong written = new AtomicLong(Double.doubleToLongBits(0));
-            display.show(ProgressDisplay.Phase.counted("writing " + target.spelt(),
-                    () -> Double.longBitsToDouble(written.get())));
+            DoubleAccumulator written = new DoubleAccumulator(Math::max, 0); // the fraction of the picture written
+            display.show(ProgressDisplay.Phase.counted("writing " + target.spelt(), written::get));
             writerReady.exceptionally(failure -> null).join(); // a failed warm-up: the write says why
-            target.write(result.image(), job.format(), streams.out(), f -> written.set(Double.doubleToLongBits(f)));
+            target.write(result.image(), job.format(), streams.out(), written::accumulate);
             stats.endPhase("write");
             report = options.stats() ? stats.format(scene, accelerator, result.work(),
                     options.paper() ? 1 : options.threads(), target.spelt()) : "";
