@@ -1,11 +1,9 @@
 package rtd.cli;
 
-import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -141,10 +139,7 @@ final class SceneRun {
                         + "the scene's lights and --samples are not used");
             }
             display.show(ProgressDisplay.Phase.of("rendering"));
-            BufferedImage image = scene.render(width, height);
-            int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
-            Arrays.setAll(rgb, i -> rgb[i] & 0xFFFFFF); // getRGB adds an opaque alpha channel
-            return new RenderResult(new Picture(width, height, rgb), WorkCount.testsOf(scene.objects(),
+            return new RenderResult(Picture.of(scene.render(width, height)), WorkCount.testsOf(scene.objects(),
                     (long) width * height));
         }
         FlatShader flat = new FlatShader(scene);

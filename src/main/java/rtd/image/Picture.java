@@ -29,6 +29,17 @@ public record Picture(int width, int height, int[] rgb) {
         return rgb[y * width + x];
     }
 
+    /** The pixels of {@code image}, without the alpha channel that {@link BufferedImage#getRGB} adds. */
+    public static Picture of(BufferedImage image) {
+        int width = image.getWidth();
+        int height = image.getHeight();
+        int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
+        for (int i = 0; i < rgb.length; i++) {
+            rgb[i] &= 0xFFFFFF;
+        }
+        return new Picture(width, height, rgb);
+    }
+
     /** A copy as a {@link BufferedImage}, for Java's imaging classes (tests, other programs). */
     public BufferedImage toBufferedImage() {
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);

@@ -48,11 +48,7 @@ final class Legend {
             }
         }
         drawTicks(image, picture.height(), left, barWidth, ticks);
-        int[] rgb = image.getRGB(0, 0, width, height, null, 0, width);
-        for (int i = 0; i < rgb.length; i++) {
-            rgb[i] &= 0xFFFFFF;
-        }
-        return new Picture(width, height, rgb);
+        return Picture.of(image);
     }
 
     /**
