@@ -42,7 +42,8 @@ final class StatsReport {
         text.format(LINE, "total", seconds.values().stream().mapToDouble(Double::doubleValue).sum(),
                 "from reading the scene to the written picture; the JVM's start is not counted");
         text.format("per ray: %.2f intersection tests%s", work.testsPerRay(), byKind(work));
-        return text.format(accelerator.walksTree() ? ", %.2f BVH nodes visited%n" : "%n", work.nodesPerRay()).toString();
+        text.format(accelerator.walksTree() ? ", %.2f BVH nodes visited%n" : "%n", work.nodesPerRay());
+        return text.toString();
     }
 
     /** " (2,073,600 camera, 1,234 shadow, ...)" when secondary rays were followed. */
@@ -56,7 +57,8 @@ final class StatsReport {
     private static String answeredBy(WorkCount work) {
         return Stream.of("view grid", "light grids", "mirror grids", "BVH")
                 .filter(structure -> work.answeredBy().getOrDefault(structure, 0L) > 0)
-                .map(structure -> String.format(Locale.ROOT, "%,d by the %s", work.answeredBy().get(structure), structure))
+                .map(structure -> String.format(Locale.ROOT, "%,d by the %s", work.answeredBy().get(structure),
+                        structure))
                 .collect(Collectors.joining(", ")).replaceFirst(" by ", " answered by ");
     }
 
