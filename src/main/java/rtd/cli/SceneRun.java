@@ -53,6 +53,8 @@ final class SceneRun {
     private final StructureCache kept = new StructureCache();
     private final ArrayDeque<Future<?>> pending = new ArrayDeque<>();
     private AnimatedGif gif;
+    /** Whether the note on what {@code --paper} leaves out was shown: once a scene, not once a frame. */
+    private boolean paperNoted;
 
     SceneRun(RenderOptions options, StandardStreams streams, PrintWriter err, FramePlan plan) {
         this.options = options;
@@ -134,7 +136,8 @@ final class SceneRun {
         int width = options.width();
         int height = options.height();
         if (options.paper()) {
-            if (!scene.lights().isEmpty() || options.samples() > 1) {
+            if (!paperNoted && (!scene.lights().isEmpty() || options.samples() > 1)) {
+                paperNoted = true;
                 err.println("rtd: note: --paper draws as the paper does, one ray per pixel in flat colours: "
                         + "the scene's lights and --samples are not used");
             }

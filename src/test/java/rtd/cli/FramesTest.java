@@ -71,6 +71,14 @@ class FramesTest {
         assertThat(new FramePlan(60, 0, 59, 24).frameFile(Path.of("x/out"), 7)).isEqualTo(Path.of("x/out-007"));
     }
 
+    @Test
+    void thePapersNoteOnTheLightsItLeavesOutIsShownOnceNotOnceAFrame() throws IOException {
+        Path lit = scene(MOVING + "light:(0|10|10):(1|1|1)\n");
+        Run run = rtd(lit.toString(), "--frames", "3", "--paper", "-o", dir.resolve("p.png").toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.err().split("--paper draws as the paper does", -1)).hasSize(2);
+    }
+
     /** Frames 2 to 3 of 5 are at clocks 0.5 and 0.75 and named as in the whole animation. */
     @Test
     void aSubsetDrawsItsFramesWithTheirClocksAndNamesInTheWholeAnimation() throws IOException {
