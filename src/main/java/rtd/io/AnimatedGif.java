@@ -110,8 +110,6 @@ public final class AnimatedGif implements AutoCloseable {
         if (root.getElementsByTagName(name).getLength() > 0) {
             return (IIOMetadataNode) root.getElementsByTagName(name).item(0);
         }
-        IIOMetadataNode node = new IIOMetadataNode(name);
-        root.appendChild(node);
-        return node;
+        return (IIOMetadataNode) root.appendChild(new IIOMetadataNode(name));
     }
 }

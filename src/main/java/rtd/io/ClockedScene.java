@@ -58,15 +58,16 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
             Map<String, float[]> numbers = new HashMap<>();
             for (int g = 0; g < v.groupCount(); g++) {
                 int size = v.size(g);
-                String key = v.meaning(g);
+                String meaning = v.statement().group(g).meaning();
+                String key = meaning;
                 for (int n = 2; numbers.containsKey(key); n++) { // a repeated meaning (a transform's steps): "step 2"
-                    key = v.meaning(g) + " " + n;
+                    key = meaning + " " + n;
                 }
                 numbers.put(key, v.numbers(g));
                 for (int k = 0; k < size; k++) {
                     Expression tree = v.tree(g, k);
                     if (tree != null && tree.usesClock()) {
-                        found.computeIfAbsent(key, meaning -> new Expression[size])[k] = tree;
+                        found.computeIfAbsent(key, group -> new Expression[size])[k] = tree;
                     }
                 }
             }
@@ -83,10 +84,6 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         public float value(String group, int k) {
             float[] numbers = values.get(group);
             return numbers == null || k >= numbers.length ? Float.NaN : numbers[k];
-        }
-
-        public boolean has(String group) {
-            return clocked.containsKey(group);
         }
 
         public Set<String> groups() {

@@ -39,10 +39,6 @@ public sealed interface Expression {
         public Call {
             arguments = List.copyOf(arguments);
         }
-
-        public String functionName() {
-            return function.name();
-        }
     }
 
     /** The value at {@code clock}; a part whose value is not finite throws, naming itself. */

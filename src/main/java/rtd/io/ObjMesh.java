@@ -77,7 +77,7 @@ record ObjMesh(float[] vertices, float[] normals, int[] corners, int[] cornerNor
 
     /** The mesh in the OBJ file that group {@code g} names; each mistake in it names the scene's line too. */
     static ObjMesh read(StatementValues values, int g) throws SceneException {
-        SourceText scene = values.source();
+        SourceText scene = values.source;
         String written = values.name(g);
         Path file;
         String shown;

@@ -13,7 +13,7 @@ import rtd.math.Vector3f;
  */
 final class StatementValues {
 
-    private final SourceText source;
+    final SourceText source;
     /** The names of this reading's expressions: the clock and what {@code let} defined (Part III). */
     final Names expressionNames;
     private Statement statement;
@@ -141,10 +141,6 @@ final class StatementValues {
         return line;
     }
 
-    SourceText source() {
-        return source;
-    }
-
     int groupCount() {
         return groupCount;
     }
@@ -178,10 +174,6 @@ final class StatementValues {
 
     String written(int g, int k) {
         return written(firsts[g] + k);
-    }
-
-    String meaning(int g) {
-        return statement.group(g).meaning();
     }
 
     float number(int g, int k) {

@@ -121,7 +121,7 @@ public final class PovClock {
 
     /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene; null if none uses the clock. */
     String lightSum(List<Light> lights) {
-        if (clocked == null || lights.stream().noneMatch(light -> clocked.of(light).has("intensity"))) {
+        if (clocked == null || lights.stream().noneMatch(light -> clocked.of(light).groups().contains("intensity"))) {
             return null; // the sum as rtd adds it, in float
         }
         return "rgb <" + IntStream.range(0, 3).mapToObj(k -> lights.stream()

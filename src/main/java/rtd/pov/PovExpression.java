@@ -109,13 +109,14 @@ final class PovExpression {
     /** A function: angles in POV-Ray are radians, rtd's are degrees. */
     private static String call(Expression.Call call) {
         String a = of(call.arguments().get(0));
-        return switch (call.functionName()) {
-            case "sin", "cos", "tan" -> call.functionName() + "(radians(" + a + "))";
-            case "asin", "acos", "atan" -> "degrees(" + call.functionName() + "(" + a + "))";
+        String name = call.function().name();
+        return switch (name) {
+            case "sin", "cos", "tan" -> name + "(radians(" + a + "))";
+            case "asin", "acos", "atan" -> "degrees(" + name + "(" + a + "))";
             case "atan2" -> "degrees(atan2(" + a + ", " + of(call.arguments().get(1)) + "))";
-            case "min", "max" -> call.functionName() + "(" + a + ", " + of(call.arguments().get(1)) + ")";
-            case "sqrt", "abs", "floor" -> call.functionName() + "(" + a + ")";
-            default -> throw new IllegalArgumentException("no POV-Ray function for " + call.functionName());
+            case "min", "max" -> name + "(" + a + ", " + of(call.arguments().get(1)) + ")";
+            case "sqrt", "abs", "floor" -> name + "(" + a + ")";
+            default -> throw new IllegalArgumentException("no POV-Ray function for " + name);
         };
     }
 
