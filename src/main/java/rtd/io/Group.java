@@ -170,7 +170,7 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
             throw must(v, g, k, name, "from 0 to 255",
                     "an expression in a colour is rounded to a whole number, which must be from 0 to 255");
         }
-        String fractions = Hints.colourFractions(v.numbers(g), 0);
+        String fractions = Hints.colourFractions(v.numbers(g));
         throw must(v, g, k, name, "a whole number from 0 to 255", fractions != null ? fractions
                 : "each channel runs from 0 (none of that colour) to 255 (all of it), in whole numbers");
     }

@@ -129,11 +129,11 @@ final class Hints {
     }
 
     /** For a colour written as fractions from 0 to 1, as other programs write it, the same from 0 to 255; else null. */
-    static String colourFractions(float[] values, int first) {
-        if (!IntStream.range(first, first + 3).allMatch(i -> values[i] >= 0 && values[i] <= 1)) {
+    static String colourFractions(float[] values) {
+        if (!IntStream.range(0, 3).allMatch(i -> values[i] >= 0 && values[i] <= 1)) {
             return null;
         }
-        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is (" + IntStream.range(first, first + 3)
+        return "rtd's colours run from 0 to 255, not from 0 to 1: this colour is (" + IntStream.range(0, 3)
                 .mapToObj(i -> String.valueOf(Math.round(values[i] * 255))).collect(Collectors.joining("|")) + ")";
     }
 
