@@ -58,9 +58,13 @@ final class Hints {
     private Hints() {
     }
 
-    static String forNumber(String token) {
+    /** For a token that is no number; {@code wholeNumberGroup} names its group if that takes whole numbers only. */
+    static String forNumber(String token, String wholeNumberGroup) {
         if (token.indexOf('\u2212') >= 0) {
             return "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead";
+        }
+        if (DECIMAL_COMMA.matcher(token).matches() && wholeNumberGroup != null) {
+            return "in " + wholeNumberGroup + ", write whole numbers separated by '|', not ','";
         }
         if (DECIMAL_COMMA.matcher(token).matches()) {
             return "write decimals with a point: " + token.replace(',', '.');

@@ -15,6 +15,8 @@ final class NumberReader {
     /** Made at the first value that is no plain number: a file of plain numbers never loads it. */
     private ExpressionParser expressions;
     int tokenStart;
+    /** The group read, named for a hint, if it takes whole numbers only (a colour, a light's samples); else null. */
+    String wholeNumberGroup;
     /** The expression read last, and its value in double precision; null for a plain number. */
     private Expression tree;
     private double exact;
@@ -186,6 +188,6 @@ final class NumberReader {
             }
         }
         String token = cursor.source.text(tokenStart, cursor.pos);
-        return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token));
+        return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token, wholeNumberGroup));
     }
 }

@@ -53,6 +53,15 @@ class HintsTest {
             assertThat(onlyError(CAMERA + "material:(glass):(ior=1,5)").help()).isEqualTo("write decimals with a point: 1.5");
         }
 
+        @ParameterizedTest(name = "in {0}")
+        @CsvSource(delimiter = ';', value = {"sphere:(3|8|-1):(2):(0|12,5|255);24;the colour of 'sphere'",
+            "area_light:(0|9|0):(2|0|0):(0|0|2):(4,5|4):(255|255|255);37;the samples of 'area_light'"})
+        void aDecimalCommaInAGroupOfWholeNumbersIsToldToBeABarNotAPoint(String line, int column, String group) {
+            SceneError error = onlyError(CAMERA + line);
+            assertThat(error.column()).isEqualTo(column);
+            assertThat(error.help()).isEqualTo("in " + group + ", write whole numbers separated by '|', not ','");
+        }
+
         @Test
         void commasBetweenTheNumbersOfAGroupAreToldToBeBars() {
             assertThat(onlyError(CAMERA + "sphere:(3,8,-1):(2):(0|127|255)").help())
