@@ -58,8 +58,8 @@ final class GroupReader {
             values.target = values.groupCount() - 1;
         }
         boolean counted = group.rule() != Group.Rule.PROPERTIES && group.rule() != Group.Rule.STEP;
-        numbers.wholeNumberGroup = group.rule() == Group.Rule.COLOUR || group.rule() == Group.Rule.PAINT
-                || group.rule() == Group.Rule.SAMPLES ? group.of(statement) : null;
+        numbers.group = group;
+        numbers.statement = statement;
         int found = 0;
         do {
             cursor.skipBlanks();

@@ -15,8 +15,9 @@ final class NumberReader {
     /** Made at the first value that is no plain number: a file of plain numbers never loads it. */
     private ExpressionParser expressions;
     int tokenStart;
-    /** The group read, named for a hint, if it takes whole numbers only (a colour, a light's samples); else null. */
-    String wholeNumberGroup;
+    /** The group read, and its statement, for a message's hint. */
+    Group group;
+    Statement statement;
     /** The expression read last, and its value in double precision; null for a plain number. */
     private Expression tree;
     private double exact;
@@ -188,6 +189,7 @@ final class NumberReader {
             }
         }
         String token = cursor.source.text(tokenStart, cursor.pos);
-        return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token, wholeNumberGroup));
+        return cursor.error(tokenStart, "expected a number, found '" + token + "'", Hints.forNumber(token,
+                group.takesWholeNumbers() ? group.of(statement) : null));
     }
 }
