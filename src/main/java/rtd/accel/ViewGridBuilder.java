@@ -91,18 +91,9 @@ final class ViewGridBuilder {
         return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
     }
 
-    /**
-     * Per place in the leaf, after {@link #build}: its object's pixels x0, y0, x1, y1 (inclusive), if a ray sees it; in
-     * the leaf's order, as a cell's objects lie, not the file's, where they lie far apart.
-     */
-    int[] footprintsInLeafOrder() {
-        int[] inLeafOrder = new int[footprints.length];
-        for (int f = 0; f < leafOf.length; f++) {
-            if (leafOf[f] >= 0) {
-                System.arraycopy(footprints, 4 * f, inLeafOrder, 4 * leafOf[f], 4);
-            }
-        }
-        return inLeafOrder;
+    /** Per object in file order, after {@link #build}: its pixels x0, y0, x1, y1 (inclusive), if a ray sees it. */
+    int[] footprints() {
+        return footprints;
     }
 
     /**
