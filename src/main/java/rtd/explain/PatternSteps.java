@@ -18,7 +18,8 @@ final class PatternSteps implements PatternObserver {
 
     @Override
     public void pattern(Pattern pattern, double x, double y, double z, double value, Color colour) {
-        text.line(pattern.kind().word() + " pattern, a = " + Numbers.of(pattern.a()) + ", b = " + Numbers.of(pattern.b())
+        text.line(pattern.kind().word() + " pattern, a = " + Numbers.of(pattern.a())
+                + ", b = " + Numbers.of(pattern.b())
                 + ", at (" + number(x) + "|" + number(y) + "|" + number(z) + ") in its space:");
         text.in().line(rule(pattern.kind(), value, colour)).out();
     }
@@ -29,7 +30,8 @@ final class PatternSteps implements PatternObserver {
         return switch (kind) {
             case STRIPES -> "floor(x) = " + whole(value) + ": " + parity + " = " + Numbers.of(colour);
             case RINGS -> "floor(√(x² + z²)) = " + whole(value) + ": " + parity + " = " + Numbers.of(colour);
-            case CHECKER -> "floor(x) + floor(y) + floor(z) = " + whole(value) + ": " + parity + " = " + Numbers.of(colour);
+            case CHECKER -> "floor(x) + floor(y) + floor(z) = " + whole(value) + ": " + parity
+                    + " = " + Numbers.of(colour);
             case GRADIENT -> "x − floor(x) = " + number(value) + ": a + (b − a)·" + number(value)
                     + ", each channel rounded = " + Numbers.of(colour);
         };

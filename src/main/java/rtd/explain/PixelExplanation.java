@@ -62,7 +62,10 @@ public final class PixelExplanation {
         return t;
     }
 
-    /** Listing 4.3's depth test on the hits, as {@link Scene#nearestHit} runs it; returns the nearest object's place, or −1. */
+    /**
+     * Listing 4.3's depth test on the hits, as {@link Scene#nearestHit}
+     * runs it; returns the nearest object's place, or −1.
+     */
     private static int depthTest(Text text, List<IGeometry> objects, Ray ray, float[] t) {
         text.line("3. Depth test (section 3.2.3, Listing 4.3: Scene.nearestHit): the hit nearest to O wins").in();
         float distance = Float.POSITIVE_INFINITY;
@@ -108,7 +111,8 @@ public final class PixelExplanation {
             text.out();
         } else {
             colour = scene.objects().get(nearest).color();
-            text.line("#" + (nearest + 1) + " " + scene.objects().get(nearest).kind() + ", colour " + Numbers.of(colour));
+            text.line("#" + (nearest + 1) + " " + scene.objects().get(nearest).kind() + ", colour "
+                    + Numbers.of(colour));
         }
         text.line("pixel colour: " + Numbers.rgb(colour));
         text.out();

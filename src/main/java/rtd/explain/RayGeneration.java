@@ -29,20 +29,26 @@ final class RayGeneration {
             Vector3f v = orthographic.heightVector();
             float zoom = orthographic.zoom();
             text.line("O = pos + u·x'/zoom + v·y'/zoom = " + Numbers.of(orthographic.position()) + " + "
-                    + Numbers.of(u.multiply(offsetX).divide(zoom)) + " + " + Numbers.of(v.multiply(offsetY).divide(zoom))
+                    + Numbers.of(u.multiply(offsetX).divide(zoom)) + " + "
+                    + Numbers.of(v.multiply(offsetY).divide(zoom))
                     + " = " + Numbers.of(ray.origin()) + "   (zoom " + Numbers.of(zoom) + ")");
-            text.line(orthographic.target() == null ? "R = dir, as the scene file gives it = " + Numbers.of(ray.direction())
-                    : "R = dir = at − pos = " + lookAt(orthographic.target(), orthographic.position(), ray.direction()));
+            text.line(orthographic.target() == null
+                    ? "R = dir, as the scene file gives it = " + Numbers.of(ray.direction())
+                    : "R = dir = at − pos = "
+                            + lookAt(orthographic.target(), orthographic.position(), ray.direction()));
         } else { // the only other camera a scene file makes
             PerspectiveCamera perspective = (PerspectiveCamera) camera;
-            text.line("1. Ray generation (section 3.2.1; rtd's perspective camera: PerspectiveCamera.generateRay)").in();
+            text.line("1. Ray generation (section 3.2.1; rtd's perspective camera: "
+                    + "PerspectiveCamera.generateRay)").in();
             offsets(text, x, y, w, h, offsetX, offsetY);
             if (perspective.target() != null) {
-                text.line("dir = at − pos = " + lookAt(perspective.target(), perspective.position(), perspective.direction()));
+                text.line("dir = at − pos = "
+                        + lookAt(perspective.target(), perspective.position(), perspective.direction()));
             }
             axes(text, perspective.direction(), perspective.widthVector(), perspective.heightVector());
             float f = perspective.focalLength(w);
-            text.line("f = (w/2) / tan(fov/2) = " + Numbers.of((float) (w / 2.0)) + " / tan(" + Numbers.of(perspective.fieldOfView())
+            text.line("f = (w/2) / tan(fov/2) = " + Numbers.of((float) (w / 2.0))
+                    + " / tan(" + Numbers.of(perspective.fieldOfView())
                     + "°/2) = " + Numbers.of(f) + " pixels");
             text.line("O = pos = " + Numbers.of(ray.origin()));
             text.line("R = normalize(dir)·f + u·x' + v·y' = " + Numbers.of(perspective.direction().normalize()) + "·"
@@ -52,7 +58,8 @@ final class RayGeneration {
     }
 
     private static void offsets(Text text, int x, int y, int w, int h, int offsetX, int offsetY) {
-        text.line("x' = x − w/2 = " + x + " − " + (w / 2) + " = " + offsetX + "   (whole numbers: the ray leaves the pixel's corner)");
+        text.line("x' = x − w/2 = " + x + " − " + (w / 2) + " = " + offsetX
+                + "   (whole numbers: the ray leaves the pixel's corner)");
         text.line("y' = y − h/2 = " + y + " − " + (h / 2) + " = " + offsetY);
     }
 
@@ -63,7 +70,8 @@ final class RayGeneration {
 
     private static void axes(Text text, Vector3f dir, Vector3f u, Vector3f v) {
         text.line(ImageAxes.looksStraightUpOrDown(dir)
-                ? "u = " + Numbers.of(u) + "   (right in the image: looking straight up or down, dir × (0,1,0) is zero, "
+                ? "u = " + Numbers.of(u)
+                        + "   (right in the image: looking straight up or down, dir × (0,1,0) is zero, "
                         + "so world x is right, as ImageAxes.of says)"
                 : "u = normalize(dir × (0,1,0)) = " + Numbers.of(u) + "   (right in the image)");
         text.line("v = normalize(dir × u) = " + Numbers.of(v) + "   (down in the image)");

@@ -87,7 +87,8 @@ final class ShadingExplanation implements ShadingObserver {
                 : " (" + scene.lights().size() + " point lights: each area light is its samples)") + ", at most "
                 + WhittedShader.BOUNCES + " bounces; the camera's ray:");
         Rgb colour = new ShadingExplanation(text).shade(scene, ray);
-        text.line("pixel colour: each channel clamped to [0, 1], then floor(255·c + ½): " + Numbers.rgb(colour.toColor()));
+        text.line("pixel colour: each channel clamped to [0, 1], then floor(255·c + ½): "
+                + Numbers.rgb(colour.toColor()));
         text.out();
     }
 
@@ -114,11 +115,13 @@ final class ShadingExplanation implements ShadingObserver {
     @Override
     public void surface(Surface surface) {
         Material m = surface.material();
-        String turned = open.peek().hasBack ? " (the ray meets its back: N turned round)" : " (the ray is inside: N turned round)";
+        String turned = open.peek().hasBack ? " (the ray meets its back: N turned round)"
+                : " (the ray is inside: N turned round)";
         if (surface.hit().object() instanceof Triangle triangle && triangle.isSmooth()) {
             float[] w = triangle.cornerWeights(surface.hit().point());
             text.line("smooth: N = normalize(w1·n1 + w2·n2 + w3·n3), the corners' normals n1 = "
-                    + Numbers.of(triangle.cornerNormal(0)) + ", n2 = " + Numbers.of(triangle.cornerNormal(1)) + ", n3 = "
+                    + Numbers.of(triangle.cornerNormal(0))
+                    + ", n2 = " + Numbers.of(triangle.cornerNormal(1)) + ", n3 = "
                     + Numbers.of(triangle.cornerNormal(2)) + " by P's weights (the area across from each corner) w = "
                     + Numbers.of(w[0], w[1], w[2]));
         }
@@ -126,7 +129,8 @@ final class ShadingExplanation implements ShadingObserver {
                 + ", E = −R/|R| = " + Numbers.of(surface.eye()) + ", over = P + ε·N = " + Numbers.of(surface.over()));
         text.line("finish: ambient " + Numbers.of(m.ambient()) + ", diffuse " + Numbers.of(m.diffuse()) + ", specular "
                 + Numbers.of(m.specular()) + ", shininess " + Numbers.of(m.shininess()) + ", reflective "
-                + Numbers.of(m.reflective()) + ", transparency " + Numbers.of(m.transparency()) + ", ior " + Numbers.of(m.ior()));
+                + Numbers.of(m.reflective()) + ", transparency " + Numbers.of(m.transparency())
+                + ", ior " + Numbers.of(m.ior()));
         lightNumber = 0;
     }
 
@@ -154,7 +158,8 @@ final class ShadingExplanation implements ShadingObserver {
             return;
         }
         lightNumber++;
-        text.line("light " + lightNumber + " at " + Numbers.of(light.position()) + ", intensity " + Numbers.of(light.intensity())
+        text.line("light " + lightNumber + " at " + Numbers.of(light.position())
+                + ", intensity " + Numbers.of(light.intensity())
                 + ":").in();
         String verdict = blocker == null ? "hits nothing: lit"
                 : "hits #" + (blocker.index() + 1) + " " + blocker.object().kind() + " at |P − O| = "
@@ -162,7 +167,8 @@ final class ShadingExplanation implements ShadingObserver {
                         + " (the light's distance less ε = " + Numbers.of(light.clearance()) + "): "
                         + (shadowed ? "in shadow" : "lit (it lies beyond the light)");
         text.line("shadow ray from over along " + Numbers.of(shadowRay.direction()) + " " + verdict);
-        text.line("N·L = " + Numbers.of(terms.lightFacing()) + (terms.lightFacing() <= 0 ? " ≤ 0: the light is behind the surface" : "")
+        text.line("N·L = " + Numbers.of(terms.lightFacing())
+                + (terms.lightFacing() <= 0 ? " ≤ 0: the light is behind the surface" : "")
                 + (Float.isNaN(terms.reflectionToEye()) ? "" : ", Rl·E = " + Numbers.of(terms.reflectionToEye())));
         text.line("ambient  = ambient·c⊙I = " + Numbers.of(terms.ambient()));
         text.line("diffuse  = diffuse·c⊙I·(N·L) = " + Numbers.of(terms.diffuse()));
@@ -193,7 +199,8 @@ final class ShadingExplanation implements ShadingObserver {
         }
         samplesSeen++;
         if (samplesSeen == area.sampleCount()) {
-            text.line(samplesLit + " of " + area.sampleCount() + " samples lit; the area light gives " + Numbers.of(areaSum));
+            text.line(samplesLit + " of " + area.sampleCount() + " samples lit; the area light gives "
+                    + Numbers.of(areaSum));
             text.out();
             samplesSeen = 0;
         }
@@ -204,7 +211,8 @@ final class ShadingExplanation implements ShadingObserver {
         Frame frame = open.peek();
         frame.reflectionSaid = true;
         frame.childIsReflection = true;
-        text.line("reflection along R − 2(R·N)N, from over (× reflective " + Numbers.of(frame.material.reflective()) + "):");
+        text.line("reflection along R − 2(R·N)N, from over (× reflective " + Numbers.of(frame.material.reflective())
+                + "):");
     }
 
     @Override
@@ -229,7 +237,8 @@ final class ShadingExplanation implements ShadingObserver {
 
     private static String snellNumbers(Snell snell) {
         return "n = n1/n2 = " + Numbers.of(snell.from()) + "/" + Numbers.of(snell.to()) + ", cos θi = E·N = "
-                + Numbers.of(snell.cosIncidence()) + ", sin²θt = n²(1 − cos²θi) = " + Numbers.of(snell.sin2Transmitted());
+                + Numbers.of(snell.cosIncidence()) + ", sin²θt = n²(1 − cos²θi) = "
+                + Numbers.of(snell.sin2Transmitted());
     }
 
     @Override
@@ -280,14 +289,16 @@ final class ShadingExplanation implements ShadingObserver {
         sayNoReflection(frame);
         if (!frame.refractionSaid) {
             frame.refractionSaid = true;
-            text.line("refraction: none (" + (frame.material.transparency() <= 0 ? "transparency 0" : "no bounces left") + ")");
+            text.line("refraction: none (" + (frame.material.transparency() <= 0 ? "transparency 0" : "no bounces left")
+                    + ")");
         }
     }
 
     private void sayNoReflection(Frame frame) {
         if (!frame.reflectionSaid) {
             frame.reflectionSaid = true;
-            text.line("reflection: none (" + (frame.material.reflective() <= 0 ? "reflective 0" : "no bounces left") + ")");
+            text.line("reflection: none (" + (frame.material.reflective() <= 0 ? "reflective 0" : "no bounces left")
+                    + ")");
         }
     }
 }

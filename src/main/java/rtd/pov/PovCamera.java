@@ -42,7 +42,8 @@ final class PovCamera {
             // POV-Ray's look_at takes its right axis from sky × direction, which is zero looking straight up or down
             String lookAt = ortho.target() == null || ImageAxes.looksStraightUpOrDown(ortho.direction()) ? ""
                     : "\n  look_at " + vector(plus(location, d(ortho.direction())));
-            return "camera {\n  orthographic\n  location " + vector(location) + "\n  direction " + vector(d(ortho.direction()))
+            return "camera {\n  orthographic\n  location " + vector(location)
+                    + "\n  direction " + vector(d(ortho.direction()))
                     + "\n  right " + vector(times(d(ortho.widthVector()), w / zoom))
                     + "\n  up " + vector(times(d(ortho.heightVector()), -h / zoom)) + lookAt + "\n}\n";
         }
@@ -65,14 +66,17 @@ final class PovCamera {
         if (camera instanceof OrthographicCamera ortho) {
             String zoom = "(" + number(f, "zoom", 0, ortho.zoom()) + ")";
             return axes(f, ortho.position(), ortho.direction(), ortho.target()) + "camera {\n  orthographic\n"
-                    + "  location Rtd_position + Rtd_right * " + shiftX + " / " + zoom + " + Rtd_down * " + shiftY + " / " + zoom
-                    + "\n  direction Rtd_view\n  right Rtd_right * " + w + " / " + zoom + "\n  up Rtd_down * " + factor(-h) + " / "
+                    + "  location Rtd_position + Rtd_right * " + shiftX + " / " + zoom
+                    + " + Rtd_down * " + shiftY + " / " + zoom
+                    + "\n  direction Rtd_view\n  right Rtd_right * " + w + " / " + zoom
+                    + "\n  up Rtd_down * " + factor(-h) + " / "
                     + zoom + "\n}\n";
         }
         PerspectiveCamera perspective = (PerspectiveCamera) camera;
         String fov = number(f, "field of view", 0, perspective.fieldOfView());
         return axes(f, perspective.position(), perspective.direction(), perspective.target())
-                + "camera {\n  perspective\n  location Rtd_position\n  direction vnormalize(Rtd_view) * " + PovNumbers.num(w / 2.0)
+                + "camera {\n  perspective\n  location Rtd_position\n  direction vnormalize(Rtd_view) * "
+                + PovNumbers.num(w / 2.0)
                 + " / tan(radians(" + fov + ") / 2) + Rtd_right * " + shiftX + " + Rtd_down * " + shiftY
                 + "\n  right Rtd_right * " + w + "\n  up Rtd_down * " + factor(-h) + "\n}\n";
     }
@@ -81,7 +85,8 @@ final class PovCamera {
     private static String axes(ClockFields f, Vector3f position, Vector3f direction, Vector3f target) {
         String view = target != null ? PovClock.vector(f, "view direction", target) + " - Rtd_position"
                 : PovClock.vector(f, "view direction", direction);
-        return "#declare Rtd_position = " + PovClock.vector(f, "position", position) + ";\n#declare Rtd_view = " + view + ";\n"
+        return "#declare Rtd_position = " + PovClock.vector(f, "position", position)
+                + ";\n#declare Rtd_view = " + view + ";\n"
                 + "#declare Rtd_right = vnormalize(vcross(Rtd_view, <0, 1, 0>));\n"
                 + "#declare Rtd_down = vnormalize(vcross(Rtd_view, Rtd_right));\n";
     }

@@ -119,7 +119,10 @@ public final class PovClock {
         return clocked == null ? null : clocked.ambient();
     }
 
-    /** The sum of the lights' intensities, POV-Ray's {@code ambient_light} for a shaded scene; null if none uses the clock. */
+    /**
+     * The sum of the lights' intensities, POV-Ray's {@code ambient_light}
+     * for a shaded scene; null if none uses the clock.
+     */
     String lightSum(List<Light> lights) {
         if (clocked == null || lights.stream().noneMatch(light -> clocked.of(light).groups().contains("intensity"))) {
             return null; // the sum as rtd adds it, in float
@@ -144,7 +147,8 @@ public final class PovClock {
     /** A shape's colour, as {@code rgb <…>} or, with a share let through ({@code filter > 0}), as {@code rgbt <…>}. */
     static String pigment(ClockFields f, Color colour, float filter) {
         String channels = channels(f, "colour", Rgb.of(colour));
-        return filter <= 0 ? "pigment { rgb <" + channels + "> }" : "pigment { rgbt <" + channels + ", " + num(filter) + "> }";
+        return filter <= 0 ? "pigment { rgb <" + channels + "> }"
+                : "pigment { rgbt <" + channels + ", " + num(filter) + "> }";
     }
 
     /** {@code colour} as {@code rgb <…>}, its channels from {@code group} where they use the clock. */
@@ -187,7 +191,8 @@ public final class PovClock {
             return "smooth_triangle { " + corners;
         }
         if (shape instanceof Triangle t) {
-            return "triangle { " + vector(f, "first corner", t.corner(0)) + ", " + vector(f, "second corner", t.corner(1))
+            return "triangle { " + vector(f, "first corner", t.corner(0))
+                    + ", " + vector(f, "second corner", t.corner(1))
                     + ", " + vector(f, "third corner", t.corner(2));
         }
         if (shape instanceof Box b) {
@@ -200,7 +205,8 @@ public final class PovClock {
         }
         if (shape instanceof Cone c) {
             return "cone { " + vector(f, "first end", c.first()) + ", " + number(f, "first radius", 0, c.firstRadius())
-                    + ", " + vector(f, "second end", c.second()) + ", " + number(f, "second radius", 0, c.secondRadius());
+                    + ", " + vector(f, "second end", c.second())
+                    + ", " + number(f, "second radius", 0, c.secondRadius());
         }
         throw new IllegalArgumentException("no POV-Ray shape for a " + shape.kind());
     }

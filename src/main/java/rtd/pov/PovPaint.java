@@ -39,7 +39,10 @@ final class PovPaint {
         return text.append('>').toString();
     }
 
-    /** The pigment of {@code shape} in {@code pattern}'s colours; {@code filter} is the rgbt share let through (0: none). */
+    /**
+     * The pigment of {@code shape} in {@code pattern}'s colours;
+     * {@code filter} is the rgbt share let through (0: none).
+     */
     static String pigment(IGeometry shape, Pattern pattern, float filter) {
         String[] p = under(shape);
         Matrix4 inverse = pattern.transform().inverse();
@@ -56,7 +59,8 @@ final class PovPaint {
             case RINGS -> "0.5*abs(mod(floor(sqrt(" + q[0] + "*" + q[0] + " + " + q[2] + "*" + q[2] + ")), 2))";
             case GRADIENT -> q[0] + " - floor(" + q[0] + ")";
         };
-        String map = pattern.kind() == Pattern.Kind.GRADIENT ? "[0 " + a + "] [1 " + b + "]" : "[0.25 " + a + "] [0.25 " + b + "]";
+        String map = pattern.kind() == Pattern.Kind.GRADIENT ? "[0 " + a + "] [1 " + b + "]"
+                : "[0.25 " + a + "] [0.25 " + b + "]";
         return "pigment { function { " + rule + " } color_map { " + map + " } }";
     }
 
@@ -77,14 +81,16 @@ final class PovPaint {
                 "(" + num(c.z()) + " + (z - " + num(c.z()) + ")*" + num(k) + ")"};
         }
         if (shape instanceof Box box) {
-            return new String[] {clamp("x", box.min().x(), box.max().x(), lift), clamp("y", box.min().y(), box.max().y(), lift),
+            return new String[] {clamp("x", box.min().x(), box.max().x(), lift),
+                clamp("y", box.min().y(), box.max().y(), lift),
                 clamp("z", box.min().z(), box.max().z(), lift)};
         }
         return new String[] {"x", "y", "z"};
     }
 
     private static String[] along(Vector3f n, double lift) {
-        return new String[] {"(x - " + num(lift * n.x()) + ")", "(y - " + num(lift * n.y()) + ")", "(z - " + num(lift * n.z()) + ")"};
+        return new String[] {"(x - " + num(lift * n.x()) + ")", "(y - " + num(lift * n.y()) + ")",
+            "(z - " + num(lift * n.z()) + ")"};
     }
 
     private static String clamp(String axis, float low, float high, double lift) {

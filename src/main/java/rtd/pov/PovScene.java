@@ -59,10 +59,14 @@ public final class PovScene {
         return word.matches("[A-Za-z0-9_./+=:,@%-]+") ? word : "'" + word.replace("'", "'\\''") + "'";
     }
 
-    /** The POV-Ray text of {@code scene} as rtd draws it at {@code w × h}; {@code povFile} names the file, for the comment. */
+    /**
+     * The POV-Ray text of {@code scene} as rtd draws it at
+     * {@code w × h}; {@code povFile} names the file, for the comment.
+     */
     public static String of(Scene scene, int w, int h, String povFile) {
         return "// A POV-Ray 3.7 twin of an rtd scene, written by rtd --export-pov. Render it at rtd's size with\n//   "
-                + command(povFile, povFile.replaceAll("(?i)\\.pov$", "") + "-pov.png", w, h) + "\n" + notes(scene, "// and compare")
+                + command(povFile, povFile.replaceAll("(?i)\\.pov$", "") + "-pov.png", w, h) + "\n"
+                + notes(scene, "// and compare")
                 + "#version 3.7;\n\n" + body(scene, w, h, PovClock.STILL);
     }
 
@@ -85,11 +89,13 @@ public final class PovScene {
     private static String notes(Scene scene, String opening) {
         String notes = opening + (!scene.lights().isEmpty()
                 ? " decoded pixels: shaded scenes agree but for shadow and silhouette edges and a level here\n"
-                        + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); glass that also mirrors uses\n"
+                        + "// and there (POV-Ray aims shadow rays from P, rtd from just above it); "
+                        + "glass that also mirrors uses\n"
                         + "// POV-Ray's own Fresnel reflection, close to rtd's Schlick mix but not the same.\n"
                 : " decoded pixels: flat scenes agree but for the odd pixel on an edge.\n");
         if (scene.lights().stream().anyMatch(light -> light.area() != null)) {
-            notes += "// Area lights: their lights fall on rtd's samples and cast the same soft shadows; POV-Ray lights with\n"
+            notes += "// Area lights: their lights fall on rtd's samples and cast the same soft shadows; "
+                    + "POV-Ray lights with\n"
                     + "// each area light's centre where rtd sums its samples, so highlights differ a little.\n";
         }
         return notes;

@@ -40,7 +40,8 @@ public record ViewPicture(Picture picture, String report) {
         return switch (view) {
             case cost -> cost(raw, scene.objects().size());
             case depth -> depth(raw);
-            case normal -> new ViewPicture(raw, "normal: red, green, blue = (N + 1)/2 of the unit normal's x, y, z; no hit: black\n");
+            case normal -> new ViewPicture(raw,
+                    "normal: red, green, blue = (N + 1)/2 of the unit normal's x, y, z; no hit: black\n");
             case id -> new ViewPicture(raw, idReport(scene.objects()));
         };
     }
@@ -67,8 +68,9 @@ public record ViewPicture(Picture picture, String report) {
         ticks.add(new Legend.Tick(1, top + " tests"));
         Picture picture = Legend.below(new Picture(raw.width(), raw.height(), rgb), ViewColours::heat, ticks);
         String report = String.format(Locale.ROOT,
-                "cost: intersection tests per camera ray, colours on a logarithmic scale from 0 (black) to %d, the scene's "
-                        + "number of objects (pale yellow)%nthis picture: %,d tests for %,d rays, %.2f per ray, at most %d%n",
+                "cost: intersection tests per camera ray, colours on a logarithmic scale from 0 (black) to %d, "
+                        + "the scene's number of objects (pale yellow)%n"
+                        + "this picture: %,d tests for %,d rays, %.2f per ray, at most %d%n",
                 top, total, counts.length, (double) total / counts.length, max);
         return new ViewPicture(picture, report);
     }
@@ -87,11 +89,15 @@ public record ViewPicture(Picture picture, String report) {
         int[] rgb = new int[raw.rgb().length];
         for (int i = 0; i < rgb.length; i++) {
             float distance = Float.intBitsToFloat(raw.rgb()[i]);
-            rgb[i] = Float.isFinite(distance) ? grey(far > near ? Math.min(1, (distance - near) / (double) (far - near)) : 0) : 0;
+            rgb[i] = Float.isFinite(distance)
+                    ? grey(far > near ? Math.min(1, (distance - near) / (double) (far - near)) : 0)
+                    : 0;
         }
-        List<Legend.Tick> ticks = List.of(new Legend.Tick(0, label(near)), new Legend.Tick(1, label(far) + (tail ? "+" : "")));
+        List<Legend.Tick> ticks = List.of(new Legend.Tick(0, label(near)),
+                new Legend.Tick(1, label(far) + (tail ? "+" : "")));
         Picture picture = Legend.below(new Picture(raw.width(), raw.height(), rgb), ViewPicture::grey, ticks);
-        String scale = tail ? String.format(Locale.ROOT, "dark grey at %s, which %d %% of the hits are nearer than (the "
+        String scale = tail ? String.format(Locale.ROOT,
+                "dark grey at %s, which %d %% of the hits are nearer than (the "
                 + "farthest, at %s, are dark grey too)", label(far), Math.round(MOST_HITS * 100), label(farthest))
                 : String.format(Locale.ROOT, "dark grey at %s (the farthest)", label(far));
         String report = String.format(Locale.ROOT, "depth: |P − O| of each camera ray's nearest hit, white at %s (the "
