@@ -28,7 +28,8 @@ public record Cone(Vector3f first, float firstRadius, Vector3f second, float sec
     public Intersection intersect(Ray ray, TestObserver watch) {
         Vector3f o = ray.origin();
         Vector3f d = ray.direction();
-        return Intersection.at(ray, hit(first.x(), first.y(), first.z(), firstRadius, second.x(), second.y(), second.z(),
+        return Intersection.at(ray, hit(first.x(), first.y(), first.z(), firstRadius,
+                second.x(), second.y(), second.z(),
                 secondRadius, o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), watch));
     }
 

@@ -54,7 +54,9 @@ final class Disc {
         return t >= 0 ? t : Float.NaN;
     }
 
-    /** Whether {@code t} is a hit ({@code ≥ 0}) nearer than {@code best} (NaN: none yet); on a tie the earlier stays. */
+    /**
+     * Whether {@code t} is a hit ({@code ≥ 0}) nearer than {@code best} (NaN: none yet); on a tie the earlier stays.
+     */
     static boolean nearer(float t, float best) {
         return t >= 0 && !(t >= best);
     }

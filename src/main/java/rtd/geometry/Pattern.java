@@ -36,7 +36,9 @@ public final class Pattern {
     private final Matrix4 transform;
     private final Matrix4 inverse;
 
-    /** The pattern of {@code kind} in colours a and b, placed by {@code transform} ({@link Matrix4#IDENTITY}: as it is). */
+    /**
+     * The pattern of {@code kind} in colours a and b, placed by {@code transform} ({@link Matrix4#IDENTITY}: as it is).
+     */
     public Pattern(Kind kind, Color a, Color b, Matrix4 transform) {
         this.kind = kind;
         this.a = a;
@@ -92,7 +94,8 @@ public final class Pattern {
 
     /** a + (b − a)·f, channel by channel, rounded to whole numbers (½ up), as the scene file's colours are. */
     private Color blend(double f) {
-        return new Color(channel(a.red(), b.red(), f), channel(a.green(), b.green(), f), channel(a.blue(), b.blue(), f));
+        return new Color(channel(a.red(), b.red(), f), channel(a.green(), b.green(), f),
+                channel(a.blue(), b.blue(), f));
     }
 
     private static int channel(int from, int to, double f) {

@@ -54,7 +54,7 @@ public final class RayTriangle {
             TestObserver watch) {
         float facing = (dx * v[at + NORMAL]) + (dy * v[at + NORMAL + 1]) + (dz * v[at + NORMAL + 2]);          // R·n
         float along = ((v[at] - ox) * v[at + NORMAL]) + ((v[at + 1] - oy) * v[at + NORMAL + 1])
-                + ((v[at + 2] - oz) * v[at + NORMAL + 2]);                                                   // (p1 − O)·n
+                + ((v[at + 2] - oz) * v[at + NORMAL + 2]);                                                 // (p1 − O)·n
         float t = along / facing;
         watch.plane(facing, along, t);
         if (!(t >= 0) || facing == 0 || Float.isInfinite(t)) {
@@ -74,7 +74,8 @@ public final class RayTriangle {
     }
 
     /** Whether P lies on the triangle's side of edge {@code k}, up to the rounding allowed. */
-    private static boolean inside(float[] v, int at, int k, float px, float py, float pz, float loose, TestObserver watch) {
+    private static boolean inside(float[] v, int at, int k, float px, float py, float pz, float loose,
+            TestObserver watch) {
         float side = side(v, at, k, px, py, pz);
         float allowance = allowance(v, at, k, px, py, pz, loose);
         watch.triangleSide(k, side, allowance);
@@ -124,7 +125,8 @@ public final class RayTriangle {
 
     /** {@code (P − corner)·inward}, with both given by where they start in {@code v}. */
     private static float dotFrom(float[] v, int corner, int inward, float px, float py, float pz) {
-        return ((px - v[corner]) * v[inward]) + ((py - v[corner + 1]) * v[inward + 1]) + ((pz - v[corner + 2]) * v[inward + 2]);
+        return ((px - v[corner]) * v[inward]) + ((py - v[corner + 1]) * v[inward + 1])
+                + ((pz - v[corner + 2]) * v[inward + 2]);
     }
 
     /**
@@ -186,7 +188,10 @@ public final class RayTriangle {
         return n > 0 ? Math.max(1, longest / n) : 1; // never hit if n = 0
     }
 
-    /** {@code |q − p|} of the points whose x, y, z start at {@code v[p]} and {@code v[q]}, as {@link Vector3f} works it out. */
+    /**
+     * {@code |q − p|} of the points whose x, y, z start at
+     * {@code v[p]} and {@code v[q]}, as {@link Vector3f} works it out.
+     */
     static float distance(float[] v, int p, int q) {
         return length(v[q] - v[p], v[q + 1] - v[p + 1], v[q + 2] - v[p + 2]);
     }

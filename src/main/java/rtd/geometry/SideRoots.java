@@ -35,7 +35,8 @@ final class SideRoots {
      * The ray's {@code t = t0 + t'} of the root {@code t'} (counted from O') if it lies between the
      * ends and is a hit nearer than {@code best}, else {@code best}.
      */
-    private static float between(float t0, float root, float hw, float hd, float length, float best, TestObserver watch) {
+    private static float between(float t0, float root, float hw, float hd, float length, float best,
+            TestObserver watch) {
         float along = hw + root * hd;                         // s = h·(w + t'·R)
         boolean between = along >= 0 && along <= length;
         float t = t0 + root;

@@ -19,11 +19,16 @@ public interface TestObserver {
     default void sphere(float cx, float cy, float cz, float a, float b, float c, float discriminant) {
     }
 
-    /** The roots of a quadratic as they are tried: √D, then {@code (−b − √D)/2a}, then {@code (−b + √D)/2a} (NaN: not needed). */
+    /**
+     * The roots of a quadratic as they are tried: √D, then
+     * {@code (−b − √D)/2a}, then {@code (−b + √D)/2a} (NaN: not needed).
+     */
     default void roots(float root, float near, float far) {
     }
 
-    /** A plane's (or a triangle's plane's) {@code t = along / facing}: {@code along = (Q − O)·n}, {@code facing = R·n}. */
+    /**
+     * A plane's (or a triangle's plane's) {@code t = along / facing}: {@code along = (Q − O)·n}, {@code facing = R·n}.
+     */
     default void plane(float facing, float along, float t) {
     }
 
@@ -46,7 +51,10 @@ public interface TestObserver {
     default void trianglePoint(float px, float py, float pz, float loose, boolean nearTheCorners) {
     }
 
-    /** A triangle's side test of edge {@code edge} (0, 1, 2): {@code (P − corner)·(n × edge)}, and the rounding it allows. */
+    /**
+     * A triangle's side test of edge {@code edge} (0, 1, 2):
+     * {@code (P − corner)·(n × edge)}, and the rounding it allows.
+     */
     default void triangleSide(int edge, float side, float allowance) {
     }
 
@@ -69,7 +77,10 @@ public interface TestObserver {
     default void side(float t0, float a, float b, float c, float discriminant) {
     }
 
-    /** A root of the side's quadratic as the ray's {@code t = t0 + t'}, {@code along} the axis from the first end, {@code between} the ends or not. */
+    /**
+     * A root of the side's quadratic as the ray's {@code t = t0 + t'},
+     * {@code along} the axis from the first end, {@code between} the ends or not.
+     */
     default void sideRoot(float t, float along, boolean between) {
     }
 

@@ -161,7 +161,8 @@ public final class ParallelRenderer {
             Arrays.fill(sum, 0);
             for (int j = 0; j < samples; j++) {
                 for (int i = 0; i < samples; i++) {
-                    rays.fill(camera, left, top, right, bottom, width, height, (i + 0.5f) / samples, (j + 0.5f) / samples);
+                    rays.fill(camera, left, top, right, bottom, width, height, (i + 0.5f) / samples,
+                            (j + 0.5f) / samples);
                     tracer.traceAll(rays, hits);
                     for (int k = 0; k < rays.count(); k++) {
                         Rgb clamped = shader.colour(rays, hits, k).clamped();

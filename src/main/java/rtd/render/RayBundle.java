@@ -35,7 +35,9 @@ public final class RayBundle {
     public record Pixels(ICamera camera, int left, int top, int right, int bottom, int width, int height, float sampleX,
             float sampleY) {
 
-        /** The camera's ray {@code i}, row by row: through its pixel's corner, as Listing 4.1, or the sample's point. */
+        /**
+         * The camera's ray {@code i}, row by row: through its pixel's corner, as Listing 4.1, or the sample's point.
+         */
         Ray ray(int i) {
             int x = left + i % (right - left);
             int y = top + i / (right - left);

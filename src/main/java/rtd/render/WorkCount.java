@@ -30,7 +30,9 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
         this(rays, testsByKind, nodesVisited, Map.of(), Map.of());
     }
 
-    /** This work, and {@code secondary} rays more by kind (which {@link #rays} already counts: the tracer traced them). */
+    /**
+     * This work, and {@code secondary} rays more by kind (which {@link #rays} already counts: the tracer traced them).
+     */
     public WorkCount plusSecondary(Map<String, Long> secondary) {
         return new WorkCount(rays, testsByKind, nodesVisited, sum(secondaryRays, secondary, 1), answeredBy);
     }

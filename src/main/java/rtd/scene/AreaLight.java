@@ -27,7 +27,8 @@ public record AreaLight(Vector3f corner, Vector3f u, Vector3f v, int n, int m, R
     /** Checks the sample counts. */
     public AreaLight {
         if (n < 1 || n > MOST_SAMPLES || m < 1 || m > MOST_SAMPLES) {
-            throw new IllegalArgumentException("an area light takes 1 to 32 samples along each edge, not " + n + " × " + m);
+            throw new IllegalArgumentException("an area light takes 1 to 32 samples along each edge, not "
+                    + n + " × " + m);
         }
     }
 

@@ -34,7 +34,9 @@ public final class SceneWarnings {
     private SceneWarnings() {
     }
 
-    /** The warnings for {@code scene} (its camera as rendered at {@code width × height}); the lights' if {@code lit}. */
+    /**
+     * The warnings for {@code scene} (its camera as rendered at {@code width × height}); the lights' if {@code lit}.
+     */
     public static List<String> of(Scene scene, int width, int height, boolean lit) {
         List<String> warnings = new ArrayList<>();
         List<IGeometry> objects = scene.objects();
@@ -82,8 +84,10 @@ public final class SceneWarnings {
                 return hit.happened() && hit.t() == 0;
             }).count() >= 3) {
                 return Optional.of("the camera stands in plane #" + (i + 1) + " (through "
-                        + point(plane.point()) + ", normal " + point(plane.normal()) + "): every ray that leaves it hits "
-                        + "that plane at distance 0, so the picture shows that plane alone; move the camera or the plane "
+                        + point(plane.point()) + ", normal " + point(plane.normal())
+                        + "): every ray that leaves it hits "
+                        + "that plane at distance 0, so the picture shows that plane alone; "
+                        + "move the camera or the plane "
                         + "a little");
             }
         }
@@ -104,8 +108,10 @@ public final class SceneWarnings {
         if (IntStream.range(0, objects.size()).anyMatch(i -> i != room && overlap(objects.get(i).bounds(), box))) {
             return Optional.empty();
         }
-        return Optional.of("the camera is inside " + describe(objects.get(room), room) + ": every ray starts inside it, "
-                + "so the picture shows its inside" + (shaded ? "" : ", all in one colour") + "; move the camera out of it");
+        return Optional.of("the camera is inside " + describe(objects.get(room), room)
+                + ": every ray starts inside it, "
+                + "so the picture shows its inside" + (shaded ? "" : ", all in one colour")
+                + "; move the camera out of it");
     }
 
     /** A sphere or box that holds the light but not the camera, which sees its outside only. */
@@ -113,7 +119,8 @@ public final class SceneWarnings {
         for (int i = 0; i < objects.size(); i++) {
             if (inside(objects.get(i), light.position()) && !holdsAll(objects.get(i), corners)) {
                 return Optional.of(name + " at " + point(light.position()) + " is inside "
-                        + describe(objects.get(i), i) + ": every point outside it is in its shadow, so the light lights "
+                        + describe(objects.get(i), i)
+                        + ": every point outside it is in its shadow, so the light lights "
                         + "nothing outside it; move the light out of it");
             }
         }

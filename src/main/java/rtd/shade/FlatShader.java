@@ -24,7 +24,10 @@ public final class FlatShader implements Shader {
      * a hit and a miss take the same path, without a branch.
      */
     private final int[] colours;
-    /** Whether object {@code index} is patterned, at {@code index + 1} as in {@link #colours}: its colour is found at the hit. */
+    /**
+     * Whether object {@code index} is patterned, at {@code index + 1}
+     * as in {@link #colours}: its colour is found at the hit.
+     */
     private final boolean[] patterned;
     private final List<IGeometry> objects;
     private final boolean anyPatterned;

@@ -48,7 +48,8 @@ public final class Lighting {
         Vector3f reflected = normal.multiply(2 * lightFacing).subtract(toLight); // Rl = 2(N·L)N − L
         float reflectionToEye = reflected.dot(eye);                          // Rl·E
         if (reflectionToEye <= 0) {
-            return new LightTerms(ambient, diffuse, Rgb.BLACK, lightFacing, reflectionToEye); // the highlight points away
+            // the highlight points away
+            return new LightTerms(ambient, diffuse, Rgb.BLACK, lightFacing, reflectionToEye);
         }
         float highlight = (float) Math.pow(reflectionToEye, material.shininess());
         return new LightTerms(ambient, diffuse, light.intensity().times(material.specular() * highlight), lightFacing,

@@ -35,7 +35,10 @@ public interface ShadingObserver {
         return PatternObserver.NONE;
     }
 
-    /** The shadow ray towards {@code light} hit {@code blocker} ({@code null}: nothing); the light is {@code lightDistance} away. */
+    /**
+     * The shadow ray towards {@code light} hit {@code blocker}
+     * ({@code null}: nothing); the light is {@code lightDistance} away.
+     */
     default void shadowRay(Light light, Ray shadowRay, Hit blocker, float lightDistance) {
     }
 

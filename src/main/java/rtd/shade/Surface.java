@@ -26,7 +26,9 @@ import rtd.math.Vector3f;
  */
 public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean inside, Vector3f over, Vector3f under) {
 
-    /** ε per unit of the hit point's largest coordinate: how far {@link #over} and {@link #under} lie off the surface. */
+    /**
+     * ε per unit of the hit point's largest coordinate: how far {@link #over} and {@link #under} lie off the surface.
+     */
     public static final float LIFT = Hit.LIFT;
 
     /**

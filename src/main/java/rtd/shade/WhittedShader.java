@@ -119,7 +119,10 @@ public final class WhittedShader implements Shader {
         return sum;
     }
 
-    /** Whether the light is in front of the surface ({@code N·L > 0}), where its shadow ray matters; always while explaining. */
+    /**
+     * Whether the light is in front of the surface ({@code N·L > 0}),
+     * where its shadow ray matters; always while explaining.
+     */
     private boolean facesTheLight(Surface surface, Light light) {
         return observer != ShadingObserver.NONE
                 || light.position().subtract(surface.over()).normalize().dot(surface.normal()) > 0;
@@ -143,7 +146,9 @@ public final class WhittedShader implements Shader {
         return blocker != null && blocker.distance() < distance;
     }
 
-    /** Step 4: {@code reflective · shade(ray from over along R − 2(R·N)N)}; black for a matt surface or the last bounce. */
+    /**
+     * Step 4: {@code reflective · shade(ray from over along R − 2(R·N)N)}; black for a matt surface or the last bounce.
+     */
     private Rgb reflected(Surface surface, int remaining) {
         float reflective = surface.material().reflective();
         if (reflective <= 0 || remaining <= 0) {

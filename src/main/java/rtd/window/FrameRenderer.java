@@ -140,7 +140,9 @@ final class FrameRenderer implements AutoCloseable {
         return shownFrame == asked;
     }
 
-    /** Runs {@code job} next on the render thread, in place of any job still waiting; {@code cancel}s the running one. */
+    /**
+     * Runs {@code job} next on the render thread, in place of any job still waiting; {@code cancel}s the running one.
+     */
     synchronized void submit(Runnable job, boolean cancel) {
         if (thread.isShutdown()) {
             return; // the window is closed
