@@ -10,6 +10,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.IntStream;
 import javax.imageio.ImageIO;
@@ -37,6 +39,9 @@ class StudentEditIT {
     private static final String EQUATION_3_8 = "float c = (cx * cx + cy * cy + cz * cz) - r * r;";
     private static final String EDITED = "float c = (cx * cx + cy * cy + cz * cz) - 0.5f * r * r;";
     private static final String JAR = System.getProperty("rtd.jar", "target/rtd.jar");
+
+    /** The pictures drawn so far, by {@link #render}'s arguments. */
+    private static final Map<String, int[]> DRAWN = new ConcurrentHashMap<>();
 
     @TempDir
     static Path work;
@@ -112,7 +117,21 @@ class StudentEditIT {
         assertThat(explained).contains("c = (O − M)·(O − M) − r² = 313.5").doesNotContain("= 301   (equation 3.8)");
     }
 
+    /**
+     * The pixels of {@code scene} drawn with {@code options}, with or without the edit; each picture is drawn once, as
+     * the loop's pictures are the same for every path compared with them.
+     */
     private static int[] render(boolean withEdit, String scene, String options) throws Exception {
+        String key = withEdit + " " + scene + " " + options;
+        int[] drawn = DRAWN.get(key);
+        if (drawn == null) {
+            drawn = draw(withEdit, scene, options);
+            DRAWN.put(key, drawn);
+        }
+        return drawn;
+    }
+
+    private static int[] draw(boolean withEdit, String scene, String options) throws Exception {
         Path out = Files.createTempFile(work, "picture", ".png");
         Files.delete(out);
         List<String> args = new ArrayList<>(List.of(options.split(" ")));
