@@ -16,7 +16,10 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.parallel.Isolated;
 
+// it sets the system properties that every run of the command reads its streams' encoding from
+@Isolated
 @DisplayName("rtd's text in an encoding that lacks its signs")
 class AsciiFallbackWriterTest {
 

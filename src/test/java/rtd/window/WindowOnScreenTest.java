@@ -26,6 +26,7 @@ import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.parallel.Isolated;
 import org.junit.jupiter.api.io.TempDir;
 import rtd.explain.PixelExplanation;
 import rtd.io.SceneIO;
@@ -37,6 +38,8 @@ import rtd.window.PicturePanel.PixelMapping;
  * The window on a real screen (an X server, Xvfb on CI), driven through the command line and
  * {@link Robot}: skipped with a message where Java has no display.
  */
+// a robot clicks and reads the screen: no other window may open meanwhile
+@Isolated
 @DisplayName("The window on a screen")
 class WindowOnScreenTest {
 
