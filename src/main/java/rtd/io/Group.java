@@ -71,12 +71,12 @@ record Group(String meaning, Rule rule, String shape, int size, String help) {
         };
     }
 
-    /** "the centre of 'sphere'", for messages. */
     /** Whether the group's numbers are whole ones only: a colour's channels, an area light's samples. */
     boolean takesWholeNumbers() {
         return rule == Rule.COLOUR || rule == Rule.PAINT || rule == Rule.SAMPLES;
     }
 
+    /** "the centre of 'sphere'", for messages. */
     String of(Statement statement) {
         return "the " + meaning + " of '" + statement.keyword() + "'";
     }
