@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
+import java.util.stream.Stream;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IVersionProvider;
@@ -16,6 +17,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.UnmatchedArgumentException;
+import rtd.io.Hints;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 import rtd.view.View;
@@ -175,7 +177,10 @@ public final class RtdCommand implements Callable<Integer> {
             CommandLine cmd = ex.getCommandLine();
             PrintWriter err = cmd.getErr();
             err.println("rtd: " + ex.getMessage());
-            UnmatchedArgumentException.printSuggestions(ex, err);
+            List<String> suggestions = suggestions(ex);
+            if (!suggestions.isEmpty()) {
+                err.println("Possible solutions: " + String.join(", ", suggestions));
+            }
             err.println("Try '" + cmd.getCommandName() + " --help' for more information.");
             err.flush();
             return cmd.getCommandSpec().exitCodeOnInvalidInput();
@@ -190,6 +195,24 @@ public final class RtdCommand implements Callable<Integer> {
             return 1;
         });
         return commandLine;
+    }
+
+    /**
+     * For an unknown option, the options it may have meant: first the one within a few edits of it ({@code --wdith}:
+     * {@code --width}, a swap of two letters that picocli's likeness misses), then picocli's own suggestions.
+     */
+    private static List<String> suggestions(ParameterException ex) {
+        if (!(ex instanceof UnmatchedArgumentException unmatched)) {
+            return List.of();
+        }
+        List<String> picocli = unmatched.getSuggestions();
+        List<String> words = unmatched.getUnmatched();
+        if (words.isEmpty() || !words.get(0).startsWith("--")) {
+            return picocli;
+        }
+        String nearest = Hints.nearest(words.get(0).split("=", 2)[0], ex.getCommandLine().getCommandSpec()
+                .optionsMap().keySet().stream().filter(name -> name.startsWith("--")).toList());
+        return nearest == null ? picocli : Stream.concat(Stream.of(nearest), picocli.stream()).distinct().toList();
     }
 
     /** {@code --version}: the version in the jar's manifest. */

@@ -15,7 +15,7 @@ import java.util.stream.IntStream;
  * The {@code = help:} lines for the mistakes people really make in a scene file (a decimal comma, an invisible
  * character, the paper's line numbers…), and "did you mean …?" for a misspelt word or a synonym ({@code kugel}).
  */
-final class Hints {
+public final class Hints {
 
     static final String COMMENTS = "comments start with //";
     /** The forms of a number; "or" between them, since a comma would read as a decimal comma. */
@@ -171,7 +171,7 @@ final class Hints {
      * The candidate nearest to {@code word}, case ignored (the first in alphabetical order of equally near ones), or
      * null if none is within two edits, or a third of the candidate's length for long words.
      */
-    static String nearest(String word, Collection<String> candidates) {
+    public static String nearest(String word, Collection<String> candidates) {
         ToIntFunction<String> distance = candidate -> editDistance(word.toLowerCase(Locale.ROOT),
                 candidate.toLowerCase(Locale.ROOT));
         return candidates.stream().sorted().min(Comparator.comparingInt(distance)) // min keeps the first of equals

@@ -80,6 +80,14 @@ class CommandLineTest {
     }
 
     @Test
+    void anOptionWithTwoLettersSwappedIsToldTheOptionItMeantFirst() {
+        assertThat(Cli.run(EXAMPLE.toString(), "--wdith", "100").err())
+                .contains("Unknown option: '--wdith'\nPossible solutions: --width\n");
+        assertThat(Cli.run(EXAMPLE.toString(), "--sacle", "2").err()).contains("Possible solutions: --scale, --samples");
+        assertThat(Cli.run(EXAMPLE.toString(), "--colr", "2").err()).doesNotContain("Possible solutions");
+    }
+
+    @Test
     void noSceneIsMisuse() {
         Run run = Cli.run();
         assertThat(run.exitCode()).isEqualTo(2);
