@@ -1,5 +1,8 @@
 package rtd;
 
+import static com.tngtech.archunit.base.DescribedPredicate.not;
+import static com.tngtech.archunit.core.domain.JavaClass.Predicates.belongToAnyOf;
+import static com.tngtech.archunit.core.domain.JavaClass.Predicates.resideInAPackage;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
@@ -8,6 +11,7 @@ import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.core.importer.ImportOption;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import rtd.accel.Accelerator;
 
 /**
  * The rules of rtd's shape: dependencies point one way, from the command line down to the
@@ -37,6 +41,14 @@ class ArchitectureTest {
         noClasses().that().resideInAPackage("rtd.accel..")
                 .should().dependOnClassesThat().resideInAnyPackage("rtd.shade..", "rtd.io..", "rtd.cli..", "rtd.explain..",
                         "rtd.view..", "rtd.pov..", "rtd.window..")
+                .check(RTD);
+    }
+
+    @Test
+    void letsTheBookReachTheEngineOnlyThroughItsOneDoor() {
+        noClasses().that().resideOutsideOfPackage("rtd.accel..")
+                .should().dependOnClassesThat(resideInAPackage("rtd.accel..").and(not(belongToAnyOf(Accelerator.class))))
+                .because("the engine's structures are chosen and built behind Accelerator, and answer through Tracer")
                 .check(RTD);
     }
 

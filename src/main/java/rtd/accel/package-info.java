@@ -5,7 +5,8 @@
  * ({@link rtd.accel.LightGrids}). Not in the paper: each answers the paper's depth test
  * (Listing 4.3) for many objects without testing them all, by running each shape's own test on
  * the objects a ray may hit, and tests hold each to the loop of {@code rtd.scene.Scene}. A shape
- * the engine does not know is tested through its own test and box only. Implements
- * {@code rtd.render.Tracer}.
+ * the engine does not know is tested through its own test and box only. The rest of rtd reaches
+ * the engine through {@link rtd.accel.Accelerator} alone, which chooses and builds the structures
+ * for {@code --accel}; they answer through {@code rtd.render.Tracer}.
  */
 package rtd.accel;

@@ -2,6 +2,7 @@ package rtd.cli;
 
 import java.nio.file.Path;
 import java.util.List;
+import rtd.accel.Accelerator;
 
 /**
  * What the command line asks of each run: {@code width} and {@code height} after {@code --scale}; {@code given}

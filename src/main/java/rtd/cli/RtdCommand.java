@@ -17,6 +17,7 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.UnmatchedArgumentException;
+import rtd.accel.Accelerator;
 import rtd.io.Hints;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;

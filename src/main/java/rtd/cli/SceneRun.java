@@ -15,7 +15,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.DoubleAccumulator;
 import java.util.function.Function;
 import java.util.function.Supplier;
-import rtd.cli.Accelerator.StructureCache;
+import rtd.accel.Accelerator.StructureCache;
+import rtd.accel.Accelerator;
 import rtd.image.Picture;
 import rtd.io.AnimatedGif;
 import rtd.io.ClockedScene;
@@ -102,7 +103,7 @@ final class SceneRun {
     private Accelerator build(Scene scene, ProgressDisplay display) {
         Accelerator.Kind kind = Accelerator.choose(scene, options.engine(), options.width(), options.height(),
                 options.samples());
-        display.show(ProgressDisplay.Phase.of(kind.building));
+        display.show(ProgressDisplay.Phase.of(kind.building()));
         return Accelerator.build(kind, scene, options.width(), options.height(), options.samples(), options.threads(),
                 kept);
     }

@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import rtd.accel.Accelerator;
 import rtd.render.WorkCount;
 import rtd.scene.Scene;
 

@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine;
+import rtd.accel.Accelerator;
 import rtd.explain.PixelExplanation;
 import rtd.io.SceneException;
 import rtd.render.ParallelRenderer;

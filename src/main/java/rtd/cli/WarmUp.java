@@ -1,7 +1,7 @@
 package rtd.cli;
 
 import java.util.concurrent.CompletableFuture;
-import rtd.accel.ViewGrid;
+import rtd.accel.Accelerator;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 import rtd.io.SceneIO;
@@ -37,7 +37,8 @@ final class WarmUp {
     static void renderOnce() {
         try {
             Scene scene = SceneIO.parseScene("warm-up", SCENE);
-            ParallelRenderer.render(scene.camera(), ViewGrid.build(scene, 24, 16, 1, 1)::newTracer,
+            ParallelRenderer.render(scene.camera(), Accelerator.build(Accelerator.Kind.GRID, scene, 24, 16, 1, 1,
+                    new Accelerator.StructureCache()).tracers(),
                     tracer -> new FlatShader(scene), 24, 16, 1, new RenderProgress());
         } catch (SceneException | RuntimeException e) {
             // only a warm-up: the run itself reads, builds and renders, and says what fails

@@ -5,10 +5,8 @@ import java.io.Writer;
 import java.io.IOException;
 import java.util.function.Supplier;
 import picocli.CommandLine;
-import rtd.accel.Bvh;
-import rtd.accel.LightGrids;
-import rtd.accel.ViewGrid;
-import rtd.cli.Accelerator.StructureCache;
+import rtd.accel.Accelerator.StructureCache;
+import rtd.accel.Accelerator;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
 import rtd.render.Tracer;
@@ -90,25 +88,12 @@ public final class WindowRun {
             @Override
             public Supplier<Tracer> forPicture(Scene scene, int width, int height, int samples,
                     Supplier<Tracer> anyCamera) {
-                Accelerator.Kind kind = Accelerator.choose(scene, accel);
-                if (!kind.viewGrid()) {
-                    return anyCamera;
-                }
-                ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
-                return () -> grid.newTracer(anyCamera.get());
+                return Accelerator.forPicture(accel, scene, width, height, samples, threads, anyCamera);
             }
 
             @Override
             public Supplier<Tracer> forAnyCamera(Scene scene, int width, int height) {
-                Accelerator.Kind kind = Accelerator.choose(scene, accel);
-                // a view grid answers only its camera's rays (forPicture)
-                if (kind != Accelerator.Kind.GRID_BVH_AND_POINT_GRIDS) {
-                    return Accelerator.build(kind == Accelerator.Kind.LOOP ? kind : Accelerator.Kind.BVH, scene, width,
-                            height, 1, threads, kept).tracers();
-                }
-                Bvh bvh = kept.bvh(scene);
-                LightGrids lights = kept.lightGrids(scene, width, height, 1, threads);
-                return () -> lights.newTracer(bvh.newTracer());
+                return Accelerator.forAnyCamera(accel, scene, width, height, threads, kept);
             }
         };
     }

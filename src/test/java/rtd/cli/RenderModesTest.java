@@ -9,6 +9,7 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import rtd.accel.Accelerator;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 

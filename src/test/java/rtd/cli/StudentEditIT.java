@@ -23,6 +23,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import rtd.accel.Accelerator;
 
 /**
  * rtd's promise to a student: an edit of the paper's equations shows in every picture. This

@@ -13,7 +13,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import rtd.cli.Accelerator.Choice;
+import rtd.accel.Accelerator.Choice;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
 

@@ -1,4 +1,4 @@
-package rtd.cli;
+package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -7,7 +7,7 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.camera.OrthographicCamera;
-import rtd.cli.Accelerator.Choice;
+import rtd.accel.Accelerator.Choice;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
 import rtd.image.Color;

@@ -1,42 +1,39 @@
-package rtd.cli;
+package rtd.accel;
 
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.function.Supplier;
-import rtd.accel.Bvh;
-import rtd.accel.HitImage;
-import rtd.accel.LightGrids;
-import rtd.accel.MirrorGrids;
-import rtd.accel.ViewGrid;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
 import rtd.scene.Scene;
 
 /**
- * What a run finds its hits with, as {@code --accel} chose and built it: a new tracer for each thread, what was built
- * for {@code --stats} (made only if asked: formatting numbers the first time is slow), and whether the tracers walk a
- * tree, so that nodes per ray mean something.
+ * The engine's one door: which of its structures answer which rays for {@code --accel}, and those structures built.
+ * An accelerator is what a run finds its hits with: a new tracer for each thread, what was built for
+ * {@code --stats} (made only if asked: formatting numbers the first time is slow), and whether the tracers walk a
+ * tree, so that nodes per ray mean something. Every tracer finds the paper's loop's hit (Listing 4.3), bit for bit.
  */
-record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
+public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean walksTree) {
 
-    enum Choice { auto, none, bvh, grid }
+    /** What {@code --accel} asks: the choice by the scene, the paper's loop, the BVH for every ray, the grids. */
+    public enum Choice { auto, none, bvh, grid }
 
     /**
      * The fewest objects for which {@code auto} and {@code grid} take the image of hits for a flat picture: below, the
      * view grid, whose rays test fewer objects, builds as fast.
      */
-    static final int IMAGE_THRESHOLD = 100_000;
+    public static final int IMAGE_THRESHOLD = 100_000;
 
     /**
      * The fewest objects for which {@code auto} builds the lights' and the mirrors' grids: fewer fit in one leaf of the
      * BVH, whose shadow and mirrored rays test them all sooner than a grid finds a ray's cell.
      */
-    static final int POINT_GRIDS_THRESHOLD = 16;
+    public static final int POINT_GRIDS_THRESHOLD = 16;
 
     /** What a run finds its hits with, and how the progress line names its building. */
-    enum Kind {
+    public enum Kind {
         LOOP("the paper's loop: nothing to build"),
         BVH("building the BVH"),
         GRID("building the view grid"),
@@ -44,14 +41,19 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         GRID_AND_BVH("building the view grid and the BVH"),
         IMAGE("finding each pixel's hit, object by object");
 
-        final String building;
+        private final String building;
 
         Kind(String building) {
             this.building = building;
         }
 
+        /** What the progress line says while this is built. */
+        public String building() {
+            return building;
+        }
+
         /** Whether the camera's rays go to a view grid. */
-        boolean viewGrid() {
+        public boolean viewGrid() {
             return this == GRID || this == GRID_AND_BVH || this == GRID_BVH_AND_POINT_GRIDS;
         }
     }
@@ -62,7 +64,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      * which {@code auto} leaves out for fewer than {@link #POINT_GRIDS_THRESHOLD} objects; {@code bvh}, or a camera the
      * grid cannot serve, the BVH.
      */
-    static Kind choose(Scene scene, Choice accel) {
+    public static Kind choose(Scene scene, Choice accel) {
         if (accel == Choice.none || scene.objects().isEmpty()) {
             return Kind.LOOP;
         }
@@ -81,20 +83,20 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      * alone, a picture of one ray a pixel of {@link #IMAGE_THRESHOLD} objects or more takes the image of hits, if it
      * {@link HitImage#pays}.
      */
-    static Kind choose(Scene scene, Choice accel, int width, int height, int samples) {
+    public static Kind choose(Scene scene, Choice accel, int width, int height, int samples) {
         Kind kind = choose(scene, accel);
         return kind == Kind.GRID && samples == 1 && scene.objects().size() >= IMAGE_THRESHOLD
                 && HitImage.pays(scene, width, height) ? Kind.IMAGE : kind;
     }
 
     /** {@link #build} of what {@code accel} asks, from nothing. */
-    static Accelerator of(Scene scene, Choice accel, int width, int height, int samples, int threads) {
+    public static Accelerator of(Scene scene, Choice accel, int width, int height, int samples, int threads) {
         return build(choose(scene, accel, width, height, samples), scene, width, height, samples, threads,
                 new StructureCache());
     }
 
     /** Builds {@code kind} for {@code scene}; the BVH and the light grids from {@code kept} where they still serve. */
-    static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads,
+    public static Accelerator build(Kind kind, Scene scene, int width, int height, int samples, int threads,
             StructureCache kept) {
         if (kind == Kind.LOOP) {
             return new Accelerator(() -> new LinearTracer(scene), () -> "no BVH: the paper's loop tests every object",
@@ -102,13 +104,13 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         }
         if (kind == Kind.BVH) {
             Bvh bvh = kept.bvh(scene);
-            return new Accelerator(bvh::newTracer, () -> "BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+            return new Accelerator(bvh::newTracer, () -> "BVH of " + count(bvh.nodeCount(), "node"), true);
         }
         if (kind == Kind.IMAGE) {
             HitImage image = HitImage.build(scene, width, height, threads);
             return new Accelerator(image::newTracer, () -> String.format(Locale.ROOT, "image of hits in %s of %d × %d "
-                    + "pixels, %s", StatsReport.count(image.tileCount(), "tile"), image.tileSide(), image.tileSide(),
-                    StatsReport.count(image.entries(), "entry", "entries")), false);
+                    + "pixels, %s", count(image.tileCount(), "tile"), image.tileSide(), image.tileSide(),
+                    count(image.entries(), "entry", "entries")), false);
         }
         // the BVH on a thread of its own: each structure has passes on one thread, which the other's fill
         CompletableFuture<Bvh> tree = kind == Kind.GRID ? null : CompletableFuture.supplyAsync(() -> kept.bvh(scene),
@@ -128,16 +130,54 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
         Bvh bvh = join(tree);
         return new Accelerator(() -> grid.newTracer(lights.newTracer(mirrors.newTracer(bvh.newTracer()))),
                 () -> describe(grid) + ", " + (lights.count() == 0 ? "no light grid"
-                        : StatsReport.count(lights.count(), "light grid") + " of "
-                                + StatsReport.count(lights.entries(), "entry", "entries"))
-                        + (mirrors.count() == 0 ? "" : ", " + StatsReport.count(mirrors.count(), "mirror grid") + " of "
-                                + StatsReport.count(mirrors.entries(), "entry", "entries"))
-                        + ", and BVH of " + StatsReport.count(bvh.nodeCount(), "node"), true);
+                        : count(lights.count(), "light grid") + " of "
+                                + count(lights.entries(), "entry", "entries"))
+                        + (mirrors.count() == 0 ? "" : ", " + count(mirrors.count(), "mirror grid") + " of "
+                                + count(mirrors.entries(), "entry", "entries"))
+                        + ", and BVH of " + count(bvh.nodeCount(), "node"), true);
+    }
+
+    /**
+     * The window's tracers for the picture of one camera: its view grid before {@code anyCamera}'s, where
+     * {@code accel} takes a view grid for {@code scene}; else {@code anyCamera}'s.
+     */
+    public static Supplier<Tracer> forPicture(Choice accel, Scene scene, int width, int height, int samples,
+            int threads, Supplier<Tracer> anyCamera) {
+        if (!choose(scene, accel).viewGrid()) {
+            return anyCamera;
+        }
+        ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
+        return () -> grid.newTracer(anyCamera.get());
+    }
+
+    /**
+     * The window's tracers for any camera, chained as for a picture without its view grid (which answers only its
+     * camera's rays): the lights' grids before the BVH, the BVH, or the paper's loop; the BVH and the light grids
+     * from {@code kept} while they still serve.
+     */
+    public static Supplier<Tracer> forAnyCamera(Choice accel, Scene scene, int width, int height, int threads,
+            StructureCache kept) {
+        Kind kind = choose(scene, accel);
+        if (kind != Kind.GRID_BVH_AND_POINT_GRIDS) {
+            return build(kind == Kind.LOOP ? kind : Kind.BVH, scene, width, height, 1, threads, kept).tracers();
+        }
+        Bvh bvh = kept.bvh(scene);
+        LightGrids lights = kept.lightGrids(scene, width, height, 1, threads);
+        return () -> lights.newTracer(bvh.newTracer());
+    }
+
+    /** "1 node", "2,048 nodes". */
+    private static String count(long n, String thing) {
+        return count(n, thing, thing + "s");
+    }
+
+    private static String count(long n, String one, String many) {
+        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }
 
     private static String describe(ViewGrid grid) {
-        return String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s", StatsReport.count(grid.cellCount(),
-                "cell"), grid.cellSide(), grid.cellSide(), StatsReport.count(grid.entries(), "entry", "entries"));
+        return String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s", count(grid.cellCount(),
+                "cell"), grid.cellSide(), grid.cellSide(), count(grid.entries(), "entry", "entries"));
     }
 
     private static <T> T join(CompletableFuture<T> built) {
@@ -156,7 +196,7 @@ record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, boolean wal
      * while the objects equal the last frame's, the light grids while objects and lights do. A shape that is no
      * record (a mesh's triangle) equals only itself, so it is built anew; every pixel is the one a fresh build gives.
      */
-    static final class StructureCache {
+    public static final class StructureCache {
 
         private final Last<Bvh> bvh = new Last<>();
         private final Last<LightGrids> lightGrids = new Last<>();

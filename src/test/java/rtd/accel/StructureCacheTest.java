@@ -1,4 +1,4 @@
-package rtd.cli;
+package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -7,7 +7,7 @@ import java.util.List;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.camera.PerspectiveCamera;
-import rtd.cli.Accelerator.StructureCache;
+import rtd.accel.Accelerator.StructureCache;
 import rtd.geometry.IGeometry;
 import rtd.geometry.Material;
 import rtd.geometry.Sphere;
