@@ -45,16 +45,16 @@ import rtd.scene.Scene;
 public final class PovClock {
 
     /** The groups whose numbers it writes with the clock, for each kind of thing the scene file makes. */
-    private static final Map<String, Set<String>> WRITTEN = Map.of(
-            "sphere", Set.of("centre", "radius", "colour"),
-            "plane", Set.of("point", "normal", "colour"),
-            "triangle", Set.of("first corner", "second corner", "third corner", "colour"),
-            "box", Set.of("first corner", "second corner", "colour"),
-            "cylinder", Set.of("first end", "second end", "radius", "colour"),
-            "cone", Set.of("first end", "first radius", "second end", "second radius", "colour"),
-            "light", Set.of("position", "intensity"),
-            "camera", Set.of("position", "view direction", "field of view", "zoom"),
-            "ambient", Set.of("colour"));
+    private static final Map<String, Set<String>> WRITTEN = Map.ofEntries( // ofEntries: room for more than ten
+            Map.entry("sphere", Set.of("centre", "radius", "colour")),
+            Map.entry("plane", Set.of("point", "normal", "colour")),
+            Map.entry("triangle", Set.of("first corner", "second corner", "third corner", "colour")),
+            Map.entry("box", Set.of("first corner", "second corner", "colour")),
+            Map.entry("cylinder", Set.of("first end", "second end", "radius", "colour")),
+            Map.entry("cone", Set.of("first end", "first radius", "second end", "second radius", "colour")),
+            Map.entry("light", Set.of("position", "intensity")),
+            Map.entry("camera", Set.of("position", "view direction", "field of view", "zoom")),
+            Map.entry("ambient", Set.of("colour")));
 
     /** A still: no number uses the clock. */
     static final PovClock STILL = new PovClock(null);

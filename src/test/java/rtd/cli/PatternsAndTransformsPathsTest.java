@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import rtd.testing.Cli;
 import rtd.testing.Cli.Run;
+import rtd.testing.Scenes;
 
 /**
  * Every kind of shape, patterned and transformed, draws the same file on every path of the command line:
@@ -18,22 +19,7 @@ import rtd.testing.Cli.Run;
 @DisplayName("Patterned and transformed shapes on every path of the command line")
 class PatternsAndTransformsPathsTest {
 
-    private static final String SHAPES = String.join("\n",
-            "ambient:(20|30|60)",
-            "perspective_camera:(0|4|12):(at 0|0.5|0):(55)",
-            "transform:(egg):(scale 1.6|0.8|1):(rotate_y 30):(translate -3|1|0)",
-            "transform:(tilt):(rotate_z 25):(rotate_x -15):(translate 3|1|0)",
-            "transform:(small):(scale 0.4)",
-            "transform:(spin):(rotate_y 30):(translate 0|1.5|-2)",
-            "pattern:(checks):(checker):(230|30|20):(250|220|40):(small)",
-            "pattern:(bands):(stripes):(30|90|200):(240|240|240):(small)",
-            "pattern:(glow):(gradient):(0|0|0):(255|128|0)",
-            "pattern:(targets):(rings):(255|255|255):(90|90|90):(small)",
-            "plane:(0|0|0):(0|1|0):(checks)",
-            "sphere:(0|0|0):(1):(bands):(egg)",
-            "box:(-1|-1|-1):(1|1|1):(glow):(tilt)",
-            "triangle:(-1|0|0):(1|0|0):(0|1.5|0):(targets):(spin)",
-            "mesh:(ico.obj):(0|0.8|2):(0.8):(bands):(small)", "");
+    private static final String SHAPES = Scenes.EVERY_SHAPE;
 
     @TempDir
     Path dir;

@@ -28,6 +28,7 @@ class SynonymTableTest {
                 documented.put(word.trim(), keywords);
             }
         }
-        assertThat(documented).isEqualTo(Hints.SYNONYMS);
+        assertThat(documented).as("the table of docs/errors.md under '| written | suggested |' against rtd.io.Hints.SYNONYMS")
+                .isEqualTo(Hints.SYNONYMS);
     }
 }

@@ -8,6 +8,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.geometry.IGeometry;
 import rtd.testing.MixedScenes;
+import rtd.testing.Scenes;
 
 /**
  * The render paths' tests (the BVH and the grids against the paper's loop, the explained steps,
@@ -29,7 +30,18 @@ class TestScenesCoverEveryShapeTest {
         for (Statement statement : Grammar.STATEMENTS) {
             if (statement.takesMaterial()) {
                 String kind = statement.keyword().equals("mesh") ? "triangle" : statement.keyword();
-                assertThat(kinds).as("MixedScenes makes no %s: add it to randomObject and twin", kind).contains(kind);
+                assertThat(kinds).as("MixedScenes makes no %s: add it to LATER and twin", kind).contains(kind);
+            }
+        }
+    }
+
+    @Test
+    void andTheCommandLinesSceneOfEveryShapeHoldsEachOnce() {
+        for (Statement statement : Grammar.STATEMENTS) {
+            if (statement.takesMaterial()) {
+                assertThat(Scenes.EVERY_SHAPE.lines().filter(line -> line.startsWith(statement.keyword() + ":(")))
+                        .as("rtd.testing.Scenes.EVERY_SHAPE has no line of %s: add one, patterned and transformed",
+                                statement.keyword()).hasSize(1);
             }
         }
     }
