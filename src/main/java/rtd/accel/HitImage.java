@@ -93,7 +93,7 @@ public final class HitImage {
                     SHIFT, false);
             HitImage image = new HitImage(scene, width, height, tiles);
             int count = image.tileCount();
-            int[] footprints = builder.footprints();
+            int[] footprints = builder.footprintsByPlace();
             AtomicInteger next = new AtomicInteger();
             new Parts(count, pool).run((start, end, part) -> { // each thread takes the next tile not yet taken
                 TileOfHits tile = new TileOfHits(image, tiles, footprints);

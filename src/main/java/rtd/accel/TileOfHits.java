@@ -45,7 +45,7 @@ final class TileOfHits {
      */
     private final int[] tests;
 
-    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} in file order. */
+    /** A room for {@code image}'s tiles, whose objects {@code tiles} lists, of {@code footprints} in leaf order. */
     TileOfHits(HitImage image, ViewGrid tiles, int[] footprints) {
         this.image = image;
         this.tiles = tiles;
@@ -102,7 +102,7 @@ final class TileOfHits {
     /** The object at {@code place} in leaf order on its pixels of the tile {@code [left, right) × [top, bottom)}. */
     private void test(int place, int left, int top, int right, int bottom) {
         int index = leaves.fileOrder[place];
-        int at = 4 * index;
+        int at = 4 * place;
         int across = right - left;
         int x0 = Math.max(footprints[at], left) - left;
         int x1 = Math.min(footprints[at + 2] + 1, right) - left; // the first pixel beyond, as each loop's end

@@ -31,7 +31,9 @@ final class ViewGridBuilder {
     private final int height;
 
     /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
-    private final int[] footprints;
+    private int[] footprints;
+    /** For a {@link HitImage}'s tiles: per seen object in leaf order, its pixels as {@link #footprints} has them. */
+    private int[] footprintsByPlace;
     /** Per object in file order: a distance from the ray's origin before which no ray hits it, if {@link #SEEN}. */
     private final float[] nearest;
     private final byte[] state;
@@ -84,16 +86,23 @@ final class ViewGridBuilder {
         LeafObjects packed = new LeafObjects(objects, fileOrder, new int[0], new float[0], pool, null);
         Bvh leaf = Bvh.oneLeaf(packed, unboundedOrder, objects);
         float[] nearestByPlace = new float[fileOrder.length];
+        // the image's tiles read each object's pixels by its place: in leaf order, beside its numbers, not one cache
+        // miss each in the file's order
+        footprintsByPlace = sorted ? null : new int[4 * fileOrder.length];
         int[] places = fill(parts, perPart, shift, columns, cellStart, nearestByPlace);
+        footprints = null; // the places' copy, or nothing, is all that is read from here on
         if (sorted) {
             sortNearestFirst(cellStart, places, nearestByPlace, pool);
         }
         return new ViewGrid(leaf, camera, width, height, latestOffset, shift, cellStart, places, nearestByPlace);
     }
 
-    /** Per object in file order, after {@link #build}: its pixels x0, y0, x1, y1 (inclusive), if a ray sees it. */
-    int[] footprints() {
-        return footprints;
+    /**
+     * After a {@link #build} of an image's tiles (not {@code sorted}), per object in leaf order: its pixels x0, y0, x1,
+     * y1 (inclusive), if a ray sees it.
+     */
+    int[] footprintsByPlace() {
+        return footprintsByPlace;
     }
 
     /**
@@ -197,8 +206,8 @@ final class ViewGridBuilder {
      * parallel, from each part's counts per cell ({@link #measure}, in {@code perPart}, which become each part's next
      * place per cell): a cell's objects take places in the order of the parts, each part's from where the earlier
      * parts' end, and {@code cellStart} becomes the running sum; then each part writes its objects' places into theirs,
-     * and their nearest distance by place into {@code nearestByPlace}. So a cell's objects come in file order, however
-     * many parts there are.
+     * their nearest distance by place into {@code nearestByPlace}, and their pixels into {@link #footprintsByPlace} if
+     * there is one. So a cell's objects come in file order, however many parts there are.
      */
     private int[] fill(Parts parts, int[][] perPart, int shift, int columns, int[] cellStart, float[] nearestByPlace) {
         int[] places = new int[Parts.runningSums(perPart, cellStart)];
@@ -209,6 +218,9 @@ final class ViewGridBuilder {
                     int at = 4 * f;
                     int place = leafOf[f];
                     nearestByPlace[place] = nearest[f];
+                    if (footprintsByPlace != null) {
+                        System.arraycopy(footprints, at, footprintsByPlace, 4 * place, 4);
+                    }
                     for (int y = footprints[at + 1] >> shift; y <= footprints[at + 3] >> shift; y++) {
                         for (int x = footprints[at] >> shift; x <= footprints[at + 2] >> shift; x++) {
                             places[cursor[y * columns + x]++] = place;
