@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
+import java.util.concurrent.Executor;
 import java.util.function.Supplier;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
@@ -112,13 +113,8 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
                     + "pixels, %s", count(image.tileCount(), "tile"), image.tileSide(), image.tileSide(),
                     count(image.entries(), "entry", "entries")), false);
         }
-        // the BVH on a thread of its own: each structure has passes on one thread, which the other's fill
-        CompletableFuture<Bvh> tree = kind == Kind.GRID ? null : CompletableFuture.supplyAsync(() -> kept.bvh(scene),
-                runnable -> {
-                    Thread thread = new Thread(runnable, "rtd-build");
-                    thread.setDaemon(true);
-                    thread.start();
-                });
+        CompletableFuture<Bvh> tree = kind == Kind.GRID ? null
+                : CompletableFuture.supplyAsync(() -> kept.bvh(scene), beside(threads));
         ViewGrid grid = ViewGrid.build(scene, width, height, samples, threads);
         if (tree == null) {
             return new Accelerator(grid::newTracer, () -> describe(grid), false);
@@ -173,6 +169,18 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
 
     private static String count(long n, String one, String many) {
         return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
+    }
+
+    /**
+     * Where the BVH is built beside the grids: on a thread of its own, as each structure has passes on one thread,
+     * which the other's fill; on the calling thread, first, if the run has one thread ({@code --threads 1}).
+     */
+    static Executor beside(int threads) {
+        return threads == 1 ? Runnable::run : runnable -> {
+            Thread thread = new Thread(runnable, "rtd-build");
+            thread.setDaemon(true);
+            thread.start();
+        };
     }
 
     private static String describe(ViewGrid grid) {

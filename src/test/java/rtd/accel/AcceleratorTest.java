@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import rtd.camera.OrthographicCamera;
@@ -100,5 +101,16 @@ class AcceleratorTest {
         assertThat(Accelerator.of(spheres(3, false), Choice.grid, 40, 20, 1, 1).built().get()).startsWith("view grid of ");
         assertThat(Accelerator.of(spheres(3, true), Choice.grid, 40, 20, 1, 1).built().get())
                 .startsWith("view grid of ").contains("light grid").contains("and BVH of ");
+    }
+
+    @Test
+    void buildsTheBvhOnAThreadOfItsOwnUnlessTheRunHasOneThread() throws Exception {
+        Thread[] ran = new Thread[2];
+        Accelerator.beside(1).execute(() -> ran[0] = Thread.currentThread());
+        CompletableFuture.runAsync(() -> ran[1] = Thread.currentThread(), Accelerator.beside(2))
+                .get();
+        assertThat(ran[0]).isSameAs(Thread.currentThread());
+        assertThat(ran[1]).isNotSameAs(Thread.currentThread());
+        assertThat(ran[1].getName()).isEqualTo("rtd-build");
     }
 }
