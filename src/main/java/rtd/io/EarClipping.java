@@ -22,7 +22,7 @@ final class EarClipping {
      * a million faces is cut with one set of arrays.
      */
     int[] triangles(int[] corners, int count, float[] vertices) {
-        if (!isFan(corners, count, vertices)) {
+        if (!isFanProjected(corners, count, vertices)) {
             clipEars(u, v, count, sense, triangles);
             return triangles;
         }
@@ -36,6 +36,13 @@ final class EarClipping {
 
     /** Whether the face {@code corners[0, count)} is cut as a fan around its first corner: convex, or of no area. */
     boolean isFan(int[] corners, int count, float[] vertices) {
+        // most faces of a mesh are quads: the same sums and turns as in general, without arrays
+        return count == 4 && isFanQuad(vertices, 3 * corners[0], 3 * corners[1], 3 * corners[2], 3 * corners[3])
+                || isFanProjected(corners, count, vertices);
+    }
+
+    /** {@link #isFan} of any face, projected into {@link #u} and {@link #v}, with its {@link #sense}, for clipping. */
+    boolean isFanProjected(int[] corners, int count, float[] vertices) {
         if (u.length < count) {
             u = new double[count];
             v = new double[count];
@@ -43,6 +50,41 @@ final class EarClipping {
         }
         sense = project(corners, count, vertices, u, v);
         return sense == 0 || isConvex(u, v, count, sense);
+    }
+
+    /**
+     * {@link #isFan} of the four corners whose x is {@code vertices[a]}, {@code [b]}, {@code [c]}, {@code [d]}:
+     * Newell's normal summed edge by edge as {@link #project} sums it, and the corners' turns as {@link #turn}
+     * computes them in the plane it chooses, so the answer is the general one's to the last bit.
+     */
+    static boolean isFanQuad(float[] vertices, int a, int b, int c, int d) {
+        double nx = newell(vertices, 1, 2, a, b) + newell(vertices, 1, 2, b, c) + newell(vertices, 1, 2, c, d)
+                + newell(vertices, 1, 2, d, a);
+        double ny = newell(vertices, 2, 0, a, b) + newell(vertices, 2, 0, b, c) + newell(vertices, 2, 0, c, d)
+                + newell(vertices, 2, 0, d, a);
+        double nz = newell(vertices, 0, 1, a, b) + newell(vertices, 0, 1, b, c) + newell(vertices, 0, 1, c, d)
+                + newell(vertices, 0, 1, d, a);
+        int dropped = Math.abs(nx) >= Math.abs(ny) && Math.abs(nx) >= Math.abs(nz) ? 0
+                : Math.abs(ny) >= Math.abs(nz) ? 1 : 2;
+        double sense = Math.signum(dropped == 0 ? nx : dropped == 1 ? ny : nz);
+        int iu = dropped == 2 ? 0 : dropped + 1; // (dropped + 1) % 3
+        int iv = dropped == 0 ? 2 : dropped - 1; // (dropped + 2) % 3
+        return sense == 0 || sense * turn(vertices, iu, iv, d, a, b) >= 0
+                && sense * turn(vertices, iu, iv, a, b, c) >= 0 && sense * turn(vertices, iu, iv, b, c, d) >= 0
+                && sense * turn(vertices, iu, iv, c, d, a) >= 0;
+    }
+
+    /** The edge p → q's term of Newell's normal along the axis after {@code i} and {@code j}, as {@link #project}'s. */
+    private static double newell(float[] vertices, int i, int j, int p, int q) {
+        return ((double) vertices[p + i] - vertices[q + i]) * ((double) vertices[p + j] + vertices[q + j]);
+    }
+
+    /** {@link #turn} of the corners whose x is {@code vertices[a]}, {@code [b]}, {@code [c]}, in the plane (iu, iv). */
+    private static double turn(float[] vertices, int iu, int iv, int a, int b, int c) {
+        double ua = vertices[a + iu];
+        double va = vertices[a + iv];
+        return ((double) vertices[b + iu] - ua) * ((double) vertices[c + iv] - va)
+                - ((double) vertices[b + iv] - va) * ((double) vertices[c + iu] - ua);
     }
 
     /**

@@ -169,4 +169,41 @@ class ConcaveFacesTest {
         assertThat(corners(read(obj.toString()))).containsExactly(expected.stream().mapToInt(Integer::intValue)
                 .toArray());
     }
+
+    @Test
+    void aQuadIsToldAFanByItsQuickTestExactlyWhenTheGeneralTestSaysSo() {
+        Random random = new Random(7);
+        EarClipping general = new EarClipping();
+        int[] corners = {0, 1, 2, 3};
+        int fans = 0;
+        for (int n = 0; n < 20_000; n++) {
+            float[] v = new float[12];
+            int family = n % 4;
+            for (int k = 0; k < 4; k++) {
+                double angle = 2 * Math.PI * k / 4 + (family == 0 ? 0.3 * random.nextDouble() : random.nextDouble());
+                // family 1: one corner pulled in past the diagonal of its neighbours, a dart concave there
+                double radius = family == 1 && k == n / 4 % 4 ? -0.05 - 0.45 * random.nextDouble() : 1;
+                v[3 * k] = (float) (radius * Math.cos(angle));
+                v[3 * k + 1] = (float) (radius * Math.sin(angle));
+                v[3 * k + 2] = family == 2 ? (float) random.nextGaussian() : 0; // family 2: not flat
+            }
+            if (family == 3) { // a tilted plane in any direction, a corner on another's place or on an edge now and then
+                for (int k = 0; k < 4; k++) {
+                    float x = v[3 * k];
+                    float y = v[3 * k + 1];
+                    v[3 * k] = 0.6f * x - 0.8f * y;
+                    v[3 * k + 1] = 0.48f * x + 0.36f * y;
+                    v[3 * k + 2] = 0.64f * x + 0.48f * y + 3;
+                }
+                int k = random.nextInt(4);
+                if (random.nextInt(4) == 0) {
+                    System.arraycopy(v, 3 * ((k + 1) % 4), v, 3 * k, 3);
+                }
+            }
+            boolean quick = EarClipping.isFanQuad(v, 0, 3, 6, 9);
+            assertThat(quick).as("quad %d: %s", n, Arrays.toString(v)).isEqualTo(general.isFanProjected(corners, 4, v));
+            fans += quick ? 1 : 0;
+        }
+        assertThat(fans).as("fans among 20,000 quads").isBetween(10_000, 19_000);
+    }
 }
