@@ -22,7 +22,7 @@ final class EarClipping {
      * a million faces is cut with one set of arrays.
      */
     int[] triangles(int[] corners, int count, float[] vertices) {
-        if (!isFanProjected(corners, count, vertices)) {
+        if (!isFan(corners, count, vertices)) {
             clipEars(u, v, count, sense, triangles);
             return triangles;
         }
@@ -34,15 +34,11 @@ final class EarClipping {
         return triangles;
     }
 
-    /** Whether the face {@code corners[0, count)} is cut as a fan around its first corner: convex, or of no area. */
+    /**
+     * Whether the face {@code corners[0, count)} is cut as a fan around its first corner: convex, or of no area;
+     * projected into {@link #u} and {@link #v}, with its {@link #sense}, for clipping.
+     */
     boolean isFan(int[] corners, int count, float[] vertices) {
-        // most faces of a mesh are quads: the same sums and turns as in general, without arrays
-        return count == 4 && isFanQuad(vertices, 3 * corners[0], 3 * corners[1], 3 * corners[2], 3 * corners[3])
-                || isFanProjected(corners, count, vertices);
-    }
-
-    /** {@link #isFan} of any face, projected into {@link #u} and {@link #v}, with its {@link #sense}, for clipping. */
-    boolean isFanProjected(int[] corners, int count, float[] vertices) {
         if (u.length < count) {
             u = new double[count];
             v = new double[count];
@@ -53,9 +49,10 @@ final class EarClipping {
     }
 
     /**
-     * {@link #isFan} of the four corners whose x is {@code vertices[a]}, {@code [b]}, {@code [c]}, {@code [d]}:
-     * Newell's normal summed edge by edge as {@link #project} sums it, and the corners' turns as {@link #turn}
-     * computes them in the plane it chooses, so the answer is the general one's to the last bit.
+     * {@link #isFan} of the four corners whose x is {@code vertices[a]}, {@code [b]}, {@code [c]}, {@code [d]},
+     * without arrays, for the quads most meshes are made of: Newell's normal summed edge by edge as
+     * {@link #project} sums it, and the corners' turns as {@link #turn} computes them in the plane it chooses, so
+     * the answer is the general one's to the last bit.
      */
     static boolean isFanQuad(float[] vertices, int a, int b, int c, int d) {
         double nx = newell(vertices, 1, 2, a, b) + newell(vertices, 1, 2, b, c) + newell(vertices, 1, 2, c, d)
@@ -69,9 +66,9 @@ final class EarClipping {
         double sense = Math.signum(dropped == 0 ? nx : dropped == 1 ? ny : nz);
         int iu = dropped == 2 ? 0 : dropped + 1; // (dropped + 1) % 3
         int iv = dropped == 0 ? 2 : dropped - 1; // (dropped + 2) % 3
-        return sense == 0 || sense * turn(vertices, iu, iv, d, a, b) >= 0
-                && sense * turn(vertices, iu, iv, a, b, c) >= 0 && sense * turn(vertices, iu, iv, b, c, d) >= 0
-                && sense * turn(vertices, iu, iv, c, d, a) >= 0;
+        return sense == 0 || !(sense * turn(vertices, iu, iv, d, a, b) < 0
+                || sense * turn(vertices, iu, iv, a, b, c) < 0 || sense * turn(vertices, iu, iv, b, c, d) < 0
+                || sense * turn(vertices, iu, iv, c, d, a) < 0); // as isConvex: no corner turns against the face
     }
 
     /** The edge p → q's term of Newell's normal along the axis after {@code i} and {@code j}, as {@link #project}'s. */

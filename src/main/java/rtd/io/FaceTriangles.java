@@ -21,7 +21,9 @@ final class FaceTriangles {
      * coordinates are {@code coordinates}' x, y, z.
      */
     void addFace(int[] vertices, int[] normals, int size, float[] coordinates) {
-        if (size > 3 && !earClipping.isFan(vertices, size, coordinates)) {
+        boolean fanQuad = size == 4 && EarClipping.isFanQuad(coordinates, 3 * vertices[0], 3 * vertices[1],
+                3 * vertices[2], 3 * vertices[3]);
+        if (size > 3 && !fanQuad) { // a fan or ears, by the face's one projection
             int[] triangles = earClipping.triangles(vertices, size, coordinates);
             for (int t = 0; t < 3 * (size - 2); t += 3) {
                 add(vertices, normals, triangles[t], triangles[t + 1], triangles[t + 2]);

@@ -321,11 +321,8 @@ class ViewGridTest {
     @Test
     void aSquareOfRaysBeyondThePictureIsTracedByTheLoop() {
         Scene mixed = MixedScenes.generate(19, 200);
-        List<IGeometry> objects = new ArrayList<>(mixed.objects());
-        Sphere backdrop = new Sphere(new Vector3f(0, 0, -400), 300, new Color(9, 9, 9)); // behind all: no ray misses
-        objects.add(backdrop);
         Scene scene = new Scene(mixed.ambient(), new PerspectiveCamera(new Vector3f(0, 0, 40), new Vector3f(0, 0, -1), 60),
-                objects);
+                mixed.objects());
         ViewGridTracer tracer = ViewGrid.build(scene, WIDTH, HEIGHT, 1, 1).newTracer();
         RayBundle bundle = new RayBundle(64);
         HitBuffer hits = new HitBuffer(64);
@@ -336,10 +333,10 @@ class ViewGridTest {
             for (int i = 0; i < 64; i++) {
                 Hit expected = scene.nearestHit(bundle.ray(i));
                 assertSame(hits.hit(i, bundle, scene.objects()), expected, "square at " + square[0] + ", " + square[1]);
-                hit += expected == null || expected.object() == backdrop ? 0 : 1;
+                hit += expected == null ? 0 : 1;
             }
         }
-        assertThat(hit).as("rays beyond the picture that hit something before the backdrop").isGreaterThan(10);
+        assertThat(hit).as("rays beyond the picture that hit something").isGreaterThan(50);
     }
 
     @Test
