@@ -283,9 +283,9 @@ class LightGridTest {
         for (int i = 0; i < 5; i++) {
             lights.add(new Light(new Vector3f(10 * i, 200, 0), new Rgb(1, 1, 1)));
         }
-        Scene scene = new Scene(mixed.ambient(), mixed.camera(), mixed.objects(), lights);
+        Scene scene = new Scene(mixed.ambient(), mixed.camera(), mixed.objects().subList(0, 100), lights);
 
-        assertThat(LightGrids.build(scene, 40, 30, 1, 1, 350).count()).as("350 copies of about 100 objects").isEqualTo(3);
+        assertThat(LightGrids.build(scene, 40, 30, 1, 1, 350).count()).as("350 copies of 100 objects").isEqualTo(3);
         assertThat(LightGrids.build(scene, 40, 30, 1, 1, 10).count()).as("always one").isEqualTo(1);
         assertThat(LightGrids.build(scene, 40, 30, 1, 1).count()).isEqualTo(5);
     }

@@ -41,7 +41,7 @@ class PovFramesTest {
             """;
 
     /** Every shape the clock can move, the orthographic camera, a light and the background, each following the clock. */
-    private static final String EVERY_SHAPE = """
+    private static final String EVERY_SHAPE_ON_THE_CLOCK = """
             let:(t):(360*clock)
             ambient:(20|30|40+100*clock)
             orthographic_camera:(2*sin(t)|3|10):(at 0|0|0):(20 + 10*clock)
@@ -124,7 +124,7 @@ class PovFramesTest {
     @Test
     void everyShapeLightAndCameraFollowingTheClockDrawsTheStillAtThatClock() throws Exception {
         assumePovRay();
-        Files.writeString(dir.resolve("every.txt"), EVERY_SHAPE);
+        Files.writeString(dir.resolve("every.txt"), EVERY_SHAPE_ON_THE_CLOCK);
         Run run = export(dir.resolve("every.txt").toString(), "every", FRAMES, W, H);
         assertThat(run.exitCode()).as(run.err()).isZero();
         assertThat(Files.readString(dir.resolve("every.pov"))).doesNotContain("#switch");
