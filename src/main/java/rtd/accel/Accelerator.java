@@ -8,6 +8,7 @@ import java.util.concurrent.Executor;
 import java.util.function.Supplier;
 import rtd.render.LinearTracer;
 import rtd.render.Tracer;
+import rtd.render.WorkCount;
 import rtd.scene.Scene;
 
 /**
@@ -105,13 +106,13 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
         }
         if (kind == Kind.BVH) {
             Bvh bvh = kept.bvh(scene);
-            return new Accelerator(bvh::newTracer, () -> "BVH of " + count(bvh.nodeCount(), "node"), true);
+            return new Accelerator(bvh::newTracer, () -> "BVH of " + WorkCount.count(bvh.nodeCount(), "node"), true);
         }
         if (kind == Kind.IMAGE) {
             HitImage image = HitImage.build(scene, width, height, threads);
             return new Accelerator(image::newTracer, () -> String.format(Locale.ROOT, "image of hits in %s of %d × %d "
-                    + "pixels, %s", count(image.tileCount(), "tile"), image.tileSide(), image.tileSide(),
-                    count(image.entries(), "entry", "entries")), false);
+                    + "pixels, %s", WorkCount.count(image.tileCount(), "tile"), image.tileSide(), image.tileSide(),
+                    WorkCount.count(image.entries(), "entry", "entries")), false);
         }
         CompletableFuture<Bvh> tree = kind == Kind.GRID ? null
                 : CompletableFuture.supplyAsync(() -> kept.bvh(scene), beside(threads));
@@ -126,11 +127,11 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
         Bvh bvh = join(tree);
         return new Accelerator(() -> grid.newTracer(lights.newTracer(mirrors.newTracer(bvh.newTracer()))),
                 () -> describe(grid) + ", " + (lights.count() == 0 ? "no light grid"
-                        : count(lights.count(), "light grid") + " of "
-                                + count(lights.entries(), "entry", "entries"))
-                        + (mirrors.count() == 0 ? "" : ", " + count(mirrors.count(), "mirror grid") + " of "
-                                + count(mirrors.entries(), "entry", "entries"))
-                        + ", and BVH of " + count(bvh.nodeCount(), "node"), true);
+                        : WorkCount.count(lights.count(), "light grid") + " of "
+                                + WorkCount.count(lights.entries(), "entry", "entries"))
+                        + (mirrors.count() == 0 ? "" : ", " + WorkCount.count(mirrors.count(), "mirror grid") + " of "
+                                + WorkCount.count(mirrors.entries(), "entry", "entries"))
+                        + ", and BVH of " + WorkCount.count(bvh.nodeCount(), "node"), true);
     }
 
     /**
@@ -162,15 +163,6 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
         return () -> lights.newTracer(bvh.newTracer());
     }
 
-    /** "1 node", "2,048 nodes". */
-    private static String count(long n, String thing) {
-        return count(n, thing, thing + "s");
-    }
-
-    private static String count(long n, String one, String many) {
-        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
-    }
-
     /**
      * Where the BVH is built beside the grids: on a thread of its own, as each structure has passes on one thread,
      * which the other's fill; on the calling thread, first, if the run has one thread ({@code --threads 1}).
@@ -184,8 +176,8 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
     }
 
     private static String describe(ViewGrid grid) {
-        return String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s", count(grid.cellCount(),
-                "cell"), grid.cellSide(), grid.cellSide(), count(grid.entries(), "entry", "entries"));
+        return String.format(Locale.ROOT, "view grid of %s of %d × %d pixels, %s", WorkCount.count(grid.cellCount(),
+                "cell"), grid.cellSide(), grid.cellSide(), WorkCount.count(grid.entries(), "entry", "entries"));
     }
 
     private static <T> T join(CompletableFuture<T> built) {

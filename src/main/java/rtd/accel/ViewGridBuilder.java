@@ -12,7 +12,7 @@ import rtd.geometry.IGeometry;
  * lies in, so that neighbours on the image lie side by side in memory; its numbers packed at that place
  * ({@link LeafObjects}); the cells' lists, with cells of the side {@link CellSide} chooses; and each list sorted
  * nearest first, so that a ray can stop at the first object beyond its hit ({@link NearestHit#testPlacesNearestFirst}).
- * The grid is the same for any number of threads.
+ * The grid is the same for any number of threads. A builder builds one grid.
  */
 final class ViewGridBuilder {
 
@@ -30,7 +30,10 @@ final class ViewGridBuilder {
     private final int width;
     private final int height;
 
-    /** Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}. */
+    /**
+     * Per object in file order: its pixels x0, y0, x1, y1 (inclusive), or x0 > x1 if it is not {@link #SEEN}; let go
+     * once the cells are filled.
+     */
     private int[] footprints;
     /** For a {@link HitImage}'s tiles: per seen object in leaf order, its pixels as {@link #footprints} has them. */
     private int[] footprintsByPlace;

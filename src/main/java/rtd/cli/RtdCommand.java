@@ -211,9 +211,11 @@ public final class RtdCommand implements Callable<Integer> {
         if (words.isEmpty() || !words.get(0).startsWith("--")) {
             return picocli;
         }
-        String nearest = Hints.nearest(words.get(0).split("=", 2)[0], ex.getCommandLine().getCommandSpec()
-                .optionsMap().keySet().stream().filter(name -> name.startsWith("--")).toList());
-        return nearest == null ? picocli : Stream.concat(Stream.of(nearest), picocli.stream()).distinct().toList();
+        String nearest = Hints.nearest(words.get(0).split("=", 2)[0].substring(2), ex.getCommandLine()
+                .getCommandSpec().optionsMap().keySet().stream().filter(name -> name.startsWith("--"))
+                .map(name -> name.substring(2)).toList()); // the names alone: the dashes are no part of a slip
+        return nearest == null ? picocli
+                : Stream.concat(Stream.of("--" + nearest), picocli.stream()).distinct().toList();
     }
 
     /** {@code --version}: the version in the jar's manifest. */

@@ -29,7 +29,7 @@ final class StatsReport {
     String format(Scene scene, Accelerator accelerator, WorkCount work, int threads, Path output) {
         double render = seconds.getOrDefault("render", 0.0);
         Formatter text = new Formatter(Locale.ROOT);
-        text.format(LINE, "parse", seconds.get("parse"), count(scene.objects().size(), "object"));
+        text.format(LINE, "parse", seconds.get("parse"), WorkCount.count(scene.objects().size(), "object"));
         if (seconds.containsKey("export")) {
             text.format(LINE, "export", seconds.get("export"), "the scene for POV-Ray (--export-pov)");
         }
@@ -68,14 +68,5 @@ final class StatsReport {
         return work.testsByKind().size() < 2 ? "" : work.testsByKind().keySet().stream()
                 .map(kind -> String.format(Locale.ROOT, "%.2f %s", work.testsPerRay(kind), kind))
                 .collect(Collectors.joining(", ", " (", ")"));
-    }
-
-    /** "1 object", "2,000 objects". */
-    static String count(long n, String thing) {
-        return count(n, thing, thing + "s");
-    }
-
-    static String count(long n, String one, String many) {
-        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }
 }

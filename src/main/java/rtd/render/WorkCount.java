@@ -2,6 +2,7 @@ package rtd.render;
 
 import java.util.Collections;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import rtd.geometry.IGeometry;
@@ -96,5 +97,15 @@ public record WorkCount(long rays, Map<String, Long> testsByKind, long nodesVisi
 
     public double nodesPerRay() {
         return rays == 0 ? 0 : (double) nodesVisited / rays;
+    }
+
+    /** A count for {@code --stats}, with its noun: "1 node", "2,048 nodes". */
+    public static String count(long n, String thing) {
+        return count(n, thing, thing + "s");
+    }
+
+    /** A count for {@code --stats}, with its noun, {@code one} or {@code many}: "1 entry", "2 entries". */
+    public static String count(long n, String one, String many) {
+        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }
 }
