@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
-import java.util.stream.Stream;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IVersionProvider;
@@ -16,9 +15,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.UnmatchedArgumentException;
 import rtd.accel.Accelerator;
-import rtd.io.Hints;
 import rtd.io.ImageFormat;
 import rtd.io.SceneException;
 import rtd.view.View;
@@ -174,18 +171,7 @@ public final class RtdCommand implements Callable<Integer> {
     /** The command line with {@code streams} for {@code -} and {@code -o -}; a misuse gets one line and a hint. */
     static CommandLine commandLine(StandardStreams streams) {
         CommandLine commandLine = new CommandLine(new RtdCommand(streams));
-        commandLine.setParameterExceptionHandler((ex, args) -> {
-            CommandLine cmd = ex.getCommandLine();
-            PrintWriter err = cmd.getErr();
-            err.println("rtd: " + ex.getMessage());
-            List<String> suggestions = suggestions(ex);
-            if (!suggestions.isEmpty()) {
-                err.println("Possible solutions: " + String.join(", ", suggestions));
-            }
-            err.println("Try '" + cmd.getCommandName() + " --help' for more information.");
-            err.flush();
-            return cmd.getCommandSpec().exitCodeOnInvalidInput();
-        });
+        commandLine.setParameterExceptionHandler((ex, args) -> Misuse.report(ex));
         commandLine.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
             PrintWriter err = cmd.getErr();
             err.println("rtd: internal error: " + ex + ". This is a bug in rtd; please report it with the scene.");
@@ -196,26 +182,6 @@ public final class RtdCommand implements Callable<Integer> {
             return 1;
         });
         return commandLine;
-    }
-
-    /**
-     * For an unknown option, the options it may have meant: first the one within a few edits of it ({@code --wdith}:
-     * {@code --width}, a swap of two letters that picocli's likeness misses), then picocli's own suggestions.
-     */
-    private static List<String> suggestions(ParameterException ex) {
-        if (!(ex instanceof UnmatchedArgumentException unmatched)) {
-            return List.of();
-        }
-        List<String> picocli = unmatched.getSuggestions();
-        List<String> words = unmatched.getUnmatched();
-        if (words.isEmpty() || !words.get(0).startsWith("--")) {
-            return picocli;
-        }
-        String nearest = Hints.nearest(words.get(0).split("=", 2)[0].substring(2), ex.getCommandLine()
-                .getCommandSpec().optionsMap().keySet().stream().filter(name -> name.startsWith("--"))
-                .map(name -> name.substring(2)).toList()); // the names alone: the dashes are no part of a slip
-        return nearest == null ? picocli
-                : Stream.concat(Stream.of("--" + nearest), picocli.stream()).distinct().toList();
     }
 
     /** {@code --version}: the version in the jar's manifest. */
