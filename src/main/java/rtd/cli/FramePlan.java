@@ -7,11 +7,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import rtd.io.ClockedScene;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
 import rtd.io.SceneFile;
 import rtd.scene.Scene;
+import rtd.scene.SceneWarnings;
 
 /**
  * Which frames of an animation a run draws (Part III, "Frames on the command line"), {@code first} to {@code last}
@@ -60,7 +60,7 @@ record FramePlan(int frames, int first, int last, double fps) {
         } catch (SceneException e) {
             throw new SceneException(e.errors().stream().map(error -> error.message().contains("clock =") ? error
                     : new SceneError(error.file(), error.line(), error.column(), error.message() + " (frame " + i
-                            + ", at clock = " + ClockedScene.clockText(clock(i)) + ")", error.sourceLine(),
+                            + ", at clock = " + SceneWarnings.number(clock(i)) + ")", error.sourceLine(),
                             error.help()))
                     .toList(), false);
         }

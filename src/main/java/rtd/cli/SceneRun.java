@@ -19,7 +19,6 @@ import rtd.accel.Accelerator;
 import rtd.accel.Accelerator.StructureCache;
 import rtd.image.Picture;
 import rtd.io.AnimatedGif;
-import rtd.io.ClockedScene;
 import rtd.io.ImageFormat;
 import rtd.io.SceneError;
 import rtd.io.SceneException;
@@ -206,7 +205,7 @@ final class SceneRun {
             for (int i = plan.first(); i <= plan.last(); i++) {
                 int done = i - plan.first();
                 String name = String.format("frame %d (%d to %d), clock %s", i, plan.first(), plan.last(),
-                        ClockedScene.clockText(plan.clock(i)));
+                        SceneWarnings.number(plan.clock(i)));
                 display.show(ProgressDisplay.Phase.counted(name, () -> done / (double) plan.count()));
                 if (picture == null || file.usesClock()) { // quietly, with what the last frame built if it serves
                     Scene scene = i == plan.first() ? first : plan.frame(file, options.scale(), i, null);

@@ -1,7 +1,5 @@
 package rtd.io;
 
-import java.math.BigDecimal;
-import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
@@ -12,6 +10,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import rtd.scene.Scene;
+import rtd.scene.SceneWarnings;
 
 /**
  * A scene read at one clock beside the expressions of its numbers that use the clock (Part III, "Expressions,
@@ -136,15 +135,10 @@ public record ClockedScene(Scene scene, ClockFields ambient, ClockFields camera,
         }
     }
 
-    /** A clock value as messages and the progress line write it: six significant digits at most, 0.75, 0.333333, 1. */
-    public static String clockText(double clock) {
-        return clock == 0 ? "0" : new BigDecimal(clock).round(new MathContext(6)).stripTrailingZeros().toPlainString();
-    }
-
     /** An expression as written, its value, and the clock if it uses it: "1-2*clock, which is -0.5 at clock = 0.75". */
     static String withValue(String text, float value, boolean usesClock, double clock) {
         String number = value == Math.rint(value) && Math.abs(value) < 1e9 ? String.valueOf((long) value)
                 : String.valueOf(value);
-        return text + ", which is " + number + (usesClock ? " at clock = " + clockText(clock) : "");
+        return text + ", which is " + number + (usesClock ? " at clock = " + SceneWarnings.number(clock) : "");
     }
 }

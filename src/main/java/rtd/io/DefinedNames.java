@@ -204,16 +204,13 @@ final class DefinedNames {
     private String didYouMean(String name, String kind) {
         String nearest = Hints.nearest(name, first.values().stream().filter(d -> kind.contains(d.kind()))
                 .map(Definition::name).toList());
-        if (nearest != null) {
-            return "did you mean '" + nearest + "'?";
-        }
-        return switch (kind) {
+        return Hints.didYouMean(nearest, switch (kind) {
             case "pattern" -> "define it with a line such as pattern:(" + name + "):(checker):(255|0|0):(255|255|0)";
             case "transform" -> "define it with a line such as transform:(" + name + "):(scale 2):(translate 0|1|0)";
             default -> onlyMaterials ? "define it with a line such as material:(" + name + "):(diffuse=0.9)"
                     : "define it with a line such as material:(" + name + "):(diffuse=0.9) or transform:(" + name
                             + "):(scale 2)";
-        };
+        });
     }
 
     private static String whereItGoes(String kind) {

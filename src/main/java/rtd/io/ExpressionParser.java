@@ -211,17 +211,15 @@ final class ExpressionParser {
         String product = names.lookUp(word, start) == null ? ""
                 : "; a product is written with '*', such as " + word + "*(…)";
         String functions = "the functions are " + String.join(", ", Expression.Function.NAMES) + product;
-        return cursor.error(start, "unknown function '" + word + "'",
-                nearest != null ? "did you mean '" + nearest + "'?" : functions);
+        return cursor.error(start, "unknown function '" + word + "'", Hints.didYouMean(nearest, functions));
     }
 
     private SceneException unknownName(String word, int start) {
         if (names.isBroken(word)) { // its let's mistake is reported there: this statement is only left out
             return new SceneException(cursor.error(start, "", null).place, List.of());
         }
-        String nearest = nearestName(word);
-        return cursor.error(start, "unknown name '" + word + "'", nearest != null ? "did you mean '" + nearest + "'?"
-                : "define it above this line with let:(" + word + "):(1), or use clock or pi");
+        return cursor.error(start, "unknown name '" + word + "'", Hints.didYouMean(nearestName(word),
+                "define it above this line with let:(" + word + "):(1), or use clock or pi"));
     }
 
     String nearestName(String word) {

@@ -40,21 +40,17 @@ final class FaceTriangles {
         return new ObjMesh(vertices, normals, corners, cornerNormals, count);
     }
 
+    /** Adds the face's corners a, b, c as the next triangle, with their normals if all three have one. */
     private void add(int[] vertices, int[] normals, int a, int b, int c) {
-        if (3 * count + 3 > corners.length) {
+        int at = 3 * count++;
+        if (at + 3 > corners.length) {
             corners = Arrays.copyOf(corners, 2 * corners.length);
             cornerNormals = cornerNormals == null ? null : Arrays.copyOf(cornerNormals, corners.length);
         }
-        put(count++, vertices, normals, a, b, c);
-    }
-
-    /** Writes the face's corners a, b, c as triangle {@code index}, with their normals if all three have one. */
-    private void put(int index, int[] vertices, int[] normals, int a, int b, int c) {
-        boolean smooth = normals[a] >= 0 && normals[b] >= 0 && normals[c] >= 0;
-        int at = 3 * index;
         corners[at] = vertices[a];
         corners[at + 1] = vertices[b];
         corners[at + 2] = vertices[c];
+        boolean smooth = normals[a] >= 0 && normals[b] >= 0 && normals[c] >= 0;
         if (smooth && cornerNormals == null) { // the first smooth triangle: those before have no normals
             cornerNormals = new int[corners.length];
             Arrays.fill(cornerNormals, -1);

@@ -63,11 +63,9 @@ public final class Hints {
         if (token.indexOf('\u2212') >= 0) {
             return "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead";
         }
-        if (DECIMAL_COMMA.matcher(token).matches() && wholeNumberGroup != null) {
-            return "in " + wholeNumberGroup + ", write whole numbers separated by '|', not ','";
-        }
         if (DECIMAL_COMMA.matcher(token).matches()) {
-            return "write decimals with a point: " + token.replace(',', '.');
+            return wholeNumberGroup == null ? forObjNumber(token)
+                    : "in " + wholeNumberGroup + ", write whole numbers separated by '|', not ','";
         }
         if (token.indexOf(',') >= 0) {
             return "separate the numbers of a group with '|', not ','";
@@ -146,8 +144,8 @@ public final class Hints {
         if (meant != null) {
             return "did you mean '" + String.join("' or '", meant) + "'?";
         }
-        String nearest = nearest(word, Grammar.STATEMENTS.stream().map(Statement::keyword).toList());
-        return nearest != null ? "did you mean '" + nearest + "'?" : "a statement starts with " + Grammar.keywordList();
+        return didYouMean(nearest(word, Grammar.STATEMENTS.stream().map(Statement::keyword).toList()),
+                "a statement starts with " + Grammar.keywordList());
     }
 
     /** Whether a number that read as no finite float was written too large for one, not as NaN or Infinity. */
@@ -163,8 +161,12 @@ public final class Hints {
 
     /** "did you mean …?" with the one of {@code words} nearest to {@code word}, else their list: "the keys are …". */
     static String nearestOrList(String word, List<String> words, String plural) {
-        String nearest = nearest(word, words);
-        return nearest != null ? "did you mean '" + nearest + "'?" : "the " + plural + " are " + quoted(words, "and");
+        return didYouMean(nearest(word, words), "the " + plural + " are " + quoted(words, "and"));
+    }
+
+    /** "did you mean 'nearest'?", or {@code otherwise} if {@code nearest} is null. */
+    static String didYouMean(String nearest, String otherwise) {
+        return nearest != null ? "did you mean '" + nearest + "'?" : otherwise;
     }
 
     /**

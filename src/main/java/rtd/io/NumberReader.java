@@ -1,6 +1,7 @@
 package rtd.io;
 
 import java.util.Locale;
+import rtd.scene.SceneWarnings;
 
 /**
  * Reads one number of a group: a plain number as the paper's scenes have, by {@link FloatParser}, or an expression
@@ -88,7 +89,7 @@ final class NumberReader {
         cursor.pos = tokenStart;
         Expression read = expressions().read();
         String text = cursor.source.text(tokenStart, cursor.pos);
-        String at = read.usesClock() ? " at clock = " + ClockedScene.clockText(names.clock) : "";
+        String at = read.usesClock() ? " at clock = " + SceneWarnings.number(names.clock) : "";
         try {
             exact = read.value(names.clock);
         } catch (Expression.NotFinite e) {

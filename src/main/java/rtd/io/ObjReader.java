@@ -114,8 +114,7 @@ final class ObjReader {
                 String written = source.text(start, pos);
                 boolean overflow = Hints.tooLarge(written);
                 throw error(start, "the " + "xyz".charAt(k) + " of the " + what + " must be a finite number, found "
-                        + written
-                        + (overflow ? ", which is too large for a float" : ""),
+                        + written + (overflow ? ", which is too large for a float" : ""),
                         overflow ? Hints.FLOAT_RANGE : "a " + what + " is written " + keyword + " 0.5 -1 2");
             }
             into[at + k] = value;
