@@ -3,7 +3,6 @@ package rtd.cli;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -87,7 +86,7 @@ record TeachingRun(String explain, View view, Path exportPov, boolean watch) {
         if (options.paper() && !scene.lights().isEmpty()) { // explain what --paper draws
             err.println("rtd: note: --paper draws as the paper does, in flat colours: the scene's lights are not used, "
                     + "and the explanation follows the flat picture");
-            scene = new Scene(scene.ambient(), scene.camera(), scene.objects(), List.of());
+            scene = new Scene(scene.ambient(), scene.camera(), scene.objects());
         }
         explain(scene, pixel[0], pixel[1], options, commandLine.getOut());
         return 0;

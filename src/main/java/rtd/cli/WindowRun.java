@@ -48,7 +48,7 @@ public final class WindowRun {
         }
         Memory.checkImageFits(options.width(), options.height(), options.scale());
         WindowSetup setup = new WindowSetup(options.scene(), () -> read(options), watch(options),
-                engine(options.accel().name(), options.threads()), options.width(), options.height(), options.samples(),
+                engine(options.accel(), options.threads()), options.width(), options.height(), options.samples(),
                 options.threads(), options.clock());
         try {
             Window.open(setup);
@@ -81,8 +81,7 @@ public final class WindowRun {
      * The tracers {@code --accel} chooses, chained as for {@code -o}: for any camera the lights' grids (they see from
      * the lights) before the BVH, or the paper's loop; for the picture its view grid before those. Public for tests.
      */
-    public static Engine engine(String choice, int threads) {
-        Accelerator.Choice accel = Accelerator.Choice.valueOf(choice);
+    public static Engine engine(Accelerator.Choice accel, int threads) {
         StructureCache kept = new StructureCache(); // a clock that moves only the camera keeps the BVH
         return new Engine() {
             @Override

@@ -15,6 +15,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import rtd.accel.Accelerator;
 import rtd.camera.OrthographicCamera;
 import rtd.cli.WindowRun;
 import rtd.scene.Scene;
@@ -26,7 +27,7 @@ import rtd.window.WindowSetup.Engine;
 @DisplayName("The window's renders: passes of 8, 4, 2 and 1, the last -o's own pixels, and cancelled by a newer one")
 class FrameRendererTest {
 
-    private static final Engine ENGINE = WindowRun.engine("auto", 2);
+    private static final Engine ENGINE = WindowRun.engine(Accelerator.Choice.auto, 2);
 
     @TempDir
     Path dir;

@@ -6,6 +6,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
+import rtd.accel.Accelerator;
 import rtd.cli.WindowRun;
 import rtd.image.Picture;
 import rtd.io.SceneFile;
@@ -25,7 +26,7 @@ final class SessionHarness implements AutoCloseable {
     static SessionHarness open(Path file, int width, int height, double clock) throws Exception {
         SessionHarness harness = new SessionHarness();
         WindowSetup.SceneLoader loader = () -> new ClockedScene(SceneFile.read(file), scene -> scene);
-        WindowSetup setup = new WindowSetup(file, loader, changed -> () -> { }, WindowRun.engine("auto", 2),
+        WindowSetup setup = new WindowSetup(file, loader, changed -> () -> { }, WindowRun.engine(Accelerator.Choice.auto, 2),
                 width, height, 1, 2, clock);
         ClockedScene source = loader.read();
         harness.on(() -> {
