@@ -36,14 +36,7 @@ final class PovExport {
                 + " +KFI0 +KFF" + (plan.frames() - 1) + " +KI0 +KF1";
         String header = "// An animation of " + plan.frames() + " frames, written by rtd --export-pov --frames "
                 + plan.frames() + ". Render all of them with\n//   " + command + "\n";
-        write(target, () -> {
-            if (file.usesClock()) {
-                return header + animation(file, plan, options);
-            }
-            ClockedScene read = file.withClock(0);
-            return header + "// The scene does not use the clock: every frame is the same picture.\n"
-                    + PovScene.of(read.with(options.scale().of(read.scene())), options.width(), options.height());
-        });
+        write(target, () -> header + animation(file, plan, options));
         return "rtd: wrote " + target.spelt() + "; render its " + plan.frames() + " frames with POV-Ray:\n" + cd(target)
                 + command;
     }
@@ -71,14 +64,18 @@ final class PovExport {
         return "  cd " + PovScene.shellWord(target.spelt().toAbsolutePath().getParent().toString()) + " && ";
     }
 
-    /** The animation, the scene read at every frame's clock first: a rule broken at some frame stops the export. */
+    /** The animation; a scene that uses the clock read at every frame's clock first: a mistake at one stops it. */
     private static String animation(SceneFile file, FramePlan plan, RenderOptions options) throws SceneException {
         List<ICamera> cameras = new ArrayList<>();
-        for (int i = 0; i < plan.frames(); i++) {
+        for (int i = 0; file.usesClock() && i < plan.frames(); i++) {
             cameras.add(file.at(plan.clock(i), null).camera());
         }
         ClockedScene read = file.withClock(plan.clock(0));
         ClockedScene clocked = read.with(options.scale().of(read.scene()));
+        if (!file.usesClock()) {
+            return "// The scene does not use the clock: every frame is the same picture.\n"
+                    + PovScene.of(clocked, options.width(), options.height());
+        }
         boolean scaled = clocked.scene() != read.scene(); // the orthographic camera's zoom times --scale
         String why = scaled && !clocked.camera().isEmpty() ? "the orthographic camera at --scale"
                 : PovClock.whyNot(clocked, cameras);
