@@ -64,7 +64,7 @@ public final class Hints {
             return "'\u2212' is a typographic minus sign (U+2212); type the plain '-' instead";
         }
         if (DECIMAL_COMMA.matcher(token).matches()) {
-            return wholeNumberGroup == null ? forObjNumber(token)
+            return wholeNumberGroup == null ? "write decimals with a point: " + token.replace(',', '.')
                     : "in " + wholeNumberGroup + ", write whole numbers separated by '|', not ','";
         }
         if (token.indexOf(',') >= 0) {
