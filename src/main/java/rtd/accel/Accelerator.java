@@ -29,17 +29,17 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
     public static final int IMAGE_THRESHOLD = 100_000;
 
     /**
-     * The fewest objects for which {@code auto} builds the lights' and the mirrors' grids: fewer fit in one leaf of the
-     * BVH, whose shadow and mirrored rays test them all sooner than a grid finds a ray's cell.
+     * The fewest objects for which {@code auto} builds the lights' grids: fewer fit in one leaf of the BVH, whose
+     * shadow rays test them all sooner than a grid finds a ray's cell.
      */
-    public static final int POINT_GRIDS_THRESHOLD = 16;
+    public static final int LIGHT_GRIDS_THRESHOLD = 16;
 
     /** What a run finds its hits with, and how the progress line names its building. */
     public enum Kind {
         LOOP("the paper's loop: nothing to build"),
         BVH("building the BVH"),
         GRID("building the view grid"),
-        GRID_BVH_AND_POINT_GRIDS("building the view grid, the lights' and mirrors' grids and the BVH"),
+        GRID_BVH_AND_LIGHT_GRIDS("building the view grid, the lights' grids and the BVH"),
         GRID_AND_BVH("building the view grid and the BVH"),
         IMAGE("finding each pixel's hit, object by object");
 
@@ -56,14 +56,14 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
 
         /** Whether the camera's rays go to a view grid. */
         public boolean viewGrid() {
-            return this == GRID || this == GRID_AND_BVH || this == GRID_BVH_AND_POINT_GRIDS;
+            return this == GRID || this == GRID_AND_BVH || this == GRID_BVH_AND_LIGHT_GRIDS;
         }
     }
 
     /**
      * What {@code accel} asks for {@code scene}: {@code none} (or no objects) the paper's loop (Listing 4.3);
-     * {@code auto} and {@code grid} the view grid, with lights also the BVH and a grid from each light and mirror,
-     * which {@code auto} leaves out for fewer than {@link #POINT_GRIDS_THRESHOLD} objects; {@code bvh}, or a camera the
+     * {@code auto} and {@code grid} the view grid, with lights also the BVH and a grid from each light, which
+     * {@code auto} leaves out for fewer than {@link #LIGHT_GRIDS_THRESHOLD} objects; {@code bvh}, or a camera the
      * grid cannot serve, the BVH.
      */
     public static Kind choose(Scene scene, Choice accel) {
@@ -76,8 +76,8 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
         if (scene.lights().isEmpty()) {
             return Kind.GRID;
         }
-        boolean few = accel == Choice.auto && scene.objects().size() < POINT_GRIDS_THRESHOLD;
-        return few ? Kind.GRID_AND_BVH : Kind.GRID_BVH_AND_POINT_GRIDS;
+        boolean few = accel == Choice.auto && scene.objects().size() < LIGHT_GRIDS_THRESHOLD;
+        return few ? Kind.GRID_AND_BVH : Kind.GRID_BVH_AND_LIGHT_GRIDS;
     }
 
     /**
@@ -120,17 +120,13 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
         if (tree == null) {
             return new Accelerator(grid::newTracer, () -> describe(grid), false);
         }
-        boolean pointGrids = kind == Kind.GRID_BVH_AND_POINT_GRIDS;
-        LightGrids lights = pointGrids ? kept.lightGrids(scene, width, height, samples, threads) : LightGrids.NONE;
-        MirrorGrids mirrors = pointGrids // the camera's: never kept
-                ? MirrorGrids.build(scene, width, height, samples, threads) : MirrorGrids.NONE;
+        LightGrids lights = kind == Kind.GRID_BVH_AND_LIGHT_GRIDS
+                ? kept.lightGrids(scene, width, height, samples, threads) : LightGrids.NONE;
         Bvh bvh = join(tree);
-        return new Accelerator(() -> grid.newTracer(lights.newTracer(mirrors.newTracer(bvh.newTracer()))),
+        return new Accelerator(() -> grid.newTracer(lights.newTracer(bvh.newTracer())),
                 () -> describe(grid) + ", " + (lights.count() == 0 ? "no light grid"
                         : WorkCount.count(lights.count(), "light grid") + " of "
                                 + WorkCount.count(lights.entries(), "entry", "entries"))
-                        + (mirrors.count() == 0 ? "" : ", " + WorkCount.count(mirrors.count(), "mirror grid") + " of "
-                                + WorkCount.count(mirrors.entries(), "entry", "entries"))
                         + ", and BVH of " + WorkCount.count(bvh.nodeCount(), "node"), true);
     }
 
@@ -155,7 +151,7 @@ public record Accelerator(Supplier<Tracer> tracers, Supplier<String> built, bool
     public static Supplier<Tracer> forAnyCamera(Choice accel, Scene scene, int width, int height, int threads,
             StructureCache kept) {
         Kind kind = choose(scene, accel);
-        if (kind != Kind.GRID_BVH_AND_POINT_GRIDS) {
+        if (kind != Kind.GRID_BVH_AND_LIGHT_GRIDS) {
             return build(kind == Kind.LOOP ? kind : Kind.BVH, scene, width, height, 1, threads, kept).tracers();
         }
         Bvh bvh = kept.bvh(scene);

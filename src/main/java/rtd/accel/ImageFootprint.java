@@ -20,7 +20,7 @@ import rtd.math.Vector3f;
  * perspective camera's eye ({@link PerspectiveFootprint}), widened by what the rounding of the
  * rays' own numbers can move them. Both work in double from the camera's float numbers, with
  * margins far above double rounding: the grid may test an object in vain, but never leaves out
- * one that the paper's loop would find. The {@link PointGrids} use the same idea seen from a point
+ * one that the paper's loop would find. The {@link LightGrids} use the same idea seen from a light
  * ({@link PointFootprint}).
  */
 interface ImageFootprint {

@@ -1,5 +1,6 @@
 package rtd.accel;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import rtd.geometry.IGeometry;
@@ -19,7 +20,17 @@ import rtd.scene.Scene;
  * end at a light, runs too far, or comes from outside the picture) goes to the tracer for the
  * others. Not in the paper or Part II.
  */
-public final class LightGrids extends PointGrids<LightGrids.Grid> {
+public final class LightGrids {
+
+    /**
+     * How many objects all the grids may hold copies of together: each packs every object's numbers for the test,
+     * which for a million triangles is most of the memory. The lights after that many (the first in the file get
+     * grids, and the first always) leave their rays to the tree.
+     */
+    static final long MOST_PACKED = 2_000_000;
+    /** The side of a picture at least and at most, in pixels: 4,096² cells are as many as memory bears. */
+    private static final int SMALLEST = 16;
+    private static final int LARGEST = 4096;
 
     /**
      * One light's grid: the footprints seen from it and the cells of its picture ({@code cells.width}
@@ -27,7 +38,7 @@ public final class LightGrids extends PointGrids<LightGrids.Grid> {
      * ({@link Light#clearance}): a ray is served as if it ran on to the light, where the grid's
      * geometry is exact, and its hits are still only those nearer than its own end.
      */
-    record Grid(PointFootprint footprint, ViewGrid cells, float clearance) implements PointGrids.Grid {
+    record Grid(PointFootprint footprint, ViewGrid cells, float clearance) {
 
         /**
          * The grid of {@code objects} seen from {@code light}, whose objects with a box lie in
@@ -39,7 +50,9 @@ public final class LightGrids extends PointGrids<LightGrids.Grid> {
             if (footprint == null) {
                 return null;
             }
-            return new Grid(footprint, PointGrids.cells(objects, footprint, size, pool), light.clearance());
+            // no camera: the grid's "pixels" are directions from the light; a ray shows anywhere in its pixel (1)
+            ViewGrid cells = new ViewGridBuilder(objects, size, size, pool).build(footprint, null, 1, 1);
+            return new Grid(footprint, cells, light.clearance());
         }
 
         /**
@@ -73,8 +86,10 @@ public final class LightGrids extends PointGrids<LightGrids.Grid> {
     /** No grid: every shadow ray goes to the tracer for the others. */
     public static final LightGrids NONE = new LightGrids(List.of());
 
+    private final List<Grid> grids;
+
     private LightGrids(List<Grid> grids) {
-        super(grids);
+        this.grids = grids;
     }
 
     /**
@@ -93,13 +108,66 @@ public final class LightGrids extends PointGrids<LightGrids.Grid> {
     static LightGrids build(Scene scene, int width, int height, int samples, int threads, long mostPacked) {
         List<IGeometry> objects = scene.objects();
         float[] box = boxOf(objects);
-        int size = side(Math.sqrt((double) width * height) * samples);
-        return box == null ? NONE : new LightGrids(build(scene.lights(), objects.size(), threads, mostPacked,
-                (light, pool) -> Grid.build(objects, box, light, size, pool)));
+        if (box == null) {
+            return NONE;
+        }
+        int size = (int) Math.max(SMALLEST, Math.min(LARGEST, Math.sqrt((double) width * height) * samples));
+        long most = Math.max(1, mostPacked / Math.max(1, objects.size()));
+        return Parts.onPool(threads, objects.size(), pool -> {
+            List<Grid> built = new ArrayList<>();
+            for (Light light : scene.lights()) {
+                if (built.size() >= most) {
+                    break;
+                }
+                Grid grid = Grid.build(objects, box, light, size, pool);
+                if (grid != null) {
+                    built.add(grid);
+                }
+            }
+            return new LightGrids(List.copyOf(built));
+        });
+    }
+
+    /** The grids, one for each light that has one. */
+    List<Grid> grids() {
+        return grids;
+    }
+
+    /** How many lights have a grid. */
+    public int count() {
+        return grids.size();
+    }
+
+    /** The objects in all the grids' cells together. */
+    public long entries() {
+        long entries = 0;
+        for (Grid grid : grids) {
+            entries += grid.cells().entries();
+        }
+        return entries;
+    }
+
+    /** The box of all objects that have a finite one, or null if none has. */
+    static float[] boxOf(List<IGeometry> objects) {
+        float[] all = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
+                Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        float[] box = new float[6];
+        boolean any = false;
+        for (IGeometry object : objects) {
+            KnownShapes.putBox(object, box, 0);
+            if (ImageFootprint.isFinite(box)) {
+                any = true;
+                for (int k = 0; k < 3; k++) {
+                    all[k] = Math.min(all[k], box[k]);
+                    all[k + 3] = Math.max(all[k + 3], box[k + 3]);
+                }
+            }
+        }
+        return any ? all : null;
     }
 
     /** A new tracer for the shadow rays these grids serve, and {@code others} for every other ray; one per thread. */
     public Tracer newTracer(Tracer others) {
-        return grids().isEmpty() ? others : new LightGridTracer(grids(), others);
+        return grids.isEmpty() ? others : new LightGridTracer(grids, others);
     }
 }

@@ -183,16 +183,14 @@ final class NearestHit {
     /**
      * The paper's intersection test and depth test on the objects at places
      * {@code places[from .. to)} in leaf order (a {@link ViewGrid}'s cell), in the order of
-     * {@code nearest}, growing, a distance from a point X within which no hit on the object lies;
-     * the origin lies {@code originFromX} from X (0 for the camera's grid; a mirror grid's X is the
-     * eye's image). A hit n from X lies at least {@code n − originFromX} from the origin: the tests
-     * stop at the first place where that passes the nearest hit, by more than rounding can explain,
-     * as all after it do.
+     * {@code nearest}, growing, a distance from the ray's origin within which no hit on the object
+     * lies: the tests stop at the first place where that passes the nearest hit, by more than
+     * rounding can explain, as all after it do.
      */
-    void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest, double originFromX) {
+    void testPlacesNearestFirst(int[] places, int from, int to, float[] nearest) {
         for (int k = from; k < to; k++) {
             int place = places[k];
-            if (nearest[place] > skipBeyond * length + originFromX) {
+            if (nearest[place] > skipBeyond * length) {
                 return;
             }
             counts.place(place);

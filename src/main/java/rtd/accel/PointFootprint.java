@@ -4,15 +4,13 @@ import rtd.geometry.IGeometry;
 import rtd.math.Vector3f;
 
 /**
- * The {@link ImageFootprint} of an object seen from a point X, for rays whose line passes through
- * X: the shadow rays towards a light at X (Part II, "Shadows"), which run from a surface to the
- * light ({@link #around}), and the rays a flat mirror reflects from the camera's eye, which leave
- * the eye's mirror image ({@link #leaving}). The "image" is a square picture, {@code size × size}
- * pixels, of the directions from X towards the scene's objects: direction w shows at
- * {@code ((w·u)/(w·F), (w·v)/(w·F))}, scaled to pixels, for a forward direction F towards the
- * middle of the objects' box and u, v across it: for a light, POV-Ray's "light buffer", made exact.
+ * The {@link ImageFootprint} of an object seen from a point X, for the shadow rays towards a light at
+ * X (Part II, "Shadows"), which run from a surface to the light ({@link #around}). The "image" is a
+ * square picture, {@code size × size} pixels, of the directions from X towards the scene's objects:
+ * direction w shows at {@code ((w·u)/(w·F), (w·v)/(w·F))}, scaled to pixels, for a forward direction F
+ * towards the middle of the objects' box and u, v across it: POV-Ray's "light buffer", made exact.
  *
- * <p>Towards X: a ray {@code O + t·D} that reaches {@code E = O + (d/|D|)·D} at distance d is
+ * <p>A ray {@code O + t·D} that reaches {@code E = O + (d/|D|)·D} at distance d is
  * served if {@code |E − X|} is at most a small gap g and {@code d} at most a reach R. Every point Q
  * between O and E is then {@code (1 − s)(O − X) + s(E − X)} from X, so seen from X it lies within
  * an angle of about {@code g/|Q − X|} of O. A hit at Q that the test reports lies in the object's
@@ -21,13 +19,6 @@ import rtd.math.Vector3f;
  * grown box widened by that angle, which is the footprint. The answer of {@link #put} is the
  * distance from X to the grown box: a ray whose origin lies nearer X than that, by more than the
  * gap, cannot hit the object.
- *
- * <p>Leaving X: a ray is served if its line passes within the gap g of X, at a point F, and its
- * origin lies at least a distance S beyond F along it. Each point Q of the ray is then
- * {@code (F − X) + |Q − F|·D/|D|} from X, with {@code F − X} at right angles to D: seen from X it
- * lies within an angle of {@code asin(g/|Q − X|)} of the ray's direction, whose pixel is the ray's.
- * The ray has run {@code |Q − O| ≤ |Q − X| − S} to Q, which bounds the growth; and a hit at
- * {@code |Q − X| ≥ n} from X lies at least {@code n − |O − X|} from the origin.
  */
 final class PointFootprint implements ImageFootprint {
 
@@ -38,7 +29,7 @@ final class PointFootprint implements ImageFootprint {
      */
     static final double GAP = 2e-6;
 
-    /** The point X: a light, or the eye's mirror image. */
+    /** The point X: the light. */
     private final double pointX;
     private final double pointY;
     private final double pointZ;
@@ -51,13 +42,8 @@ final class PointFootprint implements ImageFootprint {
     private final double scale;
     private final double reach;
     private final double gap;
-    /** Whether the rays served leave X (the mirrored rays), not run towards it (the shadow rays). */
-    private final boolean leaving;
-    /** Leaving X, how far beyond X the rays start at least (S). */
-    private final double leastStart;
 
-    private PointFootprint(Vector3f point, double[][] axes, double widest, int size, double reach, double gap,
-            boolean leaving, double leastStart) {
+    private PointFootprint(Vector3f point, double[][] axes, double widest, int size, double reach, double gap) {
         pointX = point.x();
         pointY = point.y();
         pointZ = point.z();
@@ -69,8 +55,6 @@ final class PointFootprint implements ImageFootprint {
         this.scale = size / (2 * widest);
         this.reach = reach;
         this.gap = gap;
-        this.leaving = leaving;
-        this.leastStart = leastStart;
     }
 
     /**
@@ -84,21 +68,6 @@ final class PointFootprint implements ImageFootprint {
      * it; or if the point lies so far that the gap is more than a few hundredths of the box's picture.
      */
     static PointFootprint around(Vector3f point, float[] box, int size) {
-        return seenFrom(point, box, size, false, 0, 0);
-    }
-
-    /**
-     * The footprints seen from {@code point} on a picture of {@code size × size} pixels that shows
-     * the box {@code box}, for rays that leave the point: whose line passes within {@code gap} of
-     * it and that start at least {@code leastStart} beyond it; null as for {@link #around}.
-     */
-    static PointFootprint leaving(Vector3f point, float[] box, int size, double leastStart, double gap) {
-        return leastStart > gap && gap > 0 ? seenFrom(point, box, size, true, leastStart, gap) : null;
-    }
-
-    /** {@link #leaving} if {@code leaving}, with its {@code leastStart} and gap, else {@link #around}. */
-    private static PointFootprint seenFrom(Vector3f point, float[] box, int size, boolean leaving, double leastStart,
-            double leavingGap) {
         double[] toMiddle = {(box[0] + box[3]) / 2.0 - point.x(), (box[1] + box[4]) / 2.0 - point.y(),
                 (box[2] + box[5]) / 2.0 - point.z()};
         double distance = Math.sqrt(ImageFootprint.dot(toMiddle, toMiddle));
@@ -132,14 +101,9 @@ final class PointFootprint implements ImageFootprint {
         // the float rounding of a ray's end grows with its length and with the size of the coordinates
         double gap = GAP * (reach + Math.sqrt((double) point.x() * point.x() + (double) point.y() * point.y()
                 + (double) point.z() * point.z()));
-        if (leaving) { // a hit lies in its grown box: no farther than its farthest corner and 1 %
-            reach = 1.01 * farthest + leavingGap;
-            gap = leavingGap;
-        }
         boolean tooNarrow = gap > 0.08 * distance * widest; // the tree does better
         double[][] axes = {forward, across, down};
-        return widest > 20 || tooNarrow ? null : new PointFootprint(point, axes, widest, size, reach, gap, leaving,
-                leastStart);
+        return widest > 20 || tooNarrow ? null : new PointFootprint(point, axes, widest, size, reach, gap);
     }
 
     private static double[] scaled(double[] a, double factor) {
@@ -155,7 +119,7 @@ final class PointFootprint implements ImageFootprint {
         return gap;
     }
 
-    /** Towards X, the longest ray served ({@code d ≤ R}); leaving X, how far from X a hit can lie at most. */
+    /** The longest ray served ({@code d ≤ R}). */
     double reach() {
         return reach;
     }
@@ -163,48 +127,16 @@ final class PointFootprint implements ImageFootprint {
     /**
      * The pixel, as {@code y·size + x}, of the ray from {@code (ox, oy, oz)} that reaches
      * {@code (ex, ey, ez)} at its end, if it is served: its end lies within the gap of X, it
-     * runs at most R, and it shows on the picture; else −1, and always for rays leaving X.
+     * runs at most R, and it shows on the picture; else −1.
      */
     int pixelOf(double ox, double oy, double oz, double ex, double ey, double ez, double length) {
         double gx = ex - pointX;
         double gy = ey - pointY;
         double gz = ez - pointZ;
-        if (leaving || !(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap)) {
+        if (!(length <= reach && gx * gx + gy * gy + gz * gz <= gap * gap)) {
             return -1;
         }
         return pixelOfDirection(ox - pointX, oy - pointY, oz - pointZ);
-    }
-
-    /**
-     * The pixel, as {@code y·size + x}, of the ray from {@code (ox, oy, oz)} along
-     * {@code (dx, dy, dz)} that leaves X, if it is served: its line passes within the gap of X, it
-     * starts at least S beyond X, and its direction shows on the picture; else −1, and always for
-     * rays towards X.
-     */
-    int pixelLeaving(double ox, double oy, double oz, double dx, double dy, double dz) {
-        if (!leaving) {
-            return -1;
-        }
-        double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        double ux = dx / length;
-        double uy = dy / length;
-        double uz = dz / length;
-        double wx = ox - pointX;
-        double wy = oy - pointY;
-        double wz = oz - pointZ;
-        double along = wx * ux + wy * uy + wz * uz; // |O − F|, as F is the foot of X on the line
-        double px = wx - along * ux;
-        double py = wy - along * uy;
-        double pz = wz - along * uz;
-        if (!(along >= leastStart && px * px + py * py + pz * pz <= gap * gap)) {
-            return -1;
-        }
-        return pixelOfDirection(ux, uy, uz);
-    }
-
-    /** The distance from X to {@code (x, y, z)}. */
-    double distanceFrom(double x, double y, double z) {
-        return Math.sqrt((x - pointX) * (x - pointX) + (y - pointY) * (y - pointY) + (z - pointZ) * (z - pointZ));
     }
 
     /** The pixel, as {@code y·size + x}, in which direction w from X shows, or −1 if not on the picture. */
@@ -274,16 +206,10 @@ final class PointFootprint implements ImageFootprint {
 
     /**
      * How far a ray can have run to a hit in the box {@code (x0 .. z1)} (relative to X) grown by at
-     * most {@code mostGrowth}: towards X, a hit Q lies at most {@code R − |Q − X| + g} from the
-     * origin, and |Q − X| is at least the box's distance less √3 growths, so near the light hits
-     * come from far; leaving X, at most {@code |Q − X| − S}, and |Q − X| at most the box's farthest
-     * corner's distance plus √3 growths.
+     * most {@code mostGrowth}: a hit Q lies at most {@code R − |Q − X| + g} from the origin, and
+     * |Q − X| is at least the box's distance less √3 growths, so near the light hits come from far.
      */
     private double run(double x0, double y0, double z0, double x1, double y1, double z1, double mostGrowth) {
-        if (leaving) {
-            double farthest = ImageFootprint.farthest(x0, y0, z0, x1, y1, z1);
-            return Math.max(0, Math.min(reach, farthest + Math.sqrt(3) * mostGrowth) - leastStart);
-        }
         double unGrown = ImageFootprint.distance(x0, y0, z0, x1, y1, z1);
         return Math.min(reach, reach - unGrown + Math.sqrt(3) * mostGrowth + gap);
     }

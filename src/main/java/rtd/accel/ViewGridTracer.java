@@ -81,7 +81,7 @@ public final class ViewGridTracer implements Tracer {
             hit.start(bundle.originX(i), bundle.originY(i), bundle.originZ(i),
                     bundle.directionX(i), bundle.directionY(i), bundle.directionZ(i));
             hit.testUnbounded();
-            hit.testPlacesNearestFirst(grid.places, cellStart[cell], cellStart[cell + 1], grid.nearest, 0);
+            hit.testPlacesNearestFirst(grid.places, cellStart[cell], cellStart[cell + 1], grid.nearest);
             hits.set(i, hit.best(), hit.bestT(), hit.bestDistance());
             hits.setTests(i, hit.testsRun() - before);
         }

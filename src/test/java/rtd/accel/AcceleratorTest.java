@@ -34,23 +34,23 @@ class AcceleratorTest {
     void autoTakesTheViewGridWithTheLightGridsWhereThereAreLights() {
         assertThat(Accelerator.choose(spheres(2, false), Choice.auto)).isEqualTo(Accelerator.Kind.GRID);
         assertThat(Accelerator.choose(spheres(1_000, false), Choice.auto)).isEqualTo(Accelerator.Kind.GRID);
-        assertThat(Accelerator.choose(spheres(Accelerator.POINT_GRIDS_THRESHOLD, true), Choice.auto)).as("lights")
-                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_POINT_GRIDS);
+        assertThat(Accelerator.choose(spheres(Accelerator.LIGHT_GRIDS_THRESHOLD, true), Choice.auto)).as("lights")
+                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_LIGHT_GRIDS);
         assertThat(Accelerator.choose(spheres(0, false), Choice.auto)).as("nothing to build for")
                 .isEqualTo(Accelerator.Kind.LOOP);
     }
 
     @Test
-    void autoBuildsNoGridsFromTheLightsOrMirrorsForALitSceneOfFewObjects() {
-        int few = Accelerator.POINT_GRIDS_THRESHOLD - 1;
+    void autoBuildsNoGridsFromTheLightsForALitSceneOfFewObjects() {
+        int few = Accelerator.LIGHT_GRIDS_THRESHOLD - 1;
         assertThat(Accelerator.choose(spheres(few, true), Choice.auto, 40, 20, 1))
                 .isEqualTo(Accelerator.Kind.GRID_AND_BVH);
         assertThat(Accelerator.choose(spheres(few, true), Choice.auto)).as("the window's choice too")
                 .isEqualTo(Accelerator.Kind.GRID_AND_BVH);
         assertThat(Accelerator.choose(spheres(few + 1, true), Choice.auto, 40, 20, 1))
-                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_POINT_GRIDS);
+                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_LIGHT_GRIDS);
         assertThat(Accelerator.choose(spheres(few, true), Choice.grid, 40, 20, 1)).as("grid builds them")
-                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_POINT_GRIDS);
+                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_LIGHT_GRIDS);
         assertThat(Accelerator.choose(spheres(few, false), Choice.auto, 40, 20, 1)).as("no lights")
                 .isEqualTo(Accelerator.Kind.GRID);
         assertThat(Accelerator.of(spheres(few, true), Choice.auto, 40, 20, 1, 1).built().get())
@@ -61,7 +61,7 @@ class AcceleratorTest {
     void anyOtherChoiceIsKept() {
         assertThat(Accelerator.choose(spheres(3, false), Choice.grid)).isEqualTo(Accelerator.Kind.GRID);
         assertThat(Accelerator.choose(spheres(3, true), Choice.grid))
-                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_POINT_GRIDS);
+                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_LIGHT_GRIDS);
         assertThat(Accelerator.choose(spheres(3, true), Choice.bvh)).isEqualTo(Accelerator.Kind.BVH);
         assertThat(Accelerator.choose(spheres(3, false), Choice.none)).isEqualTo(Accelerator.Kind.LOOP);
     }
@@ -75,7 +75,7 @@ class AcceleratorTest {
         assertThat(Accelerator.choose(many, Choice.bvh, 40, 20, 1)).isEqualTo(Accelerator.Kind.BVH);
         assertThat(Accelerator.choose(many, Choice.none, 40, 20, 1)).isEqualTo(Accelerator.Kind.LOOP);
         assertThat(Accelerator.choose(spheres(Accelerator.IMAGE_THRESHOLD, true), Choice.auto, 40, 20, 1)).as("lights")
-                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_POINT_GRIDS);
+                .isEqualTo(Accelerator.Kind.GRID_BVH_AND_LIGHT_GRIDS);
         assertThat(Accelerator.choose(spheres(Accelerator.IMAGE_THRESHOLD - 1, false), Choice.auto, 40, 20, 1))
                 .as("fewer objects").isEqualTo(Accelerator.Kind.GRID);
     }

@@ -7,7 +7,7 @@ import rtd.math.Vector3f;
 
 /**
  * Rays that graze what a grid seen from a point X must hold, for the tests of the grids seen from
- * a light and from a mirror's eye: a point Q just inside the outline of a box as X sees it, with
+ * a light: a point Q just inside the outline of a box as X sees it, with
  * the side it lies on; and the vector arithmetic, in double, to aim rays past it.
  *
  * @param q    Q less X: just inside the corner of the box that shows farthest towards the side

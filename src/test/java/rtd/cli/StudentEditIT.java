@@ -97,8 +97,8 @@ class StudentEditIT {
 
     @Test
     void theMirroredRaysOfTheGlassExampleShowTheEdit() throws Exception {
-        // its floor mirrors the spheres: the mirrored rays find them through a mirror grid (grid: auto builds none
-        // for so few objects)
+        // its floor mirrors the spheres: the mirrored rays find them through the BVH, behind the lights' grids
+        // (grid: auto builds none for so few objects)
         assertShowsTheEdit("examples/glass_and_mirror.txt", "--accel grid", "--accel none");
     }
 
