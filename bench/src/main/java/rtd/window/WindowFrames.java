@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
+import rtd.accel.Accelerator;
 import rtd.accel.ViewGrid;
 import rtd.camera.OrthographicCamera;
 import rtd.cli.WindowRun;
@@ -36,7 +37,7 @@ public final class WindowFrames {
     public static void main(String[] args) throws Exception {
         double seconds = args.length > 0 ? Double.parseDouble(args[0]) : 5;
         int threads = Runtime.getRuntime().availableProcessors();
-        Engine engine = WindowRun.engine("auto", threads);
+        Engine engine = WindowRun.engine(Accelerator.Choice.auto, threads);
         System.out.printf(Locale.ROOT, "%d × %d, %d threads, %.0f s of frames per figure, after as long warming%n",
                 WIDTH, HEIGHT, threads, seconds);
         for (String name : new String[] {"input_rtd", "glass_and_mirror"}) {
