@@ -148,7 +148,7 @@ public final class LightGrids {
     }
 
     /** The box of all objects that have a finite one, or null if none has. */
-    static float[] boxOf(List<IGeometry> objects) {
+    private static float[] boxOf(List<IGeometry> objects) {
         float[] all = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
                 Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
         float[] box = new float[6];
