@@ -20,7 +20,7 @@ import rtd.math.Vector3f;
 public record Hit(IGeometry object, int index, float t, float distance, Vector3f point) {
 
     /** ε per unit of the hit point's largest coordinate: how far points lifted off a surface lie from it. */
-    public static final float LIFT = 1e-4f;
+    private static final float LIFT = 1e-4f;
 
     /** The object's outward unit normal at the hit point of a ray along {@code direction}. */
     public Vector3f normal(Vector3f direction) {

@@ -27,11 +27,6 @@ import rtd.math.Vector3f;
 public record Surface(Ray ray, Hit hit, Vector3f eye, Vector3f normal, boolean inside, Vector3f over, Vector3f under) {
 
     /**
-     * ε per unit of the hit point's largest coordinate: how far {@link #over} and {@link #under} lie off the surface.
-     */
-    public static final float LIFT = Hit.LIFT;
-
-    /**
      * The surface at {@code hit}, a hit of {@code ray}; {@code ε = 1e-4·(1 + max(|Px|, |Py|,
      * |Pz|))} ({@link Hit#lift}), so that it stays above float's rounding of P however far P is from the origin.
      */

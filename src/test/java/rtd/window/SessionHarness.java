@@ -26,8 +26,8 @@ final class SessionHarness implements AutoCloseable {
     static SessionHarness open(Path file, int width, int height, double clock) throws Exception {
         SessionHarness harness = new SessionHarness();
         WindowSetup.SceneLoader loader = () -> new ClockedScene(SceneFile.read(file), scene -> scene);
-        WindowSetup setup = new WindowSetup(file, loader, changed -> () -> { }, WindowRun.engine(Accelerator.Choice.auto, 2),
-                width, height, 1, 2, clock);
+        WindowSetup setup = new WindowSetup(file, loader, changed -> () -> { },
+                WindowRun.engine(Accelerator.Choice.auto, 2), width, height, 1, 2, clock);
         ClockedScene source = loader.read();
         harness.on(() -> {
             harness.session = new WindowSession(setup, source, source.at(clock), harness.display, harness.ui);
