@@ -1,7 +1,11 @@
 package rtd.accel;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Random;
+import rtd.geometry.IGeometry;
 import rtd.geometry.Sphere;
+import rtd.image.Color;
 import rtd.math.Ray;
 import rtd.math.Vector3f;
 
@@ -57,6 +61,20 @@ record Grazing(double[] q, double[] side) {
     static double[] across(double[] a, double[] axis) {
         double along = dot(a, axis);
         return new double[] {a[0] - along * axis[0], a[1] - along * axis[1], a[2] - along * axis[2]};
+    }
+
+    /**
+     * 400 spheres of radius 0.0005 to 0.0025 within 8 units of (0|40|0), drawn from {@code random}: so small that the
+     * float test reports hits beside them, which a grid or a tree must find as the loop does. A list to add to.
+     */
+    static List<IGeometry> tinySpheres(Random random) {
+        List<IGeometry> spheres = new ArrayList<>();
+        for (int i = 0; i < 400; i++) {
+            Vector3f centre = new Vector3f((random.nextFloat() * 2 - 1) * 8, 40 + (random.nextFloat() * 2 - 1) * 8,
+                    (random.nextFloat() * 2 - 1) * 8);
+            spheres.add(new Sphere(centre, 0.0005f + random.nextFloat() * 0.002f, new Color(200, 100, 50)));
+        }
+        return spheres;
     }
 
     /** Whether the exact line of the ray passes the sphere by. */

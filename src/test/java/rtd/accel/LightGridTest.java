@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 import static rtd.accel.Grazing.missesExactly;
 import static rtd.accel.Grazing.point;
+import static rtd.accel.Grazing.tinySpheres;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -113,12 +114,7 @@ class LightGridTest {
     @Test
     void shadowRaysFromFarBesideTinySpheresGetTheLoopsAnswerWhereRoundingMakesHitsBesideThem() {
         Random random = new Random(7);
-        List<IGeometry> spheres = new ArrayList<>();
-        for (int i = 0; i < 400; i++) {
-            Vector3f centre = new Vector3f((random.nextFloat() * 2 - 1) * 8, 40 + (random.nextFloat() * 2 - 1) * 8,
-                    (random.nextFloat() * 2 - 1) * 8);
-            spheres.add(new Sphere(centre, 0.0005f + random.nextFloat() * 0.002f, new Color(200, 100, 50)));
-        }
+        List<IGeometry> spheres = tinySpheres(random);
         Vector3f light = new Vector3f(0, 80, 0);
         Scene scene = new Scene(new Color(0, 0, 0),
                 new PerspectiveCamera(new Vector3f(0, 0, 60), new Vector3f(0, 0, -1), 60), spheres,

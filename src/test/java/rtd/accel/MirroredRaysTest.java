@@ -2,6 +2,7 @@ package rtd.accel;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static rtd.accel.Grazing.missesExactly;
+import static rtd.accel.Grazing.tinySpheres;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -97,12 +98,7 @@ class MirroredRaysTest {
     @Test
     void mirroredRaysPastTinySpheresGetTheLoopsHitWhereRoundingMakesHitsBesideThem() {
         Random random = new Random(7);
-        List<IGeometry> objects = new ArrayList<>();
-        for (int i = 0; i < 400; i++) {
-            Vector3f centre = new Vector3f((random.nextFloat() * 2 - 1) * 8, 40 + (random.nextFloat() * 2 - 1) * 8,
-                    (random.nextFloat() * 2 - 1) * 8);
-            objects.add(new Sphere(centre, 0.0005f + random.nextFloat() * 0.002f, new Color(200, 100, 50)));
-        }
+        List<IGeometry> objects = tinySpheres(random);
         objects.add(new Plane(new Vector3f(0, 0, 0), new Vector3f(0, 1, 0), new Color(200, 200, 200), MIRROR));
         Vector3f eye = new Vector3f(0.5f, 10, 0.25f);
         Vector3f image = new Vector3f(0.5f, -10, 0.25f); // the eye mirrored in the plane y = 0
